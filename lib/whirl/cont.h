@@ -1,0 +1,172 @@
+/* whirl/cont.h — pseudo-arclength continuation of F(x, p) = 0 in one
+ * parameter (Keller 1977; Doedel, Keller & Kernévez 1991), with a Newton
+ * corrector, secant (default) or tangent predictor, adaptive step (AUTO's DS,
+ * DSMIN, DSMAX, NMX), and detection and localisation of special points by
+ * test functions: folds LP (parameter component of the tangent), branch
+ * points BP (sign of det [F_x F_p; t^T]) and Hopf points HB (real part of the
+ * critical complex pair of the system's spectrum).
+ *
+ * The loop belongs to the caller (GSL style):
+ *     whirl_cont *c = whirl_cont_alloc(&sys, &opt);
+ *     whirl_cont_start(c, x0, p0, +1);
+ *     while ((rc = whirl_cont_step(c)) == WHIRL_OK) {
+ *       const whirl_point *pt = whirl_cont_point(c); ...
+ *     }
+ *     if (rc < 0) fprintf(stderr, "%s\n", whirl_cont_errmsg(c));
+ * No global state: any number of continuations may run in one process.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_CONT_H
+#define WHIRL_CONT_H
+
+#include <stddef.h>
+#include <whirl/linsol.h>
+#include <whirl/status.h>
+#include <whirl/system.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Point types, with AUTO's two-letter names (whirl_point_type_name). */
+typedef enum whirl_point_type {
+  WHIRL_PT_REGULAR = 0, /* "  " ordinary point */
+  WHIRL_PT_EP = 1,      /* "EP" end point of a branch (start, bound, stop) */
+  WHIRL_PT_LP = 2,      /* "LP" limit point (fold, saddle-node) */
+  WHIRL_PT_BP = 3,      /* "BP" branch point */
+  WHIRL_PT_HB = 4,      /* "HB" Hopf point (torus point TR for a rotating-frame
+                           equilibrium representing a periodic orbit) */
+  WHIRL_PT_UZ = 5       /* "UZ" user-requested parameter value */
+} whirl_point_type;
+
+WHIRL_API const char *whirl_point_type_name(int type);
+
+/* Why a branch ended (whirl_cont_stop_reason). */
+typedef enum whirl_stop_reason {
+  WHIRL_STOP_NONE = 0,
+  WHIRL_STOP_PMIN,   /* continuation parameter reached p_min (RL0) */
+  WHIRL_STOP_PMAX,   /* continuation parameter reached p_max (RL1) */
+  WHIRL_STOP_NMX,    /* NMX steps taken */
+  WHIRL_STOP_DOMAIN, /* the model reported a domain error (e.g. contact)
+                        that persisted down to DSMIN */
+  WHIRL_STOP_NOCONV, /* Newton failed down to DSMIN */
+  WHIRL_STOP_LOOP,   /* the branch closed on itself (isola traced whole) */
+  WHIRL_STOP_XMAX,   /* |x|_inf exceeded x_max */
+  WHIRL_STOP_BP      /* stop at the first branch point (stop_at_bp) */
+} whirl_stop_reason;
+
+WHIRL_API const char *whirl_stop_reason_name(int reason);
+
+typedef struct whirl_cont_options {
+  size_t icp;          /* ICP: index of the free parameter */
+  double ds;           /* DS: initial step (sign ignored, see start) */
+  double ds_min;       /* DSMIN */
+  double ds_max;       /* DSMAX */
+  size_t nmx;          /* NMX: maximum number of steps */
+  double p_min, p_max; /* RL0, RL1: bounds of the free parameter */
+  double x_max;        /* A1-like bound on |x|_inf (0: none) */
+  double p_weight;     /* weight of the parameter in the arclength norm */
+  double newton_tol;   /* EPSL/EPSU: |dx|_inf <= tol*(1+|x|_inf), |F| <= tol */
+  int newton_maxit;    /* ITNW */
+  int newton_fast;     /* iterations at or below which the step may grow */
+  double max_angle;    /* max turn of the tangent per step, radians */
+  int tangent_predictor; /* 0: secant predictor (default), 1: tangent */
+  int detect_lp;       /* ILP */
+  int detect_bp;       /* ISP (branch points) */
+  int detect_hb;       /* ISP (Hopf; needs the system's spectrum) */
+  int stop_at_bp;      /* end the branch at the first BP */
+  int detect_loop;     /* stop when the branch returns to its start */
+  double loc_tol;      /* localisation tolerance in arclength */
+  whirl_linsol_kind linsol; /* DENSE, or SPARSE when the system has a pattern */
+  const double *uz;    /* optional parameter values to output as UZ */
+  size_t nuz;
+} whirl_cont_options;
+
+/* Defaults: icp 0, ds 1e-2, ds_min 1e-8, ds_max 0.5, nmx 1000, p bounds
+ * +-1e30, p_weight 1, newton_tol 1e-10, newton_maxit 12, newton_fast 3,
+ * max_angle 0.2 rad, secant predictor, all detections on, loop detection on,
+ * loc_tol 1e-12, dense solver. */
+WHIRL_API void whirl_cont_options_default(whirl_cont_options *opt);
+
+typedef struct whirl_cont_stats {
+  size_t steps;       /* accepted continuation steps */
+  size_t rejected;    /* steps rejected (no convergence, angle, domain) */
+  size_t newton_its;  /* Newton iterations, all purposes */
+  size_t f_evals;     /* F evaluations (including finite differences) */
+  size_t jac_evals;   /* Jacobian evaluations */
+  size_t factorizations;
+  size_t eig_evals;   /* spectrum evaluations */
+  size_t special;     /* special points localised */
+} whirl_cont_stats;
+
+/* One point of a branch.  All arrays belong to the continuation object and
+ * are valid until the next whirl_cont_step / whirl_cont_start / free. */
+typedef struct whirl_point {
+  size_t index;        /* PT: 0 for the start point */
+  int type;            /* whirl_point_type */
+  int label;           /* LAB: > 0 for special points, 0 otherwise */
+  size_t n, npar;
+  const double *x;     /* x[n] */
+  const double *p;     /* p[npar] */
+  const double *t;     /* unit tangent t[n+1] = (dx, dp_icp), weighted norm */
+  double s;            /* arclength from the start point */
+  int n_unstable;      /* eigenvalues with Re > 0, -1 if no spectrum */
+  int stable;          /* 1 stable, 0 unstable, -1 unknown */
+  size_t nspec;
+  const double *spec_re, *spec_im; /* spectrum, sorted by decreasing Re */
+  double test[3];      /* LP, BP, HB test function values */
+} whirl_point;
+
+typedef struct whirl_cont whirl_cont;
+
+/* sys and opt are copied (sys->data stays borrowed and must outlive c).
+ * Returns NULL on out of memory or invalid options; a message is then
+ * written to errbuf[errlen] if errbuf is not NULL. */
+WHIRL_API whirl_cont *whirl_cont_alloc(const whirl_system *sys,
+                                       const whirl_cont_options *opt,
+                                       char *errbuf, size_t errlen);
+WHIRL_API void whirl_cont_free(whirl_cont *c); /* accepts NULL */
+
+/* Start a branch at (x0, p0): x0 is corrected by Newton with p fixed, then
+ * the tangent is oriented so that the free parameter moves in the direction
+ * of sign(dir) (+1 or -1).  The corrected start point is available from
+ * whirl_cont_point as type EP.  Returns WHIRL_OK or an error. */
+WHIRL_API int whirl_cont_start(whirl_cont *c, const double *x0,
+                               const double *p0, int dir);
+
+/* Start along a given direction t0[n+1] (normalised internally) from an
+ * exact solution (x0, p0): used for branch switching.  No correction is done
+ * at the start point. */
+WHIRL_API int whirl_cont_start_direction(whirl_cont *c, const double *x0,
+                                         const double *p0, const double *t0);
+
+/* Branch switching at a branch point bp (from whirl_cont_point of a branch
+ * of the same system): computes the second branch direction from the null
+ * space of [F_x F_p] at bp, orthogonal to bp->t, and starts along it with
+ * the given sign (+1/-1); the first point is corrected on the new branch. */
+WHIRL_API int whirl_cont_start_switch(whirl_cont *c, const whirl_point *bp,
+                                      int dir);
+
+/* Take one continuation step.  Returns WHIRL_OK when a new point is
+ * available (special points are returned in order before the regular point
+ * that follows them), WHIRL_DONE when the branch has ended (see
+ * whirl_cont_stop_reason; the last point returned was its EP), or an error
+ * < 0 (see whirl_cont_errmsg). */
+WHIRL_API int whirl_cont_step(whirl_cont *c);
+
+WHIRL_API const whirl_point *whirl_cont_point(const whirl_cont *c);
+WHIRL_API int whirl_cont_stop_reason(const whirl_cont *c);
+WHIRL_API const whirl_cont_stats *whirl_cont_get_stats(const whirl_cont *c);
+WHIRL_API void whirl_cont_reset_stats(whirl_cont *c);
+/* Message for the last error or stop ("" if none); owned by c. */
+WHIRL_API const char *whirl_cont_errmsg(const whirl_cont *c);
+
+/* Newton's method for F(x, p) = 0 with p fixed, from x (in/out).  On return
+ * *its holds the iterations used.  Uses the dense Jacobian; tol as
+ * whirl_cont_options.newton_tol.  Useful for seeding and for tests. */
+WHIRL_API int whirl_newton(const whirl_system *sys, double *x, const double *p,
+                           double tol, int maxit, int *its);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,29 @@
+/* whirl/equilibrium.h — constructor: the equilibria f(x, p) = 0 of an
+ * autonomous ODE model as an algebraic problem, with the eigenvalues of the
+ * Jacobian as its stability spectrum (so the core detects Hopf points).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_EQUILIBRIUM_H
+#define WHIRL_EQUILIBRIUM_H
+
+#include <whirl/problem.h>
+#include <whirl/system.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct whirl_equilibrium whirl_equilibrium;
+
+/* prob is borrowed and must outlive the object; t is fixed at 0 for
+ * non-autonomous models.  NULL on out of memory or a bad model. */
+WHIRL_API whirl_equilibrium *whirl_equilibrium_alloc(const whirl_problem *prob);
+WHIRL_API void whirl_equilibrium_free(whirl_equilibrium *eq); /* NULL ok */
+
+/* The algebraic problem; owned by eq. */
+WHIRL_API const whirl_system *whirl_equilibrium_system(
+    const whirl_equilibrium *eq);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,52 @@
+/* whirl/status.h — status codes shared by every whirl object.
+ * One X-macro list gives the enum and the messages (whirl_strerror), so the two
+ * never drift apart.  0 is success, > 0 a warning or a normal end, < 0 an error.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_STATUS_H
+#define WHIRL_STATUS_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32)
+#define WHIRL_API
+#elif defined(__GNUC__) && __GNUC__ >= 4
+#define WHIRL_API __attribute__((visibility("default")))
+#else
+#define WHIRL_API
+#endif
+
+#define WHIRL_STATUS_LIST(X)                                                   \
+  X(WHIRL_OK, 0, "success")                                                    \
+  X(WHIRL_DONE, 1, "branch finished (see the stop reason)")                   \
+  X(WHIRL_WSINGULAR, 2, "matrix is singular to working precision")            \
+  X(WHIRL_EINVAL, -1, "invalid argument")                                      \
+  X(WHIRL_ENOMEM, -2, "out of memory")                                         \
+  X(WHIRL_ENOCONV, -3, "Newton iteration did not converge")                    \
+  X(WHIRL_ESTEP, -4, "step size fell below its minimum")                       \
+  X(WHIRL_EUSER, -5, "a user callback reported a fatal error")                 \
+  X(WHIRL_ELAPACK, -6, "LAPACK reported an error")                             \
+  X(WHIRL_ESPARSE, -7, "the sparse solver (UMFPACK) reported an error")        \
+  X(WHIRL_EIO, -8, "input/output error")                                       \
+  X(WHIRL_EDOMAIN, -9, "state outside the model's domain")                     \
+  X(WHIRL_ESINGULAR, -10, "singular matrix")                                   \
+  X(WHIRL_EBADFUNC, -11, "a callback returned NaN or Inf")                     \
+  X(WHIRL_EMAXITER, -12, "iteration limit reached")
+
+typedef enum whirl_status {
+#define WHIRL_X_ENUM(name, value, msg) name = value,
+  WHIRL_STATUS_LIST(WHIRL_X_ENUM)
+#undef WHIRL_X_ENUM
+} whirl_status;
+
+/* Message for a status code; never NULL, static storage. */
+WHIRL_API const char *whirl_strerror(int status);
+
+/* Version of the library, "MAJOR.MINOR.PATCH"; static storage. */
+WHIRL_API const char *whirl_version(void);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,97 @@
+/* whirl/system.h — the algebraic problem F(x, p) = 0 seen by the continuation
+ * core.  n equations in n unknowns x, with npar parameters p of which one is
+ * free during a continuation.  Equilibria, harmonic balance, collocation, fold
+ * and Hopf systems are constructors producing a whirl_system; they nest.
+ *
+ * Callback contract as in whirl/problem.h: 0 ok, > 0 recoverable (domain),
+ * < 0 fatal.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_SYSTEM_H
+#define WHIRL_SYSTEM_H
+
+#include <stddef.h>
+#include <whirl/status.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct whirl_system {
+  const char *name;
+  size_t n;     /* number of equations and of unknowns */
+  size_t npar;  /* number of parameters */
+
+  /* f[n] = F(x, p).  Required. */
+  int (*F)(const double *x, const double *p, double *f, void *data);
+
+  /* Dense Jacobian J[n*n], column-major, J[i + n*j] = dF_i/dx_j.
+   * Optional: NULL -> finite differences (or the sparse callback below). */
+  int (*Fx)(const double *x, const double *p, double *J, void *data);
+
+  /* Parameter derivative fk[n] = dF/dp_k.  Optional: NULL -> differences. */
+  int (*Fp)(const double *x, const double *p, size_t k, double *fk,
+            void *data);
+
+  /* Optional sparse Jacobian: a fixed compressed-column pattern Jp[n+1],
+   * Ji[nnz] (row indices, sorted within a column), and a callback filling the
+   * values Jx[nnz] in pattern order.  When present the core can use the
+   * sparse (UMFPACK) path: symbolic analysis once, numeric factorisation at
+   * every Newton step. */
+  size_t nnz;
+  const int *Jp;
+  const int *Ji;
+  int (*Fx_sparse)(const double *x, const double *p, double *Jx, void *data);
+
+  /* Optional stability spectrum of the solution (x, p): fills re[m], im[m]
+   * with exponents whose positive real part means instability (eigenvalues
+   * for an equilibrium, Floquet exponents for a periodic orbit), and sets *m.
+   * On entry *m is the capacity (>= nspec).  J is the dense Jacobian at
+   * (x, p) when the core has it, else NULL.  Enables HB detection. */
+  size_t nspec;
+  int (*spectrum)(const double *x, const double *p, const double *J,
+                  double *re, double *im, size_t *m, void *data);
+
+  const char *const *x_names;  /* optional, n names */
+  const char *const *p_names;  /* optional, npar names */
+  void *data;                  /* borrowed */
+} whirl_system;
+
+/* Finite-difference dense Jacobian of a system (central differences).
+ * J[n*n] column-major; work[2n] scratch. */
+WHIRL_API int whirl_system_fd_jacobian(const whirl_system *sys,
+                                       const double *x, const double *p,
+                                       double *J, double *work);
+
+/* Finite-difference parameter derivative fk[n] = dF/dp_k; work[n] scratch
+ * (p is copied internally, not modified). */
+WHIRL_API int whirl_system_fd_param(const whirl_system *sys, const double *x,
+                                    const double *p, size_t k, double *fk,
+                                    double *work);
+
+/* Evaluate F and check the result is finite: returns the callback status,
+ * or WHIRL_EBADFUNC (> 0 is not used here: non-finite is reported as
+ * WHIRL_EBADFUNC and treated as recoverable by the core). */
+WHIRL_API int whirl_system_eval(const whirl_system *sys, const double *x,
+                                const double *p, double *f);
+
+/* Dense Jacobian by the analytic callback (Fx, else Fx_sparse scattered),
+ * else finite differences.  work[2n]. */
+WHIRL_API int whirl_system_jacobian(const whirl_system *sys, const double *x,
+                                    const double *p, double *J, double *work);
+
+/* dF/dp_k by the analytic callback if present, else finite differences.
+ * work[n]. */
+WHIRL_API int whirl_system_param(const whirl_system *sys, const double *x,
+                                 const double *p, size_t k, double *fk,
+                                 double *work);
+
+/* max |J_analytic - J_fd| / (1 + |J_analytic|) over the dense (or sparse)
+ * analytic Jacobian and, if present, Fp for every parameter. */
+WHIRL_API int whirl_system_check_jacobian(const whirl_system *sys,
+                                          const double *x, const double *p,
+                                          double *max_err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,13 @@
+/* whirl/whirl.h — umbrella header for libwhirl.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_WHIRL_H
+#define WHIRL_WHIRL_H
+#include <whirl/status.h>
+#include <whirl/problem.h>
+#include <whirl/system.h>
+#include <whirl/linsol.h>
+#include <whirl/cont.h>
+#include <whirl/branch.h>
+#include <whirl/equilibrium.h>
+#include <whirl/sfd.h>
+#endif
