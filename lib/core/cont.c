@@ -1,0 +1,799 @@
+/* lib/core/cont.c — pseudo-arclength continuation (Keller 1977; Doedel,
+ * Keller & Kernévez, Int. J. Bif. Chaos 1 (1991) 493): secant or tangent
+ * predictor, Newton corrector on the bordered system
+ *     [F_x  F_p] dX = -[F                 ]
+ *     [  r^T   ]       [<r, X - X0> - ds ],
+ * adaptive step (AUTO's DS/DSMIN/DSMAX/NMX) with a limit on the turn of the
+ * tangent, test functions for LP/BP/HB evaluated at every point, and ends at
+ * parameter bounds (localised exactly), NMX, closed loops and DSMIN.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cont_impl.h"
+
+const char *whirl_point_type_name(int type) {
+  switch (type) {
+  case WHIRL_PT_REGULAR: return "  ";
+  case WHIRL_PT_EP: return "EP";
+  case WHIRL_PT_LP: return "LP";
+  case WHIRL_PT_BP: return "BP";
+  case WHIRL_PT_HB: return "HB";
+  case WHIRL_PT_UZ: return "UZ";
+  default: return "??";
+  }
+}
+
+const char *whirl_stop_reason_name(int reason) {
+  switch (reason) {
+  case WHIRL_STOP_NONE: return "none";
+  case WHIRL_STOP_PMIN: return "parameter reached its lower bound";
+  case WHIRL_STOP_PMAX: return "parameter reached its upper bound";
+  case WHIRL_STOP_NMX: return "maximum number of steps (NMX)";
+  case WHIRL_STOP_DOMAIN: return "model domain error persisted down to DSMIN";
+  case WHIRL_STOP_NOCONV: return "no convergence with minimum step size (DSMIN)";
+  case WHIRL_STOP_LOOP: return "branch closed on itself";
+  case WHIRL_STOP_XMAX: return "solution norm exceeded its bound";
+  case WHIRL_STOP_BP: return "branch point (stop_at_bp)";
+  default: return "unknown";
+  }
+}
+
+void whirl_cont_options_default(whirl_cont_options *o) {
+  memset(o, 0, sizeof *o);
+  o->icp = 0;
+  o->ds = 1e-2;
+  o->ds_min = 1e-8;
+  o->ds_max = 0.5;
+  o->nmx = 1000;
+  o->p_min = -1e30;
+  o->p_max = 1e30;
+  o->x_max = 0.0;
+  o->p_weight = 1.0;
+  o->newton_tol = 1e-10;
+  o->newton_maxit = 12;
+  o->newton_fast = 3;
+  o->max_angle = 0.2;
+  o->tangent_predictor = 0;
+  o->detect_lp = o->detect_bp = o->detect_hb = 1;
+  o->stop_at_bp = 0;
+  o->detect_loop = 1;
+  o->loc_tol = 1e-12;
+  o->linsol = WHIRL_LINSOL_DENSE;
+  o->uz = NULL;
+  o->nuz = 0;
+}
+
+int whirl_cont_fail_(whirl_cont *c, int code, const char *file, int line,
+                     const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  int k = vsnprintf(c->errmsg, sizeof c->errmsg, fmt, ap);
+  va_end(ap);
+  if (k >= 0 && (size_t)k < sizeof c->errmsg) {
+    const char *base = strrchr(file, '/');
+    snprintf(c->errmsg + k, sizeof c->errmsg - (size_t)k, " (%s:%d)",
+             base ? base + 1 : file, line);
+  }
+  return code;
+}
+
+double cont_dot(const whirl_cont *c, const double *a, const double *b) {
+  double s = 0.0;
+  for (size_t i = 0; i < c->n; ++i) s += a[i] * b[i];
+  const double w = c->opt.p_weight;
+  return s + w * w * a[c->n] * b[c->n];
+}
+
+static double cont_norm(const whirl_cont *c, const double *a) {
+  return sqrt(cont_dot(c, a, a));
+}
+
+/* ------------------------------------------------------------ states */
+
+static int state_alloc(whirl_cont *c, cont_state *st) {
+  memset(st, 0, sizeof *st);
+  st->X = calloc(c->N, sizeof *st->X);
+  st->t = calloc(c->N, sizeof *st->t);
+  st->p = calloc(c->npar, sizeof *st->p);
+  size_t ns = c->sys.nspec ? c->sys.nspec : 1;
+  st->re = calloc(ns, sizeof *st->re);
+  st->im = calloc(ns, sizeof *st->im);
+  return st->X && st->t && st->p && st->re && st->im ? 0 : -1;
+}
+
+static void state_free(cont_state *st) {
+  free(st->X);
+  free(st->t);
+  free(st->p);
+  free(st->re);
+  free(st->im);
+}
+
+void cont_state_copy(const whirl_cont *c, cont_state *dst,
+                     const cont_state *src) {
+  double *X = dst->X, *t = dst->t, *p = dst->p, *re = dst->re, *im = dst->im;
+  *dst = *src;
+  dst->X = X;
+  dst->t = t;
+  dst->p = p;
+  dst->re = re;
+  dst->im = im;
+  memcpy(X, src->X, c->N * sizeof *X);
+  memcpy(t, src->t, c->N * sizeof *t);
+  memcpy(p, src->p, c->npar * sizeof *p);
+  if (c->sys.nspec) {
+    memcpy(re, src->re, c->sys.nspec * sizeof *re);
+    memcpy(im, src->im, c->sys.nspec * sizeof *im);
+  }
+}
+
+/* ------------------------------------------------------------ alloc */
+
+whirl_cont *whirl_cont_alloc(const whirl_system *sys,
+                             const whirl_cont_options *opt, char *errbuf,
+                             size_t errlen) {
+  const char *why = NULL;
+  if (!sys || !sys->F || sys->n == 0) why = "system has no F or n == 0";
+  else if (!opt) why = "no options";
+  else if (opt->icp >= sys->npar) why = "ICP is not a parameter index of the system";
+  else if (!(opt->ds_min > 0) || !(opt->ds_max >= opt->ds_min) ||
+           !(fabs(opt->ds) >= opt->ds_min) || !(fabs(opt->ds) <= opt->ds_max))
+    why = "need 0 < DSMIN <= |DS| <= DSMAX";
+  else if (!(opt->p_min < opt->p_max)) why = "need RL0 (p_min) < RL1 (p_max)";
+  else if (!(opt->newton_tol > 0) || opt->newton_maxit < 1)
+    why = "need newton_tol > 0 and newton_maxit >= 1";
+  else if (!(opt->p_weight > 0)) why = "need p_weight > 0";
+  else if (opt->linsol == WHIRL_LINSOL_SPARSE &&
+           (sys->nnz == 0 || !sys->Jp || !sys->Ji || !sys->Fx_sparse))
+    why = "sparse solver requested but the system has no sparse Jacobian";
+  if (why) {
+    if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_cont_alloc: %s", why);
+    return NULL;
+  }
+  whirl_cont *c = calloc(1, sizeof *c);
+  if (!c) goto nomem;
+  c->sys = *sys;
+  c->opt = *opt;
+  c->n = sys->n;
+  c->N = sys->n + 1;
+  c->npar = sys->npar;
+  c->sparse = opt->linsol == WHIRL_LINSOL_SPARSE;
+  c->bd = whirl_bordered_alloc(c->sparse ? WHIRL_LINSOL_SPARSE : WHIRL_LINSOL_DENSE,
+                               c->n, 1, sys->Jp, sys->Ji);
+  if (!c->bd) goto nomem;
+  if (c->sparse) {
+    c->Jx = calloc(sys->nnz, sizeof *c->Jx);
+    if (!c->Jx) goto nomem;
+  } else {
+    c->J = calloc(c->n * c->n, sizeof *c->J);
+    if (!c->J) goto nomem;
+  }
+  c->wlen = 2 * c->n + sys->nnz + 8;
+  c->fp = calloc(c->n, sizeof *c->fp);
+  c->f = calloc(c->n, sizeof *c->f);
+  c->rhs = calloc(c->N, sizeof *c->rhs);
+  c->row = calloc(c->N, sizeof *c->row);
+  c->work = calloc(c->wlen, sizeof *c->work);
+  c->dir = calloc(c->N, sizeof *c->dir);
+  c->Xprev = calloc(c->N, sizeof *c->Xprev);
+  c->Xstart = calloc(c->N, sizeof *c->Xstart);
+  if (!c->fp || !c->f || !c->rhs || !c->row || !c->work || !c->dir ||
+      !c->Xprev || !c->Xstart)
+    goto nomem;
+  c->qcap = 2 * (8 + opt->nuz);
+  c->queue = calloc(c->qcap, sizeof *c->queue);
+  if (!c->queue) goto nomem;
+  if (state_alloc(c, &c->cur) || state_alloc(c, &c->trial) ||
+      state_alloc(c, &c->out))
+    goto nomem;
+  for (size_t i = 0; i < c->qcap; ++i)
+    if (state_alloc(c, &c->queue[i])) goto nomem;
+  if (opt->nuz) {
+    double *uz = malloc(opt->nuz * sizeof *uz);
+    if (!uz) goto nomem;
+    memcpy(uz, opt->uz, opt->nuz * sizeof *uz);
+    c->opt.uz = uz;
+  }
+  return c;
+nomem:
+  if (c && c->opt.uz == opt->uz) c->opt.uz = NULL; /* not yet owned */
+  whirl_cont_free(c);
+  if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_cont_alloc: out of memory");
+  return NULL;
+}
+
+void whirl_cont_free(whirl_cont *c) {
+  if (!c) return;
+  whirl_bordered_free(c->bd);
+  whirl_eig_free(c->eig);
+  free(c->J);
+  free(c->Jx);
+  free(c->fp);
+  free(c->f);
+  free(c->rhs);
+  free(c->row);
+  free(c->work);
+  free(c->dir);
+  free(c->Xprev);
+  free(c->Xstart);
+  state_free(&c->cur);
+  state_free(&c->trial);
+  state_free(&c->out);
+  if (c->queue)
+    for (size_t i = 0; i < c->qcap; ++i) state_free(&c->queue[i]);
+  free(c->queue);
+  if (c->opt.nuz) free((double *)c->opt.uz);
+  free(c);
+}
+
+/* ------------------------------------------------------------ linear algebra */
+
+/* Map a callback status to the corrector's: 0 ok, 2 recoverable (domain or
+ * non-finite), < 0 fatal.  (1 is no convergence, 3 a singular matrix.) */
+static int classify(whirl_cont *c, int rc, const char *what) {
+  if (rc == 0) return 0;
+  if (rc > 0 || rc == WHIRL_EBADFUNC) return 2;
+  return CONT_FAIL(c, WHIRL_EUSER, "%s: callback returned fatal status %d (%s)",
+                   what, rc, whirl_strerror(rc));
+}
+
+/* F_x (dense or sparse values) and F_p at (x, p). */
+static int eval_jac(whirl_cont *c, const double *x, const double *p) {
+  int rc;
+  if (c->sparse) {
+    rc = c->sys.Fx_sparse(x, p, c->Jx, c->sys.data);
+    if (rc == 0)
+      for (size_t q = 0; q < c->sys.nnz; ++q)
+        if (!isfinite(c->Jx[q])) { rc = WHIRL_EBADFUNC; break; }
+  } else {
+    rc = whirl_system_jacobian(&c->sys, x, p, c->J, c->work);
+    if (!c->sys.Fx && !c->sys.Fx_sparse) c->stats.f_evals += 2 * c->n;
+  }
+  ++c->stats.jac_evals;
+  if ((rc = classify(c, rc, "Jacobian")) != 0) return rc;
+  rc = whirl_system_param(&c->sys, x, p, c->opt.icp, c->fp, c->work);
+  if (!c->sys.Fp) c->stats.f_evals += 2;
+  return classify(c, rc, "parameter derivative");
+}
+
+/* Factor [F_x F_p; r^T] with r the weighted direction dir. */
+static int factor_ext(whirl_cont *c, const double *dir) {
+  const double w = c->opt.p_weight;
+  for (size_t i = 0; i < c->n; ++i) c->row[i] = dir[i];
+  c->row[c->n] = w * w * dir[c->n];
+  ++c->stats.factorizations;
+  int rc = whirl_bordered_factor(c->bd, c->sparse ? c->Jx : c->J, c->fp,
+                                 c->row, &c->row[c->n]);
+  if (rc == WHIRL_OK) return 0;
+  if (rc == WHIRL_ESINGULAR) return 3;
+  return CONT_FAIL(c, rc, "factorisation of the extended Jacobian: %s",
+                   whirl_bordered_errmsg(c->bd));
+}
+
+/* ------------------------------------------------------------ corrector */
+
+int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
+                 double *X) {
+  const size_t n = c->n, N = c->N;
+  double *p = c->trial.p;
+  double prev = INFINITY;
+  memcpy(p, c->cur.p, c->npar * sizeof *p);
+  for (int it = 1; it <= c->opt.newton_maxit; ++it) {
+    p[c->opt.icp] = X[n];
+    int rc = whirl_system_eval(&c->sys, X, p, c->f);
+    ++c->stats.f_evals;
+    if ((rc = classify(c, rc, "F")) != 0) return rc;
+    if ((rc = eval_jac(c, X, p)) != 0) return rc;
+    if ((rc = factor_ext(c, dir)) != 0) return rc;
+    double acc = 0.0;
+    for (size_t i = 0; i < n; ++i) c->rhs[i] = c->f[i];
+    for (size_t i = 0; i < N; ++i) acc += c->row[i] * (X[i] - X0[i]);
+    c->rhs[n] = acc - s;
+    rc = whirl_bordered_solve(c->bd, c->rhs, 1, 0);
+    if (rc != WHIRL_OK)
+      return CONT_FAIL(c, rc, "bordered solve: %s", whirl_bordered_errmsg(c->bd));
+    ++c->stats.newton_its;
+    double dmax = 0.0, xmax = 0.0;
+    for (size_t i = 0; i < N; ++i) {
+      X[i] -= c->rhs[i];
+      if (!isfinite(X[i])) return 1;
+      dmax = fmax(dmax, fabs(c->rhs[i]));
+      xmax = fmax(xmax, fabs(X[i]));
+    }
+    c->its = it; /* iterations used, read by the step control */
+    if (dmax <= c->opt.newton_tol * (1.0 + xmax)) {
+      p[c->opt.icp] = X[n];
+      return 0;
+    }
+    if (it > 2 && dmax > 2.0 * prev) return 1; /* diverging */
+    prev = dmax;
+  }
+  return 1;
+}
+
+/* ------------------------------------------------------------ analysis */
+
+int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
+  const size_t n = c->n, N = c->N;
+  if (st->p != c->trial.p) memcpy(st->p, c->trial.p, c->npar * sizeof *st->p);
+  for (size_t k = 0; k < c->npar; ++k)
+    if (k != c->opt.icp) st->p[k] = c->cur.p[k];
+  st->p[c->opt.icp] = st->X[n];
+  int rc = eval_jac(c, st->X, st->p);
+  if (rc != 0) return rc;
+  if ((rc = factor_ext(c, dir)) != 0) return rc;
+  /* tangent: [F_x F_p; r^T] z = e_N, then t = z / |z|_w (Keller). */
+  memset(st->t, 0, N * sizeof *st->t);
+  st->t[n] = 1.0;
+  rc = whirl_bordered_solve(c->bd, st->t, 1, 0);
+  if (rc != WHIRL_OK)
+    return CONT_FAIL(c, rc, "tangent solve: %s", whirl_bordered_errmsg(c->bd));
+  const double nz = cont_norm(c, st->t);
+  if (!(nz > 0) || !isfinite(nz)) return 1;
+  for (size_t i = 0; i < N; ++i) st->t[i] /= nz;
+  whirl_bordered_logdet(c->bd, &st->logdet, &st->sign_det);
+  st->psi_lp = st->t[n];
+
+  st->n_unstable = -1;
+  st->n_cu = -1;
+  st->has_hb = 0;
+  st->psi_hb = 0.0;
+  st->nspec = 0;
+  if (c->sys.spectrum && c->sys.nspec) {
+    size_t m = c->sys.nspec;
+    rc = c->sys.spectrum(st->X, st->p, c->sparse ? NULL : c->J, st->re, st->im,
+                         &m, c->sys.data);
+    ++c->stats.eig_evals;
+    if ((rc = classify(c, rc, "spectrum")) != 0) return rc;
+    st->nspec = m;
+    double scale = 1.0;
+    for (size_t i = 0; i < m; ++i) scale = fmax(scale, hypot(st->re[i], st->im[i]));
+    const double tol = 1e-11 * scale;
+    int nu = 0, ncu = 0;
+    double best = INFINITY;
+    for (size_t i = 0; i < m; ++i) {
+      if (st->re[i] > tol) ++nu;
+      if (fabs(st->im[i]) > 1e-8 * scale) {
+        if (st->re[i] > tol) ++ncu;
+        if (fabs(st->re[i]) < fabs(best)) best = st->re[i];
+      }
+    }
+    st->n_unstable = nu;
+    st->n_cu = ncu;
+    if (isfinite(best)) {
+      st->has_hb = 1;
+      st->psi_hb = best;
+    }
+  }
+  st->tests_valid = 1;
+  return 0;
+}
+
+/* ------------------------------------------------------------ output */
+
+static void fill_point(whirl_cont *c) {
+  cont_state *o = &c->out;
+  whirl_point *pt = &c->pt;
+  pt->index = c->index++;
+  pt->type = o->type;
+  pt->label = o->label;
+  pt->n = c->n;
+  pt->npar = c->npar;
+  pt->x = o->X;
+  pt->p = o->p;
+  pt->t = o->t;
+  pt->s = o->s;
+  pt->n_unstable = o->n_unstable;
+  pt->stable = o->n_unstable < 0 ? -1 : o->n_unstable == 0;
+  pt->nspec = o->nspec;
+  pt->spec_re = o->re;
+  pt->spec_im = o->im;
+  pt->test[0] = o->psi_lp;
+  pt->test[1] = o->sign_det;
+  pt->test[2] = o->has_hb ? o->psi_hb : NAN;
+}
+
+static void push(whirl_cont *c, const cont_state *st, int type) {
+  if (c->qlen >= c->qcap) return; /* cannot happen: qcap bounds events */
+  cont_state *q = &c->queue[c->qlen++];
+  cont_state_copy(c, q, st);
+  q->type = type;
+  q->label = type == WHIRL_PT_REGULAR ? 0 : ++c->label;
+}
+
+static int pop(whirl_cont *c) {
+  if (c->qhead >= c->qlen) {
+    c->qhead = c->qlen = 0;
+    return 0;
+  }
+  cont_state_copy(c, &c->out, &c->queue[c->qhead++]);
+  if (c->qhead >= c->qlen) c->qhead = c->qlen = 0;
+  fill_point(c);
+  return 1;
+}
+
+/* ------------------------------------------------------------ start */
+
+static void reset_run(whirl_cont *c) {
+  c->qlen = c->qhead = 0;
+  c->index = 0;
+  c->label = 0;
+  c->done = 0;
+  c->started = 0;
+  c->have_prev = 0;
+  c->stop_reason = WHIRL_STOP_NONE;
+  c->errmsg[0] = '\0';
+}
+
+static int begin(whirl_cont *c, int tests_valid) {
+  c->cur.s = 0.0;
+  c->cur.tests_valid = tests_valid;
+  memcpy(c->Xstart, c->cur.X, c->N * sizeof *c->Xstart);
+  c->ds = fabs(c->opt.ds);
+  c->started = 1;
+  push(c, &c->cur, WHIRL_PT_EP);
+  return WHIRL_OK;
+}
+
+static int check_start(whirl_cont *c, const double *x0, const double *p0) {
+  if (!x0 || !p0) return CONT_FAIL(c, WHIRL_EINVAL, "start: NULL x0 or p0");
+  for (size_t i = 0; i < c->n; ++i)
+    if (!isfinite(x0[i]))
+      return CONT_FAIL(c, WHIRL_EINVAL, "start: x0[%zu] is not finite", i);
+  for (size_t k = 0; k < c->npar; ++k)
+    if (!isfinite(p0[k]))
+      return CONT_FAIL(c, WHIRL_EINVAL, "start: p0[%zu] is not finite", k);
+  return 0;
+}
+
+int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
+                     int dir) {
+  reset_run(c);
+  int rc = check_start(c, x0, p0);
+  if (rc) return rc;
+  const size_t n = c->n, N = c->N;
+  memcpy(c->cur.p, p0, c->npar * sizeof *p0);
+  memcpy(c->cur.X, x0, n * sizeof *x0);
+  c->cur.X[n] = p0[c->opt.icp];
+  /* Newton at fixed parameter: the constraint row is e_N. */
+  memset(c->dir, 0, N * sizeof *c->dir);
+  c->dir[n] = 1.0;
+  memcpy(c->trial.X, c->cur.X, N * sizeof *c->trial.X);
+  rc = cont_correct(c, c->cur.X, c->dir, 0.0, c->trial.X);
+  if (rc < 0) return rc;
+  if (rc == 3)
+    return CONT_FAIL(c, WHIRL_ESINGULAR,
+                     "start: F_x is singular at the start point (a fold or "
+                     "branch point?); start elsewhere or give a direction");
+  if (rc > 0)
+    return CONT_FAIL(c, WHIRL_ENOCONV,
+                     "start: Newton did not converge at %s = %g from the given x0%s",
+                     c->sys.p_names ? c->sys.p_names[c->opt.icp] : "p",
+                     p0[c->opt.icp], rc == 2 ? " (domain error)" : "");
+  memcpy(c->cur.X, c->trial.X, N * sizeof *c->cur.X);
+  rc = cont_analyse(c, &c->cur, c->dir);
+  if (rc < 0) return rc;
+  if (rc > 0 || fabs(c->cur.t[n]) < 1e-12)
+    return CONT_FAIL(c, WHIRL_ESINGULAR,
+                     "start: F_x is singular at the start point (a fold?); "
+                     "start elsewhere or give a direction");
+  if ((dir < 0) == (c->cur.t[n] > 0))
+    for (size_t i = 0; i < N; ++i) c->cur.t[i] = -c->cur.t[i];
+  /* Re-evaluate the tests with the tangent as border so their signs are
+   * consistent with the rows used along the branch. */
+  memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
+  rc = cont_analyse(c, &c->cur, c->dir);
+  if (rc != 0)
+    return rc < 0 ? rc : CONT_FAIL(c, WHIRL_ESINGULAR, "start: singular extended Jacobian");
+  return begin(c, 1);
+}
+
+int whirl_cont_start_direction(whirl_cont *c, const double *x0,
+                               const double *p0, const double *t0) {
+  reset_run(c);
+  int rc = check_start(c, x0, p0);
+  if (rc) return rc;
+  const size_t n = c->n, N = c->N;
+  memcpy(c->cur.p, p0, c->npar * sizeof *p0);
+  memcpy(c->trial.p, p0, c->npar * sizeof *p0);
+  memcpy(c->cur.X, x0, n * sizeof *x0);
+  c->cur.X[n] = p0[c->opt.icp];
+  double nt = 0.0;
+  for (size_t i = 0; i < N; ++i) nt += t0[i] * t0[i];
+  if (!(nt > 0) || !isfinite(nt))
+    return CONT_FAIL(c, WHIRL_EINVAL, "start_direction: zero or non-finite direction");
+  for (size_t i = 0; i < N; ++i) c->dir[i] = t0[i];
+  const double nw = cont_norm(c, c->dir);
+  for (size_t i = 0; i < N; ++i) c->dir[i] /= nw;
+  rc = cont_analyse(c, &c->cur, c->dir);
+  if (rc < 0) return rc;
+  /* At a branch point the extended matrix is singular: the direction itself
+   * is the tangent to follow. */
+  if (rc > 0) {
+    memcpy(c->cur.t, c->dir, N * sizeof *c->cur.t);
+    c->cur.n_unstable = -1;
+  } else {
+    memcpy(c->cur.t, c->dir, N * sizeof *c->cur.t);
+  }
+  return begin(c, 0);
+}
+
+int whirl_cont_start_switch(whirl_cont *c, const whirl_point *bp, int dir) {
+  const size_t n = c->n, N = c->N;
+  if (!bp || bp->n != n || bp->npar != c->npar || !bp->t)
+    return CONT_FAIL(c, WHIRL_EINVAL, "start_switch: point does not belong to this system");
+  double *A = malloc(n * N * sizeof *A), *V = malloc(N * 2 * sizeof *V);
+  double sv[2], phi[64], *ph = N <= 64 ? phi : malloc(N * sizeof *ph);
+  int rc = WHIRL_ENOMEM;
+  if (!A || !V || !ph) goto done;
+  memcpy(c->cur.p, bp->p, c->npar * sizeof *bp->p);
+  rc = eval_jac(c, bp->x, bp->p);
+  if (rc != 0) {
+    rc = rc < 0 ? rc : CONT_FAIL(c, WHIRL_EDOMAIN, "start_switch: cannot evaluate the Jacobian at the branch point");
+    goto done;
+  }
+  if (c->sparse) {
+    memset(A, 0, n * N * sizeof *A);
+    for (size_t j = 0; j < n; ++j)
+      for (int q = c->sys.Jp[j]; q < c->sys.Jp[j + 1]; ++q)
+        A[(size_t)c->sys.Ji[q] + n * j] = c->Jx[q];
+  } else {
+    memcpy(A, c->J, n * n * sizeof *A);
+  }
+  memcpy(A + n * n, c->fp, n * sizeof *A);
+  rc = whirl_null_vectors(n, N, A, 2, V, sv);
+  if (rc != WHIRL_OK) {
+    rc = CONT_FAIL(c, rc, "start_switch: SVD of [F_x F_p] failed");
+    goto done;
+  }
+  /* The null space at a simple branch point is spanned by the two right
+   * singular vectors of smallest singular value; remove the component along
+   * the known tangent and keep the larger remainder (Keller 1977). */
+  double tn = 0.0;
+  for (size_t i = 0; i < N; ++i) tn += bp->t[i] * bp->t[i];
+  tn = sqrt(tn);
+  double bestn = -1.0;
+  for (int k = 0; k < 2; ++k) {
+    const double *v = V + N * (size_t)k;
+    double vt = 0.0;
+    for (size_t i = 0; i < N; ++i) vt += v[i] * bp->t[i] / tn;
+    double nn = 0.0;
+    for (size_t i = 0; i < N; ++i) {
+      double r = v[i] - vt * bp->t[i] / tn;
+      nn += r * r;
+    }
+    if (nn > bestn) {
+      bestn = nn;
+      for (size_t i = 0; i < N; ++i) ph[i] = (v[i] - vt * bp->t[i] / tn) * (dir < 0 ? -1.0 : 1.0);
+    }
+  }
+  rc = whirl_cont_start_direction(c, bp->x, bp->p, ph);
+done:
+  free(A);
+  free(V);
+  if (ph != phi) free(ph);
+  return rc;
+}
+
+/* ------------------------------------------------------------ step */
+
+static int sgn(double v) { return (v > 0) - (v < 0); }
+
+/* Distance from point P to the segment [A, B] (weighted norm), and the
+ * segment parameter of the nearest point. */
+static double seg_dist(const whirl_cont *c, const double *P, const double *A,
+                       const double *B, double *u_out) {
+  double ab = 0, ap = 0;
+  const double w2 = c->opt.p_weight * c->opt.p_weight;
+  for (size_t i = 0; i < c->N; ++i) {
+    double wi = i == c->n ? w2 : 1.0;
+    ab += wi * (B[i] - A[i]) * (B[i] - A[i]);
+    ap += wi * (P[i] - A[i]) * (B[i] - A[i]);
+  }
+  double u = ab > 0 ? ap / ab : 0.0;
+  if (u_out) *u_out = u;
+  u = u < 0 ? 0 : u > 1 ? 1 : u;
+  double d = 0;
+  for (size_t i = 0; i < c->N; ++i) {
+    double wi = i == c->n ? w2 : 1.0;
+    double r = P[i] - (A[i] + u * (B[i] - A[i]));
+    d += wi * r * r;
+  }
+  return sqrt(d);
+}
+
+typedef struct event {
+  int ev;
+  size_t k;
+  cont_state *st;
+} event;
+
+static int finish(whirl_cont *c, int reason) {
+  c->done = 1;
+  c->stop_reason = reason;
+  if (!c->errmsg[0])
+    snprintf(c->errmsg, sizeof c->errmsg, "branch ended: %s",
+             whirl_stop_reason_name(reason));
+  return 0;
+}
+
+int whirl_cont_step(whirl_cont *c) {
+  if (!c->started)
+    return CONT_FAIL(c, WHIRL_EINVAL, "whirl_cont_step: continuation not started");
+  if (pop(c)) return WHIRL_OK;
+  if (c->done) return WHIRL_DONE;
+  const size_t n = c->n, N = c->N;
+  const whirl_cont_options *o = &c->opt;
+  int last_fail = 1;
+  double cosang = 1.0;
+  int its = 0;
+
+  for (;;) {
+    if (fabs(c->ds) < o->ds_min) {
+      const double pv = c->cur.X[n];
+      finish(c, last_fail == 2 ? WHIRL_STOP_DOMAIN : WHIRL_STOP_NOCONV);
+      snprintf(c->errmsg, sizeof c->errmsg,
+               "branch ended at %s = %.10g: %s", c->sys.p_names ? c->sys.p_names[o->icp] : "p",
+               pv, whirl_stop_reason_name(c->stop_reason));
+      return WHIRL_DONE;
+    }
+    /* predictor direction: secant through the last two points, or the
+     * tangent at the current one */
+    if (!o->tangent_predictor && c->have_prev) {
+      for (size_t i = 0; i < N; ++i) c->dir[i] = c->cur.X[i] - c->Xprev[i];
+      double nd = cont_norm(c, c->dir);
+      for (size_t i = 0; i < N; ++i) c->dir[i] /= nd;
+    } else {
+      memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
+    }
+    for (size_t i = 0; i < N; ++i) c->trial.X[i] = c->cur.X[i] + c->ds * c->dir[i];
+    int rc = cont_correct(c, c->cur.X, c->dir, c->ds, c->trial.X);
+    if (rc < 0) return rc;
+    its = c->its;
+    if (rc == 0) rc = cont_analyse(c, &c->trial, c->dir);
+    if (rc < 0) return rc;
+    if (rc > 0) {
+      last_fail = rc;
+      c->ds *= 0.5;
+      ++c->stats.rejected;
+      continue;
+    }
+    cosang = cont_dot(c, c->cur.t, c->trial.t);
+    if (cosang < cos(o->max_angle) && fabs(c->ds) > 4.0 * o->ds_min) {
+      c->ds *= 0.5;
+      ++c->stats.rejected;
+      continue;
+    }
+    break;
+  }
+  {
+    double d2 = 0.0;
+    for (size_t i = 0; i < N; ++i) {
+      double di = c->trial.X[i] - c->cur.X[i];
+      d2 += (i == n ? o->p_weight * o->p_weight : 1.0) * di * di;
+    }
+    c->trial.s = c->cur.s + sqrt(d2);
+  }
+
+  /* ---- events between cur (s = 0) and trial (s = ds) */
+  event evs[8 + 64];
+  size_t nev = 0, maxev = 8 + (o->nuz < 64 ? o->nuz : 64);
+  const cont_state *a = &c->cur, *b = &c->trial;
+  int want[5] = {0};
+  if (a->tests_valid) {
+    want[EV_LP] = o->detect_lp && sgn(a->psi_lp) * sgn(b->psi_lp) < 0;
+    want[EV_BP] = o->detect_bp && a->sign_det * b->sign_det < 0;
+    want[EV_HB] = o->detect_hb && a->n_cu >= 0 && b->n_cu >= 0 &&
+                  a->n_cu != b->n_cu && a->has_hb && b->has_hb &&
+                  sgn(a->psi_hb) * sgn(b->psi_hb) < 0;
+  }
+  want[EV_PMAX] = b->X[n] > o->p_max && a->X[n] <= o->p_max;
+  want[EV_PMIN] = b->X[n] < o->p_min && a->X[n] >= o->p_min;
+  for (int ev = 0; ev < 5; ++ev) {
+    if (!want[ev] || nev >= maxev) continue;
+    cont_state *q = &c->queue[c->qcap - 1 - nev];
+    if (cont_locate(c, ev, 0, b, q) == 0) {
+      evs[nev].ev = ev;
+      evs[nev].k = 0;
+      evs[nev].st = q;
+      ++nev;
+    } else if (ev == EV_PMAX || ev == EV_PMIN) {
+      /* could not localise the bound: end at the trial point anyway */
+      cont_state_copy(c, q, b);
+      evs[nev].ev = ev;
+      evs[nev].k = 0;
+      evs[nev].st = q;
+      ++nev;
+    }
+  }
+  for (size_t k = 0; k < o->nuz && nev < maxev; ++k) {
+    if (sgn(a->X[n] - o->uz[k]) * sgn(b->X[n] - o->uz[k]) < 0) {
+      cont_state *q = &c->queue[c->qcap - 1 - nev];
+      if (cont_locate(c, EV_UZ, k, b, q) == 0) {
+        evs[nev].ev = EV_UZ;
+        evs[nev].k = k;
+        evs[nev].st = q;
+        ++nev;
+      }
+    }
+  }
+  /* the localisations moved the work parameter vector: restore it */
+  c->trial.p[o->icp] = c->trial.X[n];
+  /* order by arclength (insertion sort; a handful of entries) */
+  for (size_t i = 1; i < nev; ++i)
+    for (size_t j = i; j > 0 && evs[j].st->s < evs[j - 1].st->s; --j) {
+      event tmp = evs[j];
+      evs[j] = evs[j - 1];
+      evs[j - 1] = tmp;
+    }
+  /* The localised states live at the tail of the queue array; copy them to
+   * the head in order.  The queue is empty here, and tail slots are beyond
+   * anything pushed below because qcap >= 8 + nuz > nev + 2. */
+  int ended = 0;
+  for (size_t i = 0; i < nev && !ended; ++i) {
+    static const int type_of[] = {WHIRL_PT_LP, WHIRL_PT_BP, WHIRL_PT_HB,
+                                  WHIRL_PT_EP, WHIRL_PT_EP, WHIRL_PT_UZ};
+    push(c, evs[i].st, type_of[evs[i].ev]);
+    ++c->stats.special;
+    if (evs[i].ev == EV_PMAX || evs[i].ev == EV_PMIN) {
+      finish(c, evs[i].ev == EV_PMAX ? WHIRL_STOP_PMAX : WHIRL_STOP_PMIN);
+      ended = 1;
+    } else if (evs[i].ev == EV_BP && o->stop_at_bp) {
+      c->queue[c->qlen - 1].type = WHIRL_PT_BP;
+      finish(c, WHIRL_STOP_BP);
+      ended = 1;
+    }
+  }
+  /* closed branch: the start point lies on the new segment */
+  if (!ended && o->detect_loop && c->index > 3) {
+    double u, dlen = 0.0;
+    double d = seg_dist(c, c->Xstart, a->X, b->X, &u);
+    for (size_t i = 0; i < N; ++i)
+      dlen += (b->X[i] - a->X[i]) * (b->X[i] - a->X[i]);
+    dlen = sqrt(dlen);
+    if (u >= 0.0 && u <= 1.0 && d < 0.05 * dlen && b->s > 4.0 * dlen) {
+      /* emit the start point again so the stored polyline closes */
+      cont_state *q = &c->queue[c->qcap - 1];
+      cont_state_copy(c, q, b);
+      memcpy(q->X, c->Xstart, N * sizeof *q->X);
+      q->p[o->icp] = c->Xstart[n];
+      q->s = a->s + u * (b->s - a->s);
+      /* the stability of the start point is the one already reported */
+      push(c, q, WHIRL_PT_EP);
+      finish(c, WHIRL_STOP_LOOP);
+      ended = 1;
+    }
+  }
+  if (!ended) {
+    ++c->stats.steps;
+    int is_end = c->stats.steps >= o->nmx;
+    double xm = 0.0;
+    for (size_t i = 0; i < n; ++i) xm = fmax(xm, fabs(b->X[i]));
+    int xmax = o->x_max > 0 && xm > o->x_max;
+    push(c, b, is_end || xmax ? WHIRL_PT_EP : WHIRL_PT_REGULAR);
+    if (is_end) finish(c, WHIRL_STOP_NMX);
+    else if (xmax) finish(c, WHIRL_STOP_XMAX);
+  } else {
+    ++c->stats.steps;
+  }
+  /* accept */
+  memcpy(c->Xprev, c->cur.X, N * sizeof *c->Xprev);
+  c->have_prev = 1;
+  cont_state_copy(c, &c->cur, &c->trial);
+  /* step control: grow after easy steps, shrink after hard ones */
+  if (its <= o->newton_fast && cosang > cos(0.5 * o->max_angle))
+    c->ds = fmin(1.5 * fabs(c->ds), o->ds_max);
+  else if (its > o->newton_maxit / 2)
+    c->ds = fmax(0.7 * fabs(c->ds), o->ds_min);
+  pop(c);
+  return WHIRL_OK;
+}
+
+const whirl_point *whirl_cont_point(const whirl_cont *c) { return &c->pt; }
+int whirl_cont_stop_reason(const whirl_cont *c) { return c->stop_reason; }
+const whirl_cont_stats *whirl_cont_get_stats(const whirl_cont *c) { return &c->stats; }
+void whirl_cont_reset_stats(whirl_cont *c) { memset(&c->stats, 0, sizeof c->stats); }
+const char *whirl_cont_errmsg(const whirl_cont *c) { return c->errmsg; }

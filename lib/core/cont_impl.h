@@ -1,0 +1,104 @@
+/* lib/core/cont_impl.h — private state of a continuation (whirl_cont), shared
+ * by cont.c (stepping, step control, start and branch switching) and
+ * locate.c (localisation of special points by test functions).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_CONT_IMPL_H
+#define WHIRL_CONT_IMPL_H
+
+#include <stdio.h>
+
+#include <whirl/cont.h>
+#include <whirl/linsol.h>
+
+/* Everything known about one corrected point: the solution, the unit tangent
+ * and the values of the test functions there. */
+typedef struct cont_state {
+  double *X;       /* X[n+1] = (x, p_icp) */
+  double *t;       /* unit tangent t[n+1] (weighted norm) */
+  double *p;       /* full parameter vector p[npar] */
+  double *re, *im; /* spectrum[nspec] */
+  size_t nspec;    /* spectrum entries filled */
+  double s;        /* arclength from the start point */
+  double psi_lp;   /* t_p: changes sign at a fold */
+  double logdet;   /* log|det [F_x F_p; r^T]|, r = predictor direction */
+  int sign_det;    /* its sign: changes at a branch point */
+  double psi_hb;   /* Re of the complex eigenvalue closest to the axis */
+  int has_hb;      /* psi_hb defined (a complex pair exists) */
+  int n_unstable;  /* eigenvalues with Re > 0, -1 without spectrum */
+  int n_cu;        /* complex eigenvalues with Re > 0 */
+  int tests_valid; /* 0 right after a branch switch: no detection yet */
+  int type, label;
+} cont_state;
+
+struct whirl_cont {
+  whirl_system sys;
+  whirl_cont_options opt;
+  size_t n, N, npar; /* N = n + 1 */
+  int sparse;
+
+  whirl_bordered *bd; /* extended matrix [F_x F_p; r^T] */
+  double *J;          /* dense F_x[n*n] (dense path) */
+  double *Jx;         /* sparse values[nnz] (sparse path) */
+  double *fp;         /* F_p[n] */
+  double *f;          /* F[n] */
+  double *rhs;        /* N */
+  double *row;        /* N: weighted predictor direction for the border */
+  double *work;       /* scratch for finite differences */
+  size_t wlen;
+  whirl_eig *eig;     /* spectrum of F_x when the system has none of its own */
+
+  cont_state cur;     /* last accepted point */
+  cont_state trial;   /* point being computed */
+  cont_state *queue;  /* special points and the regular point to emit */
+  size_t qlen, qhead, qcap;
+  cont_state out;     /* storage behind the point returned to the caller */
+  whirl_point pt;
+
+  double *dir;        /* N: predictor direction of the current step */
+  double *Xprev;      /* N: previous accepted point (secant predictor) */
+  int have_prev;
+  double *Xstart;     /* N: start point, for loop detection */
+  double ds;          /* current signed step (> 0 along the tangent) */
+  int its;            /* Newton iterations of the last correction */
+  size_t index;       /* PT of the next point */
+  int started, done, stop_reason;
+  int label;          /* last label given */
+  whirl_cont_stats stats;
+  char errmsg[512];
+};
+
+/* Record a formatted message with its origin; returns code. */
+int whirl_cont_fail_(whirl_cont *c, int code, const char *file, int line,
+                     const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+#define CONT_FAIL(c, code, ...) \
+  whirl_cont_fail_((c), (code), __FILE__, __LINE__, __VA_ARGS__)
+
+/* Correct the point X (in/out, N) onto the curve with the constraint
+ * <dir, X - X0>_w = s.  Returns 0, > 0 for a recoverable failure (domain,
+ * no convergence), < 0 fatal. */
+int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
+                 double *X);
+
+/* Evaluate the tangent and every test function at st->X, with the border row
+ * taken from dir (the predictor direction); st->t is oriented along dir. */
+int cont_analyse(whirl_cont *c, cont_state *st, const double *dir);
+
+/* Weighted inner product of N-vectors (parameter weighted by p_weight^2). */
+double cont_dot(const whirl_cont *c, const double *a, const double *b);
+
+/* Copy a state (all arrays). */
+void cont_state_copy(const whirl_cont *c, cont_state *dst,
+                     const cont_state *src);
+
+/* Event kinds localised by locate.c. */
+enum { EV_LP, EV_BP, EV_HB, EV_PMIN, EV_PMAX, EV_UZ };
+
+/* Localise the zero of the test function of event kind ev (k: UZ index)
+ * between c->cur (s = 0) and the trial point (s = ds) along c->dir; on
+ * success fills *out and returns 0; returns > 0 when the zero cannot be
+ * bracketed or the corrector fails (the event is then dropped). */
+int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
+                cont_state *out);
+
+#endif

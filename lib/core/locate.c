@@ -1,0 +1,121 @@
+/* lib/core/locate.c — localisation of special points between two accepted
+ * continuation points: the zero of a test function along the same
+ * pseudo-arclength parametrisation <r, X - X0> = σ is found by the Illinois
+ * variant of regula falsi (Dowell & Jarratt 1971), each trial σ corrected by
+ * Newton onto the branch.  Test functions: LP, the parameter component of the
+ * unit tangent; BP, det [F_x F_p; r^T]; HB, the real part of the complex
+ * eigenvalue nearest the imaginary axis; bounds and UZ, p - value.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <string.h>
+
+#include "cont_impl.h"
+
+static double psi(const whirl_cont *c, int ev, size_t k, const cont_state *st,
+                  double ref_logdet) {
+  const double pv = st->X[c->n];
+  switch (ev) {
+  case EV_LP:
+    return st->psi_lp;
+  case EV_BP: {
+    double e = st->logdet - ref_logdet;
+    e = e > 700 ? 700 : e < -700 ? -700 : e;
+    return st->sign_det * exp(e);
+  }
+  case EV_HB:
+    return st->has_hb ? st->psi_hb : NAN;
+  case EV_PMAX:
+    return pv - c->opt.p_max;
+  case EV_PMIN:
+    return pv - c->opt.p_min;
+  default:
+    return pv - c->opt.uz[k];
+  }
+}
+
+/* Value of |psi| below which the zero counts as found. */
+static double ftol(const whirl_cont *c, int ev, size_t k, const cont_state *st) {
+  switch (ev) {
+  case EV_LP:
+    return 1e-14;
+  case EV_BP:
+    return 0.0;
+  case EV_HB: {
+    double sc = 1.0;
+    for (size_t i = 0; i < st->nspec; ++i) sc = fmax(sc, hypot(st->re[i], st->im[i]));
+    return 1e-13 * sc;
+  }
+  case EV_PMAX:
+    return 1e-14 * (1.0 + fabs(c->opt.p_max));
+  case EV_PMIN:
+    return 1e-14 * (1.0 + fabs(c->opt.p_min));
+  default:
+    return 1e-14 * (1.0 + fabs(c->opt.uz[k]));
+  }
+}
+
+int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
+                cont_state *out) {
+  const cont_state *a = &c->cur;
+  const size_t N = c->N;
+  const double ds = c->ds;
+  double ref = 0.0, fa, fb;
+  int rc;
+
+  if (ev == EV_BP) {
+    /* the determinant at the start of the step with this step's border row,
+     * so both ends use the same row and the ratio is smooth in σ */
+    cont_state_copy(c, out, a);
+    if (cont_analyse(c, out, c->dir) != 0) return 1;
+    ref = out->logdet;
+    fa = out->sign_det;
+  } else {
+    fa = psi(c, ev, k, a, ref);
+  }
+  fb = psi(c, ev, k, b, ref);
+  if (!(fa * fb < 0.0)) return 1;
+
+  double sa = 0.0, sb = ds;
+  const double stol = c->opt.loc_tol * fmax(1.0, fabs(ds));
+  int found = 0;
+  for (int it = 0; it < 100; ++it) {
+    double sigma = (sa * fb - sb * fa) / (fb - fa);
+    const double lo = fmin(sa, sb), hi = fmax(sa, sb);
+    if (!(sigma > lo && sigma < hi)) sigma = 0.5 * (sa + sb);
+    /* A trial that lands exactly on a singular point (the secant can hit a
+     * branch point to the last bit on linear problems) is moved by a tiny
+     * fraction of the bracket and tried again. */
+    rc = 1;
+    for (int retry = 0; retry < 3 && rc != 0; ++retry) {
+      if (retry) sigma += 1e-7 * (hi - lo) * (retry == 1 ? 1.0 : -2.0);
+      const double u = sigma / ds;
+      for (size_t i = 0; i < N; ++i) out->X[i] = a->X[i] + u * (b->X[i] - a->X[i]);
+      rc = cont_correct(c, a->X, c->dir, sigma, out->X);
+      if (rc == 0) rc = cont_analyse(c, out, c->dir);
+      if (rc < 0) return 1;
+    }
+    if (rc != 0) return 1;
+    const double f = psi(c, ev, k, out, ref);
+    if (!isfinite(f)) return 1;
+    found = 1;
+    if (f == 0.0 || fabs(f) <= ftol(c, ev, k, out)) break;
+    if (f * fb < 0.0) {
+      sa = sb;
+      fa = fb;
+    } else {
+      fa *= 0.5; /* Illinois: keep the stale end from stalling the secant */
+    }
+    sb = sigma;
+    fb = f;
+    if (fabs(sb - sa) <= stol) break;
+  }
+  if (!found) return 1;
+  double d2 = 0.0;
+  for (size_t i = 0; i < N; ++i) {
+    const double di = out->X[i] - a->X[i];
+    d2 += (i == c->n ? c->opt.p_weight * c->opt.p_weight : 1.0) * di * di;
+  }
+  out->s = a->s + sqrt(d2);
+  out->p[c->opt.icp] = out->X[c->n];
+  return 0;
+}

@@ -1,0 +1,99 @@
+/* lib/systems/equilibrium.c — constructor: equilibria f(x, p) = 0 of an ODE
+ * model as an algebraic problem for the continuation core.  The spectrum is
+ * the eigenvalues of f_x (LAPACK dgeev), so the core detects Hopf points and
+ * reports stability; for non-autonomous models t is fixed at 0.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/equilibrium.h>
+#include <whirl/linsol.h>
+
+struct whirl_equilibrium {
+  const whirl_problem *prob;
+  whirl_system sys;
+  whirl_eig *eig;
+  double *J;    /* n*n scratch for the spectrum */
+  double *work; /* 2n scratch for finite differences */
+};
+
+static int eq_F(const double *x, const double *p, double *f, void *data) {
+  const whirl_equilibrium *eq = data;
+  return eq->prob->rhs(0.0, x, p, f, eq->prob->data);
+}
+
+static int eq_Fx(const double *x, const double *p, double *J, void *data) {
+  const whirl_equilibrium *eq = data;
+  if (eq->prob->jac_x) return eq->prob->jac_x(0.0, x, p, J, eq->prob->data);
+  return whirl_fd_jac_x(eq->prob, 0.0, x, p, J, eq->work);
+}
+
+/* dF/dp_k: the model's jac_p gives all parameters at once (n*npar); finite
+ * differences otherwise (in the core). */
+static int eq_Fp(const double *x, const double *p, size_t k, double *fk,
+                 void *data) {
+  const whirl_equilibrium *eq = data;
+  const size_t n = eq->prob->n, np = eq->prob->npar;
+  double stackbuf[256];
+  double *Jp = n * np <= 256 ? stackbuf : malloc(n * np * sizeof *Jp);
+  if (!Jp) return WHIRL_ENOMEM;
+  int rc = eq->prob->jac_p(0.0, x, p, Jp, eq->prob->data);
+  if (rc == 0) memcpy(fk, Jp + n * k, n * sizeof *fk);
+  if (Jp != stackbuf) free(Jp);
+  return rc;
+}
+
+static int eq_spectrum(const double *x, const double *p, const double *J,
+                       double *re, double *im, size_t *m, void *data) {
+  whirl_equilibrium *eq = data;
+  const size_t n = eq->prob->n;
+  if (*m < n) return WHIRL_EINVAL;
+  if (!J) {
+    int rc = eq_Fx(x, p, eq->J, data);
+    if (rc != 0) return rc;
+    J = eq->J;
+  }
+  int rc = whirl_eig_compute(eq->eig, J, re, im);
+  if (rc != WHIRL_OK) return rc;
+  *m = n;
+  return 0;
+}
+
+whirl_equilibrium *whirl_equilibrium_alloc(const whirl_problem *prob) {
+  if (!prob || !prob->rhs || prob->n == 0) return NULL;
+  whirl_equilibrium *eq = calloc(1, sizeof *eq);
+  if (!eq) return NULL;
+  eq->prob = prob;
+  eq->eig = whirl_eig_alloc(prob->n);
+  eq->J = malloc(prob->n * prob->n * sizeof *eq->J);
+  eq->work = malloc(2 * prob->n * sizeof *eq->work);
+  if (!eq->eig || !eq->J || !eq->work) {
+    whirl_equilibrium_free(eq);
+    return NULL;
+  }
+  whirl_system *s = &eq->sys;
+  s->name = prob->name;
+  s->n = prob->n;
+  s->npar = prob->npar;
+  s->F = eq_F;
+  s->Fx = eq_Fx;
+  s->Fp = prob->jac_p ? eq_Fp : NULL;
+  s->nspec = prob->n;
+  s->spectrum = eq_spectrum;
+  s->x_names = prob->x_names;
+  s->p_names = prob->p_names;
+  s->data = eq;
+  return eq;
+}
+
+void whirl_equilibrium_free(whirl_equilibrium *eq) {
+  if (!eq) return;
+  whirl_eig_free(eq->eig);
+  free(eq->J);
+  free(eq->work);
+  free(eq);
+}
+
+const whirl_system *whirl_equilibrium_system(const whirl_equilibrium *eq) {
+  return &eq->sys;
+}

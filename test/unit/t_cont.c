@@ -1,0 +1,406 @@
+/* test/unit/t_cont.c — the continuation core on problems with closed-form
+ * answers: folds of the cusp normal form, branch points of the pitchfork and
+ * transcritical normal forms (with branch switching), the Hopf point of the
+ * Brusselator, a closed branch (circle), exact parameter bounds, UZ points,
+ * finite-difference Jacobians, dense against sparse on the Bratu problem, and
+ * two continuations interleaved in one process.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/whirl.h>
+
+#include "../tap.h"
+
+/* ---- cusp normal form  F = mu + lam x - x^3,  p = (mu, lam) */
+static int cusp_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = p[0] + p[1] * x[0] - x[0] * x[0] * x[0];
+  return 0;
+}
+static int cusp_Fx(const double *x, const double *p, double *J, void *d) {
+  (void)d;
+  J[0] = p[1] - 3 * x[0] * x[0];
+  return 0;
+}
+static int cusp_Fp(const double *x, const double *p, size_t k, double *fk, void *d) {
+  (void)d;
+  (void)p;
+  fk[0] = k == 0 ? 1.0 : x[0];
+  return 0;
+}
+
+/* ---- pitchfork F = x (p - x^2) and transcritical F = x (p - x) */
+static int pf_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[0] * (p[0] - x[0] * x[0]);
+  return 0;
+}
+static int tc_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[0] * (p[0] - x[0]);
+  return 0;
+}
+
+/* ---- circle  F = x^2 + p^2 - 1: a closed branch with folds at p = +-1 */
+static int circ_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[0] * x[0] + p[0] * p[0] - 1.0;
+  return 0;
+}
+
+/* ---- Brusselator x' = a - (b+1)x + x^2 y, y' = b x - x^2 y, p = (b, a):
+ * equilibrium (a, b/a), Hopf at b = 1 + a^2 with frequency a. */
+static int bru_rhs(double t, const double *x, const double *p, double *f, void *d) {
+  (void)t;
+  (void)d;
+  const double b = p[0], a = p[1];
+  f[0] = a - (b + 1) * x[0] + x[0] * x[0] * x[1];
+  f[1] = b * x[0] - x[0] * x[0] * x[1];
+  return 0;
+}
+
+/* ---- Bratu  -u'' = mu exp(u), u(0) = u(1) = 0, centred differences on m
+ * interior points; tridiagonal Jacobian given both dense and sparse. */
+#define BRATU_M 60
+static int bratu_F(const double *u, const double *p, double *f, void *d) {
+  (void)d;
+  const double h = 1.0 / (BRATU_M + 1), ih2 = 1.0 / (h * h);
+  for (int i = 0; i < BRATU_M; ++i) {
+    double ul = i > 0 ? u[i - 1] : 0.0, ur = i < BRATU_M - 1 ? u[i + 1] : 0.0;
+    f[i] = (ul - 2 * u[i] + ur) * ih2 + p[0] * exp(u[i]);
+  }
+  return 0;
+}
+static int bratu_Fx(const double *u, const double *p, double *J, void *d) {
+  (void)d;
+  const double h = 1.0 / (BRATU_M + 1), ih2 = 1.0 / (h * h);
+  memset(J, 0, sizeof(double) * BRATU_M * BRATU_M);
+  for (int i = 0; i < BRATU_M; ++i) {
+    J[i + BRATU_M * i] = -2 * ih2 + p[0] * exp(u[i]);
+    if (i > 0) J[i + BRATU_M * (i - 1)] = ih2;
+    if (i < BRATU_M - 1) J[i + BRATU_M * (i + 1)] = ih2;
+  }
+  return 0;
+}
+static int bratu_Jp[BRATU_M + 1], bratu_Ji[3 * BRATU_M];
+static int bratu_Fxs(const double *u, const double *p, double *Jx, void *d) {
+  (void)d;
+  const double h = 1.0 / (BRATU_M + 1), ih2 = 1.0 / (h * h);
+  for (int j = 0; j < BRATU_M; ++j)
+    for (int q = bratu_Jp[j]; q < bratu_Jp[j + 1]; ++q)
+      Jx[q] = bratu_Ji[q] == j ? -2 * ih2 + p[0] * exp(u[j]) : ih2;
+  return 0;
+}
+static int bratu_Fp(const double *u, const double *p, size_t k, double *fk, void *d) {
+  (void)d;
+  (void)p;
+  (void)k;
+  for (int i = 0; i < BRATU_M; ++i) fk[i] = exp(u[i]);
+  return 0;
+}
+
+/* run a continuation to its end into a fresh branch */
+static whirl_branch *run(const whirl_system *sys, const whirl_cont_options *o,
+                         const double *x0, const double *p0, int dir, int *reason) {
+  char err[256];
+  whirl_cont *c = whirl_cont_alloc(sys, o, err, sizeof err);
+  if (!c) {
+    printf("# alloc: %s\n", err);
+    return NULL;
+  }
+  whirl_branch *b = whirl_branch_alloc(sys->n, sys->npar, sys->nspec, o->icp);
+  int rc = whirl_cont_start(c, x0, p0, dir);
+  if (rc == WHIRL_OK) rc = whirl_cont_run(c, b);
+  if (rc < 0) printf("# run: %s\n", whirl_cont_errmsg(c));
+  if (reason) *reason = whirl_cont_stop_reason(c);
+  whirl_cont_free(c);
+  return b;
+}
+
+static size_t count_type(const whirl_branch *b, int type) {
+  size_t k = 0;
+  for (size_t i = 0; i < b->len; ++i) k += b->pts[i].type == type;
+  return k;
+}
+static const whirl_branch_point *nth_type(const whirl_branch *b, int type, size_t nth) {
+  for (size_t i = 0; i < b->len; ++i)
+    if (b->pts[i].type == type && nth-- == 0) return &b->pts[i];
+  return NULL;
+}
+
+static void test_cusp(int analytic) {
+  whirl_system s = {.name = "cusp", .n = 1, .npar = 2, .F = cusp_F};
+  if (analytic) {
+    s.Fx = cusp_Fx;
+    s.Fp = cusp_Fp;
+  }
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.05;
+  o.ds_max = 0.2;
+  o.p_min = -6.5;
+  o.p_max = 6.5;
+  double x0 = -2.0, p0[2] = {-6.0, 1.0};
+  int reason;
+  whirl_branch *b = run(&s, &o, &x0, p0, +1, &reason);
+  ok(b && count_type(b, WHIRL_PT_LP) == 2, "cusp (%s): two folds", analytic ? "analytic" : "FD");
+  const double mu_f = 2.0 / (3.0 * sqrt(3.0)), x_f = 1.0 / sqrt(3.0);
+  const whirl_branch_point *l1 = nth_type(b, WHIRL_PT_LP, 0), *l2 = nth_type(b, WHIRL_PT_LP, 1);
+  if (l1 && l2) {
+    is_abs(l1->p[0], mu_f, 1e-12, "cusp first fold mu = 2/(3 sqrt 3)");
+    is_abs(l1->x[0], -x_f, 1e-9, "cusp first fold x = -1/sqrt 3");
+    is_abs(l2->p[0], -mu_f, 1e-12, "cusp second fold mu = -2/(3 sqrt 3)");
+    is_abs(l2->x[0], x_f, 1e-9, "cusp second fold x = 1/sqrt 3");
+  }
+  ok(reason == WHIRL_STOP_PMAX, "cusp ends at the upper parameter bound");
+  const whirl_branch_point *e = &b->pts[b->len - 1];
+  ok(e->type == WHIRL_PT_EP, "cusp last point is EP");
+  is_abs(e->p[0], 6.5, 1e-12, "cusp end point exactly at RL1");
+  /* every point satisfies F = 0 */
+  double res = 0;
+  for (size_t i = 0; i < b->len; ++i) {
+    double f;
+    cusp_F(b->pts[i].x, b->pts[i].p, &f, NULL);
+    res = fmax(res, fabs(f));
+  }
+  ok(res < 1e-10, "cusp: all %zu points solve F = 0 (max |F| = %.2e)", b->len, res);
+  whirl_branch_free(b);
+}
+
+static void test_bp(void) {
+  whirl_system s = {.name = "pitchfork", .n = 1, .npar = 1, .F = pf_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.03;
+  o.ds_max = 0.1;
+  o.p_min = -1.0;
+  o.p_max = 1.0;
+  double x0 = 0.0, p0 = -1.0;
+  whirl_branch *b = run(&s, &o, &x0, &p0, +1, NULL);
+  ok(b && count_type(b, WHIRL_PT_BP) == 1, "pitchfork: one BP on the trivial branch");
+  ok(count_type(b, WHIRL_PT_LP) == 0, "pitchfork: no spurious LP on the trivial branch");
+  const whirl_branch_point *bp = nth_type(b, WHIRL_PT_BP, 0);
+  if (bp) is_abs(bp->p[0], 0.0, 1e-10, "pitchfork BP at p = 0");
+
+  /* transcritical: BP at 0, then switch onto x = p */
+  whirl_system t = {.name = "transcritical", .n = 1, .npar = 1, .F = tc_F};
+  char err[256];
+  whirl_cont *c = whirl_cont_alloc(&t, &o, err, sizeof err);
+  whirl_cont_start(c, &x0, &p0, +1);
+  whirl_point bpp;
+  double bx = NAN, bpar = NAN, bt[2] = {0, 0};
+  int found = 0;
+  while (whirl_cont_step(c) == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(c);
+    if (pt->type == WHIRL_PT_BP && !found) {
+      found = 1;
+      bx = pt->x[0];
+      bpar = pt->p[0];
+      bt[0] = pt->t[0];
+      bt[1] = pt->t[1];
+    }
+  }
+  ok(found, "transcritical: BP found");
+  is_abs(bpar, 0.0, 1e-10, "transcritical BP at p = 0");
+  bpp = (whirl_point){.n = 1, .npar = 1, .x = &bx, .p = &bpar, .t = bt};
+  whirl_branch *sw = whirl_branch_alloc(1, 1, 0, 0);
+  int rc = whirl_cont_start_switch(c, &bpp, +1);
+  ok(rc == WHIRL_OK, "transcritical: branch switching starts (%s)", whirl_cont_errmsg(c));
+  if (rc == WHIRL_OK) whirl_cont_run(c, sw);
+  double maxdev = 0.0, maxx = 0.0;
+  for (size_t i = 1; i < sw->len; ++i) {
+    maxdev = fmax(maxdev, fabs(sw->pts[i].x[0] - sw->pts[i].p[0]));
+    maxx = fmax(maxx, fabs(sw->pts[i].x[0]));
+  }
+  ok(sw->len > 5 && maxx > 0.5, "switched branch leaves the trivial branch (max |x| = %g)", maxx);
+  ok(maxdev < 1e-9, "switched branch is x = p (max |x - p| = %.2e)", maxdev);
+  whirl_branch_free(sw);
+  whirl_cont_free(c);
+  whirl_branch_free(b);
+}
+
+static void test_hopf(void) {
+  static const whirl_problem bru = {.name = "brusselator", .n = 2, .npar = 2,
+                                    .rhs = bru_rhs, .autonomous = 1};
+  whirl_equilibrium *eq = whirl_equilibrium_alloc(&bru);
+  const whirl_system *s = whirl_equilibrium_system(eq);
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.05;
+  o.ds_max = 0.2;
+  o.p_min = 0.0;
+  o.p_max = 4.0;
+  const double a = 1.5;
+  double p0[2] = {1.0, a}, x0[2] = {a, 1.0 / a};
+  whirl_branch *b = run(s, &o, x0, p0, +1, NULL);
+  ok(b && count_type(b, WHIRL_PT_HB) == 1, "Brusselator: one HB");
+  const whirl_branch_point *h = nth_type(b, WHIRL_PT_HB, 0);
+  if (h) {
+    is_abs(h->p[0], 1.0 + a * a, 1e-10, "Brusselator HB at b = 1 + a^2");
+    double w = fabs(h->spec_im[0]);
+    is_abs(w, a, 1e-8, "Brusselator HB frequency = a");
+    is_abs(h->spec_re[0], 0.0, 1e-10, "Brusselator HB: critical real part 0");
+  }
+  /* stability flips at the Hopf point */
+  int before = -2, after = -2;
+  for (size_t i = 0; i < b->len; ++i) {
+    if (b->pts[i].p[0] < 1.0 + a * a - 0.1) before = b->pts[i].stable;
+    if (b->pts[i].p[0] > 1.0 + a * a + 0.1 && after == -2) after = b->pts[i].stable;
+  }
+  ok(before == 1 && after == 0, "Brusselator stable before and unstable after HB");
+  whirl_branch_free(b);
+  whirl_equilibrium_free(eq);
+}
+
+static void test_loop(void) {
+  whirl_system s = {.name = "circle", .n = 1, .npar = 1, .F = circ_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.05;
+  o.ds_max = 0.1;
+  double x0 = 1.0, p0 = 0.0;
+  whirl_branch *b = NULL;
+  char err[256];
+  whirl_cont_stats st = {0};
+  int rc = whirl_trace_branch(&s, &o, &x0, &p0, &b, &st, err, sizeof err);
+  ok(rc == WHIRL_OK && b, "circle traced");
+  ok(b->stop_reason == WHIRL_STOP_LOOP, "circle: branch closed on itself");
+  ok(count_type(b, WHIRL_PT_LP) == 2, "circle: two folds");
+  const whirl_branch_point *l1 = nth_type(b, WHIRL_PT_LP, 0), *l2 = nth_type(b, WHIRL_PT_LP, 1);
+  if (l1 && l2) {
+    is_abs(fabs(l1->p[0]), 1.0, 1e-12, "circle fold at |p| = 1");
+    is_abs(l1->p[0] + l2->p[0], 0.0, 1e-12, "circle folds at p = -1 and p = +1");
+  }
+  is_abs(b->pts[0].x[0], b->pts[b->len - 1].x[0], 1e-12, "circle: polyline closes");
+  ok(st.steps > 10 && st.newton_its >= st.steps, "statistics counted (%zu steps, %zu its)",
+     st.steps, st.newton_its);
+  whirl_branch_free(b);
+}
+
+static void test_uz(void) {
+  whirl_system s = {.name = "cusp", .n = 1, .npar = 2, .F = cusp_F, .Fx = cusp_Fx};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  const double uz[2] = {-3.0, 1.25};
+  o.uz = uz;
+  o.nuz = 2;
+  o.p_min = -6.5;
+  o.p_max = 6.5;
+  double x0 = -2.0, p0[2] = {-6.0, 1.0};
+  whirl_branch *b = run(&s, &o, &x0, p0, +1, NULL);
+  ok(count_type(b, WHIRL_PT_UZ) == 2, "UZ: both requested values output");
+  const whirl_branch_point *u = nth_type(b, WHIRL_PT_UZ, 1);
+  if (u) is_abs(u->p[0], 1.25, 1e-12, "UZ at mu = 1.25");
+  whirl_branch_free(b);
+}
+
+static void test_bratu(void) {
+  int q = 0;
+  for (int j = 0; j < BRATU_M; ++j) {
+    bratu_Jp[j] = q;
+    if (j > 0) bratu_Ji[q++] = j - 1;
+    bratu_Ji[q++] = j;
+    if (j < BRATU_M - 1) bratu_Ji[q++] = j + 1;
+  }
+  bratu_Jp[BRATU_M] = q;
+  whirl_system s = {.name = "bratu", .n = BRATU_M, .npar = 1, .F = bratu_F,
+                    .Fx = bratu_Fx, .Fp = bratu_Fp, .nnz = (size_t)q,
+                    .Jp = bratu_Jp, .Ji = bratu_Ji, .Fx_sparse = bratu_Fxs};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.1;
+  o.ds_max = 0.5;
+  o.p_min = -0.5;
+  o.p_max = 4.0;
+  o.x_max = 6.0;
+  double u0[BRATU_M] = {0}, p0 = 0.0;
+  whirl_branch *bd = run(&s, &o, u0, &p0, +1, NULL);
+  o.linsol = WHIRL_LINSOL_SPARSE;
+  whirl_branch *bs = run(&s, &o, u0, &p0, +1, NULL);
+  const whirl_branch_point *ld = nth_type(bd, WHIRL_PT_LP, 0), *ls = nth_type(bs, WHIRL_PT_LP, 0);
+  ok(ld && ls, "Bratu: fold found by the dense and by the sparse solver");
+  if (ld && ls) {
+    is_rel(ls->p[0], ld->p[0], 1e-11, "Bratu fold: sparse = dense");
+    double du = 0;
+    for (int i = 0; i < BRATU_M; ++i) du = fmax(du, fabs(ls->x[i] - ld->x[i]));
+    ok(du < 1e-8, "Bratu fold state: sparse = dense (max diff %.2e)", du);
+    /* continuous problem: mu_c = 3.513830719125162 (Bratu, from the
+     * transcendental equation); centred differences are O(h^2) below it */
+    is_rel(ld->p[0], 3.513830719125162, 2e-3, "Bratu fold near the continuous value");
+  }
+  whirl_branch_free(bd);
+  whirl_branch_free(bs);
+}
+
+static void test_two_at_once(void) {
+  whirl_system s = {.name = "cusp", .n = 1, .npar = 2, .F = cusp_F, .Fx = cusp_Fx, .Fp = cusp_Fp};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.p_min = -6.5;
+  o.p_max = 6.5;
+  char err[128];
+  whirl_cont *c1 = whirl_cont_alloc(&s, &o, err, sizeof err);
+  whirl_cont *c2 = whirl_cont_alloc(&s, &o, err, sizeof err);
+  double x1 = -2.0, p1[2] = {-6.0, 1.0}, x2 = 2.0, p2[2] = {6.0, 1.0};
+  whirl_cont_start(c1, &x1, p1, +1);
+  whirl_cont_start(c2, &x2, p2, -1);
+  int r1 = WHIRL_OK, r2 = WHIRL_OK;
+  double lp1 = NAN, lp2 = NAN;
+  while (r1 == WHIRL_OK || r2 == WHIRL_OK) {
+    if (r1 == WHIRL_OK && (r1 = whirl_cont_step(c1)) == WHIRL_OK &&
+        whirl_cont_point(c1)->type == WHIRL_PT_LP && isnan(lp1))
+      lp1 = whirl_cont_point(c1)->p[0];
+    if (r2 == WHIRL_OK && (r2 = whirl_cont_step(c2)) == WHIRL_OK &&
+        whirl_cont_point(c2)->type == WHIRL_PT_LP && isnan(lp2))
+      lp2 = whirl_cont_point(c2)->p[0];
+  }
+  is_abs(lp1, 2.0 / (3.0 * sqrt(3.0)), 1e-12, "interleaved run 1 fold");
+  is_abs(lp2, -2.0 / (3.0 * sqrt(3.0)), 1e-12, "interleaved run 2 fold (other direction)");
+  whirl_cont_free(c1);
+  whirl_cont_free(c2);
+}
+
+static void test_errors(void) {
+  whirl_system s = {.name = "cusp", .n = 1, .npar = 2, .F = cusp_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  char err[256] = "";
+  o.icp = 5;
+  ok(whirl_cont_alloc(&s, &o, err, sizeof err) == NULL && strstr(err, "ICP"),
+     "bad ICP rejected: %s", err);
+  whirl_cont_options_default(&o);
+  o.ds_min = 0;
+  ok(whirl_cont_alloc(&s, &o, err, sizeof err) == NULL && strstr(err, "DSMIN"),
+     "bad DSMIN rejected: %s", err);
+  whirl_cont_options_default(&o);
+  o.linsol = WHIRL_LINSOL_SPARSE;
+  ok(whirl_cont_alloc(&s, &o, err, sizeof err) == NULL, "sparse without pattern rejected: %s", err);
+  whirl_cont_options_default(&o);
+  s.Fx = cusp_Fx; /* exact F_x = 0 at the fold (differences give O(h^2)) */
+  whirl_cont *c = whirl_cont_alloc(&s, &o, err, sizeof err);
+  double x = NAN, p[2] = {0, 1};
+  ok(whirl_cont_start(c, &x, p, 1) == WHIRL_EINVAL, "NaN start rejected: %s", whirl_cont_errmsg(c));
+  ok(whirl_cont_step(c) == WHIRL_EINVAL, "step after a failed start is an error: %s", whirl_cont_errmsg(c));
+  x = 1.0 / sqrt(3.0);
+  p[0] = -2.0 / (3.0 * sqrt(3.0));
+  int rc = whirl_cont_start(c, &x, p, 1);
+  ok((rc == WHIRL_ESINGULAR || rc == WHIRL_ENOCONV) && whirl_cont_errmsg(c)[0],
+     "start exactly at a fold is an error with a message: %s", whirl_cont_errmsg(c));
+  whirl_cont_free(c);
+}
+
+int main(void) {
+  test_cusp(1);
+  test_cusp(0);
+  test_bp();
+  test_hopf();
+  test_loop();
+  test_uz();
+  test_bratu();
+  test_two_at_once();
+  test_errors();
+  return done_testing();
+}
