@@ -197,7 +197,9 @@ int whirl_trace_branch(const whirl_system *sys, const whirl_cont_options *opt,
    * is ordered along the curve, then append half[1] */
   whirl_branch_reverse(half[0]);
   if (half[1] && half[1]->len) {
-    if (half[0]->len) {
+    /* the seed is interior unless one half ended right at it (a seed on a
+     * parameter bound, heading out) */
+    if (half[0]->len > 1 && half[1]->len > 1) {
       whirl_branch_point *seed = &half[0]->pts[half[0]->len - 1];
       seed->type = WHIRL_PT_REGULAR;
       seed->label = 0;

@@ -692,6 +692,12 @@ int whirl_cont_step(whirl_cont *c) {
   }
   want[EV_PMAX] = b->X[n] > o->p_max && a->X[n] <= o->p_max;
   want[EV_PMIN] = b->X[n] < o->p_min && a->X[n] >= o->p_min;
+  /* a branch started on a bound and heading out ends where it started */
+  if ((want[EV_PMAX] && a->X[n] >= o->p_max - 1e-12 * (1.0 + fabs(o->p_max))) ||
+      (want[EV_PMIN] && a->X[n] <= o->p_min + 1e-12 * (1.0 + fabs(o->p_min)))) {
+    finish(c, want[EV_PMAX] ? WHIRL_STOP_PMAX : WHIRL_STOP_PMIN);
+    return WHIRL_DONE;
+  }
   for (int ev = 0; ev < 5; ++ev) {
     if (!want[ev] || nev >= maxev) continue;
     cont_state *q = &c->queue[c->qcap - 1 - nev];

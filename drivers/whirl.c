@@ -1,0 +1,65 @@
+/* drivers/whirl.c — the whirl command: dispatches subcommands.  Drivers
+ * parse options, build library objects, run them and write files; the
+ * numerics live in libwhirl.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <stdio.h>
+#include <string.h>
+
+#include <whirl/whirl.h>
+
+#include "cli.h"
+
+static void usage(FILE *f) {
+  fprintf(f,
+          "usage: whirl <command> [options]\n"
+          "\n"
+          "Numerical continuation and bifurcation analysis, first for rigid\n"
+          "rotors on squeeze-film dampers.\n"
+          "\n"
+          "commands:\n"
+          "  sfd response   every branch of synchronous circular orbits of the\n"
+          "                 SFD rotor against speed, with stability, Floquet\n"
+          "                 multipliers, folds (LP) and pictures\n"
+          "\n"
+          "  whirl <command> --help   options of a command\n"
+          "  whirl --version          library version\n");
+}
+
+static void sfd_usage(FILE *f) {
+  fprintf(f,
+          "usage: whirl sfd <command> [options]\n"
+          "\n"
+          "The rigid rotor on two short squeeze-film dampers (pi-film).\n"
+          "commands:\n"
+          "  response   all branches of circular orbits, stability, LP points\n");
+}
+
+int main(int argc, char **argv) {
+  if (argc < 2) {
+    usage(stderr);
+    return 2;
+  }
+  if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+    usage(stdout);
+    return 0;
+  }
+  if (!strcmp(argv[1], "--version")) {
+    printf("whirl %s\n", whirl_version());
+    return 0;
+  }
+  if (!strcmp(argv[1], "sfd")) {
+    if (argc < 3) {
+      sfd_usage(stderr);
+      return 2;
+    }
+    if (!strcmp(argv[2], "--help") || !strcmp(argv[2], "-h")) {
+      sfd_usage(stdout);
+      return 0;
+    }
+    if (!strcmp(argv[2], "response")) return cmd_sfd_response(argc - 2, argv + 2);
+    fprintf(stderr, "whirl sfd: unknown command '%s' (see whirl sfd --help)\n", argv[2]);
+    return 2;
+  }
+  fprintf(stderr, "whirl: unknown command '%s' (see whirl --help)\n", argv[1]);
+  return 2;
+}
