@@ -14,7 +14,8 @@ int whirl_newton(const whirl_system *sys, double *x, const double *p,
   whirl_linsol *ls = whirl_linsol_alloc_dense(n);
   double *J = malloc(n * n * sizeof *J), *f = malloc(n * sizeof *f);
   double *work = malloc(wlen * sizeof *work);
-  int rc = WHIRL_ENOMEM, it = 0;
+  int rc = WHIRL_ENOMEM, it = 0, grow = 0;
+  double prev = INFINITY;
   if (!ls || !J || !f || !work) goto done;
   rc = WHIRL_ENOCONV;
   for (it = 1; it <= maxit; ++it) {
@@ -26,7 +27,9 @@ int whirl_newton(const whirl_system *sys, double *x, const double *p,
     }
     r = whirl_linsol_factor(ls, J);
     if (r != WHIRL_OK) {
-      rc = r;
+      /* singular at the start is the caller's problem; later it means the
+       * iterates ran off to where F is flat: divergence */
+      rc = it > 1 && r == WHIRL_ESINGULAR ? WHIRL_ENOCONV : r;
       break;
     }
     whirl_linsol_solve(ls, f, 1, 0);
@@ -41,6 +44,10 @@ int whirl_newton(const whirl_system *sys, double *x, const double *p,
       rc = WHIRL_OK;
       break;
     }
+    /* growing corrections three times running: diverging */
+    grow = it > 1 && dmax > prev ? grow + 1 : 0;
+    if (grow >= 3) break;
+    prev = dmax;
   }
 done:
   if (its) *its = it;

@@ -15,6 +15,8 @@ struct whirl_equilibrium {
   whirl_eig *eig;
   double *J;    /* n*n scratch for the spectrum */
   double *work; /* 2n scratch for finite differences */
+  int *Jp, *Ji; /* full compressed-column pattern, so the sparse path of the
+                   core (UMFPACK) can be used and checked against the dense */
 };
 
 static int eq_F(const double *x, const double *p, double *f, void *data) {
@@ -43,6 +45,13 @@ static int eq_Fp(const double *x, const double *p, size_t k, double *fk,
   return rc;
 }
 
+/* Sparse values for the full pattern: column-major order equals the dense
+ * layout, so the dense Jacobian is the value array. */
+static int eq_Fx_sparse(const double *x, const double *p, double *Jx,
+                        void *data) {
+  return eq_Fx(x, p, Jx, data);
+}
+
 static int eq_spectrum(const double *x, const double *p, const double *J,
                        double *re, double *im, size_t *m, void *data) {
   whirl_equilibrium *eq = data;
@@ -67,10 +76,14 @@ whirl_equilibrium *whirl_equilibrium_alloc(const whirl_problem *prob) {
   eq->eig = whirl_eig_alloc(prob->n);
   eq->J = malloc(prob->n * prob->n * sizeof *eq->J);
   eq->work = malloc(2 * prob->n * sizeof *eq->work);
-  if (!eq->eig || !eq->J || !eq->work) {
+  eq->Jp = malloc((prob->n + 1) * sizeof *eq->Jp);
+  eq->Ji = malloc(prob->n * prob->n * sizeof *eq->Ji);
+  if (!eq->eig || !eq->J || !eq->work || !eq->Jp || !eq->Ji) {
     whirl_equilibrium_free(eq);
     return NULL;
   }
+  for (size_t j = 0; j <= prob->n; ++j) eq->Jp[j] = (int)(j * prob->n);
+  for (size_t q = 0; q < prob->n * prob->n; ++q) eq->Ji[q] = (int)(q % prob->n);
   whirl_system *s = &eq->sys;
   s->name = prob->name;
   s->n = prob->n;
@@ -78,6 +91,10 @@ whirl_equilibrium *whirl_equilibrium_alloc(const whirl_problem *prob) {
   s->F = eq_F;
   s->Fx = eq_Fx;
   s->Fp = prob->jac_p ? eq_Fp : NULL;
+  s->nnz = prob->n * prob->n;
+  s->Jp = eq->Jp;
+  s->Ji = eq->Ji;
+  s->Fx_sparse = eq_Fx_sparse;
   s->nspec = prob->n;
   s->spectrum = eq_spectrum;
   s->x_names = prob->x_names;
@@ -91,6 +108,8 @@ void whirl_equilibrium_free(whirl_equilibrium *eq) {
   whirl_eig_free(eq->eig);
   free(eq->J);
   free(eq->work);
+  free(eq->Jp);
+  free(eq->Ji);
   free(eq);
 }
 
