@@ -242,10 +242,9 @@ int whirl_sfd_circ_fold(double *eps, double *Omega, double lambda,
                         double delta, double zeta) {
   if (eps == NULL || Omega == NULL) return WHIRL_EINVAL;
   double e = *eps, w = *Omega;
-  if (!isfinite(w)) return WHIRL_EINVAL;
-  int rc = check_args(e, lambda, delta, zeta);
-  if (rc == WHIRL_EDOMAIN || (rc == WHIRL_OK && !(e > 0.0))) return WHIRL_ENOCONV;
-  if (rc != 0) return rc;
+  if (!isfinite(w) || !isfinite(e) || check_args(0.5, lambda, delta, zeta) != 0)
+    return WHIRL_EINVAL;
+  if (!(e > 0.0 && e < 1.0)) return WHIRL_ENOCONV; /* as if it had left */
   for (int it = 0; it < 50; ++it) {
     double c[5], d1[5], d2[5], dO, d1O;
     circ_coeffs(e, lambda, delta, zeta, c, d1, d2);
