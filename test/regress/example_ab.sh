@@ -28,6 +28,9 @@ pcdir="$tmp/stage$libdir/pkgconfig"
 ok $? "whirl.pc installed in $libdir/pkgconfig"
 
 cp "$top_srcdir/examples/ab/ab.c" "$top_srcdir/examples/ab/Makefile" "$tmp/"
+# /usr/local/include and /usr/local/lib count as system paths to pkgconf and
+# would be dropped before the sysroot is applied: keep them.
+PKG_CONFIG_ALLOW_SYSTEM_CFLAGS=1 PKG_CONFIG_ALLOW_SYSTEM_LIBS=1 \
 PKG_CONFIG_SYSROOT_DIR="$tmp/stage" PKG_CONFIG_LIBDIR="$pcdir" \
   ${MAKE:-make} -s -C "$tmp" ab > "$tmp/build.log" 2>&1
 rc=$?

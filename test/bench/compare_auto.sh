@@ -1,0 +1,27 @@
+#!/bin/sh
+# test/bench/compare_auto.sh — whirl against AUTO-07p on the same job, both
+# timed as whole processes in one run on this machine: the complete Table 1
+# response of the SFD rotor (main branch and isola, LPs localised).
+#   whirl:    whirl sfd response --no-plot --quiet   (N runs, median)
+#   AUTO-07p: test/bench/auto/sfd/run_auto.sh -n N   (cold, warm, exe only)
+# usage: test/bench/compare_auto.sh [N]   (from the build directory; needs
+# drivers/whirl built and the auto-07p Debian package)
+# SPDX-License-Identifier: BSD-3-Clause
+set -eu
+N=${1:-11}
+here=$(cd "$(dirname "$0")" && pwd)
+WHIRL=${WHIRL:-./drivers/whirl}
+[ -x "$WHIRL" ] || { echo "compare_auto.sh: $WHIRL not found (run from the build directory)" >&2; exit 1; }
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-cmp.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+i=0
+while [ $i -lt "$N" ]; do
+  s=$(date +%s%N)
+  "$WHIRL" sfd response --no-plot --quiet --out "$tmp/out" > /dev/null
+  e=$(date +%s%N)
+  echo $(( (e - s) / 1000 )) >> "$tmp/t"
+  i=$((i + 1))
+done
+med=$(sort -n "$tmp/t" | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)] / 1000}')
+echo "whirl whole process, median of $N: $med ms"
+"$here/auto/sfd/run_auto.sh" -n "$N" | tee "$tmp/auto.txt"
