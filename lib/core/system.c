@@ -5,6 +5,7 @@
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <float.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <whirl/system.h>
@@ -92,8 +93,6 @@ int whirl_system_param(const whirl_system *sys, const double *x,
   }
   return whirl_system_fd_param(sys, x, p, k, fk, work);
 }
-
-#include <stdlib.h>
 
 int whirl_system_check_jacobian(const whirl_system *sys, const double *x,
                                 const double *p, double *max_err) {
