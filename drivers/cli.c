@@ -6,6 +6,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "cli.h"
@@ -51,3 +52,97 @@ const char *cli_value(int argc, char **argv, int *i, const char *name,
 }
 
 int cli_is_tty(void) { return isatty(fileno(stderr)); }
+
+int cli_parse(const char *cmd, int argc, char **argv, const cli_opt *opts,
+              size_t nopts, void (*help)(FILE *)) {
+  for (int i = 1; i < argc; ++i) {
+    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+      help(stdout);
+      return 1;
+    }
+    int matched = 0;
+    for (size_t k = 0; k < nopts && !matched; ++k) {
+      const cli_opt *o = &opts[k];
+      if (o->kind == CLI_FLAG) {
+        if (!strcmp(argv[i], o->name)) {
+          *(int *)o->dst = 1;
+          matched = 1;
+        }
+        continue;
+      }
+      int missing = 0;
+      const char *v = cli_value(argc, argv, &i, o->name, &missing);
+      if (missing) {
+        cli_error(cmd, "option %s needs a value", o->name);
+        return 2;
+      }
+      if (!v) continue;
+      matched = 1;
+      char *end = NULL;
+      switch (o->kind) {
+        case CLI_DOUBLE:
+          if (cli_double(cmd, o->name, v, (double *)o->dst)) return 2;
+          break;
+        case CLI_SIZE:
+        case CLI_INT: {
+          errno = 0;
+          long long n = strtoll(v, &end, 10);
+          if (end == v || *end || errno == ERANGE ||
+              (o->kind == CLI_SIZE && n < 0) ||
+              (o->kind == CLI_INT && (n < -2147483647LL || n > 2147483647LL))) {
+            cli_error(cmd, "%s expects %s integer, got '%s'", o->name,
+                      o->kind == CLI_SIZE ? "a non-negative" : "an", v);
+            return 2;
+          }
+          if (o->kind == CLI_SIZE)
+            *(size_t *)o->dst = (size_t)n;
+          else
+            *(int *)o->dst = (int)n;
+          break;
+        }
+        case CLI_STRING:
+          if (!*v) {
+            cli_error(cmd, "%s needs a non-empty value", o->name);
+            return 2;
+          }
+          *(const char **)o->dst = v;
+          break;
+        case CLI_FLAG:
+          break;
+      }
+    }
+    if (!matched) {
+      cli_error(cmd, "unknown option '%s' (see whirl %s --help)", argv[i], cmd);
+      return 2;
+    }
+  }
+  return 0;
+}
+
+double cli_now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void cli_progress_init(cli_progress *p, const char *what, int quiet) {
+  p->on = !quiet && cli_is_tty();
+  p->last = -1;
+  p->what = what;
+}
+
+void cli_progress_show(cli_progress *p, size_t done, size_t total) {
+  if (!p->on) return;
+  double now = cli_now();
+  if (done < total && p->last >= 0 && now - p->last < 0.2) return;
+  p->last = now;
+  fprintf(stderr, "\r%s: %zu/%zu (%.0f%%)  ", p->what, done, total,
+          total ? 100.0 * (double)done / (double)total : 100.0);
+  fflush(stderr);
+}
+
+void cli_progress_end(cli_progress *p) {
+  if (!p->on) return;
+  fprintf(stderr, "\r\033[K");
+  fflush(stderr);
+}

@@ -38,9 +38,48 @@ void out_abort(out_file *o);
  * message in msg. */
 int cli_gnuplot(const char *dir, const char *script, char *msg, size_t len);
 
+/* Run gnuplot on DIR/NAME.gp, which writes DIR/.NAME.png.tmp, and rename
+ * that to DIR/NAME.png (no half-written picture on failure). */
+int cli_plot(const char *dir, const char *name, char *msg, size_t len);
+
+/* A table of options for cli_parse. */
+typedef enum {
+  CLI_DOUBLE, /* double *              --name X */
+  CLI_SIZE,   /* size_t *, >= 0 integer */
+  CLI_INT,    /* int *, any integer */
+  CLI_STRING, /* const char **, non-empty */
+  CLI_FLAG    /* int *, set to 1 when present */
+} cli_kind;
+typedef struct cli_opt {
+  const char *name;
+  cli_kind kind;
+  void *dst;
+} cli_opt;
+/* Parse argv[1..argc-1] against opts; --help/-h calls help(stdout).
+ * Returns 0 to go on, 1 when help was shown (exit 0), 2 on a bad option
+ * (message printed; exit 2). */
+int cli_parse(const char *cmd, int argc, char **argv, const cli_opt *opts,
+              size_t nopts, void (*help)(FILE *));
+
+/* Progress line on stderr (only on a terminal and when not quiet): at most
+ * five updates a second, cleared by cli_progress_end. */
+typedef struct cli_progress {
+  int on;
+  double last;
+  const char *what;
+} cli_progress;
+void cli_progress_init(cli_progress *p, const char *what, int quiet);
+void cli_progress_show(cli_progress *p, size_t done, size_t total);
+void cli_progress_end(cli_progress *p);
+double cli_now(void); /* monotonic seconds */
+
 /* 1 when stderr is a terminal (progress lines are shown only then). */
 int cli_is_tty(void);
 
 int cmd_sfd_response(int argc, char **argv);
+int cmd_sfd_simulate(int argc, char **argv);
+int cmd_sfd_sweep(int argc, char **argv);
+int cmd_sfd_basins(int argc, char **argv);
+int cmd_sfd_onset(int argc, char **argv);
 
 #endif

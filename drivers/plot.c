@@ -43,3 +43,16 @@ int cli_gnuplot(const char *dir, const char *script, char *msg, size_t len) {
   }
   return 0;
 }
+
+int cli_plot(const char *dir, const char *name, char *msg, size_t len) {
+  char script[512], a[4096], b[4096];
+  snprintf(script, sizeof script, "%s.gp", name);
+  if (cli_gnuplot(dir, script, msg, len)) return -1;
+  snprintf(a, sizeof a, "%s/.%s.png.tmp", dir, name);
+  snprintf(b, sizeof b, "%s/%s.png", dir, name);
+  if (rename(a, b)) {
+    snprintf(msg, len, "gnuplot did not write %s: %s", a, strerror(errno));
+    return -1;
+  }
+  return 0;
+}

@@ -20,6 +20,11 @@ static void usage(FILE *f) {
           "  sfd response   every branch of synchronous circular orbits of the\n"
           "                 SFD rotor against speed, with stability, Floquet\n"
           "                 multipliers, folds (LP) and pictures\n"
+          "  sfd simulate   one response by time integration: orbit, Poincare\n"
+          "                 section, spectrum, class\n"
+          "  sfd sweep      up/down speed sweep by time integration (Figs. 3, 11)\n"
+          "  sfd basins     basins of attraction at one speed (Figs. 12-17)\n"
+          "  sfd onset      onset of the nonsynchronous response from rest\n"
           "\n"
           "  whirl <command> --help   options of a command\n"
           "  whirl --version          library version\n");
@@ -31,7 +36,11 @@ static void sfd_usage(FILE *f) {
           "\n"
           "The rigid rotor on two short squeeze-film dampers (pi-film).\n"
           "commands:\n"
-          "  response   all branches of circular orbits, stability, LP points\n");
+          "  response   all branches of circular orbits, stability, LP points\n"
+          "  simulate   one response by time integration\n"
+          "  sweep      speed sweep by time integration\n"
+          "  basins     basins of attraction\n"
+          "  onset      onset of the nonsynchronous response from rest\n");
 }
 
 int main(int argc, char **argv) {
@@ -57,6 +66,10 @@ int main(int argc, char **argv) {
       return 0;
     }
     if (!strcmp(argv[2], "response")) return cmd_sfd_response(argc - 2, argv + 2);
+    if (!strcmp(argv[2], "simulate")) return cmd_sfd_simulate(argc - 2, argv + 2);
+    if (!strcmp(argv[2], "sweep")) return cmd_sfd_sweep(argc - 2, argv + 2);
+    if (!strcmp(argv[2], "basins")) return cmd_sfd_basins(argc - 2, argv + 2);
+    if (!strcmp(argv[2], "onset")) return cmd_sfd_onset(argc - 2, argv + 2);
     fprintf(stderr, "whirl sfd: unknown command '%s' (see whirl sfd --help)\n", argv[2]);
     return 2;
   }

@@ -10,4 +10,8 @@
 #include <whirl/branch.h>
 #include <whirl/equilibrium.h>
 #include <whirl/sfd.h>
+#include <whirl/ode.h>
+#include <whirl/spectrum.h>
+#include <whirl/basins.h>
+#include <whirl/sfd_dynamics.h>
 #endif

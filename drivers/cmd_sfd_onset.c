@@ -1,0 +1,159 @@
+/* drivers/cmd_sfd_onset.c — `whirl sfd onset`: the speed at which the
+ * response from rest stops settling on a circular orbit (the onset of the
+ * nonsynchronous response from zero initial conditions, paper §5.2:
+ * 8.5322–8.5327), bracketed by bisection in Ω.  At each speed the trajectory
+ * from rest is integrated until it enters the certified neighbourhood of a
+ * stable circular orbit (synchronous) or --periods pass (nonsynchronous).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/whirl.h>
+
+#include "cli.h"
+#include "sfd_common.h"
+
+#define CMD "sfd onset"
+
+static void help(FILE *f) {
+  fprintf(f,
+"usage: whirl sfd onset --from A --to B [options]\n"
+"\n"
+"Bisection in Omega for the onset of the nonsynchronous response from rest\n"
+"(zero initial conditions).  At A the response from rest must settle on a\n"
+"circular orbit and at B it must not (or the other way round).\n"
+"\n"
+"options (defaults: Table 1 of the paper):\n"
+"  --from A --to B   bracket (required)\n"
+"  --tol T           width of the final bracket              (1e-5)\n"
+"  --periods P       periods before a response counts as\n"
+"                    nonsynchronous                           (3000)\n"
+"  --lambda L --delta D --zeta Z   model parameters  (0.0503 0.3 0)\n"
+"  --rtol R --atol A  integration tolerances         (1e-12, 1e-15)\n"
+"  --quiet\n"
+"\n"
+"stdout: TSV 'Omega class periods' for every speed tried, then a line\n"
+"'onset<TAB>lo<TAB>hi'.\n");
+}
+
+/* 1 synchronous (captured by a circular orbit), 0 not, -1 contact, < -1
+ * error.  *per: periods integrated. */
+static int from_rest(double *p, size_t periods, double rtol, double atol, unsigned *per,
+                     char *msg, size_t len) {
+  whirl_sfd_attractors_options ao;
+  whirl_sfd_attractors_options_default(&ao);
+  ao.find_cycle = 0;
+  ao.rtol = rtol;
+  ao.atol = atol;
+  whirl_sfd_attractors *A = NULL;
+  int rc = whirl_sfd_attractors_find(p, &ao, &A, msg, len);
+  if (rc != WHIRL_OK) return -2;
+  whirl_ode *ode = whirl_ode_alloc(whirl_sfd_fixed(), p);
+  if (!ode || whirl_ode_set_tolerances(ode, rtol, atol) != WHIRL_OK) {
+    snprintf(msg, len, "cannot set up the integrator");
+    whirl_ode_free(ode);
+    whirl_sfd_attractors_free(A);
+    return -2;
+  }
+  whirl_basins_options bo;
+  whirl_basins_options_default(&bo);
+  bo.period = 2 * M_PI / p[WHIRL_SFD_OMEGA];
+  bo.max_periods = periods;
+  bo.rtol = rtol;
+  bo.atol = atol;
+  const double x0[4] = {0, 0, 0, 0};
+  int which = WHIRL_BASIN_FAILED;
+  rc = whirl_basins_classify(ode, x0, whirl_sfd_attractors_list(A), whirl_sfd_attractors_count(A), &bo,
+                             &which, per);
+  whirl_ode_free(ode);
+  whirl_sfd_attractors_free(A);
+  if (rc != WHIRL_OK || which == WHIRL_BASIN_FAILED) {
+    snprintf(msg, len, "integration failed at Omega = %g", p[WHIRL_SFD_OMEGA]);
+    return -2;
+  }
+  if (which == WHIRL_BASIN_DOMAIN) return -1;
+  return which >= 0 ? 1 : 0;
+}
+
+static const char *cls_name(int c) {
+  return c == 1 ? "synchronous" : c == 0 ? "nonsynchronous" : "contact";
+}
+
+int cmd_sfd_onset(int argc, char **argv) {
+  double p[WHIRL_SFD_NPAR];
+  whirl_sfd_default_params(p);
+  double from = NAN, to = NAN, tol = 1e-5, rtol = 1e-12, atol = 1e-15;
+  size_t periods = 3000;
+  int quiet = 0;
+  const cli_opt opts[] = {
+      {"--from", CLI_DOUBLE, &from},       {"--to", CLI_DOUBLE, &to},
+      {"--tol", CLI_DOUBLE, &tol},         {"--periods", CLI_SIZE, &periods},
+      {"--lambda", CLI_DOUBLE, &p[1]},     {"--delta", CLI_DOUBLE, &p[2]},
+      {"--zeta", CLI_DOUBLE, &p[3]},       {"--rtol", CLI_DOUBLE, &rtol},
+      {"--atol", CLI_DOUBLE, &atol},       {"--quiet", CLI_FLAG, &quiet}};
+  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+  if (r) return r == 1 ? 0 : 2;
+  if (isnan(from) || isnan(to)) {
+    cli_error(CMD, "--from and --to are required (e.g. --from 8.5 --to 8.6)");
+    return 2;
+  }
+  if (!(from > 0) || !(to > 0) || from == to || !(tol > 0) || periods < 1) {
+    cli_error(CMD, "need --from, --to > 0 and different, --tol > 0, --periods >= 1");
+    return 2;
+  }
+  if (!(rtol > 0) || !(atol > 0)) {
+    cli_error(CMD, "--rtol and --atol must be > 0");
+    return 2;
+  }
+  p[0] = fmax(from, to);
+  if (sfd_check(CMD, p)) return 2;
+  char msg[512];
+  unsigned per = 0;
+  printf("Omega\tclass\tperiods\n");
+  double a = from, b = to;
+  p[0] = a;
+  int ca = from_rest(p, periods, rtol, atol, &per, msg, sizeof msg);
+  if (ca < -1) {
+    cli_error(CMD, "%s", msg);
+    return 1;
+  }
+  printf("%.10f\t%s\t%u\n", a, cls_name(ca), per);
+  p[0] = b;
+  int cb = from_rest(p, periods, rtol, atol, &per, msg, sizeof msg);
+  if (cb < -1) {
+    cli_error(CMD, "%s", msg);
+    return 1;
+  }
+  printf("%.10f\t%s\t%u\n", b, cls_name(cb), per);
+  fflush(stdout);
+  if (ca == cb) {
+    cli_error(CMD, "no change of the response from rest between %g and %g (both %s): widen the bracket",
+              a, b, cls_name(ca));
+    return 1;
+  }
+  cli_progress prog;
+  cli_progress_init(&prog, "whirl sfd onset", quiet);
+  size_t total = (size_t)ceil(log2(fabs(b - a) / tol)), k = 0;
+  while (fabs(b - a) > tol) {
+    cli_progress_show(&prog, k++, total);
+    double m = 0.5 * (a + b);
+    p[0] = m;
+    int cm = from_rest(p, periods, rtol, atol, &per, msg, sizeof msg);
+    if (cm < -1) {
+      cli_progress_end(&prog);
+      cli_error(CMD, "%s", msg);
+      return 1;
+    }
+    printf("%.10f\t%s\t%u\n", m, cls_name(cm), per);
+    fflush(stdout);
+    if (cm == ca) a = m;
+    else b = m;
+  }
+  cli_progress_end(&prog);
+  printf("onset\t%.10f\t%.10f\n", fmin(a, b), fmax(a, b));
+  if (!quiet)
+    fprintf(stderr, "whirl sfd onset: the response from rest changes from %s to %s between Omega = %.8f "
+                    "and %.8f\n", cls_name(ca), cls_name(ca == 1 ? 0 : 1), fmin(a, b), fmax(a, b));
+  return 0;
+}

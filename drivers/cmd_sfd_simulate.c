@@ -1,0 +1,352 @@
+/* drivers/cmd_sfd_simulate.c — `whirl sfd simulate`: one response of the SFD
+ * rotor by time integration (Dormand–Prince 5(4), RelTol 1e-12, AbsTol 1e-15
+ * as the paper's ode45 runs), with the time history, the orbit in the
+ * clearance circle, the stroboscopic Poincaré section (once per forcing
+ * period) and the spectrum (paper Figs. 7–10).  Prints the class of the
+ * steady state and its dominant frequencies as TSV.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/whirl.h>
+
+#include "cli.h"
+#include "sfd_common.h"
+
+#define CMD "sfd simulate"
+
+static void help(FILE *f) {
+  fprintf(f,
+"usage: whirl sfd simulate --omega W [options]\n"
+"\n"
+"Transient and steady-state response of the rigid rotor on two short SFDs\n"
+"by time integration (Dormand-Prince 5(4) with dense output) from a given\n"
+"initial state, in the fixed frame.  The steady state is the second half of\n"
+"the run (or from --steady-from); its Poincare section is the state once per\n"
+"forcing period (tau = k 2 pi / Omega).\n"
+"\n"
+"options (defaults: Table 1 of the paper):\n"
+"  --omega W        dimensionless speed Omega > 0 (required)\n"
+"  --y0 A --z0 B    initial displacement / clearance     (0, 0)\n"
+"  --vy0 C --vz0 D  initial velocity                     (0, 0)\n"
+"  --periods N      forcing periods to integrate          (1000)\n"
+"  --steady-from K  first period of the steady state      (N/2)\n"
+"  --samples S      samples per period in the outputs     (64)\n"
+"  --lambda L --delta D --zeta Z --fe F   model parameters (0.0503 0.3 0 0)\n"
+"  --rtol R --atol A  integration tolerances          (1e-12, 1e-15)\n"
+"  --out DIR        output directory                      (sfd-simulate)\n"
+"  --no-plot        data only;   --quiet   no summary on stderr\n"
+"\n"
+"stdout: a line 'class<TAB>K' with K one of circular, periodic,\n"
+"quasiperiodic, irregular, transient (not settled yet), contact; then the\n"
+"dominant frequencies of y in the steady state as TSV 'rank frequency\n"
+"amplitude', frequency in units of the rotation frequency (Hann-windowed\n"
+"DFT with Gaussian peak interpolation).\n"
+"files: history.tsv (t y z vy vz eps), poincare.tsv, spectrum.tsv,\n"
+"peaks.tsv, and history.png, orbit.png, spectrum.png, phase.png.\n"
+"exit status: 0 ok, 1 runtime error, 2 bad option, 3 the journal touched\n"
+"the housing (eps >= 1; data up to the contact are written).\n");
+}
+
+typedef struct {
+  double *buf; /* (nsamp+1) x 4 */
+  size_t cap;
+  size_t got;
+} hist;
+
+static int keep(size_t k, double t, const double *x, void *data) {
+  (void)t;
+  hist *h = data;
+  if (k < h->cap) {
+    memcpy(h->buf + 4 * k, x, 4 * sizeof *x);
+    h->got = k + 1;
+  }
+  return 0;
+}
+
+static int write_gp(const char *dir, const char *name, const char *body,
+                    const double *p) {
+  out_file o;
+  if (out_open(&o, dir, name)) return -1;
+  char base[256];
+  snprintf(base, sizeof base, "%s", name);
+  char *dot = strrchr(base, '.');
+  if (dot) *dot = '\0';
+  fprintf(o.fp,
+          "# gnuplot script written by whirl sfd simulate; run: gnuplot %s\n"
+          "set terminal pngcairo size 1000,800 enhanced font 'Sans,12'\n"
+          "set output '.%s.png.tmp'\nset grid\n"
+          "set title 'SFD rotor, {/Symbol W} = %g, {/Symbol l} = %g, "
+          "{/Symbol d} = %g, {/Symbol z} = %g, F_E = %g'\n%s",
+          name, base, p[0], p[1], p[2], p[3], p[4], body);
+  return out_commit(&o);
+}
+
+int cmd_sfd_simulate(int argc, char **argv) {
+  double p[WHIRL_SFD_NPAR], x0[4] = {0, 0, 0, 0};
+  whirl_sfd_default_params(p);
+  p[WHIRL_SFD_OMEGA] = NAN;
+  size_t periods = 1000, samples = 64, steady_from = (size_t)-1;
+  double rtol = 1e-12, atol = 1e-15;
+  const char *dir = "sfd-simulate";
+  int noplot = 0, quiet = 0;
+  const cli_opt opts[] = {
+      {"--omega", CLI_DOUBLE, &p[WHIRL_SFD_OMEGA]},
+      {"--lambda", CLI_DOUBLE, &p[WHIRL_SFD_LAMBDA]},
+      {"--delta", CLI_DOUBLE, &p[WHIRL_SFD_DELTA]},
+      {"--zeta", CLI_DOUBLE, &p[WHIRL_SFD_ZETA]},
+      {"--fe", CLI_DOUBLE, &p[WHIRL_SFD_FE]},
+      {"--y0", CLI_DOUBLE, &x0[0]},
+      {"--z0", CLI_DOUBLE, &x0[1]},
+      {"--vy0", CLI_DOUBLE, &x0[2]},
+      {"--vz0", CLI_DOUBLE, &x0[3]},
+      {"--periods", CLI_SIZE, &periods},
+      {"--steady-from", CLI_SIZE, &steady_from},
+      {"--samples", CLI_SIZE, &samples},
+      {"--rtol", CLI_DOUBLE, &rtol},
+      {"--atol", CLI_DOUBLE, &atol},
+      {"--out", CLI_STRING, &dir},
+      {"--no-plot", CLI_FLAG, &noplot},
+      {"--quiet", CLI_FLAG, &quiet}};
+  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+  if (r) return r == 1 ? 0 : 2;
+  if (isnan(p[WHIRL_SFD_OMEGA])) {
+    cli_error(CMD, "--omega is required (the dimensionless speed, e.g. --omega 8.7)");
+    return 2;
+  }
+  if (!(p[WHIRL_SFD_OMEGA] > 0)) {
+    cli_error(CMD, "--omega must be > 0 (got %g)", p[WHIRL_SFD_OMEGA]);
+    return 2;
+  }
+  if (sfd_check(CMD, p)) return 2;
+  if (hypot(x0[0], x0[1]) >= 1) {
+    cli_error(CMD, "the initial displacement (%g, %g) is outside the clearance "
+              "(|(y0, z0)| = %g must be < 1)", x0[0], x0[1], hypot(x0[0], x0[1]));
+    return 2;
+  }
+  if (periods < 4) {
+    cli_error(CMD, "--periods must be >= 4 (got %zu)", periods);
+    return 2;
+  }
+  if (samples < 8 || samples > 4096) {
+    cli_error(CMD, "--samples must be in [8, 4096] (got %zu)", samples);
+    return 2;
+  }
+  if (steady_from == (size_t)-1) steady_from = periods / 2;
+  if (steady_from >= periods) {
+    cli_error(CMD, "--steady-from must be < --periods (got %zu >= %zu)", steady_from, periods);
+    return 2;
+  }
+  if (!(rtol > 0) || !(atol > 0)) {
+    cli_error(CMD, "--rtol and --atol must be > 0 (got %g, %g)", rtol, atol);
+    return 2;
+  }
+  if ((double)periods * (double)samples > 5e7) {
+    cli_error(CMD, "--periods x --samples = %g samples is too many to keep (max 5e7)",
+              (double)periods * (double)samples);
+    return 2;
+  }
+
+  const double Om = p[WHIRL_SFD_OMEGA], T = 2 * M_PI / Om;
+  const size_t nsamp = periods * samples;
+  hist h = {malloc(4 * (nsamp + 1) * sizeof(double)), nsamp + 1, 0};
+  whirl_ode *ode = whirl_ode_alloc(whirl_sfd_fixed(), p);
+  if (!h.buf || !ode) {
+    cli_error(CMD, "out of memory");
+    free(h.buf);
+    whirl_ode_free(ode);
+    return 1;
+  }
+  if (whirl_ode_set_tolerances(ode, rtol, atol) != WHIRL_OK) {
+    cli_error(CMD, "bad tolerances: rtol %g (>= 100 machine epsilon), atol %g", rtol, atol);
+    free(h.buf);
+    whirl_ode_free(ode);
+    return 2;
+  }
+  double t0 = cli_now();
+  int rc = whirl_ode_reset(ode, 0.0, x0);
+  if (rc == WHIRL_OK) rc = whirl_ode_sample(ode, T / (double)samples, nsamp, keep, &h);
+  double secs = cli_now() - t0;
+  int contact = 0;
+  if (rc != WHIRL_OK) {
+    if (rc == WHIRL_ESTEP && whirl_ode_last_rhs_status(ode) == WHIRL_SFD_CONTACT) {
+      contact = 1;
+    } else {
+      cli_error(CMD, "integration failed at tau = %g: %s", whirl_ode_t(ode),
+                whirl_ode_errmsg(ode));
+      free(h.buf);
+      whirl_ode_free(ode);
+      return 1;
+    }
+  }
+  whirl_ode_stats st;
+  whirl_ode_get_stats(ode, &st);
+  const double t_contact = whirl_ode_t(ode);
+  whirl_ode_free(ode);
+
+  /* steady state: Poincaré points and the spectrum of y */
+  const size_t k0 = steady_from * samples;
+  const char *cls = "contact";
+  size_t period = 0;
+  double dim = NAN, eps_spread = 0;
+  whirl_peak peaks[16];
+  size_t npk = 0;
+  size_t npoin = 0;
+  double *P = NULL;
+  if (!contact) {
+    npoin = periods - steady_from + 1;
+    P = malloc(4 * npoin * sizeof *P);
+    double *y = malloc((nsamp + 1 - k0) * sizeof *y);
+    if (!P || !y) {
+      cli_error(CMD, "out of memory");
+      free(P);
+      free(y);
+      free(h.buf);
+      return 1;
+    }
+    for (size_t k = 0; k < npoin; ++k)
+      memcpy(P + 4 * k, h.buf + 4 * (k0 + k * samples), 4 * sizeof *P);
+    double emin = INFINITY, emax = 0;
+    for (size_t k = nsamp - samples; k <= nsamp; ++k) {
+      double e = hypot(h.buf[4 * k], h.buf[4 * k + 1]);
+      emin = fmin(emin, e);
+      emax = fmax(emax, e);
+    }
+    eps_spread = emax - emin;
+    cls = sfd_steady_class(P, npoin, eps_spread, &period, &dim);
+    for (size_t k = k0; k <= nsamp; ++k) y[k - k0] = h.buf[4 * k];
+    /* dt = T/samples; frequency in units of the rotation frequency = f T */
+    rc = whirl_spectrum_peaks(y, nsamp + 1 - k0, 1.0 / (double)samples, 1e-3, peaks, 12, &npk);
+    if (rc != WHIRL_OK) npk = 0;
+    if (!strcmp(cls, "circular") || !strcmp(cls, "periodic")) {
+      /* a settled periodic response: only harmonics of the period remain */
+    }
+    free(y);
+  }
+
+  /* ---- files ---- */
+  if (cli_mkdirs(dir)) {
+    cli_error(CMD, "cannot create output directory '%s': %s", dir, strerror(errno));
+    free(P);
+    free(h.buf);
+    return 1;
+  }
+  out_file fh, fp, fs, fk;
+  int bad = out_open(&fh, dir, "history.tsv");
+  if (!bad) {
+    fprintf(fh.fp, "# whirl sfd simulate: Omega=%.10g lambda=%.10g delta=%.10g zeta=%.10g FE=%.10g "
+                   "x0=(%g, %g, %g, %g) rtol=%g atol=%g\n",
+            p[0], p[1], p[2], p[3], p[4], x0[0], x0[1], x0[2], x0[3], rtol, atol);
+    fprintf(fh.fp, "t\ty\tz\tvy\tvz\teps\n");
+    for (size_t k = 0; k < h.got; ++k) {
+      const double *x = h.buf + 4 * k;
+      fprintf(fh.fp, "%.10g\t%.12g\t%.12g\t%.12g\t%.12g\t%.12g\n", (double)k * T / (double)samples,
+              x[0], x[1], x[2], x[3], hypot(x[0], x[1]));
+    }
+    bad = out_commit(&fh);
+  }
+  if (!bad && !(bad = out_open(&fp, dir, "poincare.tsv"))) {
+    fprintf(fp.fp, "# stroboscopic section tau = k 2 pi / Omega; steady = 1 from period %zu\n", steady_from);
+    fprintf(fp.fp, "k\tt\ty\tz\tvy\tvz\tsteady\n");
+    for (size_t k = 0; k * samples < h.got; ++k) {
+      const double *x = h.buf + 4 * k * samples;
+      fprintf(fp.fp, "%zu\t%.10g\t%.12g\t%.12g\t%.12g\t%.12g\t%d\n", k, (double)k * T, x[0], x[1],
+              x[2], x[3], k >= steady_from);
+    }
+    bad = out_commit(&fp);
+  }
+  if (!bad && !contact && !(bad = out_open(&fs, dir, "spectrum.tsv"))) {
+    size_t m = nsamp + 1 - k0, nf = 0;
+    double *y = malloc(m * sizeof *y);
+    double *fr = NULL, *am = NULL;
+    if (y) {
+      for (size_t k = k0; k <= nsamp; ++k) y[k - k0] = h.buf[4 * k];
+      whirl_spectrum(y, m, 1.0 / (double)samples, NULL, NULL, 0, &nf);
+      fr = malloc(nf * sizeof *fr);
+      am = malloc(nf * sizeof *am);
+    }
+    fprintf(fs.fp, "# amplitude spectrum of y over periods %zu..%zu (Hann window); frequency in "
+                   "units of the rotation frequency\nfrequency\tamplitude\n", steady_from, periods);
+    if (fr && am && whirl_spectrum(y, m, 1.0 / (double)samples, fr, am, nf, &nf) == WHIRL_OK)
+      for (size_t k = 0; k < nf && fr[k] <= 4.0; ++k)
+        fprintf(fs.fp, "%.8g\t%.8g\n", fr[k], am[k]);
+    free(y);
+    free(fr);
+    free(am);
+    bad = out_commit(&fs);
+  }
+  if (!bad && !(bad = out_open(&fk, dir, "peaks.tsv"))) {
+    fprintf(fk.fp, "rank\tfrequency\tamplitude\n");
+    for (size_t k = 0; k < npk; ++k)
+      fprintf(fk.fp, "%zu\t%.6f\t%.6g\n", k + 1, peaks[k].freq, peaks[k].amp);
+    bad = out_commit(&fk);
+  }
+  if (bad) {
+    cli_error(CMD, "writing the results in '%s' failed: %s", dir, strerror(errno));
+    free(P);
+    free(h.buf);
+    return 1;
+  }
+
+  /* ---- stdout ---- */
+  printf("class\t%s\n", cls);
+  printf("rank\tfrequency\tamplitude\n");
+  for (size_t k = 0; k < npk; ++k) printf("%zu\t%.6f\t%.6g\n", k + 1, peaks[k].freq, peaks[k].amp);
+
+  int status = contact ? 3 : 0;
+  if (!noplot) {
+    char body[4096], msg[512];
+    int pbad = 0;
+    snprintf(body, sizeof body,
+             "set multiplot layout 2,1\nset xlabel '{/Symbol t}'\nset ylabel 'y'\n"
+             "plot 'history.tsv' using 1:2 with lines lw 1 lc rgb '#1f4e9c' notitle\n"
+             "set ylabel 'z'\nunset title\n"
+             "plot 'history.tsv' using 1:3 with lines lw 1 lc rgb '#1f4e9c' notitle\n"
+             "unset multiplot\n");
+    pbad |= write_gp(dir, "history.gp", body, p) || cli_plot(dir, "history", msg, sizeof msg);
+    snprintf(body, sizeof body,
+             "set size ratio -1\nset xrange [-1.05:1.05]\nset yrange [-1.05:1.05]\n"
+             "set xlabel 'y'\nset ylabel 'z'\nset parametric\nset trange [0:2*pi]\n"
+             "plot cos(t), sin(t) with lines lw 2 lc rgb 'black' title 'clearance', \\\n"
+             "  'history.tsv' every ::%zu using 2:3 with lines lw 0.5 lc rgb '#1f77b4' title 'orbit', \\\n"
+             "  'poincare.tsv' using ($7 == 1 ? $3 : 1/0):4 with points pt 7 ps 0.4 lc rgb '#2ca02c' title 'Poincare section'\n",
+             k0 + 1);
+    pbad |= !pbad && (write_gp(dir, "orbit.gp", body, p) || cli_plot(dir, "orbit", msg, sizeof msg));
+    if (!contact) {
+      snprintf(body, sizeof body,
+               "set logscale y\nset xlabel 'frequency / rotation frequency'\nset ylabel 'amplitude of y'\n"
+               "set xrange [0:4]\n"
+               "plot 'spectrum.tsv' using 1:2 with lines lw 1.5 lc rgb '#1f4e9c' notitle\n");
+      pbad |= !pbad && (write_gp(dir, "spectrum.gp", body, p) || cli_plot(dir, "spectrum", msg, sizeof msg));
+    }
+    snprintf(body, sizeof body,
+             "set xlabel 'y'\nset ylabel 'dy/d{/Symbol t}'\n"
+             "plot 'history.tsv' every ::%zu using 2:4 with lines lw 0.5 lc rgb '#1f77b4' title 'trajectory', \\\n"
+             "  'poincare.tsv' using ($7 == 1 ? $3 : 1/0):5 with points pt 7 ps 0.4 lc rgb '#2ca02c' title 'Poincare section'\n",
+             k0 + 1);
+    pbad |= !pbad && (write_gp(dir, "phase.gp", body, p) || cli_plot(dir, "phase", msg, sizeof msg));
+    if (pbad) {
+      cli_error(CMD, "plot: %s", msg);
+      if (!status) status = 1;
+    }
+  }
+  if (contact)
+    cli_error(CMD, "the journal touches the housing (eps >= 1) at tau = %.10g (period %.2f) at "
+              "Omega = %g; history up to the contact written to %s", t_contact, t_contact / T, Om, dir);
+  if (!quiet) {
+    fprintf(stderr, "whirl sfd simulate: Omega = %g, %zu periods from (%g, %g, %g, %g): class %s",
+            Om, periods, x0[0], x0[1], x0[2], x0[3], cls);
+    if (period > 1) fprintf(stderr, " (period %zu)", period);
+    if (isfinite(dim)) fprintf(stderr, " (section dimension %.2f)", dim);
+    fprintf(stderr, "\n  %zu steps (%zu rejected), %zu RHS evaluations, %.1f RHS/period, %.3f s\n",
+            st.steps, st.rejected, st.rhs_evals,
+            (double)st.rhs_evals / (contact ? fmax(t_contact / T, 1e-300) : (double)periods), secs);
+    fprintf(stderr, "  wrote %s/history.tsv poincare.tsv%s peaks.tsv%s\n", dir,
+            contact ? "" : " spectrum.tsv", noplot ? "" : " and PNGs");
+  }
+  free(P);
+  free(h.buf);
+  return status;
+}

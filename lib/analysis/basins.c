@@ -1,0 +1,193 @@
+/* lib/analysis/basins.c — basins of attraction by time integration with
+ * early exit on certified capture (see whirl/basins.h).  One Dormand–Prince
+ * integrator per thread; each point is classified independently, so the
+ * result does not depend on the number of threads or on scheduling.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <whirl/basins.h>
+
+#define MAX_ATTRACTORS 32
+
+void whirl_basins_options_default(whirl_basins_options *o) {
+  if (!o) return;
+  memset(o, 0, sizeof *o);
+  o->max_periods = 500;
+  o->rtol = 1e-12;
+  o->atol = 1e-15;
+}
+
+typedef struct {
+  const whirl_attractor *att;
+  size_t natt;
+  int fixed;
+  size_t count[MAX_ATTRACTORS];
+  int which;
+  size_t last_k;
+  int error;
+} classify_ctx;
+
+static int on_section(size_t k, double t, const double *x, void *data) {
+  classify_ctx *c = data;
+  c->last_k = k;
+  for (size_t j = 0; j < c->natt; ++j) {
+    int r = c->att[j].test(t, x, c->att[j].data);
+    if (r < 0) {
+      c->error = r;
+      return r;
+    }
+    c->count[j] = r ? c->count[j] + 1 : 0;
+    size_t need = c->att[j].confirm ? c->att[j].confirm : 1;
+    if (!c->fixed && c->count[j] >= need) {
+      c->which = (int)j;
+      return 1; /* settled: stop integrating this point */
+    }
+  }
+  return 0;
+}
+
+int whirl_basins_classify(whirl_ode *ode, const double *x0,
+                          const whirl_attractor *att, size_t natt,
+                          const whirl_basins_options *o, int *which,
+                          unsigned *periods) {
+  if (!ode || !x0 || (!att && natt) || natt > MAX_ATTRACTORS || !o ||
+      !which || !(o->period > 0) || !isfinite(o->period))
+    return WHIRL_EINVAL;
+  classify_ctx c;
+  memset(&c, 0, sizeof c);
+  c.att = att;
+  c.natt = natt;
+  c.fixed = o->fixed_horizon;
+  c.which = WHIRL_BASIN_UNSETTLED;
+  int rc = whirl_ode_reset(ode, o->t0, x0);
+  if (rc != WHIRL_OK) {
+    *which = WHIRL_BASIN_FAILED;
+    if (periods) *periods = 0;
+    return WHIRL_OK;
+  }
+  rc = whirl_ode_sample(ode, o->period, o->max_periods, on_section, &c);
+  if (periods) *periods = (unsigned)c.last_k;
+  if (c.error) return c.error;
+  if (rc == 1) {
+    *which = c.which;
+    return WHIRL_OK;
+  }
+  if (rc == WHIRL_OK) {
+    *which = WHIRL_BASIN_UNSETTLED;
+    if (c.fixed)
+      for (size_t j = 0; j < natt; ++j) {
+        size_t need = att[j].confirm ? att[j].confirm : 1;
+        if (c.count[j] >= need) {
+          *which = (int)j;
+          break;
+        }
+      }
+    return WHIRL_OK;
+  }
+  if (rc == WHIRL_ESTEP && whirl_ode_last_rhs_status(ode) > 0)
+    *which = WHIRL_BASIN_DOMAIN;
+  else
+    *which = WHIRL_BASIN_FAILED;
+  return WHIRL_OK;
+}
+
+int whirl_basins_compute(const whirl_problem *prob, const double *p,
+                         size_t npoints, const double *x0,
+                         const whirl_attractor *att, size_t natt,
+                         const whirl_basins_options *o, int *which,
+                         unsigned *periods, whirl_basins_stats *st,
+                         char *errbuf, size_t errlen) {
+  char dummy[1];
+  if (!errbuf || errlen == 0) {
+    errbuf = dummy;
+    errlen = sizeof dummy;
+  }
+  errbuf[0] = '\0';
+  if (!prob || !p || (!x0 && npoints) || !o || (!which && npoints)) {
+    snprintf(errbuf, errlen, "basins: missing argument");
+    return WHIRL_EINVAL;
+  }
+  if (!(o->period > 0) || !isfinite(o->period)) {
+    snprintf(errbuf, errlen, "basins: section period must be > 0 (got %g)",
+             o->period);
+    return WHIRL_EINVAL;
+  }
+  if (o->max_periods == 0) {
+    snprintf(errbuf, errlen, "basins: max_periods must be >= 1");
+    return WHIRL_EINVAL;
+  }
+  if (natt > MAX_ATTRACTORS) {
+    snprintf(errbuf, errlen, "basins: at most %d attractors (got %zu)",
+             MAX_ATTRACTORS, natt);
+    return WHIRL_EINVAL;
+  }
+  for (size_t j = 0; j < natt; ++j)
+    if (!att[j].test) {
+      snprintf(errbuf, errlen, "basins: attractor %zu has no test", j);
+      return WHIRL_EINVAL;
+    }
+
+  size_t done = 0, tot_periods = 0, tot_steps = 0, tot_rhs = 0;
+  int status = WHIRL_OK;
+  const size_t n = prob->n;
+#ifdef _OPENMP
+  int nth = o->nthreads > 0 ? o->nthreads : omp_get_max_threads();
+#endif
+
+#ifdef _OPENMP
+#pragma omp parallel num_threads(nth) reduction(+ : tot_periods, tot_steps, tot_rhs)
+#endif
+  {
+    whirl_ode *ode = whirl_ode_alloc(prob, p);
+    int my_status = ode ? WHIRL_OK : WHIRL_ENOMEM;
+    if (ode) my_status = whirl_ode_set_tolerances(ode, o->rtol, o->atol);
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+    for (size_t i = 0; i < npoints; ++i) {
+      unsigned per = 0;
+      int w = WHIRL_BASIN_FAILED;
+      if (my_status == WHIRL_OK) {
+        int rc = whirl_basins_classify(ode, x0 + i * n, att, natt, o, &w,
+                                       &per);
+        if (rc != WHIRL_OK) my_status = rc;
+      }
+      which[i] = w;
+      if (periods) periods[i] = per;
+      tot_periods += per;
+#ifdef _OPENMP
+#pragma omp critical(whirl_basins_progress)
+#endif
+      {
+        ++done;
+        if (o->progress) o->progress(done, npoints, o->progress_data);
+      }
+    }
+    if (ode) {
+      whirl_ode_stats s;
+      whirl_ode_get_stats(ode, &s);
+      tot_steps += s.steps;
+      tot_rhs += s.rhs_evals;
+    }
+    whirl_ode_free(ode);
+#ifdef _OPENMP
+#pragma omp critical(whirl_basins_status)
+#endif
+    if (my_status != WHIRL_OK && status == WHIRL_OK) status = my_status;
+  }
+  if (st) {
+    st->periods = tot_periods;
+    st->steps = tot_steps;
+    st->rhs_evals = tot_rhs;
+  }
+  if (status != WHIRL_OK)
+    snprintf(errbuf, errlen, "basins: %s", whirl_strerror(status));
+  return status;
+}

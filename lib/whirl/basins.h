@@ -1,0 +1,89 @@
+/* whirl/basins.h — basins of attraction by time integration with early exit.
+ *
+ * Each attractor of a periodically forced (or autonomous) model is described
+ * by a membership test on the stroboscopic section t = t0 + kT: test() says
+ * whether a state lies in a region the attractor provably (or, for the
+ * weaker tests, demonstrably — see the model's documentation) keeps, e.g.
+ * a Lyapunov sublevel set of a stable equilibrium of the rotating frame.
+ * A trajectory is assigned to the first attractor whose test holds on
+ * `confirm` consecutive section points, and integration of that trajectory
+ * stops there.  Trajectories that leave the model's domain (a recoverable
+ * right-hand-side failure that the step control cannot get around, such as
+ * journal–housing contact) are WHIRL_BASIN_DOMAIN; those not assigned after
+ * max_periods are WHIRL_BASIN_UNSETTLED.
+ *
+ * Points are integrated in parallel (OpenMP, dynamic schedule); every point
+ * has its own integrator and its result depends on nothing else, so the
+ * basins are identical for any number of threads.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_BASINS_H
+#define WHIRL_BASINS_H
+
+#include <stddef.h>
+#include <whirl/ode.h>
+#include <whirl/problem.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct whirl_attractor {
+  const char *name;
+  /* 1 if x at section time t lies in the attractor's trapping region, 0 if
+   * not, < 0 on error.  Called concurrently from several threads. */
+  int (*test)(double t, const double *x, void *data);
+  void *data;
+  size_t confirm; /* consecutive section points the test must hold (>= 1) */
+} whirl_attractor;
+
+enum {
+  WHIRL_BASIN_UNSETTLED = -1, /* no attractor within max_periods */
+  WHIRL_BASIN_DOMAIN = -2,    /* left the model's domain (contact) */
+  WHIRL_BASIN_FAILED = -3     /* integration error (see the message) */
+};
+
+typedef struct whirl_basins_options {
+  double t0;            /* start time (section phase), default 0 */
+  double period;        /* section period T > 0 (required) */
+  size_t max_periods;   /* default 500 (the paper's horizon) */
+  int fixed_horizon;    /* 1: integrate max_periods always; the class is
+                           the attractor whose test holds on the last
+                           `confirm` section points */
+  double rtol, atol;    /* default 1e-12, 1e-15 */
+  int nthreads;         /* 0: OpenMP's default */
+  /* Optional progress report, called (serialised) after each point. */
+  void (*progress)(size_t done, size_t total, void *data);
+  void *progress_data;
+} whirl_basins_options;
+
+WHIRL_API void whirl_basins_options_default(whirl_basins_options *o);
+
+typedef struct whirl_basins_stats {
+  size_t periods;   /* section periods integrated, all points */
+  size_t steps;     /* accepted steps, all points */
+  size_t rhs_evals; /* right-hand-side evaluations, all points */
+} whirl_basins_stats;
+
+/* Classify npoints initial states x0[npoints * n] (row i = point i) at
+ * parameters p.  which[i] = index into att[] or a WHIRL_BASIN_* code;
+ * periods[i] (may be NULL) the section periods integrated for point i.
+ * Returns WHIRL_OK, or an error (bad options, a failing test) with a
+ * message in errbuf. */
+WHIRL_API int whirl_basins_compute(const whirl_problem *prob,
+                                   const double *p, size_t npoints,
+                                   const double *x0,
+                                   const whirl_attractor *att, size_t natt,
+                                   const whirl_basins_options *o, int *which,
+                                   unsigned *periods, whirl_basins_stats *st,
+                                   char *errbuf, size_t errlen);
+
+/* Classify a single trajectory from x0 (the kernel of the above). */
+WHIRL_API int whirl_basins_classify(whirl_ode *ode, const double *x0,
+                                    const whirl_attractor *att, size_t natt,
+                                    const whirl_basins_options *o, int *which,
+                                    unsigned *periods);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,90 @@
+/* whirl/spectrum.h — signal analysis of time histories: amplitude spectra by
+ * a windowed DFT with peak interpolation, and the character of a Poincaré
+ * section (fixed point, period-k, invariant curve, irregular).
+ *
+ * Spectrum: the mean is removed, a Hann window applied, the record zero-
+ * padded to 4 times the next power of two ≥ m (radix-2 FFT), and each peak's
+ * frequency refined by fitting a parabola to the logarithms of the three
+ * largest bins (Gaussian interpolation).  With the 4× padding the bins are at
+ * most 1/4 of the resolution 1/(m dt) apart and the interpolation bias for a
+ * Hann window is at most 2e-4 resolution bins in frequency and 1e-4 relative
+ * in amplitude (1.5e-2 and 3e-2 without padding); other tones, and the
+ * negative-frequency image of the tone itself, ν resolution bins away add
+ * leakage of order 1/(π ν³) of their amplitude.  Peak amplitudes are those
+ * of the sinusoid (window gain corrected).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_SPECTRUM_H
+#define WHIRL_SPECTRUM_H
+
+#include <stddef.h>
+#include <whirl/status.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct whirl_peak {
+  double freq; /* cycles per unit time (1/dt units) */
+  double amp;  /* amplitude of the sinusoid */
+} whirl_peak;
+
+/* One-sided amplitude spectrum of x[m] sampled every dt: *nfreq (≤ nmax)
+ * bins, freq[k] = k / (N dt) with N the padded length, amp[k] the window-
+ * corrected amplitude.  Pass freq = amp = NULL to get the needed *nfreq
+ * (N/2 + 1, about 2m).  With nmax below that, the lowest nmax bins are
+ * returned.  WHIRL_EINVAL as for whirl_spectrum_peaks, or when only one of
+ * freq, amp is NULL. */
+WHIRL_API int whirl_spectrum(const double *x, size_t m, double dt,
+                             double *freq, double *amp, size_t nmax,
+                             size_t *nfreq);
+
+/* The largest spectral peaks of x[m]: local maxima of the amplitude spectrum
+ * at least rel_threshold times the largest, interpolated, at most maxpeaks,
+ * sorted by decreasing amplitude.  Window side lobes are dropped: peaks
+ * closer than 3 resolution bins 1/(m dt) to a larger one, and peaks below
+ * twice the Hann leakage envelope 1/(π ν (ν² − 1)) of a larger peak ν
+ * resolution bins away (or of its mirror image at negative frequency).  So
+ * a tone is resolved next to a larger one of amplitude A only if it is more
+ * than 3 bins away and above 2 A/(π ν (ν² − 1)) (≈ 1e-2 A at 4 bins, 1e-3 A
+ * at 9 bins).  *npeaks = 0 for a constant record.  WHIRL_EINVAL for m < 16,
+ * dt <= 0, non-finite data or rel_threshold < 0. */
+WHIRL_API int whirl_spectrum_peaks(const double *x, size_t m, double dt,
+                                   double rel_threshold, whirl_peak *peaks,
+                                   size_t maxpeaks, size_t *npeaks);
+
+/* Character of a Poincaré section. */
+typedef enum whirl_section_kind {
+  WHIRL_SECTION_FIXED = 0,     /* all points coincide: period-1 motion */
+  WHIRL_SECTION_PERIODIC = 1,  /* k distinct points repeating: period-k */
+  WHIRL_SECTION_CURVE = 2,     /* points fill a closed curve: quasiperiodic */
+  WHIRL_SECTION_IRREGULAR = 3  /* points fill an area or a fractal: chaotic */
+} whirl_section_kind;
+
+/* Classify npts points pts[npts*dim] (row i = pts[i*dim .. i*dim+dim-1], in
+ * time order).  Two points coincide when their distance is at most tol times
+ * the size of the set (largest distance from the centroid) plus tol
+ * (absolute).  Period k is the smallest k ≤ max_period (at least 1 is tried)
+ * with every P_i coinciding with P_{i mod k} (hence |P_{i+k} − P_i| small
+ * for all i, without a slow drift): k = 1 is FIXED, k > 1 PERIODIC.
+ * Otherwise the correlation-type dimension d of the set is estimated from
+ * how the median distance to the 8th nearest neighbour scales between all
+ * points and every 4th one (d = log 4 / log(ratio)); the 8th rather than the
+ * 1st neighbour averages out the gap structure of quasi-periodic points.
+ * d < 1.5 is a curve, otherwise irregular.  If the median 1st-neighbour
+ * distance is within the tolerance (points repeat with a period above
+ * max_period), the result is PERIODIC with *period = 0 — so tol must be well
+ * below the spacing of the points on a curve.
+ * Outputs: *kind, *period (k, or 0), *dimension (0 for fixed and periodic,
+ * +inf if the distances do not shrink at all); period and dimension may be
+ * NULL.  WHIRL_EINVAL for npts < 2, npts < 2*max_period, npts < 64 when
+ * the dimension is needed, dim = 0, tol < 0 or non-finite coordinates. */
+WHIRL_API int whirl_section_classify(const double *pts, size_t npts,
+                                     size_t dim, double tol,
+                                     size_t max_period,
+                                     whirl_section_kind *kind, size_t *period,
+                                     double *dimension);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
