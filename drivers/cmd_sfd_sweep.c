@@ -49,15 +49,16 @@ static void help(FILE *f) {
 }
 
 typedef struct {
-  double P[4 * 3];
-  int n;
+  double P[4]; /* last section point */
+  int n;       /* consecutive small changes */
   double tol;
   int settled;
+  double t; /* time of the last section point */
 } settle_ctx;
 
 static int on_period(size_t k, double t, const double *x, void *data) {
-  (void)t;
   settle_ctx *c = data;
+  c->t = t;
   if (k == 0) {
     memcpy(c->P, x, 4 * sizeof *x);
     c->n = 0;
@@ -215,17 +216,22 @@ int cmd_sfd_sweep(int argc, char **argv) {
         status = 1;
         break;
       }
-      settle_ctx sc = {{0}, 0, settle, 0};
+      settle_ctx sc = {{0}, 0, settle, 0, 0};
       int rc = whirl_ode_reset(ode, 0.0, x);
       if (rc == WHIRL_OK) rc = whirl_ode_sample(ode, T, periods, on_period, &sc);
-      if (rc == 1) rc = WHIRL_OK;
-      size_t used = (size_t)llround(whirl_ode_t(ode) / T);
+      size_t used = periods;
+      if (rc == 1) {
+        /* settled at a section point: continue from that state (the
+         * integrator itself has stepped past it) */
+        rc = WHIRL_OK;
+        used = (size_t)llround(sc.t / T);
+      }
       rec_ctx rcx = {P, SPP, 0, INFINITY, 0};
       size_t nrec = sc.settled ? 1 : record;
       if (rc == WHIRL_OK) {
         /* restart the sampling at a multiple of T: the section phase */
         double xs[4];
-        memcpy(xs, whirl_ode_x(ode), sizeof xs);
+        memcpy(xs, sc.settled ? sc.P : whirl_ode_x(ode), sizeof xs);
         rc = whirl_ode_reset(ode, 0.0, xs);
         if (rc == WHIRL_OK) rc = whirl_ode_sample(ode, T / (double)SPP, SPP * nrec, on_sample, &rcx);
       }

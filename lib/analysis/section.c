@@ -12,12 +12,14 @@
  * than the 1st neighbour because the points of a quasi-periodic curve are
  * those of an irrational rotation: by the three-distance theorem their gaps
  * take two or three values whose proportions jump with N, and the median
- * 1st-neighbour distance of N and N/4 such points can differ by anything
- * between ~2 and ~50 (d from 0.4 to 10 in tests on ellipses); distances to
- * the 8th neighbour span several gaps and average that out (d = 1 ± 0.1).
+ * 1st-neighbour distance of N and N/4 such points can differ by a factor
+ * anywhere from ~1 to ~250 (d from 0.25 to over 100 in tests on ellipses,
+ * N = 500 … 8000); distances to the 8th neighbour span several gaps and
+ * average that out (d = 1 ± 0.1, for random points in a square 2 ± 0.1).
  * Near-resonant rotations (clustered points) give d < 1, still a curve.
- * When the median 1st-neighbour distance is itself within the tolerance, the
- * points repeat with a period above max_period: PERIODIC with period 0.
+ * A cycle longer than max_period (every P_i within tolerance of P_(i mod k),
+ * max_period < k ≤ npts/2, found among the returns of P_0) is reported as
+ * PERIODIC with period 0, before any dimension is estimated.
  * Nearest neighbours come from a k-d tree, O(N log N).
  *
  * References: P. Grassberger, I. Procaccia, Physica D 9 (1983) 189–208
@@ -38,8 +40,11 @@
 /* Minimum number of points for the dimension estimate (N/4 ≥ 16). */
 #define SEC_MIN_DIM_PTS 64
 
-/* The dimension uses the distance to the SEC_KNN-th nearest neighbour. */
-#define SEC_KNN 8
+/* The dimension compares the distances to the SEC_KNEAR-th and SEC_KFAR-th
+ * nearest neighbours (SEC_KFAR = 4 SEC_KNEAR: as for all points against a
+ * quarter of them). */
+#define SEC_KNEAR 8
+#define SEC_KFAR 32
 
 /* k-d tree leaves hold at most this many points. */
 #define KD_LEAF 8
@@ -117,10 +122,10 @@ static double sqdist(const double *a, const double *b, size_t dim) {
   return s;
 }
 
-/* Insert d2 into best[0..SEC_KNN-1], kept ascending. */
+/* Insert d2 into best[0..SEC_KFAR-1], kept ascending. */
 static void knn_insert(double *best, double d2) {
-  if (!(d2 < best[SEC_KNN - 1])) return;
-  size_t k = SEC_KNN - 1;
+  if (!(d2 < best[SEC_KFAR - 1])) return;
+  size_t k = SEC_KFAR - 1;
   while (k > 0 && best[k - 1] > d2) {
     best[k] = best[k - 1];
     --k;
@@ -128,7 +133,7 @@ static void knn_insert(double *best, double d2) {
   best[k] = d2;
 }
 
-/* Improve best[SEC_KNN], the smallest squared distances from point self (at
+/* Improve best[SEC_KFAR], the smallest squared distances from point self (at
  * q) to the other points of idx[lo, hi). */
 static void kd_nearest(const kdtree *t, ptrdiff_t lo, ptrdiff_t hi,
                        size_t self, const double *q, double *best) {
@@ -145,11 +150,11 @@ static void kd_nearest(const kdtree *t, ptrdiff_t lo, ptrdiff_t hi,
   const double diff = q[ax] - kd_coord(t, mid, ax);
   if (diff <= 0.0) {
     kd_nearest(t, lo, mid, self, q, best);
-    if (diff * diff < best[SEC_KNN - 1])
+    if (diff * diff < best[SEC_KFAR - 1])
       kd_nearest(t, mid + 1, hi, self, q, best);
   } else {
     kd_nearest(t, mid + 1, hi, self, q, best);
-    if (diff * diff < best[SEC_KNN - 1]) kd_nearest(t, lo, mid, self, q, best);
+    if (diff * diff < best[SEC_KFAR - 1]) kd_nearest(t, lo, mid, self, q, best);
   }
 }
 
@@ -163,34 +168,34 @@ static double median_sorted(double *v, size_t n) {
   return 0.5 * (v[(n - 1) / 2] + v[n / 2]);
 }
 
-/* Median distances of the n > SEC_KNN points pts[n*dim] to their nearest
- * (*r1) and SEC_KNN-th nearest (*rk) neighbours. */
-static int median_nn(const double *pts, size_t n, size_t dim, double *r1,
-                     double *rk) {
+/* Median distances *r_near, *r_far of the n > SEC_KFAR points pts[n*dim] to
+ * their SEC_KNEAR-th and SEC_KFAR-th nearest neighbours. */
+static int median_knn(const double *pts, size_t n, size_t dim, double *r_near,
+                      double *r_far) {
   kdtree t = {pts, dim, malloc(n * sizeof(size_t)), malloc(n * sizeof(size_t))};
-  double *d1 = malloc(n * sizeof *d1), *dk = malloc(n * sizeof *dk);
-  if (t.idx == NULL || t.axis == NULL || d1 == NULL || dk == NULL) {
+  double *dn = malloc(n * sizeof *dn), *df = malloc(n * sizeof *df);
+  if (t.idx == NULL || t.axis == NULL || dn == NULL || df == NULL) {
     free(t.idx);
     free(t.axis);
-    free(d1);
-    free(dk);
+    free(dn);
+    free(df);
     return WHIRL_ENOMEM;
   }
   for (size_t i = 0; i < n; ++i) t.idx[i] = i;
   kd_build(&t, 0, (ptrdiff_t)n);
   for (size_t i = 0; i < n; ++i) {
-    double best[SEC_KNN];
-    for (size_t k = 0; k < SEC_KNN; ++k) best[k] = INFINITY;
+    double best[SEC_KFAR];
+    for (size_t k = 0; k < SEC_KFAR; ++k) best[k] = INFINITY;
     kd_nearest(&t, 0, (ptrdiff_t)n, i, pts + i * dim, best);
-    d1[i] = sqrt(best[0]);
-    dk[i] = sqrt(best[SEC_KNN - 1]);
+    dn[i] = sqrt(best[SEC_KNEAR - 1]);
+    df[i] = sqrt(best[SEC_KFAR - 1]);
   }
-  *r1 = median_sorted(d1, n);
-  *rk = median_sorted(dk, n);
+  *r_near = median_sorted(dn, n);
+  *r_far = median_sorted(df, n);
   free(t.idx);
   free(t.axis);
-  free(d1);
-  free(dk);
+  free(dn);
+  free(df);
   return WHIRL_OK;
 }
 
@@ -241,33 +246,28 @@ int whirl_section_classify(const double *pts, size_t npts, size_t dim,
     }
   }
 
+  /* a longer cycle: the first returns of P_0, verified over the record */
+  for (size_t k = kmax + 1; k <= npts / 2; ++k) {
+    if (sqdist(pts + k * dim, pts, dim) <= eps2 &&
+        has_period(pts, npts, dim, k, eps2)) {
+      *kind = WHIRL_SECTION_PERIODIC;
+      if (period) *period = 0;
+      if (dimension) *dimension = 0.0;
+      return WHIRL_OK;
+    }
+  }
+
   if (npts < SEC_MIN_DIM_PTS) return WHIRL_EINVAL;
-  /* every 4th point, in time order */
-  const size_t nq = (npts + 3) / 4;
-  double *q = malloc(nq * dim * sizeof *q);
-  if (q == NULL) return WHIRL_ENOMEM;
-  for (size_t i = 0; i < nq; ++i)
-    for (size_t a = 0; a < dim; ++a) q[i * dim + a] = pts[4 * i * dim + a];
-  double r1_all = 0.0, rk_all = 0.0, r1_q = 0.0, rk_q = 0.0;
-  int st = median_nn(pts, npts, dim, &r1_all, &rk_all);
-  if (st == WHIRL_OK) st = median_nn(q, nq, dim, &r1_q, &rk_q);
-  free(q);
+  double r_near = 0.0, r_far = 0.0;
+  const int st = median_knn(pts, npts, dim, &r_near, &r_far);
   if (st != WHIRL_OK) return st;
 
-  if (r1_all <= eps) {
-    /* most points coincide with another one: they repeat, with a period
-     * above max_period (or without a fixed order) */
-    *kind = WHIRL_SECTION_PERIODIC;
-    if (period) *period = 0;
-    if (dimension) *dimension = 0.0;
-    return WHIRL_OK;
-  }
-  const double ratio = rk_all > 0.0 ? rk_q / rk_all : INFINITY;
+  const double ratio = r_near > 0.0 ? r_far / r_near : INFINITY;
   double d;
   if (ratio <= 1.0)
-    d = INFINITY; /* no scaling at all: noise in many dimensions */
+    d = INFINITY; /* no growth at all */
   else
-    d = log((double)npts / (double)nq) / log(ratio);
+    d = log((double)SEC_KFAR / (double)SEC_KNEAR) / log(ratio);
   *kind = d < 1.5 ? WHIRL_SECTION_CURVE : WHIRL_SECTION_IRREGULAR;
   if (period) *period = 0;
   if (dimension) *dimension = d;

@@ -1,8 +1,8 @@
 /* lib/analysis/spectrum.c — one-sided amplitude spectra of sampled time
  * histories and their dominant peaks (whirl/spectrum.h).  The window-
- * weighted mean is removed, a periodic ("DFT-even") Hann window applied, the record zero-padded
- * to SPEC_PAD times the next power of two and transformed by an iterative
- * radix-2 FFT; amplitudes are divided by the window sum (coherent gain 0.5)
+ * weighted mean is removed, a periodic ("DFT-even") Hann window applied,
+ * the record zero-padded to SPEC_PAD times the next power of two and
+ * transformed by an iterative radix-2 FFT; amplitudes are divided by the window sum (coherent gain 0.5)
  * so a sinusoid A cos(2π f t) on a bin reads A.  Peak frequency and amplitude
  * are refined by a parabola through the logarithms of the three bins around a
  * local maximum (Gaussian interpolation); side lobes of larger peaks are
@@ -14,6 +14,7 @@
  * frequency measurement resolution by parabolic and Gaussian spectrum
  * interpolation", AIP Conf. Proc. 732 (2004) 276–285.
  * SPDX-License-Identifier: BSD-3-Clause */
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -29,14 +30,18 @@
  * and 1.4e-3 with 2× padding). */
 #define SPEC_PAD 4
 
-/* Peaks closer than this many resolution bins 1/(m dt) to a larger one are
- * dropped (the Hann main lobe spans ±2 bins, its first side lobe sits near
- * 2.4 bins). */
+/* Peaks closer than this many resolution bins 1/(m dt) to a larger one, or
+ * to 0, are dropped (the Hann main lobe spans ±2 bins, its first side lobe
+ * sits near 2.4 bins). */
 #define SPEC_MIN_SEP 3.0
 
 /* A peak farther away is still dropped when its amplitude is below this
  * multiple of the Hann leakage envelope of a larger peak. */
 #define SPEC_LOBE_SAFETY 2.0
+
+/* A spectrum whose largest amplitude is below SPEC_ROUNDING·DBL_EPSILON·
+ * max|x| is rounding noise (the record is constant): no peaks. */
+#define SPEC_ROUNDING 1000.0
 
 /* ------------------------------------------------------------------------
  * FFT */
@@ -190,17 +195,18 @@ static double hann_envelope(double nu) {
   return 1.0 / (SPEC_PI * nu * (nu * nu - 1.0));
 }
 
-/* Is a peak at frequency f with amplitude a (in resolution bins: fb = f·T)
- * explained as leakage of the larger accepted peak p (or of its mirror image
- * at −f, which leaks into low positive frequencies)? */
-static int is_side_lobe(double fb, double a, double pb, double pamp) {
-  const double nu = fabs(fb - pb);
-  if (nu < SPEC_MIN_SEP) return 1;
-  if (a <= SPEC_LOBE_SAFETY * pamp * hann_envelope(nu)) return 1;
-  const double numir = fb + pb;
-  if (numir > SPEC_MIN_SEP &&
-      a <= SPEC_LOBE_SAFETY * pamp * hann_envelope(numir))
-    return 1;
+/* Is a peak at fb with amplitude a explained as leakage of the larger
+ * accepted peak at pb with amplitude pamp, or of its images at −pb and
+ * fs − pb (fs = 1/dt)?  Frequencies in resolution bins (f·T, T = m dt), so
+ * fs is at m. */
+static int is_side_lobe(double fb, double a, double pb, double pamp,
+                        double m) {
+  const double nu[3] = {fabs(fb - pb), fb + pb, fabs(m - pb - fb)};
+  if (nu[0] < SPEC_MIN_SEP) return 1;
+  for (int i = 0; i < 3; ++i)
+    if (nu[i] >= SPEC_MIN_SEP &&
+        a <= SPEC_LOBE_SAFETY * pamp * hann_envelope(nu[i]))
+      return 1;
   return 0;
 }
 
@@ -219,9 +225,12 @@ int whirl_spectrum_peaks(const double *x, size_t m, double dt,
   st = amplitude_spectrum(x, m, n, &amp);
   if (st != WHIRL_OK) return st;
 
-  double amax = 0.0;
+  /* a spectrum at the rounding level of the data (a constant record) has
+   * no peaks */
+  double amax = 0.0, xmax = 0.0;
   for (size_t k = 1; k < nf; ++k) amax = fmax(amax, amp[k]);
-  if (!(amax > 0.0) || maxpeaks == 0) {
+  for (size_t i = 0; i < m; ++i) xmax = fmax(xmax, fabs(x[i]));
+  if (!(amax > SPEC_ROUNDING * DBL_EPSILON * xmax) || maxpeaks == 0) {
     free(amp);
     return WHIRL_OK;
   }
@@ -258,11 +267,13 @@ int whirl_spectrum_peaks(const double *x, size_t m, double dt,
 
   size_t np = 0;
   for (size_t i = 0; i < ncand && np < maxpeaks; ++i) {
-    if (cand[i].amp < thr) continue;
+    /* below SPEC_MIN_SEP cycles in the record: the main lobe of the
+     * removed mean, not a measurable tone */
+    if (cand[i].amp < thr || cand[i].freq * T < SPEC_MIN_SEP) continue;
     int lobe = 0;
     for (size_t j = 0; j < np && !lobe; ++j)
       lobe = is_side_lobe(cand[i].freq * T, cand[i].amp, peaks[j].freq * T,
-                          peaks[j].amp);
+                          peaks[j].amp, (double)m);
     if (!lobe) peaks[np++] = cand[i];
   }
   free(cand);

@@ -134,15 +134,17 @@ typedef struct {
   double *pts; /* m rotating-frame samples, a closed polyline in time order */
   size_t m;
   double lo[4], hi[4];
-  double tol;
+  double scale[4]; /* 1 / range of each coordinate on the cycle */
+  double tol;      /* in scaled coordinates (fraction of each range) */
 } cycle_data;
 
 /* Squared distance from q to the segment [a, b] in R^4. */
-static double seg_dist2(const double *q, const double *a, const double *b) {
+static double seg_dist2(const double *q, const double *a, const double *b,
+                        const double *sc) {
   double ab[4], aq[4], l2 = 0, d = 0;
   for (int i = 0; i < 4; ++i) {
-    ab[i] = b[i] - a[i];
-    aq[i] = q[i] - a[i];
+    ab[i] = (b[i] - a[i]) * sc[i];
+    aq[i] = (q[i] - a[i]) * sc[i];
     l2 += ab[i] * ab[i];
     d += ab[i] * aq[i];
   }
@@ -162,10 +164,10 @@ static double cycle_dist(const cycle_data *c, const double *xr) {
   for (size_t k = 0; k + 1 < c->m; ++k) {
     const double *a = c->pts + 4 * k;
     /* cheap reject on the first coordinate pair */
-    double du = xr[0] - a[0], dv = xr[1] - a[1];
-    if (du * du + dv * dv > best + 4 * c->tol * c->tol && best < INFINITY)
+    double du = (xr[0] - a[0]) * c->scale[0], dv = (xr[1] - a[1]) * c->scale[1];
+    if (best < INFINITY && du * du + dv * dv > best + 4 * c->tol * c->tol)
       continue;
-    double d = seg_dist2(xr, a, a + 4);
+    double d = seg_dist2(xr, a, a + 4, c->scale);
     if (d < best) best = d;
   }
   return sqrt(best);
@@ -175,8 +177,10 @@ static int cycle_test(double t, const double *x, void *data) {
   const cycle_data *c = data;
   double xr[4];
   whirl_sfd_to_rotating(c->Om, t, x, xr);
-  for (int i = 0; i < 4; ++i)
-    if (xr[i] < c->lo[i] - c->tol || xr[i] > c->hi[i] + c->tol) return 0;
+  for (int i = 0; i < 4; ++i) {
+    double m = c->tol / c->scale[i];
+    if (xr[i] < c->lo[i] - m || xr[i] > c->hi[i] + m) return 0;
+  }
   return cycle_dist(c, xr) <= c->tol;
 }
 
@@ -308,6 +312,10 @@ static void set_cycle_box(cycle_data *c) {
       if (v < c->lo[i]) c->lo[i] = v;
       if (v > c->hi[i]) c->hi[i] = v;
     }
+  for (int i = 0; i < 4; ++i) {
+    double r = c->hi[i] - c->lo[i];
+    c->scale[i] = r > 1e-12 ? 1.0 / r : 1e12;
+  }
 }
 
 typedef struct {
@@ -395,11 +403,7 @@ static int find_cycle(const double *p, whirl_sfd_attractors *a,
     c->pts = r.pts;
     c->m = r.m;
     set_cycle_box(c);
-    double diam = 0;
-    for (int i = 0; i < 4; ++i)
-      diam += (c->hi[i] - c->lo[i]) * (c->hi[i] - c->lo[i]);
-    diam = sqrt(diam);
-    c->tol = o->qp_tol * diam;
+    c->tol = o->qp_tol;
     /* The set must be recurrent: the next 40 section points stay within
      * the tolerance of the sampled cycle. */
     recur_ctx rc2 = {c, 0};

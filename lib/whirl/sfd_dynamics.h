@@ -23,9 +23,13 @@
  *  - Nonsynchronous (quasiperiodic) response: a reference limit cycle of the
  *    rotating frame is obtained by integrating from a list of starting states
  *    (zero first) until one neither reaches a circular orbit's set nor
- *    touches the housing in search_periods; it is then sampled densely.  A
- *    state within qp_tol (relative to the cycle's diameter) of the sampled
- *    cycle on qp_confirm consecutive section points counts as captured.
+ *    touches the housing in search_periods; it is then sampled densely (40
+ *    periods, 256 samples per period, checked to be recurrent).  Distances
+ *    are measured with every coordinate scaled by its range on the cycle; a
+ *    state within qp_tol of the sampled cycle (a polyline) on qp_confirm
+ *    consecutive section points counts as captured.  This test is
+ *    empirical, not a certificate: it relies on the cycle being attracting
+ *    within that distance.
  *  - Contact (ε ≥ 1) is reported by the integrator (WHIRL_BASIN_DOMAIN).
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_SFD_DYNAMICS_H
@@ -73,7 +77,7 @@ typedef struct whirl_sfd_attractors_options {
   double safety;           /* factor on the certified radius, default 0.5 */
   int find_cycle;          /* look for the nonsynchronous response (1) */
   size_t search_periods;   /* per starting state, default 600 */
-  double qp_tol;           /* default 0.01 (of the cycle's diameter) */
+  double qp_tol;           /* default 0.01 (of each coordinate's range) */
   size_t qp_confirm;       /* default 10 */
 } whirl_sfd_attractors_options;
 

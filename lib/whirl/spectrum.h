@@ -2,7 +2,7 @@
  * a windowed DFT with peak interpolation, and the character of a Poincaré
  * section (fixed point, period-k, invariant curve, irregular).
  *
- * Spectrum: the mean is removed, a Hann window applied, the record zero-
+ * Spectrum: the (window-weighted) mean is removed, a Hann window applied, the record zero-
  * padded to 4 times the next power of two ≥ m (radix-2 FFT), and each peak's
  * frequency refined by fitting a parabola to the logarithms of the three
  * largest bins (Gaussian interpolation).  With the 4× padding the bins are at
@@ -43,11 +43,15 @@ WHIRL_API int whirl_spectrum(const double *x, size_t m, double dt,
  * sorted by decreasing amplitude.  Window side lobes are dropped: peaks
  * closer than 3 resolution bins 1/(m dt) to a larger one, and peaks below
  * twice the Hann leakage envelope 1/(π ν (ν² − 1)) of a larger peak ν
- * resolution bins away (or of its mirror image at negative frequency).  So
- * a tone is resolved next to a larger one of amplitude A only if it is more
- * than 3 bins away and above 2 A/(π ν (ν² − 1)) (≈ 1e-2 A at 4 bins, 1e-3 A
- * at 9 bins).  *npeaks = 0 for a constant record.  WHIRL_EINVAL for m < 16,
- * dt <= 0, non-finite data or rel_threshold < 0. */
+ * resolution bins away (or of its images at −f and 1/dt − f).  So a tone is
+ * resolved next to a larger one of amplitude A only if it is more than 3
+ * bins away and above 2 A/(π ν (ν² − 1)) (≈ 1e-2 A at 4 bins, 1e-3 A at 9
+ * bins).  Peaks below 3 resolution bins (fewer than 3 cycles in the record,
+ * inside the lobe of the removed mean) are not reported.  *npeaks = 0 when
+ * the spectrum is at the rounding level (largest amplitude below
+ * 1e3 DBL_EPSILON max|x|, e.g. a constant record).  WHIRL_EINVAL for m < 16,
+ * dt <= 0, non-finite data, rel_threshold < 0, npeaks NULL, or peaks NULL
+ * with maxpeaks > 0. */
 WHIRL_API int whirl_spectrum_peaks(const double *x, size_t m, double dt,
                                    double rel_threshold, whirl_peak *peaks,
                                    size_t maxpeaks, size_t *npeaks);
@@ -65,15 +69,13 @@ typedef enum whirl_section_kind {
  * the size of the set (largest distance from the centroid) plus tol
  * (absolute).  Period k is the smallest k ≤ max_period (at least 1 is tried)
  * with every P_i coinciding with P_{i mod k} (hence |P_{i+k} − P_i| small
- * for all i, without a slow drift): k = 1 is FIXED, k > 1 PERIODIC.
+ * for all i, and no slow drift): k = 1 is FIXED, k > 1 PERIODIC.  A cycle
+ * longer than max_period (some k ≤ npts/2) is PERIODIC with *period = 0.
  * Otherwise the correlation-type dimension d of the set is estimated from
  * how the median distance to the 8th nearest neighbour scales between all
  * points and every 4th one (d = log 4 / log(ratio)); the 8th rather than the
  * 1st neighbour averages out the gap structure of quasi-periodic points.
- * d < 1.5 is a curve, otherwise irregular.  If the median 1st-neighbour
- * distance is within the tolerance (points repeat with a period above
- * max_period), the result is PERIODIC with *period = 0 — so tol must be well
- * below the spacing of the points on a curve.
+ * d < 1.5 is a curve, otherwise irregular.
  * Outputs: *kind, *period (k, or 0), *dimension (0 for fixed and periodic,
  * +inf if the distances do not shrink at all); period and dimension may be
  * NULL.  WHIRL_EINVAL for npts < 2, npts < 2*max_period, npts < 64 when

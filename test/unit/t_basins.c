@@ -42,8 +42,8 @@ static void test_circular_orbits(void) {
   int st[16];
   size_t n = 0;
   table1(p, 1.78);
-  ok(whirl_sfd_circular_orbits(p, eps, st, mr, 16, &n) == WHIRL_OK && n == 3,
-     "Omega = 1.78 (region B): three circular orbits (got %zu)", n);
+  int rc = whirl_sfd_circular_orbits(p, eps, st, mr, 16, &n);
+  ok(rc == WHIRL_OK && n == 3, "Omega = 1.78 (region B): three circular orbits (got %zu)", n);
   if (n == 3) {
     ok(st[0] == 1 && st[1] == 0 && st[2] == 1, "stable, unstable, stable (got %d %d %d)", st[0], st[1], st[2]);
     for (int i = 0; i < 3; ++i) {
@@ -229,6 +229,17 @@ static void test_basins_threads(void) {
   ok(rc3 == WHIRL_OK && !memcmp(w1, w3, n * sizeof(int)),
      "fixed horizon of %zu periods gives the same classification as the early exit", maxper + 50);
 
+  /* a state touching the housing is classified as contact, not integrated */
+  {
+    const double xc[4] = {1.01, 0, 0, 0};
+    int wc = 99;
+    unsigned pc = 99;
+    bo.period = 2 * M_PI / p[0];
+    bo.fixed_horizon = 0;
+    int rcc = whirl_basins_compute(whirl_sfd_fixed(), p, 1, xc, whirl_sfd_attractors_list(A), 2, &bo, &wc,
+                                   &pc, NULL, msg, sizeof msg);
+    ok(rcc == WHIRL_OK && wc == WHIRL_BASIN_DOMAIN, "initial state with eps = 1.01 is contact (got %d)", wc);
+  }
   /* bad input */
   bo.period = 0;
   ok(whirl_basins_compute(whirl_sfd_fixed(), p, n, X, whirl_sfd_attractors_list(A), 2, &bo, w3, NULL, NULL,

@@ -233,15 +233,18 @@ static void test_fixed_periodic(void) {
   whirl_section_kind kind;
   size_t per;
   double d;
+  int st;
   for (size_t i = 0; i < N; ++i) {
     p[3 * i] = 0.3 + urand(-1e-13, 1e-13);
     p[3 * i + 1] = -0.2 + urand(-1e-13, 1e-13);
     p[3 * i + 2] = 1.1 + urand(-1e-13, 1e-13);
   }
-  ok(classify(p, N, 3, 1e-9, 8, &kind, &per, &d) == WHIRL_OK &&
+  st = classify(p, N, 3, 1e-9, 8, &kind, &per, &d);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_FIXED && per == 1 && d == 0.0,
      "constant points + 1e-13 noise: FIXED, period 1");
-  ok(classify(p, 2, 3, 1e-9, 1, &kind, &per, &d) == WHIRL_OK &&
+  st = classify(p, 2, 3, 1e-9, 1, &kind, &per, &d);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_FIXED,
      "two coincident points: FIXED");
 
@@ -250,15 +253,43 @@ static void test_fixed_periodic(void) {
     p[2 * i] = cyc[i % 3][0] + urand(-1e-13, 1e-13);
     p[2 * i + 1] = cyc[i % 3][1] + urand(-1e-13, 1e-13);
   }
-  ok(classify(p, N, 2, 1e-9, 8, &kind, &per, &d) == WHIRL_OK &&
+  st = classify(p, N, 2, 1e-9, 8, &kind, &per, &d);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_PERIODIC && per == 3 && d == 0.0,
      "3-cycle: PERIODIC, period 3 (got kind %d period %zu)", (int)kind, per);
-  ok(classify(p, 6, 2, 1e-9, 3, &kind, &per, &d) == WHIRL_OK &&
+  st = classify(p, 6, 2, 1e-9, 3, &kind, &per, &d);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_PERIODIC && per == 3,
      "3-cycle, 6 points, max_period 3: period 3");
-  ok(classify(p, N, 2, 1e-9, 2, &kind, &per, &d) == WHIRL_OK &&
+  st = classify(p, N, 2, 1e-9, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_PERIODIC && per == 0,
      "3-cycle with max_period 2: PERIODIC, period 0 (repeating points)");
+
+  /* a 2-cycle drifting by 6e-10 per return (9e-8 in all, tolerance 2e-9):
+   * |P_{i+2} − P_i| is always small, but the points do not repeat — two
+   * lines of points, dimension 1 */
+  for (size_t i = 0; i < N; ++i) {
+    p[2 * i] = i % 2 ? 1.0 : -1.0;
+    p[2 * i + 1] = 3e-10 * (double)i;
+  }
+  st = classify(p, N, 2, 1e-9, 8, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_CURVE && per == 0,
+     "drifting 2-cycle: not periodic but CURVE (got kind %d period %zu)",
+     (int)kind, per);
+  is_rel(d, 1.0, 0.05, "drifting 2-cycle: dimension 1");
+
+  /* a 7-cycle with max_period 5: PERIODIC, period 0 */
+  for (size_t i = 0; i < N; ++i) {
+    p[2 * i] = cos(2.0 * PI * 3.0 * (double)(i % 7) / 7.0);
+    p[2 * i + 1] = sin(2.0 * PI * 3.0 * (double)(i % 7) / 7.0);
+  }
+  st = classify(p, N, 2, 1e-9, 5, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_PERIODIC && per == 0,
+     "7-cycle with max_period 5: PERIODIC, period 0");
+  st = classify(p, N, 2, 1e-9, 7, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_PERIODIC && per == 7,
+     "7-cycle with max_period 7: period 7");
 
   /* a period-2 cycle whose points are 1e-6 apart: distinct at tol 1e-9,
    * coincident at tol 1e-5 */
@@ -266,22 +297,26 @@ static void test_fixed_periodic(void) {
     p[2 * i] = 0.5 + (i % 2 ? 1e-6 : 0.0);
     p[2 * i + 1] = 0.5;
   }
-  ok(classify(p, N, 2, 1e-9, 8, &kind, &per, &d) == WHIRL_OK &&
+  st = classify(p, N, 2, 1e-9, 8, &kind, &per, &d);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_PERIODIC && per == 2,
      "points 1e-6 apart, tol 1e-9: period 2");
-  ok(classify(p, N, 2, 1e-5, 8, &kind, &per, &d) == WHIRL_OK &&
+  st = classify(p, N, 2, 1e-5, 8, &kind, &per, &d);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_FIXED,
      "points 1e-6 apart, tol 1e-5: FIXED");
   free(p);
 }
 
-/* points of x_{k+1} = x_k + ρ (mod 1) on closed curves */
+/* closed curves through the points of an irrational rotation θ_{k+1} = θ_k
+ * + 2πρ (the Poincaré section of a quasi-periodic orbit): dimension 1 */
 static void test_curves(void) {
   enum { N = 20000 };
   double *p = malloc(3 * N * sizeof *p);
   whirl_section_kind kind;
   size_t per;
   double d;
+  int st;
 
   /* ellipse with semi-axes 2 and 0.5, rotation number 0.2974 (as a period
    * ratio; 3000 points, so no repetition of 0.2974 = 1487/5000) */
@@ -290,13 +325,14 @@ static void test_curves(void) {
     p[2 * i] = 2.0 * cos(th) + 0.3;
     p[2 * i + 1] = 0.5 * sin(th) - 1.0;
   }
-  ok(classify(p, 3000, 2, 1e-9, 10, &kind, &per, &d) == WHIRL_OK &&
+  st = classify(p, 3000, 2, 1e-9, 10, &kind, &per, &d);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_CURVE && per == 0,
      "rotation 0.2974 on an ellipse: CURVE (got kind %d, d = %g)", (int)kind, d);
   ok(d >= 0.8 && d <= 1.2, "ellipse: dimension %g in [0.8, 1.2]", d);
 
-  /* golden-mean rotation on a wobbly closed curve; the 1st-neighbour
-   * estimate gives d ≈ 12 at this N (three-distance theorem) */
+  /* golden-mean rotation on a wobbly closed curve; a 1st-neighbour
+   * estimate would give d ≈ 20 at this N (three-distance theorem) */
   const double gold = 0.5 * (sqrt(5.0) - 1.0);
   for (size_t i = 0; i < 4000; ++i) {
     const double th = 2.0 * PI * gold * (double)i;
@@ -304,22 +340,23 @@ static void test_curves(void) {
     p[2 * i] = r * cos(th);
     p[2 * i + 1] = 0.7 * r * sin(th + 0.3 * sin(th));
   }
-  ok(classify(p, 4000, 2, 1e-9, 10, &kind, &per, &d) == WHIRL_OK &&
+  st = classify(p, 4000, 2, 1e-9, 10, &kind, &per, &d);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_CURVE,
      "golden rotation on a wobbly curve: CURVE (d = %g)", d);
   ok(d >= 0.8 && d <= 1.2, "wobbly curve: dimension %g in [0.8, 1.2]", d);
 
-  /* a torus knot in 3-D: winding (1, √2 − 1), 20000 points */
+  /* a trefoil knot in 3-D at angles 2π k (√2 − 1), 20000 points */
   const double rho = sqrt(2.0) - 1.0;
   for (size_t i = 0; i < N; ++i) {
-    const double u = 2.0 * PI * (double)i * 0.1, v = u * rho;
-    p[3 * i] = (2.0 + 0.5 * cos(u)) * cos(v);
-    p[3 * i + 1] = (2.0 + 0.5 * cos(u)) * sin(v);
-    p[3 * i + 2] = 0.5 * sin(u);
+    const double th = 2.0 * PI * rho * (double)i;
+    p[3 * i] = sin(th) + 2.0 * sin(2.0 * th);
+    p[3 * i + 1] = cos(th) - 2.0 * cos(2.0 * th);
+    p[3 * i + 2] = -sin(3.0 * th);
   }
-  ok(classify(p, N, 3, 1e-9, 10, &kind, &per, &d) == WHIRL_OK &&
-         kind == WHIRL_SECTION_CURVE,
-     "20000 points on a 3-D closed curve: CURVE (d = %g)", d);
+  st = classify(p, N, 3, 1e-9, 10, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_CURVE,
+     "20000 points on a trefoil knot in 3-D: CURVE (d = %g)", d);
   ok(d >= 0.8 && d <= 1.2, "3-D curve: dimension %g in [0.8, 1.2]", d);
   free(p);
 }
@@ -331,12 +368,14 @@ static void test_irregular(void) {
   whirl_section_kind kind;
   size_t per;
   double d;
+  int st;
 
   for (size_t i = 0; i < 4000; ++i) {
     p[2 * i] = urand(0.0, 1.0);
     p[2 * i + 1] = urand(0.0, 1.0);
   }
-  ok(classify(p, 4000, 2, 1e-9, 10, &kind, &per, &d) == WHIRL_OK &&
+  st = classify(p, 4000, 2, 1e-9, 10, &kind, &per, &d);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_IRREGULAR && per == 0,
      "4000 uniform points in a square: IRREGULAR (d = %g)", d);
   ok(d >= 1.7 && d <= 2.3, "square: dimension %g in [1.7, 2.3]", d);
@@ -348,7 +387,8 @@ static void test_irregular(void) {
     p[3 * i + 1] = (2.0 + 0.7 * cos(u)) * sin(v);
     p[3 * i + 2] = 0.7 * sin(u);
   }
-  ok(classify(p, N, 3, 1e-9, 10, &kind, &per, &d) == WHIRL_OK &&
+  st = classify(p, N, 3, 1e-9, 10, &kind, &per, &d);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_IRREGULAR,
      "20000 points on a torus surface: IRREGULAR (d = %g)", d);
   ok(d >= 1.7 && d <= 2.3, "torus surface: dimension %g in [1.7, 2.3]", d);
@@ -369,7 +409,8 @@ static void test_irregular(void) {
     p[2 * i] = x;
     p[2 * i + 1] = y;
   }
-  ok(classify(p, N, 2, 1e-9, 10, &kind, &per, &d) == WHIRL_OK,
+  st = classify(p, N, 2, 1e-9, 10, &kind, &per, &d);
+  ok(st == WHIRL_OK,
      "Hénon attractor: classified");
   ok(d >= 1.05 && d <= 1.4, "Hénon: dimension %g in [1.05, 1.4] (1.21)", d);
   free(p);
@@ -380,32 +421,45 @@ static void test_section_errors(void) {
   whirl_section_kind kind;
   size_t per;
   double d;
+  int st;
   for (size_t i = 0; i < 100; ++i) {
     p[2 * i] = cos(2.0 * PI * 0.2974 * (double)i);
     p[2 * i + 1] = sin(2.0 * PI * 0.2974 * (double)i);
   }
-  ok(classify(p, 100, 2, 1e-9, 5, &kind, &per, &d) == WHIRL_OK &&
+  st = classify(p, 100, 2, 1e-9, 5, &kind, &per, &d);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_CURVE,
      "100 points on a circle: CURVE (d = %g)", d);
-  ok(classify(p, 40, 2, 1e-9, 5, &kind, &per, &d) == WHIRL_EINVAL,
+  st = classify(p, 40, 2, 1e-9, 5, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL,
      "40 aperiodic points (< 64 for the dimension): EINVAL");
-  ok(classify(p, 1, 2, 1e-9, 0, &kind, &per, &d) == WHIRL_EINVAL, "1 point: EINVAL");
-  ok(classify(p, 100, 2, 1e-9, 51, &kind, &per, &d) == WHIRL_EINVAL,
+  st = classify(p, 1, 2, 1e-9, 0, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL, "1 point: EINVAL");
+  st = classify(p, 100, 2, 1e-9, 51, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL,
      "npts < 2 max_period: EINVAL");
-  ok(classify(p, 100, 0, 1e-9, 5, &kind, &per, &d) == WHIRL_EINVAL, "dim 0: EINVAL");
-  ok(classify(p, 100, 2, -1e-9, 5, &kind, &per, &d) == WHIRL_EINVAL, "tol < 0: EINVAL");
-  ok(classify(p, 100, 2, NAN, 5, &kind, &per, &d) == WHIRL_EINVAL, "tol NaN: EINVAL");
-  ok(whirl_section_classify(p, 100, 2, 1e-9, 5, NULL, &per, &d) == WHIRL_EINVAL,
+  st = classify(p, 100, 0, 1e-9, 5, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL, "dim 0: EINVAL");
+  st = classify(p, 100, 2, -1e-9, 5, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL, "tol < 0: EINVAL");
+  st = classify(p, 100, 2, NAN, 5, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL, "tol NaN: EINVAL");
+  st = whirl_section_classify(p, 100, 2, 1e-9, 5, NULL, &per, &d);
+  ok(st == WHIRL_EINVAL,
      "kind NULL: EINVAL");
-  ok(whirl_section_classify(NULL, 100, 2, 1e-9, 5, &kind, &per, &d) == WHIRL_EINVAL,
+  st = whirl_section_classify(NULL, 100, 2, 1e-9, 5, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL,
      "pts NULL: EINVAL");
-  ok(whirl_section_classify(p, 100, 2, 1e-9, 5, &kind, NULL, NULL) == WHIRL_OK &&
+  st = whirl_section_classify(p, 100, 2, 1e-9, 5, &kind, NULL, NULL);
+  ok(st == WHIRL_OK &&
          kind == WHIRL_SECTION_CURVE,
      "period, dimension NULL: fine");
   p[77] = NAN;
-  ok(classify(p, 100, 2, 1e-9, 5, &kind, &per, &d) == WHIRL_EINVAL, "NaN coordinate: EINVAL");
+  st = classify(p, 100, 2, 1e-9, 5, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL, "NaN coordinate: EINVAL");
   p[77] = -INFINITY;
-  ok(classify(p, 100, 2, 1e-9, 5, &kind, &per, &d) == WHIRL_EINVAL, "-Inf coordinate: EINVAL");
+  st = classify(p, 100, 2, 1e-9, 5, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL, "-Inf coordinate: EINVAL");
 }
 
 int main(void) {

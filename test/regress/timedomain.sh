@@ -1,0 +1,103 @@
+#!/bin/sh
+# test/regress/timedomain.sh — the time-domain commands as a user meets them:
+# bad input (clear message, exit 2, nothing written), `whirl sfd simulate`
+# at Omega = 8.7 (quasiperiodic, f2 against an independent estimate from the
+# Poincare points' rotation), a short sweep whose circular orbits agree with
+# eq. 15, and a small basin run whose counts add up.
+# SPDX-License-Identifier: BSD-3-Clause
+set -u
+WHIRL="${top_builddir:-.}/drivers/whirl"
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-td.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+n=0
+fails=0
+ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
+
+for c in simulate sweep basins onset; do
+  "$WHIRL" sfd $c --help > "$tmp/help.txt" 2>&1
+  rc=$?
+  grep -q "usage" "$tmp/help.txt"
+  ok $(( rc != 0 || $? != 0 )) "whirl sfd $c --help"
+done
+
+check_bad() {
+  cmd=$1; pattern=$2; shift 2
+  out="$tmp/bad-out"
+  rm -rf "$out"
+  "$WHIRL" sfd "$cmd" --out "$out" "$@" > "$tmp/stdout" 2> "$tmp/stderr"
+  rc=$?
+  grep -q -- "$pattern" "$tmp/stderr"
+  found=$?
+  [ ! -e "$out" ]
+  clean=$?
+  ok $(( rc != 2 || found != 0 || clean != 0 )) "sfd $cmd rejects $* : $(head -n 1 "$tmp/stderr")"
+}
+check_bad simulate "omega is required"
+check_bad simulate "must be > 0" --omega -3
+check_bad simulate "outside the clearance" --omega 2 --y0 0.8 --z0 0.7
+check_bad simulate "finite" --omega nan
+check_bad simulate "periods" --omega 2 --periods 2
+check_bad simulate "rtol" --omega 2 --rtol 0
+check_bad simulate "lambda" --omega 2 --lambda -1
+check_bad sweep "required" --from 1 --to 2
+check_bad sweep "direction" --from 1 --to 2 --step 0.1 --direction sideways
+check_bad sweep "step" --from 1 --to 2 --step -0.1
+check_bad basins "velocities" --omega 2 --velocities fast
+check_bad basins "radius" --omega 2 --radius 1.2
+check_bad basins "omega is required" --points 10
+check_bad basins "non-negative integer" --omega 2 --points -5
+check_bad basins "threads" --omega 2 --threads -1
+"$WHIRL" sfd onset --from 8 --to 8 > /dev/null 2> "$tmp/stderr"; rc=$?
+ok $(( rc != 2 )) "sfd onset rejects an empty bracket: $(head -n 1 "$tmp/stderr")"
+
+# Omega = 8.7 from rest: quasiperiodic
+out="$tmp/sim"
+"$WHIRL" sfd simulate --omega 8.7 --periods 1000 --out "$out" > "$tmp/sim.out" 2> "$tmp/sim.err"; rc=$?
+ok $rc "simulate --omega 8.7 runs"
+grep -q "^class	quasiperiodic" "$tmp/sim.out"
+ok $? "class quasiperiodic"
+for f in history.tsv poincare.tsv spectrum.tsv peaks.tsv history.png orbit.png spectrum.png phase.png; do
+  [ -s "$out/$f" ]
+  ok $? "simulate wrote $f"
+done
+ls -a "$out" | grep -q '\.tmp$'
+ok $(( $? == 0 )) "no temporary files left"
+# f2 from the spectrum, and independently from the rotation of the
+# Poincare points about their centre: the section of a quasiperiodic
+# motion with frequencies (1, f2) turns by 2 pi f2 per period (mod 1).
+f2=$(awk -F'\t' '$1 ~ /^[0-9]+$/ && $2 > 0.05 && $2 < 0.95 && $2 != 1 { print $2; exit }' "$tmp/sim.out")
+rot=$(awk -F'\t' 'NR > 2 && $7 == 1 { n++; y[n] = $3; z[n] = $4; cy += $3; cz += $4 }
+  END { cy /= n; cz /= n; pi = atan2(0, -1); s = 0
+        for (k = 2; k <= n; k++) { d = atan2(z[k] - cz, y[k] - cy) - atan2(z[k-1] - cz, y[k-1] - cy)
+          while (d < 0) d += 2 * pi; while (d >= 2 * pi) d -= 2 * pi; s += d }
+        printf "%.6f", s / (n - 1) / (2 * pi) }' "$out/poincare.tsv")
+awk -v a="$f2" -v b="$rot" 'BEGIN { d = a - (1 - b); if (d < 0) d = -d; e = a - b; if (e < 0) e = -e
+  exit !((d < 2e-4 || e < 2e-4) && a > 0.29 && a < 0.30) }'
+ok $? "f2 = $f2 (paper 0.2974) agrees with the section's rotation number $rot (or 1 - it)"
+
+# a short sweep across region A: settled circular orbits agree with eq. 15
+out="$tmp/sweep"
+"$WHIRL" sfd sweep --from 1.0 --to 1.3 --step 0.1 --direction up --out "$out" > "$tmp/sw.out" 2> "$tmp/sw.err"; rc=$?
+ok $rc "sweep 1.0..1.3 runs"
+awk -F'\t' 'NR > 1 { if ($3 != "circular") bad = 1; d = $8 < 0 ? -$8 : $8; if (d > 1e-6) bad = 1; m++ }
+  END { exit bad || m != 4 }' "$tmp/sw.out"
+ok $? "all 4 speeds settle on circular orbits with |eps - eq. 15| < 1e-6"
+for f in sweep.tsv poincare.tsv sweep.png bifurcation.png; do
+  [ -s "$out/$f" ]
+  ok $? "sweep wrote $f"
+done
+
+# a small basin at Omega = 1.78: the counts add up, both orbits occur
+out="$tmp/basins"
+"$WHIRL" sfd basins --omega 1.78 --points 150 --rtol 1e-10 --atol 1e-13 --out "$out" > "$tmp/b.out" 2> "$tmp/b.err"; rc=$?
+ok $rc "basins --omega 1.78 --points 150 runs"
+total=$(awk 'NR > 1' "$out/basins.tsv" | grep -vc '^#')
+sum=$(awk -F'\t' 'NR > 1 { s += $2 } END { print s }' "$tmp/b.out")
+ok $(( sum != total - 1 )) "counts on stdout ($sum) = lines in basins.tsv ($((total - 1)))"
+grep -q "^small" "$tmp/b.out" && grep -q "^large" "$tmp/b.out"
+ok $? "small and large orbits both reported"
+[ -s "$out/basins.png" ]
+ok $? "basins.png written"
+
+echo "1..$n"
+[ "$fails" -eq 0 ]
