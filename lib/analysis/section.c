@@ -5,18 +5,25 @@
  * smallest k ≤ max_period with every point P_i within that tolerance of
  * P_(i mod k) (so a slow drift is not taken for a cycle).
  *
- * Otherwise the dimension d comes from how nearest-neighbour distances shrink
- * with the number n of points, r ∝ n^(−1/d): with r the median distance to the
- * 8th nearest neighbour, d = log(N/n_q) / log(r(n_q) / r(N)), n_q = ⌈N/4⌉ the
- * points 0, 4, 8, … in time order (so d = log 4 / log ratio).  The 8th rather
- * than the 1st neighbour because the points of a quasi-periodic curve are
- * those of an irrational rotation: by the three-distance theorem their gaps
- * take two or three values whose proportions jump with N, and the median
- * 1st-neighbour distance of N and N/4 such points can differ by a factor
- * anywhere from ~1 to ~250 (d from 0.25 to over 100 in tests on ellipses,
- * N = 500 … 8000); distances to the 8th neighbour span several gaps and
- * average that out (d = 1 ± 0.1, for random points in a square 2 ± 0.1).
- * Near-resonant rotations (clustered points) give d < 1, still a curve.
+ * Otherwise the dimension d comes from how nearest-neighbour distances grow
+ * with the number of neighbours, r_k ∝ k^(1/d) (equivalently r ∝ n^(−1/d)
+ * with the number n of points: the 8th neighbour among a random quarter of
+ * the points is on average the 32nd among all of them): with r_8, r_32 the
+ * median distances to the 8th and 32nd nearest neighbours, d = log 4 /
+ * log(r_32 / r_8).  Why not the 1st neighbour of all points against every
+ * 4th point: (a) the points of a quasi-periodic curve are those of an
+ * irrational rotation; by the three-distance theorem their gaps take two or
+ * three values whose proportions jump with N, and the median 1st-neighbour
+ * distances of N and N/4 such points differ by a factor anywhere from ~1 to
+ * ~250 (d from 0.25 to over 100 in tests on ellipses, N = 500 … 8000); the
+ * 8th and 32nd neighbours span several gaps and average that out; (b) every
+ * 4th point of a section with a 2- or 4-fold structure (a period-doubled
+ * torus: two curves visited in turn) lies on half or a quarter of it, which
+ * doubles d or worse; the k-neighbour ratio uses all points.  In tests on
+ * rotations on ellipses, circles and distorted curves (N = 300 … 20000) d is
+ * 1 ± 0.1, for uniform points in a square or disk 1.9 … 2.0, for the Hénon
+ * attractor 1.2 … 1.35; near-resonant rotations (points in clusters) give
+ * d < 1, still a curve.
  * A cycle longer than max_period (every P_i within tolerance of P_(i mod k),
  * max_period < k ≤ npts/2, found among the returns of P_0) is reported as
  * PERIODIC with period 0, before any dimension is estimated.
@@ -37,7 +44,8 @@
 
 #include <whirl/spectrum.h>
 
-/* Minimum number of points for the dimension estimate (N/4 ≥ 16). */
+/* Minimum number of points for the dimension estimate (the 32nd neighbour
+ * must lie well inside the set; reliable from a few hundred points). */
 #define SEC_MIN_DIM_PTS 64
 
 /* The dimension compares the distances to the SEC_KNEAR-th and SEC_KFAR-th
@@ -48,7 +56,6 @@
 
 /* k-d tree leaves hold at most this many points. */
 #define KD_LEAF 8
-
 
 /* ------------------------------------------------------------------------
  * k-d tree over a permutation idx[] of n contiguous points, implicit: the node
@@ -135,8 +142,8 @@ static void knn_insert(double *best, double d2) {
 
 /* Improve best[SEC_KFAR], the smallest squared distances from point self (at
  * q) to the other points of idx[lo, hi). */
-static void kd_nearest(const kdtree *t, ptrdiff_t lo, ptrdiff_t hi,
-                       size_t self, const double *q, double *best) {
+static void kd_nearest(const kdtree *t, ptrdiff_t lo, ptrdiff_t hi, size_t self,
+                       const double *q, double *best) {
   if (hi - lo <= KD_LEAF) {
     for (ptrdiff_t i = lo; i < hi; ++i)
       if (t->idx[i] != self)

@@ -2,8 +2,9 @@
  * histories and their dominant peaks (whirl/spectrum.h).  The window-
  * weighted mean is removed, a periodic ("DFT-even") Hann window applied,
  * the record zero-padded to SPEC_PAD times the next power of two and
- * transformed by an iterative radix-2 FFT; amplitudes are divided by the window sum (coherent gain 0.5)
- * so a sinusoid A cos(2π f t) on a bin reads A.  Peak frequency and amplitude
+ * transformed by an iterative radix-2 FFT; amplitudes are divided by half
+ * the window sum (one-sided, coherent gain 0.5), so a sinusoid
+ * A cos(2π f t) on a bin reads A.  Peak frequency and amplitude
  * are refined by a parabola through the logarithms of the three bins around a
  * local maximum (Gaussian interpolation); side lobes of larger peaks are
  * rejected by distance and by the Hann leakage envelope.
@@ -199,8 +200,7 @@ static double hann_envelope(double nu) {
  * accepted peak at pb with amplitude pamp, or of its images at −pb and
  * fs − pb (fs = 1/dt)?  Frequencies in resolution bins (f·T, T = m dt), so
  * fs is at m. */
-static int is_side_lobe(double fb, double a, double pb, double pamp,
-                        double m) {
+static int is_side_lobe(double fb, double a, double pb, double pamp, double m) {
   const double nu[3] = {fabs(fb - pb), fb + pb, fabs(m - pb - fb)};
   if (nu[0] < SPEC_MIN_SEP) return 1;
   for (int i = 0; i < 3; ++i)
@@ -251,9 +251,8 @@ int whirl_spectrum_peaks(const double *x, size_t m, double dt,
     if (!(amp[k] > amp[k - 1] && amp[k] >= amp[k + 1] && amp[k] >= thr))
       continue;
     /* Gaussian interpolation: parabola through (−1, a), (0, b), (1, c) */
-    const double tiny = amax * 1e-300;
-    const double la = log(fmax(amp[k - 1], tiny)), lb = log(amp[k]),
-                 lc = log(fmax(amp[k + 1], tiny));
+    const double la = log(fmax(amp[k - 1], DBL_MIN)), lb = log(amp[k]),
+                 lc = log(fmax(amp[k + 1], DBL_MIN));
     const double den = la - 2.0 * lb + lc;
     double d = den < 0.0 ? 0.5 * (la - lc) / den : 0.0;
     if (d > 0.5) d = 0.5;

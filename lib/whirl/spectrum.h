@@ -72,10 +72,14 @@ typedef enum whirl_section_kind {
  * for all i, and no slow drift): k = 1 is FIXED, k > 1 PERIODIC.  A cycle
  * longer than max_period (some k ≤ npts/2) is PERIODIC with *period = 0.
  * Otherwise the correlation-type dimension d of the set is estimated from
- * how the median distance to the 8th nearest neighbour scales between all
- * points and every 4th one (d = log 4 / log(ratio)); the 8th rather than the
- * 1st neighbour averages out the gap structure of quasi-periodic points.
- * d < 1.5 is a curve, otherwise irregular.
+ * how nearest-neighbour distances scale, r ∝ (k/n)^(1/d) for the k-th of n
+ * points: d = log 4 / log(r_32 / r_8), r_k the median distance to the k-th
+ * nearest neighbour (the 8th among a quarter of the points is on average
+ * the 32nd among all; using several neighbours and all points averages out
+ * the gap structure of quasi-periodic points and is blind to a 2- or 4-fold
+ * interleaving, where the 1st neighbour of every 4th point fails — see
+ * lib/analysis/section.c).  d < 1.5 is a curve, otherwise irregular;
+ * reliable from a few hundred points.
  * Outputs: *kind, *period (k, or 0), *dimension (0 for fixed and periodic,
  * +inf if the distances do not shrink at all); period and dimension may be
  * NULL.  WHIRL_EINVAL for npts < 2, npts < 2*max_period, npts < 64 when

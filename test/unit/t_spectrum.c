@@ -34,7 +34,8 @@ static void tones(double *x, size_t m, double dt, double offset, size_t nt,
   for (size_t i = 0; i < m; ++i) {
     const double t = (double)i * dt;
     double s = offset;
-    for (size_t j = 0; j < nt; ++j) s += amp[j] * cos(2.0 * PI * f[j] * t + ph[j]);
+    for (size_t j = 0; j < nt; ++j)
+      s += amp[j] * cos(2.0 * PI * f[j] * t + ph[j]);
     x[i] = s;
   }
 }
@@ -49,8 +50,8 @@ static void tones(double *x, size_t m, double dt, double offset, size_t nt,
 static void test_bins(void) {
   enum { M = 1024 };
   const double dt = 1.0 / 128.0, A = 0.8, f0 = 5.0; /* 40 cycles */
-  double *x = malloc(M * sizeof *x);
-  tones(x, M, dt, 0.0, 1, &f0, &A, (const double[]){0.9});
+  double *x = malloc((M + 1) * sizeof *x);
+  tones(x, M + 1, dt, 0.0, 1, &f0, &A, (const double[]){0.9});
   size_t nf = 0;
   ok(whirl_spectrum(x, M, dt, NULL, NULL, 0, &nf) == WHIRL_OK && nf == 2049,
      "size query: N = 4*1024 gives %zu = 2049 bins", nf);
@@ -62,7 +63,8 @@ static void test_bins(void) {
   is_rel(freq[1], 1.0 / 32.0, 1e-15, "freq[1] = 1/(N dt) = 1/32");
   is_rel(freq[2048], 64.0, 1e-15, "last bin at Nyquist 1/(2 dt) = 64");
   is_rel(freq[160], f0, 1e-15, "bin 160 is 5");
-  is_rel(amp[160], A, 1e-12, "on-bin tone: amplitude A (coherent gain corrected)");
+  is_rel(amp[160], A, 1e-12,
+         "on-bin tone: amplitude A (coherent gain corrected)");
   is_rel(amp[156], 0.5 * A, 1e-12, "Hann kernel: A/2 one resolution bin below");
   is_rel(amp[164], 0.5 * A, 1e-12, "Hann kernel: A/2 one resolution bin above");
   is_abs(amp[168], 0.0, 1e-13, "Hann kernel zero 2 resolution bins away");
@@ -74,7 +76,8 @@ static void test_bins(void) {
   ok(whirl_spectrum(x, M, dt, f2, a2, 100, &got) == WHIRL_OK && got == 100,
      "nmax = 100 returns 100 bins");
   int same = 1;
-  for (size_t k = 0; k < 100; ++k) same = same && f2[k] == freq[k] && a2[k] == amp[k];
+  for (size_t k = 0; k < 100; ++k)
+    same = same && f2[k] == freq[k] && a2[k] == amp[k];
   ok(same, "truncated spectrum equals the first 100 bins");
 
   /* m just above a power of two: N = 4*2048 */
@@ -98,10 +101,12 @@ static void test_single_tone(void) {
     size_t np = 99;
     int st = whirl_spectrum_peaks(x, M, dt, 1e-8, p, 4, &np);
     ok(st == WHIRL_OK && np == 1,
-       "tone f=%g: one peak even at threshold 1e-8 (side lobes dropped), got %zu",
+       "tone f=%g: one peak even at threshold 1e-8 (side lobes dropped), got "
+       "%zu",
        fs[c], np);
     is_abs(p[0].freq, fs[c], 1e-6, "tone f=%g: frequency to 1e-6", fs[c]);
-    is_rel(p[0].amp, as[c], 1e-4, "tone f=%g: amplitude %g to 1e-4", fs[c], as[c]);
+    is_rel(p[0].amp, as[c], 1e-4, "tone f=%g: amplitude %g to 1e-4", fs[c],
+           as[c]);
   }
   /* a short record: the bias bound in resolution bins, 1/T = 1/31.25 */
   tones(x, 1000, dt, 0.0, 1, (const double[]){2.71828}, (const double[]){1.0},
@@ -110,7 +115,8 @@ static void test_single_tone(void) {
   size_t np = 0;
   ok(whirl_spectrum_peaks(x, 1000, dt, 1e-3, &p, 1, &np) == WHIRL_OK && np == 1,
      "short record: a peak");
-  is_abs(p.freq, 2.71828, 1e-3 / 31.25, "short record: frequency to 1e-3 resolution bin");
+  is_abs(p.freq, 2.71828, 1e-3 / 31.25,
+         "short record: frequency to 1e-3 resolution bin");
   is_rel(p.amp, 1.0, 5e-4, "short record: amplitude to 5e-4");
   free(x);
 }
@@ -127,7 +133,8 @@ static void test_two_tones(void) {
   whirl_peak p[8];
   size_t np = 0;
   int st = whirl_spectrum_peaks(x, M, dt, 1e-3, p, 8, &np);
-  ok(st == WHIRL_OK && np == 4, "two tones + 2 combinations: 4 peaks (got %zu)", np);
+  ok(st == WHIRL_OK && np == 4, "two tones + 2 combinations: 4 peaks (got %zu)",
+     np);
   for (size_t j = 0; j < 4 && j < np; ++j) {
     is_rel(p[j].freq, f[j], 1e-5, "peak %zu: frequency %g to 1e-5", j, f[j]);
     is_rel(p[j].amp, a[j], 1e-3, "peak %zu: amplitude %g to 1e-3", j, a[j]);
@@ -183,7 +190,8 @@ static void test_offset_noise(void) {
         (const double[]){0.0, 1.0});
   ok(whirl_spectrum_peaks(x, M, dt, 1e-3, p, 4, &np) == WHIRL_OK && np == 2,
      "weak tone 5.3 resolution bins away: 2 peaks (got %zu)", np);
-  is_abs(p[1].freq, fb, 0.02 / T, "weak tone: frequency to 0.02 resolution bin");
+  is_abs(p[1].freq, fb, 0.02 / T,
+         "weak tone: frequency to 0.02 resolution bin");
   is_rel(p[1].amp, 0.1, 2e-2, "weak tone: amplitude to 2e-2");
   free(fr);
   free(am);
@@ -195,24 +203,36 @@ static void test_spectrum_errors(void) {
   whirl_peak p[4];
   size_t n = 0;
   for (size_t i = 0; i < 64; ++i) x[i] = sin(0.3 * (double)i);
-  ok(whirl_spectrum_peaks(x, 64, 0.1, 1e-3, p, 4, &n) == WHIRL_OK, "64 samples: fine");
-  ok(whirl_spectrum_peaks(x, 15, 0.1, 1e-3, p, 4, &n) == WHIRL_EINVAL, "m = 15: EINVAL");
-  ok(whirl_spectrum_peaks(x, 64, 0.0, 1e-3, p, 4, &n) == WHIRL_EINVAL, "dt = 0: EINVAL");
-  ok(whirl_spectrum_peaks(x, 64, -0.1, 1e-3, p, 4, &n) == WHIRL_EINVAL, "dt < 0: EINVAL");
-  ok(whirl_spectrum_peaks(x, 64, NAN, 1e-3, p, 4, &n) == WHIRL_EINVAL, "dt NaN: EINVAL");
+  ok(whirl_spectrum_peaks(x, 64, 0.1, 1e-3, p, 4, &n) == WHIRL_OK,
+     "64 samples: fine");
+  ok(whirl_spectrum_peaks(x, 15, 0.1, 1e-3, p, 4, &n) == WHIRL_EINVAL,
+     "m = 15: EINVAL");
+  ok(whirl_spectrum_peaks(x, 64, 0.0, 1e-3, p, 4, &n) == WHIRL_EINVAL,
+     "dt = 0: EINVAL");
+  ok(whirl_spectrum_peaks(x, 64, -0.1, 1e-3, p, 4, &n) == WHIRL_EINVAL,
+     "dt < 0: EINVAL");
+  ok(whirl_spectrum_peaks(x, 64, NAN, 1e-3, p, 4, &n) == WHIRL_EINVAL,
+     "dt NaN: EINVAL");
   ok(whirl_spectrum_peaks(x, 64, 0.1, -1.0, p, 4, &n) == WHIRL_EINVAL,
      "negative threshold: EINVAL");
-  ok(whirl_spectrum_peaks(x, 64, 0.1, 1e-3, p, 4, NULL) == WHIRL_EINVAL, "npeaks NULL: EINVAL");
-  ok(whirl_spectrum_peaks(NULL, 64, 0.1, 1e-3, p, 4, &n) == WHIRL_EINVAL, "x NULL: EINVAL");
-  ok(whirl_spectrum(x, 15, 0.1, NULL, NULL, 0, &n) == WHIRL_EINVAL, "spectrum m = 15: EINVAL");
-  ok(whirl_spectrum(x, 64, -1.0, fr, am, 200, &n) == WHIRL_EINVAL, "spectrum dt < 0: EINVAL");
+  ok(whirl_spectrum_peaks(x, 64, 0.1, 1e-3, p, 4, NULL) == WHIRL_EINVAL,
+     "npeaks NULL: EINVAL");
+  ok(whirl_spectrum_peaks(NULL, 64, 0.1, 1e-3, p, 4, &n) == WHIRL_EINVAL,
+     "x NULL: EINVAL");
+  ok(whirl_spectrum(x, 15, 0.1, NULL, NULL, 0, &n) == WHIRL_EINVAL,
+     "spectrum m = 15: EINVAL");
+  ok(whirl_spectrum(x, 64, -1.0, fr, am, 200, &n) == WHIRL_EINVAL,
+     "spectrum dt < 0: EINVAL");
   ok(whirl_spectrum(x, 64, 0.1, NULL, am, 200, &n) == WHIRL_EINVAL,
      "spectrum freq NULL, amp not: EINVAL");
   x[17] = NAN;
-  ok(whirl_spectrum_peaks(x, 64, 0.1, 1e-3, p, 4, &n) == WHIRL_EINVAL, "NaN sample: EINVAL");
-  ok(whirl_spectrum(x, 64, 0.1, fr, am, 200, &n) == WHIRL_EINVAL, "spectrum NaN: EINVAL");
+  ok(whirl_spectrum_peaks(x, 64, 0.1, 1e-3, p, 4, &n) == WHIRL_EINVAL,
+     "NaN sample: EINVAL");
+  ok(whirl_spectrum(x, 64, 0.1, fr, am, 200, &n) == WHIRL_EINVAL,
+     "spectrum NaN: EINVAL");
   x[17] = INFINITY;
-  ok(whirl_spectrum_peaks(x, 64, 0.1, 1e-3, p, 4, &n) == WHIRL_EINVAL, "Inf sample: EINVAL");
+  ok(whirl_spectrum_peaks(x, 64, 0.1, 1e-3, p, 4, &n) == WHIRL_EINVAL,
+     "Inf sample: EINVAL");
 }
 
 /* ------------------------------------------------------------------------
@@ -240,12 +260,10 @@ static void test_fixed_periodic(void) {
     p[3 * i + 2] = 1.1 + urand(-1e-13, 1e-13);
   }
   st = classify(p, N, 3, 1e-9, 8, &kind, &per, &d);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_FIXED && per == 1 && d == 0.0,
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_FIXED && per == 1 && d == 0.0,
      "constant points + 1e-13 noise: FIXED, period 1");
   st = classify(p, 2, 3, 1e-9, 1, &kind, &per, &d);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_FIXED,
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_FIXED,
      "two coincident points: FIXED");
 
   const double cyc[3][2] = {{1.0, 0.0}, {-0.5, 0.8}, {-0.4, -0.9}};
@@ -254,16 +272,13 @@ static void test_fixed_periodic(void) {
     p[2 * i + 1] = cyc[i % 3][1] + urand(-1e-13, 1e-13);
   }
   st = classify(p, N, 2, 1e-9, 8, &kind, &per, &d);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_PERIODIC && per == 3 && d == 0.0,
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_PERIODIC && per == 3 && d == 0.0,
      "3-cycle: PERIODIC, period 3 (got kind %d period %zu)", (int)kind, per);
   st = classify(p, 6, 2, 1e-9, 3, &kind, &per, &d);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_PERIODIC && per == 3,
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_PERIODIC && per == 3,
      "3-cycle, 6 points, max_period 3: period 3");
   st = classify(p, N, 2, 1e-9, 2, &kind, &per, &d);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_PERIODIC && per == 0,
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_PERIODIC && per == 0,
      "3-cycle with max_period 2: PERIODIC, period 0 (repeating points)");
 
   /* a 2-cycle drifting by 6e-10 per return (9e-8 in all, tolerance 2e-9):
@@ -298,12 +313,10 @@ static void test_fixed_periodic(void) {
     p[2 * i + 1] = 0.5;
   }
   st = classify(p, N, 2, 1e-9, 8, &kind, &per, &d);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_PERIODIC && per == 2,
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_PERIODIC && per == 2,
      "points 1e-6 apart, tol 1e-9: period 2");
   st = classify(p, N, 2, 1e-5, 8, &kind, &per, &d);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_FIXED,
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_FIXED,
      "points 1e-6 apart, tol 1e-5: FIXED");
   free(p);
 }
@@ -326,9 +339,9 @@ static void test_curves(void) {
     p[2 * i + 1] = 0.5 * sin(th) - 1.0;
   }
   st = classify(p, 3000, 2, 1e-9, 10, &kind, &per, &d);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_CURVE && per == 0,
-     "rotation 0.2974 on an ellipse: CURVE (got kind %d, d = %g)", (int)kind, d);
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_CURVE && per == 0,
+     "rotation 0.2974 on an ellipse: CURVE (got kind %d, d = %g)", (int)kind,
+     d);
   ok(d >= 0.8 && d <= 1.2, "ellipse: dimension %g in [0.8, 1.2]", d);
 
   /* golden-mean rotation on a wobbly closed curve; a 1st-neighbour
@@ -341,10 +354,21 @@ static void test_curves(void) {
     p[2 * i + 1] = 0.7 * r * sin(th + 0.3 * sin(th));
   }
   st = classify(p, 4000, 2, 1e-9, 10, &kind, &per, &d);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_CURVE,
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_CURVE,
      "golden rotation on a wobbly curve: CURVE (d = %g)", d);
   ok(d >= 0.8 && d <= 1.2, "wobbly curve: dimension %g in [0.8, 1.2]", d);
+
+  /* a period-doubled torus: two ellipses visited in turn, each by a golden
+   * rotation (every 4th point would lie on one of them only) */
+  for (size_t i = 0; i < 4000; ++i) {
+    const double th = 2.0 * PI * gold * (double)(i / 2);
+    p[2 * i] = (i % 2 ? 1.5 : -1.5) + 0.5 * cos(th);
+    p[2 * i + 1] = 0.3 * sin(th);
+  }
+  st = classify(p, 4000, 2, 1e-9, 10, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_CURVE,
+     "doubled torus (two curves in turn): CURVE (d = %g)", d);
+  ok(d >= 0.8 && d <= 1.2, "doubled torus: dimension %g in [0.8, 1.2]", d);
 
   /* a trefoil knot in 3-D at angles 2π k (√2 − 1), 20000 points */
   const double rho = sqrt(2.0) - 1.0;
@@ -375,8 +399,7 @@ static void test_irregular(void) {
     p[2 * i + 1] = urand(0.0, 1.0);
   }
   st = classify(p, 4000, 2, 1e-9, 10, &kind, &per, &d);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_IRREGULAR && per == 0,
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_IRREGULAR && per == 0,
      "4000 uniform points in a square: IRREGULAR (d = %g)", d);
   ok(d >= 1.7 && d <= 2.3, "square: dimension %g in [1.7, 2.3]", d);
 
@@ -388,8 +411,7 @@ static void test_irregular(void) {
     p[3 * i + 2] = 0.7 * sin(u);
   }
   st = classify(p, N, 3, 1e-9, 10, &kind, &per, &d);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_IRREGULAR,
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_IRREGULAR,
      "20000 points on a torus surface: IRREGULAR (d = %g)", d);
   ok(d >= 1.7 && d <= 2.3, "torus surface: dimension %g in [1.7, 2.3]", d);
 
@@ -410,8 +432,7 @@ static void test_irregular(void) {
     p[2 * i + 1] = y;
   }
   st = classify(p, N, 2, 1e-9, 10, &kind, &per, &d);
-  ok(st == WHIRL_OK,
-     "Hénon attractor: classified");
+  ok(st == WHIRL_OK, "Hénon attractor: classified");
   ok(d >= 1.05 && d <= 1.4, "Hénon: dimension %g in [1.05, 1.4] (1.21)", d);
   free(p);
 }
@@ -427,8 +448,7 @@ static void test_section_errors(void) {
     p[2 * i + 1] = sin(2.0 * PI * 0.2974 * (double)i);
   }
   st = classify(p, 100, 2, 1e-9, 5, &kind, &per, &d);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_CURVE,
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_CURVE,
      "100 points on a circle: CURVE (d = %g)", d);
   st = classify(p, 40, 2, 1e-9, 5, &kind, &per, &d);
   ok(st == WHIRL_EINVAL,
@@ -436,8 +456,7 @@ static void test_section_errors(void) {
   st = classify(p, 1, 2, 1e-9, 0, &kind, &per, &d);
   ok(st == WHIRL_EINVAL, "1 point: EINVAL");
   st = classify(p, 100, 2, 1e-9, 51, &kind, &per, &d);
-  ok(st == WHIRL_EINVAL,
-     "npts < 2 max_period: EINVAL");
+  ok(st == WHIRL_EINVAL, "npts < 2 max_period: EINVAL");
   st = classify(p, 100, 0, 1e-9, 5, &kind, &per, &d);
   ok(st == WHIRL_EINVAL, "dim 0: EINVAL");
   st = classify(p, 100, 2, -1e-9, 5, &kind, &per, &d);
@@ -445,14 +464,11 @@ static void test_section_errors(void) {
   st = classify(p, 100, 2, NAN, 5, &kind, &per, &d);
   ok(st == WHIRL_EINVAL, "tol NaN: EINVAL");
   st = whirl_section_classify(p, 100, 2, 1e-9, 5, NULL, &per, &d);
-  ok(st == WHIRL_EINVAL,
-     "kind NULL: EINVAL");
+  ok(st == WHIRL_EINVAL, "kind NULL: EINVAL");
   st = whirl_section_classify(NULL, 100, 2, 1e-9, 5, &kind, &per, &d);
-  ok(st == WHIRL_EINVAL,
-     "pts NULL: EINVAL");
+  ok(st == WHIRL_EINVAL, "pts NULL: EINVAL");
   st = whirl_section_classify(p, 100, 2, 1e-9, 5, &kind, NULL, NULL);
-  ok(st == WHIRL_OK &&
-         kind == WHIRL_SECTION_CURVE,
+  ok(st == WHIRL_OK && kind == WHIRL_SECTION_CURVE,
      "period, dimension NULL: fine");
   p[77] = NAN;
   st = classify(p, 100, 2, 1e-9, 5, &kind, &per, &d);
