@@ -32,7 +32,7 @@ static void help(FILE *f) {
 "  --step S          speed step > 0 (required)\n"
 "  --direction D     up, down or both                    (both)\n"
 "  --periods N       most periods per speed               (600)\n"
-"  --record R        periods kept as steady state         (100)\n"
+"  --record R        periods kept as steady state         (400)\n"
 "  --settle TOL      convergence of the section           (1e-11)\n"
 "  --y0 --z0 --vy0 --vz0   initial state of each direction (0)\n"
 "  --lambda L --delta D --zeta Z   model parameters   (0.0503 0.3 0)\n"
@@ -113,7 +113,7 @@ int cmd_sfd_sweep(int argc, char **argv) {
   double p[WHIRL_SFD_NPAR], x0[4] = {0, 0, 0, 0};
   whirl_sfd_default_params(p);
   double from = NAN, to = NAN, step = NAN, rtol = 1e-12, atol = 1e-15, settle = 1e-11;
-  size_t periods = 600, record = 100;
+  size_t periods = 600, record = 400;
   const char *dir = "sfd-sweep", *direction = "both";
   int noplot = 0, quiet = 0;
   const cli_opt opts[] = {
