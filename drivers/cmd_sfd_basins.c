@@ -279,9 +279,12 @@ int cmd_sfd_basins(int argc, char **argv) {
               Om, vel);
       const char *names[20];
       size_t nn = 0;
-      for (size_t j = 0; j < na; ++j) names[nn++] = whirl_sfd_attractors_info(A, j)->name;
-      names[nn++] = "contact";
-      names[nn++] = "unsettled";
+      /* only the classes that occur, so the key says what is drawn */
+      for (size_t j = 0; j < na; ++j)
+        if (cnt[j]) names[nn++] = whirl_sfd_attractors_info(A, j)->name;
+      if (ncontact) names[nn++] = "contact";
+      if (nunset) names[nn++] = "unsettled";
+      if (nfail) names[nn++] = "failed";
       double ps = n > 20000 ? 0.25 : n > 4000 ? 0.45 : 0.8;
       fprintf(f, "plot ");
       for (size_t j = 0; j < nn; ++j)
