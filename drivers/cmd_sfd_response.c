@@ -195,13 +195,6 @@ static int write_multipliers_gp(const char *dir, const whirl_sfd_response *res,
   return out_commit(&o);
 }
 
-static int rename_png(const char *dir, const char *name) {
-  char a[4096], b[4096];
-  snprintf(a, sizeof a, "%s/.%s.tmp", dir, name);
-  snprintf(b, sizeof b, "%s/%s", dir, name);
-  return rename(a, b);
-}
-
 int cmd_sfd_response(int argc, char **argv) {
   double p[WHIRL_SFD_NPAR];
   whirl_sfd_default_params(p);
@@ -338,10 +331,8 @@ int cmd_sfd_response(int argc, char **argv) {
         write_multipliers_gp(dir, &res, o.omega_max)) {
       cli_error(CMD, "cannot write the gnuplot scripts in '%s': %s", dir, strerror(errno));
       status = 1;
-    } else if (cli_gnuplot(dir, "response.gp", msg, sizeof msg) ||
-               rename_png(dir, "response.png") ||
-               cli_gnuplot(dir, "multipliers.gp", msg, sizeof msg) ||
-               rename_png(dir, "multipliers.png")) {
+    } else if (cli_plot(dir, "response", msg, sizeof msg) ||
+               cli_plot(dir, "multipliers", msg, sizeof msg)) {
       cli_error(CMD, "plot: %s", msg);
       status = 1;
     }

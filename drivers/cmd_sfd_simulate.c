@@ -143,8 +143,9 @@ int cmd_sfd_simulate(int argc, char **argv) {
     cli_error(CMD, "--rtol and --atol must be > 0 (got %g, %g)", rtol, atol);
     return 2;
   }
-  if ((double)periods * (double)samples > 5e7) {
-    cli_error(CMD, "--periods x --samples = %g samples is too many to keep (max 5e7)",
+  if ((double)periods * (double)samples > 1e7) {
+    cli_error(CMD, "--periods x --samples = %g samples is too many to keep (max 1e7: "
+              "lower --samples)",
               (double)periods * (double)samples);
     return 2;
   }

@@ -5,6 +5,7 @@
 #define WHIRL_TAP_H
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 
 static int tap_n = 0, tap_fail = 0;
@@ -54,6 +55,18 @@ static int is_abs(double got, double want, double tol, const char *fmt, ...) {
   va_end(ap);
   if (!cond) printf("#   got %.17g want %.17g abs err %.3g > %.3g\n", got, want, err, tol);
   return r;
+}
+
+/* Deterministic xorshift64* generator (Vigna 2016), uniform in [lo, hi):
+ * fixed seed, so a failure reproduces. */
+static uint64_t tap_rng = 0x2545F4914F6CDD1DULL;
+static double tap_urand(double lo, double hi) __attribute__((unused));
+static double tap_urand(double lo, double hi) {
+  tap_rng ^= tap_rng >> 12;
+  tap_rng ^= tap_rng << 25;
+  tap_rng ^= tap_rng >> 27;
+  const uint64_t r = tap_rng * 0x2545F4914F6CDD1DULL;
+  return lo + (hi - lo) * ((double)(r >> 11) * 0x1.0p-53);
 }
 
 static int done_testing(void) __attribute__((unused));

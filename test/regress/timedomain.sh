@@ -38,6 +38,7 @@ check_bad simulate "outside the clearance" --omega 2 --y0 0.8 --z0 0.7
 check_bad simulate "finite" --omega nan
 check_bad simulate "periods" --omega 2 --periods 2
 check_bad simulate "rtol" --omega 2 --rtol 0
+check_bad simulate "too many" --omega 2 --periods 1000000
 check_bad simulate "lambda" --omega 2 --lambda -1
 check_bad sweep "required" --from 1 --to 2
 check_bad sweep "direction" --from 1 --to 2 --step 0.1 --direction sideways

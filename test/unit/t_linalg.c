@@ -13,14 +13,8 @@
 
 #include "../tap.h"
 
-/* Deterministic xorshift64* generator: uniform in [-1, 1). */
-static uint64_t rng_state = 0x2545F4914F6CDD1DULL;
-static double urand(void) {
-  rng_state ^= rng_state >> 12;
-  rng_state ^= rng_state << 25;
-  rng_state ^= rng_state >> 27;
-  return (double)((rng_state * 0x2545F4914F6CDD1DULL) >> 11) * 0x1.0p-52 - 1.0;
-}
+/* uniform in [-1, 1) from the shared generator of tap.h */
+static double urand(void) { return tap_urand(-1.0, 1.0); }
 
 static void *xcalloc(size_t n, size_t size) {
   void *p = calloc(n ? n : 1, size);

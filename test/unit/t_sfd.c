@@ -17,17 +17,6 @@
 
 #define PI 3.14159265358979323846
 
-/* ------------------------------------------------------------------------
- * Fixed-seed generator (xorshift64*), so failures reproduce. */
-static uint64_t rng = 0x2545F4914F6CDD1DULL;
-
-static double urand(double lo, double hi) {
-  rng ^= rng >> 12;
-  rng ^= rng << 25;
-  rng ^= rng >> 27;
-  const uint64_t r = rng * 0x2545F4914F6CDD1DULL;
-  return lo + (hi - lo) * ((double)(r >> 11) * 0x1.0p-53);
-}
 
 static double maxabs(const double *v, size_t n) {
   double m = 0.0;
@@ -36,20 +25,20 @@ static double maxabs(const double *v, size_t n) {
 }
 
 static void random_params(double *p, int with_fe) {
-  p[WHIRL_SFD_OMEGA] = urand(0.1, 10.0);
-  p[WHIRL_SFD_LAMBDA] = urand(0.01, 1.5);
-  p[WHIRL_SFD_DELTA] = urand(0.0, 0.95);
-  p[WHIRL_SFD_ZETA] = urand(0.0, 0.1);
-  p[WHIRL_SFD_FE] = with_fe ? urand(-0.5, 0.5) : 0.0;
+  p[WHIRL_SFD_OMEGA] = tap_urand(0.1, 10.0);
+  p[WHIRL_SFD_LAMBDA] = tap_urand(0.01, 1.5);
+  p[WHIRL_SFD_DELTA] = tap_urand(0.0, 0.95);
+  p[WHIRL_SFD_ZETA] = tap_urand(0.0, 0.1);
+  p[WHIRL_SFD_FE] = with_fe ? tap_urand(-0.5, 0.5) : 0.0;
 }
 
 /* position of radius eps at a random angle, velocity random in [-2, 2]² */
 static void random_state(double eps, double *x) {
-  const double th = urand(0.0, 2.0 * PI);
+  const double th = tap_urand(0.0, 2.0 * PI);
   x[0] = eps * cos(th);
   x[1] = eps * sin(th);
-  x[2] = urand(-2.0, 2.0);
-  x[3] = urand(-2.0, 2.0);
+  x[2] = tap_urand(-2.0, 2.0);
+  x[3] = tap_urand(-2.0, 2.0);
 }
 
 /* ------------------------------------------------------------------------
@@ -174,8 +163,8 @@ static void test_force(void) {
   double err = 0.0, lerr = 0.0;
   for (int i = 0; i < 500; ++i) {
     double x[4];
-    const double l = urand(0.01, 1.5);
-    random_state(urand(1e-3, 0.97), x);
+    const double l = tap_urand(0.01, 1.5);
+    random_state(tap_urand(1e-3, 0.97), x);
     whirl_sfd_force(x[0], x[1], x[2], x[3], l, f, NULL, dl);
     polar_force(x[0], x[1], x[2], x[3], l, g);
     const double sc = maxabs(g, 2) + l * maxabs(x + 2, 2);
@@ -190,8 +179,8 @@ static void test_force(void) {
   /* circular orbit: ε' = 0, εγ' = εΩ gives F_r = aΩ, F_t = bΩ (eq. 15) */
   double cerr = 0.0;
   for (int i = 0; i < 200; ++i) {
-    const double l = urand(0.01, 1.5), e = urand(0.01, 0.98);
-    const double Om = urand(0.05, 20.0), th = urand(0.0, 2.0 * PI);
+    const double l = tap_urand(0.01, 1.5), e = tap_urand(0.01, 0.98);
+    const double Om = tap_urand(0.05, 20.0), th = tap_urand(0.0, 2.0 * PI);
     const double s = 1.0 - e * e;
     const double a = -4.0 * l * e * e / (s * s), b = -PI * l * e / pow(s, 1.5);
     const double ry = cos(th), rz = sin(th);
@@ -210,7 +199,7 @@ static void test_force(void) {
   double qerr = 0.0;
   for (int i = 0; i < 100; ++i) {
     double x[4], h[2];
-    random_state(urand(0.0, 0.9), x);
+    random_state(tap_urand(0.0, 0.9), x);
     const double c = cos(1.1), sn = sin(1.1);
     whirl_sfd_force(x[0], x[1], x[2], x[3], lam, f, NULL, NULL);
     whirl_sfd_force(c * x[0] - sn * x[1], sn * x[0] + c * x[1],
@@ -338,12 +327,12 @@ static void test_jacobians(void) {
     bad = 0;
     for (int i = 0; i < 400; ++i) {
       random_params(p, pass == 0);
-      random_state(urand(0.02, 0.95), x);
+      random_state(tap_urand(0.02, 0.95), x);
       if (pass == 1) { /* keep the fixed-frame speed V = w' + iΩw moderate */
         x[2] += p[0] * x[1];
         x[3] -= p[0] * x[0];
       }
-      const double t = urand(0.0, 10.0);
+      const double t = tap_urand(0.0, 10.0);
       if (whirl_check_jacobian(prob, t, x, p, &err) != 0) ++bad;
       worst = fmax(worst, err);
     }
@@ -407,7 +396,7 @@ static void test_jacobians(void) {
   for (int k = 0; k < 4; ++k) {
     worst = 0.0;
     for (int i = 0; i < 20; ++i)
-      worst = fmax(worst, small_eps_fd_err(es[k], urand(0.2, 1.5)));
+      worst = fmax(worst, small_eps_fd_err(es[k], tap_urand(0.2, 1.5)));
     ok(worst < 1e-3,
        "force position Jacobian at eps = %g = differences with h = eps/100 "
        "(max err %.2e)",
@@ -439,8 +428,8 @@ static void test_frames(void) {
     double p[WHIRL_SFD_NPAR], x[4], X[4], fr[4], ff[4];
     double Jr[4 * WHIRL_SFD_NPAR], Jf[4 * WHIRL_SFD_NPAR];
     random_params(p, 0);
-    random_state(urand(0.0, 0.9), x);
-    const double Om = p[0], t = urand(0.0, 20.0), c = cos(Om * t),
+    random_state(tap_urand(0.0, 0.9), x);
+    const double Om = p[0], t = tap_urand(0.0, 20.0), c = cos(Om * t),
                  s = sin(Om * t);
     const double Vu = x[2] - Om * x[1], Vv = x[3] + Om * x[0];
     X[0] = c * x[0] - s * x[1];
@@ -529,9 +518,9 @@ static void test_circular(void) {
    * central differences */
   double cerr = 0.0, derr = 0.0;
   for (int i = 0; i < 300; ++i) {
-    const double lam = urand(0.01, 1.5), de = urand(0.05, 0.95);
-    const double ze = urand(0.0, 0.1), e = urand(0.01, 0.95),
-                 Om = urand(0.1, 20.0);
+    const double lam = tap_urand(0.01, 1.5), de = tap_urand(0.05, 0.95);
+    const double ze = tap_urand(0.0, 0.1), e = tap_urand(0.01, 0.95),
+                 Om = tap_urand(0.1, 20.0);
     whirl_sfd_circ_G(e, Om, lam, de, ze, &G, &Ge, &GO);
     const double sc = G_scale(e, Om, lam, de, ze);
     cerr = fmax(cerr, fabs(G - eq15_direct(e, Om, lam, de, ze)) / sc);
@@ -568,11 +557,11 @@ static void test_circular(void) {
   for (int i = 0; i < 300; ++i) {
     double p[WHIRL_SFD_NPAR], Om[4];
     int nr;
-    p[1] = urand(0.01, 1.5);
-    p[2] = urand(0.05, 0.95);
-    p[3] = urand(0.0, 0.1);
+    p[1] = tap_urand(0.01, 1.5);
+    p[2] = tap_urand(0.05, 0.95);
+    p[3] = tap_urand(0.0, 0.1);
     p[4] = 0.0;
-    const double e = urand(0.01, 0.98);
+    const double e = tap_urand(0.01, 0.98);
     if (whirl_sfd_circ_roots(e, p[1], p[2], p[3], Om, &nr) != 0) {
       ++bad;
       continue;

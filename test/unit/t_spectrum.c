@@ -17,16 +17,6 @@
 
 #define PI 3.14159265358979323846
 
-/* Fixed-seed generator (xorshift64*), so failures reproduce. */
-static uint64_t rng = 0x2545F4914F6CDD1DULL;
-
-static double urand(double lo, double hi) {
-  rng ^= rng >> 12;
-  rng ^= rng << 25;
-  rng ^= rng >> 27;
-  const uint64_t r = rng * 0x2545F4914F6CDD1DULL;
-  return lo + (hi - lo) * ((double)(r >> 11) * 0x1.0p-53);
-}
 
 /* x[i] = offset + Σ amp[j] cos(2π f[j] t_i + ph[j]), t_i = i dt */
 static void tones(double *x, size_t m, double dt, double offset, size_t nt,
@@ -178,7 +168,7 @@ static void test_offset_noise(void) {
   /* tone + uniform noise of half-width 1e-2: the noise floor per bin is
    * ~1e-2 sqrt(2/M) ≈ 1.6e-4, well below the threshold 5e-3 */
   for (size_t i = 0; i < M; ++i)
-    x[i] = cos(2.0 * PI * 1.1 * (double)i * dt) + urand(-1e-2, 1e-2);
+    x[i] = cos(2.0 * PI * 1.1 * (double)i * dt) + tap_urand(-1e-2, 1e-2);
   ok(whirl_spectrum_peaks(x, M, dt, 5e-3, p, 4, &np) == WHIRL_OK && np == 1,
      "tone + noise: no spurious peak above 5e-3 (got %zu)", np);
   is_abs(p[0].freq, 1.1, 1e-4, "tone + noise: frequency");
@@ -255,9 +245,9 @@ static void test_fixed_periodic(void) {
   double d;
   int st;
   for (size_t i = 0; i < N; ++i) {
-    p[3 * i] = 0.3 + urand(-1e-13, 1e-13);
-    p[3 * i + 1] = -0.2 + urand(-1e-13, 1e-13);
-    p[3 * i + 2] = 1.1 + urand(-1e-13, 1e-13);
+    p[3 * i] = 0.3 + tap_urand(-1e-13, 1e-13);
+    p[3 * i + 1] = -0.2 + tap_urand(-1e-13, 1e-13);
+    p[3 * i + 2] = 1.1 + tap_urand(-1e-13, 1e-13);
   }
   st = classify(p, N, 3, 1e-9, 8, &kind, &per, &d);
   ok(st == WHIRL_OK && kind == WHIRL_SECTION_FIXED && per == 1 && d == 0.0,
@@ -268,8 +258,8 @@ static void test_fixed_periodic(void) {
 
   const double cyc[3][2] = {{1.0, 0.0}, {-0.5, 0.8}, {-0.4, -0.9}};
   for (size_t i = 0; i < N; ++i) {
-    p[2 * i] = cyc[i % 3][0] + urand(-1e-13, 1e-13);
-    p[2 * i + 1] = cyc[i % 3][1] + urand(-1e-13, 1e-13);
+    p[2 * i] = cyc[i % 3][0] + tap_urand(-1e-13, 1e-13);
+    p[2 * i + 1] = cyc[i % 3][1] + tap_urand(-1e-13, 1e-13);
   }
   st = classify(p, N, 2, 1e-9, 8, &kind, &per, &d);
   ok(st == WHIRL_OK && kind == WHIRL_SECTION_PERIODIC && per == 3 && d == 0.0,
@@ -395,8 +385,8 @@ static void test_irregular(void) {
   int st;
 
   for (size_t i = 0; i < 4000; ++i) {
-    p[2 * i] = urand(0.0, 1.0);
-    p[2 * i + 1] = urand(0.0, 1.0);
+    p[2 * i] = tap_urand(0.0, 1.0);
+    p[2 * i + 1] = tap_urand(0.0, 1.0);
   }
   st = classify(p, 4000, 2, 1e-9, 10, &kind, &per, &d);
   ok(st == WHIRL_OK && kind == WHIRL_SECTION_IRREGULAR && per == 0,
@@ -405,7 +395,7 @@ static void test_irregular(void) {
 
   /* a 2-torus surface in 3-D, uniform in both angles, 20000 points */
   for (size_t i = 0; i < N; ++i) {
-    const double u = urand(0.0, 2.0 * PI), v = urand(0.0, 2.0 * PI);
+    const double u = tap_urand(0.0, 2.0 * PI), v = tap_urand(0.0, 2.0 * PI);
     p[3 * i] = (2.0 + 0.7 * cos(u)) * cos(v);
     p[3 * i + 1] = (2.0 + 0.7 * cos(u)) * sin(v);
     p[3 * i + 2] = 0.7 * sin(u);
