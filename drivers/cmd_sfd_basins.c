@@ -309,9 +309,12 @@ int cmd_sfd_basins(int argc, char **argv) {
         fprintf(stderr, "  %-13s limit cycle of the rotating frame, eps in [%.4g, %.4g], tolerance %.3g\n",
                 in->name, in->eps_min, in->eps, in->level);
     }
-    fprintf(stderr, "  attractors %.2f s; basins %.2f s on %d thread%s; %zu periods (%.1f per point), "
+    char thr[32];
+    if (threads > 0) snprintf(thr, sizeof thr, "%d thread%s", threads, threads == 1 ? "" : "s");
+    else snprintf(thr, sizeof thr, "all threads");
+    fprintf(stderr, "  attractors %.2f s; basins %.2f s on %s; %zu periods (%.1f per point), "
                     "%zu steps, %zu RHS evaluations\n",
-            t_att, t_cls, threads, threads == 1 ? "" : "s (0 = all)", bst.periods,
+            t_att, t_cls, thr, bst.periods,
             (double)bst.periods / (double)n, bst.steps, bst.rhs_evals);
   }
   free(which);
