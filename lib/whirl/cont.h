@@ -35,7 +35,9 @@ typedef enum whirl_point_type {
   WHIRL_PT_BP = 3,      /* "BP" branch point */
   WHIRL_PT_HB = 4,      /* "HB" Hopf point (torus point TR for a rotating-frame
                            equilibrium representing a periodic orbit) */
-  WHIRL_PT_UZ = 5       /* "UZ" user-requested parameter value */
+  WHIRL_PT_UZ = 5,      /* "UZ" user-requested parameter value */
+  WHIRL_PT_PD = 6,      /* "PD" period doubling of a cycle (multiplier -1) */
+  WHIRL_PT_TR = 7       /* "TR" torus (Neimark-Sacker) point of a cycle */
 } whirl_point_type;
 
 WHIRL_API const char *whirl_point_type_name(int type);

@@ -51,10 +51,26 @@ typedef struct whirl_system {
   int (*spectrum)(const double *x, const double *p, const double *J,
                   double *re, double *im, size_t *m, void *data);
 
+  /* What spectrum() returns: WHIRL_SPEC_EIGENVALUES (default, stability
+   * means Re < 0; a complex pair crossing the imaginary axis is a Hopf point)
+   * or WHIRL_SPEC_MULTIPLIERS (Floquet multipliers of a periodic orbit,
+   * stability means |mu| < 1, the trivial multiplier of an autonomous orbit
+   * left out; a real multiplier through -1 is a period doubling PD, a complex
+   * pair through the unit circle a torus point TR). */
+  int spectrum_kind;
+
+  /* Optional: called by the core at the start point and after every
+   * accepted continuation point, before the next step, so that a
+   * constructor can update references that its equations use (the integral
+   * phase condition of collocation, Doedel's AUTO).  Returns 0 or an error. */
+  int (*accept)(const double *x, const double *p, void *data);
+
   const char *const *x_names;  /* optional, n names */
   const char *const *p_names;  /* optional, npar names */
   void *data;                  /* borrowed */
 } whirl_system;
+
+enum { WHIRL_SPEC_EIGENVALUES = 0, WHIRL_SPEC_MULTIPLIERS = 1 };
 
 /* Finite-difference dense Jacobian of a system (central differences).
  * J[n*n] column-major; work[2n] scratch. */

@@ -1,0 +1,89 @@
+/* whirl/colloc.h — constructor: periodic orbits of an ODE model by
+ * orthogonal collocation (de Boor & Swartz 1973; Doedel, AUTO-07p manual
+ * ch. 10), as an algebraic problem F(X, p) = 0 for the continuation core.
+ *
+ * Time is scaled to τ = t/T ∈ [0, 1]; the mesh 0 = τ_0 < ... < τ_NTST = 1
+ * has NTST intervals, each carrying a Lagrange polynomial of degree NCOL on
+ * NCOL + 1 equally spaced nodes; the ODE x' = T f(t0 + Tτ, x, p) is imposed at
+ * the NCOL Gauss–Legendre points of each interval.  Unknowns X: the values at
+ * the NTST·NCOL + 1 nodes (n each, node-major: X[n*j + i]), then, for an
+ * autonomous model, the period T.  Equations: n·NTST·NCOL collocation
+ * equations, n periodicity equations x(1) − x(0) = 0, and for autonomous
+ * models the integral phase condition ∫ <x(τ), x_ref'(τ)> dτ = 0 against the
+ * last accepted solution (updated through the system's accept hook).
+ *
+ * Forced (non-autonomous) models: forcing_param >= 0 names the parameter
+ * that is the forcing frequency ω, and the period is T = 2π·nu/ω (nu > 1
+ * for subharmonic orbits); there is no phase condition and T is not an
+ * unknown.
+ *
+ * The Jacobian is sparse (compressed-column pattern in the system, solved by
+ * UMFPACK on the sparse path); a dense callback is also provided.  The
+ * system's spectrum is the Floquet multipliers from the variational
+ * equations (whirl/floquet.h) at the orbit's first node, so the core reports
+ * stability and detects PD and TR; LP comes from the core's fold test.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_COLLOC_H
+#define WHIRL_COLLOC_H
+
+#include <stddef.h>
+#include <whirl/problem.h>
+#include <whirl/system.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct whirl_colloc_options {
+  size_t ntst;       /* NTST, mesh intervals (default 20) */
+  size_t ncol;       /* NCOL, collocation points per interval, 2..7 (default 4) */
+  int forcing_param; /* >= 0: forced model, ω = p[forcing_param];
+                        -1 (default): autonomous, T unknown */
+  unsigned nu;       /* forced models: period 2π·nu/ω (default 1) */
+  double t0;         /* forced models: time of τ = 0 (default 0) */
+  double floquet_rtol; /* integrator tolerance for the multipliers (1e-11) */
+} whirl_colloc_options;
+
+WHIRL_API void whirl_colloc_options_default(whirl_colloc_options *o);
+
+typedef struct whirl_colloc whirl_colloc;
+
+/* prob is borrowed and must outlive the object.  NULL on bad options or
+ * memory (message in errbuf). */
+WHIRL_API whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
+                                           const whirl_colloc_options *o,
+                                           char *errbuf, size_t errlen);
+WHIRL_API void whirl_colloc_free(whirl_colloc *c); /* accepts NULL */
+
+WHIRL_API const whirl_system *whirl_colloc_system(const whirl_colloc *c);
+WHIRL_API size_t whirl_colloc_size(const whirl_colloc *c); /* unknowns */
+
+/* Initial guess X[size] from m samples of one period, x[k*n + i] at
+ * t_k = k T/m, k = 0..m-1 (uniform, periodic, no end point), interpolated
+ * periodically (cubic) onto the mesh nodes.  For autonomous models T is
+ * stored in X and the phase reference is set from the samples.  Linear in
+ * the samples for fixed T, so it also maps perturbations (directions). */
+WHIRL_API int whirl_colloc_from_samples(whirl_colloc *c, const double *x,
+                                        size_t m, double T, double *X);
+
+/* The orbit at τ ∈ [0, 1] (scaled time): x[n]. */
+WHIRL_API int whirl_colloc_eval(const whirl_colloc *c, const double *X,
+                                double tau, double *x);
+
+/* Period of the orbit X at parameters p. */
+WHIRL_API double whirl_colloc_period(const whirl_colloc *c, const double *X,
+                                     const double *p);
+
+/* Adapt the mesh to the orbit X (equidistribute |x^(NCOL)|^{1/(NCOL+1)},
+ * Russell & Christiansen 1978, as AUTO's IAD) and re-interpolate X onto
+ * the new mesh in place.  The mesh is part of the object, so the caller
+ * restarts its continuation from the remapped X. */
+WHIRL_API int whirl_colloc_adapt(whirl_colloc *c, double *X);
+
+/* Current mesh: tau[NTST + 1]. */
+WHIRL_API const double *whirl_colloc_mesh(const whirl_colloc *c);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
