@@ -22,6 +22,8 @@ const char *whirl_point_type_name(int type) {
   case WHIRL_PT_BP: return "BP";
   case WHIRL_PT_HB: return "HB";
   case WHIRL_PT_UZ: return "UZ";
+  case WHIRL_PT_PD: return "PD";
+  case WHIRL_PT_TR: return "TR";
   default: return "??";
   }
 }
@@ -57,7 +59,7 @@ void whirl_cont_options_default(whirl_cont_options *o) {
   o->newton_fast = 3;
   o->max_angle = 0.2;
   o->tangent_predictor = 0;
-  o->detect_lp = o->detect_bp = o->detect_hb = 1;
+  o->detect_lp = o->detect_bp = o->detect_hb = o->detect_pd = 1;
   o->stop_at_bp = 0;
   o->detect_loop = 1;
   o->loc_tol = 1e-12;
@@ -316,6 +318,59 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
 
 /* ------------------------------------------------------------ analysis */
 
+/* Stability and Hopf test from eigenvalues: unstable count (Re > 0), complex
+ * unstable count and the real part of the complex eigenvalue nearest to the
+ * imaginary axis. */
+static void eigenvalue_tests(cont_state *st, size_t m) {
+  double scale = 1.0;
+  for (size_t i = 0; i < m; ++i) scale = fmax(scale, hypot(st->re[i], st->im[i]));
+  const double tol = 1e-11 * scale;
+  int nu = 0, ncu = 0;
+  double best = INFINITY;
+  for (size_t i = 0; i < m; ++i) {
+    if (st->re[i] > tol) ++nu;
+    if (fabs(st->im[i]) > 1e-8 * scale) {
+      if (st->re[i] > tol) ++ncu;
+      if (fabs(st->re[i]) < fabs(best)) best = st->re[i];
+    }
+  }
+  st->n_unstable = nu;
+  st->n_cu = ncu;
+  if (isfinite(best)) {
+    st->has_hb = 1;
+    st->psi_hb = best;
+  }
+}
+
+/* Stability, PD and TR tests from Floquet multipliers (trivial multiplier
+ * already left out by the system): unstable count (|mu| > 1), real
+ * multipliers below -1 and mu + 1 of the real negative one nearest to -1
+ * (PD), complex ones outside the unit circle and |mu| - 1 of the complex one
+ * nearest to it (TR).  Multipliers come from an integration at ~1e-11, so
+ * the stability margin is 1e-9. */
+static void multiplier_tests(cont_state *st, size_t m) {
+  const double tol = 1e-9;
+  int nu = 0, ncu = 0, nrn = 0;
+  double best_tr = INFINITY, best_pd = INFINITY;
+  for (size_t i = 0; i < m; ++i) {
+    const double r = hypot(st->re[i], st->im[i]);
+    const int cplx = fabs(st->im[i]) > 1e-8 * fmax(1.0, r);
+    if (r > 1.0 + tol) ++nu;
+    if (cplx) {
+      if (r > 1.0 + tol) ++ncu;
+      if (fabs(r - 1.0) < fabs(best_tr)) best_tr = r - 1.0;
+    } else if (st->re[i] < 0.0) {
+      if (st->re[i] < -1.0) ++nrn;
+      if (fabs(st->re[i] + 1.0) < fabs(best_pd)) best_pd = st->re[i] + 1.0;
+    }
+  }
+  st->n_unstable = nu;
+  st->n_cu = ncu;
+  st->n_rn = nrn;
+  if (isfinite(best_tr)) st->has_hb = 1, st->psi_hb = best_tr;
+  if (isfinite(best_pd)) st->has_pd = 1, st->psi_pd = best_pd;
+}
+
 int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
   const size_t n = c->n, N = c->N;
   if (st->p != c->trial.p) memcpy(st->p, c->trial.p, c->npar * sizeof *st->p);
@@ -341,6 +396,9 @@ int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
   st->n_cu = -1;
   st->has_hb = 0;
   st->psi_hb = 0.0;
+  st->has_pd = 0;
+  st->psi_pd = 0.0;
+  st->n_rn = -1;
   st->nspec = 0;
   if (c->sys.spectrum && c->sys.nspec) {
     size_t m = c->sys.nspec;
@@ -349,24 +407,10 @@ int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
     ++c->stats.eig_evals;
     if ((rc = classify(c, rc, "spectrum")) != 0) return rc;
     st->nspec = m;
-    double scale = 1.0;
-    for (size_t i = 0; i < m; ++i) scale = fmax(scale, hypot(st->re[i], st->im[i]));
-    const double tol = 1e-11 * scale;
-    int nu = 0, ncu = 0;
-    double best = INFINITY;
-    for (size_t i = 0; i < m; ++i) {
-      if (st->re[i] > tol) ++nu;
-      if (fabs(st->im[i]) > 1e-8 * scale) {
-        if (st->re[i] > tol) ++ncu;
-        if (fabs(st->re[i]) < fabs(best)) best = st->re[i];
-      }
-    }
-    st->n_unstable = nu;
-    st->n_cu = ncu;
-    if (isfinite(best)) {
-      st->has_hb = 1;
-      st->psi_hb = best;
-    }
+    if (c->sys.spectrum_kind == WHIRL_SPEC_MULTIPLIERS)
+      multiplier_tests(st, m);
+    else
+      eigenvalue_tests(st, m);
   }
   st->tests_valid = 1;
   return 0;
@@ -428,7 +472,20 @@ static void reset_run(whirl_cont *c) {
   c->errmsg[0] = '\0';
 }
 
+/* Tell the system a point was accepted (references such as the phase
+ * condition of collocation are updated here). */
+static int notify_accept(whirl_cont *c, const cont_state *st) {
+  if (!c->sys.accept) return 0;
+  int rc = c->sys.accept(st->X, st->p, c->sys.data);
+  if (rc != 0)
+    return CONT_FAIL(c, rc < 0 ? rc : WHIRL_EUSER,
+                     "the system's accept callback failed (%d)", rc);
+  return 0;
+}
+
 static int begin(whirl_cont *c, int tests_valid) {
+  int rc = notify_accept(c, &c->cur);
+  if (rc) return rc;
   c->cur.s = 0.0;
   c->cur.tests_valid = tests_valid;
   memcpy(c->Xstart, c->cur.X, c->N * sizeof *c->Xstart);
@@ -682,13 +739,16 @@ int whirl_cont_step(whirl_cont *c) {
   event evs[8 + 64];
   size_t nev = 0, maxev = 8 + (o->nuz < 64 ? o->nuz : 64);
   const cont_state *a = &c->cur, *b = &c->trial;
-  int want[5] = {0};
+  int want[EV_NKIND] = {0};
   if (a->tests_valid) {
     want[EV_LP] = o->detect_lp && sgn(a->psi_lp) * sgn(b->psi_lp) < 0;
     want[EV_BP] = o->detect_bp && a->sign_det * b->sign_det < 0;
     want[EV_HB] = o->detect_hb && a->n_cu >= 0 && b->n_cu >= 0 &&
                   a->n_cu != b->n_cu && a->has_hb && b->has_hb &&
                   sgn(a->psi_hb) * sgn(b->psi_hb) < 0;
+    want[EV_PD] = o->detect_pd && a->n_rn >= 0 && b->n_rn >= 0 &&
+                  a->n_rn != b->n_rn && a->has_pd && b->has_pd &&
+                  sgn(a->psi_pd) * sgn(b->psi_pd) < 0;
   }
   want[EV_PMAX] = b->X[n] > o->p_max && a->X[n] <= o->p_max;
   want[EV_PMIN] = b->X[n] < o->p_min && a->X[n] >= o->p_min;
@@ -698,7 +758,7 @@ int whirl_cont_step(whirl_cont *c) {
     finish(c, want[EV_PMAX] ? WHIRL_STOP_PMAX : WHIRL_STOP_PMIN);
     return WHIRL_DONE;
   }
-  for (int ev = 0; ev < 5; ++ev) {
+  for (int ev = 0; ev < EV_NKIND; ++ev) {
     if (!want[ev] || nev >= maxev) continue;
     cont_state *q = &c->queue[c->qcap - 1 - nev];
     if (cont_locate(c, ev, 0, b, q) == 0) {
@@ -741,8 +801,13 @@ int whirl_cont_step(whirl_cont *c) {
   int ended = 0;
   for (size_t i = 0; i < nev && !ended; ++i) {
     static const int type_of[] = {WHIRL_PT_LP, WHIRL_PT_BP, WHIRL_PT_HB,
-                                  WHIRL_PT_EP, WHIRL_PT_EP, WHIRL_PT_UZ};
-    push(c, evs[i].st, type_of[evs[i].ev]);
+                                  WHIRL_PT_PD, WHIRL_PT_EP, WHIRL_PT_EP,
+                                  WHIRL_PT_UZ};
+    int type = type_of[evs[i].ev];
+    /* a complex pair through the unit circle of the multipliers: torus */
+    if (type == WHIRL_PT_HB && c->sys.spectrum_kind == WHIRL_SPEC_MULTIPLIERS)
+      type = WHIRL_PT_TR;
+    push(c, evs[i].st, type);
     ++c->stats.special;
     if (evs[i].ev == EV_PMAX || evs[i].ev == EV_PMIN) {
       finish(c, evs[i].ev == EV_PMAX ? WHIRL_STOP_PMAX : WHIRL_STOP_PMIN);
@@ -789,6 +854,10 @@ int whirl_cont_step(whirl_cont *c) {
   memcpy(c->Xprev, c->cur.X, N * sizeof *c->Xprev);
   c->have_prev = 1;
   cont_state_copy(c, &c->cur, &c->trial);
+  {
+    int rc_acc = notify_accept(c, &c->cur);
+    if (rc_acc) return rc_acc;
+  }
   /* step control: grow after easy steps, shrink after hard ones */
   if (its <= o->newton_fast && cosang > cos(0.5 * o->max_angle))
     c->ds = fmin(1.5 * fabs(c->ds), o->ds_max);

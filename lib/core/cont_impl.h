@@ -22,10 +22,17 @@ typedef struct cont_state {
   double psi_lp;   /* t_p: changes sign at a fold */
   double logdet;   /* log|det [F_x F_p; r^T]|, r = predictor direction */
   int sign_det;    /* its sign: changes at a branch point */
-  double psi_hb;   /* Re of the complex eigenvalue closest to the axis */
+  double psi_hb;   /* Re of the complex eigenvalue closest to the axis
+                      (multipliers: |mu| - 1 of the complex multiplier
+                      closest to the unit circle: a TR test) */
   int has_hb;      /* psi_hb defined (a complex pair exists) */
+  double psi_pd;   /* multipliers: mu + 1 of the real negative multiplier
+                      nearest to -1 */
+  int has_pd;      /* psi_pd defined */
+  int n_rn;        /* multipliers: real ones below -1 */
   int n_unstable;  /* eigenvalues with Re > 0, -1 without spectrum */
-  int n_cu;        /* complex eigenvalues with Re > 0 */
+  int n_cu;        /* complex eigenvalues with Re > 0 (multipliers: complex
+                      ones outside the unit circle) */
   int tests_valid; /* 0 right after a branch switch: no detection yet */
   int type, label;
 } cont_state;
@@ -92,7 +99,7 @@ void cont_state_copy(const whirl_cont *c, cont_state *dst,
                      const cont_state *src);
 
 /* Event kinds localised by locate.c. */
-enum { EV_LP, EV_BP, EV_HB, EV_PMIN, EV_PMAX, EV_UZ };
+enum { EV_LP, EV_BP, EV_HB, EV_PD, EV_PMIN, EV_PMAX, EV_UZ, EV_NKIND = EV_UZ };
 
 /* Localise the zero of the test function of event kind ev (k: UZ index)
  * between c->cur (s = 0) and the trial point (s = ds) along c->dir; on

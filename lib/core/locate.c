@@ -24,6 +24,8 @@ static double psi(const whirl_cont *c, int ev, size_t k, const cont_state *st,
   }
   case EV_HB:
     return st->has_hb ? st->psi_hb : NAN;
+  case EV_PD:
+    return st->has_pd ? st->psi_pd : NAN;
   case EV_PMAX:
     return pv - c->opt.p_max;
   case EV_PMIN:
@@ -40,7 +42,10 @@ static double ftol(const whirl_cont *c, int ev, size_t k, const cont_state *st) 
     return 1e-14;
   case EV_BP:
     return 0.0;
+  case EV_PD:
+    return 1e-12;
   case EV_HB: {
+    if (c->sys.spectrum_kind == WHIRL_SPEC_MULTIPLIERS) return 1e-12;
     double sc = 1.0;
     for (size_t i = 0; i < st->nspec; ++i) sc = fmax(sc, hypot(st->re[i], st->im[i]));
     return 1e-13 * sc;

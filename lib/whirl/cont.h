@@ -74,7 +74,9 @@ typedef struct whirl_cont_options {
   int tangent_predictor; /* 0: secant predictor (default), 1: tangent */
   int detect_lp;       /* ILP */
   int detect_bp;       /* ISP (branch points) */
-  int detect_hb;       /* ISP (Hopf; needs the system's spectrum) */
+  int detect_hb;       /* ISP (Hopf; needs the system's spectrum); for Floquet
+                          multipliers this is the torus point TR */
+  int detect_pd;       /* ISP (period doubling; Floquet multipliers only) */
   int stop_at_bp;      /* end the branch at the first BP */
   int detect_loop;     /* stop when the branch returns to its start */
   double loc_tol;      /* localisation tolerance in arclength */

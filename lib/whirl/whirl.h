@@ -14,4 +14,7 @@
 #include <whirl/spectrum.h>
 #include <whirl/basins.h>
 #include <whirl/sfd_dynamics.h>
+#include <whirl/floquet.h>
+#include <whirl/hbm.h>
+#include <whirl/colloc.h>
 #endif
