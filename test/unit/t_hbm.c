@@ -336,6 +336,85 @@ static void test_vdp(void) {
   free(X);
 }
 
+/* ------------------------------------------------- torus point (closed form)
+ * Forced Hopf normal form z' = (a + i) z − |z|² z + F e^{iωt}, z = x + iy.
+ * In the frame rotating with ω, w = z e^{−iωt} obeys
+ * w' = (a + iσ) w − |w|² w + F, σ = 1 − ω, so the synchronous orbits are
+ * equilibria of w, with r = |w| on r²[(a − r²)² + σ²] = F², and a torus
+ * (Neimark–Sacker) point of the orbit is a Hopf point of the equilibrium:
+ * trace 2a − 4r² = 0, i.e. r² = a/2 and σ² = 2F²/a − a²/4, with the
+ * rotating-frame frequency β = sqrt(det) = sqrt(σ² − a²/4), so the critical
+ * multipliers are exp(±2πiβ/ω).  a = 1, F = 0.6: σ² = 0.47, β² = 0.22. */
+static int nf_rhs(double t, const double *x, const double *p, double *f,
+                  void *d) {
+  (void)d;
+  const double r2 = x[0] * x[0] + x[1] * x[1];
+  f[0] = p[1] * x[0] - x[1] - r2 * x[0] + p[2] * cos(p[0] * t);
+  f[1] = x[0] + p[1] * x[1] - r2 * x[1] + p[2] * sin(p[0] * t);
+  return 0;
+}
+static const whirl_problem forced_nf = {"forced-hopf", 2, 3, nf_rhs, NULL, NULL,
+                                        0, NULL, NULL, NULL};
+
+static void test_torus(void) {
+  whirl_hbm_options o;
+  whirl_hbm_options_default(&o);
+  o.harmonics = 4;
+  o.forcing_param = 0;
+  char err[256];
+  whirl_hbm *h = whirl_hbm_alloc(&forced_nf, &o, err, sizeof err);
+  const size_t S = whirl_hbm_size(h), L = 9;
+  double *X = calloc(S, sizeof *X);
+  /* ω = 1 (σ = 0): r²(1 − r²)² = 0.36 has the root r = 1.2181..., found here
+   * by bisection on the closed form; the orbit z = r e^{i(t + φ)} with
+   * (1 − r²) r e^{iφ} = −F fixes the phase: e^{iφ} = 1 (r > 1) */
+  double lo = 1.0, hi = 2.0;
+  for (int it = 0; it < 200; ++it) {
+    double m = 0.5 * (lo + hi), g = m * m * (1 - m * m) * (1 - m * m) - 0.36;
+    if (g < 0) lo = m; else hi = m;
+  }
+  const double r = 0.5 * (lo + hi);
+  X[1] = r;     /* x = r cos t */
+  X[L + 2] = r; /* y = r sin t */
+  double p[3] = {1.0, 1.0, 0.6};
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = 0;
+  co.ds = 0.02;
+  co.ds_max = 0.05;
+  co.p_min = 0.1;
+  co.p_max = 1.9;
+  const double sig = sqrt(0.47), beta = sqrt(0.22);
+  const double want[2] = {1 - sig, 1 + sig};
+  for (int dir = -1; dir <= 1; dir += 2) {
+    whirl_cont *c = whirl_cont_alloc(whirl_hbm_system(h), &co, err, sizeof err);
+    int ntr = 0;
+    if (whirl_cont_start(c, X, p, dir) == 0) {
+      while (whirl_cont_step(c) == WHIRL_OK) {
+        const whirl_point *pt = whirl_cont_point(c);
+        if (pt->type != WHIRL_PT_TR) continue;
+        ++ntr;
+        const double w = pt->p[0], wt = want[dir > 0];
+        is_abs(w, wt, 1e-8, "torus point TR at omega = 1 %c sqrt(0.47) = %.10f",
+               dir > 0 ? '+' : '-', wt);
+        is_abs(hypot(pt->x[1], pt->x[2]) * hypot(pt->x[1], pt->x[2]), 0.5, 1e-8,
+               "TR on the circle r^2 = a/2");
+        double ang = INFINITY;
+        for (size_t k = 0; k < pt->nspec; ++k)
+          if (pt->spec_im[k] > 0) ang = atan2(pt->spec_im[k], pt->spec_re[k]);
+        const double wa = fmod(2 * M_PI * beta / w, 2 * M_PI);
+        const double wrap = fmin(fabs(ang - wa), fabs(fabs(ang - wa) - 2 * M_PI));
+        ok(wrap < 1e-6 || fabs(ang + wa - 2 * M_PI) < 1e-6,
+           "TR multipliers exp(+-2 pi i beta/omega): angle %.8f vs %.8f", ang, wa);
+      }
+    }
+    ok(ntr == 1, "exactly one TR going %s (%d)", dir > 0 ? "up" : "down", ntr);
+    whirl_cont_free(c);
+  }
+  whirl_hbm_free(h);
+  free(X);
+}
+
 static void test_bad(void) {
   whirl_hbm_options o;
   whirl_hbm_options_default(&o);
@@ -357,6 +436,7 @@ int main(void) {
   test_sfd_circular();
   test_duffing();
   test_vdp();
+  test_torus();
   test_bad();
   return done_testing();
 }
