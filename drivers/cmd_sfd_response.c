@@ -22,7 +22,7 @@ static void help(FILE *f) {
   fprintf(f,
 "usage: whirl sfd response [options]\n"
 "\n"
-"All branches of synchronous circular orbits of the rigid rotor on two short\n"
+"All branches of synchronous orbits of the rigid rotor on two short\n"
 "squeeze-film dampers (pi-film), for omega-min <= Omega <= omega-max: the\n"
 "main resonance branch and any isolated branch (isola), found by seeding the\n"
 "continuation from every real root of the circular-orbit polynomial (paper\n"
@@ -34,8 +34,17 @@ static void help(FILE *f) {
 "  --delta D       unbalance delta = e_G/c >= 0        (0.3)\n"
 "  --zeta Z        external damping ratio zeta >= 0    (0)\n"
 "  --omega-max W   largest speed                       (20)\n"
-"  --omega-min M   smallest speed, 0 < M < W           (0.01)\n"
-"  --ds S          first continuation step             (0.02)\n"
+"  --omega-min M   smallest speed, 0 < M < W  (0.01; hbm/colloc 0.05)\n"
+"  --fe F          static force F_E (gravity not fully compensated by the\n"
+"                  centring springs; static deflection F_E) (0)\n"
+"  --method M      circular | hbm | colloc: circular orbits from the\n"
+"                  rotating-frame equilibria (F_E = 0 only; the default\n"
+"                  then), or fixed-frame periodic orbits by harmonic balance\n"
+"                  (default when F_E != 0) or by collocation\n"
+"  --harmonics N   HBM harmonics                       (8, the paper's)\n"
+"  --oversampling K  HBM: K (2N+1) time samples (AFT)  (10, the paper's)\n"
+"  --ntst N, --ncol C  collocation mesh                (40, 4)\n"
+"  --ds S          first continuation step  (0.02; hbm/colloc 0.01, the paper's)\n"
 "  --ds-max S      largest continuation step (DSMAX)   (0.2)\n"
 "  --sparse        use the sparse (UMFPACK) linear solver\n"
 "  --out DIR       output directory                    (sfd-response)\n"
@@ -46,14 +55,46 @@ static void help(FILE *f) {
 "outputs: DIR/branches.tsv (branch pt type label Omega eps phase u v stable\n"
 "n_unstable max_multiplier mu_re mu_im), DIR/special.tsv, DIR/response.png,\n"
 "DIR/multipliers.png.  stdout: the special points as TSV.  phase is beta of\n"
-"eqs. 16-17 (radians): the journal lags the unbalance by beta.\n");
+"eqs. 16-17 (radians): the journal lags the unbalance by beta.  With\n"
+"hbm/colloc, eps is the LARGEST eccentricity of the orbit (eps_min the\n"
+"smallest), stability comes from the monodromy matrix (variational\n"
+"equations), and branches.tsv adds eps_min, period and residual columns.\n");
 }
 
 typedef struct row {
-  int branch, pt, label, stable, nu;
+  int branch, pt, label, stable, nu, itype;
   const char *type;
   double Om, eps, phase, u, v, maxmult, mure, muim;
+  double eps_min, period, residual; /* periodic methods only */
 } row;
+
+/* The response as rows, whatever method produced it. */
+typedef struct tab {
+  size_t nbranch;
+  size_t *len;
+  row **rows;
+  int *isola;
+  int *stop;
+} tab;
+
+static void tab_free(tab *t) {
+  for (size_t b = 0; b < t->nbranch; ++b) free(t->rows[b]);
+  free(t->rows);
+  free(t->len);
+  free(t->isola);
+  free(t->stop);
+  memset(t, 0, sizeof *t);
+}
+
+static int tab_alloc(tab *t, size_t nbranch) {
+  memset(t, 0, sizeof *t);
+  t->nbranch = nbranch;
+  t->len = calloc(nbranch + 1, sizeof *t->len);
+  t->rows = calloc(nbranch + 1, sizeof *t->rows);
+  t->isola = calloc(nbranch + 1, sizeof *t->isola);
+  t->stop = calloc(nbranch + 1, sizeof *t->stop);
+  return t->len && t->rows && t->isola && t->stop ? 0 : -1;
+}
 
 static row make_row(const whirl_branch *b, size_t i) {
   const whirl_branch_point *q = &b->pts[i];
@@ -72,7 +113,65 @@ static row make_row(const whirl_branch *b, size_t i) {
   r.mure = b->nspec ? q->spec_re[0] : NAN;
   r.muim = b->nspec ? fabs(q->spec_im[0]) : NAN;
   r.maxmult = exp(2.0 * M_PI * r.mure / r.Om);
+  r.itype = q->type;
+  r.eps_min = r.eps;
+  r.period = 2.0 * M_PI / r.Om;
+  r.residual = NAN;
   return r;
+}
+
+static int tab_from_circular(tab *t, const whirl_sfd_response *res,
+                             double omega_min) {
+  if (tab_alloc(t, res->nbranch)) return -1;
+  for (size_t b = 0; b < res->nbranch; ++b) {
+    const whirl_branch *br = res->branch[b];
+    t->rows[b] = malloc((br->len + 1) * sizeof *t->rows[b]);
+    if (!t->rows[b]) return -1;
+    t->len[b] = br->len;
+    double lo = INFINITY;
+    for (size_t i = 0; i < br->len; ++i) {
+      t->rows[b][i] = make_row(br, i);
+      lo = fmin(lo, t->rows[b][i].Om);
+    }
+    t->isola[b] = !(lo <= omega_min * (1 + 1e-12));
+    t->stop[b] = br->stop_reason;
+  }
+  return 0;
+}
+
+static int tab_from_periodic(tab *t, const whirl_sfd_periodic *res) {
+  if (tab_alloc(t, res->nbranch)) return -1;
+  for (size_t b = 0; b < res->nbranch; ++b) {
+    const whirl_sfd_periodic_branch *br = &res->br[b];
+    t->rows[b] = malloc((br->len + 1) * sizeof *t->rows[b]);
+    if (!t->rows[b]) return -1;
+    t->len[b] = br->len;
+    t->isola[b] = br->isola;
+    t->stop[b] = br->stop_reason;
+    for (size_t i = 0; i < br->len; ++i) {
+      const whirl_sfd_orbit *q = &br->pts[i];
+      row *r = &t->rows[b][i];
+      r->branch = br->id;
+      r->pt = (int)i;
+      r->label = q->label;
+      r->itype = q->type;
+      r->type = whirl_point_type_name(q->type);
+      r->stable = q->stable;
+      r->nu = q->n_unstable;
+      r->Om = q->Omega;
+      r->eps = q->eps_max;
+      r->eps_min = q->eps_min;
+      r->phase = q->phase;
+      r->u = q->a1;
+      r->v = -q->b1;
+      r->maxmult = q->max_mult;
+      r->mure = q->mult_re;
+      r->muim = q->mult_im;
+      r->period = q->period;
+      r->residual = q->residual;
+    }
+  }
+  return 0;
 }
 
 static int is_special(int type) { return type != WHIRL_PT_REGULAR; }
@@ -84,6 +183,8 @@ static void print_special_header(FILE *f) {
 static void print_special(FILE *f, const row *r, int type) {
   const char *ff = type == WHIRL_PT_LP   ? "saddle-node of the synchronous orbit"
                    : type == WHIRL_PT_HB ? "Neimark-Sacker (torus, TR) of the orbit"
+                   : type == WHIRL_PT_TR ? "Neimark-Sacker (torus, TR) of the orbit"
+                   : type == WHIRL_PT_PD ? "period doubling of the orbit"
                    : type == WHIRL_PT_BP ? "branch point"
                                          : "end of the branch";
   fprintf(f, "%s\t%d\t%d\t%.15g\t%.15g\t%.15g\t%d\t%.10g\t%s\n", r->type, r->branch,
@@ -92,8 +193,8 @@ static void print_special(FILE *f, const row *r, int type) {
 
 /* Gnuplot script for ε against Ω: stable solid, unstable dashed, LP marked,
  * red dashed region borders at the LPs (Fig. 3). */
-static int write_response_gp(const char *dir, const whirl_sfd_response *res,
-                             const double *p, double wmax) {
+static int write_response_gp(const char *dir, const tab *res,
+                             const double *p, double wmax, const char *ylab) {
   out_file o;
   if (out_open(&o, dir, "response.gp")) return -1;
   FILE *f = o.fp;
@@ -105,18 +206,14 @@ static int write_response_gp(const char *dir, const whirl_sfd_response *res,
   for (int pass = 0; pass < 2; ++pass) {
     fprintf(f, "$%s << EOD\n", pass == 0 ? "stable" : "unstable");
     for (size_t b = 0; b < res->nbranch; ++b) {
-      const whirl_branch *br = res->branch[b];
+      const row *br = res->rows[b];
       int open = 0;
-      for (size_t i = 0; i < br->len; ++i) {
-        int st = br->pts[i].stable == 1;
+      for (size_t i = 0; i < res->len[b]; ++i) {
+        int st = br[i].stable == 1;
         int want = pass == 0;
         if (st == want) {
-          if (!open && i > 0) {
-            row r = make_row(br, i - 1);
-            fprintf(f, "%.8g %.8g\n", r.Om, r.eps);
-          }
-          row r = make_row(br, i);
-          fprintf(f, "%.8g %.8g\n", r.Om, r.eps);
+          if (!open && i > 0) fprintf(f, "%.8g %.8g\n", br[i - 1].Om, br[i - 1].eps);
+          fprintf(f, "%.8g %.8g\n", br[i].Om, br[i].eps);
           open = 1;
         } else if (open) {
           fprintf(f, "\n");
@@ -129,11 +226,11 @@ static int write_response_gp(const char *dir, const whirl_sfd_response *res,
   }
   fprintf(f, "$special << EOD\n0 -1\n");
   for (size_t b = 0; b < res->nbranch; ++b)
-    for (size_t i = 0; i < res->branch[b]->len; ++i)
-      if (res->branch[b]->pts[i].type == WHIRL_PT_LP) {
-        row r = make_row(res->branch[b], i);
-        fprintf(f, "%.10g %.10g\n", r.Om, r.eps);
-        if (nlp < 64) lp[nlp++] = r.Om;
+    for (size_t i = 0; i < res->len[b]; ++i)
+      if (res->rows[b][i].itype == WHIRL_PT_LP) {
+        const row *r = &res->rows[b][i];
+        fprintf(f, "%.10g %.10g\n", r->Om, r->eps);
+        if (nlp < 64) lp[nlp++] = r->Om;
       }
   fprintf(f, "EOD\n");
   /* sort LP speeds for the region borders */
@@ -154,19 +251,21 @@ static int write_response_gp(const char *dir, const whirl_sfd_response *res,
               'A' + i, xs[i]);
   }
   fprintf(f,
-          "set title 'SFD rigid rotor, circular orbits: {/Symbol l} = %g, {/Symbol d} = %g, {/Symbol z} = %g'\n"
+          "set title 'SFD rigid rotor, %s: {/Symbol l} = %g, {/Symbol d} = %g, {/Symbol z} = %g, F_E = %g'\n"
           "set xlabel 'dimensionless speed {/Symbol W}'\n"
-          "set ylabel 'relative eccentricity {/Symbol e}'\n"
+          "set ylabel '%s'\n"
           "set xrange [0:%g]\nset yrange [0:1]\nset grid\nset key bottom right box opaque\n"
           "plot $stable using 1:2 with lines lw 2.5 lc rgb '#1f4e9c' title 'stable', \\\n"
           "     $unstable using 1:2 with lines dt 2 lw 2.5 lc rgb '#1f4e9c' title 'unstable', \\\n"
           "     $special using 1:2 with points pt 7 ps 1.6 lc rgb '#2ca02c' title 'LP (saddle-node)'\n",
-          p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA], wmax);
+          p[WHIRL_SFD_FE] == 0.0 ? "circular orbits" : "synchronous orbits",
+          p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA], p[WHIRL_SFD_FE],
+          ylab, wmax);
   return out_commit(&o);
 }
 
 /* Gnuplot script for the largest Floquet multiplier modulus (Figs. 4-5). */
-static int write_multipliers_gp(const char *dir, const whirl_sfd_response *res,
+static int write_multipliers_gp(const char *dir, const tab *res,
                                 double wmax) {
   out_file o;
   if (out_open(&o, dir, "multipliers.gp")) return -1;
@@ -176,14 +275,12 @@ static int write_multipliers_gp(const char *dir, const whirl_sfd_response *res,
   fprintf(f, "set output '.multipliers.png.tmp'\n");
   for (size_t b = 0; b < res->nbranch; ++b) {
     fprintf(f, "$b%zu << EOD\n", b + 1);
-    for (size_t i = 0; i < res->branch[b]->len; ++i) {
-      row r = make_row(res->branch[b], i);
-      fprintf(f, "%.8g %.8g\n", r.Om, r.maxmult);
-    }
+    for (size_t i = 0; i < res->len[b]; ++i)
+      fprintf(f, "%.8g %.8g\n", res->rows[b][i].Om, res->rows[b][i].maxmult);
     fprintf(f, "EOD\n");
   }
   fprintf(f,
-          "set title 'largest Floquet multiplier modulus of the circular orbits'\n"
+          "set title 'largest Floquet multiplier modulus of the synchronous orbits'\n"
           "set xlabel 'dimensionless speed {/Symbol W}'\nset ylabel 'max |{/Symbol r}|'\n"
           "set xrange [0:%g]\nset logscale y\nset grid\nset key top right box opaque\n"
           "set arrow from graph 0, first 1 to graph 1, first 1 nohead dt 2 lw 1.5 lc rgb '#d62728'\n"
@@ -195,59 +292,87 @@ static int write_multipliers_gp(const char *dir, const whirl_sfd_response *res,
   return out_commit(&o);
 }
 
+/* Is the ds option given explicitly?  (Its default differs by method.) */
+static int has_option(int argc, char **argv, const char *name) {
+  const size_t n = strlen(name);
+  for (int i = 1; i < argc; ++i)
+    if (!strncmp(argv[i], name, n) && (argv[i][n] == '\0' || argv[i][n] == '='))
+      return 1;
+  return 0;
+}
+
 int cmd_sfd_response(int argc, char **argv) {
   double p[WHIRL_SFD_NPAR];
   whirl_sfd_default_params(p);
   whirl_sfd_response_options o;
   whirl_sfd_response_options_default(&o);
-  const char *dir = "sfd-response";
-  int plot = 1, quiet = 0;
-
-  for (int i = 1; i < argc; ++i) {
-    int missing = 0;
-    const char *v;
-    struct { const char *name; double *dst; } dopts[] = {
-        {"--lambda", &p[WHIRL_SFD_LAMBDA]}, {"--delta", &p[WHIRL_SFD_DELTA]},
-        {"--zeta", &p[WHIRL_SFD_ZETA]},     {"--omega-max", &o.omega_max},
-        {"--omega-min", &o.omega_min},      {"--ds-max", &o.ds_max},
-        {"--ds", &o.ds}};
-    int matched = 0;
-    for (size_t k = 0; k < sizeof dopts / sizeof dopts[0] && !matched; ++k) {
-      v = cli_value(argc, argv, &i, dopts[k].name, &missing);
-      if (missing) {
-        cli_error(CMD, "option %s needs a value", dopts[k].name);
-        return 2;
-      }
-      if (v) {
-        if (cli_double(CMD, dopts[k].name, v, dopts[k].dst)) return 2;
-        matched = 1;
-      }
-    }
-    if (matched) continue;
-    v = cli_value(argc, argv, &i, "--out", &missing);
-    if (missing) {
-      cli_error(CMD, "option --out needs a value");
-      return 2;
-    }
-    if (v) {
-      if (!*v) {
-        cli_error(CMD, "--out needs a non-empty directory name");
-        return 2;
-      }
-      dir = v;
-      continue;
-    }
-    if (!strcmp(argv[i], "--sparse")) o.linsol = WHIRL_LINSOL_SPARSE;
-    else if (!strcmp(argv[i], "--no-plot")) plot = 0;
-    else if (!strcmp(argv[i], "--quiet")) quiet = 1;
-    else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-      help(stdout);
-      return 0;
-    } else {
-      cli_error(CMD, "unknown option '%s' (see whirl sfd response --help)", argv[i]);
+  whirl_sfd_periodic_options po;
+  whirl_sfd_periodic_options_default(&po);
+  const char *dir = "sfd-response", *method_name = NULL;
+  int plot = 1, quiet = 0, sparse = 0, noplot = 0;
+  double omega_min = NAN;
+  const cli_opt opts[] = {
+      {"--lambda", CLI_DOUBLE, &p[WHIRL_SFD_LAMBDA]},
+      {"--delta", CLI_DOUBLE, &p[WHIRL_SFD_DELTA]},
+      {"--zeta", CLI_DOUBLE, &p[WHIRL_SFD_ZETA]},
+      {"--fe", CLI_DOUBLE, &p[WHIRL_SFD_FE]},
+      {"--omega-max", CLI_DOUBLE, &o.omega_max},
+      {"--omega-min", CLI_DOUBLE, &omega_min},
+      {"--ds-max", CLI_DOUBLE, &o.ds_max},
+      {"--ds", CLI_DOUBLE, &o.ds},
+      {"--method", CLI_STRING, &method_name},
+      {"--harmonics", CLI_SIZE, &po.harmonics},
+      {"--oversampling", CLI_SIZE, &po.oversampling},
+      {"--ntst", CLI_SIZE, &po.ntst},
+      {"--ncol", CLI_SIZE, &po.ncol},
+      {"--sparse", CLI_FLAG, &sparse},
+      {"--out", CLI_STRING, &dir},
+      {"--no-plot", CLI_FLAG, &noplot},
+      {"--quiet", CLI_FLAG, &quiet}};
+  int prc = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+  if (prc) return prc == 1 ? 0 : 2;
+  plot = !noplot;
+  int method = p[WHIRL_SFD_FE] != 0.0 ? WHIRL_SFD_METHOD_HBM : WHIRL_SFD_METHOD_CIRCULAR;
+  if (method_name) {
+    if (!strcmp(method_name, "circular")) method = WHIRL_SFD_METHOD_CIRCULAR;
+    else if (!strcmp(method_name, "hbm")) method = WHIRL_SFD_METHOD_HBM;
+    else if (!strcmp(method_name, "colloc")) method = WHIRL_SFD_METHOD_COLLOC;
+    else {
+      cli_error(CMD, "--method must be circular, hbm or colloc (got '%s')", method_name);
       return 2;
     }
   }
+  const int periodic = method != WHIRL_SFD_METHOD_CIRCULAR;
+  if (!periodic && p[WHIRL_SFD_FE] != 0.0) {
+    cli_error(CMD, "--method circular needs --fe 0: with F_E = %g the orbits are not "
+                   "circular (use --method hbm or colloc)", p[WHIRL_SFD_FE]);
+    return 2;
+  }
+  if (!isfinite(p[WHIRL_SFD_FE])) {
+    cli_error(CMD, "--fe must be finite");
+    return 2;
+  }
+  if (fabs(p[WHIRL_SFD_FE]) >= 1.0) {
+    cli_error(CMD, "--fe %g: the static deflection |F_E| >= 1 puts the journal on the "
+                   "housing (|F_E| < 1 needed)", p[WHIRL_SFD_FE]);
+    return 2;
+  }
+  if (!has_option(argc, argv, "--ds") && periodic) o.ds = po.ds;
+  if (!(omega_min == omega_min)) omega_min = periodic ? po.omega_min : o.omega_min;
+  o.omega_min = omega_min;
+  if (periodic && (po.harmonics < 1 || po.harmonics > 200)) {
+    cli_error(CMD, "--harmonics must be in 1..200 (got %zu)", po.harmonics);
+    return 2;
+  }
+  if (periodic && (po.oversampling < 1 || po.oversampling > 100)) {
+    cli_error(CMD, "--oversampling must be in 1..100 (got %zu)", po.oversampling);
+    return 2;
+  }
+  if (periodic && (po.ntst < 2 || po.ncol < 2 || po.ncol > 7)) {
+    cli_error(CMD, "need --ntst >= 2 and 2 <= --ncol <= 7 (got %zu, %zu)", po.ntst, po.ncol);
+    return 2;
+  }
+  if (sparse) o.linsol = WHIRL_LINSOL_SPARSE;
   /* parameters are checked before anything is computed or written */
   char msg[512];
   p[WHIRL_SFD_OMEGA] = o.omega_max;
@@ -264,71 +389,113 @@ int cmd_sfd_response(int argc, char **argv) {
     cli_error(CMD, "need 0 < --ds <= --ds-max (got %g and %g)", o.ds, o.ds_max);
     return 2;
   }
+  po.method = method;
+  po.omega_min = o.omega_min;
+  po.omega_max = o.omega_max;
+  po.ds = o.ds;
+  po.ds_max = o.ds_max;
+  po.linsol = o.linsol;
 
   struct timespec t0, t1;
   clock_gettime(CLOCK_MONOTONIC, &t0);
   whirl_sfd_response res;
-  int rc = whirl_sfd_response_compute(p, &o, &res, msg, sizeof msg);
+  whirl_sfd_periodic pres;
+  memset(&res, 0, sizeof res);
+  memset(&pres, 0, sizeof pres);
+  int rc = periodic ? whirl_sfd_periodic_response(p, &po, &pres, msg, sizeof msg)
+                    : whirl_sfd_response_compute(p, &o, &res, msg, sizeof msg);
   clock_gettime(CLOCK_MONOTONIC, &t1);
   if (rc != WHIRL_OK) {
     cli_error(CMD, "%s", msg);
     return 1;
   }
   const double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+  tab T;
+  if (periodic ? tab_from_periodic(&T, &pres) : tab_from_circular(&T, &res, o.omega_min)) {
+    cli_error(CMD, "out of memory");
+    tab_free(&T);
+    whirl_sfd_response_free(&res);
+    whirl_sfd_periodic_free(&pres);
+    return 1;
+  }
+  const size_t steps = periodic ? pres.steps : res.steps;
+  const size_t newton_its = periodic ? pres.newton_its : res.newton_its;
+  whirl_sfd_response_free(&res);
+  whirl_sfd_periodic_free(&pres);
 
   if (cli_mkdirs(dir)) {
     cli_error(CMD, "cannot create output directory '%s': %s", dir, strerror(errno));
-    whirl_sfd_response_free(&res);
+    tab_free(&T);
     return 1;
   }
   out_file fb, fs;
   if (out_open(&fb, dir, "branches.tsv")) {
     cli_error(CMD, "cannot write %s/branches.tsv: %s", dir, strerror(errno));
-    whirl_sfd_response_free(&res);
+    tab_free(&T);
     return 1;
   }
   if (out_open(&fs, dir, "special.tsv")) {
     cli_error(CMD, "cannot write %s/special.tsv: %s", dir, strerror(errno));
     out_abort(&fb);
-    whirl_sfd_response_free(&res);
+    tab_free(&T);
     return 1;
   }
-  fprintf(fb.fp, "# whirl %s sfd response: lambda=%.10g delta=%.10g zeta=%.10g Omega in [%g, %g]\n",
+  fprintf(fb.fp, "# whirl %s sfd response: lambda=%.10g delta=%.10g zeta=%.10g FE=%.10g "
+                 "Omega in [%g, %g], method %s",
           whirl_version(), p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA],
-          o.omega_min, o.omega_max);
-  fprintf(fb.fp, "# eps = orbit radius / clearance; phase = beta of eqs. 16-17 (rad); "
-                 "max_multiplier = max |exp(2 pi mu / Omega)|; mu = rotating-frame eigenvalue "
-                 "of largest real part\n");
-  fprintf(fb.fp, "branch\tpt\ttype\tlabel\tOmega\teps\tphase\tu\tv\tstable\tn_unstable\t"
-                 "max_multiplier\tmu_re\tmu_im\n");
+          p[WHIRL_SFD_FE], o.omega_min, o.omega_max, whirl_sfd_method_name(method));
+  if (method == WHIRL_SFD_METHOD_HBM)
+    fprintf(fb.fp, " (%zu harmonics, oversampling %zu, %zu unknowns)", po.harmonics,
+            po.oversampling, pres.unknowns ? pres.unknowns : 4 * (2 * po.harmonics + 1));
+  else if (method == WHIRL_SFD_METHOD_COLLOC)
+    fprintf(fb.fp, " (NTST %zu, NCOL %zu)", po.ntst, po.ncol);
+  fprintf(fb.fp, "\n");
+  if (periodic) {
+    fprintf(fb.fp, "# fixed-frame periodic orbits: eps = LARGEST eccentricity |(y, z)| on the "
+                   "orbit / clearance, eps_min the smallest; phase = angle by which the first "
+                   "harmonic of y lags the unbalance (rad); u, v = first harmonic of y "
+                   "(y1 = u cos Omega t - v sin Omega t); multipliers from the monodromy matrix "
+                   "(variational equations); mult = the multiplier of largest modulus; "
+                   "residual = max |F| of the discretised equations\n");
+    fprintf(fb.fp, "branch\tpt\ttype\tlabel\tOmega\teps\tphase\tu\tv\tstable\tn_unstable\t"
+                   "max_multiplier\tmult_re\tmult_im\teps_min\tperiod\tresidual\n");
+  } else {
+    fprintf(fb.fp, "# eps = orbit radius / clearance; phase = beta of eqs. 16-17 (rad); "
+                   "max_multiplier = max |exp(2 pi mu / Omega)|; mu = rotating-frame eigenvalue "
+                   "of largest real part\n");
+    fprintf(fb.fp, "branch\tpt\ttype\tlabel\tOmega\teps\tphase\tu\tv\tstable\tn_unstable\t"
+                   "max_multiplier\tmu_re\tmu_im\n");
+  }
   print_special_header(fs.fp);
   print_special_header(stdout);
-  size_t counts[6] = {0};
-  for (size_t b = 0; b < res.nbranch; ++b) {
-    const whirl_branch *br = res.branch[b];
-    for (size_t i = 0; i < br->len; ++i) {
-      row r = make_row(br, i);
-      fprintf(fb.fp, "%d\t%d\t%s\t%d\t%.10e\t%.10e\t%.10e\t%.10e\t%.10e\t%d\t%d\t%.10e\t%.10e\t%.10e\n",
-              r.branch, r.pt, br->pts[i].type ? r.type : "-", r.label, r.Om, r.eps, r.phase, r.u,
-              r.v, r.stable, r.nu, r.maxmult, r.mure, r.muim);
-      int type = br->pts[i].type;
-      if (is_special(type)) {
-        print_special(fs.fp, &r, type);
-        print_special(stdout, &r, type);
-        if (type >= 0 && type < 6) ++counts[type];
+  size_t counts[8] = {0};
+  for (size_t b = 0; b < T.nbranch; ++b) {
+    for (size_t i = 0; i < T.len[b]; ++i) {
+      const row *r = &T.rows[b][i];
+      fprintf(fb.fp, "%d\t%d\t%s\t%d\t%.10e\t%.10e\t%.10e\t%.10e\t%.10e\t%d\t%d\t%.10e\t%.10e\t%.10e",
+              r->branch, r->pt, r->itype ? r->type : "-", r->label, r->Om, r->eps, r->phase,
+              r->u, r->v, r->stable, r->nu, r->maxmult, r->mure, r->muim);
+      if (periodic) fprintf(fb.fp, "\t%.10e\t%.10e\t%.3e", r->eps_min, r->period, r->residual);
+      fprintf(fb.fp, "\n");
+      if (is_special(r->itype)) {
+        print_special(fs.fp, r, r->itype);
+        print_special(stdout, r, r->itype);
+        if (r->itype >= 0 && r->itype < 8) ++counts[r->itype];
       }
     }
-    if (b + 1 < res.nbranch) fprintf(fb.fp, "\n\n");
+    if (b + 1 < T.nbranch) fprintf(fb.fp, "\n\n");
   }
   if (out_commit(&fb) || out_commit(&fs)) {
     cli_error(CMD, "writing the tables in '%s' failed: %s", dir, strerror(errno));
-    whirl_sfd_response_free(&res);
+    tab_free(&T);
     return 1;
   }
   int status = 0;
   if (plot) {
-    if (write_response_gp(dir, &res, p, o.omega_max) ||
-        write_multipliers_gp(dir, &res, o.omega_max)) {
+    const char *ylab = periodic ? "largest eccentricity {/Symbol e}_{max}"
+                                : "relative eccentricity {/Symbol e}";
+    if (write_response_gp(dir, &T, p, o.omega_max, ylab) ||
+        write_multipliers_gp(dir, &T, o.omega_max)) {
       cli_error(CMD, "cannot write the gnuplot scripts in '%s': %s", dir, strerror(errno));
       status = 1;
     } else if (cli_plot(dir, "response", msg, sizeof msg) ||
@@ -338,29 +505,32 @@ int cmd_sfd_response(int argc, char **argv) {
     }
   }
   if (!quiet) {
-    fprintf(stderr, "whirl sfd response: %zu branch%s of circular orbits for %g <= Omega <= %g "
-                    "(lambda=%g delta=%g zeta=%g)\n",
-            res.nbranch, res.nbranch == 1 ? "" : "es", o.omega_min, o.omega_max,
-            p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA]);
-    for (size_t b = 0; b < res.nbranch; ++b) {
-      const whirl_branch *br = res.branch[b];
-      double lo = INFINITY, hi = -INFINITY;
-      for (size_t i = 0; i < br->len; ++i) {
-        lo = fmin(lo, br->pts[i].p[WHIRL_SFD_OMEGA]);
-        hi = fmax(hi, br->pts[i].p[WHIRL_SFD_OMEGA]);
+    fprintf(stderr, "whirl sfd response: %zu branch%s of %s orbits for %g <= Omega <= %g "
+                    "(lambda=%g delta=%g zeta=%g FE=%g), method %s\n",
+            T.nbranch, T.nbranch == 1 ? "" : "es", periodic ? "synchronous" : "circular",
+            o.omega_min, o.omega_max, p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA],
+            p[WHIRL_SFD_ZETA], p[WHIRL_SFD_FE], whirl_sfd_method_name(method));
+    for (size_t b = 0; b < T.nbranch; ++b) {
+      double lo = INFINITY, hi = -INFINITY, res_max = 0;
+      for (size_t i = 0; i < T.len[b]; ++i) {
+        lo = fmin(lo, T.rows[b][i].Om);
+        hi = fmax(hi, T.rows[b][i].Om);
+        if (periodic) res_max = fmax(res_max, T.rows[b][i].residual);
       }
-      int main_branch = lo <= o.omega_min * (1 + 1e-12);
-      fprintf(stderr, "  branch %d: %zu points, Omega in [%.6g, %.6g], %s; ended: %s\n", br->id,
-              br->len, lo, hi, main_branch ? "reaches omega-min (main resonance branch)" :
-              "isolated branch (isola)", whirl_stop_reason_name(br->stop_reason));
+      fprintf(stderr, "  branch %d: %zu points, Omega in [%.6g, %.6g], %s; ended: %s", b + 1 > 0 ? (int)(b + 1) : 0,
+              T.len[b], lo, hi, !T.isola[b] ? "reaches omega-min (main resonance branch)" :
+              "isolated branch (isola)", whirl_stop_reason_name(T.stop[b]));
+      if (periodic) fprintf(stderr, "; max residual %.1e", res_max);
+      fprintf(stderr, "\n");
     }
-    fprintf(stderr, "  special points: %zu LP, %zu BP, %zu HB; %zu seeds from eq. 15; "
+    fprintf(stderr, "  special points: %zu LP, %zu BP, %zu %s, %zu PD; "
                     "%zu steps, %zu Newton iterations; %.2f ms\n",
-            counts[WHIRL_PT_LP], counts[WHIRL_PT_BP], counts[WHIRL_PT_HB], res.nseeds, res.steps,
-            res.newton_its, 1e3 * secs);
+            counts[WHIRL_PT_LP], counts[WHIRL_PT_BP],
+            counts[WHIRL_PT_HB] + counts[WHIRL_PT_TR], periodic ? "TR" : "HB",
+            counts[WHIRL_PT_PD], steps, newton_its, 1e3 * secs);
     fprintf(stderr, "  wrote %s/branches.tsv, %s/special.tsv%s\n", dir, dir,
             plot && !status ? ", response.png, multipliers.png" : "");
   }
-  whirl_sfd_response_free(&res);
+  tab_free(&T);
   return status;
 }

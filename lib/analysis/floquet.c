@@ -1,8 +1,15 @@
 /* lib/analysis/floquet.c — Floquet multipliers from the monodromy matrix
  * (variational equations, lib/ode/variational.c; paper eq. 24; Seydel,
  * Practical Bifurcation and Stability Analysis, §7.1).  For an autonomous
- * orbit one multiplier is 1 in exact arithmetic; the one nearest to 1 is left
- * out and its distance to 1 reported as a check of the orbit's accuracy.
+ * orbit one multiplier is 1 in exact arithmetic.  It is not simply dropped
+ * from the eigenvalues of M: when the orbit comes from a truncated
+ * discretisation (harmonic balance) the trivial multiplier and a critical
+ * one near a fold pair up into a spurious complex pair.  Instead the n − 1
+ * nontrivial multipliers are the eigenvalues of the linearised Poincaré map
+ * on the section h·(x − x0) = 0, h = f(x0) (Seydel §7.2):
+ *   DP = Vᵀ (I − f(x_T) hᵀ / (hᵀ f(x_T))) M V,
+ * V an orthonormal basis of h's orthogonal complement.  The distance of M's
+ * eigenvalue nearest to 1 from 1 is reported as a check of the orbit.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdio.h>
@@ -12,6 +19,66 @@
 #include <whirl/floquet.h>
 #include <whirl/linsol.h>
 #include <whirl/ode.h>
+
+/* Multipliers of the Poincaré map on the section through x0 normal to
+ * f(x0): er[n-1], ei[n-1] sorted by decreasing modulus. */
+static int poincare_multipliers(const whirl_problem *prob, const double *p,
+                                double t0, const double *x0, const double *xT,
+                                const double *M, double *er, double *ei) {
+  const size_t n = prob->n, k = n - 1;
+  double *buf = malloc((4 * n + 3 * n * n) * sizeof *buf);
+  whirl_eig *eig = whirl_eig_alloc(k ? k : 1);
+  if (!buf || !eig) {
+    free(buf);
+    whirl_eig_free(eig);
+    return WHIRL_ENOMEM;
+  }
+  double *h = buf, *fT = h + n, *V = fT + n, *A = V + n * n, *B = A + n * n;
+  int rc = prob->rhs(t0, x0, p, h, prob->data);
+  if (rc == 0) rc = prob->rhs(t0, xT, p, fT, prob->data);
+  if (rc > 0) rc = WHIRL_EDOMAIN;
+  double hf = 0.0;
+  for (size_t i = 0; i < n; ++i) hf += h[i] * fT[i];
+  if (rc == 0 && !(fabs(hf) > 0)) rc = WHIRL_ESINGULAR; /* an equilibrium */
+  if (rc == 0) {
+    double sv[64];
+    double *svp = k <= 64 ? sv : malloc(k * sizeof *svp);
+    rc = svp ? whirl_null_vectors(1, n, h, k, V, svp) : WHIRL_ENOMEM;
+    if (svp != sv) free(svp);
+  }
+  if (rc == 0) {
+    /* A = (I − fT hᵀ / hf) M  (n x n) */
+    for (size_t j = 0; j < n; ++j) {
+      double hm = 0.0;
+      for (size_t i = 0; i < n; ++i) hm += h[i] * M[i + n * j];
+      for (size_t i = 0; i < n; ++i) A[i + n * j] = M[i + n * j] - fT[i] * hm / hf;
+    }
+    /* B = A V (n x k), then DP = Vᵀ B (k x k) stored in A */
+    for (size_t j = 0; j < k; ++j)
+      for (size_t i = 0; i < n; ++i) {
+        double s = 0.0;
+        for (size_t l = 0; l < n; ++l) s += A[i + n * l] * V[l + n * j];
+        B[i + n * j] = s;
+      }
+    for (size_t j = 0; j < k; ++j)
+      for (size_t i = 0; i < k; ++i) {
+        double s = 0.0;
+        for (size_t l = 0; l < n; ++l) s += V[l + n * i] * B[l + n * j];
+        A[i + k * j] = s;
+      }
+    rc = k ? whirl_eig_compute(eig, A, er, ei) : WHIRL_OK;
+  }
+  if (rc == 0)
+    for (size_t i = 1; i < k; ++i)
+      for (size_t j = i; j > 0 && hypot(er[j], ei[j]) > hypot(er[j - 1], ei[j - 1]); --j) {
+        double a = er[j], b = ei[j];
+        er[j] = er[j - 1], ei[j] = ei[j - 1];
+        er[j - 1] = a, ei[j - 1] = b;
+      }
+  whirl_eig_free(eig);
+  free(buf);
+  return rc;
+}
 
 int whirl_floquet_multipliers(const whirl_problem *prob, const double *p,
                               double t0, const double *x0, double T,
@@ -55,21 +122,20 @@ int whirl_floquet_multipliers(const whirl_problem *prob, const double *p,
         er[j] = er[j - 1], ei[j] = ei[j - 1];
         er[j - 1] = a, ei[j - 1] = b;
       }
-    size_t skip = n;
     if (drop_trivial) {
       double best = INFINITY;
-      for (size_t i = 0; i < n; ++i) {
-        double d = hypot(er[i] - 1.0, ei[i]);
-        if (d < best) best = d, skip = i;
-      }
+      for (size_t i = 0; i < n; ++i) best = fmin(best, hypot(er[i] - 1.0, ei[i]));
       if (trivial) *trivial = best;
-    } else if (trivial) {
-      *trivial = NAN;
+      rc = poincare_multipliers(prob, p, t0, x0, xT, Mm, er, ei);
+      if (rc == WHIRL_OK) {
+        for (size_t i = 0; i + 1 < n; ++i) re[i] = er[i], im[i] = ei[i];
+        *m = n - 1;
+      }
+    } else {
+      if (trivial) *trivial = NAN;
+      for (size_t i = 0; i < n; ++i) re[i] = er[i], im[i] = ei[i];
+      *m = n;
     }
-    size_t k = 0;
-    for (size_t i = 0; i < n; ++i)
-      if (i != skip) re[k] = er[i], im[k] = ei[i], ++k;
-    *m = k;
     if (M) memcpy(M, Mm, n * n * sizeof *M);
   } else if (errbuf && !errbuf[0]) {
     snprintf(errbuf, errlen, "Floquet multipliers: %s", whirl_strerror(rc));

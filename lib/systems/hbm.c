@@ -32,6 +32,8 @@ struct whirl_hbm {
   double *Js;           /* n*n Jacobian at one sample */
   double *G;            /* M*n*n Jacobian samples */
   double *Jd;           /* size*size dense Jacobian (sparse values gathered) */
+  double *ck, *sk;      /* cos kθ_j, sin kθ_j for k = 0..2N: ck[k*M + j] */
+  double *Cg, *Sg;      /* 2N+1: cosine and sine sums of one f_x entry */
   double *coef;         /* n*L unscaled coefficients */
   double *work;         /* 2n finite differences */
   int *Jp, *Ji;         /* compressed-column pattern */
@@ -124,22 +126,51 @@ static int hbm_Fx(const double *X, const double *p, double *J, void *data) {
     if (rc != 0) return rc;
   }
   memset(J, 0, S * S * sizeof *J);
-  double *col = h->fs; /* M scratch (fs is free here) */
+  /* Block (i, l) = −P diag(g(θ_j)) Bᵀ with g = ∂f_i/∂x_l.  With the sums
+   * C_k = (1/M) Σ_j g_j cos kθ_j, S_k = (1/M) Σ_j g_j sin kθ_j (k <= 2N),
+   * the product-to-sum identities give every entry exactly:
+   *   (1, 1) C_0; (1, cos m) C_m; (1, sin m) S_m; (cos k, 1) 2C_k;
+   *   (sin k, 1) 2S_k; (cos k, cos m) C_{k−m} + C_{k+m};
+   *   (cos k, sin m) S_{m+k} + S_{m−k}; (sin k, cos m) S_{k+m} + S_{k−m};
+   *   (sin k, sin m) C_{k−m} − C_{k+m}, with C_{−j} = C_j, S_{−j} = −S_j:
+   * O(N M) per block instead of O(N² M). */
+  const size_t N = h->N, K2 = 2 * N + 1;
   for (size_t l = 0; l < n; ++l)
     for (size_t i = 0; i < n; ++i) {
       if (!h->mask[i + n * l]) continue;
-      for (size_t j = 0; j < M; ++j) col[j] = h->G[j * n * n + i + n * l];
-      const double sc = h->scale[l] / h->scale[i];
-      for (size_t q2 = 0; q2 < L; ++q2) {
-        const double *Bq = h->B + q2 * M;
-        double *Jc = J + (l * L + q2) * S + i * L;
-        for (size_t q = 0; q < L; ++q) {
-          const double *Pq = h->P + q * M;
-          double s = 0.0;
-          for (size_t j = 0; j < M; ++j) s += Pq[j] * col[j] * Bq[j];
-          Jc[q] = -s * sc;
+      for (size_t k = 0; k < K2; ++k) {
+        const double *c = h->ck + k * M, *sn = h->sk + k * M;
+        double a = 0.0, b = 0.0;
+        for (size_t j = 0; j < M; ++j) {
+          const double g = h->G[j * n * n + i + n * l];
+          a += g * c[j];
+          b += g * sn[j];
         }
+        h->Cg[k] = a / (double)M;
+        h->Sg[k] = b / (double)M;
       }
+      const double *C = h->Cg, *Sv = h->Sg;
+      const double sc = -h->scale[l] / h->scale[i];
+#define HBM_C(d) (C[(d) < 0 ? -(d) : (d)])
+#define HBM_S(d) ((d) < 0 ? -Sv[-(d)] : Sv[(d)])
+#define HBM_J(q, q2) J[(l * L + (size_t)(q2)) * S + i * L + (size_t)(q)]
+      HBM_J(0, 0) = sc * C[0];
+      for (long m = 1; m <= (long)N; ++m) {
+        HBM_J(0, 2 * m - 1) = sc * C[m];
+        HBM_J(0, 2 * m) = sc * Sv[m];
+        HBM_J(2 * m - 1, 0) = sc * 2.0 * C[m];
+        HBM_J(2 * m, 0) = sc * 2.0 * Sv[m];
+      }
+      for (long k = 1; k <= (long)N; ++k)
+        for (long m = 1; m <= (long)N; ++m) {
+          HBM_J(2 * k - 1, 2 * m - 1) = sc * (HBM_C(k - m) + C[k + m]);
+          HBM_J(2 * k - 1, 2 * m) = sc * (Sv[m + k] + HBM_S(m - k));
+          HBM_J(2 * k, 2 * m - 1) = sc * (Sv[k + m] + HBM_S(k - m));
+          HBM_J(2 * k, 2 * m) = sc * (HBM_C(k - m) - C[k + m]);
+        }
+#undef HBM_C
+#undef HBM_S
+#undef HBM_J
     }
   for (size_t i = 0; i < n; ++i)
     for (size_t k = 1; k <= h->N; ++k) {
@@ -285,10 +316,15 @@ whirl_hbm *whirl_hbm_alloc(const whirl_problem *prob,
   h->G = malloc(M * n * n * sizeof *h->G);
   h->Js = malloc(n * n * sizeof *h->Js);
   h->Jd = malloc(S * S * sizeof *h->Jd);
+  h->ck = malloc((2 * N + 1) * M * sizeof *h->ck);
+  h->sk = malloc((2 * N + 1) * M * sizeof *h->sk);
+  h->Cg = malloc((2 * N + 1) * sizeof *h->Cg);
+  h->Sg = malloc((2 * N + 1) * sizeof *h->Sg);
   h->coef = malloc(n * L * sizeof *h->coef);
   h->work = malloc(2 * n * sizeof *h->work);
   if (!h->scale || !h->mask || !h->B || !h->P || !h->xs || !h->fs || !h->G ||
-      !h->Js || !h->Jd || !h->coef || !h->work) {
+      !h->Js || !h->Jd || !h->coef || !h->work || !h->ck || !h->sk || !h->Cg ||
+      !h->Sg) {
     whirl_hbm_free(h);
     return NULL;
   }
@@ -296,6 +332,13 @@ whirl_hbm *whirl_hbm_alloc(const whirl_problem *prob,
   for (size_t q = 0; q < n * n; ++q)
     h->mask[q] = opt && opt->fx_mask ? opt->fx_mask[q] != 0 : 1;
   for (size_t i = 0; i < n; ++i) h->mask[i + n * i] = 1;
+  for (size_t k = 0; k <= 2 * N; ++k)
+    for (size_t j = 0; j < M; ++j) {
+      /* exact reduction of kj mod M keeps the angles accurate */
+      const double th = 2.0 * M_PI * (double)((k * j) % M) / (double)M;
+      h->ck[k * M + j] = cos(th);
+      h->sk[k * M + j] = sin(th);
+    }
   for (size_t j = 0; j < M; ++j) {
     const double th = 2.0 * M_PI * (double)j / (double)M;
     h->B[j] = 1.0;
@@ -343,6 +386,10 @@ void whirl_hbm_free(whirl_hbm *h) {
   free(h->G);
   free(h->Js);
   free(h->Jd);
+  free(h->ck);
+  free(h->sk);
+  free(h->Cg);
+  free(h->Sg);
   free(h->coef);
   free(h->work);
   free(h->Jp);

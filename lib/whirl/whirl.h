@@ -17,4 +17,5 @@
 #include <whirl/floquet.h>
 #include <whirl/hbm.h>
 #include <whirl/colloc.h>
+#include <whirl/sfd_periodic.h>
 #endif

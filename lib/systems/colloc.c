@@ -1,0 +1,727 @@
+/* lib/systems/colloc.c — constructor: periodic orbits of an ODE model by
+ * orthogonal collocation at Gauss–Legendre points (de Boor & Swartz, SIAM J.
+ * Numer. Anal. 10 (1973) 582; Doedel, AUTO-07p manual ch. 10), as an
+ * algebraic problem F(X, p) = 0 for the continuation core, with a sparse
+ * analytic Jacobian, Floquet multipliers as its spectrum, and AUTO-style mesh
+ * adaptation (Russell & Christiansen 1978).
+ *
+ * Scaling: each collocation row is multiplied by its interval length h_i,
+ *   sum_k l_k'(σ_c) x_{i,k} − h_i T f(t0 + T τ_c, x(τ_c), p) = 0,
+ * with σ the local variable on [0, 1] and l_k the Lagrange basis on NCOL + 1
+ * equally spaced nodes, so the rows stay O(|x|) on every mesh.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/colloc.h>
+#include <whirl/floquet.h>
+
+#define COLLOC_PI 3.14159265358979323846
+#define COLLOC_MAXCOL 7
+
+struct whirl_colloc {
+  const whirl_problem *prob;
+  whirl_problem shim; /* prob seen through colloc_shim_*, for the multipliers */
+  whirl_system sys;
+  size_t n, ntst, ncol;
+  size_t nnodes; /* ntst*ncol + 1 */
+  size_t nx;     /* unknowns = equations */
+  size_t nnz;
+  int aut;  /* 1: period unknown, phase condition; 0: forced */
+  int fpar; /* forcing parameter (forced) or -1 */
+  unsigned nu;
+  double t0, floquet_rtol;
+
+  double *mesh; /* ntst + 1 */
+  /* Gauss points and weights on [0, 1]; Lagrange basis and its derivative
+   * at them, L[c*(ncol+1) + k] = l_k(σ_c), D likewise l_k'(σ_c); dm[k] the
+   * weights of the NCOL-th derivative in σ (NCOL^NCOL (−1)^{m−k} C(m, k)). */
+  double gs[COLLOC_MAXCOL], gw[COLLOC_MAXCOL];
+  double L[COLLOC_MAXCOL * (COLLOC_MAXCOL + 1)];
+  double D[COLLOC_MAXCOL * (COLLOC_MAXCOL + 1)];
+  double dm[COLLOC_MAXCOL + 1];
+
+  int *Jp, *Ji;  /* compressed-column pattern, nx + 1 and nnz */
+  double *Jx;    /* nnz, values for the dense callback */
+  double *ref;   /* nnodes*n, node values of the phase reference */
+  double *phase; /* nnodes*n, the phase row ∫ <x, x_ref'> as weights */
+  double phase0; /* <phase, ref>: 0 for a periodic reference, up to rounding */
+  int have_ref;
+
+  /* scratch (n, n, n, n, n*n, n*npar, 2n, npar, nx, nx) */
+  double *xc, *dx, *f, *f2, *J, *Jpar, *work, *pw, *r1, *r2;
+  double *old_mesh, *old_X; /* ntst + 1, nnodes*n: mesh adaptation */
+  double *ref_new;          /* nnodes*n */
+
+  int rhs_fail; /* last recoverable model failure seen by the shim */
+  char errmsg[256];
+};
+
+void whirl_colloc_options_default(whirl_colloc_options *o) {
+  memset(o, 0, sizeof *o);
+  o->ntst = 20;
+  o->ncol = 4;
+  o->forcing_param = -1;
+  o->nu = 1;
+  o->t0 = 0.0;
+  o->floquet_rtol = 1e-11;
+}
+
+/* ------------------------------------------------------------ basis */
+
+/* Gauss–Legendre points and weights on [0, 1] by Newton's method on the
+ * Legendre polynomial P_m (three-term recurrence), from the asymptotic
+ * guesses cos(π(k + 3/4)/(m + 1/2)); converged to rounding (~1e-16). */
+static void gauss_legendre(size_t m, double *s, double *w) {
+  for (size_t k = 0; k < m; ++k) {
+    double z = cos(COLLOC_PI * ((double)k + 0.75) / ((double)m + 0.5));
+    double dp = 1.0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1.0, p1 = z;
+      for (size_t j = 2; j <= m; ++j) {
+        double p2 =
+            ((2.0 * (double)j - 1.0) * z * p1 - ((double)j - 1.0) * p0) /
+            (double)j;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = (double)m * (z * p1 - p0) / (z * z - 1.0);
+      double dz = p1 / dp;
+      z -= dz;
+      if (fabs(dz) <= 1e-17) break;
+    }
+    {
+      /* derivative at the converged root, for the weight */
+      double p0 = 1.0, p1 = z;
+      for (size_t j = 2; j <= m; ++j) {
+        double p2 =
+            ((2.0 * (double)j - 1.0) * z * p1 - ((double)j - 1.0) * p0) /
+            (double)j;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = (double)m * (z * p1 - p0) / (z * z - 1.0);
+    }
+    /* roots come in decreasing z: σ = (1 − z)/2 is increasing */
+    s[k] = 0.5 * (1.0 - z);
+    w[k] = 1.0 / ((1.0 - z * z) * dp * dp); /* 2/((1−z²)P'²) halved */
+  }
+}
+
+/* Lagrange basis on the nodes k/m, k = 0..m, at σ: l[k] = l_k(σ) and, if
+ * dl is not NULL, dl[k] = l_k'(σ). */
+static void lagrange(size_t m, double sigma, double *l, double *dl) {
+  for (size_t k = 0; k <= m; ++k) {
+    const double sk = (double)k / (double)m;
+    double prod = 1.0, der = 0.0;
+    for (size_t j = 0; j <= m; ++j) {
+      if (j == k) continue;
+      const double sj = (double)j / (double)m;
+      prod *= (sigma - sj) / (sk - sj);
+    }
+    l[k] = prod;
+    if (!dl) continue;
+    for (size_t q = 0; q <= m; ++q) {
+      if (q == k) continue;
+      const double sq = (double)q / (double)m;
+      double term = 1.0 / (sk - sq);
+      for (size_t j = 0; j <= m; ++j) {
+        if (j == k || j == q) continue;
+        const double sj = (double)j / (double)m;
+        term *= (sigma - sj) / (sk - sj);
+      }
+      der += term;
+    }
+    dl[k] = der;
+  }
+}
+
+/* Interval of the mesh tau[0..ntst] containing t ∈ [0, 1] (bisection). */
+static size_t find_interval(const double *tau, size_t ntst, double t) {
+  size_t lo = 0, hi = ntst;
+  while (hi - lo > 1) {
+    size_t mid = (lo + hi) / 2;
+    if (t >= tau[mid])
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return lo;
+}
+
+/* The piecewise polynomial with mesh tau and node values Xn at τ (wrapped
+ * periodically into [0, 1]): x[n]. */
+static void eval_poly(size_t n, size_t ntst, size_t m, const double *tau,
+                      const double *Xn, double t, double *x) {
+  if (t < 0.0 || t > 1.0) t -= floor(t);
+  const size_t i = find_interval(tau, ntst, t);
+  const double h = tau[i + 1] - tau[i];
+  double l[COLLOC_MAXCOL + 1];
+  lagrange(m, (t - tau[i]) / h, l, NULL);
+  for (size_t r = 0; r < n; ++r) x[r] = 0.0;
+  for (size_t k = 0; k <= m; ++k) {
+    const double *xk = Xn + n * (i * m + k);
+    for (size_t r = 0; r < n; ++r) x[r] += l[k] * xk[r];
+  }
+}
+
+/* ------------------------------------------------------------ helpers */
+
+static double period_of(const whirl_colloc *c, const double *X,
+                        const double *p) {
+  if (c->aut) return X[c->nx - 1];
+  return 2.0 * COLLOC_PI * (double)c->nu / p[c->fpar];
+}
+
+/* x and dx/dσ of interval i at Gauss point g into c->xc, c->dx. */
+static void at_gauss(whirl_colloc *c, const double *X, size_t i, size_t g) {
+  const size_t n = c->n, m = c->ncol;
+  const double *l = c->L + g * (m + 1), *dl = c->D + g * (m + 1);
+  for (size_t r = 0; r < n; ++r) c->xc[r] = c->dx[r] = 0.0;
+  for (size_t k = 0; k <= m; ++k) {
+    const double *xk = X + n * (i * m + k);
+    for (size_t r = 0; r < n; ++r) {
+      c->xc[r] += l[k] * xk[r];
+      c->dx[r] += dl[k] * xk[r];
+    }
+  }
+}
+
+/* Phase reference from the node values Xn: x_ref' at the Gauss points and
+ * the phase row phase[j] = sum over the intervals holding node j of
+ * h_i sum_c w_c l_k(σ_c) x_ref'(τ_{i,c}), so that the quadrature of
+ * ∫ <x, x_ref'> dτ is <phase, X>. */
+static void set_reference(whirl_colloc *c, const double *Xn) {
+  const size_t n = c->n, m = c->ncol;
+  if (Xn != c->ref) memcpy(c->ref, Xn, c->nnodes * n * sizeof *c->ref);
+  memset(c->phase, 0, c->nnodes * n * sizeof *c->phase);
+  for (size_t i = 0; i < c->ntst; ++i) {
+    for (size_t g = 0; g < m; ++g) {
+      const double *dl = c->D + g * (m + 1), *l = c->L + g * (m + 1);
+      /* h x_ref'(τ) = dx_ref/dσ, so h_i w_c x_ref' = w_c dx_ref/dσ */
+      for (size_t r = 0; r < n; ++r) {
+        double d = 0.0;
+        for (size_t k = 0; k <= m; ++k)
+          d += dl[k] * c->ref[n * (i * m + k) + r];
+        c->dx[r] = c->gw[g] * d;
+      }
+      for (size_t k = 0; k <= m; ++k)
+        for (size_t r = 0; r < n; ++r)
+          c->phase[n * (i * m + k) + r] += l[k] * c->dx[r];
+    }
+  }
+  double s = 0.0;
+  for (size_t q = 0; q < c->nnodes * n; ++q) s += c->phase[q] * c->ref[q];
+  c->phase0 = s;
+  c->have_ref = 1;
+}
+
+/* The model's f_x at (t, x): analytic or central differences. */
+static int model_jac(whirl_colloc *c, double t, const double *x,
+                     const double *p) {
+  const whirl_problem *pr = c->prob;
+  if (pr->jac_x) return pr->jac_x(t, x, p, c->J, pr->data);
+  return whirl_fd_jac_x(pr, t, x, p, c->J, c->work);
+}
+
+/* ------------------------------------------------------------ system */
+
+static int colloc_F(const double *X, const double *p, double *F, void *data) {
+  whirl_colloc *c = data;
+  const whirl_problem *pr = c->prob;
+  const size_t n = c->n, m = c->ncol, N = c->ntst;
+  const double T = period_of(c, X, p);
+  for (size_t i = 0; i < N; ++i) {
+    const double h = c->mesh[i + 1] - c->mesh[i];
+    for (size_t g = 0; g < m; ++g) {
+      at_gauss(c, X, i, g);
+      const double tau = c->mesh[i] + h * c->gs[g];
+      int rc = pr->rhs(c->t0 + T * tau, c->xc, p, c->f, pr->data);
+      if (rc != 0) return rc;
+      double *Fr = F + n * (i * m + g);
+      for (size_t r = 0; r < n; ++r) Fr[r] = c->dx[r] - h * T * c->f[r];
+    }
+  }
+  /* periodicity x(1) − x(0) = 0 */
+  const double *x0 = X, *x1 = X + n * N * m;
+  for (size_t r = 0; r < n; ++r) F[n * N * m + r] = x1[r] - x0[r];
+  if (c->aut) {
+    /* <phase, X> summed as <phase, X − ref> + <phase, ref>: the terms are
+     * small near the reference, so the residual has little rounding */
+    double s = 0.0;
+    for (size_t q = 0; q < c->nnodes * n; ++q)
+      s += c->phase[q] * (X[q] - c->ref[q]);
+    F[c->nx - 1] = s + c->phase0;
+  }
+  return 0;
+}
+
+/* Sparse values in pattern order.  Entry (row R, column col) of a node
+ * column lies at Jp[col] + R − Ji[Jp[col]]: its collocation rows are one
+ * contiguous block. */
+static int colloc_Fx_sparse(const double *X, const double *p, double *Jx,
+                            void *data) {
+  whirl_colloc *c = data;
+  const whirl_problem *pr = c->prob;
+  const size_t n = c->n, m = c->ncol, N = c->ntst;
+  const double T = period_of(c, X, p);
+  const size_t colT = n * c->nnodes;
+  for (size_t i = 0; i < N; ++i) {
+    const double h = c->mesh[i + 1] - c->mesh[i];
+    for (size_t g = 0; g < m; ++g) {
+      at_gauss(c, X, i, g);
+      const double tau = c->mesh[i] + h * c->gs[g];
+      const double t = c->t0 + T * tau;
+      int rc = model_jac(c, t, c->xc, p);
+      if (rc != 0) return rc;
+      const size_t R0 = n * (i * m + g);
+      const double *l = c->L + g * (m + 1), *dl = c->D + g * (m + 1);
+      for (size_t k = 0; k <= m; ++k) {
+        const size_t j = i * m + k;
+        for (size_t q = 0; q < n; ++q) {
+          const size_t col = n * j + q;
+          double *v = Jx + (size_t)c->Jp[col] + R0 - (size_t)c->Ji[c->Jp[col]];
+          for (size_t r = 0; r < n; ++r)
+            v[r] = (r == q ? dl[k] : 0.0) - h * T * l[k] * c->J[r + n * q];
+        }
+      }
+      if (c->aut) {
+        /* dF/dT = −h (f + T τ ∂f/∂t); the time term only for a model not
+         * flagged autonomous (central difference in t) */
+        if ((rc = pr->rhs(t, c->xc, p, c->f, pr->data)) != 0) return rc;
+        double *v = Jx + (size_t)c->Jp[colT] + R0;
+        for (size_t r = 0; r < n; ++r) v[r] = -h * c->f[r];
+        if (!pr->autonomous) {
+          const double ht = cbrt(DBL_EPSILON) * fmax(1.0, fabs(t));
+          if ((rc = pr->rhs(t + ht, c->xc, p, c->f, pr->data)) != 0) return rc;
+          if ((rc = pr->rhs(t - ht, c->xc, p, c->f2, pr->data)) != 0) return rc;
+          const double s = -h * T * tau / (2.0 * ht);
+          for (size_t r = 0; r < n; ++r) v[r] += s * (c->f[r] - c->f2[r]);
+        }
+      }
+    }
+  }
+  /* periodicity: −1 in the columns of node 0, +1 in those of the last node;
+   * these entries follow the n*ncol collocation rows of the column */
+  for (size_t q = 0; q < n; ++q) {
+    Jx[(size_t)c->Jp[q] + n * m] = -1.0;
+    Jx[(size_t)c->Jp[n * N * m + q] + n * m] = 1.0;
+  }
+  if (c->aut)
+    for (size_t col = 0; col < colT; ++col)
+      Jx[c->Jp[col + 1] - 1] = c->phase[col];
+  return 0;
+}
+
+static int colloc_Fx(const double *X, const double *p, double *J, void *data) {
+  whirl_colloc *c = data;
+  int rc = colloc_Fx_sparse(X, p, c->Jx, data);
+  if (rc != 0) return rc;
+  const size_t nx = c->nx;
+  memset(J, 0, nx * nx * sizeof *J);
+  for (size_t col = 0; col < nx; ++col)
+    for (int q = c->Jp[col]; q < c->Jp[col + 1]; ++q)
+      J[(size_t)c->Ji[q] + nx * col] = c->Jx[q];
+  return 0;
+}
+
+/* dF/dp_k.  The forcing frequency also sets T = 2π nu/ω and the time
+ * argument t0 + Tτ, so its column is a central difference of the whole
+ * residual; any other parameter enters through f only: −h T f_p. */
+static int colloc_Fp(const double *X, const double *p, size_t k, double *fk,
+                     void *data) {
+  whirl_colloc *c = data;
+  const whirl_problem *pr = c->prob;
+  const size_t n = c->n, m = c->ncol, N = c->ntst, np = pr->npar;
+  if (k >= np) return WHIRL_EINVAL;
+  if (!c->aut && (int)k == c->fpar) {
+    const double hp = cbrt(DBL_EPSILON) * fmax(1.0, fabs(p[k]));
+    int rc;
+    memcpy(c->pw, p, np * sizeof *c->pw);
+    c->pw[k] = p[k] + hp;
+    const double up = c->pw[k];
+    if ((rc = colloc_F(X, c->pw, c->r1, c)) != 0) return rc;
+    c->pw[k] = p[k] - hp;
+    const double dn = c->pw[k];
+    if ((rc = colloc_F(X, c->pw, c->r2, c)) != 0) return rc;
+    for (size_t q = 0; q < c->nx; ++q)
+      fk[q] = (c->r1[q] - c->r2[q]) / (up - dn);
+    return 0;
+  }
+  const double T = period_of(c, X, p);
+  for (size_t i = 0; i < N; ++i) {
+    const double h = c->mesh[i + 1] - c->mesh[i];
+    for (size_t g = 0; g < m; ++g) {
+      at_gauss(c, X, i, g);
+      const double tau = c->mesh[i] + h * c->gs[g];
+      int rc = pr->jac_p(c->t0 + T * tau, c->xc, p, c->Jpar, pr->data);
+      if (rc != 0) return rc;
+      double *Fr = fk + n * (i * m + g);
+      for (size_t r = 0; r < n; ++r) Fr[r] = -h * T * c->Jpar[r + n * k];
+    }
+  }
+  for (size_t q = n * N * m; q < c->nx; ++q) fk[q] = 0.0;
+  return 0;
+}
+
+/* The model as the integrator sees it for the multipliers: records a
+ * recoverable failure (status > 0 or a non-finite value) so the spectrum
+ * can hand it on as recoverable instead of the integrator's WHIRL_ESTEP. */
+static int colloc_shim_rhs(double t, const double *x, const double *p,
+                           double *f, void *data) {
+  whirl_colloc *c = data;
+  int rc = c->prob->rhs(t, x, p, f, c->prob->data);
+  if (rc > 0) c->rhs_fail = rc;
+  if (rc == 0)
+    for (size_t r = 0; r < c->n; ++r)
+      if (!isfinite(f[r])) c->rhs_fail = WHIRL_EBADFUNC;
+  return rc;
+}
+
+static int colloc_shim_jac(double t, const double *x, const double *p,
+                           double *J, void *data) {
+  whirl_colloc *c = data;
+  int rc = c->prob->jac_x(t, x, p, J, c->prob->data);
+  if (rc > 0) c->rhs_fail = rc;
+  return rc;
+}
+
+/* Floquet multipliers of the orbit through node 0 (whirl/floquet.h). */
+static int colloc_spectrum(const double *X, const double *p, const double *J,
+                           double *re, double *im, size_t *mcap, void *data) {
+  whirl_colloc *c = data;
+  (void)J;
+  const double T = period_of(c, X, p);
+  c->rhs_fail = 0;
+  int rc = whirl_floquet_multipliers(&c->shim, p, c->t0, X, T, c->aut,
+                                     c->floquet_rtol, 0.0, re, im, mcap, NULL,
+                                     NULL, c->errmsg, sizeof c->errmsg);
+  if (rc != WHIRL_OK && c->rhs_fail != 0) return c->rhs_fail;
+  return rc;
+}
+
+static int colloc_accept(const double *X, const double *p, void *data) {
+  (void)p;
+  set_reference(data, X);
+  return 0;
+}
+
+/* ------------------------------------------------------------ alloc */
+
+static void *fail_null(char *errbuf, size_t errlen, const char *msg) {
+  if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_colloc_alloc: %s", msg);
+  return NULL;
+}
+
+whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
+                                 const whirl_colloc_options *o, char *errbuf,
+                                 size_t errlen) {
+  char why[200];
+  why[0] = '\0';
+  if (errbuf && errlen) errbuf[0] = '\0';
+  if (!prob || !prob->rhs || prob->n == 0)
+    return fail_null(errbuf, errlen, "model is NULL, has no rhs or n = 0");
+  if (!o) return fail_null(errbuf, errlen, "no options");
+  if (o->ntst < 2)
+    snprintf(why, sizeof why, "need NTST >= 2 (got %zu)", o->ntst);
+  else if (o->ncol < 2 || o->ncol > COLLOC_MAXCOL)
+    snprintf(why, sizeof why, "need 2 <= NCOL <= %d (got %zu)", COLLOC_MAXCOL,
+             o->ncol);
+  else if (o->forcing_param < -1 ||
+           (o->forcing_param >= 0 && (size_t)o->forcing_param >= prob->npar))
+    snprintf(why, sizeof why,
+             "forcing_param %d is neither -1 nor a parameter index (npar %zu)",
+             o->forcing_param, prob->npar);
+  else if (o->forcing_param >= 0 && o->nu < 1)
+    snprintf(why, sizeof why, "need nu >= 1 for a forced orbit");
+  else if (o->forcing_param >= 0 && prob->autonomous)
+    /* an autonomous model at an imposed period with no phase condition has a
+     * singular Jacobian (every time shift is a solution) */
+    snprintf(why, sizeof why,
+             "forcing_param %d given but model '%s' is autonomous; use -1",
+             o->forcing_param, prob->name ? prob->name : "?");
+  else if (o->forcing_param < 0 && prob->n < 2)
+    snprintf(why, sizeof why, "an autonomous model needs n >= 2 for a cycle");
+  else if (!isfinite(o->t0) || !(o->floquet_rtol >= 0.0))
+    snprintf(why, sizeof why, "t0 must be finite and floquet_rtol >= 0");
+  if (why[0]) return fail_null(errbuf, errlen, why);
+
+  const size_t n = prob->n, m = o->ncol, N = o->ntst;
+  const int aut = o->forcing_param < 0;
+  const size_t nnodes = N * m + 1;
+  const size_t nx = n * nnodes + (size_t)aut;
+  /* nonzeros: n*ncol collocation rows per interval holding the node (two at
+   * inner mesh points), periodicity at the end nodes, the phase row, and the
+   * T column over all collocation rows */
+  size_t nnz = n * (size_t)aut * N * m;
+  for (size_t j = 0; j < nnodes; ++j) {
+    size_t rows = (j % m == 0 && j != 0 && j != nnodes - 1) ? 2 * n * m : n * m;
+    if (j == 0 || j == nnodes - 1) ++rows;
+    rows += (size_t)aut;
+    nnz += n * rows;
+  }
+  if (nx >= (size_t)INT_MAX || nnz >= (size_t)INT_MAX || nx > SIZE_MAX / nx)
+    return fail_null(errbuf, errlen, "problem too large for int indices");
+
+  whirl_colloc *c = calloc(1, sizeof *c);
+  if (!c) return fail_null(errbuf, errlen, "out of memory");
+  c->prob = prob;
+  c->n = n;
+  c->ntst = N;
+  c->ncol = m;
+  c->nnodes = nnodes;
+  c->nx = nx;
+  c->nnz = nnz;
+  c->aut = aut;
+  c->fpar = o->forcing_param;
+  c->nu = o->nu ? o->nu : 1;
+  c->t0 = o->t0;
+  c->floquet_rtol = o->floquet_rtol > 0 ? o->floquet_rtol : 1e-11;
+  const size_t np = prob->npar ? prob->npar : 1;
+  c->mesh = malloc((N + 1) * sizeof *c->mesh);
+  c->old_mesh = malloc((N + 1) * sizeof *c->old_mesh);
+  c->Jp = malloc((nx + 1) * sizeof *c->Jp);
+  c->Ji = malloc(nnz * sizeof *c->Ji);
+  c->Jx = malloc(nnz * sizeof *c->Jx);
+  c->ref = calloc(nnodes * n, sizeof *c->ref);
+  c->phase = calloc(nnodes * n, sizeof *c->phase);
+  c->old_X = malloc(nnodes * n * sizeof *c->old_X);
+  c->ref_new = malloc(nnodes * n * sizeof *c->ref_new);
+  c->xc = malloc(n * sizeof *c->xc);
+  c->dx = malloc(n * sizeof *c->dx);
+  c->f = malloc(n * sizeof *c->f);
+  c->f2 = malloc(n * sizeof *c->f2);
+  c->J = malloc(n * n * sizeof *c->J);
+  c->Jpar = malloc(n * np * sizeof *c->Jpar);
+  c->work = malloc(2 * n * sizeof *c->work);
+  c->pw = malloc(np * sizeof *c->pw);
+  c->r1 = malloc(nx * sizeof *c->r1);
+  c->r2 = malloc(nx * sizeof *c->r2);
+  if (!c->mesh || !c->old_mesh || !c->Jp || !c->Ji || !c->Jx || !c->ref ||
+      !c->phase || !c->old_X || !c->ref_new || !c->xc || !c->dx || !c->f ||
+      !c->f2 || !c->J || !c->Jpar || !c->work || !c->pw || !c->r1 || !c->r2) {
+    whirl_colloc_free(c);
+    return fail_null(errbuf, errlen, "out of memory");
+  }
+  for (size_t i = 0; i <= N; ++i) c->mesh[i] = (double)i / (double)N;
+  c->mesh[N] = 1.0;
+
+  gauss_legendre(m, c->gs, c->gw);
+  for (size_t g = 0; g < m; ++g)
+    lagrange(m, c->gs[g], c->L + g * (m + 1), c->D + g * (m + 1));
+  {
+    /* m-th derivative of the interpolant on nodes k/m, in σ: m! times the
+     * leading coefficient = m^m (−1)^{m−k} C(m, k) (m-th forward
+     * difference) */
+    double binom = 1.0, mm = pow((double)m, (double)m);
+    for (size_t k = 0; k <= m; ++k) {
+      c->dm[k] = (((m - k) % 2) ? -1.0 : 1.0) * binom * mm;
+      binom = binom * (double)(m - k) / (double)(k + 1);
+    }
+  }
+
+  /* pattern, rows sorted within each column */
+  size_t pos = 0;
+  for (size_t j = 0; j < nnodes; ++j) {
+    const size_t i0 = (j % m == 0 && j != 0) ? j / m - 1 : j / m;
+    const size_t i1 = j == nnodes - 1 ? N - 1 : j / m;
+    for (size_t q = 0; q < n; ++q) {
+      c->Jp[n * j + q] = (int)pos;
+      for (size_t R = n * i0 * m; R < n * (i1 + 1) * m; ++R)
+        c->Ji[pos++] = (int)R;
+      if (j == 0 || j == nnodes - 1) c->Ji[pos++] = (int)(n * N * m + q);
+      if (aut) c->Ji[pos++] = (int)(nx - 1);
+    }
+  }
+  if (aut) {
+    c->Jp[n * nnodes] = (int)pos;
+    for (size_t R = 0; R < n * N * m; ++R) c->Ji[pos++] = (int)R;
+  }
+  c->Jp[nx] = (int)pos;
+
+  c->shim = *prob;
+  c->shim.rhs = colloc_shim_rhs;
+  c->shim.jac_x = prob->jac_x ? colloc_shim_jac : NULL;
+  c->shim.jac_p = NULL;
+  c->shim.data = c;
+
+  whirl_system *s = &c->sys;
+  s->name = prob->name;
+  s->n = nx;
+  s->npar = prob->npar;
+  s->F = colloc_F;
+  s->Fx = colloc_Fx;
+  s->Fp = prob->jac_p ? colloc_Fp : NULL;
+  s->nnz = nnz;
+  s->Jp = c->Jp;
+  s->Ji = c->Ji;
+  s->Fx_sparse = colloc_Fx_sparse;
+  s->nspec = aut ? n - 1 : n;
+  s->spectrum = s->nspec ? colloc_spectrum : NULL;
+  s->spectrum_kind = WHIRL_SPEC_MULTIPLIERS;
+  s->accept = aut ? colloc_accept : NULL;
+  s->x_names = NULL; /* node-major unknowns have no model names */
+  s->p_names = prob->p_names;
+  s->data = c;
+  return c;
+}
+
+void whirl_colloc_free(whirl_colloc *c) {
+  if (!c) return;
+  free(c->mesh);
+  free(c->old_mesh);
+  free(c->Jp);
+  free(c->Ji);
+  free(c->Jx);
+  free(c->ref);
+  free(c->phase);
+  free(c->old_X);
+  free(c->ref_new);
+  free(c->xc);
+  free(c->dx);
+  free(c->f);
+  free(c->f2);
+  free(c->J);
+  free(c->Jpar);
+  free(c->work);
+  free(c->pw);
+  free(c->r1);
+  free(c->r2);
+  free(c);
+}
+
+const whirl_system *whirl_colloc_system(const whirl_colloc *c) {
+  return c ? &c->sys : NULL;
+}
+
+size_t whirl_colloc_size(const whirl_colloc *c) { return c ? c->nx : 0; }
+
+const double *whirl_colloc_mesh(const whirl_colloc *c) {
+  return c ? c->mesh : NULL;
+}
+
+double whirl_colloc_period(const whirl_colloc *c, const double *X,
+                           const double *p) {
+  if (!c || (c->aut && !X) || (!c->aut && !p)) return NAN;
+  return period_of(c, X, p);
+}
+
+/* ------------------------------------------------------------ samples */
+
+/* Local cubic interpolation through the four samples around each node time
+ * (periodic indices): exact for cubics, O(dt^4), linear in the samples and
+ * needs no workspace whatever m is.  Sample k sits at τ = k/m (for a forced
+ * model, time t0 + kT/m); T itself only enters X for autonomous models. */
+int whirl_colloc_from_samples(whirl_colloc *c, const double *x, size_t m,
+                              double T, double *X) {
+  if (!c || !x || !X || m < 4 || !(T > 0) || !isfinite(T)) return WHIRL_EINVAL;
+  const size_t n = c->n, M = c->ncol, N = c->ntst;
+  for (size_t i = 0; i < N; ++i) {
+    const double h = c->mesh[i + 1] - c->mesh[i];
+    for (size_t k = 0; k <= M; ++k) {
+      if (k == M && i + 1 < N) continue; /* shared with the next interval */
+      const size_t j = i * M + k;
+      double u = (c->mesh[i] + h * (double)k / (double)M) * (double)m;
+      if (j == c->nnodes - 1) u = (double)m; /* τ = 1 is sample 0 again */
+      double fl = floor(u);
+      double s = u - fl;
+      size_t k0 = (size_t)fl % m;
+      const size_t im1 = (k0 + m - 1) % m, ip1 = (k0 + 1) % m,
+                   ip2 = (k0 + 2) % m;
+      const double wm1 = -s * (s - 1.0) * (s - 2.0) / 6.0;
+      const double w0 = (s + 1.0) * (s - 1.0) * (s - 2.0) / 2.0;
+      const double w1 = -(s + 1.0) * s * (s - 2.0) / 2.0;
+      const double w2 = (s + 1.0) * s * (s - 1.0) / 6.0;
+      for (size_t r = 0; r < n; ++r)
+        X[n * j + r] = wm1 * x[n * im1 + r] + w0 * x[n * k0 + r] +
+                       w1 * x[n * ip1 + r] + w2 * x[n * ip2 + r];
+    }
+  }
+  if (c->aut) {
+    X[c->nx - 1] = T;
+    set_reference(c, X);
+  }
+  return WHIRL_OK;
+}
+
+int whirl_colloc_eval(const whirl_colloc *c, const double *X, double tau,
+                      double *x) {
+  if (!c || !X || !x || !isfinite(tau)) return WHIRL_EINVAL;
+  eval_poly(c->n, c->ntst, c->ncol, c->mesh, X, tau, x);
+  return WHIRL_OK;
+}
+
+/* ------------------------------------------------------------ adaptation */
+
+/* Equidistribute the piecewise constant density E_i = sum_r |x_r^(NCOL)|^
+ * {1/(NCOL+1)} on interval i (x^(NCOL) of the collocation polynomial, a
+ * constant per interval): the new mesh points are where the monotone,
+ * piecewise linear integral Q(τ) reaches Q(1) k/NTST.  (AUTO's IAD differences
+ * these constants once more to estimate x^(NCOL+1); the density here is the
+ * one the header documents.)  X (and the phase reference) are then the old
+ * piecewise polynomials at the new nodes. */
+int whirl_colloc_adapt(whirl_colloc *c, double *X) {
+  if (!c || !X) return WHIRL_EINVAL;
+  const size_t n = c->n, m = c->ncol, N = c->ntst;
+  const double pwr = 1.0 / ((double)m + 1.0);
+  double *E = c->r1, *Q = c->r2; /* N and N + 1 <= nx */
+  double Emax = 0.0;
+  Q[0] = 0.0;
+  for (size_t i = 0; i < N; ++i) {
+    const double h = c->mesh[i + 1] - c->mesh[i];
+    const double sc = 1.0 / pow(h, (double)m);
+    double e = 0.0;
+    for (size_t r = 0; r < n; ++r) {
+      double d = 0.0;
+      for (size_t k = 0; k <= m; ++k) d += c->dm[k] * X[n * (i * m + k) + r];
+      e += pow(fabs(d * sc), pwr);
+    }
+    if (!isfinite(e)) return WHIRL_EINVAL;
+    E[i] = e;
+    Emax = fmax(Emax, e);
+    Q[i + 1] = Q[i] + h * e;
+  }
+  if (!(Emax > 0)) return WHIRL_OK; /* a constant orbit: keep the mesh */
+
+  memcpy(c->old_mesh, c->mesh, (N + 1) * sizeof *c->mesh);
+  size_t i = 0;
+  for (size_t k = 1; k < N; ++k) {
+    const double q = Q[N] * (double)k / (double)N;
+    while (i < N - 1 && (Q[i + 1] < q || E[i] <= 0.0)) ++i;
+    double t = c->old_mesh[i] + (E[i] > 0 ? (q - Q[i]) / E[i] : 0.0);
+    t = fmin(fmax(t, c->old_mesh[i]), c->old_mesh[i + 1]);
+    c->mesh[k] = t;
+  }
+  c->mesh[0] = 0.0;
+  c->mesh[N] = 1.0;
+  for (size_t k = 1; k <= N; ++k)
+    if (!(c->mesh[k] > c->mesh[k - 1])) {
+      /* degenerate interval (cannot happen for positive E): give up */
+      memcpy(c->mesh, c->old_mesh, (N + 1) * sizeof *c->mesh);
+      return WHIRL_EINVAL;
+    }
+
+  const size_t nn = c->nnodes * n;
+  memcpy(c->old_X, X, nn * sizeof *X);
+  for (size_t ii = 0; ii < N; ++ii) {
+    const double h = c->mesh[ii + 1] - c->mesh[ii];
+    for (size_t k = 0; k <= m; ++k) {
+      const size_t j = ii * m + k;
+      double t =
+          j == c->nnodes - 1 ? 1.0 : c->mesh[ii] + h * (double)k / (double)m;
+      eval_poly(n, N, m, c->old_mesh, c->old_X, t, X + n * j);
+      if (c->aut && c->have_ref)
+        eval_poly(n, N, m, c->old_mesh, c->ref, t, c->ref_new + n * j);
+    }
+  }
+  if (c->aut && c->have_ref) {
+    memcpy(c->ref, c->ref_new, nn * sizeof *c->ref);
+    set_reference(c, c->ref);
+  }
+  return WHIRL_OK;
+}

@@ -1,0 +1,801 @@
+/* test/unit/t_colloc.c — periodic orbits by orthogonal collocation
+ * (lib/systems/colloc.c) against closed forms and independent computations:
+ * the sparse Jacobian against finite differences (Lorenz, forced Duffing),
+ * the limit cycle of the λ-ω system (radius sqrt(a), period 2π, multiplier
+ * exp(-4πa)), the steady state of a forced linear oscillator (amplitude and
+ * multipliers in closed form), a continuation of the λ-ω cycle with the
+ * dense and the sparse solver, the stable periodic orbit of the Lorenz
+ * system at ρ = 250 against direct time integration, mesh adaptation, and
+ * rejected options.
+ * Run with the argument "quick" to skip the Lorenz orbit and shorten the
+ * continuation (for valgrind).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/branch.h>
+#include <whirl/colloc.h>
+#include <whirl/cont.h>
+#include <whirl/ode.h>
+
+#include "../tap.h"
+
+#define PI 3.14159265358979323846
+
+/* ------------------------------------------------------------------------
+ * Models */
+
+/* Lorenz, p = (σ, ρ, b) */
+static int lor_rhs(double t, const double *x, const double *p, double *f,
+                   void *data) {
+  (void)t;
+  (void)data;
+  f[0] = p[0] * (x[1] - x[0]);
+  f[1] = x[0] * (p[1] - x[2]) - x[1];
+  f[2] = x[0] * x[1] - p[2] * x[2];
+  return 0;
+}
+static int lor_jac(double t, const double *x, const double *p, double *J,
+                   void *data) {
+  (void)t;
+  (void)data;
+  J[0] = -p[0], J[1] = p[1] - x[2], J[2] = x[1];
+  J[3] = p[0], J[4] = -1.0, J[5] = x[0];
+  J[6] = 0.0, J[7] = -x[0], J[8] = -p[2];
+  return 0;
+}
+static int lor_jacp(double t, const double *x, const double *p, double *J,
+                    void *data) {
+  (void)t;
+  (void)p;
+  (void)data;
+  J[0] = x[1] - x[0], J[1] = 0.0, J[2] = 0.0;
+  J[3] = 0.0, J[4] = x[0], J[5] = 0.0;
+  J[6] = 0.0, J[7] = 0.0, J[8] = -x[2];
+  return 0;
+}
+static const whirl_problem lorenz = {.name = "lorenz",
+                                     .n = 3,
+                                     .npar = 3,
+                                     .rhs = lor_rhs,
+                                     .jac_x = lor_jac,
+                                     .jac_p = lor_jacp,
+                                     .autonomous = 1};
+/* the same without Jacobians: the constructor differences f itself */
+static const whirl_problem lorenz_fd = {
+    .name = "lorenz-fd", .n = 3, .npar = 3, .rhs = lor_rhs, .autonomous = 1};
+
+/* λ-ω system x' = a x - y - x r², y' = x + a y - y r², p = (a): in polar
+ * coordinates r' = r (a - r²), θ' = 1, so the cycle is the circle of radius
+ * sqrt(a), period 2π; the radial linearisation a - 3r² = -2a gives the
+ * nontrivial multiplier exp(-2a · 2π). */
+static int lw_rhs(double t, const double *x, const double *p, double *f,
+                  void *data) {
+  (void)t;
+  (void)data;
+  const double r2 = x[0] * x[0] + x[1] * x[1];
+  f[0] = p[0] * x[0] - x[1] - x[0] * r2;
+  f[1] = x[0] + p[0] * x[1] - x[1] * r2;
+  return 0;
+}
+static int lw_jac(double t, const double *x, const double *p, double *J,
+                  void *data) {
+  (void)t;
+  (void)data;
+  const double r2 = x[0] * x[0] + x[1] * x[1];
+  J[0] = p[0] - r2 - 2.0 * x[0] * x[0];
+  J[1] = 1.0 - 2.0 * x[0] * x[1];
+  J[2] = -1.0 - 2.0 * x[0] * x[1];
+  J[3] = p[0] - r2 - 2.0 * x[1] * x[1];
+  return 0;
+}
+static int lw_jacp(double t, const double *x, const double *p, double *J,
+                   void *data) {
+  (void)t;
+  (void)p;
+  (void)data;
+  J[0] = x[0];
+  J[1] = x[1];
+  return 0;
+}
+static const whirl_problem lamom = {.name = "lambda-omega",
+                                    .n = 2,
+                                    .npar = 1,
+                                    .rhs = lw_rhs,
+                                    .jac_x = lw_jac,
+                                    .jac_p = lw_jacp,
+                                    .autonomous = 1};
+
+/* forced Duffing x'' + 2ζ x' + x + β x³ = cos(ω t), p = (ω, ζ, β); linear
+ * for β = 0 */
+static int duf_rhs(double t, const double *x, const double *p, double *f,
+                   void *data) {
+  (void)data;
+  f[0] = x[1];
+  f[1] = -x[0] - 2.0 * p[1] * x[1] - p[2] * x[0] * x[0] * x[0] + cos(p[0] * t);
+  return 0;
+}
+static int duf_jac(double t, const double *x, const double *p, double *J,
+                   void *data) {
+  (void)t;
+  (void)data;
+  J[0] = 0.0, J[1] = -1.0 - 3.0 * p[2] * x[0] * x[0];
+  J[2] = 1.0, J[3] = -2.0 * p[1];
+  return 0;
+}
+static int duf_jacp(double t, const double *x, const double *p, double *J,
+                    void *data) {
+  (void)data;
+  J[0] = 0.0, J[1] = -t * sin(p[0] * t);
+  J[2] = 0.0, J[3] = -2.0 * x[1];
+  J[4] = 0.0, J[5] = -x[0] * x[0] * x[0];
+  return 0;
+}
+static const whirl_problem duffing = {.name = "duffing",
+                                      .n = 2,
+                                      .npar = 3,
+                                      .rhs = duf_rhs,
+                                      .jac_x = duf_jac,
+                                      .jac_p = duf_jacp,
+                                      .autonomous = 0};
+
+/* ------------------------------------------------------------------------
+ * Helpers */
+
+/* The compressed-column pattern is well formed: Jp non-decreasing from 0 to
+ * nnz, rows in range and strictly increasing within each column. */
+static int pattern_ok(const whirl_system *s) {
+  if (!s->Jp || !s->Ji || s->Jp[0] != 0 || (size_t)s->Jp[s->n] != s->nnz)
+    return 0;
+  for (size_t j = 0; j < s->n; ++j) {
+    if (s->Jp[j + 1] < s->Jp[j]) return 0;
+    for (int q = s->Jp[j]; q < s->Jp[j + 1]; ++q) {
+      if (s->Ji[q] < 0 || (size_t)s->Ji[q] >= s->n) return 0;
+      if (q > s->Jp[j] && s->Ji[q] <= s->Ji[q - 1]) return 0;
+    }
+  }
+  return 1;
+}
+
+/* max over the mesh points τ_i of | |x(τ_i)| - r | (2-D orbits); the
+ * collocation solution is superconvergent there (de Boor & Swartz). */
+static double radius_err_mesh(const double *X, size_t ntst, size_t ncol,
+                              double r) {
+  double e = 0.0;
+  for (size_t i = 0; i <= ntst; ++i) {
+    const double *x = X + 2 * (i * ncol);
+    e = fmax(e, fabs(hypot(x[0], x[1]) - r));
+  }
+  return e;
+}
+
+/* same at every node */
+static double radius_err_nodes(const double *X, size_t nnodes, double r) {
+  double e = 0.0;
+  for (size_t j = 0; j < nnodes; ++j)
+    e = fmax(e, fabs(hypot(X[2 * j], X[2 * j + 1]) - r));
+  return e;
+}
+
+/* samples of the circle of radius R, counter-clockwise from (R, 0) */
+static void circle_samples(double R, size_t m, double *x) {
+  for (size_t k = 0; k < m; ++k) {
+    x[2 * k] = R * cos(2.0 * PI * (double)k / (double)m);
+    x[2 * k + 1] = R * sin(2.0 * PI * (double)k / (double)m);
+  }
+}
+
+/* distance from (re, im) to the nearest of the pair (a ± i b) */
+static double pair_dist(double re, double im, double a, double b) {
+  return fmin(hypot(re - a, im - b), hypot(re - a, im + b));
+}
+
+/* Newton correction at fixed parameters by the continuation core: start,
+ * then the first step delivers the corrected start point (EP) from the
+ * core's queue without taking a continuation step. */
+static int correct(whirl_cont *ct, const double *X, const double *p) {
+  int rc = whirl_cont_start(ct, X, p, 1);
+  if (rc == WHIRL_OK) rc = whirl_cont_step(ct);
+  return rc;
+}
+
+/* ------------------------------------------------------------------------
+ * 1. Jacobians */
+
+static void test_jacobians(void) {
+  char err[256];
+  whirl_colloc_options o;
+  whirl_colloc_options_default(&o);
+  o.ntst = 10;
+  o.ncol = 4;
+  const whirl_problem *lp[2] = {&lorenz, &lorenz_fd};
+  for (int v = 0; v < 2; ++v) {
+    whirl_colloc *c = whirl_colloc_alloc(lp[v], &o, err, sizeof err);
+    ok(c != NULL, "alloc Lorenz (%s) NTST 10 NCOL 4: %s", lp[v]->name, err);
+    if (!c) continue;
+    const whirl_system *s = whirl_colloc_system(c);
+    const size_t nx = whirl_colloc_size(c);
+    ok(nx == 3 * 41 + 1 && s->n == nx,
+       "size n (NTST NCOL + 1) + 1 = 124 (got %zu)", nx);
+    ok(pattern_ok(s), "sparse pattern well formed, sorted rows (nnz %zu)",
+       s->nnz);
+    ok(s->spectrum_kind == WHIRL_SPEC_MULTIPLIERS && s->nspec == 2 &&
+           s->accept != NULL,
+       "autonomous: multipliers, nspec n-1 = 2, accept hook");
+    /* a closed curve, not a solution, plus a perturbation of every node */
+    double smp[3 * 32], *X = malloc(nx * sizeof *X);
+    for (size_t k = 0; k < 32; ++k) {
+      const double th = 2.0 * PI * (double)k / 32.0;
+      smp[3 * k] = 10.0 * cos(th) + 3.0;
+      smp[3 * k + 1] = 15.0 * sin(th);
+      smp[3 * k + 2] = 200.0 + 30.0 * cos(2.0 * th);
+    }
+    whirl_colloc_from_samples(c, smp, 32, 0.7, X);
+    for (size_t q = 0; q + 1 < nx; ++q) X[q] += tap_urand(-1.0, 1.0);
+    const double p[3] = {10.0, 250.0, 8.0 / 3.0};
+    double e_dense = NAN, e_sparse = NAN;
+    int rc1 = whirl_system_check_jacobian(s, X, p, &e_dense);
+    whirl_system sp = *s;
+    sp.Fx = NULL; /* the checker then scatters Fx_sparse */
+    int rc2 = whirl_system_check_jacobian(&sp, X, p, &e_sparse);
+    printf("# Lorenz (%s): Jacobian error dense %.2e sparse %.2e\n",
+           lp[v]->name, e_dense, e_sparse);
+    ok(rc1 == 0 && e_dense < 1e-6,
+       "Lorenz (%s): dense Jacobian and F_p vs differences %.2e < 1e-6",
+       lp[v]->name, e_dense);
+    ok(rc2 == 0 && e_sparse < 1e-6,
+       "Lorenz (%s): sparse Jacobian vs differences %.2e < 1e-6", lp[v]->name,
+       e_sparse);
+    ok(v == 0 ? s->Fp != NULL : s->Fp == NULL,
+       "F_p present exactly when the model has jac_p");
+    free(X);
+    whirl_colloc_free(c);
+  }
+
+  /* forced Duffing (nonlinear, explicit time): forced mode, t0 != 0, and
+   * autonomous mode on a time-dependent model (T column carries ∂f/∂t) */
+  for (int mode = 0; mode < 2; ++mode) {
+    whirl_colloc_options_default(&o);
+    o.ntst = 8;
+    o.ncol = 3;
+    o.t0 = 0.4;
+    o.forcing_param = mode == 0 ? 0 : -1;
+    whirl_colloc *c = whirl_colloc_alloc(&duffing, &o, err, sizeof err);
+    ok(c != NULL, "alloc Duffing, forcing_param %d: %s", o.forcing_param, err);
+    if (!c) continue;
+    const whirl_system *s = whirl_colloc_system(c);
+    const size_t nx = whirl_colloc_size(c);
+    ok(nx == 2 * 25 + (size_t)(mode == 1), "size %zu", nx);
+    ok(pattern_ok(s), "Duffing: sparse pattern well formed");
+    double smp[2 * 16], *X = malloc(nx * sizeof *X);
+    for (size_t k = 0; k < 16; ++k) {
+      smp[2 * k] = cos(2.0 * PI * (double)k / 16.0);
+      smp[2 * k + 1] = -sin(2.0 * PI * (double)k / 16.0);
+    }
+    whirl_colloc_from_samples(c, smp, 16, 2.0 * PI / 1.3, X);
+    for (size_t q = 0; q < 2 * 25; ++q) X[q] += tap_urand(-0.3, 0.3);
+    const double p[3] = {1.3, 0.1, 0.7};
+    double e_dense = NAN, e_sparse = NAN;
+    int rc1 = whirl_system_check_jacobian(s, X, p, &e_dense);
+    whirl_system sp = *s;
+    sp.Fx = NULL;
+    int rc2 = whirl_system_check_jacobian(&sp, X, p, &e_sparse);
+    printf("# Duffing (%s): Jacobian error dense %.2e sparse %.2e\n",
+           mode == 0 ? "forced" : "T unknown", e_dense, e_sparse);
+    ok(rc1 == 0 && e_dense < 1e-6,
+       "Duffing (%s): dense Jacobian and F_p (all 3 parameters) vs "
+       "differences %.2e < 1e-6",
+       mode == 0 ? "forced" : "T unknown", e_dense);
+    ok(rc2 == 0 && e_sparse < 1e-6,
+       "Duffing (%s): sparse Jacobian vs differences %.2e < 1e-6",
+       mode == 0 ? "forced" : "T unknown", e_sparse);
+    if (mode == 0) {
+      ok(s->nspec == 2 && s->accept == NULL,
+         "forced: nspec n = 2, no phase reference");
+      is_rel(whirl_colloc_period(c, X, p), 2.0 * PI / 1.3, 1e-15,
+             "forced period 2π/ω");
+    }
+    free(X);
+    whirl_colloc_free(c);
+  }
+}
+
+/* ------------------------------------------------------------------------
+ * 2. λ-ω cycle from a wrong circle */
+
+static void test_lambda_omega(void) {
+  const double a = 0.25, r = sqrt(a);
+  const size_t ntst = 20, ncol = 4, m = 64;
+  char err[256];
+  whirl_colloc_options o;
+  whirl_colloc_options_default(&o);
+  o.ntst = ntst;
+  o.ncol = ncol;
+  whirl_colloc *c = whirl_colloc_alloc(&lamom, &o, err, sizeof err);
+  ok(c != NULL, "alloc λ-ω: %s", err);
+  if (!c) return;
+  const whirl_system *s = whirl_colloc_system(c);
+  const size_t nx = whirl_colloc_size(c);
+  double smp[2 * 64], *X = malloc(nx * sizeof *X);
+  circle_samples(1.1 * r, m, smp);
+  ok(whirl_colloc_from_samples(c, smp, m, 6.0, X) == WHIRL_OK &&
+         X[nx - 1] == 6.0,
+     "from_samples stores T = 6");
+  /* the interpolated circle: 4-point cubic interpolation of 64 samples is
+   * accurate to ~ (2π/64)^4 / 24 ~ 4e-6 relative */
+  ok(radius_err_nodes(X, ntst * ncol + 1, 1.1 * r) < 1e-5 * r,
+     "interpolated samples lie on the radius-1.1 r circle (%.1e)",
+     radius_err_nodes(X, ntst * ncol + 1, 1.1 * r));
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = 0;
+  co.linsol = WHIRL_LINSOL_SPARSE;
+  whirl_cont *ct = whirl_cont_alloc(s, &co, err, sizeof err);
+  const double p[1] = {a};
+  int rc = ct ? correct(ct, X, p) : -1;
+  ok(rc == WHIRL_OK, "Newton from the wrong circle converges: %s",
+     ct ? whirl_cont_errmsg(ct) : err);
+  if (rc == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(ct);
+    memcpy(X, pt->x, nx * sizeof *X);
+    const double er = radius_err_mesh(X, ntst, ncol, r);
+    const double en = radius_err_nodes(X, ntst * ncol + 1, r);
+    printf("# λ-ω a = %g: radius error %.2e at mesh points, %.2e at all "
+           "nodes; period error %.2e\n",
+           a, er, en, X[nx - 1] - 2.0 * PI);
+    ok(er < 1e-9, "radius sqrt(a) at the mesh points to 1e-9 (%.2e)", er);
+    ok(en < 1e-7, "radius sqrt(a) at all nodes to 1e-7 (%.2e)", en);
+    is_rel(X[nx - 1], 2.0 * PI, 1e-9, "period 2π");
+    is_rel(whirl_colloc_period(c, X, p), 2.0 * PI, 1e-9, "whirl_colloc_period");
+    /* the nontrivial multiplier from the variational equations */
+    const double mu = exp(-2.0 * a * 2.0 * PI);
+    ok(pt->nspec == 1, "one nontrivial multiplier (nspec %zu)", pt->nspec);
+    printf("# multiplier %.15g, closed form %.15g, rel err %.2e\n",
+           pt->spec_re[0], mu, fabs(pt->spec_re[0] / mu - 1.0));
+    is_rel(pt->spec_re[0], mu, 1e-8, "multiplier exp(-4πa) = %.6g", mu);
+    is_abs(pt->spec_im[0], 0.0, 1e-12, "multiplier is real");
+    /* evaluation between nodes: a point of the circle, and periodic wrap */
+    double xe[2], xw[2];
+    whirl_colloc_eval(c, X, 0.337, xe);
+    whirl_colloc_eval(c, X, 1.337, xw);
+    is_abs(hypot(xe[0], xe[1]), r, 1e-7, "eval at τ = 0.337 lies on the cycle");
+    ok(fabs(xe[0] - xw[0]) < 1e-14 && fabs(xe[1] - xw[1]) < 1e-14,
+       "eval wraps τ periodically");
+    /* the phase: x(τ) = r (cos 2π(τ + φ), sin ...) with φ from the phase
+     * condition against the reference circle starting at (1.1 r, 0): φ = 0 */
+    is_abs(atan2(X[1], X[0]), 0.0, 1e-9,
+           "phase condition fixes the phase of the reference (x(0) on the +x "
+           "axis)");
+  }
+  whirl_cont_free(ct);
+  free(X);
+  whirl_colloc_free(c);
+}
+
+/* ------------------------------------------------------------------------
+ * 3. forced linear oscillator */
+
+static void test_forced(void) {
+  const double w = 1.3, z = 0.1;
+  const size_t ntst = 20, ncol = 4;
+  char err[256];
+  whirl_colloc_options o;
+  whirl_colloc_options_default(&o);
+  o.ntst = ntst;
+  o.ncol = ncol;
+  o.forcing_param = 0;
+  whirl_colloc *c = whirl_colloc_alloc(&duffing, &o, err, sizeof err);
+  ok(c != NULL, "alloc forced oscillator: %s", err);
+  if (!c) return;
+  const whirl_system *s = whirl_colloc_system(c);
+  const size_t nx = whirl_colloc_size(c);
+  double smp[2 * 8] = {0}, *X = malloc(nx * sizeof *X);
+  whirl_colloc_from_samples(c, smp, 8, 2.0 * PI / w, X); /* x = 0 */
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = 1; /* ζ; the forcing frequency stays fixed */
+  whirl_cont *ct = whirl_cont_alloc(s, &co, err, sizeof err);
+  const double p[3] = {w, z, 0.0};
+  int rc = ct ? correct(ct, X, p) : -1;
+  ok(rc == WHIRL_OK, "forced oscillator: Newton converges: %s",
+     ct ? whirl_cont_errmsg(ct) : err);
+  if (rc == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(ct);
+    memcpy(X, pt->x, nx * sizeof *X);
+    /* steady state x = A cos(ωt - φ), A = 1/sqrt((1-ω²)² + (2ζω)²) */
+    const double A = 1.0 / sqrt((1 - w * w) * (1 - w * w) + 4 * z * z * w * w);
+    const double phi = atan2(2.0 * z * w, 1.0 - w * w);
+    const double Tp = 2.0 * PI / w;
+    const double amp = hypot(X[0], X[1] / w); /* at t = 0 */
+    double emax = 0.0;
+    const double *mesh = whirl_colloc_mesh(c);
+    for (size_t i = 0; i <= ntst; ++i) {
+      const double t = Tp * mesh[i];
+      const double *x = X + 2 * i * ncol;
+      emax = fmax(emax, fabs(x[0] - A * cos(w * t - phi)));
+      emax = fmax(emax, fabs(x[1] + A * w * sin(w * t - phi)));
+    }
+    printf("# forced: amplitude %.15g closed form %.15g; max error at mesh "
+           "points %.2e\n",
+           amp, A, emax);
+    is_rel(amp, A, 1e-9, "amplitude 1/sqrt((1-ω²)² + (2ζω)²) = %.6f", A);
+    ok(emax < 1e-9, "x(t) = A cos(ωt - φ) at the mesh points (%.2e)", emax);
+    /* multipliers exp((-ζ ± i sqrt(1-ζ²)) T) */
+    const double mr = exp(-z * Tp) * cos(sqrt(1 - z * z) * Tp);
+    const double mi = exp(-z * Tp) * sin(sqrt(1 - z * z) * Tp);
+    ok(pt->nspec == 2, "two multipliers (nspec %zu)", pt->nspec);
+    double d0 = pair_dist(pt->spec_re[0], pt->spec_im[0], mr, mi);
+    double d1 = pair_dist(pt->spec_re[1], pt->spec_im[1], mr, mi);
+    printf("# forced multipliers %.12g%+.12gi, %.12g%+.12gi; closed form "
+           "%.12g±%.12gi; errors %.1e %.1e\n",
+           pt->spec_re[0], pt->spec_im[0], pt->spec_re[1], pt->spec_im[1], mr,
+           fabs(mi), d0, d1);
+    ok(d0 < 1e-8 && d1 < 1e-8 && pt->spec_im[0] * pt->spec_im[1] < 0,
+       "multipliers exp((-ζ ± i sqrt(1-ζ²)) 2π/ω) to 1e-8 (%.1e, %.1e)", d0,
+       d1);
+  }
+  whirl_cont_free(ct);
+  free(X);
+  whirl_colloc_free(c);
+}
+
+/* the subharmonic setting nu = 2 at t0 = 0.9 finds the same (unique)
+ * response over two forcing periods, with the same multipliers squared */
+static void test_forced_nu2(void) {
+  const double w = 1.3, z = 0.1;
+  char err[256];
+  whirl_colloc_options o;
+  whirl_colloc_options_default(&o);
+  o.forcing_param = 0;
+  o.nu = 2;
+  o.ntst = 40; /* two forcing periods at the resolution of test 3 */
+  o.t0 = 0.9;
+  whirl_colloc *c = whirl_colloc_alloc(&duffing, &o, err, sizeof err);
+  ok(c != NULL, "alloc nu = 2: %s", err);
+  if (!c) return;
+  const whirl_system *s = whirl_colloc_system(c);
+  double smp[2 * 8] = {0}, *X = malloc(whirl_colloc_size(c) * sizeof *X);
+  whirl_colloc_from_samples(c, smp, 8, 4.0 * PI / w, X);
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = 1;
+  whirl_cont *ct = whirl_cont_alloc(s, &co, err, sizeof err);
+  const double p[3] = {w, z, 0.0};
+  int rc = correct(ct, X, p);
+  if (rc == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(ct);
+    const double A = 1.0 / sqrt((1 - w * w) * (1 - w * w) + 4 * z * z * w * w);
+    const double phi = atan2(2.0 * z * w, 1.0 - w * w);
+    double xe[2];
+    whirl_colloc_eval(c, pt->x, 0.0, xe);
+    is_abs(xe[0], A * cos(w * 0.9 - phi), 1e-9,
+           "nu = 2, t0 = 0.9: x(t0) = A cos(ω t0 - φ)");
+    is_rel(whirl_colloc_period(c, pt->x, pt->p), 4.0 * PI / w, 1e-15,
+           "nu = 2: period 4π/ω");
+    is_rel(hypot(pt->spec_re[0], pt->spec_im[0]), exp(-z * 4.0 * PI / w), 1e-8,
+           "nu = 2: |multiplier| = exp(-2ζ 2π/ω)");
+  } else {
+    ok(0, "nu = 2: Newton failed: %s", whirl_cont_errmsg(ct));
+  }
+  whirl_cont_free(ct);
+  free(X);
+  whirl_colloc_free(c);
+}
+
+/* ------------------------------------------------------------------------
+ * 4. continuation of the λ-ω cycle in a */
+
+typedef struct lw_run {
+  size_t npts;
+  double *p;   /* a of each point */
+  double *X;   /* nx per point */
+  double rmax; /* max radius error at mesh points over the branch */
+  double Tmax; /* max |T - 2π| */
+  int stop;
+} lw_run;
+
+static int run_lw(whirl_linsol_kind kind, double a_min, lw_run *out) {
+  const size_t ntst = 20, ncol = 4, m = 64;
+  char err[256];
+  memset(out, 0, sizeof *out);
+  whirl_colloc_options o;
+  whirl_colloc_options_default(&o);
+  o.ntst = ntst;
+  o.ncol = ncol;
+  whirl_colloc *c = whirl_colloc_alloc(&lamom, &o, err, sizeof err);
+  if (!c) return -1;
+  const whirl_system *s = whirl_colloc_system(c);
+  const size_t nx = whirl_colloc_size(c);
+  double smp[2 * 64], *X = malloc(nx * sizeof *X);
+  circle_samples(1.1, m, smp);
+  whirl_colloc_from_samples(c, smp, m, 6.0, X);
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = 0;
+  co.ds = 0.05;
+  co.ds_max = 0.1;
+  co.p_min = a_min;
+  co.p_max = 2.0;
+  co.nmx = 200;
+  co.linsol = kind;
+  whirl_cont *ct = whirl_cont_alloc(s, &co, err, sizeof err);
+  const double p0[1] = {1.0};
+  int rc = ct ? whirl_cont_start(ct, X, p0, -1) : -1;
+  size_t cap = 256;
+  out->p = malloc(cap * sizeof *out->p);
+  out->X = malloc(cap * nx * sizeof *out->X);
+  while (rc == WHIRL_OK && (rc = whirl_cont_step(ct)) == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(ct);
+    /* the core does not call the accept hook yet: update the phase
+     * reference to the accepted point here */
+    s->accept(pt->x, pt->p, s->data);
+    if (out->npts < cap) {
+      out->p[out->npts] = pt->p[0];
+      memcpy(out->X + nx * out->npts, pt->x, nx * sizeof *X);
+      ++out->npts;
+    }
+    out->rmax =
+        fmax(out->rmax, radius_err_mesh(pt->x, ntst, ncol, sqrt(pt->p[0])));
+    out->Tmax = fmax(out->Tmax, fabs(pt->x[nx - 1] - 2.0 * PI));
+  }
+  out->stop = ct ? whirl_cont_stop_reason(ct) : -1;
+  if (rc != WHIRL_DONE)
+    printf("# continuation: %s\n", ct ? whirl_cont_errmsg(ct) : err);
+  whirl_cont_free(ct);
+  free(X);
+  whirl_colloc_free(c);
+  return rc;
+}
+
+static void test_continuation(int quick) {
+  const double a_min = quick ? 0.6 : 0.05;
+  lw_run d, sp;
+  int rcd = run_lw(WHIRL_LINSOL_DENSE, a_min, &d);
+  int rcs = run_lw(WHIRL_LINSOL_SPARSE, a_min, &sp);
+  printf("# λ-ω branch a: 1 -> %g: %zu points (dense), %zu (sparse); max "
+         "radius error %.2e, max period error %.2e\n",
+         a_min, d.npts, sp.npts, fmax(d.rmax, sp.rmax), fmax(d.Tmax, sp.Tmax));
+  ok(rcd == WHIRL_DONE && d.stop == WHIRL_STOP_PMIN && d.npts > 3,
+     "dense: branch ends at a = %g (%zu points)", a_min, d.npts);
+  ok(rcs == WHIRL_DONE && sp.stop == WHIRL_STOP_PMIN && sp.npts > 3,
+     "sparse: branch ends at a = %g (%zu points)", a_min, sp.npts);
+  if (d.npts)
+    is_abs(d.p[d.npts - 1], a_min, 1e-10, "last point at a = %g", a_min);
+  ok(d.rmax < 1e-8 && sp.rmax < 1e-8,
+     "radius sqrt(a) on every point to 1e-8 (%.2e, %.2e)", d.rmax, sp.rmax);
+  ok(d.Tmax < 1e-8 && sp.Tmax < 1e-8, "period 2π on every point (%.2e, %.2e)",
+     d.Tmax, sp.Tmax);
+  double diff = INFINITY;
+  if (d.npts == sp.npts && d.npts > 0) {
+    const size_t nx = 2 * (20 * 4 + 1) + 1;
+    diff = 0.0;
+    for (size_t k = 0; k < d.npts; ++k) {
+      diff = fmax(diff, fabs(d.p[k] - sp.p[k]));
+      for (size_t q = 0; q < nx; ++q)
+        diff = fmax(diff, fabs(d.X[nx * k + q] - sp.X[nx * k + q]));
+    }
+  }
+  ok(diff < 1e-9,
+     "dense and sparse solvers give the same branch (max "
+     "difference %.1e)",
+     diff);
+  free(d.p), free(d.X), free(sp.p), free(sp.X);
+}
+
+/* ------------------------------------------------------------------------
+ * 5. Lorenz at ρ = 250 */
+
+static double z_event(double t, const double *x, void *data) {
+  (void)t;
+  return x[2] - *(const double *)data;
+}
+
+typedef struct sample_buf {
+  double *x;
+  size_t n;
+} sample_buf;
+
+static int store_sample(size_t k, double t, const double *x, void *data) {
+  (void)t;
+  sample_buf *b = data;
+  memcpy(b->x + b->n * k, x, b->n * sizeof *x);
+  return 0;
+}
+
+static void test_lorenz(void) {
+  const double p[3] = {10.0, 250.0, 8.0 / 3.0};
+  double level = p[1] - 1.0;
+  const double x0[3] = {1.0, 1.0, 200.0};
+  whirl_ode *ode = whirl_ode_alloc(&lorenz, p);
+  int rc = whirl_ode_reset(ode, 0.0, x0);
+  if (rc == 0) rc = whirl_ode_evolve(ode, 50.0);
+  /* successive upward crossings of z = ρ - 1 with x > 0 */
+  double tev[8], xev[8][3], xe[3], te;
+  size_t nev = 0;
+  while (rc == 0 && nev < 8 && whirl_ode_t(ode) < 100.0) {
+    rc = whirl_ode_step(ode, 100.0);
+    if (rc == 0 &&
+        whirl_ode_find_event(ode, z_event, &level, 1, 0.0, &te, xe) == 1 &&
+        xe[0] > 0) {
+      tev[nev] = te;
+      memcpy(xev[nev], xe, sizeof xe);
+      ++nev;
+    }
+  }
+  ok(rc == 0 && nev == 8, "Lorenz: 8 returns to z = ρ-1 after t = 50 (rc %d)",
+     rc);
+  if (nev < 8) {
+    whirl_ode_free(ode);
+    return;
+  }
+  const double Tint = tev[7] - tev[6];
+  double spread = 0.0;
+  for (size_t k = 1; k < 8; ++k)
+    spread = fmax(spread, fabs(tev[k] - tev[k - 1] - Tint));
+  printf("# Lorenz: period from integration %.12f (spread over 7 returns "
+         "%.1e)\n",
+         Tint, spread);
+  ok(spread < 1e-9, "settled on a periodic orbit: return times agree (%.1e)",
+     spread);
+
+  /* m uniform samples over one period from the last return */
+  const size_t m = 400;
+  double *smp = malloc(3 * m * sizeof *smp);
+  sample_buf sb = {smp, 3};
+  whirl_ode_reset(ode, tev[7], xev[7]);
+  rc = whirl_ode_sample(ode, Tint / (double)m, m - 1, store_sample, &sb);
+  ok(rc == 0, "samples of one period");
+  whirl_ode_free(ode);
+
+  char err[256];
+  whirl_colloc_options o;
+  whirl_colloc_options_default(&o);
+  o.ntst = 50;
+  o.ncol = 4;
+  whirl_colloc *c = whirl_colloc_alloc(&lorenz, &o, err, sizeof err);
+  const whirl_system *s = whirl_colloc_system(c);
+  const size_t nx = whirl_colloc_size(c);
+  double *X = malloc(nx * sizeof *X);
+  whirl_colloc_from_samples(c, smp, m, Tint, X);
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = 1;
+  co.linsol = WHIRL_LINSOL_SPARSE;
+  whirl_cont *ct = whirl_cont_alloc(s, &co, err, sizeof err);
+  rc = correct(ct, X, p);
+  ok(rc == WHIRL_OK, "Lorenz: collocation Newton converges: %s",
+     whirl_cont_errmsg(ct));
+  if (rc == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(ct);
+    memcpy(X, pt->x, nx * sizeof *X);
+    s->accept(pt->x, pt->p, s->data); /* not yet done by the core */
+    const double Tc = X[nx - 1];
+    printf("# Lorenz: period by collocation %.12f, integration %.12f, rel "
+           "diff %.2e\n",
+           Tc, Tint, fabs(Tc / Tint - 1.0));
+    is_rel(Tc, Tint, 1e-6, "collocation period agrees with integration");
+    double mx = 0.0;
+    for (size_t k = 0; k < pt->nspec; ++k)
+      mx = fmax(mx, hypot(pt->spec_re[k], pt->spec_im[k]));
+    printf("# Lorenz multipliers: %.6g%+.6gi, %.6g%+.6gi\n", pt->spec_re[0],
+           pt->spec_im[0], pt->spec_re[1], pt->spec_im[1]);
+    ok(pt->nspec == 2 && mx < 1.0,
+       "stable: both nontrivial |mu| < 1 (max %.3g)", mx);
+    /* integrating from node 0 over T returns to node 0 */
+    double xT[3], M[9];
+    whirl_ode_monodromy(&lorenz, p, 0.0, X, Tc, 1e-12, 1e-12, xT, M, NULL, NULL,
+                        0);
+    double ret =
+        fmax(fmax(fabs(xT[0] - X[0]), fabs(xT[1] - X[1])), fabs(xT[2] - X[2]));
+    printf("# Lorenz: |x(T) - x(0)| integrating the collocation start %.2e\n",
+           ret);
+    ok(ret < 1e-6, "the orbit closes under time integration (%.1e)", ret);
+
+    /* mesh adaptation, then re-correction: the period stays */
+    double *Xa = malloc(nx * sizeof *Xa);
+    memcpy(Xa, X, nx * sizeof *Xa);
+    rc = whirl_colloc_adapt(c, Xa);
+    const double *mesh = whirl_colloc_mesh(c);
+    int mono = mesh[0] == 0.0 && mesh[50] == 1.0;
+    double hmin = 1.0, hmax = 0.0;
+    for (size_t i = 0; i < 50; ++i) {
+      mono = mono && mesh[i + 1] > mesh[i];
+      hmin = fmin(hmin, mesh[i + 1] - mesh[i]);
+      hmax = fmax(hmax, mesh[i + 1] - mesh[i]);
+    }
+    printf("# adapted mesh: h from %.4f to %.4f\n", hmin, hmax);
+    ok(rc == 0 && mono && hmax > 1.5 * hmin,
+       "adapt: monotone, non-uniform mesh (h %.4f..%.4f)", hmin, hmax);
+    is_rel(Xa[nx - 1], Tc, 0.0, "adapt keeps T");
+    double xo[3], xn[3];
+    /* remapped values are the old polynomial: node 0 unchanged */
+    whirl_colloc_eval(c, Xa, 0.0, xn);
+    memcpy(xo, X, sizeof xo);
+    ok(fabs(xn[0] - xo[0]) + fabs(xn[1] - xo[1]) + fabs(xn[2] - xo[2]) < 1e-12,
+       "adapt: x(0) unchanged");
+    rc = correct(ct, Xa, p);
+    ok(rc == WHIRL_OK, "re-correction on the adapted mesh: %s",
+       whirl_cont_errmsg(ct));
+    if (rc == WHIRL_OK) {
+      const double Ta = whirl_cont_point(ct)->x[nx - 1];
+      printf("# Lorenz: period after adaptation %.12f (rel change %.2e)\n", Ta,
+             fabs(Ta / Tc - 1.0));
+      is_rel(Ta, Tc, 1e-8, "adapted mesh keeps the period to 1e-8");
+      /* the adapted orbit closes under time integration at least as well
+       * as the one on the uniform mesh */
+      const double *xa = whirl_cont_point(ct)->x;
+      whirl_ode_monodromy(&lorenz, p, 0.0, xa, Ta, 1e-12, 1e-12, xT, M, NULL,
+                          NULL, 0);
+      double reta = fmax(fmax(fabs(xT[0] - xa[0]), fabs(xT[1] - xa[1])),
+                         fabs(xT[2] - xa[2]));
+      ok(reta < ret,
+         "adapted orbit closes better under integration: |x(T) - "
+         "x(0)| %.1e < %.1e (uniform)",
+         reta, ret);
+    }
+    free(Xa);
+  }
+  whirl_cont_free(ct);
+  free(X);
+  free(smp);
+  whirl_colloc_free(c);
+}
+
+/* ------------------------------------------------------------------------
+ * 6. bad input */
+
+static void test_errors(void) {
+  char err[256];
+  whirl_colloc_options o;
+  struct {
+    size_t ntst, ncol;
+    int fp;
+    unsigned nu;
+    const whirl_problem *prob;
+    const char *what;
+  } bad[] = {
+      {20, 1, -1, 1, &lamom, "NCOL = 1"},
+      {0, 4, -1, 1, &lamom, "NTST = 0"},
+      {1, 4, -1, 1, &lamom, "NTST = 1"},
+      {20, 8, -1, 1, &lamom, "NCOL = 8"},
+      {20, 4, 3, 1, &duffing, "forcing_param = npar"},
+      {20, 4, 0, 0, &duffing, "nu = 0"},
+      {20, 4, 0, 1, &lamom, "forcing an autonomous model"},
+  };
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+    whirl_colloc_options_default(&o);
+    o.ntst = bad[k].ntst;
+    o.ncol = bad[k].ncol;
+    o.forcing_param = bad[k].fp;
+    o.nu = bad[k].nu;
+    err[0] = '\0';
+    whirl_colloc *c = whirl_colloc_alloc(bad[k].prob, &o, err, sizeof err);
+    ok(c == NULL && strlen(err) > 0, "%s rejected: \"%s\"", bad[k].what, err);
+    whirl_colloc_free(c);
+  }
+  ok(whirl_colloc_alloc(NULL, NULL, err, sizeof err) == NULL && err[0],
+     "NULL model rejected: \"%s\"", err);
+  whirl_colloc_free(NULL);
+  whirl_colloc_options_default(&o);
+  whirl_colloc *c = whirl_colloc_alloc(&lamom, &o, err, sizeof err);
+  double smp[8] = {0}, X[2 * 81 + 1], x[2];
+  ok(whirl_colloc_from_samples(c, smp, 3, 1.0, X) == WHIRL_EINVAL &&
+         whirl_colloc_from_samples(c, smp, 4, 0.0, X) == WHIRL_EINVAL &&
+         whirl_colloc_eval(c, X, NAN, x) == WHIRL_EINVAL,
+     "from_samples: m < 4 or T <= 0, eval at NaN: EINVAL");
+  whirl_colloc_free(c);
+}
+
+int main(int argc, char **argv) {
+  const int quick = argc > 1 && strcmp(argv[1], "quick") == 0;
+  test_jacobians();
+  test_lambda_omega();
+  test_forced();
+  test_forced_nu2();
+  test_continuation(quick);
+  if (!quick) test_lorenz();
+  test_errors();
+  return done_testing();
+}
