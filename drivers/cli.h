@@ -78,6 +78,7 @@ int cli_is_tty(void);
 
 int cmd_sfd_response(int argc, char **argv);
 int cmd_sfd_simulate(int argc, char **argv);
+int cmd_sfd_nonsync(int argc, char **argv);
 int cmd_sfd_sweep(int argc, char **argv);
 int cmd_sfd_basins(int argc, char **argv);
 int cmd_sfd_onset(int argc, char **argv);

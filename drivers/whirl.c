@@ -40,7 +40,9 @@ static void sfd_usage(FILE *f) {
           "  simulate   one response by time integration\n"
           "  sweep      speed sweep by time integration\n"
           "  basins     basins of attraction\n"
-          "  onset      onset of the nonsynchronous response from rest\n");
+          "  onset      onset of the nonsynchronous response from rest\n"
+          "  nonsync    the nonsynchronous response continued as a periodic orbit\n"
+          "             of the rotating frame (birth, stability, second frequency)\n");
 }
 
 int main(int argc, char **argv) {
@@ -70,6 +72,7 @@ int main(int argc, char **argv) {
     if (!strcmp(argv[2], "sweep")) return cmd_sfd_sweep(argc - 2, argv + 2);
     if (!strcmp(argv[2], "basins")) return cmd_sfd_basins(argc - 2, argv + 2);
     if (!strcmp(argv[2], "onset")) return cmd_sfd_onset(argc - 2, argv + 2);
+    if (!strcmp(argv[2], "nonsync")) return cmd_sfd_nonsync(argc - 2, argv + 2);
     fprintf(stderr, "whirl sfd: unknown command '%s' (see whirl sfd --help)\n", argv[2]);
     return 2;
   }

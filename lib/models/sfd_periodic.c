@@ -196,7 +196,6 @@ static void orbit_fill(const pdisc *d, const whirl_branch *b, size_t i,
   o->f2 = synchronous ? NAN
                       : fabs(o->Omega - 2.0 * M_PI / o->period) / o->Omega;
   o->max_mult = NAN;
-  if (getenv("WHIRL_DBG") && o->Omega < 8.66) { fprintf(stderr, "DBG %.10f t%d:", o->Omega, q->type); for (size_t k = 0; k < b->nspec; ++k) fprintf(stderr, " (%.8f %.8f)", q->spec_re[k], q->spec_im[k]); fprintf(stderr, "\n"); }
   o->mult_re = o->mult_im = NAN;
   for (size_t k = 0; k < b->nspec; ++k) {
     const double m = hypot(q->spec_re[k], q->spec_im[k]);
@@ -258,6 +257,8 @@ static void cont_defaults(whirl_cont_options *co,
   co->nmx = o->nmx;
   co->p_min = o->omega_min;
   co->p_max = o->omega_max;
+  co->uz = o->nuz ? o->uz : NULL;
+  co->nuz = o->nuz < 8 ? o->nuz : 8;
   co->detect_bp = 0; /* cycles of a forced system: no symmetry-breaking
                         branches are sought here */
   co->linsol = o->linsol;
@@ -570,7 +571,6 @@ int whirl_sfd_nonsync(const double *p0, double omega_start,
     if (rc == WHIRL_OK) {
       out->steps = st.steps;
       out->newton_its = st.newton_its;
-      if (getenv("WHIRL_DBG")) fprintf(stderr, "STATS steps %zu rej %zu newton %zu f %zu jac %zu fact %zu eig %zu special %zu\n", st.steps, st.rejected, st.newton_its, st.f_evals, st.jac_evals, st.factorizations, st.eig_evals, st.special);
       rc = add_branch(out, &d, br, 0, 0);
     }
   }

@@ -80,6 +80,31 @@ WHIRL_API double whirl_colloc_period(const whirl_colloc *c, const double *X,
  * restarts its continuation from the remapped X. */
 WHIRL_API int whirl_colloc_adapt(whirl_colloc *c, double *X);
 
+/* Branch switching at a period doubling: from the orbit X (period T) at a
+ * PD point at parameters p, fill the collocation object c2 (same model and
+ * options, NTST typically doubled; for forced models nu doubled) with the
+ * doubled orbit X2 (the orbit traversed twice, period 2T) and the direction
+ * D2[size(c2) + 1] (last entry: the free parameter, 0) along which the
+ * period-2 branch leaves: the Floquet eigenvector φ of the multiplier −1
+ * carried along the orbit by the variational equations, φ(t + T) = −φ(t).
+ * Start the new branch with whirl_cont_start_direction(cont, X2, p, D2).
+ *
+ * If c2 has NTST2 = 2·NTST and the same NCOL, its mesh is set to c's mesh
+ * traversed twice (τ/2, then 1/2 + τ/2) and X2 holds X's node values twice,
+ * so X2 solves c2's equations exactly as X solves c's; otherwise X2 is c's
+ * piecewise polynomial evaluated at c2's nodes.  The phase reference of c2
+ * (autonomous models) is set to X2.  D2 has unit Euclidean norm, zero
+ * period (T) entry and zero parameter entry; its sign is arbitrary (both
+ * signs give the same period-2 orbit, shifted by T).  The eigenvector is the
+ * right singular vector of M + I for the smallest singular value, M the
+ * monodromy matrix at tolerance floquet_rtol.  WHIRL_EINVAL for NULL
+ * arguments, c2 == c, or a c2 that does not match c (state dimension,
+ * number of parameters, autonomous/forced, forcing parameter, t0, and for
+ * forced models nu2 = 2 nu); WHIRL_ENOMEM, or the integrator's error. */
+WHIRL_API int whirl_colloc_pd_switch(const whirl_colloc *c, const double *X,
+                                     const double *p, whirl_colloc *c2,
+                                     double *X2, double *D2);
+
 /* Current mesh: tau[NTST + 1]. */
 WHIRL_API const double *whirl_colloc_mesh(const whirl_colloc *c);
 

@@ -32,7 +32,10 @@ typedef struct whirl_sfd_periodic_options {
   double omega_min, omega_max; /* defaults 0.05, 20 */
   double ds, ds_max;   /* arclength steps, defaults 1e-2 (the paper's), 0.2 */
   size_t nmx;          /* steps per branch half, default 20000 */
-  int linsol;          /* whirl_linsol_kind (dense default) */
+  int linsol;          /* whirl_linsol_kind (dense default; collocation
+                          always uses the sparse solver) */
+  double uz[8];        /* speeds at which to report points (UZ) */
+  size_t nuz;
 } whirl_sfd_periodic_options;
 
 WHIRL_API void whirl_sfd_periodic_options_default(
