@@ -44,6 +44,7 @@ static void help(FILE *f) {
 "  --harmonics N   HBM harmonics                       (8, the paper's)\n"
 "  --oversampling K  HBM: K (2N+1) time samples (AFT)  (10, the paper's)\n"
 "  --ntst N, --ncol C  collocation mesh                (40, 4)\n"
+"  --uz W          hbm/colloc: also report the orbits at Omega = W (UZ)\n"
 "  --ds S          first continuation step  (0.02; hbm/colloc 0.01, the paper's)\n"
 "  --ds-max S      largest continuation step (DSMAX)   (0.2)\n"
 "  --sparse        use the sparse (UMFPACK) linear solver\n"
@@ -186,6 +187,7 @@ static void print_special(FILE *f, const row *r, int type) {
                    : type == WHIRL_PT_TR ? "Neimark-Sacker (torus, TR) of the orbit"
                    : type == WHIRL_PT_PD ? "period doubling of the orbit"
                    : type == WHIRL_PT_BP ? "branch point"
+                   : type == WHIRL_PT_UZ ? "orbit at the requested speed"
                                          : "end of the branch";
   fprintf(f, "%s\t%d\t%d\t%.15g\t%.15g\t%.15g\t%d\t%.10g\t%s\n", r->type, r->branch,
           r->label, r->Om, r->eps, r->phase, r->stable, r->maxmult, ff);
@@ -310,7 +312,7 @@ int cmd_sfd_response(int argc, char **argv) {
   whirl_sfd_periodic_options_default(&po);
   const char *dir = "sfd-response", *method_name = NULL;
   int plot = 1, quiet = 0, sparse = 0, noplot = 0;
-  double omega_min = NAN;
+  double omega_min = NAN, uz = NAN;
   const cli_opt opts[] = {
       {"--lambda", CLI_DOUBLE, &p[WHIRL_SFD_LAMBDA]},
       {"--delta", CLI_DOUBLE, &p[WHIRL_SFD_DELTA]},
@@ -325,6 +327,7 @@ int cmd_sfd_response(int argc, char **argv) {
       {"--oversampling", CLI_SIZE, &po.oversampling},
       {"--ntst", CLI_SIZE, &po.ntst},
       {"--ncol", CLI_SIZE, &po.ncol},
+      {"--uz", CLI_DOUBLE, &uz},
       {"--sparse", CLI_FLAG, &sparse},
       {"--out", CLI_STRING, &dir},
       {"--no-plot", CLI_FLAG, &noplot},
@@ -388,6 +391,15 @@ int cmd_sfd_response(int argc, char **argv) {
   if (!(o.ds > 0) || !(o.ds_max >= o.ds)) {
     cli_error(CMD, "need 0 < --ds <= --ds-max (got %g and %g)", o.ds, o.ds_max);
     return 2;
+  }
+  if (uz == uz) {
+    if (!periodic || !(uz > o.omega_min && uz < o.omega_max)) {
+      cli_error(CMD, "--uz needs --method hbm or colloc and omega-min < W < omega-max "
+                     "(got %g)", uz);
+      return 2;
+    }
+    po.uz[0] = uz;
+    po.nuz = 1;
   }
   po.method = method;
   po.omega_min = o.omega_min;

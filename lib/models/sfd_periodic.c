@@ -516,6 +516,17 @@ static int cycle_from_integration(const double *p, size_t m, double *xs,
   rc = whirl_ode_sample(ode, *T / (double)m, m - 1, take_sample, &sc);
   whirl_ode_free(ode);
   if (rc != WHIRL_OK) return fail(errbuf, errlen, rc, "nonsync: sampling the cycle failed");
+  /* a circular orbit is an equilibrium of the rotating frame: its decaying
+   * oscillation also returns to the section, but with no amplitude left */
+  double spread = 0.0;
+  for (size_t k = 1; k < m; ++k)
+    for (int i = 0; i < 2; ++i) spread = fmax(spread, fabs(xs[4 * k + i] - xs[i]));
+  if (spread < 1e-6)
+    return fail(errbuf, errlen, WHIRL_ENOCONV,
+                "nonsync: from rest at Omega = %g the rotor settles on a circular "
+                "orbit (an equilibrium of the rotating frame), not on a "
+                "nonsynchronous cycle; start at another speed (--omega-start)",
+                p[WHIRL_SFD_OMEGA]);
   return WHIRL_OK;
 }
 

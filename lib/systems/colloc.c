@@ -20,6 +20,7 @@
 
 #include <whirl/colloc.h>
 #include <whirl/floquet.h>
+#include <whirl/ode.h>
 
 #define COLLOC_PI 3.14159265358979323846
 #define COLLOC_MAXCOL 7
@@ -236,6 +237,9 @@ static int colloc_F(const double *X, const double *p, double *F, void *data) {
   const whirl_problem *pr = c->prob;
   const size_t n = c->n, m = c->ncol, N = c->ntst;
   const double T = period_of(c, X, p);
+  /* a non-positive period (a step past ω = 0): recoverable, the core
+   * shortens the step */
+  if (!(T > 0) || !isfinite(T)) return 1;
   for (size_t i = 0; i < N; ++i) {
     const double h = c->mesh[i + 1] - c->mesh[i];
     for (size_t g = 0; g < m; ++g) {
@@ -397,6 +401,7 @@ static int colloc_spectrum(const double *X, const double *p, const double *J,
   whirl_colloc *c = data;
   (void)J;
   const double T = period_of(c, X, p);
+  if (!(T > 0) || !isfinite(T)) return 1; /* recoverable, as in F */
   c->rhs_fail = 0;
   int rc = whirl_floquet_multipliers(&c->shim, p, c->t0, X, T, c->aut,
                                      c->floquet_rtol, 0.0, re, im, mcap, NULL,
@@ -724,4 +729,158 @@ int whirl_colloc_adapt(whirl_colloc *c, double *X) {
     set_reference(c, c->ref);
   }
   return WHIRL_OK;
+}
+
+/* ------------------------------------------------------------ PD switch */
+
+/* The model and its variational equations y = (x, φ):
+ * x' = f(t, x, p), φ' = f_x(t, x, p) φ. */
+typedef struct pd_aug {
+  const whirl_problem *prob;
+  double *J, *work; /* n*n, 2n */
+} pd_aug;
+
+static int pd_aug_rhs(double t, const double *y, const double *p, double *f,
+                      void *data) {
+  const pd_aug *a = data;
+  const whirl_problem *pr = a->prob;
+  const size_t n = pr->n;
+  int rc = pr->rhs(t, y, p, f, pr->data);
+  if (rc != 0) return rc;
+  rc = pr->jac_x ? pr->jac_x(t, y, p, a->J, pr->data)
+                 : whirl_fd_jac_x(pr, t, y, p, a->J, a->work);
+  if (rc != 0) return rc;
+  for (size_t r = 0; r < n; ++r) {
+    double s = 0.0;
+    for (size_t q = 0; q < n; ++q) s += a->J[r + n * q] * y[n + q];
+    f[n + r] = s;
+  }
+  return 0;
+}
+
+/* φ at the increasing times t0 + s[k], s[k] ∈ [0, T], integrating from
+ * (t0, y0): out[n*k ...] = sign φ(t0 + s[k]); y scratch[2n]. */
+static int pd_sample_phi(whirl_ode *ode, size_t n, const double *y0,
+                         double t0, double T, const double *s, size_t cnt,
+                         double sign, double *out, double *y) {
+  int rc = whirl_ode_reset(ode, t0, y0);
+  if (rc != WHIRL_OK) return rc;
+  for (size_t k = 0; k < cnt; ++k) {
+    const double t = t0 + s[k];
+    if (s[k] <= 0.0) {
+      memcpy(y, y0, 2 * n * sizeof *y);
+    } else {
+      while (whirl_ode_t(ode) < t)
+        if ((rc = whirl_ode_step(ode, t0 + T)) != WHIRL_OK) return rc;
+      if ((rc = whirl_ode_dense(ode, t, y)) != WHIRL_OK) return rc;
+    }
+    for (size_t r = 0; r < n; ++r) out[n * k + r] = sign * y[n + r];
+  }
+  return WHIRL_OK;
+}
+
+int whirl_colloc_pd_switch(const whirl_colloc *c, const double *X,
+                           const double *p, whirl_colloc *c2, double *X2,
+                           double *D2) {
+  if (!c || !X || !p || !c2 || !X2 || !D2 || c2 == c) return WHIRL_EINVAL;
+  const whirl_problem *pr = c->prob;
+  const size_t n = c->n;
+  if (c2->n != n || c2->prob->npar != pr->npar || c2->aut != c->aut ||
+      c2->fpar != c->fpar || c2->t0 != c->t0 ||
+      (!c->aut && c2->nu != 2 * c->nu))
+    return WHIRL_EINVAL;
+  const double T = period_of(c, X, p);
+  if (!(T > 0) || !isfinite(T)) return WHIRL_EINVAL;
+  for (size_t q = 0; q < c->nx; ++q)
+    if (!isfinite(X[q])) return WHIRL_EINVAL;
+
+  const size_t N = c->ntst, m = c->ncol, N2 = c2->ntst, m2 = c2->ncol;
+  const size_t nn2 = c2->nnodes, nx2 = c2->nx;
+  double *buf = malloc((2 * n * n + 9 * n + 2 * nn2) * sizeof *buf);
+  if (!buf) return WHIRL_ENOMEM;
+  double *M = buf, *Ja = M + n * n, *v = Ja + n * n, *xT = v + n,
+         *y0 = xT + n, *y = y0 + 2 * n, *wk = y + 2 * n, *tau2 = wk + 2 * n,
+         *sq = tau2 + nn2;
+  whirl_ode *ode = NULL;
+  pd_aug aug = {pr, Ja, wk};
+  whirl_problem ap = *pr;
+  size_t half = 0; /* c2's nodes with t = 2T τ2 <= T */
+  double nrm = 0.0;
+  int rc;
+
+  /* the doubled orbit on c2's nodes */
+  if (N2 == 2 * N && m2 == m) {
+    for (size_t i = 0; i <= N; ++i) {
+      c2->mesh[i] = 0.5 * c->mesh[i];
+      c2->mesh[N + i] = 0.5 + 0.5 * c->mesh[i];
+    }
+    c2->mesh[N] = 0.5;
+    c2->mesh[N2] = 1.0;
+    for (size_t j2 = 0; j2 < nn2; ++j2) {
+      const size_t j = j2 <= N * m ? j2 : j2 - N * m;
+      memcpy(X2 + n * j2, X + n * j, n * sizeof *X2);
+    }
+  }
+  for (size_t i = 0; i < N2; ++i) {
+    const double h = c2->mesh[i + 1] - c2->mesh[i];
+    for (size_t k = 0; k < m2; ++k)
+      tau2[i * m2 + k] = c2->mesh[i] + h * (double)k / (double)m2;
+  }
+  tau2[nn2 - 1] = 1.0;
+  if (!(N2 == 2 * N && m2 == m))
+    for (size_t j2 = 0; j2 < nn2; ++j2) {
+      double t = 2.0 * tau2[j2];
+      if (t > 1.0) t -= 1.0;
+      eval_poly(n, N, m, c->mesh, X, t, X2 + n * j2);
+    }
+  if (c2->aut) X2[nx2 - 1] = 2.0 * T;
+
+  /* the Floquet eigenvector of the multiplier −1 at τ = 0 */
+  rc = whirl_ode_monodromy(pr, p, c->t0, X, T, c->floquet_rtol, 1e-13, xT, M,
+                           NULL, NULL, 0);
+  if (rc == WHIRL_OK) rc = whirl_floquet_real_eigvec(n, M, -1.0, v);
+  if (rc != WHIRL_OK) goto done;
+
+  /* φ at c2's node times t = 2T τ2: φ(t) on [0, T], −φ(t − T) beyond */
+  ap.name = "pd-variational";
+  ap.n = 2 * n;
+  ap.rhs = pd_aug_rhs;
+  ap.jac_x = NULL;
+  ap.jac_p = NULL;
+  ap.x_names = NULL;
+  ap.data = &aug;
+  ode = whirl_ode_alloc(&ap, p);
+  if (!ode) {
+    rc = WHIRL_ENOMEM;
+    goto done;
+  }
+  rc = whirl_ode_set_tolerances(ode, c->floquet_rtol, 1e-13);
+  if (rc != WHIRL_OK) goto done;
+  memcpy(y0, X, n * sizeof *y0);
+  memcpy(y0 + n, v, n * sizeof *y0);
+  while (half < nn2 && 2.0 * tau2[half] <= 1.0) {
+    sq[half] = fmin(2.0 * T * tau2[half], T);
+    ++half;
+  }
+  for (size_t j2 = half; j2 < nn2; ++j2)
+    sq[j2] = fmin(fmax(2.0 * T * tau2[j2] - T, 0.0), T);
+  rc = pd_sample_phi(ode, n, y0, c->t0, T, sq, half, 1.0, D2, y);
+  if (rc == WHIRL_OK && half < nn2)
+    rc = pd_sample_phi(ode, n, y0, c->t0, T, sq + half, nn2 - half, -1.0,
+                       D2 + n * half, y);
+  if (rc != WHIRL_OK) goto done;
+  for (size_t q = n * nn2; q <= nx2; ++q) D2[q] = 0.0; /* T, parameter */
+  for (size_t q = 0; q < n * nn2; ++q) nrm += D2[q] * D2[q];
+  nrm = sqrt(nrm);
+  if (!(nrm > 0) || !isfinite(nrm)) {
+    rc = WHIRL_EBADFUNC;
+    goto done;
+  }
+  for (size_t q = 0; q < n * nn2; ++q) D2[q] /= nrm;
+  if (c2->aut) set_reference(c2, X2);
+  rc = WHIRL_OK;
+done:
+  whirl_ode_free(ode);
+  free(buf);
+  return rc;
 }
