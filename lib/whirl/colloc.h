@@ -100,7 +100,13 @@ WHIRL_API int whirl_colloc_adapt(whirl_colloc *c, double *X);
  * monodromy matrix at tolerance floquet_rtol.  WHIRL_EINVAL for NULL
  * arguments, c2 == c, or a c2 that does not match c (state dimension,
  * number of parameters, autonomous/forced, forcing parameter, t0, and for
- * forced models nu2 = 2 nu); WHIRL_ENOMEM, or the integrator's error. */
+ * forced models nu2 = 2 nu); WHIRL_ENOMEM, or the integrator's error (c2's
+ * mesh may then have been changed already).
+ * The start is a branch point of c2's system (the period-1 orbit traversed
+ * twice crosses the period-2 branch there), where the bordered Jacobian is
+ * singular: give the continuation a first step ds that leaves its
+ * neighbourhood (for Lorenz, ds ≈ 0.02·sqrt(size(c2)) in the unweighted
+ * arclength norm); a very small one can make Newton fail down to DSMIN. */
 WHIRL_API int whirl_colloc_pd_switch(const whirl_colloc *c, const double *X,
                                      const double *p, whirl_colloc *c2,
                                      double *X2, double *D2);
