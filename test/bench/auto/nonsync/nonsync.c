@@ -6,7 +6,10 @@
  *   w'' + 2iΩw' − Ω²w + 2ζ(w' + iΩw) + w = δΩ² + f(w, w' + iΩw).
  * The right-hand side is the one of ../sfd/sfd.c (equilibria benchmark).
  * PAR(1) = Ω, PAR(2) = λ, PAR(3) = δ, PAR(4) = ζ; PAR(11) = T, the period
- * in the rotating frame (AUTO's convention for IPS = 2).
+ * in the rotating frame (AUTO's convention for IPS = 2).  PAR(5) = Ω − 8.59
+ * is an output measure set in PVLS (never a continuation parameter): AUTO
+ * prints 11 significant digits, so Ω itself only to ~1e-10, Ω − 8.59 near
+ * the fold (≈ 6.7e-5) to ~1e-15.
  * The start orbit comes from the data file nonsync.dat (constant dat,
  * written by start_orbit.c); AUTO sets PAR(11) from its time column before
  * calling STPNT, so STPNT sets only Table 1 and leaves PAR(11) alone.
@@ -74,6 +77,7 @@ int stpnt(integer ndim, doublereal t, doublereal *u, doublereal *par)
   par[1] = 0.0503; /* λ (Table 1) */
   par[2] = 0.3;    /* δ (Table 1) */
   par[3] = 0.0;    /* ζ */
+  par[4] = 0.0;    /* Ω − 8.59, output only */
   return 0;
 }
 
@@ -107,9 +111,11 @@ int fopt(integer ndim, const doublereal *u, const integer *icp,
   return 0;
 }
 
-/* No output measures beyond AUTO's own (L2 norm, max of each U(i), T). */
+/* Output measure: PAR(5) = Ω − 8.59, to read the fold of cycles with more
+ * digits than AUTO prints for Ω (the b-file's E format). */
 int pvls(integer ndim, const doublereal *u, doublereal *par)
 {
-  (void)ndim; (void)u; (void)par;
+  (void)ndim; (void)u;
+  par[4] = par[0] - 8.59;
   return 0;
 }

@@ -55,6 +55,7 @@ die() { echo "run_auto.sh: error: $*" >&2; exit 1; }
 
 AUTO_DIR=${AUTO_DIR:-/usr/lib/auto-07p}
 export AUTO_DIR
+NCPU=$(nproc --all)  # plain nproc honours OMP_NUM_THREADS
 if [ -n "$OMP1" ]; then OMP_NUM_THREADS=1; export OMP_NUM_THREADS; fi
 [ -x "$PY" ] || die "$PY not found"
 [ -d "$AUTO_DIR/python/auto" ] || die "AUTO-07p Python modules not found in $AUTO_DIR/python"
@@ -131,7 +132,7 @@ done
 cmp -s summary.txt summary_exe.txt || die "bare nonsync.exe runs differ from the AUTO Python runs"
 
 echo "AUTO-07p $(dpkg-query -W -f='${Version}' auto-07p 2>/dev/null || echo '?') ($AUTO_DIR)," \
-     "$(nproc) CPU(s): $(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)," \
+     "$NCPU CPU(s): $(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)," \
      "OMP_NUM_THREADS=${OMP_NUM_THREADS:-unset}"
 echo "tolerances: $([ -n "$TIGHT" ] && echo 'EPSL=EPSU=1e-10 EPSS=1e-8' || echo 'EPSL=EPSU=1e-7 EPSS=1e-5 (AUTO defaults)');" \
      "diagnostics: $([ -n "$IID0" ] && echo 'IID=0' || echo 'IID=2 (AUTO default)')"

@@ -187,23 +187,24 @@ def run_auto():
 
 def read_b(path):
     """Labelled points of an AUTO b-file for IPS = 2: (type, PT, Ω, T,
-    stable, the Ω string as printed) per label, and the number of the last
-    point.  Columns: BR PT TY LAB Omega L2-NORM MAX u .. MAX dv PERIOD."""
+    stable, the Ω string as printed, Ω − 8.59 as printed) per label, and
+    the number of the last point.  Columns: BR PT TY LAB Omega L2-NORM
+    MAX u .. MAX dv PERIOD dOmega."""
     pts, last = [], 0
     for line in open(path):
         w = line.split()
-        if len(w) < 11 or w[0] == "0":
+        if len(w) < 12 or w[0] == "0":
             continue
         try:
-            br, pt, ty, lab = (int(w[0]), int(w[1]), int(w[2]), int(w[3]))
-            vals = [float(v.replace("D", "E")) for v in w[4:11]]
+            pt, ty, lab = int(w[1]), int(w[2]), int(w[3])
+            vals = [float(v.replace("D", "E")) for v in w[4:12]]
         except ValueError:
             continue
         last = max(last, abs(pt))
         if lab != 0:
             om, period = vals[0], vals[6]
             pts.append((TYPES.get(ty, str(ty)), abs(pt), om, period,
-                        pt < 0, w[4]))
+                        pt < 0, w[4], w[11]))
     return pts, last
 
 
@@ -225,11 +226,11 @@ def summary():
     print("%-3s %-2s %5s  %-18s %-18s %s" % ("run", "TY", "PT", "Omega",
                                              "period (rot. frame)", "stable"))
     lps, ends, others = [], [], []
-    for name, ty, pt, om, period, stable, om_s in table:
+    for name, ty, pt, om, period, stable, om_s, dom_s in table:
         print("%-3s %-2s %5d  %-18s %-18.10E %s"
               % (name, ty, pt, om_s, period, "yes" if stable else "no"))
         if ty == "LP":
-            lps.append((name, om, om_s, period))
+            lps.append((name, om, om_s, period, dom_s))
         elif ty in ("UZ", "EP", "MX") and pt > 1:
             ends.append((name, ty, om))
         elif ty not in ("EP", "UZ"):
@@ -245,19 +246,32 @@ def summary():
     if [lp[0] for lp in lps] != ["bw"]:
         raise Failure("expected one LP (fold of cycles) in run bw, AUTO "
                       "found %r" % [(lp[0], lp[1]) for lp in lps])
+    for lp in lps:
+        print(fold_line(lp)[0])
     if others:
         print("other special points: %s"
               % ", ".join("%s %s at Omega=%.10g" % o for o in others))
     return lps
 
 
+def fold_line(lp):
+    """The LP as AUTO prints it, and Ω = 8.59 + PAR(5) with the digits that
+    PAR(5) = Ω − 8.59 (PVLS) adds."""
+    name, om, om_s, period, dom_s = lp
+    dom = float(dom_s.replace("D", "E"))
+    return ("LP (fold of cycles), run %s: Omega = %s (b-file), "
+            "8.59 + dOmega = 8.59 + %s = %.15f, period %.10E"
+            % (name, om_s, dom_s, 8.59 + dom, period)), 8.59 + dom
+
+
 def check(lps):
     print("fold of cycles: AUTO LP vs whirl (Omega = %.10f):" % OM_FOLD_REF)
     worst = 0.0
-    for name, om, om_s, period in lps:
+    for lp in lps:
+        om = fold_line(lp)[1]
         d = om - OM_FOLD_REF
-        print("  run %s: Omega = %s (period %.10E), dOmega = %.2e"
-              % (name, om_s, period, d))
+        print("  run %s: Omega(AUTO) = %.15f, minus %.10f = %.2e"
+              % (lp[0], om, OM_FOLD_REF, d))
         worst = max(worst, abs(d))
     if worst > 1e-6:
         raise Failure("AUTO LP differs from whirl's fold by %.3g in Omega"
