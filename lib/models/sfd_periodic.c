@@ -474,33 +474,38 @@ static int cycle_from_integration(const double *p, size_t m, double *xs,
   const double Om = p[WHIRL_SFD_OMEGA], Tf = 2.0 * M_PI / Om;
   const double x0[4] = {0, 0, 0, 0};
   whirl_ode_reset(ode, 0.0, x0);
-  int rc = whirl_ode_evolve(ode, 1500.0 * Tf);
+  /* settle: 150 forcing periods, then look for a closed return to the
+   * section; keep integrating (up to 1500 periods) until one is found */
+  int rc = whirl_ode_evolve(ode, 150.0 * Tf);
+  enum { NC = 40 };
+  double tc[NC], xc[NC][4], xe[4], te, scale = 0;
+  size_t nc = 0, kret = 0;
+  for (int attempt = 0; rc == WHIRL_OK && attempt < 8 && !kret; ++attempt) {
+    nc = 0;
+    const double t_end = whirl_ode_t(ode) + 150.0 * Tf;
+    while (nc < NC && whirl_ode_t(ode) < t_end) {
+      if ((rc = whirl_ode_step(ode, t_end)) < 0) break;
+      rc = WHIRL_OK;
+      if (whirl_ode_find_event(ode, g_du, NULL, -1, 0.0, &te, xe) == 1) {
+        tc[nc] = te;
+        memcpy(xc[nc], xe, sizeof xe);
+        ++nc;
+      }
+    }
+    /* the period: the first return of the section point to itself */
+    scale = 0;
+    for (size_t k = 0; k < nc; ++k) scale = fmax(scale, hypot(xc[k][0], xc[k][1]));
+    for (size_t k = 1; k < nc && !kret; ++k) {
+      double dist = 0;
+      for (int i = 0; i < 4; ++i) dist = fmax(dist, fabs(xc[k][i] - xc[0][i]));
+      if (dist < 1e-7 * fmax(scale, 1e-3)) kret = k;
+    }
+  }
   if (rc != WHIRL_OK) {
     rc = fail(errbuf, errlen, rc, "nonsync: integration from rest at Omega = %g "
                                   "failed: %s", Om, whirl_ode_errmsg(ode));
     whirl_ode_free(ode);
     return rc;
-  }
-  enum { NC = 40 };
-  double tc[NC], xc[NC][4], xe[4], te;
-  size_t nc = 0;
-  const double t_end = whirl_ode_t(ode) + 400.0 * Tf;
-  while (nc < NC && whirl_ode_t(ode) < t_end) {
-    if ((rc = whirl_ode_step(ode, t_end)) < 0) break;
-    if (whirl_ode_find_event(ode, g_du, NULL, -1, 0.0, &te, xe) == 1) {
-      tc[nc] = te;
-      memcpy(xc[nc], xe, sizeof xe);
-      ++nc;
-    }
-  }
-  /* the period: the first return of the section point to itself */
-  double scale = 0;
-  for (size_t k = 0; k < nc; ++k) scale = fmax(scale, hypot(xc[k][0], xc[k][1]));
-  size_t kret = 0;
-  for (size_t k = 1; k < nc && !kret; ++k) {
-    double dist = 0;
-    for (int i = 0; i < 4; ++i) dist = fmax(dist, fabs(xc[k][i] - xc[0][i]));
-    if (dist < 1e-6 * fmax(scale, 1e-3)) kret = k;
   }
   if (nc < 2 || !kret || scale < 1e-9) {
     whirl_ode_free(ode);
