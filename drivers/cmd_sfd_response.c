@@ -529,7 +529,7 @@ int cmd_sfd_response(int argc, char **argv) {
         hi = fmax(hi, T.rows[b][i].Om);
         if (periodic) res_max = fmax(res_max, T.rows[b][i].residual);
       }
-      fprintf(stderr, "  branch %d: %zu points, Omega in [%.6g, %.6g], %s; ended: %s", b + 1 > 0 ? (int)(b + 1) : 0,
+      fprintf(stderr, "  branch %d: %zu points, Omega in [%.6g, %.6g], %s; ended: %s", (int)(b + 1),
               T.len[b], lo, hi, !T.isola[b] ? "reaches omega-min (main resonance branch)" :
               "isolated branch (isola)", whirl_stop_reason_name(T.stop[b]));
       if (periodic) fprintf(stderr, "; max residual %.1e", res_max);

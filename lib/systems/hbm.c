@@ -29,7 +29,6 @@ struct whirl_hbm {
   double *B;            /* basis B[h*M + j] */
   double *P;            /* projection P[h*M + j] */
   double *xs, *fs;      /* M*n samples of x and f */
-  double *Js;           /* n*n Jacobian at one sample */
   double *G;            /* M*n*n Jacobian samples */
   double *Jd;           /* size*size dense Jacobian (sparse values gathered) */
   double *ck, *sk;      /* cos kθ_j, sin kθ_j for k = 0..2N: ck[k*M + j] */
@@ -314,7 +313,6 @@ whirl_hbm *whirl_hbm_alloc(const whirl_problem *prob,
   h->xs = malloc(M * n * sizeof *h->xs);
   h->fs = malloc(M * n * sizeof *h->fs);
   h->G = malloc(M * n * n * sizeof *h->G);
-  h->Js = malloc(n * n * sizeof *h->Js);
   h->Jd = malloc(S * S * sizeof *h->Jd);
   h->ck = malloc((2 * N + 1) * M * sizeof *h->ck);
   h->sk = malloc((2 * N + 1) * M * sizeof *h->sk);
@@ -323,7 +321,7 @@ whirl_hbm *whirl_hbm_alloc(const whirl_problem *prob,
   h->coef = malloc(n * L * sizeof *h->coef);
   h->work = malloc(2 * n * sizeof *h->work);
   if (!h->scale || !h->mask || !h->B || !h->P || !h->xs || !h->fs || !h->G ||
-      !h->Js || !h->Jd || !h->coef || !h->work || !h->ck || !h->sk || !h->Cg ||
+      !h->Jd || !h->coef || !h->work || !h->ck || !h->sk || !h->Cg ||
       !h->Sg) {
     whirl_hbm_free(h);
     return NULL;
@@ -384,7 +382,6 @@ void whirl_hbm_free(whirl_hbm *h) {
   free(h->xs);
   free(h->fs);
   free(h->G);
-  free(h->Js);
   free(h->Jd);
   free(h->ck);
   free(h->sk);
