@@ -24,6 +24,11 @@ const char *whirl_point_type_name(int type) {
   case WHIRL_PT_UZ: return "UZ";
   case WHIRL_PT_PD: return "PD";
   case WHIRL_PT_TR: return "TR";
+  case WHIRL_PT_CP: return "CP";
+  case WHIRL_PT_BT: return "BT";
+  case WHIRL_PT_ZH: return "ZH";
+  case WHIRL_PT_IS: return "IS";
+  case WHIRL_PT_MG: return "MG";
   default: return "??";
   }
 }
@@ -60,6 +65,7 @@ void whirl_cont_options_default(whirl_cont_options *o) {
   o->max_angle = 0.2;
   o->tangent_predictor = 0;
   o->detect_lp = o->detect_bp = o->detect_hb = o->detect_pd = 1;
+  o->detect_sys = 1;
   o->stop_at_bp = 0;
   o->detect_loop = 1;
   o->loc_tol = 1e-12;
@@ -103,7 +109,12 @@ static int state_alloc(whirl_cont *c, cont_state *st) {
   size_t ns = c->sys.nspec ? c->sys.nspec : 1;
   st->re = calloc(ns, sizeof *st->re);
   st->im = calloc(ns, sizeof *st->im);
-  return st->X && st->t && st->p && st->re && st->im ? 0 : -1;
+  size_t nt = c->sys.test ? c->sys.ntest : 0;
+  st->tau = calloc(nt ? nt : 1, sizeof *st->tau);
+  st->ttype = calloc(nt ? nt : 1, sizeof *st->ttype);
+  return st->X && st->t && st->p && st->re && st->im && st->tau && st->ttype
+             ? 0
+             : -1;
 }
 
 static void state_free(cont_state *st) {
@@ -112,12 +123,22 @@ static void state_free(cont_state *st) {
   free(st->p);
   free(st->re);
   free(st->im);
+  free(st->tau);
+  free(st->ttype);
 }
 
 void cont_state_copy(const whirl_cont *c, cont_state *dst,
                      const cont_state *src) {
   double *X = dst->X, *t = dst->t, *p = dst->p, *re = dst->re, *im = dst->im;
+  double *tau = dst->tau;
+  int *ttype = dst->ttype;
   *dst = *src;
+  dst->tau = tau;
+  dst->ttype = ttype;
+  if (c->sys.test && c->sys.ntest) {
+    memcpy(tau, src->tau, c->sys.ntest * sizeof *tau);
+    memcpy(ttype, src->ttype, c->sys.ntest * sizeof *ttype);
+  }
   dst->X = X;
   dst->t = t;
   dst->p = p;
@@ -185,7 +206,7 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   if (!c->fp || !c->f || !c->rhs || !c->row || !c->work || !c->dir ||
       !c->Xprev || !c->Xstart)
     goto nomem;
-  c->qcap = 2 * (8 + opt->nuz);
+  c->qcap = 2 * (8 + opt->nuz + (sys->test ? sys->ntest : 0));
   c->queue = calloc(c->qcap, sizeof *c->queue);
   if (!c->queue) goto nomem;
   if (state_alloc(c, &c->cur) || state_alloc(c, &c->trial) ||
@@ -411,6 +432,11 @@ int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
       multiplier_tests(st, m);
     else
       eigenvalue_tests(st, m);
+  }
+  if (c->sys.test && c->sys.ntest) {
+    for (size_t k = 0; k < c->sys.ntest; ++k) st->ttype[k] = 0;
+    rc = c->sys.test(st->X, st->p, st->tau, st->ttype, c->sys.data);
+    if ((rc = classify(c, rc, "test functions")) != 0) return rc;
   }
   st->tests_valid = 1;
   return 0;
@@ -736,8 +762,12 @@ int whirl_cont_step(whirl_cont *c) {
   }
 
   /* ---- events between cur (s = 0) and trial (s = ds) */
-  event evs[8 + 64];
-  size_t nev = 0, maxev = 8 + (o->nuz < 64 ? o->nuz : 64);
+  event evs[8 + 64 + 16];
+  const size_t nsys = c->sys.test && o->detect_sys
+                          ? (c->sys.ntest < 16 ? c->sys.ntest : 16)
+                          : 0;
+  size_t nev = 0, maxev = 8 + (o->nuz < 64 ? o->nuz : 64) + nsys;
+  size_t nslot = 0; /* queue tail slots used by localisations */
   const cont_state *a = &c->cur, *b = &c->trial;
   int want[EV_NKIND] = {0};
   if (a->tests_valid) {
@@ -760,7 +790,7 @@ int whirl_cont_step(whirl_cont *c) {
   }
   for (int ev = 0; ev < EV_NKIND; ++ev) {
     if (!want[ev] || nev >= maxev) continue;
-    cont_state *q = &c->queue[c->qcap - 1 - nev];
+    cont_state *q = &c->queue[c->qcap - 1 - nslot++];
     if (cont_locate(c, ev, 0, b, q) == 0) {
       evs[nev].ev = ev;
       evs[nev].k = 0;
@@ -777,7 +807,7 @@ int whirl_cont_step(whirl_cont *c) {
   }
   for (size_t k = 0; k < o->nuz && nev < maxev; ++k) {
     if (sgn(a->X[n] - o->uz[k]) * sgn(b->X[n] - o->uz[k]) < 0) {
-      cont_state *q = &c->queue[c->qcap - 1 - nev];
+      cont_state *q = &c->queue[c->qcap - 1 - nslot++];
       if (cont_locate(c, EV_UZ, k, b, q) == 0) {
         evs[nev].ev = EV_UZ;
         evs[nev].k = k;
@@ -785,6 +815,24 @@ int whirl_cont_step(whirl_cont *c) {
         ++nev;
       }
     }
+  }
+  /* the system's own tests (codimension-two points on fold curves) */
+  for (size_t k = 0; k < nsys && a->tests_valid && nev < maxev; ++k) {
+    if (!(sgn(a->tau[k]) * sgn(b->tau[k]) < 0)) continue;
+    cont_state *q = &c->queue[c->qcap - 1 - nslot++];
+    if (cont_locate(c, EV_SYS, k, b, q) != 0 || q->ttype[k] == 0) continue;
+    /* A cusp or a merge is also a turning point of the fold curve in the
+     * continuation parameter: report it once, with its own name. */
+    for (size_t i = 0; i < nev; ++i)
+      if (evs[i].ev == EV_LP &&
+          fabs(evs[i].st->s - q->s) <= 1e-6 * fabs(c->ds) + 1e-12) {
+        evs[i] = evs[--nev];
+        break;
+      }
+    evs[nev].ev = EV_SYS;
+    evs[nev].k = k;
+    evs[nev].st = q;
+    ++nev;
   }
   /* the localisations moved the work parameter vector: restore it */
   c->trial.p[o->icp] = c->trial.X[n];
@@ -803,7 +851,8 @@ int whirl_cont_step(whirl_cont *c) {
     static const int type_of[] = {WHIRL_PT_LP, WHIRL_PT_BP, WHIRL_PT_HB,
                                   WHIRL_PT_PD, WHIRL_PT_EP, WHIRL_PT_EP,
                                   WHIRL_PT_UZ};
-    int type = type_of[evs[i].ev];
+    int type = evs[i].ev == EV_SYS ? evs[i].st->ttype[evs[i].k]
+                                   : type_of[evs[i].ev];
     /* a complex pair through the unit circle of the multipliers: torus */
     if (type == WHIRL_PT_HB && c->sys.spectrum_kind == WHIRL_SPEC_MULTIPLIERS)
       type = WHIRL_PT_TR;

@@ -33,6 +33,8 @@ typedef struct cont_state {
   int n_unstable;  /* eigenvalues with Re > 0, -1 without spectrum */
   int n_cu;        /* complex eigenvalues with Re > 0 (multipliers: complex
                       ones outside the unit circle) */
+  double *tau;     /* the system's test functions [ntest] */
+  int *ttype;      /* the point types their zeros stand for [ntest] */
   int tests_valid; /* 0 right after a branch switch: no detection yet */
   int type, label;
 } cont_state;
@@ -99,7 +101,8 @@ void cont_state_copy(const whirl_cont *c, cont_state *dst,
                      const cont_state *src);
 
 /* Event kinds localised by locate.c. */
-enum { EV_LP, EV_BP, EV_HB, EV_PD, EV_PMIN, EV_PMAX, EV_UZ, EV_NKIND = EV_UZ };
+enum { EV_LP, EV_BP, EV_HB, EV_PD, EV_PMIN, EV_PMAX, EV_UZ, EV_NKIND = EV_UZ,
+       EV_SYS = EV_UZ + 1 /* system test function k */ };
 
 /* Localise the zero of the test function of event kind ev (k: UZ index)
  * between c->cur (s = 0) and the trial point (s = ds) along c->dir; on

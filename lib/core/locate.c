@@ -4,7 +4,8 @@
  * variant of regula falsi (Dowell & Jarratt 1971), each trial σ corrected by
  * Newton onto the branch.  Test functions: LP, the parameter component of the
  * unit tangent; BP, det [F_x F_p; r^T]; HB, the real part of the complex
- * eigenvalue nearest the imaginary axis; bounds and UZ, p - value.
+ * eigenvalue nearest the imaginary axis; bounds and UZ, p - value; the
+ * system's own test functions (codimension-two points on fold curves).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <string.h>
@@ -30,6 +31,8 @@ static double psi(const whirl_cont *c, int ev, size_t k, const cont_state *st,
     return pv - c->opt.p_max;
   case EV_PMIN:
     return pv - c->opt.p_min;
+  case EV_SYS:
+    return st->tau[k];
   default:
     return pv - c->opt.uz[k];
   }
@@ -54,6 +57,8 @@ static double ftol(const whirl_cont *c, int ev, size_t k, const cont_state *st) 
     return 1e-14 * (1.0 + fabs(c->opt.p_max));
   case EV_PMIN:
     return 1e-14 * (1.0 + fabs(c->opt.p_min));
+  case EV_SYS:
+    return 0.0; /* the system's scale is unknown: shrink the bracket */
   default:
     return 1e-14 * (1.0 + fabs(c->opt.uz[k]));
   }

@@ -37,7 +37,18 @@ typedef enum whirl_point_type {
                            equilibrium representing a periodic orbit) */
   WHIRL_PT_UZ = 5,      /* "UZ" user-requested parameter value */
   WHIRL_PT_PD = 6,      /* "PD" period doubling of a cycle (multiplier -1) */
-  WHIRL_PT_TR = 7       /* "TR" torus (Neimark-Sacker) point of a cycle */
+  WHIRL_PT_TR = 7,      /* "TR" torus (Neimark-Sacker) point of a cycle */
+  /* codimension-two points, labelled on fold and Hopf curves through the
+   * system's own test functions (whirl_system.test) */
+  WHIRL_PT_CP = 8,      /* "CP" cusp: the fold's quadratic coefficient is 0 */
+  WHIRL_PT_BT = 9,      /* "BT" Bogdanov-Takens: double zero eigenvalue */
+  WHIRL_PT_ZH = 10,     /* "ZH" zero-Hopf (fold-Hopf) */
+  WHIRL_PT_IS = 11,     /* "IS" isola centre: an isolated branch is born
+                           (or shrinks to a point) as the second parameter
+                           passes an extremum along the fold curve */
+  WHIRL_PT_MG = 12      /* "MG" merge: an isolated branch joins another
+                           branch (two branches cross; extremum of the second
+                           parameter along the fold curve) */
 } whirl_point_type;
 
 WHIRL_API const char *whirl_point_type_name(int type);
@@ -77,6 +88,8 @@ typedef struct whirl_cont_options {
   int detect_hb;       /* ISP (Hopf; needs the system's spectrum); for Floquet
                           multipliers this is the torus point TR */
   int detect_pd;       /* ISP (period doubling; Floquet multipliers only) */
+  int detect_sys;      /* the system's own test functions (codim-2 points
+                          on fold and Hopf curves); on by default */
   int stop_at_bp;      /* end the branch at the first BP */
   int detect_loop;     /* stop when the branch returns to its start */
   double loc_tol;      /* localisation tolerance in arclength */

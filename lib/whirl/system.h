@@ -65,6 +65,18 @@ typedef struct whirl_system {
    * phase condition of collocation, Doedel's AUTO).  Returns 0 or an error. */
   int (*accept)(const double *x, const double *p, void *data);
 
+  /* Optional test functions of the system itself: tau[ntest] at (x, p),
+   * whose sign changes the core detects and localises along a branch like
+   * its own LP/BP/HB tests.  types[k] receives the point type (a
+   * whirl_point_type, e.g. WHIRL_PT_CP) that a zero of tau[k] near (x, p)
+   * stands for, or 0 when a sign change there is not a special point (a
+   * neutral saddle for the zero-Hopf test).  Fold and Hopf systems use this
+   * to label codimension-two points of the problem they were built on
+   * (cusp, Bogdanov-Takens, zero-Hopf, isola birth and merge). */
+  size_t ntest;
+  int (*test)(const double *x, const double *p, double *tau, int *types,
+              void *data);
+
   const char *const *x_names;  /* optional, n names */
   const char *const *p_names;  /* optional, npar names */
   void *data;                  /* borrowed */

@@ -18,4 +18,6 @@
 #include <whirl/hbm.h>
 #include <whirl/colloc.h>
 #include <whirl/sfd_periodic.h>
+#include <whirl/fold.h>
+#include <whirl/hopf.h>
 #endif

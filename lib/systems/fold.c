@@ -1,0 +1,512 @@
+/* lib/systems/fold.c — constructor: the minimally augmented fold system of a
+ * whirl_system (Govaerts 2000, ch. 4.2; Govaerts, Kuznetsov & Dhooge 2005,
+ * MatCont), its codimension-two test functions, and the codimension-two
+ * curves obtained by imposing one of them.  See whirl/fold.h.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <complex.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/cont.h>
+#include <whirl/fold.h>
+#include <whirl/linsol.h>
+
+struct whirl_fold {
+  whirl_system base; /* copy; data borrowed */
+  whirl_system sys;
+  whirl_fold_options o;
+  size_t n, N;       /* base size, fold-system size n + nfree + (cond) */
+  double *b, *c;     /* borders [n]: left and right null vector estimates */
+  whirl_linsol *ls;  /* dense LU of M = [F_x b; c^T 0], order n + 1 */
+  whirl_eig *eig;    /* eigenvalues of F_x for the zero-Hopf test */
+  double *M;         /* (n+1)^2 */
+  double *A;         /* F_x at the current point, n*n */
+  double *Ap, *Am;   /* F_x at shifted points, n*n each */
+  double *v, *w;     /* n + 1: null vectors and g */
+  double *phi;       /* n + 1: F_x phi = -F_q (bordered) */
+  double *pf, *pq;   /* npar: full parameter vectors */
+  double *xs;        /* n: shifted state */
+  double *fq, *fqp, *fqm; /* n: F_q at the point and shifted */
+  double *work;      /* 2n: scratch of whirl_system_jacobian / _param */
+  double *Zs, *tmp;  /* N: scratch for finite differences of the cond row */
+  double *er, *ei;   /* n: eigenvalues */
+  char errmsg[256];
+};
+
+static int fail(whirl_fold *f, int code, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static int fail(whirl_fold *f, int code, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(f->errmsg, sizeof f->errmsg, fmt, ap);
+  va_end(ap);
+  return code;
+}
+
+void whirl_fold_options_default(whirl_fold_options *o, size_t par) {
+  memset(o, 0, sizeof *o);
+  o->par = par;
+  o->nfree = 1;
+  o->free[0] = par;
+  o->free[1] = par;
+  o->cond = WHIRL_FOLD_COND_NONE;
+}
+
+void whirl_fold_params(const whirl_fold *f, const double *Z, const double *p,
+                       double *pfull) {
+  if (pfull != p) memcpy(pfull, p, f->base.npar * sizeof *pfull);
+  for (size_t k = 0; k < f->o.nfree; ++k) pfull[f->o.free[k]] = Z[f->n + k];
+}
+
+static double norm2(const double *a, size_t n) {
+  double s = 0.0;
+  for (size_t i = 0; i < n; ++i) s += a[i] * a[i];
+  return sqrt(s);
+}
+
+static double dot(const double *a, const double *b, size_t n) {
+  double s = 0.0;
+  for (size_t i = 0; i < n; ++i) s += a[i] * b[i];
+  return s;
+}
+
+static double amax(const double *a, size_t n) {
+  double s = 0.0;
+  for (size_t i = 0; i < n; ++i) s = fmax(s, fabs(a[i]));
+  return s;
+}
+
+/* Difference step for directional derivatives of the Jacobian: about
+ * cbrt(eps) relative, which balances truncation (h^2) and rounding (eps/h)
+ * for a central difference of an analytic Jacobian. */
+static double hstep(const double *x, size_t n, const double *dir) {
+  const double d = amax(dir, n);
+  return 6e-6 * (1.0 + amax(x, n)) / (d > 0 ? d : 1.0);
+}
+
+static int jac(whirl_fold *f, const double *x, const double *p, double *J) {
+  return whirl_system_jacobian(&f->base, x, p, J, f->work);
+}
+
+/* F_x at (x, p) into f->A, the bordered LU, and the null vectors: f->v =
+ * (v, g) and f->w = (w, g). */
+static int null_solve(whirl_fold *f, const double *x, const double *p) {
+  const size_t n = f->n, m = n + 1;
+  int rc = jac(f, x, p, f->A);
+  if (rc != 0) return rc;
+  for (size_t j = 0; j < n; ++j) {
+    memcpy(f->M + m * j, f->A + n * j, n * sizeof *f->M);
+    f->M[n + m * j] = f->c[j];
+  }
+  memcpy(f->M + m * n, f->b, n * sizeof *f->M);
+  f->M[n + m * n] = 0.0;
+  rc = whirl_linsol_factor(f->ls, f->M);
+  if (rc != WHIRL_OK)
+    return fail(f, rc == WHIRL_ESINGULAR ? 1 : rc,
+                "fold system: bordered matrix [F_x b; c^T 0] is singular "
+                "(the fold is not simple here)");
+  memset(f->v, 0, m * sizeof *f->v);
+  f->v[n] = 1.0;
+  memset(f->w, 0, m * sizeof *f->w);
+  f->w[n] = 1.0;
+  if ((rc = whirl_linsol_solve(f->ls, f->v, 1, 0)) != WHIRL_OK ||
+      (rc = whirl_linsol_solve(f->ls, f->w, 1, 1)) != WHIRL_OK)
+    return fail(f, rc, "fold system: bordered solve failed");
+  return 0;
+}
+
+/* F_q(x, p) with q = o.par, into out[n]. */
+static int fq_at(whirl_fold *f, const double *x, const double *p, double *out) {
+  return whirl_system_param(&f->base, x, p, f->o.par, out, f->work);
+}
+
+/* w^T F_xx[v, v] / (|w| |v|^2) from F_x at x +- h v (uses f->Ap, f->Am). */
+static int cusp_value(whirl_fold *f, const double *x, const double *p,
+                      double *val) {
+  const size_t n = f->n;
+  const double *v = f->v, *w = f->w;
+  const double h = hstep(x, n, v);
+  int rc;
+  for (size_t i = 0; i < n; ++i) f->xs[i] = x[i] + h * v[i];
+  if ((rc = jac(f, f->xs, p, f->Ap)) != 0) return rc;
+  for (size_t i = 0; i < n; ++i) f->xs[i] = x[i] - h * v[i];
+  if ((rc = jac(f, f->xs, p, f->Am)) != 0) return rc;
+  double s = 0.0;
+  for (size_t j = 0; j < n; ++j) {
+    double col = 0.0;
+    for (size_t i = 0; i < n; ++i)
+      col += w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
+    s += col * v[j];
+  }
+  const double nv = norm2(v, n), nw = norm2(w, n);
+  *val = s / (2.0 * h) / (nw * nv * nv);
+  return 0;
+}
+
+static double bt_value(const whirl_fold *f) {
+  const size_t n = f->n;
+  return dot(f->w, f->v, n) / (norm2(f->w, n) * norm2(f->v, n));
+}
+
+/* w^T F_q / (|w| |F_q|), F_q left in f->fq. */
+static int mg_value(whirl_fold *f, const double *x, const double *p,
+                    double *val) {
+  const size_t n = f->n;
+  int rc = fq_at(f, x, p, f->fq);
+  if (rc != 0) return rc;
+  const double nq = norm2(f->fq, n), nw = norm2(f->w, n);
+  *val = dot(f->w, f->fq, n) / (nw * (nq > 0 ? nq : 1.0));
+  return 0;
+}
+
+/* The value of the imposed codimension-two condition at (x, p); needs
+ * null_solve done at (x, p). */
+static int cond_value(whirl_fold *f, const double *x, const double *p,
+                      double *val) {
+  switch (f->o.cond) {
+  case WHIRL_FOLD_COND_CP: return cusp_value(f, x, p, val);
+  case WHIRL_FOLD_COND_BT: *val = bt_value(f); return 0;
+  case WHIRL_FOLD_COND_MG: return mg_value(f, x, p, val);
+  default: *val = 0.0; return 0;
+  }
+}
+
+static int fold_F(const double *Z, const double *p, double *out, void *data) {
+  whirl_fold *f = data;
+  const size_t n = f->n;
+  whirl_fold_params(f, Z, p, f->pf);
+  int rc = f->base.F(Z, f->pf, out, f->base.data);
+  if (rc != 0) return rc;
+  if ((rc = null_solve(f, Z, f->pf)) != 0) return rc;
+  out[n] = f->v[n];
+  if (f->o.cond) return cond_value(f, Z, f->pf, &out[n + 1]);
+  return 0;
+}
+
+/* Jacobian of the fold system, N x N column-major: [F_x F_free; g_x g_free]
+ * with g_z = -w^T (F_x)_z v from two base Jacobians per direction (Govaerts
+ * 2000, eq. 4.13), and the cond row by central differences of its value. */
+static int fold_Fx(const double *Z, const double *p, double *J, void *data) {
+  whirl_fold *f = data;
+  const size_t n = f->n, N = f->N, nf = f->o.nfree;
+  int rc;
+  whirl_fold_params(f, Z, p, f->pf);
+  if ((rc = null_solve(f, Z, f->pf)) != 0) return rc;
+  memset(J, 0, N * N * sizeof *J);
+  for (size_t j = 0; j < n; ++j)
+    memcpy(J + N * j, f->A + n * j, n * sizeof *J);
+  for (size_t k = 0; k < nf; ++k) {
+    rc = whirl_system_param(&f->base, Z, f->pf, f->o.free[k], f->fq, f->work);
+    if (rc != 0) return rc;
+    memcpy(J + N * (n + k), f->fq, n * sizeof *J);
+  }
+  /* g_x: -(F_x(x + hv)^T w - F_x(x - hv)^T w) / 2h */
+  const double *v = f->v, *w = f->w;
+  const double h = hstep(Z, n, v);
+  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] + h * v[i];
+  if ((rc = jac(f, f->xs, f->pf, f->Ap)) != 0) return rc;
+  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] - h * v[i];
+  if ((rc = jac(f, f->xs, f->pf, f->Am)) != 0) return rc;
+  for (size_t j = 0; j < n; ++j) {
+    double s = 0.0;
+    for (size_t i = 0; i < n; ++i)
+      s += w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
+    J[n + N * j] = -s / (2.0 * h);
+  }
+  /* g_q: -w^T (F_x(q + hq) - F_x(q - hq)) v / 2hq */
+  for (size_t k = 0; k < nf; ++k) {
+    const size_t q = f->o.free[k];
+    const double hq = 6e-6 * (1.0 + fabs(f->pf[q]));
+    memcpy(f->pq, f->pf, f->base.npar * sizeof *f->pq);
+    f->pq[q] = f->pf[q] + hq;
+    if ((rc = jac(f, Z, f->pq, f->Ap)) != 0) return rc;
+    f->pq[q] = f->pf[q] - hq;
+    if ((rc = jac(f, Z, f->pq, f->Am)) != 0) return rc;
+    double s = 0.0;
+    for (size_t j = 0; j < n; ++j) {
+      double col = 0.0;
+      for (size_t i = 0; i < n; ++i)
+        col += w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
+      s += col * v[j];
+    }
+    J[n + N * (n + k)] = -s / (2.0 * hq);
+  }
+  if (f->o.cond) {
+    /* the imposed condition: central differences of its value */
+    for (size_t j = 0; j < N; ++j) {
+      const double hz = 1e-6 * (1.0 + fabs(Z[j]));
+      double vp, vm;
+      memcpy(f->Zs, Z, N * sizeof *f->Zs);
+      f->Zs[j] = Z[j] + hz;
+      whirl_fold_params(f, f->Zs, p, f->pq);
+      if ((rc = null_solve(f, f->Zs, f->pq)) != 0) return rc;
+      if ((rc = cond_value(f, f->Zs, f->pq, &vp)) != 0) return rc;
+      f->Zs[j] = Z[j] - hz;
+      whirl_fold_params(f, f->Zs, p, f->pq);
+      if ((rc = null_solve(f, f->Zs, f->pq)) != 0) return rc;
+      if ((rc = cond_value(f, f->Zs, f->pq, &vm)) != 0) return rc;
+      J[n + 1 + N * j] = (vp - vm) / (2.0 * hz);
+    }
+  }
+  return 0;
+}
+
+/* Zero-Hopf test: the bialternate product prod_{i<j} (l_i + l_j) over the
+ * eigenvalues of F_x without the one nearest 0 (Govaerts 2000, ch. 4.4).
+ * It vanishes when a complex pair crosses the imaginary axis (ZH) and at
+ * neutral saddles (a real pair l, -l), which are not reported. */
+static int zh_value(whirl_fold *f, double *val, int *type) {
+  const size_t n = f->n;
+  *val = 1.0;
+  *type = 0;
+  if (n < 3 || !f->eig) return 0;
+  int rc = whirl_eig_compute(f->eig, f->A, f->er, f->ei);
+  if (rc != WHIRL_OK) return 0;
+  size_t k0 = 0;
+  for (size_t i = 1; i < n; ++i)
+    if (hypot(f->er[i], f->ei[i]) < hypot(f->er[k0], f->ei[k0])) k0 = i;
+  double complex prod = 1.0;
+  double best = INFINITY;
+  int best_pair = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (i == k0) continue;
+    for (size_t j = i + 1; j < n; ++j) {
+      if (j == k0) continue;
+      const double complex li = f->er[i] + I * f->ei[i];
+      const double complex lj = f->er[j] + I * f->ei[j];
+      const double sc = 1.0 + cabs(li) + cabs(lj);
+      prod *= (li + lj) / sc;
+      const double r = cabs(li + lj) / sc;
+      if (r < best) {
+        best = r;
+        best_pair = f->ei[i] != 0.0 &&
+                    fabs(f->ei[i] + f->ei[j]) <= 1e-8 * (1.0 + fabs(f->ei[i]));
+      }
+    }
+  }
+  *val = creal(prod);
+  *type = best_pair ? WHIRL_PT_ZH : 0;
+  return 0;
+}
+
+/* Second directional derivative along u of the map (x, q) -> [F_x F_q] u2,
+ * contracted with w: w^T D^2F[u, u2] by a central difference. */
+static int hess_wd(whirl_fold *f, const double *x, const double *p,
+                   const double *u, const double *u2, double *val) {
+  const size_t n = f->n;
+  const size_t q = f->o.par;
+  const double h = 6e-6 * (1.0 + amax(x, n) + fabs(p[q])) /
+                   fmax(fmax(amax(u, n), fabs(u[n])), 1e-300);
+  double s[2];
+  for (int side = 0; side < 2; ++side) {
+    const double sg = side ? -1.0 : 1.0;
+    for (size_t i = 0; i < n; ++i) f->xs[i] = x[i] + sg * h * u[i];
+    memcpy(f->pq, p, f->base.npar * sizeof *f->pq);
+    f->pq[q] = p[q] + sg * h * u[n];
+    int rc = jac(f, f->xs, f->pq, f->Ap);
+    if (rc != 0) return rc;
+    if ((rc = fq_at(f, f->xs, f->pq, f->fqp)) != 0) return rc;
+    double acc = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+      double r = f->fqp[i] * u2[n];
+      for (size_t j = 0; j < n; ++j) r += f->Ap[i + n * j] * u2[j];
+      acc += f->w[i] * r;
+    }
+    s[side] = acc;
+  }
+  *val = (s[0] - s[1]) / (2.0 * h);
+  return 0;
+}
+
+/* Isola centre or merge: the sign of the reduced Hessian of the base
+ * problem in (x, q) restricted to span{(v, 0), (phi, 1)}, F_x phi = -F_q.
+ * Definite: the solution set is locally a point that grows into an isola
+ * (IS); indefinite: two branches cross and separate (MG). */
+static int classify_mg(whirl_fold *f, const double *x, const double *p,
+                       int *type) {
+  const size_t n = f->n;
+  double *u1 = f->tmp; /* N >= n + 1 entries */
+  memcpy(u1, f->v, n * sizeof *u1);
+  u1[n] = 0.0;
+  for (size_t i = 0; i < n; ++i) f->phi[i] = -f->fq[i];
+  f->phi[n] = 0.0;
+  int rc = whirl_linsol_solve(f->ls, f->phi, 1, 0);
+  if (rc != WHIRL_OK) return fail(f, rc, "fold system: solve for F_q failed");
+  f->phi[n] = 1.0;
+  double q11, q12, q22;
+  if ((rc = hess_wd(f, x, p, u1, u1, &q11)) != 0) return rc;
+  if ((rc = hess_wd(f, x, p, u1, f->phi, &q12)) != 0) return rc;
+  if ((rc = hess_wd(f, x, p, f->phi, f->phi, &q22)) != 0) return rc;
+  *type = q11 * q22 - q12 * q12 > 0 ? WHIRL_PT_IS : WHIRL_PT_MG;
+  return 0;
+}
+
+static int fold_test(const double *Z, const double *p, double *tau, int *types,
+                     void *data) {
+  whirl_fold *f = data;
+  int rc;
+  whirl_fold_params(f, Z, p, f->pf);
+  if ((rc = null_solve(f, Z, f->pf)) != 0) return rc;
+  const int eig = f->base.spectrum && f->base.spectrum_kind == WHIRL_SPEC_EIGENVALUES;
+  tau[WHIRL_FOLD_TEST_BT] = bt_value(f);
+  types[WHIRL_FOLD_TEST_BT] = eig ? WHIRL_PT_BT : 0;
+  if ((rc = mg_value(f, Z, f->pf, &tau[WHIRL_FOLD_TEST_MG])) != 0) return rc;
+  if ((rc = classify_mg(f, Z, f->pf, &types[WHIRL_FOLD_TEST_MG])) != 0) return rc;
+  if ((rc = zh_value(f, &tau[WHIRL_FOLD_TEST_ZH], &types[WHIRL_FOLD_TEST_ZH])) != 0)
+    return rc;
+  if (!eig) types[WHIRL_FOLD_TEST_ZH] = 0;
+  if ((rc = cusp_value(f, Z, f->pf, &tau[WHIRL_FOLD_TEST_CP])) != 0) return rc;
+  types[WHIRL_FOLD_TEST_CP] = WHIRL_PT_CP;
+  return 0;
+}
+
+/* New borders from the null vectors at every accepted point, so M stays
+ * well conditioned along the curve; signs follow continuously. */
+static int fold_accept(const double *Z, const double *p, void *data) {
+  whirl_fold *f = data;
+  const size_t n = f->n;
+  whirl_fold_params(f, Z, p, f->pf);
+  int rc = null_solve(f, Z, f->pf);
+  if (rc != 0) return rc < 0 ? rc : 0; /* keep the old borders */
+  const double nv = norm2(f->v, n), nw = norm2(f->w, n);
+  if (nv > 0 && nw > 0 && isfinite(nv) && isfinite(nw))
+    for (size_t i = 0; i < n; ++i) {
+      f->c[i] = f->v[i] / nv;
+      f->b[i] = f->w[i] / nw;
+    }
+  if (f->base.accept) return f->base.accept(Z, f->pf, f->base.data);
+  return 0;
+}
+
+whirl_fold *whirl_fold_alloc(const whirl_system *base,
+                             const whirl_fold_options *o, char *errbuf,
+                             size_t errlen) {
+  const char *why = NULL;
+  if (!base || !base->F || base->n == 0) why = "base system has no F";
+  else if (!o) why = "no options";
+  else if (o->par >= base->npar) why = "fold parameter is not a parameter of the base system";
+  else if (o->nfree < 1 || o->nfree > 2) why = "nfree must be 1 or 2";
+  else if (o->free[0] >= base->npar || (o->nfree == 2 && o->free[1] >= base->npar))
+    why = "a freed parameter is not a parameter of the base system";
+  else if (o->nfree == 2 && o->free[0] == o->free[1]) why = "the two freed parameters are the same";
+  else if (o->cond < WHIRL_FOLD_COND_NONE || o->cond > WHIRL_FOLD_COND_MG)
+    why = "unknown codimension-two condition";
+  else if ((o->cond != WHIRL_FOLD_COND_NONE) != (o->nfree == 2))
+    why = "a codimension-two condition needs exactly two freed parameters "
+          "(and two freed parameters need a condition)";
+  if (why) {
+    if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_fold_alloc: %s", why);
+    return NULL;
+  }
+  whirl_fold *f = calloc(1, sizeof *f);
+  if (!f) goto nomem;
+  const size_t n = base->n;
+  f->base = *base;
+  f->o = *o;
+  f->n = n;
+  f->N = n + o->nfree;
+  f->b = calloc(n, sizeof *f->b);
+  f->c = calloc(n, sizeof *f->c);
+  f->ls = whirl_linsol_alloc_dense(n + 1);
+  f->eig = n >= 3 ? whirl_eig_alloc(n) : NULL;
+  f->M = calloc((n + 1) * (n + 1), sizeof *f->M);
+  f->A = calloc(n * n, sizeof *f->A);
+  f->Ap = calloc(n * n, sizeof *f->Ap);
+  f->Am = calloc(n * n, sizeof *f->Am);
+  f->v = calloc(n + 1, sizeof *f->v);
+  f->w = calloc(n + 1, sizeof *f->w);
+  f->phi = calloc(n + 1, sizeof *f->phi);
+  f->pf = calloc(base->npar, sizeof *f->pf);
+  f->pq = calloc(base->npar, sizeof *f->pq);
+  f->xs = calloc(n, sizeof *f->xs);
+  f->fq = calloc(n, sizeof *f->fq);
+  f->fqp = calloc(n, sizeof *f->fqp);
+  f->fqm = calloc(n, sizeof *f->fqm);
+  f->work = calloc(2 * n + 2, sizeof *f->work);
+  f->Zs = calloc(f->N, sizeof *f->Zs);
+  f->tmp = calloc(f->N, sizeof *f->tmp);
+  f->er = calloc(n, sizeof *f->er);
+  f->ei = calloc(n, sizeof *f->ei);
+  if (!f->b || !f->c || !f->ls || (n >= 3 && !f->eig) || !f->M || !f->A ||
+      !f->Ap || !f->Am || !f->v || !f->w || !f->phi || !f->pf || !f->pq ||
+      !f->xs || !f->fq || !f->fqp || !f->fqm || !f->work || !f->Zs ||
+      !f->tmp || !f->er || !f->ei)
+    goto nomem;
+  f->b[0] = f->c[0] = 1.0;
+  whirl_system *s = &f->sys;
+  memset(s, 0, sizeof *s);
+  s->name = o->cond == WHIRL_FOLD_COND_CP   ? "cusp curve"
+            : o->cond == WHIRL_FOLD_COND_BT ? "Bogdanov-Takens curve"
+            : o->cond == WHIRL_FOLD_COND_MG ? "isola/merge curve"
+                                            : "fold curve";
+  s->n = f->N;
+  s->npar = base->npar;
+  s->F = fold_F;
+  s->Fx = fold_Fx;
+  s->Fp = NULL;
+  s->accept = fold_accept;
+  s->ntest = o->cond ? 0 : WHIRL_FOLD_NTEST;
+  s->test = o->cond ? NULL : fold_test;
+  s->p_names = base->p_names;
+  s->data = f;
+  return f;
+nomem:
+  whirl_fold_free(f);
+  if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_fold_alloc: out of memory");
+  return NULL;
+}
+
+void whirl_fold_free(whirl_fold *f) {
+  if (!f) return;
+  whirl_linsol_free(f->ls);
+  whirl_eig_free(f->eig);
+  free(f->b); free(f->c); free(f->M); free(f->A); free(f->Ap); free(f->Am);
+  free(f->v); free(f->w); free(f->phi); free(f->pf); free(f->pq);
+  free(f->xs); free(f->fq); free(f->fqp); free(f->fqm); free(f->work);
+  free(f->Zs); free(f->tmp); free(f->er); free(f->ei);
+  free(f);
+}
+
+const whirl_system *whirl_fold_system(const whirl_fold *f) { return &f->sys; }
+size_t whirl_fold_size(const whirl_fold *f) { return f->N; }
+const char *whirl_fold_errmsg(const whirl_fold *f) { return f->errmsg; }
+
+int whirl_fold_init(whirl_fold *f, const double *x, const double *p, double *Z) {
+  const size_t n = f->n;
+  for (size_t i = 0; i < n; ++i)
+    if (!isfinite(x[i])) return fail(f, WHIRL_EINVAL, "fold start: x[%zu] is not finite", i);
+  int rc = jac(f, x, p, f->A);
+  if (rc != 0) return fail(f, rc < 0 ? rc : WHIRL_EDOMAIN, "fold start: the Jacobian failed (%d)", rc);
+  double sv;
+  rc = whirl_null_vectors(n, n, f->A, 1, f->c, &sv);
+  if (rc != WHIRL_OK) return fail(f, rc, "fold start: SVD of F_x failed");
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) f->Ap[j + n * i] = f->A[i + n * j];
+  rc = whirl_null_vectors(n, n, f->Ap, 1, f->b, &sv);
+  if (rc != WHIRL_OK) return fail(f, rc, "fold start: SVD of F_x^T failed");
+  memcpy(Z, x, n * sizeof *Z);
+  for (size_t k = 0; k < f->o.nfree; ++k) Z[n + k] = p[f->o.free[k]];
+  f->errmsg[0] = 0;
+  return WHIRL_OK;
+}
+
+int whirl_fold_vectors(whirl_fold *f, const double *Z, const double *p,
+                       double *v, double *w, double *g, double *tau) {
+  const size_t n = f->n;
+  whirl_fold_params(f, Z, p, f->pf);
+  int rc = null_solve(f, Z, f->pf);
+  if (rc != 0) return rc;
+  const double gv = f->v[n];
+  if (v) memcpy(v, f->v, n * sizeof *v);
+  if (w) memcpy(w, f->w, n * sizeof *w);
+  if (g) *g = gv;
+  if (tau) {
+    int types[WHIRL_FOLD_NTEST];
+    memcpy(f->Zs, Z, f->N * sizeof *f->Zs);
+    rc = fold_test(f->Zs, p, tau, types, f);
+  }
+  return rc;
+}

@@ -1,0 +1,289 @@
+/* lib/systems/hopf.c — constructor: the minimally augmented Hopf system of
+ * an equilibrium problem (squared-Jacobian formulation, Govaerts 2000,
+ * ch. 4.4) with its Bogdanov-Takens and zero-Hopf tests.  See whirl/hopf.h.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/cont.h>
+#include <whirl/hopf.h>
+#include <whirl/linsol.h>
+
+struct whirl_hopf {
+  whirl_system base, sys;
+  size_t par, n, N, m;  /* N = n + 2 unknowns, m = n + 2 bordered order */
+  double *B, *C;        /* borders n x 2, column-major */
+  int gi[2];            /* entries of G (i + 2j) used as equations */
+  whirl_linsol *ls;
+  whirl_eig *eig;
+  double *A, *A2, *M;   /* F_x, F_x^2 + kappa I, bordered */
+  double *R;            /* m x 2 right-hand sides / solutions */
+  double *pf, *work, *er, *ei;
+  char errmsg[256];
+};
+
+static int fail(whirl_hopf *h, int code, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static int fail(whirl_hopf *h, int code, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(h->errmsg, sizeof h->errmsg, fmt, ap);
+  va_end(ap);
+  return code;
+}
+
+void whirl_hopf_params(const whirl_hopf *h, const double *Z, const double *p,
+                       double *pfull) {
+  if (pfull != p) memcpy(pfull, p, h->base.npar * sizeof *pfull);
+  pfull[h->par] = Z[h->n];
+}
+
+/* F_x into h->A, the bordered matrix of F_x^2 + kappa I factorised, and the
+ * solutions of M [V; G] = [0; I_2] (trans 0) or M^T (trans 1) in h->R. */
+static int solve_G(whirl_hopf *h, const double *x, const double *p,
+                   double kappa, int trans) {
+  const size_t n = h->n, m = h->m;
+  int rc = whirl_system_jacobian(&h->base, x, p, h->A, h->work);
+  if (rc != 0) return rc;
+  for (size_t j = 0; j < n; ++j)
+    for (size_t i = 0; i < n; ++i) {
+      double s = 0.0;
+      for (size_t k = 0; k < n; ++k) s += h->A[i + n * k] * h->A[k + n * j];
+      h->A2[i + n * j] = s + (i == j ? kappa : 0.0);
+    }
+  memset(h->M, 0, m * m * sizeof *h->M);
+  for (size_t j = 0; j < n; ++j) {
+    memcpy(h->M + m * j, h->A2 + n * j, n * sizeof *h->M);
+    h->M[n + m * j] = h->C[j];
+    h->M[n + 1 + m * j] = h->C[j + n];
+  }
+  for (size_t k = 0; k < 2; ++k) memcpy(h->M + m * (n + k), h->B + n * k, n * sizeof *h->M);
+  rc = whirl_linsol_factor(h->ls, h->M);
+  if (rc != WHIRL_OK)
+    return fail(h, rc == WHIRL_ESINGULAR ? 1 : rc,
+                "Hopf system: bordered matrix of F_x^2 + kappa I is singular");
+  memset(h->R, 0, 2 * m * sizeof *h->R);
+  h->R[n] = 1.0;
+  h->R[m + n + 1] = 1.0;
+  rc = whirl_linsol_solve(h->ls, h->R, 2, trans);
+  if (rc != WHIRL_OK) return fail(h, rc, "Hopf system: bordered solve failed");
+  return 0;
+}
+
+static double G_entry(const whirl_hopf *h, int e) {
+  const int i = e % 2, j = e / 2;
+  return h->R[h->n + (size_t)i + h->m * (size_t)j];
+}
+
+static int hopf_F(const double *Z, const double *p, double *out, void *data) {
+  whirl_hopf *h = data;
+  const size_t n = h->n;
+  whirl_hopf_params(h, Z, p, h->pf);
+  int rc = h->base.F(Z, h->pf, out, h->base.data);
+  if (rc != 0) return rc;
+  if ((rc = solve_G(h, Z, h->pf, Z[n + 1], 0)) != 0) return rc;
+  out[n] = G_entry(h, h->gi[0]);
+  out[n + 1] = G_entry(h, h->gi[1]);
+  return 0;
+}
+
+static int hopf_test(const double *Z, const double *p, double *tau, int *types,
+                     void *data) {
+  whirl_hopf *h = data;
+  const size_t n = h->n;
+  const double kappa = Z[n + 1];
+  whirl_hopf_params(h, Z, p, h->pf);
+  int rc = whirl_system_jacobian(&h->base, Z, h->pf, h->A, h->work);
+  if (rc != 0) return rc;
+  tau[WHIRL_HOPF_TEST_BT] = kappa;
+  types[WHIRL_HOPF_TEST_BT] = WHIRL_PT_BT;
+  tau[WHIRL_HOPF_TEST_ZH] = 1.0;
+  types[WHIRL_HOPF_TEST_ZH] = 0;
+  if (n < 3) return 0;
+  if (whirl_eig_compute(h->eig, h->A, h->er, h->ei) != WHIRL_OK) return 0;
+  /* drop the two eigenvalues nearest +-i sqrt(kappa) (or +-sqrt(-kappa)),
+   * i.e. the two smallest |l^2 + kappa|; the product of the others changes
+   * sign when one of them crosses zero */
+  size_t d0 = 0, d1 = 1;
+  double r0 = INFINITY, r1 = INFINITY;
+  for (size_t i = 0; i < n; ++i) {
+    const double re = h->er[i] * h->er[i] - h->ei[i] * h->ei[i] + kappa;
+    const double im = 2.0 * h->er[i] * h->ei[i];
+    const double r = hypot(re, im);
+    if (r < r0) {
+      r1 = r0, d1 = d0;
+      r0 = r, d0 = i;
+    } else if (r < r1) {
+      r1 = r, d1 = i;
+    }
+  }
+  double prod = 1.0;
+  for (size_t i = 0; i < n; ++i)
+    if (i != d0 && i != d1)
+      prod *= (h->ei[i] == 0.0 ? h->er[i] : hypot(h->er[i], h->ei[i])) /
+              (1.0 + hypot(h->er[i], h->ei[i]));
+  /* complex eigenvalues come in pairs whose product |l|^2 > 0: only real ones
+   * carry the sign */
+  tau[WHIRL_HOPF_TEST_ZH] = prod;
+  types[WHIRL_HOPF_TEST_ZH] = WHIRL_PT_ZH;
+  return 0;
+}
+
+/* Orthonormal pair from the first n rows of the two columns of R. */
+static void orthonormal2(const double *R, size_t n, size_t m, double *Q) {
+  double a = 0.0;
+  for (size_t i = 0; i < n; ++i) a += R[i] * R[i];
+  a = sqrt(a);
+  for (size_t i = 0; i < n; ++i) Q[i] = R[i] / a;
+  double d = 0.0;
+  for (size_t i = 0; i < n; ++i) d += Q[i] * R[m + i];
+  double b = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    Q[n + i] = R[m + i] - d * Q[i];
+    b += Q[n + i] * Q[n + i];
+  }
+  b = sqrt(b);
+  for (size_t i = 0; i < n; ++i) Q[n + i] /= b;
+}
+
+static int hopf_accept(const double *Z, const double *p, void *data) {
+  whirl_hopf *h = data;
+  const size_t n = h->n;
+  whirl_hopf_params(h, Z, p, h->pf);
+  double Cn[2 * n], Bn[2 * n];
+  if (solve_G(h, Z, h->pf, Z[n + 1], 0) != 0) return 0;
+  orthonormal2(h->R, n, h->m, Cn);
+  if (solve_G(h, Z, h->pf, Z[n + 1], 1) != 0) return 0;
+  orthonormal2(h->R, n, h->m, Bn);
+  int ok = 1;
+  for (size_t i = 0; i < 2 * n; ++i) ok &= isfinite(Cn[i]) && isfinite(Bn[i]);
+  if (ok) {
+    memcpy(h->C, Cn, 2 * n * sizeof *Cn);
+    memcpy(h->B, Bn, 2 * n * sizeof *Bn);
+  }
+  if (h->base.accept) return h->base.accept(Z, h->pf, h->base.data);
+  return 0;
+}
+
+whirl_hopf *whirl_hopf_alloc(const whirl_system *base, size_t par, char *errbuf,
+                             size_t errlen) {
+  const char *why = NULL;
+  if (!base || !base->F || base->n < 2) why = "base system needs F and n >= 2";
+  else if (par >= base->npar) why = "Hopf parameter is not a parameter of the base system";
+  if (why) {
+    if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_hopf_alloc: %s", why);
+    return NULL;
+  }
+  const size_t n = base->n, m = n + 2;
+  whirl_hopf *h = calloc(1, sizeof *h);
+  if (!h) goto nomem;
+  h->base = *base;
+  h->par = par;
+  h->n = n;
+  h->N = n + 2;
+  h->m = m;
+  h->gi[0] = 0;
+  h->gi[1] = 3;
+  h->B = calloc(2 * n, sizeof *h->B);
+  h->C = calloc(2 * n, sizeof *h->C);
+  h->ls = whirl_linsol_alloc_dense(m);
+  h->eig = whirl_eig_alloc(n);
+  h->A = calloc(n * n, sizeof *h->A);
+  h->A2 = calloc(n * n, sizeof *h->A2);
+  h->M = calloc(m * m, sizeof *h->M);
+  h->R = calloc(2 * m, sizeof *h->R);
+  h->pf = calloc(base->npar, sizeof *h->pf);
+  h->work = calloc(2 * n + 2, sizeof *h->work);
+  h->er = calloc(n, sizeof *h->er);
+  h->ei = calloc(n, sizeof *h->ei);
+  if (!h->B || !h->C || !h->ls || !h->eig || !h->A || !h->A2 || !h->M ||
+      !h->R || !h->pf || !h->work || !h->er || !h->ei)
+    goto nomem;
+  whirl_system *s = &h->sys;
+  s->name = "Hopf curve";
+  s->n = h->N;
+  s->npar = base->npar;
+  s->F = hopf_F;
+  s->accept = hopf_accept;
+  s->ntest = WHIRL_HOPF_NTEST;
+  s->test = hopf_test;
+  s->p_names = base->p_names;
+  s->data = h;
+  return h;
+nomem:
+  whirl_hopf_free(h);
+  if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_hopf_alloc: out of memory");
+  return NULL;
+}
+
+void whirl_hopf_free(whirl_hopf *h) {
+  if (!h) return;
+  whirl_linsol_free(h->ls);
+  whirl_eig_free(h->eig);
+  free(h->B); free(h->C); free(h->A); free(h->A2); free(h->M); free(h->R);
+  free(h->pf); free(h->work); free(h->er); free(h->ei);
+  free(h);
+}
+
+const whirl_system *whirl_hopf_system(const whirl_hopf *h) { return &h->sys; }
+size_t whirl_hopf_size(const whirl_hopf *h) { return h->N; }
+const char *whirl_hopf_errmsg(const whirl_hopf *h) { return h->errmsg; }
+
+int whirl_hopf_init(whirl_hopf *h, const double *x, const double *p, double *Z) {
+  const size_t n = h->n;
+  int rc = whirl_system_jacobian(&h->base, x, p, h->A, h->work);
+  if (rc != 0) return fail(h, rc < 0 ? rc : WHIRL_EDOMAIN, "Hopf start: the Jacobian failed (%d)", rc);
+  if ((rc = whirl_eig_compute(h->eig, h->A, h->er, h->ei)) != WHIRL_OK)
+    return fail(h, rc, "Hopf start: eigenvalues failed");
+  double best = INFINITY, omega = 0.0;
+  for (size_t i = 0; i < n; ++i)
+    if (h->ei[i] > 0 && fabs(h->er[i]) < best) best = fabs(h->er[i]), omega = h->ei[i];
+  if (!(omega > 0))
+    return fail(h, WHIRL_EINVAL, "Hopf start: F_x has no complex pair (not a Hopf point)");
+  const double kappa = omega * omega;
+  for (size_t j = 0; j < n; ++j)
+    for (size_t i = 0; i < n; ++i) {
+      double s = 0.0;
+      for (size_t k = 0; k < n; ++k) s += h->A[i + n * k] * h->A[k + n * j];
+      h->A2[i + n * j] = s + (i == j ? kappa : 0.0);
+    }
+  double sv[2];
+  if ((rc = whirl_null_vectors(n, n, h->A2, 2, h->C, sv)) != WHIRL_OK)
+    return fail(h, rc, "Hopf start: SVD failed");
+  double *T = h->M; /* scratch n*n <= m*m */
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) T[j + n * i] = h->A2[i + n * j];
+  if ((rc = whirl_null_vectors(n, n, T, 2, h->B, sv)) != WHIRL_OK)
+    return fail(h, rc, "Hopf start: SVD failed");
+  memcpy(Z, x, n * sizeof *Z);
+  Z[n] = p[h->par];
+  Z[n + 1] = kappa;
+  /* choose the two entries of G whose derivatives in (p[par], kappa) are
+   * best conditioned */
+  double d[2][4];
+  whirl_hopf_params(h, Z, p, h->pf);
+  const double hq = 1e-6 * (1.0 + fabs(Z[n])), hk = 1e-6 * (1.0 + kappa);
+  for (int k = 0; k < 2; ++k) {
+    double gp[4], gm[4];
+    for (int side = 0; side < 2; ++side) {
+      const double sg = side ? -1.0 : 1.0;
+      whirl_hopf_params(h, Z, p, h->pf);
+      if (k == 0) h->pf[h->par] += sg * hq;
+      rc = solve_G(h, x, h->pf, kappa + (k == 1 ? sg * hk : 0.0), 0);
+      if (rc != 0) return fail(h, rc < 0 ? rc : WHIRL_ESINGULAR, "Hopf start: %s", h->errmsg);
+      for (int e = 0; e < 4; ++e) (side ? gm : gp)[e] = G_entry(h, e);
+    }
+    for (int e = 0; e < 4; ++e) d[k][e] = (gp[e] - gm[e]) / (2.0 * (k ? hk : hq));
+  }
+  double bestdet = -1.0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) {
+      const double det = fabs(d[0][a] * d[1][b] - d[1][a] * d[0][b]);
+      if (det > bestdet) bestdet = det, h->gi[0] = a, h->gi[1] = b;
+    }
+  h->errmsg[0] = 0;
+  return WHIRL_OK;
+}
