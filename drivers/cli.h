@@ -82,5 +82,7 @@ int cmd_sfd_nonsync(int argc, char **argv);
 int cmd_sfd_sweep(int argc, char **argv);
 int cmd_sfd_basins(int argc, char **argv);
 int cmd_sfd_onset(int argc, char **argv);
+int cmd_sfd_merge(int argc, char **argv);
+int cmd_sfd_region(int argc, char **argv);
 
 #endif

@@ -25,6 +25,8 @@ static void usage(FILE *f) {
           "  sfd sweep      up/down speed sweep by time integration (Figs. 3, 11)\n"
           "  sfd basins     basins of attraction at one speed (Figs. 12-17)\n"
           "  sfd onset      onset of the nonsynchronous response from rest\n"
+          "  sfd merge      isola-peak merge point (two-parameter continuation)\n"
+          "  sfd region     region of (lambda, delta) with an isola (Fig. 18)\n"
           "\n"
           "  whirl <command> --help   options of a command\n"
           "  whirl --version          library version\n");
@@ -42,7 +44,9 @@ static void sfd_usage(FILE *f) {
           "  basins     basins of attraction\n"
           "  onset      onset of the nonsynchronous response from rest\n"
           "  nonsync    the nonsynchronous response continued as a periodic orbit\n"
-          "             of the rotating frame (birth, stability, second frequency)\n");
+          "             of the rotating frame (birth, stability, second frequency)\n"
+          "  merge      isola-peak merge point for one lambda\n"
+          "  region     region of (lambda, delta) with an isolated branch (Fig. 18)\n");
 }
 
 int main(int argc, char **argv) {
@@ -73,6 +77,8 @@ int main(int argc, char **argv) {
     if (!strcmp(argv[2], "basins")) return cmd_sfd_basins(argc - 2, argv + 2);
     if (!strcmp(argv[2], "onset")) return cmd_sfd_onset(argc - 2, argv + 2);
     if (!strcmp(argv[2], "nonsync")) return cmd_sfd_nonsync(argc - 2, argv + 2);
+    if (!strcmp(argv[2], "merge")) return cmd_sfd_merge(argc - 2, argv + 2);
+    if (!strcmp(argv[2], "region")) return cmd_sfd_region(argc - 2, argv + 2);
     fprintf(stderr, "whirl sfd: unknown command '%s' (see whirl sfd --help)\n", argv[2]);
     return 2;
   }

@@ -20,4 +20,5 @@
 #include <whirl/sfd_periodic.h>
 #include <whirl/fold.h>
 #include <whirl/hopf.h>
+#include <whirl/sfd_region.h>
 #endif

@@ -1,0 +1,204 @@
+/* drivers/cmd_sfd_region.c — `whirl sfd region`: the region of (lambda,
+ * delta) in which the rotor has an isolated branch below Omega = W (paper
+ * Fig. 18), its two boundaries traced by two-parameter continuation
+ * (whirl/sfd_region.h), written as TSV and drawn like the paper's figure.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/whirl.h>
+#include <whirl/sfd_region.h>
+
+#include "cli.h"
+
+#define CMD "sfd region"
+
+static void help(FILE *f) {
+  fprintf(f,
+"usage: whirl sfd region [options]\n"
+"\n"
+"Where the response of circular orbits (F_E = 0) has an isolated branch\n"
+"below the maximum speed W (paper Fig. 18), by continuation:\n"
+"  upper boundary: the isola-peak merge point followed in lambda\n"
+"  lower boundary: a fold of the response at Omega = W followed in\n"
+"                  (lambda, delta); its second branch (the other fold at W)\n"
+"                  closes the region at a cusp.\n"
+"\n"
+"options:\n"
+"  --zeta Z         external damping ratio                       (0)\n"
+"  --omega-max W    maximum speed                                (20)\n"
+"  --lambda-min A   --lambda-max B   range of lambda          (0.01 1.5)\n"
+"  --ds-max S       largest continuation step                    (0.05)\n"
+"  --out DIR        output directory                    (sfd-region)\n"
+"  --no-plot        tables only\n"
+"  --quiet          no summary on stderr\n"
+"\n"
+"files: DIR/upper.tsv and DIR/lower.tsv ('lambda delta Omega eps type\n"
+"residual'; type CP, MG, LP or '-'), DIR/band.tsv (lambda, lower and upper\n"
+"delta of the region on a log grid), DIR/region.png and region.gp.\n"
+"stdout: the special points as TSV 'curve type lambda delta Omega eps'.\n");
+}
+
+static int write_curve(const char *dir, const char *name, const whirl_sfd_curve *c,
+                       const char *what, double zeta, double W) {
+  out_file o;
+  if (out_open(&o, dir, name)) return -1;
+  fprintf(o.fp, "# whirl %s sfd region: %s; zeta = %.10g, W = %.10g; residual = largest "
+                "relative residual of the defining equations of eq. 15\n",
+          whirl_version(), what, zeta, W);
+  fprintf(o.fp, "lambda\tdelta\tOmega\teps\ttype\tresidual\n");
+  for (size_t i = 0; i < c->len; ++i)
+    fprintf(o.fp, "%.12e\t%.12e\t%.12e\t%.12e\t%s\t%.1e\n", c->lambda[i], c->delta[i],
+            c->Omega[i], c->eps[i], c->type[i] ? whirl_point_type_name(c->type[i]) : "-",
+            c->res[i]);
+  return out_commit(&o);
+}
+
+static int write_band(const char *dir, const whirl_sfd_region *r, double a, double b, double W) {
+  out_file o;
+  if (out_open(&o, dir, "band.tsv")) return -1;
+  fprintf(o.fp, "lambda\tdelta_lower\tdelta_upper\n");
+  const size_t K = 600;
+  for (size_t k = 0; k <= K; ++k) {
+    const double lam = a * pow(b / a, (double)k / K);
+    double lo, hi;
+    if (whirl_sfd_region_band(r, lam, W, &lo, &hi)) fprintf(o.fp, "%.10e\t%.10e\t%.10e\n", lam, lo, hi);
+    else fprintf(o.fp, "\n");
+  }
+  return out_commit(&o);
+}
+
+static int write_plot(const char *dir, const whirl_sfd_region *r, double zeta, double W,
+                      double a, double b) {
+  out_file o;
+  if (out_open(&o, dir, "region.gp")) return -1;
+  FILE *f = o.fp;
+  fprintf(f,
+          "# gnuplot script written by whirl sfd region; run: gnuplot region.gp\n"
+          "set terminal pngcairo size 1000,750 enhanced font 'Sans,12'\n"
+          "set output '.region.png.tmp'\n"
+          "set title 'isolated branch below {/Symbol W} = %g: {/Symbol z} = %g (cf. paper Fig. 18)'\n"
+          "set xlabel 'SFD constant {/Symbol l}'\nset ylabel 'unbalance {/Symbol d}'\n"
+          "set logscale x\nset xrange [%g:%g]\nset yrange [0:1]\nset grid\n"
+          "set key top left box opaque\nset datafile separator '\\t'\n"
+          "$sp << EOD\n",
+          W, zeta, a, b);
+  for (int c = 0; c < 2; ++c) {
+    const whirl_sfd_curve *cv = c ? &r->lower : &r->upper;
+    for (size_t i = 0; i < cv->len; ++i)
+      if (cv->type[i]) fprintf(f, "%.10g\t%.10g\t%s\n", cv->lambda[i], cv->delta[i],
+                               whirl_point_type_name(cv->type[i]));
+  }
+  fprintf(f, "EOD\n"
+             "plot 'band.tsv' using 1:2:3 with filledcurves fc rgb '#9ecae1' fs solid 0.8 "
+             "title 'isolated branch below {/Symbol W}_{max}', \\\n"
+             "     'upper.tsv' using 1:2 every ::0 with lines lw 2.5 lc rgb '#d62728' "
+             "title 'u: isola-peak merge (continued in {/Symbol l})', \\\n"
+             "     'lower.tsv' using 1:2 with lines lw 2.5 lc rgb '#1f4e9c' "
+             "title 'l: fold at {/Symbol W} = %g (continued in {/Symbol l}, {/Symbol d})', \\\n"
+             "     $sp using 1:2 with points pt 7 ps 1.5 lc rgb 'black' notitle, \\\n"
+             "     $sp using 1:2:3 with labels offset 1.2,0.8 notitle\n",
+          W);
+  if (out_commit(&o)) return -1;
+  return 0;
+}
+
+int cmd_sfd_region(int argc, char **argv) {
+  whirl_sfd_region_options o;
+  whirl_sfd_region_options_default(&o);
+  const char *dir = "sfd-region";
+  int quiet = 0, noplot = 0;
+  const cli_opt opts[] = {{"--zeta", CLI_DOUBLE, &o.zeta},
+                          {"--omega-max", CLI_DOUBLE, &o.omega_max},
+                          {"--lambda-min", CLI_DOUBLE, &o.lambda_min},
+                          {"--lambda-max", CLI_DOUBLE, &o.lambda_max},
+                          {"--ds-max", CLI_DOUBLE, &o.ds_max},
+                          {"--out", CLI_STRING, &dir},
+                          {"--no-plot", CLI_FLAG, &noplot},
+                          {"--quiet", CLI_FLAG, &quiet}};
+  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+  if (r) return r == 1 ? 0 : 2;
+  if (!(o.zeta >= 0) || o.zeta > 10) {
+    cli_error(CMD, "--zeta must be in [0, 10] (got %g)", o.zeta);
+    return 2;
+  }
+  if (!(o.omega_max > 1) || o.omega_max > 1000) {
+    cli_error(CMD, "--omega-max must be in (1, 1000] (got %g)", o.omega_max);
+    return 2;
+  }
+  if (!(o.lambda_min > 0) || !(o.lambda_max > o.lambda_min) || o.lambda_max > 1000) {
+    cli_error(CMD, "need 0 < --lambda-min < --lambda-max <= 1000 (got %g, %g)", o.lambda_min,
+              o.lambda_max);
+    return 2;
+  }
+  if (!(o.ds_max > 0) || o.ds_max > 1) {
+    cli_error(CMD, "--ds-max must be in (0, 1] (got %g)", o.ds_max);
+    return 2;
+  }
+  char msg[512] = "";
+  whirl_sfd_region reg;
+  const double t0 = cli_now();
+  int rc = whirl_sfd_region_compute(&o, &reg, msg, sizeof msg);
+  const double secs = cli_now() - t0;
+  if (rc != 0) {
+    cli_error(CMD, "%s", msg);
+    whirl_sfd_region_free(&reg);
+    return 1;
+  }
+  if (cli_mkdirs(dir)) {
+    cli_error(CMD, "cannot create output directory '%s': %s", dir, strerror(errno));
+    whirl_sfd_region_free(&reg);
+    return 1;
+  }
+  int status = 0;
+  if (write_curve(dir, "upper.tsv", &reg.upper,
+                  "upper boundary: isola-peak merge point (G = G_eps = G_Omega = 0) continued "
+                  "in lambda", o.zeta, o.omega_max) ||
+      write_curve(dir, "lower.tsv", &reg.lower,
+                  "lower boundary: fold at Omega = W (G = G_eps = 0) continued in (lambda, "
+                  "delta), both branches", o.zeta, o.omega_max) ||
+      write_band(dir, &reg, o.lambda_min, o.lambda_max, o.omega_max)) {
+    cli_error(CMD, "writing the tables in '%s' failed: %s", dir, strerror(errno));
+    status = 1;
+  }
+  if (!status && !noplot) {
+    if (write_plot(dir, &reg, o.zeta, o.omega_max, o.lambda_min, o.lambda_max)) {
+      cli_error(CMD, "cannot write %s/region.gp: %s", dir, strerror(errno));
+      status = 1;
+    } else if (cli_plot(dir, "region", msg, sizeof msg)) {
+      cli_error(CMD, "plot: %s", msg);
+      status = 1;
+    }
+  }
+  printf("curve\ttype\tlambda\tdelta\tOmega\teps\n");
+  for (int c = 0; c < 2; ++c) {
+    const whirl_sfd_curve *cv = c ? &reg.lower : &reg.upper;
+    for (size_t i = 0; i < cv->len; ++i)
+      if (cv->type[i])
+        printf("%s\t%s\t%.10f\t%.10f\t%.10f\t%.10f\n", c ? "lower" : "upper",
+               whirl_point_type_name(cv->type[i]), cv->lambda[i], cv->delta[i], cv->Omega[i],
+               cv->eps[i]);
+  }
+  if (!quiet) {
+    fprintf(stderr, "whirl sfd region: zeta = %g, W = %g, lambda in [%g, %g]: %zu + %zu points, "
+                    "%zu steps, %zu Newton iterations, %.3f s\n",
+            o.zeta, o.omega_max, o.lambda_min, o.lambda_max, reg.upper.len, reg.lower.len,
+            reg.steps, reg.newton_its, secs);
+    fprintf(stderr, "  max relative residual of eq. 15: upper %.1e, lower %.1e\n",
+            reg.max_res_upper, reg.max_res_lower);
+    if (!isnan(reg.lambda_m))
+      fprintf(stderr, "  the merge point reaches Omega = W at lambda = %.8f, delta = %.8f "
+                      "(MG on the lower curve); beyond it the upper boundary is the second "
+                      "fold at W\n", reg.lambda_m, reg.delta_m);
+    if (!isnan(reg.lambda_c))
+      fprintf(stderr, "  the two folds at Omega = W meet in a cusp (CP) at lambda = %.8f, "
+                      "delta = %.8f: the region closes there\n", reg.lambda_c, reg.delta_c);
+    if (!status)
+      fprintf(stderr, "  wrote %s/upper.tsv, lower.tsv, band.tsv%s\n", dir,
+              noplot ? "" : ", region.png");
+  }
+  whirl_sfd_region_free(&reg);
+  return status;
+}
