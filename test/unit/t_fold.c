@@ -25,6 +25,7 @@
 #include <string.h>
 
 #include <whirl/whirl.h>
+#include <whirl/sfd_region.h>
 
 #include "../tap.h"
 
@@ -517,6 +518,151 @@ static void test_sfd_merge(void) {
   whirl_equilibrium_free(eq);
 }
 
+/* whirl_sfd_merge_points against eq. 15 at several (lambda, zeta): the eq.
+ * 15 Newton starts 1 % away from whirl's point and must come back to it. */
+static void test_merge_points(void) {
+  const double lams[] = {0.02, 0.05, 0.25, 1.0};
+  for (int z = 0; z < 2; ++z)
+    for (size_t i = 0; i < sizeof lams / sizeof *lams; ++i) {
+      const double zeta = z ? 0.05 : 0.0;
+      whirl_sfd_curve mp;
+      char err[256];
+      int rc = whirl_sfd_merge_points(lams[i], zeta, &mp, err, sizeof err);
+      ok(rc == 0 && mp.len >= 1, "merge points at lambda %g, zeta %g: %zu", lams[i], zeta, mp.len);
+      if (mp.len < 1) continue;
+      double e = mp.eps[0] * 1.01, W = mp.Omega[0] * 0.99, d = mp.delta[0] * 1.01;
+      rc = eq15_merge(lams[i], zeta, &e, &W, &d);
+      ok(rc == 0 && fabs(d - mp.delta[0]) < 1e-9 && fabs(W - mp.Omega[0]) < 1e-7 &&
+             fabs(e - mp.eps[0]) < 1e-7 && mp.type[0] == WHIRL_PT_MG,
+         "merge at lambda %g, zeta %g: delta %.10f Omega %.8f eps %.8f (%s) = eq. 15 "
+         "(%.1e, %.1e, %.1e)",
+         lams[i], zeta, mp.delta[0], mp.Omega[0], mp.eps[0], whirl_point_type_name(mp.type[0]),
+         d - mp.delta[0], W - mp.Omega[0], e - mp.eps[0]);
+      whirl_sfd_curve_free(&mp);
+    }
+}
+
+/* ------------------------------------------------------------------------
+ * (h) nesting: the fold system of a harmonic-balance system (fixed-frame
+ * periodic orbits, F_E != 0 possible).  At F_E = 0 the HBM fold curve in
+ * (Omega, delta) passes the same merge as eq. 15; then the fold is carried
+ * to F_E = -0.1 along the fold curve in (Omega, F_E) and the merge is found
+ * again, converged in the number of harmonics. */
+
+static whirl_hbm *sfd_hbm(size_t N) {
+  whirl_hbm_options ho;
+  whirl_hbm_options_default(&ho);
+  ho.harmonics = N;
+  ho.forcing_param = WHIRL_SFD_OMEGA;
+  ho.no_spectrum = 1;
+  return whirl_hbm_alloc(whirl_sfd_fixed(), &ho, NULL, 0);
+}
+
+/* HBM coefficients of the circular orbit (eps, Omega) of eq. 15. */
+static void circular_X(const whirl_hbm *h, double eps, const double *p, double *X) {
+  const double W = p[WHIRL_SFD_OMEGA];
+  double r[4];
+  whirl_sfd_circ_state(eps, W, p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA], r);
+  enum { M = 64 };
+  double x[4 * M];
+  for (int k = 0; k < M; ++k) {
+    const double th = 2.0 * 3.14159265358979323846 * k / M, c = cos(th), s = sin(th);
+    const double y = r[0] * c - r[1] * s, z = r[0] * s + r[1] * c;
+    x[4 * k] = y, x[4 * k + 1] = z, x[4 * k + 2] = -W * z, x[4 * k + 3] = W * y;
+  }
+  whirl_hbm_from_samples(h, x, M, 2.0 * 3.14159265358979323846 / W, X);
+}
+
+/* Trace the fold system of sys from Z in parameter icp until the first
+ * point of type `type`; its delta, Omega (Z[nx]) and F_E in out[3]. */
+static int fold_event(whirl_fold *f, double *Z, double *p, size_t icp, int dir, double pmin,
+                      double pmax, int type, double *out, double *Zend) {
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = icp;
+  co.ds = 0.005;
+  co.ds_max = 0.15;
+  co.nmx = 600;
+  co.p_min = pmin;
+  co.p_max = pmax;
+  co.newton_tol = 1e-11;
+  co.detect_bp = co.detect_hb = 0;
+  const whirl_system *s = whirl_fold_system(f);
+  whirl_cont *c = whirl_cont_alloc(s, &co, NULL, 0);
+  int rc = whirl_cont_start(c, Z, p, dir), found = 0;
+  while (rc == WHIRL_OK && (rc = whirl_cont_step(c)) == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(c);
+    if ((type && pt->type == type) || (!type && whirl_cont_stop_reason(c) != 0)) found = 1;
+    if (!type || found) {
+      out[0] = pt->p[WHIRL_SFD_DELTA];
+      out[1] = pt->x[s->n - 1];
+      out[2] = pt->p[WHIRL_SFD_FE];
+      if (Zend) memcpy(Zend, pt->x, s->n * sizeof *Zend);
+      if (Zend) memcpy(p, pt->p, s->npar * sizeof *p);
+    }
+    if (found) break;
+  }
+  if (!type && rc == WHIRL_DONE) found = 1;
+  if (getenv("T_FOLD_DEBUG"))
+    printf("# fold_event icp %zu: %zu steps, stop %s, rc %d (%s), last p %.10g\n", icp,
+           whirl_cont_get_stats(c)->steps, whirl_stop_reason_name(whirl_cont_stop_reason(c)), rc,
+           whirl_cont_errmsg(c), whirl_cont_point(c)->p[icp]);
+  whirl_cont_free(c);
+  return found ? 0 : -1;
+}
+
+static void test_hbm_fold(void) {
+  double p[WHIRL_SFD_NPAR];
+  whirl_sfd_default_params(p); /* Table 1: lambda 0.0503, delta 0.3 */
+  whirl_sfd_curve mp;
+  whirl_sfd_merge_points(p[WHIRL_SFD_LAMBDA], 0.0, &mp, NULL, 0);
+  const double dstar = mp.len ? mp.delta[0] : NAN;
+  whirl_sfd_curve_free(&mp);
+  double e = 0.91, W = 7.09, mg8[3] = {0}, mg12[3] = {0};
+  ok(whirl_sfd_circ_fold(&e, &W, p[1], p[2], p[3]) == 0 && fabs(W - 7.0881196) < 1e-6,
+     "HBM fold: the isola fold of Table 1 from eq. 15 (Omega %.10f)", W);
+  for (int pass = 0; pass < 2; ++pass) {
+    const size_t N = pass ? 12 : 8;
+    whirl_hbm *h = sfd_hbm(N);
+    const whirl_system *hs = whirl_hbm_system(h);
+    const size_t nx = whirl_hbm_size(h);
+    double *X = calloc(nx, sizeof *X), *Z = calloc(nx + 1, sizeof *Z);
+    double pp[WHIRL_SFD_NPAR];
+    memcpy(pp, p, sizeof pp);
+    pp[WHIRL_SFD_OMEGA] = W;
+    circular_X(h, e, pp, X);
+    whirl_fold_options fo;
+    whirl_fold_options_default(&fo, WHIRL_SFD_OMEGA);
+    whirl_fold *f = whirl_fold_alloc(hs, &fo, NULL, 0);
+    ok(f && whirl_fold_init(f, X, pp, Z) == WHIRL_OK, "HBM fold (N = %zu): fold system of the "
+       "HBM system started (%zu unknowns)", N, nx + 1);
+    double out[3];
+    if (pass == 0) {
+      int rc = fold_event(f, Z, pp, WHIRL_SFD_DELTA, +1, 0.0, 0.5, WHIRL_PT_MG, out, NULL);
+      ok(rc == 0, "HBM fold, F_E = 0: MG on the fold curve in (Omega, delta)");
+      is_abs(out[0], dstar, 1e-9, "HBM fold, F_E = 0: merge delta = eq. 15 (%.10f)", out[0]);
+      memcpy(Z, Z, 0);
+      whirl_fold_init(f, X, pp, Z);
+    }
+    /* carry the fold to F_E = -0.1 (fold curve in (Omega, F_E)) */
+    int rc = fold_event(f, Z, pp, WHIRL_SFD_FE, -1, -0.1, 0.1, 0, out, Z);
+    ok(rc == 0 && fabs(pp[WHIRL_SFD_FE] + 0.1) < 1e-12,
+       "HBM fold (N = %zu): fold carried to F_E = -0.1, Omega %.10f", N, Z[nx]);
+    rc = fold_event(f, Z, pp, WHIRL_SFD_DELTA, +1, 0.0, 0.5, WHIRL_PT_MG, pass ? mg12 : mg8, NULL);
+    ok(rc == 0, "HBM fold (N = %zu), F_E = -0.1: MG at delta %.10f, Omega %.8f", N,
+       (pass ? mg12 : mg8)[0], (pass ? mg12 : mg8)[1]);
+    whirl_fold_free(f);
+    free(X);
+    free(Z);
+    whirl_hbm_free(h);
+  }
+  ok(mg8[0] > 0.2 && fabs(mg8[0] - mg12[0]) < 1e-8 && fabs(mg8[1] - mg12[1]) < 1e-6,
+     "HBM fold, F_E = -0.1: the merge is converged in the harmonics (8 vs 12: %.1e in delta)",
+     fabs(mg8[0] - mg12[0]));
+  ok(mg8[0] > 0.2 && fabs(mg8[0] - dstar) > 1e-6, "HBM fold: F_E = -0.1 moves the merge (by %.2e)",
+     mg8[0] - dstar);
+}
+
 /* ------------------------------------------------------------------------
  * (g) bad options */
 
@@ -548,6 +694,8 @@ int main(void) {
   test_zh();
   test_jacobian();
   test_sfd_merge();
+  test_merge_points();
+  test_hbm_fold();
   test_errors();
   return done_testing();
 }
