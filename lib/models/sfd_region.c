@@ -486,11 +486,14 @@ void whirl_sfd_region_free(whirl_sfd_region *r) {
 static size_t crossings(const whirl_sfd_curve *c, double lambda, double *dl,
                         double *Om, size_t cap) {
   size_t k = 0;
+  const double tol = 1e-12 * (1.0 + fabs(lambda));
   for (size_t i = 0; i + 1 < c->len && k < cap; ++i) {
     const double a = c->lambda[i], b = c->lambda[i + 1];
-    if ((a - lambda) * (b - lambda) > 0 || a == b) continue;
-    if (b == lambda && i + 2 < c->len) continue; /* counted on the next one */
-    const double u = (lambda - a) / (b - a);
+    const int at_a = fabs(a - lambda) <= tol, at_b = fabs(b - lambda) <= tol;
+    if (!at_a && !at_b && (a - lambda) * (b - lambda) > 0) continue;
+    if (a == b) continue;
+    if (at_b && !at_a && i + 2 < c->len) continue; /* counted on the next one */
+    double u = at_a ? 0.0 : at_b ? 1.0 : (lambda - a) / (b - a);
     dl[k] = c->delta[i] + u * (c->delta[i + 1] - c->delta[i]);
     Om[k] = c->Omega[i] + u * (c->Omega[i + 1] - c->Omega[i]);
     ++k;
@@ -504,14 +507,14 @@ int whirl_sfd_region_band(const whirl_sfd_region *r, double lambda,
   const size_t nl = crossings(&r->lower, lambda, dl, Om, 16);
   const size_t nu = crossings(&r->upper, lambda, du, Ou, 16);
   if (nl == 0) return 0;
-  double dmin = dl[0], dmax = dl[0];
-  for (size_t i = 1; i < nl; ++i) dmin = fmin(dmin, dl[i]), dmax = fmax(dmax, dl[i]);
+  double dmin = dl[0];
+  for (size_t i = 1; i < nl; ++i) dmin = fmin(dmin, dl[i]);
   double top = NAN;
-  /* the merge point below W bounds the region; above W the second fold at
-   * Omega = W does */
+  /* the merge point bounds the region from above while it lies below W;
+   * where the merge speed passes W the two boundaries meet (tangentially)
+   * and the region ends */
   for (size_t i = 0; i < nu; ++i)
     if (Ou[i] <= omega_max && du[i] > dmin && (isnan(top) || du[i] < top)) top = du[i];
-  if (isnan(top) && nl >= 2) top = dmax;
   if (isnan(top) || !(top > dmin)) return 0;
   *lo = dmin;
   *hi = top;

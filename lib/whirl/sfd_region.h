@@ -11,8 +11,10 @@
  *     and the two meet at a cusp (CP) at large lambda; the MG label on it
  *     marks the lambda where the merge point itself reaches Omega = W.
  * The isola exists below Omega = W for delta between the lower branch and
- * the merge curve where the merge speed is <= W, and the upper branch of the
- * Omega = W locus where it is above W (doc/isola-region.md).
+ * the merge curve, as long as the merge speed is <= W; where it reaches W
+ * (MG on the lower curve) the two boundaries touch and the region ends
+ * (doc/isola-region.md; checked against a brute-force grid in
+ * test/bench/bench_region.c).
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_SFD_REGION_H
 #define WHIRL_SFD_REGION_H
