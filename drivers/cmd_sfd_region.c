@@ -84,23 +84,31 @@ static int write_plot(const char *dir, const whirl_sfd_region *r, double zeta, d
           "set xlabel 'SFD constant {/Symbol l}'\nset ylabel 'unbalance {/Symbol d}'\n"
           "set logscale x\nset xrange [%g:%g]\nset yrange [0:1]\nset grid\n"
           "set key top left box opaque\nset datafile separator '\\t'\n"
-          "$sp << EOD\n",
+          "",
           W, zeta, a, b);
-  for (int c = 0; c < 2; ++c) {
-    const whirl_sfd_curve *cv = c ? &r->lower : &r->upper;
-    for (size_t i = 0; i < cv->len; ++i)
-      if (cv->type[i]) fprintf(f, "%.10g\t%.10g\t%s\n", cv->lambda[i], cv->delta[i],
-                               whirl_point_type_name(cv->type[i]));
+  /* special points: MG labelled to the left, the others to the right */
+  for (int side = 0; side < 2; ++side) {
+    fprintf(f, "$sp%d << EOD\n", side);
+    for (int c = 0; c < 2; ++c) {
+      const whirl_sfd_curve *cv = c ? &r->lower : &r->upper;
+      for (size_t i = 0; i < cv->len; ++i)
+        if (cv->type[i] && (cv->type[i] == WHIRL_PT_MG) == (side == 0))
+          fprintf(f, "%.10g\t%.10g\t%s\n", cv->lambda[i], cv->delta[i],
+                  whirl_point_type_name(cv->type[i]));
+    }
+    fprintf(f, "0.001\t-1\t-\nEOD\n");
   }
-  fprintf(f, "EOD\n"
+  fprintf(f, ""
              "plot 'band.tsv' using 1:2:3 with filledcurves fc rgb '#9ecae1' fs solid 0.8 "
              "title 'isolated branch below {/Symbol W}_{max}', \\\n"
              "     'upper.tsv' using 1:2 every ::0 with lines lw 2.5 lc rgb '#d62728' "
              "title 'u: isola-peak merge (continued in {/Symbol l})', \\\n"
              "     'lower.tsv' using 1:2 with lines lw 2.5 lc rgb '#1f4e9c' "
              "title 'l: fold at {/Symbol W} = %g (continued in {/Symbol l}, {/Symbol d})', \\\n"
-             "     $sp using 1:2 with points pt 7 ps 1.5 lc rgb 'black' notitle, \\\n"
-             "     $sp using 1:2:3 with labels offset 1.2,0.8 notitle\n",
+             "     $sp0 using 1:2 with points pt 7 ps 1.5 lc rgb 'black' notitle, \\\n"
+             "     $sp1 using 1:2 with points pt 7 ps 1.5 lc rgb 'black' notitle, \\\n"
+             "     $sp0 using 1:2:3 with labels right offset -0.6,0.9 notitle, \\\n"
+             "     $sp1 using 1:2:3 with labels left offset 0.6,0.9 notitle\n",
           W);
   if (out_commit(&o)) return -1;
   return 0;
@@ -191,11 +199,11 @@ int cmd_sfd_region(int argc, char **argv) {
             reg.max_res_upper, reg.max_res_lower);
     if (!isnan(reg.lambda_m))
       fprintf(stderr, "  the merge point reaches Omega = W at lambda = %.8f, delta = %.8f "
-                      "(MG on the lower curve); beyond it the upper boundary is the second "
-                      "fold at W\n", reg.lambda_m, reg.delta_m);
+                      "(MG on the lower curve): the two boundaries touch and the region "
+                      "ends\n", reg.lambda_m, reg.delta_m);
     if (!isnan(reg.lambda_c))
       fprintf(stderr, "  the two folds at Omega = W meet in a cusp (CP) at lambda = %.8f, "
-                      "delta = %.8f: the region closes there\n", reg.lambda_c, reg.delta_c);
+                      "delta = %.8f (not a boundary of the region)\n", reg.lambda_c, reg.delta_c);
     if (!status)
       fprintf(stderr, "  wrote %s/upper.tsv, lower.tsv, band.tsv%s\n", dir,
               noplot ? "" : ", region.png");
