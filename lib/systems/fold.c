@@ -123,6 +123,20 @@ static int fq_at(whirl_fold *f, const double *x, const double *p, double *out) {
   return whirl_system_param(&f->base, x, p, f->o.par, out, f->work);
 }
 
+/* w^T (Ap - Am) v with the current null vectors: the difference of two
+ * shifted Jacobians contracted with w and v. */
+static double wdiffv(const whirl_fold *f) {
+  const size_t n = f->n;
+  double s = 0.0;
+  for (size_t j = 0; j < n; ++j) {
+    double col = 0.0;
+    for (size_t i = 0; i < n; ++i)
+      col += f->w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
+    s += col * f->v[j];
+  }
+  return s;
+}
+
 /* w^T F_xx[v, v] / (|w| |v|^2) from F_x at x +- h v (uses f->Ap, f->Am). */
 static int cusp_value(whirl_fold *f, const double *x, const double *p,
                       double *val) {
@@ -134,13 +148,7 @@ static int cusp_value(whirl_fold *f, const double *x, const double *p,
   if ((rc = jac(f, f->xs, p, f->Ap)) != 0) return rc;
   for (size_t i = 0; i < n; ++i) f->xs[i] = x[i] - h * v[i];
   if ((rc = jac(f, f->xs, p, f->Am)) != 0) return rc;
-  double s = 0.0;
-  for (size_t j = 0; j < n; ++j) {
-    double col = 0.0;
-    for (size_t i = 0; i < n; ++i)
-      col += w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
-    s += col * v[j];
-  }
+  const double s = wdiffv(f);
   const double nv = norm2(v, n), nw = norm2(w, n);
   *val = s / (2.0 * h) / (nw * nv * nv);
   return 0;
@@ -225,13 +233,7 @@ static int fold_Fx(const double *Z, const double *p, double *J, void *data) {
     if ((rc = jac(f, Z, f->pq, f->Ap)) != 0) return rc;
     f->pq[q] = f->pf[q] - hq;
     if ((rc = jac(f, Z, f->pq, f->Am)) != 0) return rc;
-    double s = 0.0;
-    for (size_t j = 0; j < n; ++j) {
-      double col = 0.0;
-      for (size_t i = 0; i < n; ++i)
-        col += w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
-      s += col * v[j];
-    }
+    const double s = wdiffv(f);
     J[n + N * (n + k)] = -s / (2.0 * hq);
   }
   if (f->o.cond) {
