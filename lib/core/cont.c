@@ -64,6 +64,7 @@ void whirl_cont_options_default(whirl_cont_options *o) {
   o->detect_loop = 1;
   o->loc_tol = 1e-12;
   o->linsol = WHIRL_LINSOL_DENSE;
+  o->structured = 1;
   o->uz = NULL;
   o->nuz = 0;
 }
@@ -163,9 +164,15 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   c->N = sys->n + 1;
   c->npar = sys->npar;
   c->sparse = opt->linsol == WHIRL_LINSOL_SPARSE;
-  c->bd = whirl_bordered_alloc(c->sparse ? WHIRL_LINSOL_SPARSE : WHIRL_LINSOL_DENSE,
-                               c->n, 1, sys->Jp, sys->Ji);
-  if (!c->bd) goto nomem;
+  if (opt->structured && sys->bsolver) {
+    c->bs = sys->bsolver;
+    c->bws = c->bs->alloc(sys->data);
+    if (!c->bws) goto nomem;
+  } else {
+    c->bd = whirl_bordered_alloc(c->sparse ? WHIRL_LINSOL_SPARSE : WHIRL_LINSOL_DENSE,
+                                 c->n, 1, sys->Jp, sys->Ji);
+    if (!c->bd) goto nomem;
+  }
   if (c->sparse) {
     c->Jx = calloc(sys->nnz, sizeof *c->Jx);
     if (!c->Jx) goto nomem;
@@ -210,6 +217,7 @@ nomem:
 void whirl_cont_free(whirl_cont *c) {
   if (!c) return;
   whirl_bordered_free(c->bd);
+  if (c->bs) c->bs->free(c->bws);
   whirl_eig_free(c->eig);
   free(c->J);
   free(c->Jx);
@@ -261,18 +269,41 @@ static int eval_jac(whirl_cont *c, const double *x, const double *p) {
   return classify(c, rc, "parameter derivative");
 }
 
-/* Factor [F_x F_p; r^T] with r the weighted direction dir. */
-static int factor_ext(whirl_cont *c, const double *dir) {
+/* Evaluate the Jacobian at (x, p) and factor [F_x F_p; r^T] with r the
+ * weighted direction dir: by the system's structured solver, or by the
+ * general (dense or sparse) LU of the assembled matrix.  Returns 0, 2 for a
+ * recoverable model failure, 3 for a singular matrix, < 0 fatal. */
+static int jac_factor(whirl_cont *c, const double *x, const double *p,
+                      const double *dir) {
   const double w = c->opt.p_weight;
   for (size_t i = 0; i < c->n; ++i) c->row[i] = dir[i];
   c->row[c->n] = w * w * dir[c->n];
+  int rc;
+  if (c->bs) {
+    ++c->stats.jac_evals;
+    ++c->stats.factorizations;
+    rc = c->bs->factor(c->bws, x, p, c->opt.icp, c->row);
+    if (rc == WHIRL_OK) return 0;
+    if (rc == WHIRL_ESINGULAR) return 3;
+    return classify(c, rc, "structured factorisation of the extended Jacobian");
+  }
+  if ((rc = eval_jac(c, x, p)) != 0) return rc;
   ++c->stats.factorizations;
-  int rc = whirl_bordered_factor(c->bd, c->sparse ? c->Jx : c->J, c->fp,
-                                 c->row, &c->row[c->n]);
+  rc = whirl_bordered_factor(c->bd, c->sparse ? c->Jx : c->J, c->fp,
+                             c->row, &c->row[c->n]);
   if (rc == WHIRL_OK) return 0;
   if (rc == WHIRL_ESINGULAR) return 3;
   return CONT_FAIL(c, rc, "factorisation of the extended Jacobian: %s",
                    whirl_bordered_errmsg(c->bd));
+}
+
+/* Solve with the last factorisation, b[N] in place. */
+static int ext_solve(whirl_cont *c, double *b, const char *what) {
+  int rc = c->bs ? c->bs->solve(c->bws, b, 1)
+                 : whirl_bordered_solve(c->bd, b, 1, 0);
+  if (rc == WHIRL_OK) return 0;
+  return CONT_FAIL(c, rc, "%s: %s", what,
+                   c->bs ? whirl_strerror(rc) : whirl_bordered_errmsg(c->bd));
 }
 
 /* ------------------------------------------------------------ corrector */
@@ -288,15 +319,12 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
     int rc = whirl_system_eval(&c->sys, X, p, c->f);
     ++c->stats.f_evals;
     if ((rc = classify(c, rc, "F")) != 0) return rc;
-    if ((rc = eval_jac(c, X, p)) != 0) return rc;
-    if ((rc = factor_ext(c, dir)) != 0) return rc;
+    if ((rc = jac_factor(c, X, p, dir)) != 0) return rc;
     double acc = 0.0;
     for (size_t i = 0; i < n; ++i) c->rhs[i] = c->f[i];
     for (size_t i = 0; i < N; ++i) acc += c->row[i] * (X[i] - X0[i]);
     c->rhs[n] = acc - s;
-    rc = whirl_bordered_solve(c->bd, c->rhs, 1, 0);
-    if (rc != WHIRL_OK)
-      return CONT_FAIL(c, rc, "bordered solve: %s", whirl_bordered_errmsg(c->bd));
+    if ((rc = ext_solve(c, c->rhs, "bordered solve")) != 0) return rc;
     ++c->stats.newton_its;
     double dmax = 0.0, xmax = 0.0;
     for (size_t i = 0; i < N; ++i) {
@@ -377,19 +405,19 @@ int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
   for (size_t k = 0; k < c->npar; ++k)
     if (k != c->opt.icp) st->p[k] = c->cur.p[k];
   st->p[c->opt.icp] = st->X[n];
-  int rc = eval_jac(c, st->X, st->p);
+  int rc = jac_factor(c, st->X, st->p, dir);
   if (rc != 0) return rc;
-  if ((rc = factor_ext(c, dir)) != 0) return rc;
   /* tangent: [F_x F_p; r^T] z = e_N, then t = z / |z|_w (Keller). */
   memset(st->t, 0, N * sizeof *st->t);
   st->t[n] = 1.0;
-  rc = whirl_bordered_solve(c->bd, st->t, 1, 0);
-  if (rc != WHIRL_OK)
-    return CONT_FAIL(c, rc, "tangent solve: %s", whirl_bordered_errmsg(c->bd));
+  if ((rc = ext_solve(c, st->t, "tangent solve")) != 0) return rc;
   const double nz = cont_norm(c, st->t);
   if (!(nz > 0) || !isfinite(nz)) return 1;
   for (size_t i = 0; i < N; ++i) st->t[i] /= nz;
-  whirl_bordered_logdet(c->bd, &st->logdet, &st->sign_det);
+  if (c->bs)
+    c->bs->logdet(c->bws, &st->logdet, &st->sign_det);
+  else
+    whirl_bordered_logdet(c->bd, &st->logdet, &st->sign_det);
   st->psi_lp = st->t[n];
 
   st->n_unstable = -1;
@@ -402,7 +430,7 @@ int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
   st->nspec = 0;
   if (c->sys.spectrum && c->sys.nspec) {
     size_t m = c->sys.nspec;
-    rc = c->sys.spectrum(st->X, st->p, c->sparse ? NULL : c->J, st->re, st->im,
+    rc = c->sys.spectrum(st->X, st->p, c->sparse || c->bs ? NULL : c->J, st->re, st->im,
                          &m, c->sys.data);
     ++c->stats.eig_evals;
     if ((rc = classify(c, rc, "spectrum")) != 0) return rc;

@@ -43,7 +43,9 @@ struct whirl_cont {
   size_t n, N, npar; /* N = n + 1 */
   int sparse;
 
-  whirl_bordered *bd; /* extended matrix [F_x F_p; r^T] */
+  whirl_bordered *bd; /* extended matrix [F_x F_p; r^T] (general LU) */
+  const whirl_bsolver *bs; /* or the system's structured solver ... */
+  void *bws;               /* ... and its workspace */
   double *J;          /* dense F_x[n*n] (dense path) */
   double *Jx;         /* sparse values[nnz] (sparse path) */
   double *fp;         /* F_p[n] */

@@ -81,6 +81,10 @@ typedef struct whirl_cont_options {
   int detect_loop;     /* stop when the branch returns to its start */
   double loc_tol;      /* localisation tolerance in arclength */
   whirl_linsol_kind linsol; /* DENSE, or SPARSE when the system has a pattern */
+  int structured;      /* 1: factor the bordered Newton matrix with the
+                          system's own structured solver (whirl_system
+                          bsolver) when it has one; 0: always the LU of
+                          `linsol` (a check, or for comparison) */
   const double *uz;    /* optional parameter values to output as UZ */
   size_t nuz;
 } whirl_cont_options;
@@ -88,7 +92,7 @@ typedef struct whirl_cont_options {
 /* Defaults: icp 0, ds 1e-2, ds_min 1e-8, ds_max 0.5, nmx 1000, p bounds
  * +-1e30, p_weight 1, newton_tol 1e-10, newton_maxit 12, newton_fast 3,
  * max_angle 0.2 rad, secant predictor, all detections on, loop detection on,
- * loc_tol 1e-12, dense solver. */
+ * loc_tol 1e-12, dense solver, the system's structured solver if any. */
 WHIRL_API void whirl_cont_options_default(whirl_cont_options *opt);
 
 typedef struct whirl_cont_stats {
