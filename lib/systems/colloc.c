@@ -382,11 +382,9 @@ static int colloc_spectrum(const double *X, const double *p, const double *J,
   c->rhs_fail = 0;
   int rc;
   if (c->floquet == WHIRL_COLLOC_FLOQUET_CONDENSED) {
-    if (!c->spec_ws && !(c->spec_ws = colloc_bsolver.alloc(c)))
-      return WHIRL_ENOMEM;
     double Mbuf[64], *M = c->n <= 8 ? Mbuf : malloc(c->n * c->n * sizeof *M);
     if (!M) return WHIRL_ENOMEM;
-    rc = colloc_cond_monodromy(c->spec_ws, X, p, M);
+    rc = colloc_cond_monodromy(c, X, p, M);
     if (rc == WHIRL_OK)
       rc = whirl_floquet_from_monodromy(&c->shim, p, c->t0, X,
                                         X + c->n * (c->nnodes - 1), M, c->aut,
@@ -706,6 +704,7 @@ int whirl_colloc_adapt(whirl_colloc *c, double *X) {
   }
   c->mesh[0] = 0.0;
   c->mesh[N] = 1.0;
+  c->last_ws = NULL; /* factorisations on the old mesh are not reused */
   for (size_t k = 1; k <= N; ++k)
     if (!(c->mesh[k] > c->mesh[k - 1])) {
       /* degenerate interval (cannot happen for positive E): give up */
@@ -811,6 +810,7 @@ int whirl_colloc_pd_switch(const whirl_colloc *c, const double *X,
   int rc;
 
   /* the doubled orbit on c2's nodes */
+  c2->last_ws = NULL; /* c2's mesh changes */
   if (N2 == 2 * N && m2 == m) {
     for (size_t i = 0; i <= N; ++i) {
       c2->mesh[i] = 0.5 * c->mesh[i];

@@ -44,6 +44,13 @@
 
 #include "colloc_impl.h"
 
+/* The product of the pivots as mantissa * 2^exponent: no overflow, and no
+ * logarithm per pivot. */
+typedef struct det_acc {
+  double mant; /* sign included */
+  long expo;
+} det_acc;
+
 typedef struct cond_ws {
   whirl_colloc *c;
   size_t n, m, N, nx;
@@ -75,7 +82,17 @@ typedef struct cond_ws {
   double *xs;    /* n (NTST + 1) + ng: mesh-point values and globals */
   double *bb;    /* nb */
   double *tmp;   /* 3 nf: the final right-hand side, solution, back values */
-  double logabs;
+  det_acc det_c; /* product of the pivots of the collocation rows */
+  size_t npiv_c; /* their number */
+  int jac_ok;    /* the collocation rows are factored (at Xf, pf, kf) */
+  double *Xf, *pf;
+  size_t kf, npar;
+  int *slab;     /* n: M's rows of the n rows left after step 2 */
+  double *Jrow;  /* n */
+  double *mblk;  /* 2n^2 + 2n: the monodromy matrix */
+  int *mpiv, *mlab; /* n each */
+  det_acc det;   /* product of all the pivots */
+  double logabs; /* log|det M| and its sign, when factored */
   int sign;
   int state; /* 0 none, 1 factored, 2 singular */
 } cond_ws;
@@ -103,6 +120,14 @@ static void cond_free(void *p) {
   free(w->xs);
   free(w->bb);
   free(w->tmp);
+  free(w->Xf);
+  free(w->pf);
+  free(w->slab);
+  free(w->Jrow);
+  free(w->mblk);
+  free(w->mpiv);
+  free(w->mlab);
+  if (w->c && w->c->last_ws == w) w->c->last_ws = NULL;
   free(w);
 }
 
@@ -149,9 +174,19 @@ static void *cond_alloc(void *data) {
   w->xs = malloc((n * (N + 1) + w->ng) * sizeof *w->xs);
   w->bb = malloc(w->nb * sizeof *w->bb);
   w->tmp = malloc(3 * w->nf * sizeof *w->tmp);
+  w->npar = np;
+  w->Xf = malloc(w->nx * sizeof *w->Xf);
+  w->pf = malloc(np * sizeof *w->pf);
+  w->slab = malloc(n * sizeof *w->slab);
+  w->Jrow = malloc(n * sizeof *w->Jrow);
+  w->mblk = malloc((2 * n * n + 2 * n) * sizeof *w->mblk);
+  w->mpiv = malloc(n * sizeof *w->mpiv);
+  w->mlab = malloc(n * sizeof *w->mlab);
   if (!w->W || !w->wpiv || !w->wlab || !w->P || !w->ppiv || !w->B || !w->F ||
       !w->fpiv || !w->lab || !w->prow || !w->pcol || !w->mark || !w->fk ||
-      !w->dT || !w->work || !w->loc || !w->ploc || !w->xs || !w->bb || !w->tmp) {
+      !w->dT || !w->work || !w->loc || !w->ploc || !w->xs || !w->bb || !w->tmp ||
+      !w->Xf || !w->pf || !w->slab || !w->Jrow || !w->mblk || !w->mpiv ||
+      !w->mlab) {
     cond_free(w);
     return NULL;
   }
@@ -160,15 +195,36 @@ static void *cond_alloc(void *data) {
 
 /* ------------------------------------------------------------ kernels */
 
+/* a[k] -= l u[k], k < len: the update of every elimination, unrolled by
+ * four so that it runs at full speed without auto-vectorisation (-O2). */
+static inline void row_update(double *restrict a, const double *restrict u,
+                              double l, size_t len) {
+  size_t k = 0;
+  for (; k + 4 <= len; k += 4) {
+    a[k] -= l * u[k];
+    a[k + 1] -= l * u[k + 1];
+    a[k + 2] -= l * u[k + 2];
+    a[k + 3] -= l * u[k + 3];
+  }
+  for (; k < len; ++k) a[k] -= l * u[k];
+}
+
+static void det_mul(det_acc *d, double v) {
+  int e;
+  d->mant = frexp(d->mant * v, &e);
+  d->expo += e;
+}
+
 /* Gaussian elimination with partial pivoting of the first ne columns of the
  * row-major block A (rows of ld entries): pivots are sought among the first
  * np rows; the next nextra rows (borders) are eliminated but never pivot.
  * Whole rows are swapped (LAPACK's convention: P A = L U, apply all the
- * swaps first when solving); lab[np] follows the swaps.  Accumulates
- * log|pivot| and the pivots' signs.  Returns 0, or 1 at a zero pivot
- * column (exactly singular), or 2 at a non-finite pivot. */
+ * swaps first when solving); lab[np] follows the swaps.  The diagonal of U
+ * is stored as its reciprocal (the solves multiply).  Multiplies the
+ * pivots into *det.  Returns 0, or 1 at a zero pivot column (exactly
+ * singular), or 2 at a non-finite pivot. */
 static int gepp(double *A, size_t ld, size_t np, size_t nextra, size_t ne,
-                int *piv, int *lab, double *logabs, int *sign) {
+                int *piv, int *lab, det_acc *det) {
   for (size_t c = 0; c < ne; ++c) {
     size_t pr = c;
     double best = fabs(A[c * ld + c]);
@@ -190,22 +246,22 @@ static int gepp(double *A, size_t ld, size_t np, size_t nextra, size_t ne,
       lab[c] = lab[pr];
       lab[pr] = t;
     }
-    const double *u = A + c * ld;
-    const double d = u[c];
-    *logabs += log(fabs(d));
-    if (d < 0.0) *sign = -*sign;
+    double *u = A + c * ld;
+    const double d = u[c], dinv = 1.0 / d;
+    det_mul(det, d);
+    u[c] = dinv; /* U is kept with reciprocal diagonal */
     for (size_t r = c + 1; r < np + nextra; ++r) {
       double *a = A + r * ld;
-      const double l = a[c] / d;
+      const double l = a[c] * dinv;
       a[c] = l;
-      if (l != 0.0)
-        for (size_t k = c + 1; k < ld; ++k) a[k] -= l * u[k];
+      if (l != 0.0) row_update(a + c + 1, u + c + 1, l, ld - c - 1);
     }
   }
   return 0;
 }
 
-/* The forward part of a solve with a gepp block: the swaps, then L. */
+/* The forward part of a solve with a gepp block: the swaps, then L, row by
+ * row (contiguous dot products). */
 static void gepp_forward(const double *A, size_t ld, size_t np, size_t nextra,
                          size_t ne, const int *piv, double *b) {
   for (size_t c = 0; c < ne; ++c)
@@ -214,10 +270,17 @@ static void gepp_forward(const double *A, size_t ld, size_t np, size_t nextra,
       b[c] = b[piv[c]];
       b[piv[c]] = t;
     }
-  for (size_t c = 0; c < ne; ++c) {
-    const double bc = b[c];
-    if (bc == 0.0) continue;
-    for (size_t r = c + 1; r < np + nextra; ++r) b[r] -= A[r * ld + c] * bc;
+  for (size_t r = 1; r < np + nextra; ++r) {
+    const double *a = A + r * ld;
+    const size_t kmax = r < ne ? r : ne;
+    double s0 = 0.0, s1 = 0.0;
+    size_t k = 0;
+    for (; k + 2 <= kmax; k += 2) {
+      s0 += a[k] * b[k];
+      s1 += a[k + 1] * b[k + 1];
+    }
+    if (k < kmax) s0 += a[k] * b[k];
+    b[r] -= s0 + s1;
   }
 }
 
@@ -227,10 +290,21 @@ static void gepp_back(const double *A, size_t ld, size_t ne, size_t ny,
                       const double *b, const double *y, double *x) {
   for (size_t c = ne; c-- > 0;) {
     const double *a = A + c * ld;
-    double s = b[c];
-    for (size_t k = c + 1; k < ne; ++k) s -= a[k] * x[k];
-    for (size_t k = 0; k < ny; ++k) s -= a[ne + k] * y[k];
-    x[c] = s / a[c];
+    double s0 = b[c], s1 = 0.0;
+    size_t k = c + 1;
+    for (; k + 2 <= ne; k += 2) {
+      s0 -= a[k] * x[k];
+      s1 -= a[k + 1] * x[k + 1];
+    }
+    if (k < ne) s0 -= a[k] * x[k];
+    const double *ay = a + ne;
+    k = 0;
+    for (; k + 2 <= ny; k += 2) {
+      s0 -= ay[k] * y[k];
+      s1 -= ay[k + 1] * y[k + 1];
+    }
+    if (k < ny) s0 -= ay[k] * y[k];
+    x[c] = (s0 + s1) * a[c];
   }
 }
 
@@ -259,101 +333,100 @@ static const double *cond_rows(const cond_ws *w, size_t i) {
   return w->W + i * w->wr * w->wc + w->ni * w->wc + w->ni;
 }
 
-/* Steps 1–2 (and 3 unless mono): condense every interval, eliminate the
- * inner mesh points.  mono: the collocation rows only (no globals, no
- * borders, no final system), for the monodromy matrix. */
-static int cond_factor_impl(cond_ws *w, const double *X, const double *p,
-                            size_t k, const double *r, int mono) {
+/* A border row b (ld entries) eliminated by the ne pivot rows of a gepp
+ * block A: its multipliers replace b[0..ne−1], and the rest of b is
+ * updated.  The same arithmetic as gepp applies to its extra rows, so
+ * borders may be (re)done after the collocation rows. */
+static void border_eliminate(const double *A, size_t ld, size_t ne,
+                             double *b) {
+  for (size_t c = 0; c < ne; ++c) {
+    const double *u = A + c * ld;
+    const double l = b[c] * u[c]; /* reciprocal diagonal */
+    b[c] = l;
+    if (l != 0.0) row_update(b + c + 1, u + c + 1, l, ld - c - 1);
+  }
+}
+
+static int singular(cond_ws *w) {
+  w->state = 2;
+  return WHIRL_ESINGULAR;
+}
+
+/* The collocation rows: the Jacobian at (X, p), dF/dp_k unless mono, the
+ * condensation of every interval and the elimination of the inner mesh
+ * points.  mono: F_x only (no parameter column, the T column left out),
+ * for the monodromy matrix. */
+static int factor_colloc(cond_ws *w, const double *X, const double *p,
+                         size_t k, int mono) {
   whirl_colloc *c = w->c;
-  const size_t n = w->n, m = w->m, N = w->N, nx = w->nx, ni = w->ni,
-               nm = w->nm, ng = w->ng, wc = w->wc, pc = w->pc, bc = w->bc;
-  const size_t nb = mono ? 0 : w->nb;
+  const whirl_problem *pr = c->prob;
+  const size_t n = w->n, m = w->m, N = w->N, ni = w->ni, nm = w->nm,
+               ng = w->ng, wc = w->wc, pc = w->pc;
   const double T = colloc_period_of(c, X, p);
   int rc;
   w->state = 0;
-  w->logabs = 0.0;
-  w->sign = 1;
-  w->npiv = 0;
+  w->jac_ok = 0;
+  w->det_c.mant = 1.0;
+  w->det_c.expo = 0;
+  w->npiv_c = 0;
   if (!(T > 0) || !isfinite(T)) return 1; /* recoverable, as F */
-  if (!mono) {
+  /* dF/dp_k: in the loop below from the model's f_p when the parameter
+   * enters through f only, else by the system (forcing frequency: T and the
+   * time argument depend on it too) */
+  const int fk_loop = !mono && pr->jac_p && !(!c->aut && (int)k == c->fpar);
+  if (!mono && !fk_loop) {
     rc = whirl_system_param(&c->sys, X, p, k, w->fk, w->work);
     if (rc != 0) return rc;
-    memset(w->B, 0, w->nb * bc * sizeof *w->B);
-    /* border rows on the mesh points and the globals */
-    for (size_t t = 0; t < w->nb; ++t) {
-      const int is_phase = c->aut && t == 0;
-      double *Bt = w->B + t * bc;
-      for (size_t i = 0; i <= N; ++i)
-        for (size_t q = 0; q < n; ++q)
-          Bt[n * i + q] = is_phase ? c->phase[n * (i * m) + q] : r[n * (i * m) + q];
-      if (is_phase) {
-        Bt[n * (N + 1)] = 0.0;                 /* T */
-        Bt[n * (N + 1) + 1] = w->fk[nx - 1];   /* p_k */
-      } else {
-        if (c->aut) Bt[n * (N + 1)] = r[nx - 1];
-        Bt[n * (N + 1) + ng - 1] = r[nx];
-      }
-    }
   }
+  if (fk_loop) memset(w->fk + n * N * m, 0, (w->nx - n * N * m) * sizeof *w->fk);
 
   /* 1. the intervals */
   for (size_t i = 0; i < N; ++i) {
     double *Wi = w->W + i * w->wr * wc;
-    const double h = c->mesh[i + 1] - c->mesh[i];
-    memset(Wi, 0, (nm + nb) * wc * sizeof *Wi);
+    const double h = c->mesh[i + 1] - c->mesh[i], hT = h * T;
     for (size_t g = 0; g < m; ++g) {
       rc = colloc_gauss_jac(c, X, p, T, i, g, c->aut && !mono ? w->dT : NULL);
       if (rc != 0) return rc;
+      if (fk_loop) {
+        const double t = c->t0 + T * (c->mesh[i] + h * c->gs[g]);
+        if ((rc = pr->jac_p(t, c->xc, p, c->Jpar, pr->data)) != 0) return rc;
+        double *fr = w->fk + n * (i * m + g);
+        for (size_t rr = 0; rr < n; ++rr) fr[rr] = -h * T * c->Jpar[rr + n * k];
+      }
       const double *l = c->L + g * (m + 1), *dl = c->D + g * (m + 1);
       for (size_t rr = 0; rr < n; ++rr) {
-        double *a = Wi + (g * n + rr) * wc;
+        double *a = Wi + (g * n + rr) * wc, *Jr = w->Jrow;
+        for (size_t q = 0; q < n; ++q) Jr[q] = hT * c->J[rr + n * q];
         for (size_t kk = 0; kk <= m; ++kk) {
           double *ak = a + (kk == 0 ? ni : kk == m ? ni + n : (kk - 1) * n);
-          for (size_t q = 0; q < n; ++q)
-            ak[q] = (rr == q ? dl[kk] : 0.0) - h * T * l[kk] * c->J[rr + n * q];
+          const double lk = l[kk];
+          for (size_t q = 0; q < n; ++q) ak[q] = -lk * Jr[q];
+          ak[rr] += dl[kk];
         }
-        if (!mono) {
-          if (c->aut) a[ni + 2 * n] = w->dT[rr];
-          a[ni + 2 * n + ng - 1] = w->fk[n * (i * m + g) + rr];
+        double *ag = a + ni + 2 * n;
+        if (mono) {
+          for (size_t e = 0; e < ng; ++e) ag[e] = 0.0;
+        } else {
+          if (c->aut) ag[0] = w->dT[rr];
+          ag[ng - 1] = w->fk[n * (i * m + g) + rr];
         }
       }
-    }
-    for (size_t t = 0; t < nb; ++t) {
-      const double *src = c->aut && t == 0 ? c->phase : r;
-      double *a = Wi + (nm + t) * wc;
-      for (size_t kk = 1; kk < m; ++kk)
-        for (size_t q = 0; q < n; ++q) a[(kk - 1) * n + q] = src[n * (i * m + kk) + q];
     }
     for (size_t q = 0; q < nm; ++q) w->lab[q] = (int)(n * i * m + q);
-    rc = gepp(Wi, wc, nm, nb, ni, w->wpiv + i * ni, w->lab, &w->logabs,
-              &w->sign);
+    rc = gepp(Wi, wc, nm, 0, ni, w->wpiv + i * ni, w->lab, &w->det_c);
     if (rc == 2) return WHIRL_EBADFUNC;
-    if (rc == 1) {
-      w->state = 2;
-      w->sign = 0;
-      return WHIRL_ESINGULAR;
-    }
+    if (rc == 1) return singular(w);
     for (size_t q = 0; q < ni; ++q) {
-      w->prow[w->npiv] = w->lab[q];
-      w->pcol[w->npiv++] = (int)(n * (i * m + 1 + q / n) + q % n);
+      w->prow[w->npiv_c] = w->lab[q];
+      w->pcol[w->npiv_c++] = (int)(n * (i * m + 1 + q / n) + q % n);
     }
     for (size_t q = 0; q < n; ++q) w->wlab[i * n + q] = w->lab[ni + q];
-    for (size_t t = 0; t < nb; ++t) {
-      const double *a = Wi + (nm + t) * wc + ni;
-      double *Bt = w->B + t * bc;
-      for (size_t q = 0; q < n; ++q) {
-        Bt[n * i + q] += a[q];
-        Bt[n * (i + 1) + q] += a[n + q];
-      }
-      for (size_t e = 0; e < ng; ++e) Bt[n * (N + 1) + e] += a[2 * n + e];
-    }
   }
 
   /* 2. the mesh points x_1 .. x_{N−1}; block columns [x_j | x_0 | x_{j+1} | g] */
   for (size_t q = 0; q < n; ++q) w->lab[q] = w->wlab[q];
   for (size_t j = 1; j < N; ++j) {
     double *Pj = w->P + (j - 1) * w->pr * pc;
-    memset(Pj, 0, (2 * n + nb) * pc * sizeof *Pj);
     for (size_t q = 0; q < n; ++q) {
       double *a = Pj + q * pc;
       if (j == 1) {
@@ -363,64 +436,113 @@ static int cond_factor_impl(cond_ws *w, const double *X, const double *p,
         memcpy(a + 3 * n, s + 2 * n, ng * sizeof *a);
       } else {
         const double *s = w->P + (j - 2) * w->pr * pc + (n + q) * pc;
-        memcpy(a, s + 2 * n, n * sizeof *a);     /* x_j */
-        memcpy(a + n, s + n, n * sizeof *a);     /* x_0 */
+        memcpy(a, s + 2 * n, n * sizeof *a); /* x_j */
+        memcpy(a + n, s + n, n * sizeof *a); /* x_0 */
         memcpy(a + 3 * n, s + 3 * n, ng * sizeof *a);
       }
+      memset(a + 2 * n, 0, n * sizeof *a);
       const double *s = cond_rows(w, j) + q * wc; /* [x_j | x_{j+1} | g] */
       double *b = Pj + (n + q) * pc;
       memcpy(b, s, n * sizeof *b);
+      memset(b + n, 0, n * sizeof *b);
       memcpy(b + 2 * n, s + n, n * sizeof *b);
       memcpy(b + 3 * n, s + 2 * n, ng * sizeof *b);
       w->lab[n + q] = w->wlab[j * n + q];
     }
+    rc = gepp(Pj, pc, 2 * n, 0, n, w->ppiv + (j - 1) * n, w->lab, &w->det_c);
+    if (rc == 2) return WHIRL_EBADFUNC;
+    if (rc == 1) return singular(w);
+    for (size_t q = 0; q < n; ++q) {
+      w->prow[w->npiv_c] = w->lab[q];
+      w->pcol[w->npiv_c++] = (int)(n * (j * m) + q);
+      w->lab[q] = w->lab[n + q]; /* the rows left over go on */
+    }
+  }
+  for (size_t q = 0; q < n; ++q) w->slab[q] = w->lab[q];
+  if (!mono) {
+    memcpy(w->Xf, X, w->nx * sizeof *w->Xf);
+    memcpy(w->pf, p, w->npar * sizeof *w->pf);
+    w->kf = k;
+    w->jac_ok = 1;
+    c->last_ws = w; /* for the multipliers at the same point */
+  }
+  return 0;
+}
+
+/* The border rows (phase condition of an autonomous orbit with the current
+ * reference, and r) against the collocation rows of the last
+ * factor_colloc, then the final dense system. */
+static int factor_border(cond_ws *w, const double *r) {
+  whirl_colloc *c = w->c;
+  const size_t n = w->n, m = w->m, N = w->N, nx = w->nx, ni = w->ni,
+               nm = w->nm, ng = w->ng, nb = w->nb, wc = w->wc, pc = w->pc,
+               bc = w->bc, nf = w->nf;
+  int rc;
+  w->state = 0;
+  if (!w->jac_ok) return WHIRL_EINVAL;
+  w->npiv = w->npiv_c;
+  w->det = w->det_c;
+  /* border rows on the mesh points and the globals */
+  for (size_t t = 0; t < nb; ++t) {
+    const int is_phase = c->aut && t == 0;
+    const double *src = is_phase ? c->phase : r;
+    double *Bt = w->B + t * bc;
+    for (size_t i = 0; i <= N; ++i)
+      for (size_t q = 0; q < n; ++q) Bt[n * i + q] = src[n * (i * m) + q];
+    if (is_phase) {
+      Bt[n * (N + 1)] = 0.0;           /* T */
+      Bt[n * (N + 1) + 1] = w->fk[nx - 1]; /* p_k */
+    } else {
+      if (c->aut) Bt[n * (N + 1)] = r[nx - 1];
+      Bt[n * (N + 1) + ng - 1] = r[nx];
+    }
+  }
+  /* 1. the interiors */
+  for (size_t i = 0; i < N; ++i) {
+    double *Wi = w->W + i * w->wr * wc;
     for (size_t t = 0; t < nb; ++t) {
-      double *a = Pj + (2 * n + t) * pc;
-      const double *Bt = w->B + t * bc;
+      const double *src = c->aut && t == 0 ? c->phase : r;
+      double *a = Wi + (nm + t) * wc;
+      memcpy(a, src + n * (i * m + 1), ni * sizeof *a);
+      memset(a + ni, 0, (2 * n + ng) * sizeof *a);
+      border_eliminate(Wi, wc, ni, a);
+      double *Bt = w->B + t * bc;
+      for (size_t q = 0; q < n; ++q) {
+        Bt[n * i + q] += a[ni + q];
+        Bt[n * (i + 1) + q] += a[ni + n + q];
+      }
+      for (size_t e = 0; e < ng; ++e) Bt[n * (N + 1) + e] += a[ni + 2 * n + e];
+    }
+  }
+  /* 2. the inner mesh points */
+  for (size_t j = 1; j < N; ++j) {
+    double *Pj = w->P + (j - 1) * w->pr * pc;
+    for (size_t t = 0; t < nb; ++t) {
+      double *a = Pj + (2 * n + t) * pc, *Bt = w->B + t * bc;
       memcpy(a, Bt + n * j, n * sizeof *a);
       memcpy(a + n, Bt, n * sizeof *a);
       memcpy(a + 2 * n, Bt + n * (j + 1), n * sizeof *a);
       memcpy(a + 3 * n, Bt + n * (N + 1), ng * sizeof *a);
-    }
-    rc = gepp(Pj, pc, 2 * n, nb, n, w->ppiv + (j - 1) * n, w->lab, &w->logabs,
-              &w->sign);
-    if (rc == 2) return WHIRL_EBADFUNC;
-    if (rc == 1) {
-      w->state = 2;
-      w->sign = 0;
-      return WHIRL_ESINGULAR;
-    }
-    for (size_t q = 0; q < n; ++q) {
-      w->prow[w->npiv] = w->lab[q];
-      w->pcol[w->npiv++] = (int)(n * (j * m) + q);
-      w->lab[q] = w->lab[n + q]; /* the rows left over go on */
-    }
-    for (size_t t = 0; t < nb; ++t) {
-      const double *a = Pj + (2 * n + t) * pc;
-      double *Bt = w->B + t * bc;
+      border_eliminate(Pj, pc, n, a);
       memcpy(Bt, a + n, n * sizeof *a);
       memcpy(Bt + n * (j + 1), a + 2 * n, n * sizeof *a);
       memcpy(Bt + n * (N + 1), a + 3 * n, ng * sizeof *a);
     }
   }
-  if (mono) return 0;
-
   /* 3. the final system in [x_0 | x_N | g] */
-  const size_t nf = w->nf;
   const double *S = w->P + (N - 2) * w->pr * pc + n * pc; /* [x_0 | x_N | g] at +n */
   double *F = w->F;
   memset(F, 0, nf * nf * sizeof *F);
   for (size_t q = 0; q < n; ++q) {
-    double *a = F + q * nf;
-    memcpy(a, S + q * pc + n, (2 * n + ng) * sizeof *a);
-    /* lab[q] already holds the row of M left over */
+    memcpy(F + q * nf, S + q * pc + n, (2 * n + ng) * sizeof *F);
+    w->lab[q] = w->slab[q];
     double *b = F + (n + q) * nf;
     b[q] = -1.0;
     b[n + q] = 1.0;
     b[2 * n + ng - 1] = w->fk[n * N * m + q];
     w->lab[n + q] = (int)(n * N * m + q);
   }
-  for (size_t t = 0; t < w->nb; ++t) {
+  for (size_t t = 0; t < nb; ++t) {
     double *a = F + (2 * n + t) * nf;
     const double *Bt = w->B + t * bc;
     memcpy(a, Bt, n * sizeof *a);
@@ -428,28 +550,34 @@ static int cond_factor_impl(cond_ws *w, const double *X, const double *p,
     memcpy(a + 2 * n, Bt + n * (N + 1), ng * sizeof *a);
     w->lab[2 * n + t] = (int)(c->aut && t == 0 ? nx - 1 : nx);
   }
-  rc = gepp(F, nf, nf, 0, nf, w->fpiv, w->lab, &w->logabs, &w->sign);
+  rc = gepp(F, nf, nf, 0, nf, w->fpiv, w->lab, &w->det);
   if (rc == 2) return WHIRL_EBADFUNC;
-  if (rc == 1) {
-    w->state = 2;
-    w->sign = 0;
-    return WHIRL_ESINGULAR;
-  }
+  if (rc == 1) return singular(w);
   for (size_t q = 0; q < nf; ++q) {
     w->prow[w->npiv] = w->lab[q];
     w->pcol[w->npiv++] = (int)(q < n ? q
                                : q < 2 * n ? n * N * m + (q - n)
                                : c->aut && q == 2 * n ? nx - 1 : nx);
   }
+  w->logabs = log(fabs(w->det.mant)) + (double)w->det.expo * log(2.0);
   if (!isfinite(w->logabs)) return WHIRL_EBADFUNC;
-  w->sign *= perm_sign(w->prow, nx + 1, w->mark) * perm_sign(w->pcol, nx + 1, w->mark);
+  w->sign = (w->det.mant < 0.0 ? -1 : 1) * perm_sign(w->prow, nx + 1, w->mark) *
+            perm_sign(w->pcol, nx + 1, w->mark);
   w->state = 1;
   return 0;
 }
 
 static int cond_factor(void *ws, const double *X, const double *p, size_t k,
                        const double *r) {
-  return cond_factor_impl(ws, X, p, k, r, 0);
+  cond_ws *w = ws;
+  int rc = factor_colloc(w, X, p, k, 0);
+  return rc != 0 ? rc : factor_border(w, r);
+}
+
+/* The same F_x and dF/dp_k with a new border row r (and the current phase
+ * reference): only the border rows and the final system are redone. */
+static int cond_reborder(void *ws, const double *r) {
+  return factor_border(ws, r);
 }
 
 /* ------------------------------------------------------------ solve */
@@ -528,37 +656,47 @@ static int cond_logdet(void *ws, double *logabs, int *sign) {
   return WHIRL_OK;
 }
 
-const whirl_bsolver colloc_bsolver = {cond_alloc, cond_free, cond_factor,
-                                      cond_solve, cond_logdet};
+const whirl_bsolver colloc_bsolver = {cond_alloc,  cond_free,
+                                      cond_factor, cond_solve,
+                                      cond_logdet, cond_reborder};
 
 /* ------------------------------------------------------------ monodromy */
 
-int colloc_cond_monodromy(void *ws, const double *X, const double *p,
-                          double *M) {
-  cond_ws *w = ws;
+/* M = −S_N^{-1} S_0 from the n rows S_0 x_0 + S_N x_N + S_g g left after
+ * step 2 of the collocation rows of w (globals fixed). */
+static int monodromy_of(cond_ws *w, double *M) {
   const size_t n = w->n, N = w->N, pc = w->pc;
-  int rc = cond_factor_impl(w, X, p, 0, NULL, 1);
-  w->state = 0; /* not a factorisation of the bordered matrix */
-  if (rc != 0) return rc;
-  /* S_0 x_0 + S_N x_N = 0 (globals fixed): M = −S_N^{-1} S_0, from the
-   * block [S_N | S_0] (n x 2n, row-major) by elimination of S_N */
-  const double *S = w->P + (N - 2) * w->pr * pc + n * pc; /* [.. | x_0 | x_N | g] */
-  double A[7 * 2 * 7], *Ap = A, x[7], col[7], la = 0.0;
-  int piv[7], lab[7], sg = 1;
-  if (n > 7) return WHIRL_EINVAL; /* small models only (n <= 7) */
+  const double *S = w->P + (N - 2) * w->pr * pc + n * pc; /* [x_0 | x_N | g] at +n */
+  double *A = w->mblk, *col = A + 2 * n * n, *x = col + n;
+  det_acc dt = {1.0, 0};
+  /* the block [S_N | S_0] (n x 2n, row-major); elimination of S_N carries
+   * S_0 along (whole rows swapped and updated), so only U remains */
   for (size_t q = 0; q < n; ++q) {
-    memcpy(Ap + q * 2 * n, S + q * pc + 2 * n, n * sizeof *Ap);
-    memcpy(Ap + q * 2 * n + n, S + q * pc + n, n * sizeof *Ap);
-    lab[q] = (int)q;
+    memcpy(A + q * 2 * n, S + q * pc + 2 * n, n * sizeof *A);
+    memcpy(A + q * 2 * n + n, S + q * pc + n, n * sizeof *A);
+    w->mlab[q] = (int)q;
   }
-  rc = gepp(Ap, 2 * n, n, 0, n, piv, lab, &la, &sg);
+  int rc = gepp(A, 2 * n, n, 0, n, w->mpiv, w->mlab, &dt);
   if (rc != 0) return rc == 2 ? WHIRL_EBADFUNC : WHIRL_ESINGULAR;
   for (size_t j = 0; j < n; ++j) {
-    /* gepp carried the right-hand block along (whole rows swapped and
-     * eliminated): only U remains */
-    for (size_t q = 0; q < n; ++q) col[q] = Ap[q * 2 * n + n + j];
-    gepp_back(Ap, 2 * n, n, 0, col, NULL, x);
+    for (size_t q = 0; q < n; ++q) col[q] = A[q * 2 * n + n + j];
+    gepp_back(A, 2 * n, n, 0, col, NULL, x);
     for (size_t q = 0; q < n; ++q) M[q + n * j] = -x[q];
   }
   return 0;
+}
+
+int colloc_cond_monodromy(whirl_colloc *c, const double *X, const double *p,
+                          double *M) {
+  /* the collocation rows of the last factorisation of the bordered matrix
+   * at this very point (the core factors at every point it analyses, then
+   * asks for the spectrum), else a condensation of F_x of our own */
+  cond_ws *w = c->last_ws;
+  if (w && w->jac_ok && memcmp(w->Xf, X, w->nx * sizeof *X) == 0 &&
+      memcmp(w->pf, p, w->npar * sizeof *p) == 0)
+    return monodromy_of(w, M);
+  if (!c->spec_ws && !(c->spec_ws = cond_alloc(c))) return WHIRL_ENOMEM;
+  w = c->spec_ws;
+  int rc = factor_colloc(w, X, p, 0, 1);
+  return rc != 0 ? rc : monodromy_of(w, M);
 }

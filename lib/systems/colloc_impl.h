@@ -50,6 +50,7 @@ struct whirl_colloc {
 
   int floquet;   /* whirl_colloc_floquet: multipliers route */
   void *spec_ws; /* colloc_bsolver workspace for the condensed multipliers */
+  void *last_ws; /* the workspace factored last (any owner), or NULL */
 
   int rhs_fail; /* last recoverable model failure seen by the shim */
   char errmsg[256];
@@ -72,8 +73,10 @@ extern const whirl_bsolver colloc_bsolver;
 /* colloc_cond.c: the monodromy matrix M[n*n] (column-major) of the
  * collocation equations linearised at (X, p): the transfer x(1) = M x(0)
  * of the condensed, block-bidiagonal collocation system at fixed T and p
- * (AUTO-07p's Floquet multipliers).  ws from colloc_bsolver.alloc. */
-int colloc_cond_monodromy(void *ws, const double *X, const double *p,
+ * (AUTO-07p's Floquet multipliers).  Taken from the last factorisation of
+ * the bordered matrix when that was at (X, p), else condensed anew in
+ * c->spec_ws. */
+int colloc_cond_monodromy(whirl_colloc *c, const double *X, const double *p,
                           double *M);
 
 #endif

@@ -45,6 +45,10 @@ typedef struct whirl_bsolver {
    * and column order as above), so its sign changes at branch points
    * exactly as that of a general LU of M */
   int (*logdet)(void *ws, double *logabs, int *sign);
+  /* Optional: factor M again with a new border row r but F_x and dF/dp_k
+   * of the last factor (for chord Newton: much cheaper than factor when
+   * the structure allows).  Same returns as factor. */
+  int (*reborder)(void *ws, const double *r);
 } whirl_bsolver;
 
 typedef struct whirl_system {
