@@ -57,6 +57,8 @@ void whirl_cont_options_default(whirl_cont_options *o) {
   o->newton_tol = 1e-10;
   o->newton_maxit = 12;
   o->newton_fast = 3;
+  o->newton_chord = 0;
+  o->chord_theta = 0.25;
   o->max_angle = 0.2;
   o->tangent_predictor = 0;
   o->detect_lp = o->detect_bp = o->detect_hb = o->detect_pd = 1;
@@ -149,6 +151,8 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   else if (!(opt->newton_tol > 0) || opt->newton_maxit < 1)
     why = "need newton_tol > 0 and newton_maxit >= 1";
   else if (!(opt->p_weight > 0)) why = "need p_weight > 0";
+  else if (opt->newton_chord && !(opt->chord_theta > 0 && opt->chord_theta < 1))
+    why = "chord Newton needs 0 < chord_theta < 1";
   else if (opt->linsol == WHIRL_LINSOL_SPARSE &&
            (sys->nnz == 0 || !sys->Jp || !sys->Ji || !sys->Fx_sparse))
     why = "sparse solver requested but the system has no sparse Jacobian";
@@ -185,11 +189,12 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   c->f = calloc(c->n, sizeof *c->f);
   c->rhs = calloc(c->N, sizeof *c->rhs);
   c->row = calloc(c->N, sizeof *c->row);
+  c->row2 = calloc(c->N, sizeof *c->row2);
   c->work = calloc(c->wlen, sizeof *c->work);
   c->dir = calloc(c->N, sizeof *c->dir);
   c->Xprev = calloc(c->N, sizeof *c->Xprev);
   c->Xstart = calloc(c->N, sizeof *c->Xstart);
-  if (!c->fp || !c->f || !c->rhs || !c->row || !c->work || !c->dir ||
+  if (!c->fp || !c->f || !c->rhs || !c->row || !c->row2 || !c->work || !c->dir ||
       !c->Xprev || !c->Xstart)
     goto nomem;
   c->qcap = 2 * (8 + opt->nuz);
@@ -225,6 +230,7 @@ void whirl_cont_free(whirl_cont *c) {
   free(c->f);
   free(c->rhs);
   free(c->row);
+  free(c->row2);
   free(c->work);
   free(c->dir);
   free(c->Xprev);
@@ -273,17 +279,22 @@ static int eval_jac(whirl_cont *c, const double *x, const double *p) {
  * weighted direction dir: by the system's structured solver, or by the
  * general (dense or sparse) LU of the assembled matrix.  Returns 0, 2 for a
  * recoverable model failure, 3 for a singular matrix, < 0 fatal. */
+static void border_row(const whirl_cont *c, const double *dir, double *row) {
+  const double w = c->opt.p_weight;
+  for (size_t i = 0; i < c->n; ++i) row[i] = dir[i];
+  row[c->n] = w * w * dir[c->n];
+}
+
 static int jac_factor(whirl_cont *c, const double *x, const double *p,
                       const double *dir) {
-  const double w = c->opt.p_weight;
-  for (size_t i = 0; i < c->n; ++i) c->row[i] = dir[i];
-  c->row[c->n] = w * w * dir[c->n];
+  border_row(c, dir, c->row);
   int rc;
+  c->fact_ok = 0;
   if (c->bs) {
     ++c->stats.jac_evals;
     ++c->stats.factorizations;
     rc = c->bs->factor(c->bws, x, p, c->opt.icp, c->row);
-    if (rc == WHIRL_OK) return 0;
+    if (rc == WHIRL_OK) return c->fact_ok = 1, 0;
     if (rc == WHIRL_ESINGULAR) return 3;
     return classify(c, rc, "structured factorisation of the extended Jacobian");
   }
@@ -291,7 +302,32 @@ static int jac_factor(whirl_cont *c, const double *x, const double *p,
   ++c->stats.factorizations;
   rc = whirl_bordered_factor(c->bd, c->sparse ? c->Jx : c->J, c->fp,
                              c->row, &c->row[c->n]);
-  if (rc == WHIRL_OK) return 0;
+  if (rc == WHIRL_OK) return c->fact_ok = 1, 0;
+  if (rc == WHIRL_ESINGULAR) return 3;
+  return CONT_FAIL(c, rc, "factorisation of the extended Jacobian: %s",
+                   whirl_bordered_errmsg(c->bd));
+}
+
+/* Chord Newton: the held F_x and F_p with the border row row2, when that
+ * differs from the row of the factorisation.  Returns as jac_factor, and
+ * 4 when the structured solver cannot change its border alone (the caller
+ * then factors anew). */
+static int reborder(whirl_cont *c) {
+  if (memcmp(c->row, c->row2, c->N * sizeof *c->row) == 0) return 0;
+  if (c->bs && !c->bs->reborder) return 4;
+  memcpy(c->row, c->row2, c->N * sizeof *c->row);
+  c->fact_ok = 0;
+  int rc;
+  ++c->stats.factorizations;
+  if (c->bs) {
+    rc = c->bs->reborder(c->bws, c->row);
+    if (rc == WHIRL_OK) return c->fact_ok = 1, 0;
+    if (rc == WHIRL_ESINGULAR) return 3;
+    return classify(c, rc, "structured factorisation of the extended Jacobian");
+  }
+  rc = whirl_bordered_factor(c->bd, c->sparse ? c->Jx : c->J, c->fp, c->row,
+                             &c->row[c->n]);
+  if (rc == WHIRL_OK) return c->fact_ok = 1, 0;
   if (rc == WHIRL_ESINGULAR) return 3;
   return CONT_FAIL(c, rc, "factorisation of the extended Jacobian: %s",
                    whirl_bordered_errmsg(c->bd));
@@ -308,18 +344,36 @@ static int ext_solve(whirl_cont *c, double *b, const char *what) {
 
 /* ------------------------------------------------------------ corrector */
 
+/* Newton's method on the extended system; with chord Newton
+ * (opt.newton_chord) the factorisation held from the last analysed point
+ * or an earlier iterate is kept while the corrections contract by
+ * chord_theta per iteration, and made anew at the current iterate when
+ * they do not (AUTO-07p freezes the Jacobian after NWTN iterations in the
+ * same spirit).  Its iterations are cheap: F and one solve. */
 int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
                  double *X) {
   const size_t n = c->n, N = c->N;
+  const int chord = c->opt.newton_chord;
   double *p = c->trial.p;
   double prev = INFINITY;
+  int fresh = !chord || !c->fact_ok; /* factor at the next iterate */
+  int refreshed = 0; /* factorisations made during this correction */
   memcpy(p, c->cur.p, c->npar * sizeof *p);
+  if (chord) border_row(c, dir, c->row2);
   for (int it = 1; it <= c->opt.newton_maxit; ++it) {
     p[c->opt.icp] = X[n];
     int rc = whirl_system_eval(&c->sys, X, p, c->f);
     ++c->stats.f_evals;
     if ((rc = classify(c, rc, "F")) != 0) return rc;
-    if ((rc = jac_factor(c, X, p, dir)) != 0) return rc;
+    if (!chord) fresh = 1;
+    if (!fresh && (rc = reborder(c)) == 4) fresh = 1;
+    else if (rc != 0) return rc;
+    if (fresh) {
+      if ((rc = jac_factor(c, X, p, dir)) != 0) return rc;
+      fresh = 0;
+      ++refreshed;
+      prev = INFINITY;
+    }
     double acc = 0.0;
     for (size_t i = 0; i < n; ++i) c->rhs[i] = c->f[i];
     for (size_t i = 0; i < N; ++i) acc += c->row[i] * (X[i] - X0[i]);
@@ -338,7 +392,14 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
       p[c->opt.icp] = X[n];
       return 0;
     }
-    if (it > 2 && dmax > 2.0 * prev) return 1; /* diverging */
+    if (!chord) {
+      if (it > 2 && dmax > 2.0 * prev) return 1; /* diverging */
+    } else if (dmax > c->opt.chord_theta * prev) {
+      /* slow contraction: a new Jacobian at the next iterate; diverging
+       * with Jacobians of this correction already: give up */
+      if (refreshed >= 2 && dmax > 2.0 * prev) return 1;
+      fresh = 1;
+    }
     prev = dmax;
   }
   return 1;
@@ -490,6 +551,7 @@ static int pop(whirl_cont *c) {
 /* ------------------------------------------------------------ start */
 
 static void reset_run(whirl_cont *c) {
+  c->fact_ok = 0;
   c->qlen = c->qhead = 0;
   c->index = 0;
   c->label = 0;
@@ -559,6 +621,10 @@ int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
                      c->sys.p_names ? c->sys.p_names[c->opt.icp] : "p",
                      p0[c->opt.icp], rc == 2 ? " (domain error)" : "");
   memcpy(c->cur.X, c->trial.X, N * sizeof *c->cur.X);
+  /* references the equations take from the last accepted point (the phase
+   * condition of collocation) must be the start point's before its tangent
+   * is computed, or the first step runs along the old reference's phase */
+  if ((rc = notify_accept(c, &c->cur)) != 0) return rc;
   rc = cont_analyse(c, &c->cur, c->dir);
   if (rc < 0) return rc;
   if (rc > 0 || fabs(c->cur.t[n]) < 1e-12)
@@ -593,6 +659,7 @@ int whirl_cont_start_direction(whirl_cont *c, const double *x0,
   for (size_t i = 0; i < N; ++i) c->dir[i] = t0[i];
   const double nw = cont_norm(c, c->dir);
   for (size_t i = 0; i < N; ++i) c->dir[i] /= nw;
+  if ((rc = notify_accept(c, &c->cur)) != 0) return rc; /* as in start */
   rc = cont_analyse(c, &c->cur, c->dir);
   if (rc < 0) return rc;
   /* At a branch point the extended matrix is singular: the direction itself

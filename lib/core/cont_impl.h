@@ -51,7 +51,9 @@ struct whirl_cont {
   double *fp;         /* F_p[n] */
   double *f;          /* F[n] */
   double *rhs;        /* N */
-  double *row;        /* N: weighted predictor direction for the border */
+  double *row;        /* N: border row of the current factorisation */
+  double *row2;       /* N: border row wanted (chord Newton) */
+  int fact_ok;        /* a factorisation chord Newton may use is held */
   double *work;       /* scratch for finite differences */
   size_t wlen;
   whirl_eig *eig;     /* spectrum of F_x when the system has none of its own */

@@ -70,6 +70,14 @@ typedef struct whirl_cont_options {
   double newton_tol;   /* EPSL/EPSU: |dx|_inf <= tol*(1+|x|_inf), |F| <= tol */
   int newton_maxit;    /* ITNW */
   int newton_fast;     /* iterations at or below which the step may grow */
+  int newton_chord;    /* 0: Newton, a new Jacobian at every iteration;
+                          1: chord (modified) Newton: keep the last
+                          factorisation, that of the last analysed point or
+                          of an earlier iterate, while the corrections
+                          contract by chord_theta or better per iteration;
+                          a new border row alone is refactored cheaply when
+                          the system's structured solver can (reborder) */
+  double chord_theta;  /* contraction above which chord Newton refactors */
   double max_angle;    /* max turn of the tangent per step, radians */
   int tangent_predictor; /* 0: secant predictor (default), 1: tangent */
   int detect_lp;       /* ILP */
@@ -91,6 +99,7 @@ typedef struct whirl_cont_options {
 
 /* Defaults: icp 0, ds 1e-2, ds_min 1e-8, ds_max 0.5, nmx 1000, p bounds
  * +-1e30, p_weight 1, newton_tol 1e-10, newton_maxit 12, newton_fast 3,
+ * Newton (newton_chord 0, chord_theta 0.25 when set),
  * max_angle 0.2 rad, secant predictor, all detections on, loop detection on,
  * loc_tol 1e-12, dense solver, the system's structured solver if any. */
 WHIRL_API void whirl_cont_options_default(whirl_cont_options *opt);
