@@ -388,7 +388,17 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
       xmax = fmax(xmax, fabs(X[i]));
     }
     c->its = it; /* iterations used, read by the step control */
-    if (dmax <= c->opt.newton_tol * (1.0 + xmax)) {
+    const double tolx = c->opt.newton_tol * (1.0 + xmax);
+    int conv = dmax <= tolx;
+    if (!conv && chord && isfinite(prev) && dmax < 0.5 * prev) {
+      /* chord Newton converges linearly: the error left after this
+       * correction is about θ/(1 − θ) times it, θ = dmax/prev the
+       * observed contraction (Deuflhard, Newton Methods for Nonlinear
+       * Problems, 2004, §2.1) */
+      const double th = dmax / prev;
+      conv = th / (1.0 - th) * dmax <= tolx;
+    }
+    if (conv) {
       p[c->opt.icp] = X[n];
       return 0;
     }
