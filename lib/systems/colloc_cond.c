@@ -84,6 +84,7 @@ typedef struct cond_ws {
   double *tmp;   /* 3 nf: the final right-hand side, solution, back values */
   det_acc det_c; /* product of the pivots of the collocation rows */
   size_t npiv_c; /* their number */
+  int sign_c;    /* sign of the row and column orders (see factor_colloc) */
   int jac_ok;    /* the collocation rows are factored (at Xf, pf, kf) */
   double *Xf, *pf;
   size_t kf, npar;
@@ -221,10 +222,11 @@ static void det_mul(det_acc *d, double v) {
  * Whole rows are swapped (LAPACK's convention: P A = L U, apply all the
  * swaps first when solving); lab[np] follows the swaps.  The diagonal of U
  * is stored as its reciprocal (the solves multiply).  Multiplies the
- * pivots into *det.  Returns 0, or 1 at a zero pivot column (exactly
+ * pivots into *det; *nswaps (may be NULL) the number of row swaps.  Returns 0, or 1 at a zero pivot column (exactly
  * singular), or 2 at a non-finite pivot. */
 static int gepp(double *A, size_t ld, size_t np, size_t nextra, size_t ne,
-                int *piv, int *lab, det_acc *det) {
+                int *piv, int *lab, det_acc *det, int *nswaps) {
+  int swaps = 0;
   for (size_t c = 0; c < ne; ++c) {
     size_t pr = c;
     double best = fabs(A[c * ld + c]);
@@ -245,6 +247,7 @@ static int gepp(double *A, size_t ld, size_t np, size_t nextra, size_t ne,
       const int t = lab[c];
       lab[c] = lab[pr];
       lab[pr] = t;
+      ++swaps;
     }
     double *u = A + c * ld;
     const double d = u[c], dinv = 1.0 / d;
@@ -257,6 +260,7 @@ static int gepp(double *A, size_t ld, size_t np, size_t nextra, size_t ne,
       if (l != 0.0) row_update(a + c + 1, u + c + 1, l, ld - c - 1);
     }
   }
+  if (nswaps) *nswaps = swaps;
   return 0;
 }
 
@@ -413,7 +417,7 @@ static int factor_colloc(cond_ws *w, const double *X, const double *p,
       }
     }
     for (size_t q = 0; q < nm; ++q) w->lab[q] = (int)(n * i * m + q);
-    rc = gepp(Wi, wc, nm, 0, ni, w->wpiv + i * ni, w->lab, &w->det_c);
+    rc = gepp(Wi, wc, nm, 0, ni, w->wpiv + i * ni, w->lab, &w->det_c, NULL);
     if (rc == 2) return WHIRL_EBADFUNC;
     if (rc == 1) return singular(w);
     for (size_t q = 0; q < ni; ++q) {
@@ -449,7 +453,7 @@ static int factor_colloc(cond_ws *w, const double *X, const double *p,
       memcpy(b + 3 * n, s + 2 * n, ng * sizeof *b);
       w->lab[n + q] = w->wlab[j * n + q];
     }
-    rc = gepp(Pj, pc, 2 * n, 0, n, w->ppiv + (j - 1) * n, w->lab, &w->det_c);
+    rc = gepp(Pj, pc, 2 * n, 0, n, w->ppiv + (j - 1) * n, w->lab, &w->det_c, NULL);
     if (rc == 2) return WHIRL_EBADFUNC;
     if (rc == 1) return singular(w);
     for (size_t q = 0; q < n; ++q) {
@@ -460,6 +464,22 @@ static int factor_colloc(cond_ws *w, const double *X, const double *p,
   }
   for (size_t q = 0; q < n; ++q) w->slab[q] = w->lab[q];
   if (!mono) {
+    /* the signs of the row order with the final rows in their order before
+     * the final elimination (whose swaps factor_border counts), and of the
+     * column order: both fixed until the next factor_colloc */
+    const size_t nx = w->nx;
+    size_t q = w->npiv_c;
+    for (size_t e = 0; e < n; ++e) w->prow[q++] = w->slab[e];
+    for (size_t e = 0; e < n; ++e) w->prow[q++] = (int)(n * N * m + e);
+    if (c->aut) w->prow[q++] = (int)(nx - 1);
+    w->prow[q++] = (int)nx;
+    q = w->npiv_c;
+    for (size_t e = 0; e < w->nf; ++e)
+      w->pcol[q++] = (int)(e < n ? e
+                           : e < 2 * n ? n * N * m + (e - n)
+                           : c->aut && e == 2 * n ? nx - 1 : nx);
+    w->sign_c = perm_sign(w->prow, nx + 1, w->mark) *
+                perm_sign(w->pcol, nx + 1, w->mark);
     memcpy(w->Xf, X, w->nx * sizeof *w->Xf);
     memcpy(w->pf, p, w->npar * sizeof *w->pf);
     w->kf = k;
@@ -550,19 +570,13 @@ static int factor_border(cond_ws *w, const double *r) {
     memcpy(a + 2 * n, Bt + n * (N + 1), ng * sizeof *a);
     w->lab[2 * n + t] = (int)(c->aut && t == 0 ? nx - 1 : nx);
   }
-  rc = gepp(F, nf, nf, 0, nf, w->fpiv, w->lab, &w->det);
+  int swaps = 0;
+  rc = gepp(F, nf, nf, 0, nf, w->fpiv, w->lab, &w->det, &swaps);
   if (rc == 2) return WHIRL_EBADFUNC;
   if (rc == 1) return singular(w);
-  for (size_t q = 0; q < nf; ++q) {
-    w->prow[w->npiv] = w->lab[q];
-    w->pcol[w->npiv++] = (int)(q < n ? q
-                               : q < 2 * n ? n * N * m + (q - n)
-                               : c->aut && q == 2 * n ? nx - 1 : nx);
-  }
   w->logabs = log(fabs(w->det.mant)) + (double)w->det.expo * log(2.0);
   if (!isfinite(w->logabs)) return WHIRL_EBADFUNC;
-  w->sign = (w->det.mant < 0.0 ? -1 : 1) * perm_sign(w->prow, nx + 1, w->mark) *
-            perm_sign(w->pcol, nx + 1, w->mark);
+  w->sign = (w->det.mant < 0.0 ? -1 : 1) * w->sign_c * (swaps % 2 ? -1 : 1);
   w->state = 1;
   return 0;
 }
@@ -676,7 +690,7 @@ static int monodromy_of(cond_ws *w, double *M) {
     memcpy(A + q * 2 * n + n, S + q * pc + n, n * sizeof *A);
     w->mlab[q] = (int)q;
   }
-  int rc = gepp(A, 2 * n, n, 0, n, w->mpiv, w->mlab, &dt);
+  int rc = gepp(A, 2 * n, n, 0, n, w->mpiv, w->mlab, &dt, NULL);
   if (rc != 0) return rc == 2 ? WHIRL_EBADFUNC : WHIRL_ESINGULAR;
   for (size_t j = 0; j < n; ++j) {
     for (size_t q = 0; q < n; ++q) col[q] = A[q * 2 * n + n + j];
