@@ -105,6 +105,26 @@ static void lagrange(size_t m, double sigma, double *l, double *dl) {
   }
 }
 
+/* The values alone of the Lagrange basis on the nodes k/m at σ, in O(m):
+ * l_k(σ) = prod_{j != k} (mσ − j) / ((−1)^{m−k} k! (m − k)!), from prefix
+ * and suffix products (the evaluation of orbits for output). */
+static void lagrange_values(size_t m, double sigma, double *l) {
+  const double u = (double)m * sigma;
+  double pre[COLLOC_MAXCOL + 2], suf[COLLOC_MAXCOL + 2];
+  pre[0] = 1.0;
+  for (size_t j = 0; j <= m; ++j) pre[j + 1] = pre[j] * (u - (double)j);
+  suf[m + 1] = 1.0;
+  for (size_t j = m + 1; j-- > 0;) suf[j] = suf[j + 1] * (u - (double)j);
+  double fk = 1.0, fmk = 1.0; /* k!, (m − k)! */
+  for (size_t j = 2; j <= m; ++j) fmk *= (double)j;
+  for (size_t k = 0; k <= m; ++k) {
+    const double den = ((m - k) % 2 ? -1.0 : 1.0) * fk * fmk;
+    l[k] = pre[k] * suf[k + 1] / den;
+    fk *= (double)(k + 1);
+    if (k < m) fmk /= (double)(m - k);
+  }
+}
+
 /* Interval of the mesh tau[0..ntst] containing t ∈ [0, 1] (bisection). */
 static size_t find_interval(const double *tau, size_t ntst, double t) {
   size_t lo = 0, hi = ntst;
@@ -126,7 +146,7 @@ static void eval_poly(size_t n, size_t ntst, size_t m, const double *tau,
   const size_t i = find_interval(tau, ntst, t);
   const double h = tau[i + 1] - tau[i];
   double l[COLLOC_MAXCOL + 1];
-  lagrange(m, (t - tau[i]) / h, l, NULL);
+  lagrange_values(m, (t - tau[i]) / h, l);
   for (size_t r = 0; r < n; ++r) x[r] = 0.0;
   for (size_t k = 0; k <= m; ++k) {
     const double *xk = Xn + n * (i * m + k);
