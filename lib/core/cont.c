@@ -193,9 +193,10 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   c->work = calloc(c->wlen, sizeof *c->work);
   c->dir = calloc(c->N, sizeof *c->dir);
   c->Xprev = calloc(c->N, sizeof *c->Xprev);
+  c->tprev = calloc(c->N, sizeof *c->tprev);
   c->Xstart = calloc(c->N, sizeof *c->Xstart);
   if (!c->fp || !c->f || !c->rhs || !c->row || !c->row2 || !c->work || !c->dir ||
-      !c->Xprev || !c->Xstart)
+      !c->Xprev || !c->tprev || !c->Xstart)
     goto nomem;
   c->qcap = 2 * (8 + opt->nuz);
   c->queue = calloc(c->qcap, sizeof *c->queue);
@@ -234,6 +235,7 @@ void whirl_cont_free(whirl_cont *c) {
   free(c->work);
   free(c->dir);
   free(c->Xprev);
+  free(c->tprev);
   free(c->Xstart);
   state_free(&c->cur);
   state_free(&c->trial);
@@ -568,6 +570,7 @@ static void reset_run(whirl_cont *c) {
   c->done = 0;
   c->started = 0;
   c->have_prev = 0;
+  c->have_tprev = 0;
   c->stop_reason = WHIRL_STOP_NONE;
   c->errmsg[0] = '\0';
 }
@@ -782,6 +785,32 @@ static int finish(whirl_cont *c, int reason) {
   return 0;
 }
 
+/* The second-order predictor (opt.curved_predictor): the curve near cur as
+ * X(σ) = X + σ t + σ²/2 κ, κ = (t − t_prev) / h the rate of change of the
+ * unit tangent over the last step (length h), taken at the σ where it meets
+ * the constraint hyperplane <dir, X − X_cur> = ds (one Newton step on the
+ * quadratic from σ = ds / <dir, t>).  The corrector then starts O(ds³) from
+ * the curve instead of O(ds²). */
+static void curved_guess(whirl_cont *c) {
+  const size_t N = c->N;
+  const double *t = c->cur.t, *tp = c->tprev, h = c->hprev, ds = c->ds;
+  double b = cont_dot(c, c->dir, t), a = 0.0;
+  if (!(b > 0.1)) return; /* the hyperplane nearly contains the tangent */
+  {
+    const double w2 = c->opt.p_weight * c->opt.p_weight;
+    for (size_t i = 0; i < N; ++i)
+      a += (i == c->n ? w2 : 1.0) * c->dir[i] * (t[i] - tp[i]);
+    a *= 0.5 / h;
+  }
+  double sg = ds / b;
+  const double d = 2.0 * a * sg + b;
+  if (d > 0.0) sg -= (a * sg * sg + b * sg - ds) / d;
+  if (!(sg > 0.0) || !isfinite(sg)) return;
+  const double q = 0.5 * sg * sg / h;
+  for (size_t i = 0; i < N; ++i)
+    c->trial.X[i] = c->cur.X[i] + sg * t[i] + q * (t[i] - tp[i]);
+}
+
 int whirl_cont_step(whirl_cont *c) {
   if (!c->started)
     return CONT_FAIL(c, WHIRL_EINVAL, "whirl_cont_step: continuation not started");
@@ -812,6 +841,8 @@ int whirl_cont_step(whirl_cont *c) {
       memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
     }
     for (size_t i = 0; i < N; ++i) c->trial.X[i] = c->cur.X[i] + c->ds * c->dir[i];
+    if (o->curved_predictor && c->have_prev && c->have_tprev && c->hprev > 0.0)
+      curved_guess(c);
     int rc = cont_correct(c, c->cur.X, c->dir, c->ds, c->trial.X);
     if (rc < 0) return rc;
     its = c->its;
@@ -958,6 +989,9 @@ int whirl_cont_step(whirl_cont *c) {
   /* accept */
   memcpy(c->Xprev, c->cur.X, N * sizeof *c->Xprev);
   c->have_prev = 1;
+  memcpy(c->tprev, c->cur.t, N * sizeof *c->tprev);
+  c->hprev = c->trial.s - c->cur.s;
+  c->have_tprev = 1;
   cont_state_copy(c, &c->cur, &c->trial);
   {
     int rc_acc = notify_accept(c, &c->cur);

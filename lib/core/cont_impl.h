@@ -68,6 +68,9 @@ struct whirl_cont {
   double *dir;        /* N: predictor direction of the current step */
   double *Xprev;      /* N: previous accepted point (secant predictor) */
   int have_prev;
+  double *tprev;      /* N: its tangent (curved predictor) ... */
+  double hprev;       /* ... and the arclength from it to cur */
+  int have_tprev;
   double *Xstart;     /* N: start point, for loop detection */
   double ds;          /* current signed step (> 0 along the tangent) */
   int its;            /* Newton iterations of the last correction */

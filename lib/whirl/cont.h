@@ -80,6 +80,12 @@ typedef struct whirl_cont_options {
   double chord_theta;  /* contraction above which chord Newton refactors */
   double max_angle;    /* max turn of the tangent per step, radians */
   int tangent_predictor; /* 0: secant predictor (default), 1: tangent */
+  int curved_predictor;  /* 1: start the corrector from the second-order
+                            predictor X + σ t + σ²/2 κ, κ the change of the
+                            unit tangent over the last step per arclength,
+                            σ where it meets the constraint hyperplane (the
+                            hyperplane itself as chosen above); 0: from
+                            X + ds·direction (default) */
   int detect_lp;       /* ILP */
   int detect_bp;       /* ISP (branch points) */
   int detect_hb;       /* ISP (Hopf; needs the system's spectrum); for Floquet
