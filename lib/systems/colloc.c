@@ -167,17 +167,21 @@ static double period_of(const whirl_colloc *c, const double *X,
   return colloc_period_of(c, X, p);
 }
 
-/* x and dx/dσ of interval i at Gauss point g into c->xc, c->dx. */
+/* x and dx/dσ of interval i at Gauss point g into c->xc, c->dx (sums in
+ * registers: c->xc, c->dx might alias X as far as the compiler knows). */
 static void at_gauss(whirl_colloc *c, const double *X, size_t i, size_t g) {
   const size_t n = c->n, m = c->ncol;
   const double *l = c->L + g * (m + 1), *dl = c->D + g * (m + 1);
-  for (size_t r = 0; r < n; ++r) c->xc[r] = c->dx[r] = 0.0;
-  for (size_t k = 0; k <= m; ++k) {
-    const double *xk = X + n * (i * m + k);
-    for (size_t r = 0; r < n; ++r) {
-      c->xc[r] += l[k] * xk[r];
-      c->dx[r] += dl[k] * xk[r];
+  const double *xi = X + n * i * m;
+  for (size_t r = 0; r < n; ++r) {
+    double s = 0.0, d = 0.0;
+    for (size_t k = 0; k <= m; ++k) {
+      const double v = xi[n * k + r];
+      s += l[k] * v;
+      d += dl[k] * v;
     }
+    c->xc[r] = s;
+    c->dx[r] = d;
   }
 }
 
