@@ -266,6 +266,17 @@ static void cont_defaults(whirl_cont_options *co,
   /* collocation Jacobians are sparse (block bidiagonal plus borders) */
   if (o->method == WHIRL_SFD_METHOD_COLLOC) co->linsol = WHIRL_LINSOL_SPARSE;
   co->newton_tol = 1e-12; /* the paper: residual below 7e-14 */
+  if (o->method == WHIRL_SFD_METHOD_COLLOC) {
+    /* chord Newton on collocation's structured solver: one factorisation
+     * per point (the one the tangent and the multipliers need), cheap
+     * iterations (F and one solve) that contract by about 0.03-0.2 each,
+     * from a second-order predictor; the step grows after at most 8 of
+     * them and shrinks after more than 12 */
+    co->newton_chord = 1;
+    co->newton_fast = 8;
+    co->newton_maxit = 24;
+    co->curved_predictor = 1;
+  }
 }
 
 /* Trace a whole branch through X0 and append it; *skipped = 1 if X0 lies on
