@@ -622,7 +622,12 @@ int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
   memset(c->dir, 0, N * sizeof *c->dir);
   c->dir[n] = 1.0;
   memcpy(c->trial.X, c->cur.X, N * sizeof *c->trial.X);
+  /* the start point is corrected by Newton even when the steps use chord
+   * Newton: x0 may be far from the branch */
+  const int chord = c->opt.newton_chord;
+  c->opt.newton_chord = 0;
   rc = cont_correct(c, c->cur.X, c->dir, 0.0, c->trial.X);
+  c->opt.newton_chord = chord;
   if (rc < 0) return rc;
   if (rc == 3)
     return CONT_FAIL(c, WHIRL_ESINGULAR,
