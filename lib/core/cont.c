@@ -386,8 +386,10 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
     for (size_t i = 0; i < N; ++i) {
       X[i] -= c->rhs[i];
       if (!isfinite(X[i])) return 1;
-      dmax = fmax(dmax, fabs(c->rhs[i]));
-      xmax = fmax(xmax, fabs(X[i]));
+      /* comparisons, not fmax: a library call per entry at -O2 */
+      const double d = fabs(c->rhs[i]), x = fabs(X[i]);
+      if (d > dmax) dmax = d;
+      if (x > xmax) xmax = x;
     }
     c->its = it; /* iterations used, read by the step control */
     const double tolx = c->opt.newton_tol * (1.0 + xmax);
