@@ -264,6 +264,22 @@ static int gepp(double *A, size_t ld, size_t np, size_t nextra, size_t ne,
   return 0;
 }
 
+/* Dot product of a[k] and b[k], k < len, with four partial sums (the
+ * dependency chain of one sum, not the arithmetic, limits a scalar loop). */
+static inline double dot4(const double *restrict a, const double *restrict b,
+                          size_t len) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  size_t k = 0;
+  for (; k + 4 <= len; k += 4) {
+    s0 += a[k] * b[k];
+    s1 += a[k + 1] * b[k + 1];
+    s2 += a[k + 2] * b[k + 2];
+    s3 += a[k + 3] * b[k + 3];
+  }
+  for (; k < len; ++k) s0 += a[k] * b[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
 /* The forward part of a solve with a gepp block: the swaps, then L, row by
  * row (contiguous dot products). */
 static void gepp_forward(const double *A, size_t ld, size_t np, size_t nextra,
@@ -274,18 +290,8 @@ static void gepp_forward(const double *A, size_t ld, size_t np, size_t nextra,
       b[c] = b[piv[c]];
       b[piv[c]] = t;
     }
-  for (size_t r = 1; r < np + nextra; ++r) {
-    const double *a = A + r * ld;
-    const size_t kmax = r < ne ? r : ne;
-    double s0 = 0.0, s1 = 0.0;
-    size_t k = 0;
-    for (; k + 2 <= kmax; k += 2) {
-      s0 += a[k] * b[k];
-      s1 += a[k + 1] * b[k + 1];
-    }
-    if (k < kmax) s0 += a[k] * b[k];
-    b[r] -= s0 + s1;
-  }
+  for (size_t r = 1; r < np + nextra; ++r)
+    b[r] -= dot4(A + r * ld, b, r < ne ? r : ne);
 }
 
 /* The backward part: the eliminated unknowns x[ne] from the transformed
@@ -294,21 +300,9 @@ static void gepp_back(const double *A, size_t ld, size_t ne, size_t ny,
                       const double *b, const double *y, double *x) {
   for (size_t c = ne; c-- > 0;) {
     const double *a = A + c * ld;
-    double s0 = b[c], s1 = 0.0;
-    size_t k = c + 1;
-    for (; k + 2 <= ne; k += 2) {
-      s0 -= a[k] * x[k];
-      s1 -= a[k + 1] * x[k + 1];
-    }
-    if (k < ne) s0 -= a[k] * x[k];
-    const double *ay = a + ne;
-    k = 0;
-    for (; k + 2 <= ny; k += 2) {
-      s0 -= ay[k] * y[k];
-      s1 -= ay[k + 1] * y[k + 1];
-    }
-    if (k < ny) s0 -= ay[k] * y[k];
-    x[c] = (s0 + s1) * a[c];
+    const double s = b[c] - dot4(a + c + 1, x + c + 1, ne - c - 1) -
+                     dot4(a + ne, y, ny);
+    x[c] = s * a[c];
   }
 }
 
