@@ -13,8 +13,10 @@
  *     and the free parameter).  Gaussian elimination with partial pivoting
  *     (within the interval's rows) of the interior unknowns leaves n
  *     equations  A_i x_i + C_i x_{i+1} + G_i g = r_i  per interval.  The
- *     border rows (phase condition, pseudo-arclength) take part in the
- *     elimination but are never pivot rows.
+ *     border rows (phase condition, pseudo-arclength) are eliminated with
+ *     the same pivot rows but are never pivots themselves, so they are
+ *     done after the collocation rows and a new border row (chord Newton,
+ *     the next step's arclength row) only redoes them and step 3.
  *  2. The mesh points x_1 .. x_{NTST−1} are eliminated in turn: x_j from the
  *     2n rows (the n rows left over so far, in x_0, x_j and g, and the n
  *     rows of interval j), with partial pivoting among them.  What is left
@@ -73,7 +75,6 @@ typedef struct cond_ws {
   int *lab;      /* scratch labels, max(nm, 2n, nf) */
   int *prow, *pcol; /* nx + 1: M's rows and columns in elimination order */
   int *mark;     /* nx + 1: scratch for the permutation signs */
-  size_t npiv;
   double *fk;    /* nx: dF/dp_k */
   double *dT;    /* n */
   double *work;  /* nx + npar: finite differences of dF/dp_k */
@@ -494,7 +495,6 @@ static int factor_border(cond_ws *w, const double *r) {
   int rc;
   w->state = 0;
   if (!w->jac_ok) return WHIRL_EINVAL;
-  w->npiv = w->npiv_c;
   w->det = w->det_c;
   /* border rows on the mesh points and the globals */
   for (size_t t = 0; t < nb; ++t) {
