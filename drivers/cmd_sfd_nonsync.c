@@ -41,7 +41,7 @@ static void help(FILE *f) {
 "  --omega-max W     largest speed                     (20)\n"
 "  --omega-min M     smallest speed                    (1)\n"
 "  --method M        colloc | hbm                      (colloc)\n"
-"  --ntst N, --ncol C  collocation mesh                (60, 4)\n"
+"  --ntst N, --ncol C  collocation mesh                (35, 6)\n"
 "  --harmonics N     HBM harmonics                     (40)\n"
 "  --oversampling K  HBM: K (2N+1) time samples        (10)\n"
 "  --ds S, --ds-max S  arclength steps                 (0.01, 0.2)\n"
@@ -175,7 +175,10 @@ int cmd_sfd_nonsync(int argc, char **argv) {
   whirl_sfd_periodic_options o;
   whirl_sfd_periodic_options_default(&o);
   o.method = WHIRL_SFD_METHOD_COLLOC;
-  o.ntst = 60;
+  /* NTST 35, NCOL 6: the fold of cycles to ~1e-12 (NTST 60, NCOL 4 gave
+   * 1e-9), and the rest of the branch at least as accurately */
+  o.ntst = 35;
+  o.ncol = 6;
   o.harmonics = 40;
   o.omega_min = 1.0;
   double w0 = 8.7;

@@ -80,6 +80,60 @@ static int poincare_multipliers(const whirl_problem *prob, const double *p,
   return rc;
 }
 
+/* Eigenvalues of M sorted by decreasing modulus, and with drop_trivial the
+ * Poincaré-map multipliers; shared by both routes to M. */
+static int multipliers_of(const whirl_problem *prob, const double *p,
+                          double t0, const double *x0, const double *xT,
+                          const double *Mm, int drop_trivial, double *er,
+                          double *ei, double *re, double *im, size_t *m,
+                          double *trivial) {
+  const size_t n = prob->n;
+  whirl_eig *eig = whirl_eig_alloc(n);
+  if (!eig) return WHIRL_ENOMEM;
+  int rc = whirl_eig_compute(eig, Mm, er, ei);
+  whirl_eig_free(eig);
+  if (rc != WHIRL_OK) return rc;
+  /* sort by decreasing modulus (insertion sort keeps pairs adjacent) */
+  for (size_t i = 1; i < n; ++i)
+    for (size_t j = i; j > 0 && hypot(er[j], ei[j]) > hypot(er[j - 1], ei[j - 1]);
+         --j) {
+      double a = er[j], b = ei[j];
+      er[j] = er[j - 1], ei[j] = ei[j - 1];
+      er[j - 1] = a, ei[j - 1] = b;
+    }
+  if (drop_trivial) {
+    double best = INFINITY;
+    for (size_t i = 0; i < n; ++i) best = fmin(best, hypot(er[i] - 1.0, ei[i]));
+    if (trivial) *trivial = best;
+    rc = poincare_multipliers(prob, p, t0, x0, xT, Mm, er, ei);
+    if (rc == WHIRL_OK) {
+      for (size_t i = 0; i + 1 < n; ++i) re[i] = er[i], im[i] = ei[i];
+      *m = n - 1;
+    }
+  } else {
+    if (trivial) *trivial = NAN;
+    for (size_t i = 0; i < n; ++i) re[i] = er[i], im[i] = ei[i];
+    *m = n;
+  }
+  return rc;
+}
+
+int whirl_floquet_from_monodromy(const whirl_problem *prob, const double *p,
+                                 double t0, const double *x0,
+                                 const double *xT, const double *M,
+                                 int drop_trivial, double *re, double *im,
+                                 size_t *m, double *trivial) {
+  if (!prob || !x0 || !xT || !M || !re || !im || !m) return WHIRL_EINVAL;
+  const size_t n = prob->n;
+  if (*m < (drop_trivial ? n - 1 : n)) return WHIRL_EINVAL;
+  double *buf = malloc(2 * n * sizeof *buf);
+  if (!buf) return WHIRL_ENOMEM;
+  int rc = multipliers_of(prob, p, t0, x0, xT, M, drop_trivial, buf, buf + n,
+                          re, im, m, trivial);
+  free(buf);
+  return rc;
+}
+
 int whirl_floquet_multipliers(const whirl_problem *prob, const double *p,
                               double t0, const double *x0, double T,
                               int drop_trivial, double rtol, double atol,
@@ -103,44 +157,18 @@ int whirl_floquet_multipliers(const whirl_problem *prob, const double *p,
   if (rtol <= 0) rtol = 1e-11;
   if (atol <= 0) atol = 1e-13;
   double *buf = malloc((n * n + 3 * n) * sizeof *buf);
-  whirl_eig *eig = whirl_eig_alloc(n);
-  if (!buf || !eig) {
-    free(buf);
-    whirl_eig_free(eig);
-    return WHIRL_ENOMEM;
-  }
+  if (!buf) return WHIRL_ENOMEM;
   double *Mm = buf, *xT = buf + n * n, *er = xT + n, *ei = er + n;
   int rc = whirl_ode_monodromy(prob, p, t0, x0, T, rtol, atol, xT, Mm, NULL,
                                errbuf, errlen);
-  if (rc == WHIRL_OK) rc = whirl_eig_compute(eig, Mm, er, ei);
+  if (rc == WHIRL_OK)
+    rc = multipliers_of(prob, p, t0, x0, xT, Mm, drop_trivial, er, ei, re, im,
+                        m, trivial);
   if (rc == WHIRL_OK) {
-    /* sort by decreasing modulus (insertion sort keeps pairs adjacent) */
-    for (size_t i = 1; i < n; ++i)
-      for (size_t j = i; j > 0 && hypot(er[j], ei[j]) > hypot(er[j - 1], ei[j - 1]);
-           --j) {
-        double a = er[j], b = ei[j];
-        er[j] = er[j - 1], ei[j] = ei[j - 1];
-        er[j - 1] = a, ei[j - 1] = b;
-      }
-    if (drop_trivial) {
-      double best = INFINITY;
-      for (size_t i = 0; i < n; ++i) best = fmin(best, hypot(er[i] - 1.0, ei[i]));
-      if (trivial) *trivial = best;
-      rc = poincare_multipliers(prob, p, t0, x0, xT, Mm, er, ei);
-      if (rc == WHIRL_OK) {
-        for (size_t i = 0; i + 1 < n; ++i) re[i] = er[i], im[i] = ei[i];
-        *m = n - 1;
-      }
-    } else {
-      if (trivial) *trivial = NAN;
-      for (size_t i = 0; i < n; ++i) re[i] = er[i], im[i] = ei[i];
-      *m = n;
-    }
     if (M) memcpy(M, Mm, n * n * sizeof *M);
   } else if (errbuf && !errbuf[0]) {
     snprintf(errbuf, errlen, "Floquet multipliers: %s", whirl_strerror(rc));
   }
-  whirl_eig_free(eig);
   free(buf);
   return rc;
 }

@@ -62,6 +62,8 @@ void whirl_cont_options_default(whirl_cont_options *o) {
   o->newton_tol = 1e-10;
   o->newton_maxit = 12;
   o->newton_fast = 3;
+  o->newton_chord = 0;
+  o->chord_theta = 0.25;
   o->max_angle = 0.2;
   o->tangent_predictor = 0;
   o->detect_lp = o->detect_bp = o->detect_hb = o->detect_pd = 1;
@@ -70,6 +72,7 @@ void whirl_cont_options_default(whirl_cont_options *o) {
   o->detect_loop = 1;
   o->loc_tol = 1e-12;
   o->linsol = WHIRL_LINSOL_DENSE;
+  o->structured = 1;
   o->uz = NULL;
   o->nuz = 0;
 }
@@ -169,6 +172,8 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   else if (!(opt->newton_tol > 0) || opt->newton_maxit < 1)
     why = "need newton_tol > 0 and newton_maxit >= 1";
   else if (!(opt->p_weight > 0)) why = "need p_weight > 0";
+  else if (opt->newton_chord && !(opt->chord_theta > 0 && opt->chord_theta < 1))
+    why = "chord Newton needs 0 < chord_theta < 1";
   else if (opt->linsol == WHIRL_LINSOL_SPARSE &&
            (sys->nnz == 0 || !sys->Jp || !sys->Ji || !sys->Fx_sparse))
     why = "sparse solver requested but the system has no sparse Jacobian";
@@ -184,9 +189,15 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   c->N = sys->n + 1;
   c->npar = sys->npar;
   c->sparse = opt->linsol == WHIRL_LINSOL_SPARSE;
-  c->bd = whirl_bordered_alloc(c->sparse ? WHIRL_LINSOL_SPARSE : WHIRL_LINSOL_DENSE,
-                               c->n, 1, sys->Jp, sys->Ji);
-  if (!c->bd) goto nomem;
+  if (opt->structured && sys->bsolver) {
+    c->bs = sys->bsolver;
+    c->bws = c->bs->alloc(sys->data);
+    if (!c->bws) goto nomem;
+  } else {
+    c->bd = whirl_bordered_alloc(c->sparse ? WHIRL_LINSOL_SPARSE : WHIRL_LINSOL_DENSE,
+                                 c->n, 1, sys->Jp, sys->Ji);
+    if (!c->bd) goto nomem;
+  }
   if (c->sparse) {
     c->Jx = calloc(sys->nnz, sizeof *c->Jx);
     if (!c->Jx) goto nomem;
@@ -199,12 +210,14 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   c->f = calloc(c->n, sizeof *c->f);
   c->rhs = calloc(c->N, sizeof *c->rhs);
   c->row = calloc(c->N, sizeof *c->row);
+  c->row2 = calloc(c->N, sizeof *c->row2);
   c->work = calloc(c->wlen, sizeof *c->work);
   c->dir = calloc(c->N, sizeof *c->dir);
   c->Xprev = calloc(c->N, sizeof *c->Xprev);
+  c->tprev = calloc(c->N, sizeof *c->tprev);
   c->Xstart = calloc(c->N, sizeof *c->Xstart);
-  if (!c->fp || !c->f || !c->rhs || !c->row || !c->work || !c->dir ||
-      !c->Xprev || !c->Xstart)
+  if (!c->fp || !c->f || !c->rhs || !c->row || !c->row2 || !c->work || !c->dir ||
+      !c->Xprev || !c->tprev || !c->Xstart)
     goto nomem;
   c->qcap = 2 * (8 + opt->nuz + (sys->test ? sys->ntest : 0));
   c->queue = calloc(c->qcap, sizeof *c->queue);
@@ -231,6 +244,7 @@ nomem:
 void whirl_cont_free(whirl_cont *c) {
   if (!c) return;
   whirl_bordered_free(c->bd);
+  if (c->bs) c->bs->free(c->bws);
   whirl_eig_free(c->eig);
   free(c->J);
   free(c->Jx);
@@ -238,9 +252,11 @@ void whirl_cont_free(whirl_cont *c) {
   free(c->f);
   free(c->rhs);
   free(c->row);
+  free(c->row2);
   free(c->work);
   free(c->dir);
   free(c->Xprev);
+  free(c->tprev);
   free(c->Xstart);
   state_free(&c->cur);
   state_free(&c->trial);
@@ -282,56 +298,143 @@ static int eval_jac(whirl_cont *c, const double *x, const double *p) {
   return classify(c, rc, "parameter derivative");
 }
 
-/* Factor [F_x F_p; r^T] with r the weighted direction dir. */
-static int factor_ext(whirl_cont *c, const double *dir) {
+/* Evaluate the Jacobian at (x, p) and factor [F_x F_p; r^T] with r the
+ * weighted direction dir: by the system's structured solver, or by the
+ * general (dense or sparse) LU of the assembled matrix.  Returns 0, 2 for a
+ * recoverable model failure, 3 for a singular matrix, < 0 fatal. */
+static void border_row(const whirl_cont *c, const double *dir, double *row) {
   const double w = c->opt.p_weight;
-  for (size_t i = 0; i < c->n; ++i) c->row[i] = dir[i];
-  c->row[c->n] = w * w * dir[c->n];
+  for (size_t i = 0; i < c->n; ++i) row[i] = dir[i];
+  row[c->n] = w * w * dir[c->n];
+}
+
+static int jac_factor(whirl_cont *c, const double *x, const double *p,
+                      const double *dir) {
+  border_row(c, dir, c->row);
+  int rc;
+  c->fact_ok = 0;
+  if (c->bs) {
+    ++c->stats.jac_evals;
+    ++c->stats.factorizations;
+    rc = c->bs->factor(c->bws, x, p, c->opt.icp, c->row);
+    if (rc == WHIRL_OK) return c->fact_ok = 1, 0;
+    if (rc == WHIRL_ESINGULAR) return 3;
+    return classify(c, rc, "structured factorisation of the extended Jacobian");
+  }
+  if ((rc = eval_jac(c, x, p)) != 0) return rc;
   ++c->stats.factorizations;
-  int rc = whirl_bordered_factor(c->bd, c->sparse ? c->Jx : c->J, c->fp,
-                                 c->row, &c->row[c->n]);
-  if (rc == WHIRL_OK) return 0;
+  rc = whirl_bordered_factor(c->bd, c->sparse ? c->Jx : c->J, c->fp,
+                             c->row, &c->row[c->n]);
+  if (rc == WHIRL_OK) return c->fact_ok = 1, 0;
   if (rc == WHIRL_ESINGULAR) return 3;
   return CONT_FAIL(c, rc, "factorisation of the extended Jacobian: %s",
                    whirl_bordered_errmsg(c->bd));
 }
 
+/* Chord Newton: the held F_x and F_p with the border row row2, when that
+ * differs from the row of the factorisation.  Returns as jac_factor, and
+ * 4 when the structured solver cannot change its border alone (the caller
+ * then factors anew). */
+static int reborder(whirl_cont *c) {
+  if (memcmp(c->row, c->row2, c->N * sizeof *c->row) == 0) return 0;
+  if (c->bs && !c->bs->reborder) return 4;
+  memcpy(c->row, c->row2, c->N * sizeof *c->row);
+  c->fact_ok = 0;
+  int rc;
+  ++c->stats.factorizations;
+  if (c->bs) {
+    rc = c->bs->reborder(c->bws, c->row);
+    if (rc == WHIRL_OK) return c->fact_ok = 1, 0;
+    if (rc == WHIRL_ESINGULAR) return 3;
+    return classify(c, rc, "structured factorisation of the extended Jacobian");
+  }
+  rc = whirl_bordered_factor(c->bd, c->sparse ? c->Jx : c->J, c->fp, c->row,
+                             &c->row[c->n]);
+  if (rc == WHIRL_OK) return c->fact_ok = 1, 0;
+  if (rc == WHIRL_ESINGULAR) return 3;
+  return CONT_FAIL(c, rc, "factorisation of the extended Jacobian: %s",
+                   whirl_bordered_errmsg(c->bd));
+}
+
+/* Solve with the last factorisation, b[N] in place. */
+static int ext_solve(whirl_cont *c, double *b, const char *what) {
+  int rc = c->bs ? c->bs->solve(c->bws, b, 1)
+                 : whirl_bordered_solve(c->bd, b, 1, 0);
+  if (rc == WHIRL_OK) return 0;
+  return CONT_FAIL(c, rc, "%s: %s", what,
+                   c->bs ? whirl_strerror(rc) : whirl_bordered_errmsg(c->bd));
+}
+
 /* ------------------------------------------------------------ corrector */
 
+/* Newton's method on the extended system; with chord Newton
+ * (opt.newton_chord) the factorisation held from the last analysed point
+ * or an earlier iterate is kept while the corrections contract by
+ * chord_theta per iteration, and made anew at the current iterate when
+ * they do not (AUTO-07p freezes the Jacobian after NWTN iterations in the
+ * same spirit).  Its iterations are cheap: F and one solve. */
 int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
                  double *X) {
   const size_t n = c->n, N = c->N;
+  const int chord = c->opt.newton_chord;
   double *p = c->trial.p;
   double prev = INFINITY;
+  int fresh = !chord || !c->fact_ok; /* factor at the next iterate */
+  int refreshed = 0; /* factorisations made during this correction */
   memcpy(p, c->cur.p, c->npar * sizeof *p);
+  if (chord) border_row(c, dir, c->row2);
   for (int it = 1; it <= c->opt.newton_maxit; ++it) {
     p[c->opt.icp] = X[n];
     int rc = whirl_system_eval(&c->sys, X, p, c->f);
     ++c->stats.f_evals;
     if ((rc = classify(c, rc, "F")) != 0) return rc;
-    if ((rc = eval_jac(c, X, p)) != 0) return rc;
-    if ((rc = factor_ext(c, dir)) != 0) return rc;
+    if (!chord) fresh = 1;
+    if (!fresh && (rc = reborder(c)) == 4) fresh = 1;
+    else if (rc != 0) return rc;
+    if (fresh) {
+      if ((rc = jac_factor(c, X, p, dir)) != 0) return rc;
+      fresh = 0;
+      ++refreshed;
+      prev = INFINITY;
+    }
     double acc = 0.0;
     for (size_t i = 0; i < n; ++i) c->rhs[i] = c->f[i];
     for (size_t i = 0; i < N; ++i) acc += c->row[i] * (X[i] - X0[i]);
     c->rhs[n] = acc - s;
-    rc = whirl_bordered_solve(c->bd, c->rhs, 1, 0);
-    if (rc != WHIRL_OK)
-      return CONT_FAIL(c, rc, "bordered solve: %s", whirl_bordered_errmsg(c->bd));
+    if ((rc = ext_solve(c, c->rhs, "bordered solve")) != 0) return rc;
     ++c->stats.newton_its;
     double dmax = 0.0, xmax = 0.0;
     for (size_t i = 0; i < N; ++i) {
       X[i] -= c->rhs[i];
       if (!isfinite(X[i])) return 1;
-      dmax = fmax(dmax, fabs(c->rhs[i]));
-      xmax = fmax(xmax, fabs(X[i]));
+      /* comparisons, not fmax: a library call per entry at -O2 */
+      const double d = fabs(c->rhs[i]), x = fabs(X[i]);
+      if (d > dmax) dmax = d;
+      if (x > xmax) xmax = x;
     }
     c->its = it; /* iterations used, read by the step control */
-    if (dmax <= c->opt.newton_tol * (1.0 + xmax)) {
+    const double tolx = c->opt.newton_tol * (1.0 + xmax);
+    int conv = dmax <= tolx;
+    if (!conv && chord && isfinite(prev) && dmax < 0.5 * prev) {
+      /* chord Newton converges linearly: the error left after this
+       * correction is about θ/(1 − θ) times it, θ = dmax/prev the
+       * observed contraction (Deuflhard, Newton Methods for Nonlinear
+       * Problems, 2004, §2.1) */
+      const double th = dmax / prev;
+      conv = th / (1.0 - th) * dmax <= tolx;
+    }
+    if (conv) {
       p[c->opt.icp] = X[n];
       return 0;
     }
-    if (it > 2 && dmax > 2.0 * prev) return 1; /* diverging */
+    if (!chord) {
+      if (it > 2 && dmax > 2.0 * prev) return 1; /* diverging */
+    } else if (dmax > c->opt.chord_theta * prev) {
+      /* slow contraction: a new Jacobian at the next iterate; diverging
+       * with Jacobians of this correction already: give up */
+      if (refreshed >= 2 && dmax > 2.0 * prev) return 1;
+      fresh = 1;
+    }
     prev = dmax;
   }
   return 1;
@@ -398,19 +501,19 @@ int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
   for (size_t k = 0; k < c->npar; ++k)
     if (k != c->opt.icp) st->p[k] = c->cur.p[k];
   st->p[c->opt.icp] = st->X[n];
-  int rc = eval_jac(c, st->X, st->p);
+  int rc = jac_factor(c, st->X, st->p, dir);
   if (rc != 0) return rc;
-  if ((rc = factor_ext(c, dir)) != 0) return rc;
   /* tangent: [F_x F_p; r^T] z = e_N, then t = z / |z|_w (Keller). */
   memset(st->t, 0, N * sizeof *st->t);
   st->t[n] = 1.0;
-  rc = whirl_bordered_solve(c->bd, st->t, 1, 0);
-  if (rc != WHIRL_OK)
-    return CONT_FAIL(c, rc, "tangent solve: %s", whirl_bordered_errmsg(c->bd));
+  if ((rc = ext_solve(c, st->t, "tangent solve")) != 0) return rc;
   const double nz = cont_norm(c, st->t);
   if (!(nz > 0) || !isfinite(nz)) return 1;
   for (size_t i = 0; i < N; ++i) st->t[i] /= nz;
-  whirl_bordered_logdet(c->bd, &st->logdet, &st->sign_det);
+  if (c->bs)
+    c->bs->logdet(c->bws, &st->logdet, &st->sign_det);
+  else
+    whirl_bordered_logdet(c->bd, &st->logdet, &st->sign_det);
   st->psi_lp = st->t[n];
 
   st->n_unstable = -1;
@@ -423,7 +526,7 @@ int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
   st->nspec = 0;
   if (c->sys.spectrum && c->sys.nspec) {
     size_t m = c->sys.nspec;
-    rc = c->sys.spectrum(st->X, st->p, c->sparse ? NULL : c->J, st->re, st->im,
+    rc = c->sys.spectrum(st->X, st->p, c->sparse || c->bs ? NULL : c->J, st->re, st->im,
                          &m, c->sys.data);
     ++c->stats.eig_evals;
     if ((rc = classify(c, rc, "spectrum")) != 0) return rc;
@@ -488,12 +591,14 @@ static int pop(whirl_cont *c) {
 /* ------------------------------------------------------------ start */
 
 static void reset_run(whirl_cont *c) {
+  c->fact_ok = 0;
   c->qlen = c->qhead = 0;
   c->index = 0;
   c->label = 0;
   c->done = 0;
   c->started = 0;
   c->have_prev = 0;
+  c->have_tprev = 0;
   c->stop_reason = WHIRL_STOP_NONE;
   c->errmsg[0] = '\0';
 }
@@ -545,7 +650,12 @@ int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
   memset(c->dir, 0, N * sizeof *c->dir);
   c->dir[n] = 1.0;
   memcpy(c->trial.X, c->cur.X, N * sizeof *c->trial.X);
+  /* the start point is corrected by Newton even when the steps use chord
+   * Newton: x0 may be far from the branch */
+  const int chord = c->opt.newton_chord;
+  c->opt.newton_chord = 0;
   rc = cont_correct(c, c->cur.X, c->dir, 0.0, c->trial.X);
+  c->opt.newton_chord = chord;
   if (rc < 0) return rc;
   if (rc == 3)
     return CONT_FAIL(c, WHIRL_ESINGULAR,
@@ -557,6 +667,10 @@ int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
                      c->sys.p_names ? c->sys.p_names[c->opt.icp] : "p",
                      p0[c->opt.icp], rc == 2 ? " (domain error)" : "");
   memcpy(c->cur.X, c->trial.X, N * sizeof *c->cur.X);
+  /* references the equations take from the last accepted point (the phase
+   * condition of collocation) must be the start point's before its tangent
+   * is computed, or the first step runs along the old reference's phase */
+  if ((rc = notify_accept(c, &c->cur)) != 0) return rc;
   rc = cont_analyse(c, &c->cur, c->dir);
   if (rc < 0) return rc;
   if (rc > 0 || fabs(c->cur.t[n]) < 1e-12)
@@ -591,6 +705,7 @@ int whirl_cont_start_direction(whirl_cont *c, const double *x0,
   for (size_t i = 0; i < N; ++i) c->dir[i] = t0[i];
   const double nw = cont_norm(c, c->dir);
   for (size_t i = 0; i < N; ++i) c->dir[i] /= nw;
+  if ((rc = notify_accept(c, &c->cur)) != 0) return rc; /* as in start */
   rc = cont_analyse(c, &c->cur, c->dir);
   if (rc < 0) return rc;
   /* At a branch point the extended matrix is singular: the direction itself
@@ -703,6 +818,32 @@ static int finish(whirl_cont *c, int reason) {
   return 0;
 }
 
+/* The second-order predictor (opt.curved_predictor): the curve near cur as
+ * X(σ) = X + σ t + σ²/2 κ, κ = (t − t_prev) / h the rate of change of the
+ * unit tangent over the last step (length h), taken at the σ where it meets
+ * the constraint hyperplane <dir, X − X_cur> = ds (one Newton step on the
+ * quadratic from σ = ds / <dir, t>).  The corrector then starts O(ds³) from
+ * the curve instead of O(ds²). */
+static void curved_guess(whirl_cont *c) {
+  const size_t N = c->N;
+  const double *t = c->cur.t, *tp = c->tprev, h = c->hprev, ds = c->ds;
+  double b = cont_dot(c, c->dir, t), a = 0.0;
+  if (!(b > 0.1)) return; /* the hyperplane nearly contains the tangent */
+  {
+    const double w2 = c->opt.p_weight * c->opt.p_weight;
+    for (size_t i = 0; i < N; ++i)
+      a += (i == c->n ? w2 : 1.0) * c->dir[i] * (t[i] - tp[i]);
+    a *= 0.5 / h;
+  }
+  double sg = ds / b;
+  const double d = 2.0 * a * sg + b;
+  if (d > 0.0) sg -= (a * sg * sg + b * sg - ds) / d;
+  if (!(sg > 0.0) || !isfinite(sg)) return;
+  const double q = 0.5 * sg * sg / h;
+  for (size_t i = 0; i < N; ++i)
+    c->trial.X[i] = c->cur.X[i] + sg * t[i] + q * (t[i] - tp[i]);
+}
+
 int whirl_cont_step(whirl_cont *c) {
   if (!c->started)
     return CONT_FAIL(c, WHIRL_EINVAL, "whirl_cont_step: continuation not started");
@@ -733,6 +874,8 @@ int whirl_cont_step(whirl_cont *c) {
       memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
     }
     for (size_t i = 0; i < N; ++i) c->trial.X[i] = c->cur.X[i] + c->ds * c->dir[i];
+    if (o->curved_predictor && c->have_prev && c->have_tprev && c->hprev > 0.0)
+      curved_guess(c);
     int rc = cont_correct(c, c->cur.X, c->dir, c->ds, c->trial.X);
     if (rc < 0) return rc;
     its = c->its;
@@ -902,6 +1045,9 @@ int whirl_cont_step(whirl_cont *c) {
   /* accept */
   memcpy(c->Xprev, c->cur.X, N * sizeof *c->Xprev);
   c->have_prev = 1;
+  memcpy(c->tprev, c->cur.t, N * sizeof *c->tprev);
+  c->hprev = c->trial.s - c->cur.s;
+  c->have_tprev = 1;
   cont_state_copy(c, &c->cur, &c->trial);
   {
     int rc_acc = notify_accept(c, &c->cur);

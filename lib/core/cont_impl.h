@@ -45,13 +45,17 @@ struct whirl_cont {
   size_t n, N, npar; /* N = n + 1 */
   int sparse;
 
-  whirl_bordered *bd; /* extended matrix [F_x F_p; r^T] */
+  whirl_bordered *bd; /* extended matrix [F_x F_p; r^T] (general LU) */
+  const whirl_bsolver *bs; /* or the system's structured solver ... */
+  void *bws;               /* ... and its workspace */
   double *J;          /* dense F_x[n*n] (dense path) */
   double *Jx;         /* sparse values[nnz] (sparse path) */
   double *fp;         /* F_p[n] */
   double *f;          /* F[n] */
   double *rhs;        /* N */
-  double *row;        /* N: weighted predictor direction for the border */
+  double *row;        /* N: border row of the current factorisation */
+  double *row2;       /* N: border row wanted (chord Newton) */
+  int fact_ok;        /* a factorisation chord Newton may use is held */
   double *work;       /* scratch for finite differences */
   size_t wlen;
   whirl_eig *eig;     /* spectrum of F_x when the system has none of its own */
@@ -66,6 +70,9 @@ struct whirl_cont {
   double *dir;        /* N: predictor direction of the current step */
   double *Xprev;      /* N: previous accepted point (secant predictor) */
   int have_prev;
+  double *tprev;      /* N: its tangent (curved predictor) ... */
+  double hprev;       /* ... and the arclength from it to cur */
+  int have_tprev;
   double *Xstart;     /* N: start point, for loop detection */
   double ds;          /* current signed step (> 0 along the tangent) */
   int its;            /* Newton iterations of the last correction */

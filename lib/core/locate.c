@@ -88,6 +88,9 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   double sa = 0.0, sb = ds;
   const double stol = c->opt.loc_tol * fmax(1.0, fabs(ds));
   int found = 0;
+  /* the bounds and UZ values need p only: the tangent and the spectrum
+   * (a factorisation) are computed at the final point alone */
+  const int p_only = ev == EV_PMIN || ev == EV_PMAX || ev == EV_UZ;
   for (int it = 0; it < 100; ++it) {
     double sigma = (sa * fb - sb * fa) / (fb - fa);
     const double lo = fmin(sa, sb), hi = fmax(sa, sb);
@@ -101,7 +104,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
       const double u = sigma / ds;
       for (size_t i = 0; i < N; ++i) out->X[i] = a->X[i] + u * (b->X[i] - a->X[i]);
       rc = cont_correct(c, a->X, c->dir, sigma, out->X);
-      if (rc == 0) rc = cont_analyse(c, out, c->dir);
+      if (rc == 0 && !p_only) rc = cont_analyse(c, out, c->dir);
       if (rc < 0) return 1;
     }
     if (rc != 0) return 1;
@@ -120,6 +123,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
     if (fabs(sb - sa) <= stol) break;
   }
   if (!found) return 1;
+  if (p_only && cont_analyse(c, out, c->dir) != 0) return 1;
   double d2 = 0.0;
   for (size_t i = 0; i < N; ++i) {
     const double di = out->X[i] - a->X[i];

@@ -148,7 +148,8 @@ static double refine_extremum(const pdisc *d, const double *X, double tau,
   double a = tau - h, b = tau + h;
   double c1 = b - g * (b - a), c2 = a + g * (b - a);
   double f1 = sgn * radius_at(d, X, c1), f2 = sgn * radius_at(d, X, c2);
-  for (int it = 0; it < 80 && b - a > 1e-15; ++it) {
+  /* to 1e-10 in τ: the extremum's value is then exact to ~1e-20 */
+  for (int it = 0; it < 80 && b - a > 1e-10; ++it) {
     if (f1 > f2) {
       b = c2, c2 = c1, f2 = f1;
       c1 = b - g * (b - a);
@@ -265,6 +266,17 @@ static void cont_defaults(whirl_cont_options *co,
   /* collocation Jacobians are sparse (block bidiagonal plus borders) */
   if (o->method == WHIRL_SFD_METHOD_COLLOC) co->linsol = WHIRL_LINSOL_SPARSE;
   co->newton_tol = 1e-12; /* the paper: residual below 7e-14 */
+  if (o->method == WHIRL_SFD_METHOD_COLLOC) {
+    /* chord Newton on collocation's structured solver: one factorisation
+     * per point (the one the tangent and the multipliers need), cheap
+     * iterations (F and one solve) that contract by about 0.03-0.2 each,
+     * from a second-order predictor; the step grows after at most 8 of
+     * them and shrinks after more than 12 */
+    co->newton_chord = 1;
+    co->newton_fast = 8;
+    co->newton_maxit = 24;
+    co->curved_predictor = 1;
+  }
 }
 
 /* Trace a whole branch through X0 and append it; *skipped = 1 if X0 lies on
@@ -464,41 +476,50 @@ static double g_du(double t, const double *x, void *data) {
 /* Settle on the attractor reached from rest (rotating frame), find its
  * period by returns to the section u' = 0 (u at a maximum), and take m
  * uniform samples over one period.  Returns WHIRL_ENOCONV if the motion is
- * not a cycle (a circular orbit is an equilibrium here). */
+ * not a cycle (a circular orbit is an equilibrium here).
+ *
+ * The transient only has to bring the state near the cycle, which
+ * collocation's Newton iteration then corrects, so it is integrated at
+ * rtol 1e-7 and stops at the first return of a section point to a previous
+ * one within 1e-4 of the orbit's size (after at least 10 forcing periods,
+ * at most 1500): the state is then within about 1e-4 / (1 − |μ|) of the
+ * cycle, μ its largest multiplier.  The cycle is then sampled at rtol
+ * 1e-12. */
+enum { NCROSS = 40 };
 static int cycle_from_integration(const double *p, size_t m, double *xs,
                                   double *T, char *errbuf, size_t errlen) {
   const whirl_problem *rot = whirl_sfd_rotating();
   whirl_ode *ode = whirl_ode_alloc(rot, p);
   if (!ode) return WHIRL_ENOMEM;
-  whirl_ode_set_tolerances(ode, 1e-12, 1e-15);
+  whirl_ode_set_tolerances(ode, 1e-7, 1e-10);
   const double Om = p[WHIRL_SFD_OMEGA], Tf = 2.0 * M_PI / Om;
   const double x0[4] = {0, 0, 0, 0};
   whirl_ode_reset(ode, 0.0, x0);
-  /* settle: 150 forcing periods, then look for a closed return to the
-   * section; keep integrating (up to 1500 periods) until one is found */
-  int rc = whirl_ode_evolve(ode, 150.0 * Tf);
-  enum { NC = 40 };
-  double tc[NC], xc[NC][4], xe[4], te, scale = 0;
-  size_t nc = 0, kret = 0;
-  for (int attempt = 0; rc == WHIRL_OK && attempt < 8 && !kret; ++attempt) {
-    nc = 0;
-    const double t_end = whirl_ode_t(ode) + 150.0 * Tf;
-    while (nc < NC && whirl_ode_t(ode) < t_end) {
-      if ((rc = whirl_ode_step(ode, t_end)) < 0) break;
-      rc = WHIRL_OK;
-      if (whirl_ode_find_event(ode, g_du, NULL, -1, 0.0, &te, xe) == 1) {
-        tc[nc] = te;
-        memcpy(xc[nc], xe, sizeof xe);
-        ++nc;
+  int rc = whirl_ode_evolve(ode, 10.0 * Tf);
+  /* the last NCROSS section points (ring buffer), and the closing pair */
+  double tc[NCROSS], xc[NCROSS][4], xe[4], te, scale = 0.0, Tr = 0.0;
+  double xstart[4];
+  size_t nc = 0, found = 0;
+  const double t_end = 1500.0 * Tf;
+  while (rc == WHIRL_OK && !found && whirl_ode_t(ode) < t_end) {
+    if ((rc = whirl_ode_step(ode, t_end)) < 0) break;
+    rc = WHIRL_OK;
+    if (whirl_ode_find_event(ode, g_du, NULL, -1, 0.0, &te, xe) != 1) continue;
+    const size_t slot = nc % NCROSS;
+    tc[slot] = te;
+    memcpy(xc[slot], xe, sizeof xe);
+    ++nc;
+    scale = fmax(scale, hypot(xe[0], xe[1]));
+    /* the nearest earlier section point that this one returns to */
+    for (size_t k = 1; k < NCROSS && k < nc && !found; ++k) {
+      const size_t q = (nc - 1 - k) % NCROSS;
+      double dist = 0.0;
+      for (int i = 0; i < 4; ++i) dist = fmax(dist, fabs(xe[i] - xc[q][i]));
+      if (dist < 1e-4 * fmax(scale, 1e-3)) {
+        found = 1;
+        Tr = te - tc[q];
+        memcpy(xstart, xe, sizeof xe);
       }
-    }
-    /* the period: the first return of the section point to itself */
-    scale = 0;
-    for (size_t k = 0; k < nc; ++k) scale = fmax(scale, hypot(xc[k][0], xc[k][1]));
-    for (size_t k = 1; k < nc && !kret; ++k) {
-      double dist = 0;
-      for (int i = 0; i < 4; ++i) dist = fmax(dist, fabs(xc[k][i] - xc[0][i]));
-      if (dist < 1e-7 * fmax(scale, 1e-3)) kret = k;
     }
   }
   if (rc != WHIRL_OK) {
@@ -507,7 +528,7 @@ static int cycle_from_integration(const double *p, size_t m, double *xs,
     whirl_ode_free(ode);
     return rc;
   }
-  if (nc < 2 || !kret || scale < 1e-9) {
+  if (nc < 2 || !found || scale < 1e-9) {
     whirl_ode_free(ode);
     return fail(errbuf, errlen, WHIRL_ENOCONV,
                 "nonsync: from rest at Omega = %g the rotor settles on %s, not "
@@ -515,18 +536,20 @@ static int cycle_from_integration(const double *p, size_t m, double *xs,
                 "(--omega-start)",
                 Om, nc < 2 ? "a circular orbit" : "no periodic cycle of the rotating frame");
   }
-  *T = tc[kret] - tc[0];
-  whirl_ode_reset(ode, 0.0, xc[0]);
+  *T = Tr;
+  whirl_ode_set_tolerances(ode, 1e-12, 1e-15);
+  whirl_ode_reset(ode, 0.0, xstart);
   sample_ctx sc = {xs, m};
   rc = whirl_ode_sample(ode, *T / (double)m, m - 1, take_sample, &sc);
   whirl_ode_free(ode);
   if (rc != WHIRL_OK) return fail(errbuf, errlen, rc, "nonsync: sampling the cycle failed");
   /* a circular orbit is an equilibrium of the rotating frame: its decaying
-   * oscillation also returns to the section, but with no amplitude left */
+   * oscillation also returns to the section, but with (almost) no
+   * amplitude left */
   double spread = 0.0;
   for (size_t k = 1; k < m; ++k)
     for (int i = 0; i < 2; ++i) spread = fmax(spread, fabs(xs[4 * k + i] - xs[i]));
-  if (spread < 1e-6)
+  if (spread < 1e-2 * fmax(scale, 1e-3))
     return fail(errbuf, errlen, WHIRL_ENOCONV,
                 "nonsync: from rest at Omega = %g the rotor settles on a circular "
                 "orbit (an equilibrium of the rotating frame), not on a "

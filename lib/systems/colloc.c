@@ -22,46 +22,8 @@
 #include <whirl/floquet.h>
 #include <whirl/ode.h>
 
-#define COLLOC_PI 3.14159265358979323846
-#define COLLOC_MAXCOL 7
+#include "colloc_impl.h"
 
-struct whirl_colloc {
-  const whirl_problem *prob;
-  whirl_problem shim; /* prob seen through colloc_shim_*, for the multipliers */
-  whirl_system sys;
-  size_t n, ntst, ncol;
-  size_t nnodes; /* ntst*ncol + 1 */
-  size_t nx;     /* unknowns = equations */
-  size_t nnz;
-  int aut;  /* 1: period unknown, phase condition; 0: forced */
-  int fpar; /* forcing parameter (forced) or -1 */
-  unsigned nu;
-  double t0, floquet_rtol;
-
-  double *mesh; /* ntst + 1 */
-  /* Gauss points and weights on [0, 1]; Lagrange basis and its derivative
-   * at them, L[c*(ncol+1) + k] = l_k(σ_c), D likewise l_k'(σ_c); dm[k] the
-   * weights of the NCOL-th derivative in σ (NCOL^NCOL (−1)^{m−k} C(m, k)). */
-  double gs[COLLOC_MAXCOL], gw[COLLOC_MAXCOL];
-  double L[COLLOC_MAXCOL * (COLLOC_MAXCOL + 1)];
-  double D[COLLOC_MAXCOL * (COLLOC_MAXCOL + 1)];
-  double dm[COLLOC_MAXCOL + 1];
-
-  int *Jp, *Ji;  /* compressed-column pattern, nx + 1 and nnz */
-  double *Jx;    /* nnz, values for the dense callback */
-  double *ref;   /* nnodes*n, node values of the phase reference */
-  double *phase; /* nnodes*n, the phase row ∫ <x, x_ref'> as weights */
-  double phase0; /* <phase, ref>: 0 for a periodic reference, up to rounding */
-  int have_ref;
-
-  /* scratch (n, n, n, n, n*n, n*npar, 2n, npar, nx, nx) */
-  double *xc, *dx, *f, *f2, *J, *Jpar, *work, *pw, *r1, *r2;
-  double *old_mesh, *old_X; /* ntst + 1, nnodes*n: mesh adaptation */
-  double *ref_new;          /* nnodes*n */
-
-  int rhs_fail; /* last recoverable model failure seen by the shim */
-  char errmsg[256];
-};
 
 void whirl_colloc_options_default(whirl_colloc_options *o) {
   memset(o, 0, sizeof *o);
@@ -71,6 +33,7 @@ void whirl_colloc_options_default(whirl_colloc_options *o) {
   o->nu = 1;
   o->t0 = 0.0;
   o->floquet_rtol = 1e-11;
+  o->floquet = WHIRL_COLLOC_FLOQUET_CONDENSED;
 }
 
 /* ------------------------------------------------------------ basis */
@@ -142,6 +105,26 @@ static void lagrange(size_t m, double sigma, double *l, double *dl) {
   }
 }
 
+/* The values alone of the Lagrange basis on the nodes k/m at σ, in O(m):
+ * l_k(σ) = prod_{j != k} (mσ − j) / ((−1)^{m−k} k! (m − k)!), from prefix
+ * and suffix products (the evaluation of orbits for output). */
+static void lagrange_values(size_t m, double sigma, double *l) {
+  const double u = (double)m * sigma;
+  double pre[COLLOC_MAXCOL + 2], suf[COLLOC_MAXCOL + 2];
+  pre[0] = 1.0;
+  for (size_t j = 0; j <= m; ++j) pre[j + 1] = pre[j] * (u - (double)j);
+  suf[m + 1] = 1.0;
+  for (size_t j = m + 1; j-- > 0;) suf[j] = suf[j + 1] * (u - (double)j);
+  double fk = 1.0, fmk = 1.0; /* k!, (m − k)! */
+  for (size_t j = 2; j <= m; ++j) fmk *= (double)j;
+  for (size_t k = 0; k <= m; ++k) {
+    const double den = ((m - k) % 2 ? -1.0 : 1.0) * fk * fmk;
+    l[k] = pre[k] * suf[k + 1] / den;
+    fk *= (double)(k + 1);
+    if (k < m) fmk /= (double)(m - k);
+  }
+}
+
 /* Interval of the mesh tau[0..ntst] containing t ∈ [0, 1] (bisection). */
 static size_t find_interval(const double *tau, size_t ntst, double t) {
   size_t lo = 0, hi = ntst;
@@ -163,7 +146,7 @@ static void eval_poly(size_t n, size_t ntst, size_t m, const double *tau,
   const size_t i = find_interval(tau, ntst, t);
   const double h = tau[i + 1] - tau[i];
   double l[COLLOC_MAXCOL + 1];
-  lagrange(m, (t - tau[i]) / h, l, NULL);
+  lagrange_values(m, (t - tau[i]) / h, l);
   for (size_t r = 0; r < n; ++r) x[r] = 0.0;
   for (size_t k = 0; k <= m; ++k) {
     const double *xk = Xn + n * (i * m + k);
@@ -173,23 +156,32 @@ static void eval_poly(size_t n, size_t ntst, size_t m, const double *tau,
 
 /* ------------------------------------------------------------ helpers */
 
-static double period_of(const whirl_colloc *c, const double *X,
+double colloc_period_of(const whirl_colloc *c, const double *X,
                         const double *p) {
   if (c->aut) return X[c->nx - 1];
   return 2.0 * COLLOC_PI * (double)c->nu / p[c->fpar];
 }
 
-/* x and dx/dσ of interval i at Gauss point g into c->xc, c->dx. */
+static double period_of(const whirl_colloc *c, const double *X,
+                        const double *p) {
+  return colloc_period_of(c, X, p);
+}
+
+/* x and dx/dσ of interval i at Gauss point g into c->xc, c->dx (sums in
+ * registers: c->xc, c->dx might alias X as far as the compiler knows). */
 static void at_gauss(whirl_colloc *c, const double *X, size_t i, size_t g) {
   const size_t n = c->n, m = c->ncol;
   const double *l = c->L + g * (m + 1), *dl = c->D + g * (m + 1);
-  for (size_t r = 0; r < n; ++r) c->xc[r] = c->dx[r] = 0.0;
-  for (size_t k = 0; k <= m; ++k) {
-    const double *xk = X + n * (i * m + k);
-    for (size_t r = 0; r < n; ++r) {
-      c->xc[r] += l[k] * xk[r];
-      c->dx[r] += dl[k] * xk[r];
+  const double *xi = X + n * i * m;
+  for (size_t r = 0; r < n; ++r) {
+    double s = 0.0, d = 0.0;
+    for (size_t k = 0; k <= m; ++k) {
+      const double v = xi[n * k + r];
+      s += l[k] * v;
+      d += dl[k] * v;
     }
+    c->xc[r] = s;
+    c->dx[r] = d;
   }
 }
 
@@ -265,25 +257,46 @@ static int colloc_F(const double *X, const double *p, double *F, void *data) {
   return 0;
 }
 
+int colloc_gauss_jac(whirl_colloc *c, const double *X, const double *p,
+                     double T, size_t i, size_t g, double *dT) {
+  const whirl_problem *pr = c->prob;
+  const size_t n = c->n;
+  const double h = c->mesh[i + 1] - c->mesh[i];
+  at_gauss(c, X, i, g);
+  const double tau = c->mesh[i] + h * c->gs[g];
+  const double t = c->t0 + T * tau;
+  int rc = model_jac(c, t, c->xc, p);
+  if (rc != 0 || !dT) return rc;
+  /* dF/dT = −h (f + T τ ∂f/∂t); the time term only for a model not
+   * flagged autonomous (central difference in t) */
+  if ((rc = pr->rhs(t, c->xc, p, c->f, pr->data)) != 0) return rc;
+  for (size_t r = 0; r < n; ++r) dT[r] = -h * c->f[r];
+  if (!pr->autonomous) {
+    const double ht = cbrt(DBL_EPSILON) * fmax(1.0, fabs(t));
+    if ((rc = pr->rhs(t + ht, c->xc, p, c->f, pr->data)) != 0) return rc;
+    if ((rc = pr->rhs(t - ht, c->xc, p, c->f2, pr->data)) != 0) return rc;
+    const double s = -h * T * tau / (2.0 * ht);
+    for (size_t r = 0; r < n; ++r) dT[r] += s * (c->f[r] - c->f2[r]);
+  }
+  return 0;
+}
+
 /* Sparse values in pattern order.  Entry (row R, column col) of a node
  * column lies at Jp[col] + R − Ji[Jp[col]]: its collocation rows are one
  * contiguous block. */
 static int colloc_Fx_sparse(const double *X, const double *p, double *Jx,
                             void *data) {
   whirl_colloc *c = data;
-  const whirl_problem *pr = c->prob;
   const size_t n = c->n, m = c->ncol, N = c->ntst;
   const double T = period_of(c, X, p);
   const size_t colT = n * c->nnodes;
   for (size_t i = 0; i < N; ++i) {
     const double h = c->mesh[i + 1] - c->mesh[i];
     for (size_t g = 0; g < m; ++g) {
-      at_gauss(c, X, i, g);
-      const double tau = c->mesh[i] + h * c->gs[g];
-      const double t = c->t0 + T * tau;
-      int rc = model_jac(c, t, c->xc, p);
-      if (rc != 0) return rc;
       const size_t R0 = n * (i * m + g);
+      double *vT = c->aut ? Jx + (size_t)c->Jp[colT] + R0 : NULL;
+      int rc = colloc_gauss_jac(c, X, p, T, i, g, vT);
+      if (rc != 0) return rc;
       const double *l = c->L + g * (m + 1), *dl = c->D + g * (m + 1);
       for (size_t k = 0; k <= m; ++k) {
         const size_t j = i * m + k;
@@ -292,20 +305,6 @@ static int colloc_Fx_sparse(const double *X, const double *p, double *Jx,
           double *v = Jx + (size_t)c->Jp[col] + R0 - (size_t)c->Ji[c->Jp[col]];
           for (size_t r = 0; r < n; ++r)
             v[r] = (r == q ? dl[k] : 0.0) - h * T * l[k] * c->J[r + n * q];
-        }
-      }
-      if (c->aut) {
-        /* dF/dT = −h (f + T τ ∂f/∂t); the time term only for a model not
-         * flagged autonomous (central difference in t) */
-        if ((rc = pr->rhs(t, c->xc, p, c->f, pr->data)) != 0) return rc;
-        double *v = Jx + (size_t)c->Jp[colT] + R0;
-        for (size_t r = 0; r < n; ++r) v[r] = -h * c->f[r];
-        if (!pr->autonomous) {
-          const double ht = cbrt(DBL_EPSILON) * fmax(1.0, fabs(t));
-          if ((rc = pr->rhs(t + ht, c->xc, p, c->f, pr->data)) != 0) return rc;
-          if ((rc = pr->rhs(t - ht, c->xc, p, c->f2, pr->data)) != 0) return rc;
-          const double s = -h * T * tau / (2.0 * ht);
-          for (size_t r = 0; r < n; ++r) v[r] += s * (c->f[r] - c->f2[r]);
         }
       }
     }
@@ -395,7 +394,9 @@ static int colloc_shim_jac(double t, const double *x, const double *p,
   return rc;
 }
 
-/* Floquet multipliers of the orbit through node 0 (whirl/floquet.h). */
+/* Floquet multipliers of the orbit through node 0 (whirl/floquet.h): from
+ * the monodromy matrix of the condensed collocation equations
+ * (colloc_cond.c), or from the variational equations. */
 static int colloc_spectrum(const double *X, const double *p, const double *J,
                            double *re, double *im, size_t *mcap, void *data) {
   whirl_colloc *c = data;
@@ -403,9 +404,25 @@ static int colloc_spectrum(const double *X, const double *p, const double *J,
   const double T = period_of(c, X, p);
   if (!(T > 0) || !isfinite(T)) return 1; /* recoverable, as in F */
   c->rhs_fail = 0;
-  int rc = whirl_floquet_multipliers(&c->shim, p, c->t0, X, T, c->aut,
-                                     c->floquet_rtol, 0.0, re, im, mcap, NULL,
-                                     NULL, c->errmsg, sizeof c->errmsg);
+  int rc;
+  if (c->floquet == WHIRL_COLLOC_FLOQUET_CONDENSED) {
+    double Mbuf[64], *M = c->n <= 8 ? Mbuf : malloc(c->n * c->n * sizeof *M);
+    if (!M) return WHIRL_ENOMEM;
+    rc = colloc_cond_monodromy(c, X, p, M);
+    if (rc == WHIRL_OK)
+      rc = whirl_floquet_from_monodromy(&c->shim, p, c->t0, X,
+                                        X + c->n * (c->nnodes - 1), M, c->aut,
+                                        re, im, mcap, NULL);
+    if (M != Mbuf) free(M);
+    if (rc != WHIRL_OK && c->errmsg[0] == '\0')
+      snprintf(c->errmsg, sizeof c->errmsg,
+               "Floquet multipliers (condensed collocation): %s",
+               whirl_strerror(rc));
+  } else {
+    rc = whirl_floquet_multipliers(&c->shim, p, c->t0, X, T, c->aut,
+                                   c->floquet_rtol, 0.0, re, im, mcap, NULL,
+                                   NULL, c->errmsg, sizeof c->errmsg);
+  }
   if (rc != WHIRL_OK && c->rhs_fail != 0) return c->rhs_fail;
   return rc;
 }
@@ -454,6 +471,10 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
     snprintf(why, sizeof why, "an autonomous model needs n >= 2 for a cycle");
   else if (!isfinite(o->t0) || !(o->floquet_rtol >= 0.0))
     snprintf(why, sizeof why, "t0 must be finite and floquet_rtol >= 0");
+  else if (o->floquet != WHIRL_COLLOC_FLOQUET_CONDENSED &&
+           o->floquet != WHIRL_COLLOC_FLOQUET_VARIATIONAL)
+    snprintf(why, sizeof why, "floquet must be CONDENSED or VARIATIONAL (got %d)",
+             o->floquet);
   if (why[0]) return fail_null(errbuf, errlen, why);
 
   const size_t n = prob->n, m = o->ncol, N = o->ntst;
@@ -487,6 +508,7 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   c->nu = o->nu ? o->nu : 1;
   c->t0 = o->t0;
   c->floquet_rtol = o->floquet_rtol > 0 ? o->floquet_rtol : 1e-11;
+  c->floquet = o->floquet;
   const size_t np = prob->npar ? prob->npar : 1;
   c->mesh = malloc((N + 1) * sizeof *c->mesh);
   c->old_mesh = malloc((N + 1) * sizeof *c->old_mesh);
@@ -570,6 +592,7 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   s->spectrum = s->nspec ? colloc_spectrum : NULL;
   s->spectrum_kind = WHIRL_SPEC_MULTIPLIERS;
   s->accept = aut ? colloc_accept : NULL;
+  s->bsolver = &colloc_bsolver;
   s->x_names = NULL; /* node-major unknowns have no model names */
   s->p_names = prob->p_names;
   s->data = c;
@@ -578,6 +601,7 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
 
 void whirl_colloc_free(whirl_colloc *c) {
   if (!c) return;
+  colloc_bsolver.free(c->spec_ws);
   free(c->mesh);
   free(c->old_mesh);
   free(c->Jp);
@@ -704,6 +728,7 @@ int whirl_colloc_adapt(whirl_colloc *c, double *X) {
   }
   c->mesh[0] = 0.0;
   c->mesh[N] = 1.0;
+  c->last_ws = NULL; /* factorisations on the old mesh are not reused */
   for (size_t k = 1; k <= N; ++k)
     if (!(c->mesh[k] > c->mesh[k - 1])) {
       /* degenerate interval (cannot happen for positive E): give up */
@@ -809,6 +834,7 @@ int whirl_colloc_pd_switch(const whirl_colloc *c, const double *X,
   int rc;
 
   /* the doubled orbit on c2's nodes */
+  c2->last_ws = NULL; /* c2's mesh changes */
   if (N2 == 2 * N && m2 == m) {
     for (size_t i = 0; i <= N; ++i) {
       c2->mesh[i] = 0.5 * c->mesh[i];

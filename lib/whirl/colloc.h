@@ -17,10 +17,14 @@
  * for subharmonic orbits); there is no phase condition and T is not an
  * unknown.
  *
- * The Jacobian is sparse (compressed-column pattern in the system, solved by
- * UMFPACK on the sparse path); a dense callback is also provided.  The
- * system's spectrum is the Floquet multipliers from the variational
- * equations (whirl/floquet.h) at the orbit's first node, so the core reports
+ * The Jacobian is sparse (compressed-column pattern in the system, usable
+ * by UMFPACK on the sparse path); a dense callback is also provided.  The
+ * system also has a structured solver for the core's bordered Newton matrix
+ * (whirl_system bsolver): condensation of parameters interval by interval
+ * and a block elimination of the mesh points, as AUTO-07p, which the core
+ * uses by default.  The system's spectrum is the Floquet multipliers of the
+ * orbit (from the condensed collocation equations by default, or from the
+ * variational equations, see whirl_colloc_floquet), so the core reports
  * stability and detects PD and TR; LP comes from the core's fold test.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_COLLOC_H
@@ -42,7 +46,24 @@ typedef struct whirl_colloc_options {
   unsigned nu;       /* forced models: period 2π·nu/ω (default 1) */
   double t0;         /* forced models: time of τ = 0 (default 0) */
   double floquet_rtol; /* integrator tolerance for the multipliers (1e-11) */
+  int floquet;       /* route to the multipliers (whirl_colloc_floquet):
+                        WHIRL_COLLOC_FLOQUET_CONDENSED (default) or
+                        WHIRL_COLLOC_FLOQUET_VARIATIONAL */
 } whirl_colloc_options;
+
+/* The Floquet multipliers of the system's spectrum.  CONDENSED: the
+ * eigenvalues of the monodromy matrix of the discretised orbit, the product
+ * of the interval transfer matrices left by the condensation of the
+ * collocation equations (AUTO-07p; Doedel et al. 1991): nearly free, and as
+ * accurate as the orbit (superconvergence at the mesh points).
+ * VARIATIONAL: integration of the variational equations along the
+ * collocation polynomial's start point x(0) at tolerance floquet_rtol
+ * (whirl/floquet.h), an independent check.  For an autonomous orbit both
+ * leave the trivial multiplier out through the linearised Poincaré map. */
+typedef enum whirl_colloc_floquet {
+  WHIRL_COLLOC_FLOQUET_CONDENSED = 0,
+  WHIRL_COLLOC_FLOQUET_VARIATIONAL = 1
+} whirl_colloc_floquet;
 
 WHIRL_API void whirl_colloc_options_default(whirl_colloc_options *o);
 

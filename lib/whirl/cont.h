@@ -81,8 +81,22 @@ typedef struct whirl_cont_options {
   double newton_tol;   /* EPSL/EPSU: |dx|_inf <= tol*(1+|x|_inf), |F| <= tol */
   int newton_maxit;    /* ITNW */
   int newton_fast;     /* iterations at or below which the step may grow */
+  int newton_chord;    /* 0: Newton, a new Jacobian at every iteration;
+                          1: chord (modified) Newton: keep the last
+                          factorisation, that of the last analysed point or
+                          of an earlier iterate, while the corrections
+                          contract by chord_theta or better per iteration;
+                          a new border row alone is refactored cheaply when
+                          the system's structured solver can (reborder) */
+  double chord_theta;  /* contraction above which chord Newton refactors */
   double max_angle;    /* max turn of the tangent per step, radians */
   int tangent_predictor; /* 0: secant predictor (default), 1: tangent */
+  int curved_predictor;  /* 1: start the corrector from the second-order
+                            predictor X + σ t + σ²/2 κ, κ the change of the
+                            unit tangent over the last step per arclength,
+                            σ where it meets the constraint hyperplane (the
+                            hyperplane itself as chosen above); 0: from
+                            X + ds·direction (default) */
   int detect_lp;       /* ILP */
   int detect_bp;       /* ISP (branch points) */
   int detect_hb;       /* ISP (Hopf; needs the system's spectrum); for Floquet
@@ -94,14 +108,19 @@ typedef struct whirl_cont_options {
   int detect_loop;     /* stop when the branch returns to its start */
   double loc_tol;      /* localisation tolerance in arclength */
   whirl_linsol_kind linsol; /* DENSE, or SPARSE when the system has a pattern */
+  int structured;      /* 1: factor the bordered Newton matrix with the
+                          system's own structured solver (whirl_system
+                          bsolver) when it has one; 0: always the LU of
+                          `linsol` (a check, or for comparison) */
   const double *uz;    /* optional parameter values to output as UZ */
   size_t nuz;
 } whirl_cont_options;
 
 /* Defaults: icp 0, ds 1e-2, ds_min 1e-8, ds_max 0.5, nmx 1000, p bounds
  * +-1e30, p_weight 1, newton_tol 1e-10, newton_maxit 12, newton_fast 3,
+ * Newton (newton_chord 0, chord_theta 0.25 when set),
  * max_angle 0.2 rad, secant predictor, all detections on, loop detection on,
- * loc_tol 1e-12, dense solver. */
+ * loc_tol 1e-12, dense solver, the system's structured solver if any. */
 WHIRL_API void whirl_cont_options_default(whirl_cont_options *opt);
 
 typedef struct whirl_cont_stats {

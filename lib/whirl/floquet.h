@@ -30,6 +30,18 @@ WHIRL_API int whirl_floquet_multipliers(const whirl_problem *prob,
                                         size_t *m, double *M, double *trivial,
                                         char *errbuf, size_t errlen);
 
+/* The same multipliers from a monodromy matrix M[n*n] (column-major)
+ * obtained otherwise, e.g. from the condensed collocation equations
+ * (AUTO-07p): x0 is the orbit at t0 and xT its end after one period (equal
+ * to x0 for a closed orbit), used by the Poincaré map when drop_trivial.
+ * *m on entry the capacity; *trivial (may be NULL) as above. */
+WHIRL_API int whirl_floquet_from_monodromy(const whirl_problem *prob,
+                                           const double *p, double t0,
+                                           const double *x0, const double *xT,
+                                           const double *M, int drop_trivial,
+                                           double *re, double *im, size_t *m,
+                                           double *trivial);
+
 /* Unit eigenvector v[n] of M[n*n] for a real eigenvalue mu (the direction of
  * branch switching at a period doubling, mu = -1): the right singular vector
  * of M - mu I with the smallest singular value. */

@@ -16,6 +16,41 @@
 extern "C" {
 #endif
 
+/* Optional structured solver for the core's bordered Newton matrix
+ *
+ *     M = [ F_x(x, p)   dF/dp_k(x, p) ]   order n + 1, k the free parameter,
+ *         [        r^T                ]   r[n + 1] the border row
+ *
+ * (the pseudo-arclength row of the corrector, the predictor direction when
+ * the core computes the tangent and the determinant).  A constructor whose
+ * Jacobian has more structure than a general sparse LU exploits supplies
+ * one, and the core then never assembles M: collocation eliminates the
+ * interior unknowns of every mesh interval by small dense LUs (condensation
+ * of parameters) and the mesh points by a structured elimination (Doedel,
+ * Keller & Kernévez, Int. J. Bif. Chaos 1 (1991) 745; AUTO-07p manual).
+ * The factorisation lives in a workspace the core allocates, so one system
+ * may serve several continuations.  factor evaluates F_x and dF/dp_k at
+ * (x, p) itself.  factor, solve and logdet return WHIRL_OK; factor may also
+ * return > 0 for a recoverable model failure (domain), WHIRL_EBADFUNC for a
+ * non-finite Jacobian, WHIRL_ESINGULAR for an exactly singular M (logdet is
+ * then still usable and reports sign 0, solve is not), or another error. */
+typedef struct whirl_bsolver {
+  void *(*alloc)(void *data); /* data: the system's; NULL on no memory */
+  void (*free)(void *ws);     /* accepts NULL */
+  int (*factor)(void *ws, const double *x, const double *p, size_t k,
+                const double *r);
+  /* M z = b in place, b[(n+1)*nrhs] column-major, last factorisation */
+  int (*solve)(void *ws, double *b, size_t nrhs);
+  /* log|det M| and its sign (-1, 0, +1), the determinant of M itself (row
+   * and column order as above), so its sign changes at branch points
+   * exactly as that of a general LU of M */
+  int (*logdet)(void *ws, double *logabs, int *sign);
+  /* Optional: factor M again with a new border row r but F_x and dF/dp_k
+   * of the last factor (for chord Newton: much cheaper than factor when
+   * the structure allows).  Same returns as factor. */
+  int (*reborder)(void *ws, const double *r);
+} whirl_bsolver;
+
 typedef struct whirl_system {
   const char *name;
   size_t n;     /* number of equations and of unknowns */
@@ -76,6 +111,10 @@ typedef struct whirl_system {
   size_t ntest;
   int (*test)(const double *x, const double *p, double *tau, int *types,
               void *data);
+
+  /* Optional structured solver for the bordered Newton matrix (above);
+   * static, borrowed.  Used by the core unless its options say otherwise. */
+  const whirl_bsolver *bsolver;
 
   const char *const *x_names;  /* optional, n names */
   const char *const *p_names;  /* optional, npar names */

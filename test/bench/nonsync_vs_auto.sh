@@ -15,8 +15,9 @@
 #   any other argument goes to whirl, e.g. --method hbm --harmonics 40,
 #   --ntst 100 (a "--" ends the options of this script; all after it go to
 #   whirl)
-# Run from the build directory (WHIRL, default ./drivers/whirl); needs the
-# auto-07p Debian package.  Prints whirl's median, its LP line(s), AUTO's
+# Run from the build directory (WHIRL, default ./drivers/whirl; the
+# executable behind libtool's wrapper is timed); needs the auto-07p Debian
+# package.  Prints whirl's median, its LP line(s), AUTO's
 # report and the ratios AUTO / whirl.
 # SPDX-License-Identifier: BSD-3-Clause
 set -eu
@@ -40,13 +41,24 @@ while [ $i -lt "$nargs" ]; do
         N=$1; shift; i=$((i + 1)) ;;
     --tight|--iid0|--omp1) AUTO_OPTS="$AUTO_OPTS $a" ;;
     --) while [ $i -lt "$nargs" ]; do set -- "$@" "$1"; shift; i=$((i + 1)); done ;;
-    -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
     --out|--out=*|--no-plot|--quiet) die "$a is set by this script" ;;
     *) set -- "$@" "$a" ;;
   esac
 done
 case "$N" in ''|*[!0-9]*|0) die "-n must be a positive integer" ;; esac
 [ -x "$WHIRL" ] || die "$WHIRL not found (run from the build directory or set WHIRL)"
+# In an uninstalled build ./drivers/whirl is libtool's wrapper script, which
+# costs ~20 ms of shell per run: time the executable behind it (with the
+# freshly built library first on the search path), as AUTO's "exe only"
+# figure times nonsync.exe itself.
+WHIRL_LIBPATH=
+wdir=$(dirname "$WHIRL")
+if [ -x "$wdir/.libs/$(basename "$WHIRL")" ] && [ -d "$wdir/../lib/.libs" ] &&
+   grep -q 'libtool' "$WHIRL" 2>/dev/null; then
+  WHIRL_LIBPATH=$(cd "$wdir/../lib/.libs" && pwd)
+  WHIRL="$wdir/.libs/$(basename "$WHIRL")"
+fi
 
 # whirl: N whole-process runs, median wall time
 : > "$tmp/t"
@@ -54,7 +66,8 @@ i=0
 while [ $i -lt "$N" ]; do
   rm -rf "$tmp/out"
   s=$(date +%s%N)
-  "$WHIRL" sfd nonsync --no-plot --quiet --out "$tmp/out" "$@" \
+  LD_LIBRARY_PATH="$WHIRL_LIBPATH${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
+    "$WHIRL" sfd nonsync --no-plot --quiet --out "$tmp/out" "$@" \
     > "$tmp/whirl.out" 2> "$tmp/whirl.err" \
     || die "whirl sfd nonsync $* failed: $(cat "$tmp/whirl.err")"
   e=$(date +%s%N)
@@ -64,7 +77,7 @@ done
 wmed=$(sort -g "$tmp/t" | awk '{ a[NR] = $1 } END {
   if (NR % 2) m = a[(NR + 1) / 2]; else m = (a[NR / 2] + a[NR / 2 + 1]) / 2
   printf "%.4f", m }')
-echo "whirl sfd nonsync --no-plot --quiet $*"
+echo "whirl sfd nonsync --no-plot --quiet $*  ($WHIRL)"
 echo "whirl whole process, wall time, median of $N: $wmed s (all: $(tr '\n' ' ' < "$tmp/t"))"
 awk '$1 == "LP"' "$tmp/whirl.out" | sed 's/^/whirl: /'
 awk '$1 == "LP" { n++ } END { exit n == 0 }' "$tmp/whirl.out" \

@@ -18,7 +18,10 @@
 #include <whirl/branch.h>
 #include <whirl/colloc.h>
 #include <whirl/cont.h>
+#include <whirl/linsol.h>
 #include <whirl/ode.h>
+#include <whirl/sfd.h>
+#include <whirl/sfd_dynamics.h>
 
 #include "../tap.h"
 
@@ -303,6 +306,142 @@ static void test_jacobians(void) {
 }
 
 /* ------------------------------------------------------------------------
+ * 1b. The structured bordered solver (condensation of parameters) against
+ * UMFPACK on the assembled bordered matrix [F_x F_p; r^T]: solutions to
+ * 1e-12 relative, log|det| and its sign (the branch-point test) equal. */
+
+static void bsolver_vs_umfpack(const char *name, whirl_colloc *c,
+                               const double *X, const double *p, size_t k) {
+  const whirl_system *s = whirl_colloc_system(c);
+  const size_t nx = s->n, N1 = nx + 1;
+  ok(s->bsolver && s->bsolver->factor && s->bsolver->solve &&
+         s->bsolver->logdet && s->bsolver->reborder,
+     "%s: the system has a structured solver", name);
+  if (!s->bsolver) return;
+  double *Jx = malloc(s->nnz * sizeof *Jx), *fk = malloc(nx * sizeof *fk);
+  double *wk = malloc((nx + 16) * sizeof *wk), *r = malloc(N1 * sizeof *r);
+  double *b1 = malloc(2 * N1 * sizeof *b1), *b2 = malloc(2 * N1 * sizeof *b2);
+  void *ws = s->bsolver->alloc(s->data);
+  whirl_bordered *bd = whirl_bordered_alloc(WHIRL_LINSOL_SPARSE, nx, 1, s->Jp, s->Ji);
+  ok(ws && bd && Jx && fk && wk && r && b1 && b2, "%s: allocations", name);
+  if (!ws || !bd || !Jx || !fk || !wk || !r || !b1 || !b2) goto done;
+  int rc = s->Fx_sparse(X, p, Jx, s->data);
+  if (rc == 0) rc = whirl_system_param(s, X, p, k, fk, wk);
+  ok(rc == 0, "%s: Jacobian and F_p", name);
+  for (int pass = 0; pass < 3; ++pass) {
+    /* a border near the parameter direction (well conditioned away from
+     * folds, as the core's tangent rows), then its negative (the
+     * determinant changes sign), then a new border by reborder */
+    for (size_t q = 0; q < N1; ++q)
+      r[q] = pass == 1 ? -r[q]
+                       : 0.3 * tap_urand(-1.0, 1.0) / sqrt((double)N1) +
+                             (q == nx ? 1.0 : 0.0);
+    for (size_t q = 0; q < 2 * N1; ++q) b1[q] = b2[q] = tap_urand(-1.0, 1.0);
+    int r1 = pass == 2 ? s->bsolver->reborder(ws, r)
+                       : s->bsolver->factor(ws, X, p, k, r);
+    int r2 = whirl_bordered_factor(bd, Jx, fk, r, r + nx);
+    if (r1 == 0) r1 = s->bsolver->solve(ws, b1, 2);
+    if (r2 == 0) r2 = whirl_bordered_solve(bd, b2, 2, 0);
+    double la1 = NAN, la2 = NAN, e = 0.0, sc = 0.0;
+    int s1 = 9, s2 = 8;
+    s->bsolver->logdet(ws, &la1, &s1);
+    whirl_bordered_logdet(bd, &la2, &s2);
+    for (size_t q = 0; q < 2 * N1; ++q) {
+      e = fmax(e, fabs(b1[q] - b2[q]));
+      sc = fmax(sc, fabs(b2[q]));
+    }
+    printf("# %s (%s): |z - z_umfpack| / |z| = %.2e, log|det| %.12g vs %.12g, "
+           "sign %d vs %d\n",
+           name, pass == 0 ? "factor" : pass == 1 ? "-r" : "reborder", e / sc,
+           la1, la2, s1, s2);
+    ok(r1 == 0 && r2 == 0 && e <= 1e-12 * sc,
+       "%s (%s): structured solve = UMFPACK solve to %.1e relative (<= 1e-12)",
+       name, pass == 0 ? "factor" : pass == 1 ? "border -r" : "reborder",
+       e / sc);
+    ok(s1 == s2 && s1 != 0 && fabs(la1 - la2) <= 1e-10 * fmax(1.0, fabs(la2)),
+       "%s (%s): determinant sign %d = %d, log|det| %.10g = %.10g", name,
+       pass == 0 ? "factor" : pass == 1 ? "border -r" : "reborder", s1, s2,
+       la1, la2);
+  }
+done:
+  if (ws) s->bsolver->free(ws);
+  whirl_bordered_free(bd);
+  free(Jx), free(fk), free(wk), free(r), free(b1), free(b2);
+}
+
+static void test_structured(void) {
+  char err[256];
+  whirl_colloc_options o;
+  /* Lorenz, T unknown, phase condition: a closed curve, not a solution */
+  whirl_colloc_options_default(&o);
+  o.ntst = 12;
+  o.ncol = 4;
+  whirl_colloc *c = whirl_colloc_alloc(&lorenz, &o, err, sizeof err);
+  if (c) {
+    const size_t nx = whirl_colloc_size(c);
+    double smp[3 * 32], *X = malloc(nx * sizeof *X);
+    for (size_t k = 0; k < 32; ++k) {
+      const double th = 2.0 * PI * (double)k / 32.0;
+      smp[3 * k] = 10.0 * cos(th) + 3.0;
+      smp[3 * k + 1] = 15.0 * sin(th);
+      smp[3 * k + 2] = 200.0 + 30.0 * cos(2.0 * th);
+    }
+    whirl_colloc_from_samples(c, smp, 32, 0.7, X);
+    for (size_t q = 0; q + 1 < nx; ++q) X[q] += tap_urand(-1.0, 1.0);
+    const double p[3] = {10.0, 250.0, 8.0 / 3.0};
+    bsolver_vs_umfpack("Lorenz NTST 12 NCOL 4, k = rho", c, X, p, 1);
+    free(X);
+  }
+  whirl_colloc_free(c);
+  /* forced Duffing: no phase row, the forcing frequency as parameter (its
+   * column by differences of the whole residual) and another one */
+  whirl_colloc_options_default(&o);
+  o.ntst = 7;
+  o.ncol = 3;
+  o.t0 = 0.4;
+  o.forcing_param = 0;
+  c = whirl_colloc_alloc(&duffing, &o, err, sizeof err);
+  if (c) {
+    const size_t nx = whirl_colloc_size(c);
+    double smp[2 * 16], *X = malloc(nx * sizeof *X);
+    for (size_t k = 0; k < 16; ++k) {
+      smp[2 * k] = cos(2.0 * PI * (double)k / 16.0);
+      smp[2 * k + 1] = -sin(2.0 * PI * (double)k / 16.0);
+    }
+    whirl_colloc_from_samples(c, smp, 16, 2.0 * PI / 1.3, X);
+    for (size_t q = 0; q < nx; ++q) X[q] += tap_urand(-0.3, 0.3);
+    const double p[3] = {1.3, 0.1, 0.7};
+    bsolver_vs_umfpack("forced Duffing NTST 7 NCOL 3, k = omega", c, X, p, 0);
+    bsolver_vs_umfpack("forced Duffing NTST 7 NCOL 3, k = 1", c, X, p, 1);
+    free(X);
+  }
+  whirl_colloc_free(c);
+  /* the SFD rotating frame (nonsynchronous cycle), NTST 20 NCOL 6 */
+  whirl_colloc_options_default(&o);
+  o.ntst = 20;
+  o.ncol = 6;
+  c = whirl_colloc_alloc(whirl_sfd_rotating(), &o, err, sizeof err);
+  if (c) {
+    const size_t nx = whirl_colloc_size(c);
+    double smp[4 * 64], *X = malloc(nx * sizeof *X), p[WHIRL_SFD_NPAR];
+    whirl_sfd_default_params(p);
+    p[WHIRL_SFD_OMEGA] = 8.7;
+    for (size_t k = 0; k < 64; ++k) {
+      const double th = 2.0 * PI * (double)k / 64.0;
+      smp[4 * k] = 0.5 * cos(th) + 0.2 * cos(2.0 * th);
+      smp[4 * k + 1] = 0.5 * sin(th);
+      smp[4 * k + 2] = -0.5 * sin(th);
+      smp[4 * k + 3] = 0.5 * cos(th) + 0.1;
+    }
+    whirl_colloc_from_samples(c, smp, 64, 1.03, X);
+    bsolver_vs_umfpack("SFD rotating frame NTST 20 NCOL 6, k = Omega", c, X, p,
+                       WHIRL_SFD_OMEGA);
+    free(X);
+  }
+  whirl_colloc_free(c);
+}
+
+/* ------------------------------------------------------------------------
  * 2. λ-ω cycle from a wrong circle */
 
 static void test_lambda_omega(void) {
@@ -496,7 +635,8 @@ typedef struct lw_run {
   int stop;
 } lw_run;
 
-static int run_lw(whirl_linsol_kind kind, double a_min, lw_run *out) {
+static int run_lw(whirl_linsol_kind kind, int structured, int chord,
+                  double a_min, lw_run *out) {
   const size_t ntst = 20, ncol = 4, m = 64;
   char err[256];
   memset(out, 0, sizeof *out);
@@ -520,6 +660,8 @@ static int run_lw(whirl_linsol_kind kind, double a_min, lw_run *out) {
   co.p_max = 2.0;
   co.nmx = 200;
   co.linsol = kind;
+  co.structured = structured;
+  co.newton_chord = chord;
   whirl_cont *ct = whirl_cont_alloc(s, &co, err, sizeof err);
   const double p0[1] = {1.0};
   int rc = ct ? whirl_cont_start(ct, X, p0, -1) : -1;
@@ -549,39 +691,60 @@ static int run_lw(whirl_linsol_kind kind, double a_min, lw_run *out) {
   return rc;
 }
 
+static double lw_diff(const lw_run *a, const lw_run *b) {
+  if (a->npts != b->npts || a->npts == 0) return INFINITY;
+  const size_t nx = 2 * (20 * 4 + 1) + 1;
+  double diff = 0.0;
+  for (size_t k = 0; k < a->npts; ++k) {
+    diff = fmax(diff, fabs(a->p[k] - b->p[k]));
+    for (size_t q = 0; q < nx; ++q)
+      diff = fmax(diff, fabs(a->X[nx * k + q] - b->X[nx * k + q]));
+  }
+  return diff;
+}
+
 static void test_continuation(int quick) {
   const double a_min = quick ? 0.6 : 0.05;
-  lw_run d, sp;
-  int rcd = run_lw(WHIRL_LINSOL_DENSE, a_min, &d);
-  int rcs = run_lw(WHIRL_LINSOL_SPARSE, a_min, &sp);
-  printf("# λ-ω branch a: 1 -> %g: %zu points (dense), %zu (sparse); max "
-         "radius error %.2e, max period error %.2e\n",
-         a_min, d.npts, sp.npts, fmax(d.rmax, sp.rmax), fmax(d.Tmax, sp.Tmax));
+  /* the general LUs (dense, UMFPACK), the structured solver of the system
+   * (the default), and the structured solver with chord Newton */
+  lw_run d, sp, st, ch;
+  int rcd = run_lw(WHIRL_LINSOL_DENSE, 0, 0, a_min, &d);
+  int rcs = run_lw(WHIRL_LINSOL_SPARSE, 0, 0, a_min, &sp);
+  int rct = run_lw(WHIRL_LINSOL_SPARSE, 1, 0, a_min, &st);
+  int rcc = run_lw(WHIRL_LINSOL_SPARSE, 1, 1, a_min, &ch);
+  printf("# λ-ω branch a: 1 -> %g: %zu points (dense), %zu (sparse), %zu "
+         "(structured), %zu (chord); max radius error %.2e, max period error "
+         "%.2e\n",
+         a_min, d.npts, sp.npts, st.npts, ch.npts, fmax(d.rmax, sp.rmax),
+         fmax(d.Tmax, sp.Tmax));
   ok(rcd == WHIRL_DONE && d.stop == WHIRL_STOP_PMIN && d.npts > 3,
      "dense: branch ends at a = %g (%zu points)", a_min, d.npts);
   ok(rcs == WHIRL_DONE && sp.stop == WHIRL_STOP_PMIN && sp.npts > 3,
      "sparse: branch ends at a = %g (%zu points)", a_min, sp.npts);
+  ok(rct == WHIRL_DONE && st.stop == WHIRL_STOP_PMIN && st.npts > 3,
+     "structured: branch ends at a = %g (%zu points)", a_min, st.npts);
+  ok(rcc == WHIRL_DONE && ch.stop == WHIRL_STOP_PMIN && ch.npts > 3,
+     "structured, chord Newton: branch ends at a = %g (%zu points)", a_min,
+     ch.npts);
   if (d.npts)
     is_abs(d.p[d.npts - 1], a_min, 1e-10, "last point at a = %g", a_min);
-  ok(d.rmax < 1e-8 && sp.rmax < 1e-8,
-     "radius sqrt(a) on every point to 1e-8 (%.2e, %.2e)", d.rmax, sp.rmax);
-  ok(d.Tmax < 1e-8 && sp.Tmax < 1e-8, "period 2π on every point (%.2e, %.2e)",
-     d.Tmax, sp.Tmax);
-  double diff = INFINITY;
-  if (d.npts == sp.npts && d.npts > 0) {
-    const size_t nx = 2 * (20 * 4 + 1) + 1;
-    diff = 0.0;
-    for (size_t k = 0; k < d.npts; ++k) {
-      diff = fmax(diff, fabs(d.p[k] - sp.p[k]));
-      for (size_t q = 0; q < nx; ++q)
-        diff = fmax(diff, fabs(d.X[nx * k + q] - sp.X[nx * k + q]));
-    }
-  }
+  ok(d.rmax < 1e-8 && sp.rmax < 1e-8 && st.rmax < 1e-8 && ch.rmax < 1e-8,
+     "radius sqrt(a) on every point to 1e-8 (%.2e, %.2e, %.2e, %.2e)", d.rmax,
+     sp.rmax, st.rmax, ch.rmax);
+  ok(d.Tmax < 1e-8 && sp.Tmax < 1e-8 && st.Tmax < 1e-8 && ch.Tmax < 1e-8,
+     "period 2π on every point (%.2e, %.2e, %.2e, %.2e)", d.Tmax, sp.Tmax,
+     st.Tmax, ch.Tmax);
+  const double diff = lw_diff(&d, &sp), dst = lw_diff(&d, &st);
   ok(diff < 1e-9,
      "dense and sparse solvers give the same branch (max "
      "difference %.1e)",
      diff);
-  free(d.p), free(d.X), free(sp.p), free(sp.X);
+  ok(dst < 1e-9,
+     "dense and structured solvers give the same branch (max difference "
+     "%.1e)",
+     dst);
+  free(d.p), free(d.X), free(sp.p), free(sp.X), free(st.p), free(st.X);
+  free(ch.p), free(ch.X);
 }
 
 /* ------------------------------------------------------------------------
@@ -602,6 +765,119 @@ static int store_sample(size_t k, double t, const double *x, void *data) {
   sample_buf *b = data;
   memcpy(b->x + b->n * k, x, b->n * sizeof *x);
   return 0;
+}
+
+/* The condensed multipliers of a collocation solution X (re, im from the
+ * core's point, m of them) against the variational equations: a second
+ * object with WHIRL_COLLOC_FLOQUET_VARIATIONAL on the same (uniform) mesh,
+ * to 1e-8. */
+static void floquet_routes(const char *name, const whirl_problem *prob,
+                           const whirl_colloc_options *o, const double *X,
+                           const double *p, const double *re,
+                           const double *im, size_t m) {
+  whirl_colloc_options ov = *o;
+  ov.floquet = WHIRL_COLLOC_FLOQUET_VARIATIONAL;
+  ov.floquet_rtol = 1e-12;
+  char err[256];
+  whirl_colloc *cv = whirl_colloc_alloc(prob, &ov, err, sizeof err);
+  const whirl_system *sv = whirl_colloc_system(cv);
+  double vre[8], vim[8];
+  size_t mv = 8;
+  int rc = cv ? sv->spectrum(X, p, NULL, vre, vim, &mv, sv->data) : -1;
+  double d = rc == 0 && mv == m ? 0.0 : INFINITY;
+  for (size_t k = 0; k < m && k < mv; ++k) {
+    printf("# %s: multiplier %zu condensed %.12f%+.12fi, variational "
+           "%.12f%+.12fi\n",
+           name, k, re[k], im[k], vre[k], vim[k]);
+    /* conjugate pairs may come in either order */
+    d = fmax(d, fmin(hypot(re[k] - vre[k], im[k] - vim[k]),
+                     hypot(re[k] - vre[k], im[k] + vim[k])));
+  }
+  ok(d < 1e-8,
+     "%s: condensed and variational multipliers agree to %.1e (< 1e-8)", name,
+     d);
+  whirl_colloc_free(cv);
+}
+
+/* The nonsynchronous cycle of the SFD rotor (rotating frame, Table 1) at
+ * Omega = 8.7 from a time integration from rest, corrected by collocation
+ * (NTST 40, NCOL 6, mesh adapted): condensed against variational
+ * multipliers. */
+static double du_event(double t, const double *x, void *data) {
+  (void)t, (void)data;
+  return x[2];
+}
+
+static void test_sfd_floquet(void) {
+  double p[WHIRL_SFD_NPAR];
+  whirl_sfd_default_params(p);
+  p[WHIRL_SFD_OMEGA] = 8.7;
+  const whirl_problem *rot = whirl_sfd_rotating();
+  whirl_ode *ode = whirl_ode_alloc(rot, p);
+  const double x0[4] = {0, 0, 0, 0};
+  whirl_ode_set_tolerances(ode, 1e-10, 1e-13);
+  int rc = whirl_ode_reset(ode, 0.0, x0);
+  const double Tf = 2.0 * PI / 8.7;
+  if (rc == 0) rc = whirl_ode_evolve(ode, 200.0 * Tf);
+  double tev[2], xev[2][4], xe[4], te;
+  size_t nev = 0;
+  while (rc == 0 && nev < 2 && whirl_ode_t(ode) < 220.0 * Tf) {
+    rc = whirl_ode_step(ode, 220.0 * Tf);
+    if (rc == 0 && whirl_ode_find_event(ode, du_event, NULL, -1, 0.0, &te, xe) == 1) {
+      tev[nev] = te;
+      memcpy(xev[nev], xe, sizeof xe);
+      ++nev;
+    }
+  }
+  ok(rc == 0 && nev == 2, "SFD 8.7: two returns to u' = 0 after settling");
+  if (nev < 2) {
+    whirl_ode_free(ode);
+    return;
+  }
+  const double Tr = tev[1] - tev[0];
+  const size_t m = 256;
+  double *smp = malloc(4 * m * sizeof *smp);
+  sample_buf sb = {smp, 4};
+  whirl_ode_set_tolerances(ode, 1e-12, 1e-15);
+  whirl_ode_reset(ode, 0.0, xev[1]);
+  rc = whirl_ode_sample(ode, Tr / (double)m, m - 1, store_sample, &sb);
+  whirl_ode_free(ode);
+  char err[256];
+  whirl_colloc_options o;
+  whirl_colloc_options_default(&o);
+  o.ntst = 40;
+  o.ncol = 6;
+  whirl_colloc *c = whirl_colloc_alloc(rot, &o, err, sizeof err);
+  const whirl_system *s = whirl_colloc_system(c);
+  const size_t nx = whirl_colloc_size(c);
+  double *X = malloc(nx * sizeof *X);
+  whirl_colloc_from_samples(c, smp, m, Tr, X);
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = WHIRL_SFD_OMEGA;
+  whirl_cont *ct = whirl_cont_alloc(s, &co, err, sizeof err);
+  rc = correct(ct, X, p);
+  if (rc == WHIRL_OK) {
+    /* on a mesh adapted to the orbit (the variational route only uses
+     * x(0) and T, not the mesh) */
+    memcpy(X, whirl_cont_point(ct)->x, nx * sizeof *X);
+    rc = whirl_colloc_adapt(c, X);
+    if (rc == WHIRL_OK) rc = correct(ct, X, p);
+  }
+  ok(rc == WHIRL_OK, "SFD 8.7: collocation Newton converges, mesh adapted: %s",
+     whirl_cont_errmsg(ct));
+  if (rc == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(ct);
+    printf("# SFD 8.7: period %.12f (integration %.12f)\n", pt->x[nx - 1], Tr);
+    ok(pt->nspec == 3 && pt->stable == 1,
+       "SFD 8.7: three nontrivial multipliers, stable");
+    floquet_routes("SFD rotating frame, Omega = 8.7, NTST 40 NCOL 6", rot, &o,
+                   pt->x, pt->p, pt->spec_re, pt->spec_im, pt->nspec);
+  }
+  whirl_cont_free(ct);
+  free(X);
+  free(smp);
+  whirl_colloc_free(c);
 }
 
 static void test_lorenz(void) {
@@ -683,6 +959,8 @@ static void test_lorenz(void) {
            pt->spec_im[0], pt->spec_re[1], pt->spec_im[1]);
     ok(pt->nspec == 2 && mx < 1.0,
        "stable: both nontrivial |mu| < 1 (max %.3g)", mx);
+    floquet_routes("Lorenz rho = 250, NTST 50 NCOL 4", &lorenz, &o, X, p,
+                   pt->spec_re, pt->spec_im, pt->nspec);
     /* integrating from node 0 over T returns to node 0 */
     double xT[3], M[9];
     whirl_ode_monodromy(&lorenz, p, 0.0, X, Tc, 1e-12, 1e-12, xT, M, NULL, NULL,
@@ -791,11 +1069,13 @@ static void test_errors(void) {
 int main(int argc, char **argv) {
   const int quick = argc > 1 && strcmp(argv[1], "quick") == 0;
   test_jacobians();
+  test_structured();
   test_lambda_omega();
   test_forced();
   test_forced_nu2();
   test_continuation(quick);
   if (!quick) test_lorenz();
+  if (!quick) test_sfd_floquet();
   test_errors();
   return done_testing();
 }

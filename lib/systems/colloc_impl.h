@@ -1,0 +1,82 @@
+/* lib/systems/colloc_impl.h — private to lib/systems: the collocation object
+ * (colloc.c) shared with its structured linear solver (colloc_cond.c:
+ * condensation of parameters, the bordered Newton matrix and the monodromy
+ * matrix from the condensed blocks).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_COLLOC_IMPL_H
+#define WHIRL_COLLOC_IMPL_H
+
+#include <stddef.h>
+
+#include <whirl/colloc.h>
+#include <whirl/system.h>
+
+#define COLLOC_PI 3.14159265358979323846
+#define COLLOC_MAXCOL 7
+
+struct whirl_colloc {
+  const whirl_problem *prob;
+  whirl_problem shim; /* prob seen through colloc_shim_*, for the multipliers */
+  whirl_system sys;
+  size_t n, ntst, ncol;
+  size_t nnodes; /* ntst*ncol + 1 */
+  size_t nx;     /* unknowns = equations */
+  size_t nnz;
+  int aut;  /* 1: period unknown, phase condition; 0: forced */
+  int fpar; /* forcing parameter (forced) or -1 */
+  unsigned nu;
+  double t0, floquet_rtol;
+
+  double *mesh; /* ntst + 1 */
+  /* Gauss points and weights on [0, 1]; Lagrange basis and its derivative
+   * at them, L[c*(ncol+1) + k] = l_k(σ_c), D likewise l_k'(σ_c); dm[k] the
+   * weights of the NCOL-th derivative in σ (NCOL^NCOL (−1)^{m−k} C(m, k)). */
+  double gs[COLLOC_MAXCOL], gw[COLLOC_MAXCOL];
+  double L[COLLOC_MAXCOL * (COLLOC_MAXCOL + 1)];
+  double D[COLLOC_MAXCOL * (COLLOC_MAXCOL + 1)];
+  double dm[COLLOC_MAXCOL + 1];
+
+  int *Jp, *Ji;  /* compressed-column pattern, nx + 1 and nnz */
+  double *Jx;    /* nnz, values for the dense callback */
+  double *ref;   /* nnodes*n, node values of the phase reference */
+  double *phase; /* nnodes*n, the phase row ∫ <x, x_ref'> as weights */
+  double phase0; /* <phase, ref>: 0 for a periodic reference, up to rounding */
+  int have_ref;
+
+  /* scratch (n, n, n, n, n*n, n*npar, 2n, npar, nx, nx) */
+  double *xc, *dx, *f, *f2, *J, *Jpar, *work, *pw, *r1, *r2;
+  double *old_mesh, *old_X; /* ntst + 1, nnodes*n: mesh adaptation */
+  double *ref_new;          /* nnodes*n */
+
+  int floquet;   /* whirl_colloc_floquet: multipliers route */
+  void *spec_ws; /* colloc_bsolver workspace for the condensed multipliers */
+  void *last_ws; /* the workspace factored last (any owner), or NULL */
+
+  int rhs_fail; /* last recoverable model failure seen by the shim */
+  char errmsg[256];
+};
+
+/* colloc.c: the period of X at p (the unknown T, or 2π nu/ω). */
+double colloc_period_of(const whirl_colloc *c, const double *X,
+                        const double *p);
+
+/* colloc.c: the model's f_x at Gauss point g of interval i into c->J, and
+ * (autonomous orbits, dT not NULL) dF/dT of the n collocation rows there,
+ * dT[n] = −h (f + T τ ∂f/∂t); x and dx/dσ are left in c->xc, c->dx.
+ * Returns the model's status. */
+int colloc_gauss_jac(whirl_colloc *c, const double *X, const double *p,
+                     double T, size_t i, size_t g, double *dT);
+
+/* colloc_cond.c: the structured bordered solver of the system. */
+extern const whirl_bsolver colloc_bsolver;
+
+/* colloc_cond.c: the monodromy matrix M[n*n] (column-major) of the
+ * collocation equations linearised at (X, p): the transfer x(1) = M x(0)
+ * of the condensed, block-bidiagonal collocation system at fixed T and p
+ * (AUTO-07p's Floquet multipliers).  Taken from the last factorisation of
+ * the bordered matrix when that was at (X, p), else condensed anew in
+ * c->spec_ws. */
+int colloc_cond_monodromy(whirl_colloc *c, const double *X, const double *p,
+                          double *M);
+
+#endif
