@@ -177,17 +177,12 @@ static int refine_merge(const ctx *c, whirl_fold *f, double e, double W,
   whirl_fold *g = whirl_fold_alloc(c->base, &fo, NULL, 0);
   if (!g) return WHIRL_ENOMEM;
   double Zg[5], pz[WHIRL_SFD_NPAR], tau[WHIRL_FOLD_NTEST];
+  int ty[WHIRL_FOLD_NTEST];
   whirl_fold_params(f, Z, p, pz);
   whirl_fold_init(g, Z, pz, Zg);
-  int rc = whirl_fold_vectors(g, Zg, pz, NULL, NULL, NULL, tau);
+  const whirl_system *gs = whirl_fold_system(g);
   *type = WHIRL_PT_MG;
-  if (rc == 0) {
-    /* the classification is in the test's type; recompute it directly */
-    const whirl_system *gs = whirl_fold_system(g);
-    double t2[WHIRL_FOLD_NTEST];
-    int ty[WHIRL_FOLD_NTEST];
-    if (gs->test(Zg, pz, t2, ty, gs->data) == 0) *type = ty[WHIRL_FOLD_TEST_MG];
-  }
+  if (gs->test(Zg, pz, tau, ty, gs->data) == 0) *type = ty[WHIRL_FOLD_TEST_MG];
   whirl_fold_free(g);
   return 0;
 }
@@ -375,7 +370,7 @@ static int omega_w_folds(const ctx *c, double W, double *xs, double *ds,
     }
   }
   whirl_cont_free(cc);
-  return rc < 0 && rc != WHIRL_DONE ? 0 : 0; /* a contact end is normal */
+  return 0; /* the branch ends at contact or delta = 1: both are normal */
 }
 
 static int on_curve(const whirl_sfd_curve *c, double lambda, double delta) {

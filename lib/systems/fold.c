@@ -29,7 +29,7 @@ struct whirl_fold {
   double *phi;       /* n + 1: F_x phi = -F_q (bordered) */
   double *pf, *pq;   /* npar: full parameter vectors */
   double *xs;        /* n: shifted state */
-  double *fq, *fqp, *fqm; /* n: F_q at the point and shifted */
+  double *fq, *fqp;  /* n: F_q at the point and at a shifted point */
   double *work;      /* 2n: scratch of whirl_system_jacobian / _param */
   double *Zs, *tmp;  /* N: scratch for finite differences of the cond row */
   double *er, *ei;   /* n: eigenvalues */
@@ -426,7 +426,6 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   f->xs = calloc(n, sizeof *f->xs);
   f->fq = calloc(n, sizeof *f->fq);
   f->fqp = calloc(n, sizeof *f->fqp);
-  f->fqm = calloc(n, sizeof *f->fqm);
   f->work = calloc(2 * n + 2, sizeof *f->work);
   f->Zs = calloc(f->N, sizeof *f->Zs);
   f->tmp = calloc(f->N, sizeof *f->tmp);
@@ -434,7 +433,7 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   f->ei = calloc(n, sizeof *f->ei);
   if (!f->b || !f->c || !f->ls || (n >= 3 && !f->eig) || !f->M || !f->A ||
       !f->Ap || !f->Am || !f->v || !f->w || !f->phi || !f->pf || !f->pq ||
-      !f->xs || !f->fq || !f->fqp || !f->fqm || !f->work || !f->Zs ||
+      !f->xs || !f->fq || !f->fqp || !f->work || !f->Zs ||
       !f->tmp || !f->er || !f->ei)
     goto nomem;
   f->b[0] = f->c[0] = 1.0;
@@ -467,7 +466,7 @@ void whirl_fold_free(whirl_fold *f) {
   whirl_eig_free(f->eig);
   free(f->b); free(f->c); free(f->M); free(f->A); free(f->Ap); free(f->Am);
   free(f->v); free(f->w); free(f->phi); free(f->pf); free(f->pq);
-  free(f->xs); free(f->fq); free(f->fqp); free(f->fqm); free(f->work);
+  free(f->xs); free(f->fq); free(f->fqp); free(f->work);
   free(f->Zs); free(f->tmp); free(f->er); free(f->ei);
   free(f);
 }

@@ -619,7 +619,8 @@ static void test_hbm_fold(void) {
   const double dstar = mp.len ? mp.delta[0] : NAN;
   whirl_sfd_curve_free(&mp);
   double e = 0.91, W = 7.09, mg8[3] = {0}, mg12[3] = {0};
-  ok(whirl_sfd_circ_fold(&e, &W, p[1], p[2], p[3]) == 0 && fabs(W - 7.0881196) < 1e-6,
+  const int frc = whirl_sfd_circ_fold(&e, &W, p[1], p[2], p[3]);
+  ok(frc == 0 && fabs(W - 7.0881196) < 1e-6,
      "HBM fold: the isola fold of Table 1 from eq. 15 (Omega %.10f)", W);
   for (int pass = 0; pass < 2; ++pass) {
     const size_t N = pass ? 12 : 8;
@@ -641,7 +642,6 @@ static void test_hbm_fold(void) {
       int rc = fold_event(f, Z, pp, WHIRL_SFD_DELTA, +1, 0.0, 0.5, WHIRL_PT_MG, out, NULL);
       ok(rc == 0, "HBM fold, F_E = 0: MG on the fold curve in (Omega, delta)");
       is_abs(out[0], dstar, 1e-9, "HBM fold, F_E = 0: merge delta = eq. 15 (%.10f)", out[0]);
-      memcpy(Z, Z, 0);
       whirl_fold_init(f, X, pp, Z);
     }
     /* carry the fold to F_E = -0.1 (fold curve in (Omega, F_E)) */
