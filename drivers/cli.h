@@ -76,6 +76,7 @@ double cli_now(void); /* monotonic seconds */
 /* 1 when stderr is a terminal (progress lines are shown only then). */
 int cli_is_tty(void);
 
+int cmd_run(int argc, char **argv);
 int cmd_sfd_response(int argc, char **argv);
 int cmd_sfd_simulate(int argc, char **argv);
 int cmd_sfd_nonsync(int argc, char **argv);

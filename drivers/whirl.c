@@ -17,6 +17,9 @@ static void usage(FILE *f) {
           "rotors on squeeze-film dampers.\n"
           "\n"
           "commands:\n"
+          "  run FILE       run an AUTO-style run file on any model (built-in or\n"
+          "                 a plug-in .so): equilibria, periodic orbits, loci,\n"
+          "                 branch switching, basins (doc/run-files.md)\n"
           "  sfd response   every branch of synchronous circular orbits of the\n"
           "                 SFD rotor against speed, with stability, Floquet\n"
           "                 multipliers, folds (LP) and pictures\n"
@@ -62,6 +65,7 @@ int main(int argc, char **argv) {
     printf("whirl %s\n", whirl_version());
     return 0;
   }
+  if (!strcmp(argv[1], "run")) return cmd_run(argc - 1, argv + 1);
   if (!strcmp(argv[1], "sfd")) {
     if (argc < 3) {
       sfd_usage(stderr);

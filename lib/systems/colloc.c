@@ -23,6 +23,9 @@
 #include <whirl/ode.h>
 
 #include "colloc_impl.h"
+#include <whirl/linsol.h>
+
+#define WHIRL_TWO_PI 6.28318530717958647692
 
 
 void whirl_colloc_options_default(whirl_colloc_options *o) {
@@ -907,6 +910,115 @@ int whirl_colloc_pd_switch(const whirl_colloc *c, const double *X,
   rc = WHIRL_OK;
 done:
   whirl_ode_free(ode);
+  free(buf);
+  return rc;
+}
+
+/* ------------------------------------------------------------ restart */
+
+int whirl_colloc_set_mesh(whirl_colloc *c, const double *tau) {
+  if (!c || !tau) return WHIRL_EINVAL;
+  const size_t N = c->ntst;
+  if (tau[0] != 0.0 || tau[N] != 1.0) return WHIRL_EINVAL;
+  for (size_t k = 1; k <= N; ++k)
+    if (!(tau[k] > tau[k - 1]) || !isfinite(tau[k])) return WHIRL_EINVAL;
+  memcpy(c->mesh, tau, (N + 1) * sizeof *tau);
+  c->last_ws = NULL;
+  return WHIRL_OK;
+}
+
+int whirl_colloc_set_reference(whirl_colloc *c, const double *X) {
+  if (!c || !X) return WHIRL_EINVAL;
+  if (c->aut) set_reference(c, X);
+  return WHIRL_OK;
+}
+
+/* ------------------------------------------------------------ Hopf start */
+
+/* At a Hopf point x0 of the model (J = f_x(x0) has eigenvalues ±iω), the
+ * periodic orbits are x0 + s Re(φ e^{2πiτ}) + O(s²) with period 2π/ω + O(s)
+ * (Hopf's theorem; AUTO-07p starts IPS = 2 from an HB label the same way).
+ * φ = a + ib solves (J − iωI)φ = 0, i.e. the real 2n system
+ *     [ J   ωI ] [a]   [0]
+ *     [−ωI  J  ] [b] = [0],
+ * whose null vectors come from the SVD.  X is the constant orbit x0 with
+ * T = 2π/ω, D the unit direction a cos 2πτ − b sin 2πτ at the nodes (zero
+ * period and parameter entries), and the phase reference is x0 + D, so the
+ * phase condition fixes the rotation of φ.  ω: the eigenvalue pair of J
+ * closest to the imaginary axis. */
+int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
+                            const double *p, double *X, double *D,
+                            double *omega) {
+  if (!c || !x0 || !p || !X || !D) return WHIRL_EINVAL;
+  if (!c->aut) return WHIRL_EINVAL;
+  const size_t n = c->n, nn = 2 * n;
+  const whirl_problem *pr = c->prob;
+  double *buf = malloc((n * n + 2 * n + nn * nn + 2 * nn + 2) * sizeof *buf);
+  whirl_eig *e = whirl_eig_alloc(n);
+  int rc = WHIRL_OK;
+  if (!buf || !e) {
+    rc = WHIRL_ENOMEM;
+    goto done;
+  }
+  double *J = buf, *re = J + n * n, *im = re + n, *A = im + n, *V = A + nn * nn,
+         *sv = V + nn * 2;
+  rc = pr->jac_x ? pr->jac_x(c->t0, x0, p, J, pr->data)
+                 : whirl_fd_jac_x(pr, c->t0, x0, p, J, A);
+  if (rc != 0) {
+    rc = rc < 0 ? WHIRL_EUSER : WHIRL_EDOMAIN;
+    goto done;
+  }
+  rc = whirl_eig_compute(e, J, re, im);
+  if (rc != WHIRL_OK) goto done;
+  double w = 0.0, best = HUGE_VAL;
+  for (size_t k = 0; k < n; ++k)
+    if (im[k] > 0 && fabs(re[k]) < best) best = fabs(re[k]), w = im[k];
+  if (!(w > 0)) {
+    rc = WHIRL_EINVAL; /* no complex pair: not a Hopf point */
+    goto done;
+  }
+  memset(A, 0, nn * nn * sizeof *A);
+  for (size_t j = 0; j < n; ++j)
+    for (size_t i = 0; i < n; ++i) {
+      A[i + nn * j] = J[i + n * j];
+      A[(n + i) + nn * (n + j)] = J[i + n * j];
+    }
+  for (size_t i = 0; i < n; ++i) {
+    A[i + nn * (n + i)] = w;
+    A[(n + i) + nn * i] = -w;
+  }
+  rc = whirl_null_vectors(nn, nn, A, 1, V, sv);
+  if (rc != WHIRL_OK) goto done;
+  const double *a = V, *b = V + n;
+  double nrm = 0.0;
+  for (size_t j = 0; j < c->nnodes; ++j) {
+    size_t i = j / c->ncol, k = j % c->ncol;
+    double tau = j == c->nnodes - 1
+                     ? 1.0
+                     : c->mesh[i] + (c->mesh[i + 1] - c->mesh[i]) *
+                                        (double)k / (double)c->ncol;
+    double cs = cos(WHIRL_TWO_PI * tau), sn = sin(WHIRL_TWO_PI * tau);
+    for (size_t r = 0; r < n; ++r) {
+      X[n * j + r] = x0[r];
+      D[n * j + r] = a[r] * cs - b[r] * sn;
+      nrm += D[n * j + r] * D[n * j + r];
+    }
+  }
+  nrm = sqrt(nrm);
+  if (!(nrm > 0) || !isfinite(nrm)) {
+    rc = WHIRL_EBADFUNC;
+    goto done;
+  }
+  const size_t nd = n * c->nnodes;
+  for (size_t q = 0; q < nd; ++q) D[q] /= nrm;
+  X[c->nx - 1] = WHIRL_TWO_PI / w;
+  D[c->nx - 1] = 0.0;
+  D[c->nx] = 0.0;
+  for (size_t q = 0; q < nd; ++q) c->ref_new[q] = X[q] + D[q];
+  set_reference(c, c->ref_new);
+  if (omega) *omega = w;
+done:
+  whirl_eig_free(e);
   free(buf);
   return rc;
 }

@@ -132,6 +132,25 @@ WHIRL_API int whirl_colloc_pd_switch(const whirl_colloc *c, const double *X,
                                      const double *p, whirl_colloc *c2,
                                      double *X2, double *D2);
 
+/* Restart from a stored orbit: set the mesh tau[NTST + 1] (0 = tau_0 <
+ * ... < tau_NTST = 1) before whirl_colloc_set_reference with the stored X.
+ * WHIRL_EINVAL for a mesh that is not increasing from 0 to 1. */
+WHIRL_API int whirl_colloc_set_mesh(whirl_colloc *c, const double *tau);
+/* Phase reference of an autonomous orbit (no-op for forced models). */
+WHIRL_API int whirl_colloc_set_reference(whirl_colloc *c, const double *X);
+
+/* Start of the periodic branch at a Hopf point x0[n] of the model at p
+ * (AUTO's IPS = 2 from an HB label): X[size] the constant orbit x0 with
+ * period 2π/ω, D[size + 1] the unit direction x0 + Re(φ e^{2πiτ}) of the
+ * bifurcating orbits (φ the eigenvector of ±iω; period and parameter entries
+ * 0), the phase reference set to X + D, *omega (may be NULL) = ω, the pair
+ * of f_x(x0) closest to the imaginary axis.  Start the continuation with
+ * whirl_cont_start_direction(cont, X, p, D).  Autonomous models only;
+ * WHIRL_EINVAL when f_x has no complex pair. */
+WHIRL_API int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
+                                      const double *p, double *X, double *D,
+                                      double *omega);
+
 /* Current mesh: tau[NTST + 1]. */
 WHIRL_API const double *whirl_colloc_mesh(const whirl_colloc *c);
 

@@ -21,4 +21,6 @@
 #include <whirl/fold.h>
 #include <whirl/hopf.h>
 #include <whirl/sfd_region.h>
+#include <whirl/model.h>
+#include <whirl/runfile.h>
 #endif

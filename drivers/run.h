@@ -1,0 +1,89 @@
+/* drivers/run.h — `whirl run FILE`: shared state of the run-file driver.
+ * cmd_run.c orchestrates; run_model.c loads models and resolves names;
+ * run_solution.c reads and writes labelled solutions; run_table.c writes
+ * the branch table and the picture; run_basins.c computes basins.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_DRIVER_RUN_H
+#define WHIRL_DRIVER_RUN_H
+
+#include <stdio.h>
+
+#include <whirl/whirl.h>
+
+/* What the unknowns of a branch's system are (a solution's KIND). */
+typedef enum run_kind {
+  RUN_EQ = 0,     /* equilibrium: x = state */
+  RUN_COLLOC = 1, /* periodic orbit by collocation: x = node values, T */
+  RUN_HBM = 2     /* periodic orbit by harmonic balance */
+} run_kind;
+
+/* A labelled solution as stored in OUT/solutions (full precision). */
+typedef struct run_solution {
+  int label, br, pt;
+  char ty[3];
+  run_kind kind;
+  int icp;          /* the branch's continuation parameter (0-based) */
+  int icp2;         /* loci: the second free parameter, else -1 */
+  size_t npar, nx;  /* model parameters; unknowns of the base system */
+  double *par;      /* npar */
+  double *x;        /* nx: base-system unknowns */
+  double *tan;      /* nx + 1 or NULL: unit tangent (x, p_icp) */
+  int ntst, ncol;   /* colloc */
+  double *mesh;     /* colloc: ntst + 1 */
+  int nhb;          /* hbm: harmonics */
+  int stable;
+} run_solution;
+
+typedef struct run_ctx {
+  whirl_runfile *rf;
+  const whirl_run_settings *s;
+  const whirl_model *model;
+  void *dl;               /* dlopen handle of a plug-in, or NULL */
+  whirl_problem prob;     /* the model's problem (JAC = 0: no Jacobians) */
+  size_t n, npar;
+  char **pnames, **xnames; /* resolved names (model's or PAR(k)/U(k)) */
+  double *par, *u;         /* start parameters and state */
+  int icp[4];              /* resolved, 0-based; -1 for the period (PAR 11) */
+  size_t nicp;
+  char out[4096], tmp[4200], rundir[4096];
+  FILE *log, *table, *sols;
+  int label, branch;
+  int quiet;
+  int plot_x, plot_y;      /* 1-based columns of the picture's axes */
+  char plot_x_name[80], plot_y_name[80];
+  int seen_stab[3];         /* rows with STAB -1, 0, 1 */
+  int seen_special;
+  size_t ncols;
+} run_ctx;
+
+/* "FILE:LINE: message" to stderr (exit 2 errors about the run file). */
+void run_fail(run_ctx *R, whirl_run_key k, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+/* run_model.c */
+int run_load_model(run_ctx *R);  /* 0 or -1 (message printed) */
+int run_resolve(run_ctx *R);     /* names -> indices, PAR, U; 0 or -1 */
+int run_par_index(run_ctx *R, const whirl_run_ref *r); /* -1 unknown */
+int run_state_index(run_ctx *R, const whirl_run_ref *r);
+void run_unload_model(run_ctx *R);
+
+/* run_solution.c */
+void run_solution_free(run_solution *s);
+int run_solution_write(FILE *f, const run_solution *s);
+/* Find the solution of label (or the count-th of type ty if ty[0]) in
+ * DIR/solutions; 0, or -1 with a message in msg. */
+int run_solution_find(const char *dir, const char *model, size_t npar,
+                      int label, const char *ty, run_solution *out,
+                      char *msg, size_t len);
+
+/* run_table.c */
+int run_table_header(run_ctx *R, run_kind kind, int icp, int q);
+int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br, size_t pt,
+                  const char *ty, int lab, const double *xb, const double *p,
+                  int stable, double *l2out);
+int run_write_plot(run_ctx *R, char *msg, size_t len);
+
+/* run_basins.c */
+int run_basins(run_ctx *R);
+
+#endif

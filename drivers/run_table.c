@@ -1,0 +1,183 @@
+/* drivers/run_table.c — `whirl run` output: the branch table branches.tsv
+ * (AUTO's b-file as TSV: BR PT TY LAB, then all parameters, PERIOD for
+ * periodic orbits, L2-NORM, the state (MAX of each component for periodic
+ * orbits, as AUTO prints), and STAB: 1 stable, 0 unstable, -1 unknown) and
+ * the picture diagram.png drawn from it by gnuplot.
+ *
+ * L2-NORM follows AUTO: |x| for an equilibrium, sqrt(∫_0^1 |x(τ)|² dτ) for a
+ * periodic orbit (Gauss–Legendre on every mesh interval for collocation,
+ * 5 points: exact for the degree-2·NCOL integrand up to NCOL = 4, and to
+ * the accuracy of the orbit beyond; a uniform trapezoidal rule, exact for
+ * trigonometric polynomials, for harmonic balance).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "cli.h"
+#include "run.h"
+
+int run_table_header(run_ctx *R, run_kind kind, int icp, int q) {
+  FILE *f = R->table;
+  size_t col = 4;
+  fprintf(f, "# BR\tPT\tTY\tLAB");
+  int ycol = 0;
+  for (size_t k = 0; k < R->npar; k++) {
+    fprintf(f, "\t%s", R->pnames[k]);
+    col++;
+    if ((int)k == icp) R->plot_x = (int)col;
+    if ((int)k == q) ycol = (int)col;
+    if (R->s->plot[0] && !strcmp(R->s->plot, R->pnames[k])) ycol = (int)col;
+  }
+  if (kind != RUN_EQ) {
+    fprintf(f, "\tPERIOD");
+    col++;
+    if (R->s->plot[0] && !strcasecmp(R->s->plot, "PERIOD")) ycol = (int)col;
+  }
+  fprintf(f, "\tL2-NORM");
+  col++;
+  if (!ycol) ycol = (int)col;
+  for (size_t i = 0; i < R->n; i++) {
+    fprintf(f, kind == RUN_EQ ? "\t%s" : "\tMAX %s", R->xnames[i]);
+    col++;
+    char mx[96];
+    snprintf(mx, sizeof mx, "MAX %s", R->xnames[i]);
+    if (R->s->plot[0] && (!strcmp(R->s->plot, R->xnames[i]) || !strcmp(R->s->plot, mx)))
+      ycol = (int)col;
+  }
+  fprintf(f, "\tSTAB\n");
+  col++;
+  R->ncols = col;
+  R->plot_y = ycol;
+  /* axis names: the header's columns (1-based, "# BR" is column 1) */
+  snprintf(R->plot_x_name, sizeof R->plot_x_name, "%s", R->pnames[R->plot_x - 5]);
+  if (ycol >= 5 && ycol < 5 + (int)R->npar)
+    snprintf(R->plot_y_name, sizeof R->plot_y_name, "%s", R->pnames[ycol - 5]);
+  else if (kind != RUN_EQ && ycol == 5 + (int)R->npar)
+    snprintf(R->plot_y_name, sizeof R->plot_y_name, "PERIOD");
+  else if (ycol == 5 + (int)R->npar + (kind != RUN_EQ))
+    snprintf(R->plot_y_name, sizeof R->plot_y_name, "L2-NORM");
+  else
+    snprintf(R->plot_y_name, sizeof R->plot_y_name, "%s%s", kind == RUN_EQ ? "" : "MAX ",
+             R->xnames[ycol - 6 - (int)R->npar - (kind != RUN_EQ)]);
+  return ferror(f) ? -1 : 0;
+}
+
+static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0.0,
+                             0.5384693101056831, 0.9061798459386640};
+static const double gw[5] = {0.2369268850561891, 0.4786286704993665,
+                             0.5688888888888889, 0.4786286704993665,
+                             0.2369268850561891};
+
+int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,
+                  size_t pt, const char *ty, int lab, const double *xb,
+                  const double *p, int stable, double *l2out) {
+  FILE *f = R->table;
+  const size_t n = R->n;
+  double *v = calloc(2 * n, sizeof *v), *mx = v + n;
+  if (!v) return -1;
+  double l2 = 0.0, period = 0.0;
+  if (kind == RUN_EQ) {
+    for (size_t i = 0; i < n; i++) l2 += xb[i] * xb[i], mx[i] = xb[i];
+  } else if (kind == RUN_COLLOC) {
+    const whirl_colloc *c = obj;
+    const double *mesh = whirl_colloc_mesh(c);
+    size_t nx = whirl_colloc_size(c), nn = (nx - (R->prob.autonomous ? 1 : 0)) / n;
+    size_t ntst = 0;
+    while (mesh[ntst] < 1.0) ntst++;
+    period = whirl_colloc_period(c, xb, p);
+    for (size_t i = 0; i < n; i++) mx[i] = -HUGE_VAL;
+    for (size_t j = 0; j < nn; j++)
+      for (size_t i = 0; i < n; i++) mx[i] = fmax(mx[i], xb[n * j + i]);
+    for (size_t k = 0; k < ntst; k++) {
+      const double a = mesh[k], h = mesh[k + 1] - mesh[k];
+      for (int g = 0; g < 5; g++) {
+        whirl_colloc_eval(c, xb, a + 0.5 * h * (1.0 + gx[g]), v);
+        double s = 0.0;
+        for (size_t i = 0; i < n; i++) s += v[i] * v[i];
+        l2 += 0.5 * h * gw[g] * s;
+      }
+    }
+  } else {
+    const whirl_hbm *h = obj;
+    period = whirl_hbm_period(h, xb, p);
+    const size_t m = 8 * (2 * (size_t)R->s->nhb + 1);
+    for (size_t i = 0; i < n; i++) mx[i] = -HUGE_VAL;
+    for (size_t k = 0; k < m; k++) {
+      whirl_hbm_eval(h, xb, 2.0 * M_PI * (double)k / (double)m, v);
+      double s = 0.0;
+      for (size_t i = 0; i < n; i++) s += v[i] * v[i], mx[i] = fmax(mx[i], v[i]);
+      l2 += s / (double)m;
+    }
+  }
+  l2 = sqrt(l2);
+  fprintf(f, "%d\t%zu\t%s\t%d", br, pt, ty, lab);
+  for (size_t k = 0; k < R->npar; k++) fprintf(f, "\t%.12g", p[k]);
+  if (kind != RUN_EQ) fprintf(f, "\t%.12g", period);
+  fprintf(f, "\t%.12g", l2);
+  for (size_t i = 0; i < n; i++) fprintf(f, "\t%.12g", mx[i]);
+  fprintf(f, "\t%d\n", stable);
+  if (stable >= -1 && stable <= 1) R->seen_stab[stable + 1] = 1;
+  if (strcmp(ty, "RG") && strcmp(ty, "EP")) R->seen_special = 1;
+  free(v);
+  *l2out = l2;
+  return ferror(f) ? -1 : 0;
+}
+
+/* gnuplot: stable parts solid, unstable dashed, unknown thin; labelled
+ * special points marked and named. */
+int run_write_plot(run_ctx *R, char *msg, size_t len) {
+  if (R->s->ips == WHIRL_IPS_BASINS) return cli_plot(R->tmp, "basins", msg, len);
+  char p[8192];
+  snprintf(p, sizeof p, "%s/diagram.gp", R->tmp);
+  FILE *f = fopen(p, "w");
+  if (!f) {
+    snprintf(msg, len, "cannot write %s", p);
+    return -1;
+  }
+  int x = R->plot_x, y = R->plot_y;
+  fprintf(f,
+          "set terminal pngcairo size 900,650 enhanced font 'Sans,11'\n"
+          "set output '.diagram.png.tmp'\n"
+          "set datafile separator '\\t'\n"
+          "set datafile missing 'NaN'\n"
+          "set key top left\n"
+          "set grid lc rgb '#dddddd'\n"
+          "set title 'whirl run: %s (model %s)' noenhanced\n"
+          "set xlabel '%s' noenhanced\n"
+          "set ylabel '%s' noenhanced\n"
+          "S = %zu\n"
+          "plot ",
+          whirl_runfile_name(R->rf), R->prob.name, R->plot_x_name, R->plot_y_name,
+          R->ncols);
+  /* only the series that have points (gnuplot warns about empty ones) */
+  int first = 1;
+  for (int k = 2; k >= 0; k--) {
+    if (!R->seen_stab[k]) continue;
+    fprintf(f, "%s'branches.tsv' using %d:", first ? "" : ", \\\n     ", x);
+    if (k == 2)
+      fprintf(f, "(column(S) == 1 ? column(%d) : NaN) with lines lw 2 lc rgb "
+              "'#1f4e9c' title 'stable'", y);
+    else if (k == 1)
+      fprintf(f, "(column(S) == 0 ? column(%d) : NaN) with lines lw 2 dt 2 lc "
+              "rgb '#c0392b' title 'unstable'", y);
+    else
+      fprintf(f, "(column(S) < 0 ? column(%d) : NaN) with lines lw 1 lc rgb "
+              "'#777777' title 'stability unknown'", y);
+    first = 0;
+  }
+  if (R->seen_special)
+    fprintf(f, ", \\\n     'branches.tsv' using %d:(strcol(3) ne 'RG' && "
+            "strcol(3) ne 'EP' ? column(%d) : NaN) with points pt 7 ps 1 lc "
+            "rgb 'black' notitle, \\\n     'branches.tsv' using %d:(strcol(3) "
+            "ne 'RG' && strcol(3) ne 'EP' ? column(%d) : NaN):3 with labels "
+            "offset 1,0.7 notitle", x, y, x, y);
+  fputc('\n', f);
+  if (fclose(f) != 0) {
+    snprintf(msg, len, "cannot write %s", p);
+    return -1;
+  }
+  return cli_plot(R->tmp, "diagram", msg, len);
+}

@@ -1,0 +1,1083 @@
+/* lib/run/runfile.c — parser of run files (whirl/runfile.h): `key = value`
+ * lines with AUTO-07p's constant names (AUTO-07p manual, ch. 10 "Description
+ * of AUTO-constants") and readable aliases, typed and range-checked per key,
+ * every error with the file and line.  Pure text processing: no model, no
+ * allocation after whirl_runfile_alloc, no output; safe on any input (the
+ * fuzz target test/fuzz/fuzz_runfile.c feeds it arbitrary bytes).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <ctype.h>
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include <whirl/runfile.h>
+
+/* ---- the key table ----------------------------------------------------- */
+
+typedef enum {
+  K_STRING, K_INT, K_REAL, K_IPS, K_METHOD, K_REFLIST, K_VALDICT, K_UZDICT,
+  K_IRS, K_RANGES, K_GRID, K_INTLIST, K_IGNORED
+} key_kind;
+
+typedef struct key_def {
+  whirl_run_key key;
+  const char *name;  /* AUTO's name (or whirl's, upper case) */
+  const char *alias; /* readable long name */
+  const char *alias2;
+  key_kind kind;
+} key_def;
+
+static const key_def keys[] = {
+    {WHIRL_RK_MODEL, "MODEL", "e", NULL, K_STRING},
+    {WHIRL_RK_NDIM, "NDIM", "dimension", NULL, K_INT},
+    {WHIRL_RK_IPS, "IPS", "problem", NULL, K_IPS},
+    {WHIRL_RK_METHOD, "METHOD", "periodic_method", NULL, K_METHOD},
+    {WHIRL_RK_ICP, "ICP", "continuation_parameters", NULL, K_REFLIST},
+    {WHIRL_RK_PAR, "PAR", "parameters", NULL, K_VALDICT},
+    {WHIRL_RK_U, "U", "start", NULL, K_VALDICT},
+    {WHIRL_RK_ILP, "ILP", "detect_folds", NULL, K_INT},
+    {WHIRL_RK_ISP, "ISP", "detect_bifurcations", NULL, K_INT},
+    {WHIRL_RK_ISW, "ISW", "switch", NULL, K_INT},
+    {WHIRL_RK_IRS, "IRS", "restart_label", NULL, K_IRS},
+    {WHIRL_RK_S, "S", "restart_from", NULL, K_STRING},
+    {WHIRL_RK_NTST, "NTST", "mesh_intervals", NULL, K_INT},
+    {WHIRL_RK_NCOL, "NCOL", "collocation_points", NULL, K_INT},
+    {WHIRL_RK_IAD, "IAD", "adapt_mesh", NULL, K_INT},
+    {WHIRL_RK_NHB, "NHB", "harmonics", NULL, K_INT},
+    {WHIRL_RK_OVERSAMPLING, "OVERSAMPLING", "hbm_oversampling", NULL, K_INT},
+    {WHIRL_RK_DS, "DS", "step", NULL, K_REAL},
+    {WHIRL_RK_DSMIN, "DSMIN", "step_min", NULL, K_REAL},
+    {WHIRL_RK_DSMAX, "DSMAX", "step_max", NULL, K_REAL},
+    {WHIRL_RK_NMX, "NMX", "max_steps", NULL, K_INT},
+    {WHIRL_RK_NPR, "NPR", "label_every", NULL, K_INT},
+    {WHIRL_RK_RL0, "RL0", "par_min", NULL, K_REAL},
+    {WHIRL_RK_RL1, "RL1", "par_max", NULL, K_REAL},
+    {WHIRL_RK_A0, "A0", "norm_min", NULL, K_REAL},
+    {WHIRL_RK_A1, "A1", "norm_max", NULL, K_REAL},
+    {WHIRL_RK_EPSL, "EPSL", "tol_par", NULL, K_REAL},
+    {WHIRL_RK_EPSU, "EPSU", "tol_state", NULL, K_REAL},
+    {WHIRL_RK_EPSS, "EPSS", "tol_special", NULL, K_REAL},
+    {WHIRL_RK_ITNW, "ITNW", "newton_max_iterations", NULL, K_INT},
+    {WHIRL_RK_JAC, "JAC", "analytic_jacobian", NULL, K_INT},
+    {WHIRL_RK_UZR, "UZR", "user_points", NULL, K_UZDICT},
+    {WHIRL_RK_UZSTOP, "UZSTOP", "stop_at", NULL, K_UZDICT},
+    {WHIRL_RK_OUT, "OUT", "output", "sv", K_STRING},
+    {WHIRL_RK_PLOT, "PLOT", "plot_y", NULL, K_STRING},
+    {WHIRL_RK_BASIN_AXES, "BASIN_AXES", "basin_axes", NULL, K_RANGES},
+    {WHIRL_RK_BASIN_GRID, "BASIN_GRID", "basin_grid", NULL, K_GRID},
+    {WHIRL_RK_BASIN_PERIODS, "BASIN_PERIODS", "basin_periods", NULL, K_INT},
+    {WHIRL_RK_BASIN_ATTRACTORS, "BASIN_ATTRACTORS", "attractors", NULL,
+     K_INTLIST},
+    {WHIRL_RK_BASIN_TOL, "BASIN_TOL", "basin_tol", NULL, K_REAL},
+};
+#define NKEYS (sizeof keys / sizeof keys[0])
+
+/* AUTO constants that whirl accepts for compatibility and ignores (each
+ * noted in the run's log): they control output, AUTO's own iteration
+ * details or boundary-value problems with none of them set. */
+static const char *const ignored_keys[] = {
+    "ITMX", "NWTN", "IID", "IPLT", "NBC", "NINT", "MXBF", "IADS", "THL",
+    "THU", "NTHL", "NTHU", "NUZR", "NPAR", "SP", "STOP", "UNAMES",
+    "PARNAMES", "NUNSTAB", "NSTAB", "IIS", "IBR", "LAB", "TY", "DAT", "EFILE",
+    "SFILE", "NPRM", "DATFILE"};
+#define NIGNORED (sizeof ignored_keys / sizeof ignored_keys[0])
+
+/* ---- the object --------------------------------------------------------- */
+
+#define MAXITEMS 256
+#define ITEMLEN 160
+
+typedef struct item {
+  char text[ITEMLEN];
+  int quoted;
+  int group; /* dictionary entry (0-based), -1 outside dictionaries */
+  char key[ITEMLEN];
+} item;
+
+typedef enum { V_SCALAR, V_LIST, V_DICT } vkind;
+
+typedef struct pvalue {
+  vkind kind;
+  size_t n, ngroups;
+  item it[MAXITEMS];
+} pvalue;
+
+struct whirl_runfile {
+  char name[WHIRL_RUN_MAXPATH];
+  whirl_run_settings s;
+  int line[WHIRL_RK_COUNT];           /* > 0 file line, -1 command line */
+  char cmd[WHIRL_RK_COUNT][96];       /* the override text, truncated */
+  int nlines;
+  int parsed;
+  char ignored[256];
+  char err[1536];
+  pvalue v;                           /* scratch */
+  char raw[WHIRL_RUN_MAXPATH + 64];   /* scratch: a string value */
+};
+
+static void set_defaults(whirl_run_settings *s) {
+  memset(s, 0, sizeof *s);
+  s->ips = WHIRL_IPS_EQUILIBRIA;
+  s->method = WHIRL_METHOD_COLLOC;
+  s->ilp = 1;
+  s->isp = 2;
+  s->isw = 1;
+  s->ntst = 20;
+  s->ncol = 4;
+  s->iad = 3;
+  s->nhb = 8;
+  s->oversampling = 4;
+  s->ds = 0.01;
+  s->dsmin = 1e-5;
+  s->dsmax = 0.1;
+  s->nmx = 200;
+  s->npr = 0;
+  s->rl0 = -1e30;
+  s->rl1 = 1e30;
+  s->a0 = 0.0;
+  s->a1 = 1e30;
+  s->epsl = 1e-7;
+  s->epsu = 1e-7;
+  s->epss = 1e-5;
+  s->itnw = 8;
+  s->jac = 1;
+  s->grid[0] = s->grid[1] = 41;
+  s->basin_periods = 500;
+  s->basin_tol = 1e-3;
+}
+
+whirl_runfile *whirl_runfile_alloc(void) {
+  whirl_runfile *rf = calloc(1, sizeof *rf);
+  if (!rf) return NULL;
+  set_defaults(&rf->s);
+  return rf;
+}
+
+void whirl_runfile_free(whirl_runfile *rf) { free(rf); }
+
+const whirl_run_settings *whirl_runfile_settings(const whirl_runfile *rf) {
+  return &rf->s;
+}
+const char *whirl_runfile_errmsg(const whirl_runfile *rf) { return rf->err; }
+const char *whirl_runfile_name(const whirl_runfile *rf) { return rf->name; }
+const char *whirl_runfile_ignored(const whirl_runfile *rf) {
+  return rf->ignored;
+}
+int whirl_runfile_given(const whirl_runfile *rf, whirl_run_key k) {
+  return k >= 0 && k < WHIRL_RK_COUNT && rf->line[k] != 0;
+}
+
+const char *whirl_run_key_name(whirl_run_key k) {
+  for (size_t i = 0; i < NKEYS; i++)
+    if (keys[i].key == k) return keys[i].name;
+  return "?";
+}
+
+const char *whirl_runfile_where(const whirl_runfile *rf, whirl_run_key k,
+                                char *buf, size_t len) {
+  if (k < 0 || k >= WHIRL_RK_COUNT || rf->line[k] == 0)
+    snprintf(buf, len, "%s", rf->name);
+  else if (rf->line[k] < 0)
+    snprintf(buf, len, "command line (%s)", rf->cmd[k]);
+  else
+    snprintf(buf, len, "%s:%d", rf->name, rf->line[k]);
+  return buf;
+}
+
+/* ---- messages ----------------------------------------------------------- */
+
+/* where: "FILE:LINE" or "command line (...)"; the message follows. */
+static int fail(whirl_runfile *rf, const char *where, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static int fail(whirl_runfile *rf, const char *where, const char *fmt, ...) {
+  char msg[1024];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(msg, sizeof msg, fmt, ap);
+  va_end(ap);
+  snprintf(rf->err, sizeof rf->err, "%s: %s", where, msg);
+  return WHIRL_EINVAL;
+}
+
+/* A short printable rendering of untrusted text for messages: control and
+ * non-ASCII bytes become '?', long text is cut with "...". */
+static const char *show(const char *s, size_t n, char *buf, size_t len) {
+  size_t j = 0;
+  for (size_t i = 0; i < n && s[i] && j + 4 < len; i++) {
+    unsigned char c = (unsigned char)s[i];
+    buf[j++] = (c >= 32 && c < 127) ? (char)c : '?';
+    if (j >= 48 && i + 1 < n && s[i + 1]) {
+      memcpy(buf + j, "...", 3);
+      j += 3;
+      break;
+    }
+  }
+  buf[j] = '\0';
+  return buf;
+}
+
+/* ---- lexing a value ----------------------------------------------------- */
+
+typedef enum { T_WORD, T_LBRACK, T_RBRACK, T_LBRACE, T_RBRACE, T_COLON,
+               T_COMMA, T_END } tok_kind;
+
+typedef struct lexer {
+  const char *p, *end;
+} lexer;
+
+static int is_delim(char c) {
+  return c == ' ' || c == '\t' || c == ',' || c == '[' || c == ']' ||
+         c == '{' || c == '}' || c == ':' || c == '\'' || c == '"';
+}
+
+/* Next token; a word is copied into w[ITEMLEN] with *quoted set.  Returns
+ * the kind, or -1 with msg set on an unterminated quote or a long word. */
+static int lex(lexer *L, char *w, int *quoted, const char **msg) {
+  while (L->p < L->end && (*L->p == ' ' || *L->p == '\t')) L->p++;
+  if (L->p >= L->end) return T_END;
+  char c = *L->p;
+  switch (c) {
+    case '[': L->p++; return T_LBRACK;
+    case ']': L->p++; return T_RBRACK;
+    case '{': L->p++; return T_LBRACE;
+    case '}': L->p++; return T_RBRACE;
+    case ':': L->p++; return T_COLON;
+    case ',': L->p++; return T_COMMA;
+    default: break;
+  }
+  size_t n = 0;
+  *quoted = 0;
+  if (c == '\'' || c == '"') {
+    const char *q = L->p + 1;
+    while (q < L->end && *q != c) q++;
+    if (q >= L->end) {
+      *msg = "unterminated quoted string";
+      return -1;
+    }
+    n = (size_t)(q - (L->p + 1));
+    if (n >= ITEMLEN) {
+      *msg = "quoted string too long";
+      return -1;
+    }
+    memcpy(w, L->p + 1, n);
+    L->p = q + 1;
+    *quoted = 1;
+  } else {
+    const char *q = L->p;
+    while (q < L->end && !is_delim(*q)) q++;
+    n = (size_t)(q - L->p);
+    if (n >= ITEMLEN) {
+      *msg = "value too long";
+      return -1;
+    }
+    memcpy(w, L->p, n);
+    L->p = q;
+  }
+  w[n] = '\0';
+  return T_WORD;
+}
+
+static int push(pvalue *v, const char *w, int quoted, int group,
+                const char *key, const char **msg) {
+  if (v->n >= MAXITEMS) {
+    *msg = "too many items (at most 256)";
+    return -1;
+  }
+  item *it = &v->it[v->n++];
+  snprintf(it->text, sizeof it->text, "%s", w);
+  it->quoted = quoted;
+  it->group = group;
+  snprintf(it->key, sizeof it->key, "%s", key ? key : "");
+  return 0;
+}
+
+/* Items of a bracketed list after '[' up to ']' (commas or blanks between
+ * items), or of a bare list up to the end (closing = T_END). */
+static int parse_items(lexer *L, pvalue *v, int closing, int group,
+                       const char *key, const char **msg) {
+  char w[ITEMLEN];
+  int quoted = 0, need_item = 0;
+  for (;;) {
+    int t = lex(L, w, &quoted, msg);
+    if (t < 0) return -1;
+    if (t == closing) {
+      if (need_item) {
+        *msg = "a value is missing after ','";
+        return -1;
+      }
+      return 0;
+    }
+    if (t == T_WORD) {
+      if (push(v, w, quoted, group, key, msg)) return -1;
+      need_item = 0;
+    } else if (t == T_COMMA) {
+      if (need_item || v->n == 0) {
+        *msg = "',' without a value before it";
+        return -1;
+      }
+      need_item = 1;
+    } else if (t == T_END) {
+      *msg = "']' missing";
+      return -1;
+    } else {
+      *msg = closing == T_RBRACK ? "unexpected character in a list"
+                                 : "unexpected bracket or ':' (a list is "
+                                   "written [a, b], a dictionary {k: v})";
+      return -1;
+    }
+  }
+}
+
+static int parse_value(const char *s, size_t n, pvalue *v, const char **msg) {
+  lexer L = {s, s + n};
+  char w[ITEMLEN];
+  int quoted = 0;
+  v->n = v->ngroups = 0;
+  const char *save = L.p;
+  int t = lex(&L, w, &quoted, msg);
+  if (t < 0) return -1;
+  if (t == T_END) {
+    *msg = "no value after '='";
+    return -1;
+  }
+  if (t == T_LBRACE) {
+    v->kind = V_DICT;
+    for (;;) {
+      t = lex(&L, w, &quoted, msg);
+      if (t < 0) return -1;
+      if (t == T_RBRACE && v->ngroups == 0) break; /* {} */
+      if (t != T_WORD) {
+        *msg = t == T_END ? "'}' missing" : "a dictionary key is missing";
+        return -1;
+      }
+      char key[ITEMLEN];
+      memcpy(key, w, sizeof key);
+      t = lex(&L, w, &quoted, msg);
+      if (t < 0) return -1;
+      if (t != T_COLON) {
+        *msg = "':' missing after a dictionary key";
+        return -1;
+      }
+      int g = (int)v->ngroups++;
+      size_t before = v->n;
+      t = lex(&L, w, &quoted, msg);
+      if (t < 0) return -1;
+      if (t == T_WORD) {
+        if (push(v, w, quoted, g, key, msg)) return -1;
+      } else if (t == T_LBRACK) {
+        if (parse_items(&L, v, T_RBRACK, g, key, msg)) return -1;
+        if (v->n == before) {
+          *msg = "empty list as a dictionary value";
+          return -1;
+        }
+      } else {
+        *msg = "a dictionary value is missing";
+        return -1;
+      }
+      t = lex(&L, w, &quoted, msg);
+      if (t < 0) return -1;
+      if (t == T_RBRACE) break;
+      if (t != T_COMMA) {
+        *msg = t == T_END ? "'}' missing" : "',' or '}' expected";
+        return -1;
+      }
+    }
+  } else if (t == T_LBRACK) {
+    v->kind = V_LIST;
+    if (parse_items(&L, v, T_RBRACK, -1, NULL, msg)) return -1;
+  } else if (t == T_WORD) {
+    L.p = save;
+    if (parse_items(&L, v, T_END, -1, NULL, msg)) return -1;
+    v->kind = v->n == 1 ? V_SCALAR : V_LIST;
+    return 0;
+  } else {
+    *msg = "a value cannot start with ']', '}', ':' or ','";
+    return -1;
+  }
+  t = lex(&L, w, &quoted, msg);
+  if (t < 0) return -1;
+  if (t != T_END) {
+    *msg = "unexpected text after the closing bracket";
+    return -1;
+  }
+  return 0;
+}
+
+/* ---- typed conversion --------------------------------------------------- */
+
+static int to_double(const char *s, double *x) {
+  if (!*s) return -1;
+  char *end;
+  errno = 0;
+  double v = strtod(s, &end);
+  if (*end || end == s || !isfinite(v) || errno == ERANGE) return -1;
+  *x = v;
+  return 0;
+}
+
+static int to_int(const char *s, int *x) {
+  if (!*s) return -1;
+  char *end;
+  errno = 0;
+  long v = strtol(s, &end, 10);
+  if (*end || end == s || errno == ERANGE || v > INT_MAX / 2 || v < INT_MIN / 2) {
+    /* "1e3" or "2.0" for an integer key: accept exact integral reals */
+    double d;
+    if (to_double(s, &d) || d != floor(d) || fabs(d) > INT_MAX / 2) return -1;
+    *x = (int)d;
+    return 0;
+  }
+  *x = (int)v;
+  return 0;
+}
+
+/* A parameter/state reference: a positive index or a name (letters,
+ * digits, '_', '.', '(', ')', '-' and '+', not starting with a digit). */
+static int to_ref(const item *it, whirl_run_ref *r, const char **msg) {
+  const char *s = it->text;
+  int k;
+  memset(r, 0, sizeof *r);
+  if (!it->quoted && isdigit((unsigned char)s[0])) {
+    if (to_int(s, &k) || k < 1) {
+      *msg = "is not a positive index or a name";
+      return -1;
+    }
+    r->index = k;
+    return 0;
+  }
+  if (!*s) {
+    *msg = "is an empty name";
+    return -1;
+  }
+  if (strlen(s) >= WHIRL_RUN_MAXNAME) {
+    *msg = "is too long for a name";
+    return -1;
+  }
+  for (const char *q = s; *q; q++) {
+    unsigned char c = (unsigned char)*q;
+    if (!(isalnum(c) || c == '_' || c == '.' || c == '(' || c == ')' ||
+          c == '-' || c == '+' || c == '^' || c == '/')) {
+      *msg = "is not a valid name";
+      return -1;
+    }
+  }
+  snprintf(r->name, sizeof r->name, "%s", s);
+  return 0;
+}
+
+/* Range checks of numeric keys: NULL if fine, else the reason. */
+static const char *check_real(whirl_run_key k, double x) {
+  switch (k) {
+    case WHIRL_RK_DS: return x == 0.0 ? "must not be 0" : NULL;
+    case WHIRL_RK_DSMIN:
+    case WHIRL_RK_DSMAX:
+    case WHIRL_RK_EPSL:
+    case WHIRL_RK_EPSU:
+    case WHIRL_RK_EPSS:
+    case WHIRL_RK_BASIN_TOL: return x <= 0.0 ? "must be > 0" : NULL;
+    case WHIRL_RK_A0: return x < 0.0 ? "must be >= 0 (a norm)" : NULL;
+    case WHIRL_RK_A1: return x <= 0.0 ? "must be > 0 (a norm)" : NULL;
+    default: return NULL;
+  }
+}
+
+static const char *check_int(whirl_run_key k, int x) {
+  switch (k) {
+    case WHIRL_RK_NDIM: return x < 1 ? "must be >= 1" : NULL;
+    case WHIRL_RK_ILP: return x != 0 && x != 1 ? "must be 0 or 1" : NULL;
+    case WHIRL_RK_ISP:
+      return x < 0 || x > 3 ? "must be 0, 1, 2 or 3 (4 is for boundary-value "
+                              "problems, not supported)"
+                            : NULL;
+    case WHIRL_RK_ISW:
+      return x != 1 && x != -1 && x != 2
+                 ? "must be 1 (same branch), -1 (switch at BP/PD) or 2 "
+                   "(two-parameter continuation from LP/HB)"
+                 : NULL;
+    case WHIRL_RK_NTST: return x < 2 || x > 100000 ? "must be in [2, 100000]" : NULL;
+    case WHIRL_RK_NCOL: return x < 2 || x > 7 ? "must be in [2, 7]" : NULL;
+    case WHIRL_RK_IAD: return x < 0 ? "must be >= 0" : NULL;
+    case WHIRL_RK_NHB: return x < 1 || x > 1000 ? "must be in [1, 1000]" : NULL;
+    case WHIRL_RK_OVERSAMPLING: return x < 2 || x > 64 ? "must be in [2, 64]" : NULL;
+    case WHIRL_RK_NMX: return x < 1 ? "must be >= 1" : NULL;
+    case WHIRL_RK_NPR: return x < 0 ? "must be >= 0" : NULL;
+    case WHIRL_RK_ITNW: return x < 1 || x > 1000 ? "must be in [1, 1000]" : NULL;
+    case WHIRL_RK_JAC:
+      return x != 0 && x != 1 && x != -1 ? "must be 0 (finite differences) "
+                                           "or 1 (the model's Jacobian)"
+                                         : NULL;
+    case WHIRL_RK_BASIN_PERIODS: return x < 1 ? "must be >= 1" : NULL;
+    default: return NULL;
+  }
+}
+
+static int *int_field(whirl_run_settings *s, whirl_run_key k) {
+  switch (k) {
+    case WHIRL_RK_NDIM: return &s->ndim;
+    case WHIRL_RK_ILP: return &s->ilp;
+    case WHIRL_RK_ISP: return &s->isp;
+    case WHIRL_RK_ISW: return &s->isw;
+    case WHIRL_RK_NTST: return &s->ntst;
+    case WHIRL_RK_NCOL: return &s->ncol;
+    case WHIRL_RK_IAD: return &s->iad;
+    case WHIRL_RK_NHB: return &s->nhb;
+    case WHIRL_RK_OVERSAMPLING: return &s->oversampling;
+    case WHIRL_RK_NMX: return &s->nmx;
+    case WHIRL_RK_NPR: return &s->npr;
+    case WHIRL_RK_ITNW: return &s->itnw;
+    case WHIRL_RK_JAC: return &s->jac;
+    case WHIRL_RK_BASIN_PERIODS: return &s->basin_periods;
+    default: return NULL;
+  }
+}
+
+static double *real_field(whirl_run_settings *s, whirl_run_key k) {
+  switch (k) {
+    case WHIRL_RK_DS: return &s->ds;
+    case WHIRL_RK_DSMIN: return &s->dsmin;
+    case WHIRL_RK_DSMAX: return &s->dsmax;
+    case WHIRL_RK_RL0: return &s->rl0;
+    case WHIRL_RK_RL1: return &s->rl1;
+    case WHIRL_RK_A0: return &s->a0;
+    case WHIRL_RK_A1: return &s->a1;
+    case WHIRL_RK_EPSL: return &s->epsl;
+    case WHIRL_RK_EPSU: return &s->epsu;
+    case WHIRL_RK_EPSS: return &s->epss;
+    case WHIRL_RK_BASIN_TOL: return &s->basin_tol;
+    default: return NULL;
+  }
+}
+
+static char *string_field(whirl_run_settings *s, whirl_run_key k, size_t *len) {
+  switch (k) {
+    case WHIRL_RK_MODEL: *len = sizeof s->model; return s->model;
+    case WHIRL_RK_OUT: *len = sizeof s->out; return s->out;
+    case WHIRL_RK_S: *len = sizeof s->s; return s->s;
+    case WHIRL_RK_PLOT: *len = sizeof s->plot; return s->plot;
+    default: *len = 0; return NULL;
+  }
+}
+
+/* Convert the value text (already comment-stripped) for key d.  where:
+ * "FILE:LINE" for messages. */
+static int set_value(whirl_runfile *rf, const key_def *d, const char *where,
+                     const char *text, size_t n) {
+  whirl_run_settings *s = &rf->s;
+  const char *kn = d->name, *msg = NULL;
+  char shown[64];
+  pvalue *v = &rf->v;
+
+  /* strings take the whole value (quotes removed), so paths may contain
+   * blanks, commas and brackets */
+  if (d->kind == K_STRING) {
+    while (n && (*text == ' ' || *text == '\t')) text++, n--;
+    while (n && (text[n - 1] == ' ' || text[n - 1] == '\t')) n--;
+    if (n >= 2 && (text[0] == '\'' || text[0] == '"') && text[n - 1] == text[0])
+      text++, n -= 2;
+    else if (n && (text[0] == '\'' || text[0] == '"'))
+      return fail(rf, where, "%s: unterminated quoted string", kn);
+    if (!n) return fail(rf, where, "%s: no value after '='", kn);
+    for (size_t i = 0; i < n; i++)
+      if ((unsigned char)text[i] < 32)
+        return fail(rf, where, "%s: control character in the value", kn);
+    size_t cap;
+    char *dst = string_field(s, d->key, &cap);
+    if (n >= cap)
+      return fail(rf, where, "%s: value too long (at most %zu characters)",
+                  kn, cap - 1);
+    memcpy(dst, text, n);
+    dst[n] = '\0';
+    if (d->key == WHIRL_RK_PLOT && strlen(dst) >= WHIRL_RUN_MAXNAME)
+      return fail(rf, where, "%s: name too long", kn);
+    return WHIRL_OK;
+  }
+
+  if (parse_value(text, n, v, &msg)) return fail(rf, where, "%s: %s", kn, msg);
+
+  switch (d->kind) {
+    case K_INT:
+    case K_REAL: {
+      if (v->kind != V_SCALAR)
+        return fail(rf, where, "%s: expected one number, got a %s", kn,
+                    v->kind == V_DICT ? "dictionary" : "list");
+      const char *t = v->it[0].text;
+      if (d->kind == K_INT) {
+        int x;
+        if (v->it[0].quoted || to_int(t, &x))
+          return fail(rf, where, "%s: '%s' is not an integer", kn,
+                      show(t, ITEMLEN, shown, sizeof shown));
+        const char *why = check_int(d->key, x);
+        if (why) return fail(rf, where, "%s = %d: %s", kn, x, why);
+        *int_field(s, d->key) = x;
+      } else {
+        double x;
+        if (v->it[0].quoted || to_double(t, &x))
+          return fail(rf, where, "%s: '%s' is not a finite number", kn,
+                      show(t, ITEMLEN, shown, sizeof shown));
+        const char *why = check_real(d->key, x);
+        if (why) return fail(rf, where, "%s = %s: %s", kn, t, why);
+        *real_field(s, d->key) = x;
+      }
+      return WHIRL_OK;
+    }
+    case K_IPS: {
+      if (v->kind != V_SCALAR)
+        return fail(rf, where, "%s: expected one value", kn);
+      const char *t = v->it[0].text;
+      int x;
+      if (!strcasecmp(t, "equilibria") || !strcasecmp(t, "EQ"))
+        x = WHIRL_IPS_EQUILIBRIA;
+      else if (!strcasecmp(t, "periodic") || !strcasecmp(t, "PO"))
+        x = WHIRL_IPS_PERIODIC;
+      else if (!strcasecmp(t, "basins"))
+        x = WHIRL_IPS_BASINS;
+      else if (to_int(t, &x))
+        return fail(rf, where,
+                    "%s: '%s' is not a problem type (1 or equilibria, 2 or "
+                    "periodic, basins)",
+                    kn, show(t, ITEMLEN, shown, sizeof shown));
+      else if (x != 1 && x != 2)
+        return fail(rf, where,
+                    "%s = %d is not supported (1 equilibria, 2 periodic "
+                    "orbits, basins)",
+                    kn, x);
+      s->ips = x;
+      return WHIRL_OK;
+    }
+    case K_METHOD: {
+      const char *t = v->it[0].text;
+      if (v->kind != V_SCALAR)
+        return fail(rf, where, "%s: expected one word", kn);
+      if (!strcasecmp(t, "colloc") || !strcasecmp(t, "collocation"))
+        s->method = WHIRL_METHOD_COLLOC;
+      else if (!strcasecmp(t, "hbm") || !strcasecmp(t, "harmonic_balance"))
+        s->method = WHIRL_METHOD_HBM;
+      else
+        return fail(rf, where, "%s: '%s' is not a method (colloc or hbm)", kn,
+                    show(t, ITEMLEN, shown, sizeof shown));
+      return WHIRL_OK;
+    }
+    case K_REFLIST: {
+      if (v->kind == V_DICT)
+        return fail(rf, where, "%s: expected a list of parameters, got a "
+                    "dictionary", kn);
+      if (v->n == 0) return fail(rf, where, "%s: empty list", kn);
+      if (v->n > 4) return fail(rf, where, "%s: at most 4 parameters", kn);
+      for (size_t i = 0; i < v->n; i++)
+        if (to_ref(&v->it[i], &s->icp[i], &msg))
+          return fail(rf, where, "%s: '%s' %s", kn,
+                      show(v->it[i].text, ITEMLEN, shown, sizeof shown), msg);
+      s->nicp = v->n;
+      return WHIRL_OK;
+    }
+    case K_VALDICT:
+    case K_UZDICT: {
+      whirl_run_value *dst = d->key == WHIRL_RK_PAR ? s->par
+                             : d->key == WHIRL_RK_U ? s->u
+                             : d->key == WHIRL_RK_UZR ? s->uzr
+                                                      : s->uzstop;
+      size_t *cnt = d->key == WHIRL_RK_PAR ? &s->npar
+                    : d->key == WHIRL_RK_U ? &s->nu
+                    : d->key == WHIRL_RK_UZR ? &s->nuzr
+                                             : &s->nuzstop;
+      if (v->kind != V_DICT && d->kind == K_UZDICT)
+        return fail(rf, where, "%s: expected a dictionary {parameter: "
+                    "value or [values]}", kn);
+      if (v->n > WHIRL_RUN_MAXITEMS)
+        return fail(rf, where, "%s: too many values (at most %d)", kn,
+                    WHIRL_RUN_MAXITEMS);
+      for (size_t i = 0; i < v->n; i++) {
+        whirl_run_value *e = &dst[i];
+        if (v->kind == V_DICT) {
+          item key = v->it[i];
+          snprintf(key.text, sizeof key.text, "%s", v->it[i].key);
+          key.quoted = 0;
+          if (to_ref(&key, &e->ref, &msg))
+            return fail(rf, where, "%s: key '%s' %s", kn,
+                        show(key.text, ITEMLEN, shown, sizeof shown), msg);
+          if (d->kind == K_VALDICT && i > 0 && v->it[i].group == v->it[i - 1].group)
+            return fail(rf, where, "%s: '%s' has a list where one value is "
+                        "expected", kn, show(key.text, ITEMLEN, shown, sizeof shown));
+        } else {
+          memset(&e->ref, 0, sizeof e->ref);
+          e->ref.index = (int)i + 1; /* positional: PAR = [a, b, c] */
+        }
+        if (v->it[i].quoted || to_double(v->it[i].text, &e->value))
+          return fail(rf, where, "%s: '%s' is not a finite number", kn,
+                      show(v->it[i].text, ITEMLEN, shown, sizeof shown));
+      }
+      *cnt = v->n;
+      return WHIRL_OK;
+    }
+    case K_IRS: {
+      if (v->kind != V_SCALAR) return fail(rf, where, "%s: expected a label", kn);
+      const char *t = v->it[0].text;
+      int x;
+      s->irs_type[0] = '\0';
+      if (!to_int(t, &x)) {
+        if (x < 0) return fail(rf, where, "%s = %d: must be >= 0", kn, x);
+        s->irs = x;
+        return WHIRL_OK;
+      }
+      /* TY[k]: the k-th point of type TY (AUTO: IRS = 'HB1') */
+      static const char *const types[] = {"EP", "LP", "BP", "HB", "UZ", "PD",
+                                          "TR", "CP", "BT", "ZH", "IS", "MG", "RG"};
+      for (size_t i = 0; i < sizeof types / sizeof types[0]; i++) {
+        if (strncasecmp(t, types[i], 2)) continue;
+        int k = 1;
+        if (t[2] && (to_int(t + 2, &k) || k < 1)) break;
+        memcpy(s->irs_type, types[i], 3);
+        s->irs = k;
+        return WHIRL_OK;
+      }
+      return fail(rf, where, "%s: '%s' is not a label (a number, or a type "
+                  "and count such as HB1)", kn, show(t, ITEMLEN, shown, sizeof shown));
+    }
+    case K_RANGES: {
+      if (v->kind != V_DICT || v->ngroups < 1 || v->ngroups > 2)
+        return fail(rf, where, "%s: expected {component: [min, max], "
+                    "component: [min, max]}", kn);
+      for (size_t g = 0; g < v->ngroups; g++) {
+        size_t first = MAXITEMS, count = 0;
+        for (size_t i = 0; i < v->n; i++)
+          if (v->it[i].group == (int)g) {
+            if (first == MAXITEMS) first = i;
+            count++;
+          }
+        if (count != 2)
+          return fail(rf, where, "%s: each axis needs [min, max]", kn);
+        whirl_run_range *r = &s->axes[g];
+        item key = v->it[first];
+        snprintf(key.text, sizeof key.text, "%s", v->it[first].key);
+        key.quoted = 0;
+        if (to_ref(&key, &r->ref, &msg))
+          return fail(rf, where, "%s: key '%s' %s", kn,
+                      show(key.text, ITEMLEN, shown, sizeof shown), msg);
+        if (to_double(v->it[first].text, &r->lo) ||
+            to_double(v->it[first + 1].text, &r->hi))
+          return fail(rf, where, "%s: a range bound is not a finite number", kn);
+        if (!(r->lo < r->hi))
+          return fail(rf, where, "%s: range [%g, %g] is empty", kn, r->lo, r->hi);
+      }
+      s->naxes = v->ngroups;
+      return WHIRL_OK;
+    }
+    case K_GRID: {
+      if (v->kind == V_DICT || v->n > 2)
+        return fail(rf, where, "%s: expected N or [N1, N2]", kn);
+      for (size_t i = 0; i < 2; i++) {
+        int x;
+        const item *it = &v->it[i < v->n ? i : 0];
+        if (it->quoted || to_int(it->text, &x))
+          return fail(rf, where, "%s: '%s' is not an integer", kn,
+                      show(it->text, ITEMLEN, shown, sizeof shown));
+        if (x < 2 || x > 4096)
+          return fail(rf, where, "%s = %d: must be in [2, 4096]", kn, x);
+        s->grid[i] = x;
+      }
+      return WHIRL_OK;
+    }
+    case K_INTLIST: {
+      if (v->kind == V_DICT) return fail(rf, where, "%s: expected a list of labels", kn);
+      if (v->n > WHIRL_RUN_MAXITEMS)
+        return fail(rf, where, "%s: too many labels", kn);
+      for (size_t i = 0; i < v->n; i++) {
+        int x;
+        if (v->it[i].quoted || to_int(v->it[i].text, &x) || x < 1)
+          return fail(rf, where, "%s: '%s' is not a label (a positive integer)",
+                      kn, show(v->it[i].text, ITEMLEN, shown, sizeof shown));
+        s->attractors[i] = x;
+      }
+      s->nattractors = v->n;
+      return WHIRL_OK;
+    }
+    case K_IGNORED:
+    case K_STRING:
+      return WHIRL_OK;
+  }
+  return WHIRL_OK;
+}
+
+/* ---- keys --------------------------------------------------------------- */
+
+static const key_def *find_key(const char *k, size_t n) {
+  for (size_t i = 0; i < NKEYS; i++) {
+    const char *names[3] = {keys[i].name, keys[i].alias, keys[i].alias2};
+    for (int j = 0; j < 3; j++)
+      if (names[j] && strlen(names[j]) == n && !strncasecmp(names[j], k, n))
+        return &keys[i];
+  }
+  return NULL;
+}
+
+static int is_ignored_key(const char *k, size_t n) {
+  for (size_t i = 0; i < NIGNORED; i++)
+    if (strlen(ignored_keys[i]) == n && !strncasecmp(ignored_keys[i], k, n))
+      return 1;
+  return 0;
+}
+
+/* Edit distance, for "did you mean" (keys are short). */
+static size_t distance(const char *a, size_t na, const char *b) {
+  size_t nb = strlen(b), prev[48], cur[48];
+  if (na >= 47 || nb >= 47) return 99;
+  for (size_t j = 0; j <= nb; j++) prev[j] = j;
+  for (size_t i = 1; i <= na; i++) {
+    cur[0] = i;
+    for (size_t j = 1; j <= nb; j++) {
+      size_t c = prev[j - 1] + (toupper((unsigned char)a[i - 1]) !=
+                                toupper((unsigned char)b[j - 1]));
+      if (prev[j] + 1 < c) c = prev[j] + 1;
+      if (cur[j - 1] + 1 < c) c = cur[j - 1] + 1;
+      cur[j] = c;
+    }
+    memcpy(prev, cur, (nb + 1) * sizeof *prev);
+  }
+  return prev[nb];
+}
+
+static int unknown_key(whirl_runfile *rf, const char *where, const char *k,
+                       size_t n) {
+  char shown[64];
+  const char *best = NULL;
+  size_t bd = 3;
+  for (size_t i = 0; i < NKEYS; i++) {
+    const char *names[3] = {keys[i].name, keys[i].alias, keys[i].alias2};
+    for (int j = 0; j < 3; j++) {
+      if (!names[j]) continue;
+      size_t d = distance(k, n, names[j]);
+      if (d < bd || (d == bd && d == 1)) bd = d, best = names[j];
+    }
+  }
+  show(k, n, shown, sizeof shown);
+  if (best && bd <= (n > 3 ? 2u : 1u))
+    return fail(rf, where, "unknown key '%s' (did you mean %s?)", shown, best);
+  return fail(rf, where, "unknown key '%s' (see doc/run-files.md)", shown);
+}
+
+static void note_ignored(whirl_runfile *rf, const char *k, size_t n) {
+  size_t len = strlen(rf->ignored);
+  if (len + n + 3 >= sizeof rf->ignored) return;
+  if (len) {
+    memcpy(rf->ignored + len, ", ", 2);
+    len += 2;
+  }
+  for (size_t i = 0; i < n; i++)
+    rf->ignored[len + i] = (char)toupper((unsigned char)k[i]);
+  rf->ignored[len + n] = '\0';
+}
+
+/* One "key = value" (comment already removed).  line > 0: file line;
+ * line < 0: command line, text is the argument. */
+static int assign(whirl_runfile *rf, int line, const char *where,
+                  const char *k, size_t kn, const char *val, size_t vn,
+                  const char *arg) {
+  char shown[64];
+  if (kn == 0) return fail(rf, where, "a key is missing before '='");
+  for (size_t i = 0; i < kn; i++) {
+    unsigned char c = (unsigned char)k[i];
+    if (!(isalnum(c) || c == '_'))
+      return fail(rf, where, "'%s' is not a key name (letters, digits, '_')",
+                  show(k, kn, shown, sizeof shown));
+  }
+  const key_def *d = find_key(k, kn);
+  if (!d) {
+    if (is_ignored_key(k, kn)) {
+      pvalue *v = &rf->v;
+      const char *msg;
+      if (parse_value(val, vn, v, &msg))
+        return fail(rf, where, "%s: %s", show(k, kn, shown, sizeof shown), msg);
+      note_ignored(rf, k, kn);
+      return WHIRL_OK;
+    }
+    return unknown_key(rf, where, k, kn);
+  }
+  if (line > 0 && rf->line[d->key] > 0)
+    return fail(rf, where, "%s given twice (first at line %d)", d->name,
+                rf->line[d->key]);
+  int rc = set_value(rf, d, where, val, vn);
+  if (rc) return rc;
+  rf->line[d->key] = line;
+  if (line < 0) snprintf(rf->cmd[d->key], sizeof rf->cmd[d->key], "%s", arg);
+  return WHIRL_OK;
+}
+
+/* Split one line at '=' and strip the comment ('#' outside quotes). */
+static int parse_line(whirl_runfile *rf, int line, const char *s, size_t n) {
+  char where[WHIRL_RUN_MAXPATH + 32];
+  snprintf(where, sizeof where, "%s:%d", rf->name, line);
+  /* comment */
+  char q = 0;
+  size_t end = n;
+  for (size_t i = 0; i < n; i++) {
+    char c = s[i];
+    if (q) {
+      if (c == q) q = 0;
+    } else if (c == '\'' || c == '"') {
+      q = c;
+    } else if (c == '#') {
+      end = i;
+      break;
+    }
+  }
+  n = end;
+  while (n && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\r')) n--;
+  size_t i = 0;
+  while (i < n && (s[i] == ' ' || s[i] == '\t')) i++;
+  if (i == n) return WHIRL_OK; /* blank or comment */
+  for (size_t j = i; j < n; j++)
+    if (s[j] == '\r' || s[j] == '\f' || s[j] == '\v')
+      return fail(rf, where, "control character in the line");
+  const char *eq = memchr(s + i, '=', n - i);
+  if (!eq) {
+    char shown[64];
+    return fail(rf, where, "expected 'key = value', got '%s'",
+                show(s + i, n - i, shown, sizeof shown));
+  }
+  size_t kn = (size_t)(eq - (s + i));
+  while (kn && (s[i + kn - 1] == ' ' || s[i + kn - 1] == '\t')) kn--;
+  const char *val = eq + 1;
+  size_t vn = (size_t)(s + n - val);
+  return assign(rf, line, where, s + i, kn, val, vn, NULL);
+}
+
+int whirl_runfile_parse(whirl_runfile *rf, const char *name, const char *text,
+                        size_t len) {
+  if (!rf || !text) return WHIRL_EINVAL;
+  snprintf(rf->name, sizeof rf->name, "%s", name ? name : "<run file>");
+  if (rf->parsed) return fail(rf, rf->name, "already parsed");
+  rf->parsed = 1;
+  size_t start = 0;
+  int line = 0;
+  while (start < len) {
+    size_t stop = start;
+    while (stop < len && text[stop] != '\n') stop++;
+    line++;
+    if (line == INT_MAX / 2) {
+      char where[WHIRL_RUN_MAXPATH + 32];
+      snprintf(where, sizeof where, "%s:%d", rf->name, line);
+      return fail(rf, where, "too many lines");
+    }
+    if (memchr(text + start, '\0', stop - start)) {
+      char where[WHIRL_RUN_MAXPATH + 32];
+      snprintf(where, sizeof where, "%s:%d", rf->name, line);
+      return fail(rf, where, "NUL byte in the line (not a text file?)");
+    }
+    int rc = parse_line(rf, line, text + start, stop - start);
+    if (rc) return rc;
+    start = stop + 1;
+  }
+  rf->nlines = line;
+  return WHIRL_OK;
+}
+
+int whirl_runfile_read(whirl_runfile *rf, const char *path) {
+  if (!rf || !path) return WHIRL_EINVAL;
+  snprintf(rf->name, sizeof rf->name, "%s", path);
+  FILE *f = fopen(path, "rb");
+  if (!f) {
+    snprintf(rf->err, sizeof rf->err, "%s: cannot open: %s", path,
+             strerror(errno));
+    return WHIRL_EIO;
+  }
+  size_t cap = 4096, n = 0;
+  char *buf = malloc(cap);
+  int rc = WHIRL_OK;
+  while (buf) {
+    size_t got = fread(buf + n, 1, cap - n, f);
+    n += got;
+    if (n < cap) break;
+    if (cap >= (size_t)16 << 20) { /* a run file is a few hundred bytes */
+      rc = fail(rf, path, "file larger than 16 MB: not a run file?");
+      break;
+    }
+    char *nb = realloc(buf, cap *= 2);
+    if (!nb) {
+      free(buf);
+      buf = NULL;
+    } else {
+      buf = nb;
+    }
+  }
+  if (!buf) {
+    fclose(f);
+    snprintf(rf->err, sizeof rf->err, "%s: out of memory", path);
+    return WHIRL_ENOMEM;
+  }
+  if (rc == WHIRL_OK && ferror(f)) {
+    snprintf(rf->err, sizeof rf->err, "%s: read error: %s", path,
+             strerror(errno));
+    rc = WHIRL_EIO;
+  }
+  fclose(f);
+  if (rc == WHIRL_OK) rc = whirl_runfile_parse(rf, path, buf, n);
+  free(buf);
+  return rc;
+}
+
+int whirl_runfile_override(whirl_runfile *rf, const char *arg) {
+  if (!rf || !arg) return WHIRL_EINVAL;
+  char where[160], shown[64];
+  snprintf(where, sizeof where, "command line (%s)", show(arg, strlen(arg), shown, sizeof shown));
+  const char *a = arg;
+  if (a[0] == '-' && a[1] == '-') a += 2;
+  const char *eq = strchr(a, '=');
+  if (!eq)
+    return fail(rf, where, "expected --KEY=value");
+  if (strchr(a, '\n')) return fail(rf, where, "newline in the argument");
+  return assign(rf, -1, where, a, (size_t)(eq - a), eq + 1, strlen(eq + 1), arg);
+}
+
+int whirl_runfile_check(whirl_runfile *rf) {
+  whirl_run_settings *s = &rf->s;
+  char w[WHIRL_RUN_MAXPATH + 64];
+  if (!rf->line[WHIRL_RK_MODEL]) {
+    snprintf(w, sizeof w, "%s:%d", rf->name, rf->nlines);
+    return fail(rf, w, "end of file without the required key 'model' (a "
+                "built-in model name or a plug-in .so)");
+  }
+  if (s->ips != WHIRL_IPS_BASINS && s->nicp == 0) {
+    snprintf(w, sizeof w, "%s:%d", rf->name, rf->nlines);
+    return fail(rf, w, "end of file without the required key 'ICP' (the "
+                "continuation parameter)");
+  }
+  if (s->dsmin > s->dsmax)
+    return fail(rf, whirl_runfile_where(rf, WHIRL_RK_DSMIN, w, sizeof w),
+                "DSMIN = %g exceeds DSMAX = %g", s->dsmin, s->dsmax);
+  if (fabs(s->ds) < s->dsmin || fabs(s->ds) > s->dsmax)
+    return fail(rf, whirl_runfile_where(rf, WHIRL_RK_DS, w, sizeof w),
+                "|DS| = %g must lie in [DSMIN, DSMAX] = [%g, %g]", fabs(s->ds),
+                s->dsmin, s->dsmax);
+  if (!(s->rl0 < s->rl1))
+    return fail(rf, whirl_runfile_where(rf, rf->line[WHIRL_RK_RL1] ? WHIRL_RK_RL1 : WHIRL_RK_RL0, w, sizeof w),
+                "RL0 = %g must be below RL1 = %g", s->rl0, s->rl1);
+  if (!(s->a0 < s->a1))
+    return fail(rf, whirl_runfile_where(rf, WHIRL_RK_A1, w, sizeof w),
+                "A0 = %g must be below A1 = %g", s->a0, s->a1);
+  if ((s->irs > 0 || s->irs_type[0]) && !s->s[0])
+    return fail(rf, whirl_runfile_where(rf, WHIRL_RK_IRS, w, sizeof w),
+                "IRS names a label but S (the previous run's output "
+                "directory) is not given");
+  if (s->isw != 1 && s->irs == 0 && !s->irs_type[0])
+    return fail(rf, whirl_runfile_where(rf, WHIRL_RK_ISW, w, sizeof w),
+                "ISW = %d needs a labelled start point (IRS)", s->isw);
+  if (s->isw == 2 && s->nicp < 2)
+    return fail(rf, whirl_runfile_where(rf, WHIRL_RK_ICP, w, sizeof w),
+                "ISW = 2 (two-parameter continuation) needs two parameters "
+                "in ICP");
+  if (s->ips == WHIRL_IPS_BASINS) {
+    if (s->naxes != 2)
+      return fail(rf, whirl_runfile_where(rf, WHIRL_RK_BASIN_AXES, w, sizeof w),
+                  "IPS = basins needs BASIN_AXES = {a: [min, max], b: [min, max]}");
+    if (!s->nattractors || !s->s[0])
+      return fail(rf, whirl_runfile_where(rf, WHIRL_RK_BASIN_ATTRACTORS, w, sizeof w),
+                  "IPS = basins needs BASIN_ATTRACTORS (labels of stable "
+                  "solutions) and S (the run that computed them)");
+  }
+  return WHIRL_OK;
+}

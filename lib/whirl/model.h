@@ -1,0 +1,78 @@
+/* whirl/model.h — a model as `whirl run` loads it: the vector field (a
+ * whirl_problem) plus what a run needs to start, AUTO's STPNT and PVLS in
+ * one struct.  Built-in models (`model = sfd`) and plug-ins (`model =
+ * ./mymodel.so`) are described the same way.
+ *
+ * A plug-in is a shared object exporting ONE symbol, `whirl_model_def`, of
+ * type `const whirl_model`:
+ *
+ *     #include <whirl/whirl.h>
+ *     static int rhs(double t, const double *u, const double *p, double *f,
+ *                    void *data) { ... return 0; }
+ *     static const double par0[] = {0.0, 14.0, 2.0};
+ *     static const double u0[] = {0.0, 0.0};
+ *     const whirl_model whirl_model_def = {
+ *       .abi = WHIRL_MODEL_ABI,
+ *       .problem = {.name = "ab", .n = 2, .npar = 3, .rhs = rhs,
+ *                   .autonomous = 1, .p_names = names},
+ *       .par0 = par0, .u0 = u0, .forcing_param = -1};
+ *
+ * built with
+ *     cc -shared -fPIC -o mymodel.so mymodel.c $(pkg-config --cflags --libs whirl)
+ *
+ * `abi` must be the first member and equal WHIRL_MODEL_ABI of the headers
+ * the plug-in was compiled with; whirl refuses a plug-in with another value
+ * ("built for model ABI 0, this whirl needs 1: rebuild it") before reading
+ * anything else from it.  The ABI number changes whenever this struct or
+ * whirl_problem changes layout.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_MODEL_H
+#define WHIRL_MODEL_H
+
+#include <stddef.h>
+#include <whirl/problem.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define WHIRL_MODEL_ABI 1
+#define WHIRL_MODEL_SYMBOL "whirl_model_def"
+
+typedef struct whirl_model {
+  int abi;               /* WHIRL_MODEL_ABI (first member, checked first) */
+  whirl_problem problem; /* the ODE u' = f(t, u, p): callbacks, sizes, names */
+  const double *par0;    /* npar default parameter values (required) */
+  const double *u0;      /* n components of the default start state: an
+                            equilibrium, or for a forced model a point of the
+                            stroboscopic section; NULL: zeros (or stpnt) */
+  /* Optional, AUTO's STPNT: the start solution at scaled time tau in [0, 1]
+   * — for an equilibrium start tau = 0 only; for a periodic start (IPS = 2,
+   * IRS = 0) the orbit of period `period0` sampled over one period.  May
+   * set parameters in par[npar] (already holding par0).  0 on success. */
+  int (*stpnt)(double tau, double *u, double *par, void *data);
+  double period0;        /* period of the stpnt orbit (autonomous models) */
+  int forcing_param;     /* forced (non-autonomous) models: index of the
+                            parameter that is the forcing frequency omega, so
+                            the period is 2 pi / p[forcing_param]; -1 for an
+                            autonomous model */
+  const char *description; /* optional one-line description */
+} whirl_model;
+
+/* Check a model description: abi, sizes, required callbacks, parameter
+ * defaults finite, names unique and usable in run files.  Returns WHIRL_OK or
+ * WHIRL_EINVAL with a one-line reason in msg[len]. */
+WHIRL_API int whirl_model_check(const whirl_model *m, char *msg, size_t len);
+
+/* The built-in models by name ("sfd": the rigid rotor on two short SFDs in
+ * the fixed frame, forced; "sfd-rotating": the same in the rotating frame,
+ * autonomous).  NULL for an unknown name. */
+WHIRL_API const whirl_model *whirl_model_builtin(const char *name);
+
+/* Names of the built-in models, NULL-terminated. */
+WHIRL_API const char *const *whirl_model_builtin_names(void);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
