@@ -28,6 +28,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -135,7 +136,7 @@ static int run_branch(run_ctx *R, branch_spec *b) {
   whirl_cont_options o;
   whirl_cont_options_default(&o);
   o.icp = (size_t)b->icp;
-  o.ds = fabs(s->ds) * b->ds_scale;
+  o.ds = fmin(fmax(fabs(s->ds), s->dsmin), s->dsmax) * b->ds_scale; /* AUTO clips */
   o.ds_min = s->dsmin * b->ds_scale;
   o.ds_max = s->dsmax * b->ds_scale;
   o.nmx = (size_t)s->nmx;
@@ -161,14 +162,30 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     }
     uz[nuz++] = s->uzr[i].value;
   }
+  /* stops: on the continuation parameter they are user points, localised
+   * by the core; on another parameter, the period (PERIOD, AUTO's PAR(11))
+   * or a state component (its MAX for periodic orbits) the branch ends at
+   * the first point beyond the value (not localised) */
+  int stop_what[WHIRL_RUN_MAXITEMS]; /* >= 0 parameter, -1 period, -2 - i state i */
+  double stop_prev[WHIRL_RUN_MAXITEMS];
   for (size_t i = 0; i < s->nuzstop; i++) {
-    int k = run_par_index(R, &s->uzstop[i].ref);
-    if (k != b->icp) {
-      run_fail(R, WHIRL_RK_UZSTOP, "UZSTOP: stops are supported for the "
-               "continuation parameter '%s' only", R->pnames[b->icp]);
+    int k = run_par_index(R, &s->uzstop[i].ref), xi;
+    if (k == b->icp) uz[nuz++] = s->uzstop[i].value;
+    if (k >= 0) {
+      stop_what[i] = k;
+    } else if (b->kind != RUN_EQ && (!strcasecmp(s->uzstop[i].ref.name, "PERIOD") ||
+                                     s->uzstop[i].ref.index == 11)) {
+      stop_what[i] = -1;
+    } else if ((xi = run_state_index(R, &s->uzstop[i].ref)) >= 0 &&
+               !s->uzstop[i].ref.index) {
+      stop_what[i] = -2 - xi;
+    } else {
+      run_fail(R, WHIRL_RK_UZSTOP, "UZSTOP: '%s' is neither a parameter, "
+               "PERIOD (periodic orbits) nor a state component of model '%s'",
+               s->uzstop[i].ref.index ? "(index)" : s->uzstop[i].ref.name,
+               R->prob.name);
       return -2;
     }
-    uz[nuz++] = s->uzstop[i].value;
   }
   o.uz = uz;
   o.nuz = nuz;
@@ -180,7 +197,10 @@ static int run_branch(run_ctx *R, branch_spec *b) {
   }
   int dir = s->ds < 0 ? -1 : 1, rc;
   double *pfull = malloc(R->npar * sizeof *pfull);
-  if (!pfull) {
+  double *state = malloc(R->n * sizeof *state);
+  if (!pfull || !state) {
+    free(pfull);
+    free(state);
     whirl_cont_free(c);
     return -1;
   }
@@ -196,6 +216,7 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     fprintf(R->log, "start failed: %s\n", whirl_cont_errmsg(c));
     whirl_cont_free(c);
     free(pfull);
+    free(state);
     return -1;
   }
   R->branch++;
@@ -220,19 +241,34 @@ static int run_branch(run_ctx *R, branch_spec *b) {
                             (s->npr > 0 && pt->index > 0 && pt->index % (size_t)s->npr == 0);
     if (type == WHIRL_PT_UZ)
       for (size_t i = 0; i < s->nuzstop; i++)
-        if (fabs(pt->p[b->icp] - s->uzstop[i].value) <=
+        if (stop_what[i] == b->icp &&
+            fabs(pt->p[b->icp] - s->uzstop[i].value) <=
             1e-9 * (1.0 + fabs(s->uzstop[i].value)))
           stop = 1;
     if (labelled) lab = ++R->label;
     if (type >= 0 && type < 16) counts[type]++;
-    double l2 = 0.0;
+    double l2 = 0.0, period = 0.0;
     const void *obj = b->kind == RUN_COLLOC ? (const void *)b->colloc
                       : b->kind == RUN_HBM  ? (const void *)b->hbm
                                             : NULL;
     if (run_table_row(R, b->kind, obj, R->branch, pt->index, ty, lab, pt->x,
-                      pfull, pt->stable, &l2)) {
+                      pfull, pt->stable, &l2, &period, state)) {
       rc = -1;
       break;
+    }
+    for (size_t i = 0; i < s->nuzstop; i++) {
+      if (stop_what[i] == b->icp) continue;
+      double v = stop_what[i] >= 0    ? pfull[stop_what[i]]
+                 : stop_what[i] == -1 ? period
+                                      : state[-2 - stop_what[i]];
+      double d = v - s->uzstop[i].value;
+      if (npts > 1 && (d == 0.0 || (d > 0) != (stop_prev[i] > 0))) {
+        stop = 1;
+        fprintf(R->log, "  UZSTOP %s = %g passed at PT %zu: branch ends\n",
+                s->uzstop[i].ref.index ? "PERIOD" : s->uzstop[i].ref.name,
+                s->uzstop[i].value, pt->index);
+      }
+      stop_prev[i] = d;
     }
     if (!stop && pt->index > 0 && (l2 < s->a0 || l2 > s->a1)) {
       stop = 1;
@@ -313,6 +349,7 @@ static int run_branch(run_ctx *R, branch_spec *b) {
   }
   whirl_cont_free(c);
   free(pfull);
+  free(state);
   return rc;
 }
 
@@ -756,9 +793,12 @@ int cmd_run(int argc, char **argv) {
     goto out;
   }
   R.log = open_in(&R, "run.log");
-  R.table = open_in(&R, "branches.tsv");
-  R.sols = open_in(&R, "solutions");
-  if (!R.log || !R.table || !R.sols) {
+  const int basins = R.s->ips == WHIRL_IPS_BASINS;
+  if (!basins) {
+    R.table = open_in(&R, "branches.tsv");
+    R.sols = open_in(&R, "solutions");
+  }
+  if (!R.log || (!basins && (!R.table || !R.sols))) {
     fprintf(stderr, "whirl run: cannot write in '%s': %s\n", R.tmp, strerror(errno));
     status = 1;
     goto cleanup;
@@ -775,7 +815,8 @@ int cmd_run(int argc, char **argv) {
   fprintf(R.log, "parameters:");
   for (size_t k = 0; k < R.npar; k++) fprintf(R.log, " %s = %.10g", R.pnames[k], R.par[k]);
   fprintf(R.log, "\n");
-  fprintf(R.sols, "# whirl solutions: model %s, npar %zu\n", R.prob.name, R.npar);
+  if (R.sols)
+    fprintf(R.sols, "# whirl solutions: model %s, npar %zu\n", R.prob.name, R.npar);
   double t0 = cli_now();
   int rr = R.s->ips == WHIRL_IPS_BASINS ? run_basins(&R) : run_continuation(&R, &O);
   if (rr) {
@@ -783,8 +824,8 @@ int cmd_run(int argc, char **argv) {
     goto cleanup;
   }
   fprintf(R.log, "wall time %.3f s\n", cli_now() - t0);
-  fclose(R.table);
-  fclose(R.sols);
+  if (R.table) fclose(R.table);
+  if (R.sols) fclose(R.sols);
   R.table = R.sols = NULL;
   char msg[1024];
   if (run_write_plot(&R, msg, sizeof msg)) {
@@ -802,7 +843,9 @@ int cmd_run(int argc, char **argv) {
     status = 1;
     goto cleanup;
   }
-  if (!R.quiet) printf("wrote %s/ (branches.tsv, solutions, run.log, diagram.png)\n", R.out);
+  if (!R.quiet)
+    printf("wrote %s/ (%s)\n", R.out, basins ? "basins.tsv, run.log, basins.png"
+                                        : "branches.tsv, solutions, run.log, diagram.png");
   status = 0;
   goto out;
 cleanup:

@@ -80,7 +80,7 @@ int run_solution_find(const char *dir, const char *model, size_t npar,
 int run_table_header(run_ctx *R, run_kind kind, int icp, int q);
 int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br, size_t pt,
                   const char *ty, int lab, const double *xb, const double *p,
-                  int stable, double *l2out);
+                  int stable, double *l2out, double *period, double *state);
 int run_write_plot(run_ctx *R, char *msg, size_t len);
 
 /* run_basins.c */

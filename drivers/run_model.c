@@ -34,8 +34,10 @@ int run_load_model(run_ctx *R) {
     }
   } else {
     char path[8192];
-    if (m[0] == '/' || !R->rundir[0])
+    if (m[0] == '/')
       snprintf(path, sizeof path, "%s", m);
+    else if (!R->rundir[0]) /* dlopen searches the library path without a '/' */
+      snprintf(path, sizeof path, "./%s", m);
     else
       snprintf(path, sizeof path, "%s/%s", R->rundir, m);
     FILE *probe = fopen(path, "rb");

@@ -73,7 +73,8 @@ static const double gw[5] = {0.2369268850561891, 0.4786286704993665,
 
 int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,
                   size_t pt, const char *ty, int lab, const double *xb,
-                  const double *p, int stable, double *l2out) {
+                  const double *p, int stable, double *l2out, double *period_out,
+                  double *state) {
   FILE *f = R->table;
   const size_t n = R->n;
   double *v = calloc(2 * n, sizeof *v), *mx = v + n;
@@ -121,8 +122,10 @@ int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,
   fprintf(f, "\t%d\n", stable);
   if (stable >= -1 && stable <= 1) R->seen_stab[stable + 1] = 1;
   if (strcmp(ty, "RG") && strcmp(ty, "EP")) R->seen_special = 1;
-  free(v);
   *l2out = l2;
+  *period_out = period;
+  memcpy(state, mx, n * sizeof *state);
+  free(v);
   return ferror(f) ? -1 : 0;
 }
 

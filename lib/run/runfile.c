@@ -1049,10 +1049,6 @@ int whirl_runfile_check(whirl_runfile *rf) {
   if (s->dsmin > s->dsmax)
     return fail(rf, whirl_runfile_where(rf, WHIRL_RK_DSMIN, w, sizeof w),
                 "DSMIN = %g exceeds DSMAX = %g", s->dsmin, s->dsmax);
-  if (fabs(s->ds) < s->dsmin || fabs(s->ds) > s->dsmax)
-    return fail(rf, whirl_runfile_where(rf, WHIRL_RK_DS, w, sizeof w),
-                "|DS| = %g must lie in [DSMIN, DSMAX] = [%g, %g]", fabs(s->ds),
-                s->dsmin, s->dsmax);
   if (!(s->rl0 < s->rl1))
     return fail(rf, whirl_runfile_where(rf, rf->line[WHIRL_RK_RL1] ? WHIRL_RK_RL1 : WHIRL_RK_RL0, w, sizeof w),
                 "RL0 = %g must be below RL1 = %g", s->rl0, s->rl1);

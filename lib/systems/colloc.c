@@ -430,9 +430,21 @@ static int colloc_spectrum(const double *X, const double *p, const double *J,
   return rc;
 }
 
+/* A constant orbit (the start of a branch at a Hopf point) cannot be a
+ * phase reference: its derivative vanishes and the phase row with it, so the
+ * reference set by whirl_colloc_hopf_start is kept until the orbit has an
+ * amplitude. */
 static int colloc_accept(const double *X, const double *p, void *data) {
   (void)p;
-  set_reference(data, X);
+  whirl_colloc *c = data;
+  const size_t n = c->n, nn = c->nnodes * n;
+  double spread = 0.0, size = 0.0;
+  for (size_t q = 0; q < nn; ++q) {
+    spread = fmax(spread, fabs(X[q] - X[q % n]));
+    size = fmax(size, fabs(X[q]));
+  }
+  if (c->aut && c->have_ref && spread <= 1e-12 * (1.0 + size)) return 0;
+  set_reference(c, X);
   return 0;
 }
 

@@ -90,7 +90,8 @@ typedef struct whirl_run_settings {
   char irs_type[3];             /* "" or a type name (IRS = HB2) */
   int ntst, ncol, iad;          /* defaults 20, 4, 3 */
   int nhb, oversampling;        /* defaults 8, 4 */
-  double ds, dsmin, dsmax;      /* defaults 0.01, 1e-5, 0.1 */
+  double ds, dsmin, dsmax;      /* defaults 0.01, 1e-5, 0.1; |DS| is
+                                   clipped to [DSMIN, DSMAX] as in AUTO */
   int nmx, npr;                 /* defaults 200, 0 (no regular labels) */
   double rl0, rl1, a0, a1;      /* defaults -1e30, 1e30, 0, 1e30 */
   double epsl, epsu, epss;      /* defaults 1e-7, 1e-7, 1e-5 */
