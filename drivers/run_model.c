@@ -34,7 +34,7 @@ int run_load_model(run_ctx *R) {
     }
   } else {
     char path[8192];
-    if (m[0] == '/')
+    if (m[0] == '/' || (!R->rundir[0] && strchr(m, '/')))
       snprintf(path, sizeof path, "%s", m);
     else if (!R->rundir[0]) /* dlopen searches the library path without a '/' */
       snprintf(path, sizeof path, "./%s", m);
