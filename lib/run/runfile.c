@@ -414,8 +414,9 @@ static int to_double(const char *s, double *x) {
   if (!*s) return -1;
   char *end;
   errno = 0;
+  if (strpbrk(s, "xXpP")) return -1; /* no hexadecimal floats */
   double v = strtod(s, &end);
-  if (*end || end == s || !isfinite(v) || errno == ERANGE) return -1;
+  if (*end || end == s || !isfinite(v)) return -1; /* underflow gives 0 */
   *x = v;
   return 0;
 }
@@ -650,9 +651,9 @@ static int set_value(whirl_runfile *rf, const key_def *d, const char *where,
       return WHIRL_OK;
     }
     case K_METHOD: {
-      const char *t = v->it[0].text;
       if (v->kind != V_SCALAR)
         return fail(rf, where, "%s: expected one word", kn);
+      const char *t = v->it[0].text;
       if (!strcasecmp(t, "colloc") || !strcasecmp(t, "collocation"))
         s->method = WHIRL_METHOD_COLLOC;
       else if (!strcasecmp(t, "hbm") || !strcasecmp(t, "harmonic_balance"))
@@ -768,7 +769,7 @@ static int set_value(whirl_runfile *rf, const key_def *d, const char *where,
       return WHIRL_OK;
     }
     case K_GRID: {
-      if (v->kind == V_DICT || v->n > 2)
+      if (v->kind == V_DICT || v->n > 2 || v->n == 0)
         return fail(rf, where, "%s: expected N or [N1, N2]", kn);
       for (size_t i = 0; i < 2; i++) {
         int x;
@@ -1033,45 +1034,57 @@ int whirl_runfile_override(whirl_runfile *rf, const char *arg) {
   return assign(rf, -1, where, a, (size_t)(eq - a), eq + 1, strlen(eq + 1), arg);
 }
 
+/* Where to blame a check on: the key's line, or the end of the file when
+ * the key was not given (a missing key has no line of its own). */
+static const char *where_of(const whirl_runfile *rf, whirl_run_key k, char *buf,
+                            size_t len) {
+  if (rf->line[k] == 0) {
+    snprintf(buf, len, "%s:%d", rf->name, rf->nlines > 0 ? rf->nlines : 1);
+    return buf;
+  }
+  return whirl_runfile_where(rf, k, buf, len);
+}
+
 int whirl_runfile_check(whirl_runfile *rf) {
   whirl_run_settings *s = &rf->s;
   char w[WHIRL_RUN_MAXPATH + 64];
   if (!rf->line[WHIRL_RK_MODEL]) {
-    snprintf(w, sizeof w, "%s:%d", rf->name, rf->nlines);
+    snprintf(w, sizeof w, "%s:%d", rf->name, rf->nlines > 0 ? rf->nlines : 1);
     return fail(rf, w, "end of file without the required key 'model' (a "
                 "built-in model name or a plug-in .so)");
   }
   if (s->ips != WHIRL_IPS_BASINS && s->nicp == 0) {
-    snprintf(w, sizeof w, "%s:%d", rf->name, rf->nlines);
+    snprintf(w, sizeof w, "%s:%d", rf->name, rf->nlines > 0 ? rf->nlines : 1);
     return fail(rf, w, "end of file without the required key 'ICP' (the "
                 "continuation parameter)");
   }
   if (s->dsmin > s->dsmax)
-    return fail(rf, whirl_runfile_where(rf, WHIRL_RK_DSMIN, w, sizeof w),
+    return fail(rf, where_of(rf, rf->line[WHIRL_RK_DSMAX] ? WHIRL_RK_DSMAX : WHIRL_RK_DSMIN,
+                             w, sizeof w),
                 "DSMIN = %g exceeds DSMAX = %g", s->dsmin, s->dsmax);
   if (!(s->rl0 < s->rl1))
-    return fail(rf, whirl_runfile_where(rf, rf->line[WHIRL_RK_RL1] ? WHIRL_RK_RL1 : WHIRL_RK_RL0, w, sizeof w),
+    return fail(rf, where_of(rf, rf->line[WHIRL_RK_RL1] ? WHIRL_RK_RL1 : WHIRL_RK_RL0, w, sizeof w),
                 "RL0 = %g must be below RL1 = %g", s->rl0, s->rl1);
   if (!(s->a0 < s->a1))
-    return fail(rf, whirl_runfile_where(rf, WHIRL_RK_A1, w, sizeof w),
+    return fail(rf, where_of(rf, WHIRL_RK_A1, w, sizeof w),
                 "A0 = %g must be below A1 = %g", s->a0, s->a1);
   if ((s->irs > 0 || s->irs_type[0]) && !s->s[0])
-    return fail(rf, whirl_runfile_where(rf, WHIRL_RK_IRS, w, sizeof w),
+    return fail(rf, where_of(rf, WHIRL_RK_IRS, w, sizeof w),
                 "IRS names a label but S (the previous run's output "
                 "directory) is not given");
   if (s->isw != 1 && s->irs == 0 && !s->irs_type[0])
-    return fail(rf, whirl_runfile_where(rf, WHIRL_RK_ISW, w, sizeof w),
+    return fail(rf, where_of(rf, WHIRL_RK_ISW, w, sizeof w),
                 "ISW = %d needs a labelled start point (IRS)", s->isw);
   if (s->isw == 2 && s->nicp < 2)
-    return fail(rf, whirl_runfile_where(rf, WHIRL_RK_ICP, w, sizeof w),
+    return fail(rf, where_of(rf, WHIRL_RK_ICP, w, sizeof w),
                 "ISW = 2 (two-parameter continuation) needs two parameters "
                 "in ICP");
   if (s->ips == WHIRL_IPS_BASINS) {
     if (s->naxes != 2)
-      return fail(rf, whirl_runfile_where(rf, WHIRL_RK_BASIN_AXES, w, sizeof w),
+      return fail(rf, where_of(rf, rf->line[WHIRL_RK_BASIN_AXES] ? WHIRL_RK_BASIN_AXES : WHIRL_RK_IPS, w, sizeof w),
                   "IPS = basins needs BASIN_AXES = {a: [min, max], b: [min, max]}");
     if (!s->nattractors || !s->s[0])
-      return fail(rf, whirl_runfile_where(rf, WHIRL_RK_BASIN_ATTRACTORS, w, sizeof w),
+      return fail(rf, where_of(rf, rf->line[WHIRL_RK_BASIN_ATTRACTORS] ? WHIRL_RK_BASIN_ATTRACTORS : WHIRL_RK_IPS, w, sizeof w),
                   "IPS = basins needs BASIN_ATTRACTORS (labels of stable "
                   "solutions) and S (the run that computed them)");
   }

@@ -1,0 +1,232 @@
+#!/bin/sh
+# test/regress/runfile_errors.sh — malformed run files and command-line
+# overrides given to `whirl run`.  For every case of the table below:
+#   - the exit status is the expected one (2: a mistake in the run file);
+#   - stderr is exactly ONE line, and it matches the case's regex, which
+#     names the place: "whirl run: case.whirl:LINE: ..." for a mistake in
+#     the file, "whirl run: command line (--KEY=...): ..." for an override;
+#   - no output directory (case.out, or OUT) and no temporary directory
+#     (*.tmp.*) is left behind, and the directories that existed before (a
+#     previous run's output, a foreign directory) are untouched.
+# The valid model is AUTO's demo ab (examples/auto/ab.c) built as a plug-in;
+# two broken plug-ins (no whirl_model_def, wrong ABI number) are built here
+# too, so the script needs a C compiler ($CC, default cc) and skips (77)
+# without one.  Positive controls first check that the base run file works.
+#
+# RUNFILE_ERRORS_MD=FILE: also write the table (mistake, run file, message
+# printed) as Markdown rows to FILE (used for doc/run-file-errors.md).
+# SPDX-License-Identifier: BSD-3-Clause
+set -u
+top_builddir=${top_builddir:-.}
+top_srcdir=${top_srcdir:-.}
+WHIRL="$top_builddir/drivers/whirl"
+case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
+case $top_srcdir in /*) ;; *) top_srcdir="$(pwd)/$top_srcdir" ;; esac
+CC=${CC:-cc}
+md=${RUNFILE_ERRORS_MD:-}
+
+# shellcheck disable=SC2086 # CC may carry flags ("gcc -m64")
+set -- $CC
+if ! command -v "$1" > /dev/null 2>&1; then
+  echo "1..0 # SKIP no C compiler ($CC) to build the test plug-ins"
+  exit 77
+fi
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-rferr.XXXXXX") || exit 1
+trap 'rm -rf "$tmp"' EXIT
+n=0
+fails=0
+ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
+diag() { sed 's/^/# /' "$@"; }
+
+w="$tmp/w"
+mkdir -p "$w/sub" || exit 1
+cd "$w" || exit 1
+
+# ---- plug-ins -------------------------------------------------------------
+$CC -std=c11 -shared -fPIC -I"$top_srcdir/lib" -o ab.so \
+  "$top_srcdir/examples/auto/ab.c" -lm > "$tmp/cc.log" 2>&1
+rc=$?
+ok $rc "ab.so (examples/auto/ab.c) builds as a plug-in"
+printf 'int whirl_not_the_model = 1;\n' > nosym.c
+$CC -shared -fPIC -o nosym.so nosym.c >> "$tmp/cc.log" 2>&1
+rc2=$?
+ok $rc2 "nosym.so (no whirl_model_def) builds"
+printf '#include <whirl/model.h>\nconst whirl_model whirl_model_def = {.abi = WHIRL_MODEL_ABI + 41};\n' > abi.c
+$CC -std=c11 -shared -fPIC -I"$top_srcdir/lib" -o abi.so abi.c >> "$tmp/cc.log" 2>&1
+rc3=$?
+ok $rc3 "abi.so (model ABI + 41) builds"
+if [ $rc -ne 0 ] || [ $rc2 -ne 0 ] || [ $rc3 -ne 0 ]; then
+  diag "$tmp/cc.log"
+  echo "Bail out! cannot build the test plug-ins with $CC"
+  exit 1
+fi
+cp ab.so sub/ab.so
+
+# ---- positive controls -----------------------------------------------------
+# the base of every case: a valid run; its output ab-1.out is the S of the
+# restart cases (labels 1 EP, 2 and 3 HB, 4 EP)
+printf 'model = ./ab.so\nICP = [Da]\nPAR = {B: 14, beta: 3}\nNMX = 50\n' > ab-1.whirl
+"$WHIRL" run ab-1.whirl --quiet > "$tmp/stdout" 2> "$tmp/stderr"
+rc=$?
+ok $rc "control: a valid run file (model = ./ab.so) runs, exit 0"
+[ $rc -eq 0 ] || diag "$tmp/stderr"
+[ -f ab-1.out/solutions ] && grep -q '^LAB 2 ' ab-1.out/solutions
+ok $? "control: it writes ab-1.out/solutions with label 2"
+printf 'model = ab.so\nICP = [Da]\nNMX = 5\n' > sub/bare.whirl
+"$WHIRL" run sub/bare.whirl --quiet > "$tmp/stdout" 2> "$tmp/stderr"
+rc=$?
+ok $rc "control: 'model = ab.so' is relative to the run file (whirl run sub/bare.whirl)"
+[ $rc -eq 0 ] || diag "$tmp/stderr"
+rm -rf bare.out
+cp sub/bare.whirl bare.whirl
+"$WHIRL" run bare.whirl --quiet > "$tmp/stdout" 2> "$tmp/stderr"
+rc=$?
+ok $rc "control: 'model = ab.so' with the run file in the current directory (whirl run bare.whirl)"
+[ $rc -eq 0 ] || diag "$tmp/stderr"
+rm -rf bare.out bare.whirl
+# a directory that is not a whirl output
+mkdir notwhirl.out && echo "not whirl's" > notwhirl.out/keep.txt
+: > plain.out
+
+before=$(ls -d ./*.out ./*.tmp.* 2>/dev/null)
+
+# ---- the table -------------------------------------------------------------
+# c STATUS "mistake" 'regex of the one stderr line' 'run file (printf format)' [override ...]
+c() {
+  want=$1 what=$2 re=$3 text=$4
+  shift 4
+  # shellcheck disable=SC2059
+  printf "$text" > case.whirl
+  "$WHIRL" run case.whirl "$@" > "$tmp/stdout" 2> "$tmp/stderr"
+  rc=$?
+  lines=$(wc -l < "$tmp/stderr" | tr -d ' ')
+  chars=$(wc -c < "$tmp/stderr" | tr -d ' ')
+  msg=$(head -n 1 "$tmp/stderr")
+  ok $(( rc != want )) "$what: exit $rc (want $want)"
+  one=1
+  [ "$lines" -eq 1 ] && [ "$chars" -gt 0 ] && one=0
+  match=1
+  [ $one -eq 0 ] && printf '%s\n' "$msg" | grep -Eq -- "$re" && match=0
+  ok $(( one || match )) "$what: one line on stderr: $msg"
+  if [ $(( one || match )) -ne 0 ]; then
+    echo "#   wanted /$re/, got $lines line(s):"
+    diag "$tmp/stderr"
+  fi
+  after=$(ls -d ./*.out ./*.tmp.* 2>/dev/null)
+  left=0
+  [ "$after" = "$before" ] || left=1
+  [ -f notwhirl.out/keep.txt ] && [ -f ab-1.out/solutions ] && [ -f plain.out ] || left=1
+  ok $left "$what: no output or temporary directory left"
+  if [ $left -ne 0 ]; then
+    echo "#   before: $(echo "$before" | tr '\n' ' ')"
+    echo "#   after:  $(echo "$after" | tr '\n' ' ')"
+  fi
+  if [ -n "$md" ]; then
+    # Markdown: '|' escaped, lines joined by ⏎, code spans with `` ``
+    shown=$(printf '%s' "$text" | sed 's/\\n/ ⏎ /g; s/\\000/\\0/g; s/ ⏎ $//; s/|/\\|/g')
+    [ -n "$shown" ] || shown="(empty file)"
+    args=""
+    [ $# -gt 0 ] && args=" \`$*\`"
+    mark=""
+    [ $(( rc != want || one || match || left )) -ne 0 ] && mark=" **(test fails)**"
+    # shellcheck disable=SC2016 # backquotes are Markdown here
+    printf '| %s | `%s`%s | `` %s ``%s |\n' "$(printf '%s' "$what" | sed 's/|/\\|/g')" \
+      "$shown" "$args" "$(printf '%s' "$msg" | sed 's/|/\\|/g')" "$mark" >> "$md"
+  fi
+  # leave nothing for the next case (whatever this one left)
+  for d in ./*.out ./*.tmp.*; do
+    case " $before " in *"$d"*) ;; *) rm -rf "$d" ;; esac
+  done
+}
+[ -n "$md" ] && : > "$md"
+
+B='model = ./ab.so\nICP = [Da]\n'   # lines 1-2 of most cases
+F='^whirl run: case\.whirl'         # the file, in regexes
+q="[\"']"                           # a quote in a message
+
+# key names
+c 2 "typo in a key" "$F:3: unknown key ${q}DSMX$q \(did you mean DSMAX\?\)$" "$B"'DSMX = 0.1\n'
+c 2 "typo in a long alias" "$F:3: unknown key ${q}stpe$q \(did you mean step\?\)$" "$B"'stpe = 0.1\n'
+c 2 "unknown key, nothing close" "$F:3: unknown key ${q}frobnicate$q" "$B"'frobnicate = 1\n'
+c 2 "blank inside a key" "$F:3: .*not a key name" "$B"'D S = 1\n'
+c 2 "non-ASCII byte in a key" "$F:3: .*not a key name" "$B"'D\351 = 1\n'
+c 2 "key missing before '='" "$F:3: a key is missing" "$B"'= 5\n'
+c 2 "line without '='" "$F:3: expected ${q}key = value$q" "$B"'NMX 100\n'
+c 2 "key given twice" "$F:4: DS given twice \(first at line 3\)$" "$B"'DS = 0.01\nDS = 0.02\n'
+c 2 "key given twice (name and alias)" "$F:4: DS given twice \(first at line 3\)$" "$B"'DS = 0.01\nstep = 0.02\n'
+# values
+c 2 "no value after '='" "$F:3: DS: no value" "$B"'DS =\n'
+c 2 "text where a number goes" "$F:3: DS: ${q}abc$q is not a finite number$" "$B"'DS = abc\n'
+c 2 "text where an integer goes" "$F:3: NMX: ${q}many$q is not an integer$" "$B"'NMX = many\n'
+c 2 "fraction where an integer goes" "$F:3: NMX: ${q}2\.5$q is not an integer$" "$B"'NMX = 2.5\n'
+c 2 "decimal comma" "$F:3: DS: " "$B"'DS = 0,01\n'
+c 2 "NaN value" "$F:3: DS: ${q}nan$q is not a finite number$" "$B"'DS = nan\n'
+c 2 "inf value" "$F:3: DSMAX: ${q}inf$q is not a finite number$" "$B"'DSMAX = inf\n'
+c 2 "overflowing value" "$F:3: RL1: ${q}1e999$q is not a finite number$" "$B"'RL1 = 1e999\n'
+c 2 "NaN in a dictionary" "$F:3: PAR: ${q}nan$q is not a finite number$" "$B"'PAR = {B: nan}\n'
+c 2 "DS = 0" "$F:3: DS = 0: must not be 0$" "$B"'DS = 0\n'
+c 2 "DSMIN > DSMAX (both given)" "$F:4: DSMIN = 0\.5 exceeds DSMAX = 0\.1$" "$B"'DSMIN = 0.5\nDSMAX = 0.1\n'
+c 2 "DSMAX below the default DSMIN" "$F:3: DSMIN = 1e-05 exceeds DSMAX = 1e-06$" "$B"'DSMAX = 1e-6\n'
+c 2 "RL0 >= RL1" "$F:4: RL0 = 2 must be below RL1 = 1$" "$B"'RL0 = 2\nRL1 = 1\n'
+c 2 "A0 >= A1" "$F:4: A0 = 5 must be below A1 = 1$" "$B"'A0 = 5\nA1 = 1\n'
+c 2 "NCOL out of range" "$F:3: NCOL = 8: must be in \[2, 7\]$" "$B"'NCOL = 8\n'
+c 2 "JAC out of range" "$F:3: JAC = 2: must be 0" "$B"'JAC = 2\n'
+c 2 "ISP out of range (4)" "$F:3: ISP = 4: must be 0, 1, 2 or 3" "$B"'ISP = 4\n'
+c 2 "ISW out of range" "$F:3: ISW = 3: must be 1" "$B"'ISW = 3\n'
+c 2 "IPS = 4 unsupported" "$F:3: IPS = 4 is not supported" "$B"'IPS = 4\n'
+c 2 "unknown METHOD" "$F:3: METHOD: ${q}rk4$q is not a method" "$B"'METHOD = rk4\n'
+c 2 "UZR not a dictionary" "$F:3: UZR: expected a dictionary" "$B"'UZR = 0.1\n'
+# syntax
+c 2 "unterminated quote (string key)" "$F:3: OUT: unterminated quoted string$" "$B"'OUT = "abc\n'
+c 2 "unterminated quote (in a dictionary)" "$F:3: PAR: unterminated quoted string$" "$B""PAR = {B: 'x}\n"
+c 2 "unbalanced bracket" "$F:2: ICP: ${q}\]$q missing$" 'model = ./ab.so\nICP = [Da\n'
+c 2 "unbalanced brace" "$F:3: PAR: ${q}\}$q missing$" "$B"'PAR = {Da: 1\n'
+c 2 "extra closing brace" "$F:3: PAR: unexpected text after the closing bracket$" "$B"'PAR = {Da: 1}}\n'
+c 2 "bracket closes a brace" "$F:3: PAR: " "$B"'PAR = {Da: 1]\n'
+c 2 "list where one value goes" "$F:3: PAR: ${q}Da$q has a list where one value is expected$" "$B"'PAR = {Da: [1, 2]}\n'
+c 2 "NUL byte in the file" "$F:3: NUL byte in the line" "$B"'NMX = 1\000\n'
+c 2 "control character (form feed)" "$F:3: control character in the line$" "$B"'DS = 0.01\f\n'
+# required keys
+c 2 "missing model" "$F:2: end of file without the required key ${q}model$q" 'ICP = [Da]\nDS = 0.01\n'
+c 2 "missing ICP" "$F:2: end of file without the required key ${q}ICP$q" 'model = ./ab.so\nNMX = 10\n'
+c 2 "empty run file" "$F(:1)?: .*model" ''
+# the model
+c 2 "unknown built-in model name" "$F:1: model: ${q}nosuch$q is neither a built-in model \(sfd, sfd-rotating\)" 'model = nosuch\nICP = [Da]\n'
+c 2 "plug-in path that does not exist" "$F:1: model: cannot open plug-in ${q}(\./)*nosuch\.so$q: No such file" 'model = ./nosuch.so\nICP = [Da]\n'
+c 2 "plug-in name that does not exist" "$F:1: model: cannot open plug-in ${q}(\./)*nosuch\.so$q: No such file" 'model = nosuch.so\nICP = [Da]\n'
+c 2 "plug-in without the symbol" "$F:1: model: plug-in ${q}(\./)*nosym\.so$q does not export the symbol ${q}whirl_model_def$q" 'model = ./nosym.so\nICP = [Da]\n'
+c 2 "plug-in with a wrong ABI number" "$F:1: model: plug-in ${q}(\./)*abi\.so$q was built for model ABI 42, .*needs ABI 1" 'model = ./abi.so\nICP = [Da]\n'
+c 2 "NDIM mismatch" "$F:3: NDIM = 3, but model ${q}ab$q has 2 state components$" "$B"'NDIM = 3\n'
+c 2 "ICP naming an unknown parameter" "$F:2: ICP: ${q}Foo$q is not a parameter of model ${q}ab$q \(Da, B, beta\)$" 'model = ./ab.so\nICP = [Foo]\n'
+c 2 "ICP index out of range" "$F:2: ICP: ${q}4$q is not a parameter" 'model = ./ab.so\nICP = [4]\n'
+c 2 "ICP listing a parameter twice" "$F:2: ICP: parameter ${q}Da$q listed twice$" 'model = ./ab.so\nICP = [Da, Da]\n'
+c 2 "PAR with an unknown name" "$F:3: PAR: ${q}Foo$q is not a parameter of model ${q}ab$q" "$B"'PAR = {Foo: 1}\n'
+c 2 "PAR with too many values" "$F:3: PAR: ${q}4$q is not a parameter" "$B"'PAR = [1, 2, 3, 4]\n'
+c 2 "U with an unknown component" "$F:3: U: ${q}u3$q is not a state component of model ${q}ab$q \(u1, u2\)$" "$B"'U = {u3: 1}\n'
+c 2 "IPS = 2 without a start orbit" "$F:3: IPS = 2 from the model's start needs a start orbit" "$B"'IPS = 2\n'
+c 2 "UZR for another parameter" "$F:3: UZR: user points are supported for the continuation parameter" "$B"'UZR = {B: 1}\n'
+c 2 "IPS = basins without BASIN_AXES" "$F:[1-9][0-9]*: IPS = basins needs BASIN_AXES" "$B"'IPS = basins\n'
+# restarts
+c 2 "IRS without S" "$F:3: IRS names a label but S .* is not given$" "$B"'IRS = 2\n'
+c 2 "ISW = -1 without IRS" "$F:3: ISW = -1 needs a labelled start point \(IRS\)$" "$B"'ISW = -1\n'
+c 2 "S directory missing" "$F:(3|4): IRS: cannot open nodir\.out/solutions: No such file" "$B"'IRS = 2\nS = nodir.out\n'
+c 2 "S not a whirl output (a directory)" "$F:(3|4): IRS: cannot open notwhirl\.out/solutions" "$B"'IRS = 2\nS = notwhirl.out\n'
+c 2 "S not a whirl output (a file)" "$F:(3|4): IRS: cannot open plain\.out/solutions: Not a directory" "$B"'IRS = 2\nS = plain.out\n'
+c 2 "IRS label not present" "$F:3: IRS: ab-1\.out/solutions: there is no label 99$" "$B"'IRS = 99\nS = ab-1.out\n'
+c 2 "IRS type count not present" "$F:3: IRS: ab-1\.out/solutions: there is no LP number 1" "$B"'IRS = LP1\nS = ab-1.out\n'
+c 2 "ISW = 2 with one ICP" "$F:2: ISW = 2 \(two-parameter continuation\) needs two parameters in ICP$" "$B"'IRS = 2\nS = ab-1.out\nISW = 2\n'
+c 2 "ISW = -1 at an HB label" "$F:5: ISW = -1 switches at a BP" "$B"'IRS = 2\nS = ab-1.out\nISW = -1\n'
+c 2 "OUT is a foreign directory" "$F:3: output directory ${q}notwhirl\.out$q exists and was not written by whirl run" "$B"'OUT = notwhirl.out\n'
+# command-line overrides
+c 2 "bad override value (--DS=abc)" "^whirl run: command line \(--DS=abc\): DS: ${q}abc$q is not a finite number$" "$B" --DS=abc
+c 2 "override with an unknown key" "^whirl run: command line \(--bogus=1\): unknown key ${q}bogus$q" "$B" --bogus=1
+c 2 "override key typo" "^whirl run: command line \(--DSMX=0\.1\): unknown key ${q}DSMX$q \(did you mean DSMAX\?\)$" "$B" --DSMX=0.1
+c 2 "override without '='" "^whirl run: command line \(--DS\): expected --KEY=value$" "$B" --DS
+c 2 "override naming an unknown parameter" "^whirl run: command line \(--ICP=\[Foo\]\): ICP: ${q}Foo$q is not a parameter" "$B" '--ICP=[Foo]'
+c 2 "override with an unknown model" "^whirl run: command line \(--model=nosuch\): model: " "$B" --model=nosuch
+c 2 "override NDIM mismatch" "^whirl run: command line \(--NDIM=3\): NDIM = 3, but" "$B" --NDIM=3
+c 2 "override DSMAX below the default DSMIN" "^whirl run: command line \(--DSMAX=1e-6\): DSMIN = 1e-05 exceeds DSMAX = 1e-06$" "$B" --DSMAX=1e-6
+
+rm -f case.whirl
+echo "1..$n"
+[ "$fails" -eq 0 ]
