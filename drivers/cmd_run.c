@@ -291,9 +291,6 @@ static int run_branch(run_ctx *R, branch_spec *b) {
       so.tan = (b->fold || b->hopf) ? NULL : (double *)pt->t;
       so.stable = pt->stable;
       if (b->kind == RUN_COLLOC) {
-        whirl_colloc_options co;
-        (void)co;
-        so.ntst = s->ntst;
         so.ncol = s->ncol;
         so.mesh = (double *)whirl_colloc_mesh(b->colloc);
         so.ntst = (int)((b->nb - (R->prob.autonomous ? 1 : 0)) / R->n - 1) / s->ncol;
@@ -768,12 +765,9 @@ int cmd_run(int argc, char **argv) {
   }
   /* the labelled start solution */
   if (R.s->irs > 0 || R.s->irs_type[0]) {
-    char msg[1024], S[8192];
-    if (R.s->s[0] == '/' || !R.rundir[0])
-      snprintf(S, sizeof S, "%s", R.s->s);
-    else
-      snprintf(S, sizeof S, "%s", R.s->s); /* S is relative to the cwd, like out */
-    if (run_solution_find(S, R.prob.name, R.npar, R.s->irs, R.s->irs_type,
+    char msg[1024];
+    /* S is relative to the current directory, like the output directory */
+    if (run_solution_find(R.s->s, R.prob.name, R.npar, R.s->irs, R.s->irs_type,
                           &O.sol, msg, sizeof msg)) {
       run_fail(&R, WHIRL_RK_IRS, "IRS: %s", msg);
       goto out;

@@ -147,6 +147,9 @@ int run_basins(run_ctx *R) {
     fputc('\n', R->log);
     run_solution_free(&so);
   }
+  fprintf(R->log, "basins at");
+  for (size_t k = 0; k < R->npar; k++) fprintf(R->log, " %s = %.10g", R->pnames[k], R->par[k]);
+  fputc('\n', R->log);
   for (size_t j = 0; j < g1; j++)
     for (size_t i = 0; i < g0; i++) {
       double *x = x0 + (j * g0 + i) * n;

@@ -175,8 +175,6 @@ int run_solution_find(const char *dir, const char *model, size_t npar,
         goto done;
       }
       if (!strncmp(r.buf, "END", 3)) break;
-      long back = 0;
-      (void)back;
       if (!strncmp(r.buf, "TAN ", 4) || !strncmp(r.buf, "MESH ", 5)) {
         int is_tan = r.buf[0] == 'T';
         size_t m = is_tan ? nx + 1 : (size_t)s.ntst + 1;
