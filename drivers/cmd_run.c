@@ -131,6 +131,31 @@ static void base_of(const branch_spec *b, const double *Z, const double *p,
     memcpy(pfull, p, b->sys->npar * sizeof *pfull);
 }
 
+/* The quantity a UZR/UZSTOP value refers to (whirl_cont_options.uz_fun). */
+typedef struct uz_ctx {
+  run_ctx *R;
+  const branch_spec *b;
+  int what[2 * WHIRL_RUN_MAXITEMS]; /* >= 0 parameter, -1 period, -2 - i state i */
+  double *pfull, *state;
+} uz_ctx;
+
+static double uz_quantity(size_t k, const double *x, const double *p, void *ctx) {
+  uz_ctx *u = ctx;
+  const branch_spec *b = u->b;
+  const int w = u->what[k];
+  base_of(b, x, p, u->pfull);
+  if (w >= 0) return u->pfull[w];
+  if (w == -1)
+    return b->kind == RUN_COLLOC ? whirl_colloc_period(b->colloc, x, u->pfull)
+                                 : whirl_hbm_period(b->hbm, x, u->pfull);
+  if (b->kind == RUN_EQ) return x[-2 - w];
+  double l2, period;
+  const void *obj = b->kind == RUN_COLLOC ? (const void *)b->colloc : (const void *)b->hbm;
+  if (run_point_measures(u->R, b->kind, obj, x, u->pfull, &l2, &period, u->state))
+    return NAN;
+  return u->state[-2 - w];
+}
+
 static int run_branch(run_ctx *R, branch_spec *b) {
   const whirl_run_settings *s = R->s;
   whirl_cont_options o;
@@ -150,45 +175,39 @@ static int run_branch(run_ctx *R, branch_spec *b) {
   o.detect_pd = s->isp == 2;
   if (b->kind != RUN_EQ && s->isp != 2) o.detect_hb = 0; /* TR needs Floquet */
   if (b->sys->Jp && b->sys->n > 400) o.linsol = WHIRL_LINSOL_SPARSE;
-  /* user points and stops of the continuation parameter */
+  /* user points (UZR) and stops (UZSTOP): values of a parameter, of the
+   * period (PERIOD, AUTO's PAR(11)) or of a state component (its MAX for
+   * periodic orbits), all localised by the core through uz_quantity */
   double uz[2 * WHIRL_RUN_MAXITEMS];
+  int uz_stop[2 * WHIRL_RUN_MAXITEMS];
+  uz_ctx uc = {R, b, {0}, NULL, NULL};
   size_t nuz = 0;
-  for (size_t i = 0; i < s->nuzr; i++) {
-    int k = run_par_index(R, &s->uzr[i].ref);
-    if (k != b->icp) {
-      run_fail(R, WHIRL_RK_UZR, "UZR: user points are supported for the "
-               "continuation parameter '%s' only", R->pnames[b->icp]);
-      return -2;
-    }
-    uz[nuz++] = s->uzr[i].value;
-  }
-  /* stops: on the continuation parameter they are user points, localised
-   * by the core; on another parameter, the period (PERIOD, AUTO's PAR(11))
-   * or a state component (its MAX for periodic orbits) the branch ends at
-   * the first point beyond the value (not localised) */
-  int stop_what[WHIRL_RUN_MAXITEMS]; /* >= 0 parameter, -1 period, -2 - i state i */
-  double stop_prev[WHIRL_RUN_MAXITEMS];
-  for (size_t i = 0; i < s->nuzstop; i++) {
-    int k = run_par_index(R, &s->uzstop[i].ref), xi;
-    if (k == b->icp) uz[nuz++] = s->uzstop[i].value;
+  for (size_t i = 0; i < s->nuzr + s->nuzstop; i++) {
+    const int is_stop = i >= s->nuzr;
+    const whirl_run_value *u = is_stop ? &s->uzstop[i - s->nuzr] : &s->uzr[i];
+    int k = run_par_index(R, &u->ref), xi;
     if (k >= 0) {
-      stop_what[i] = k;
-    } else if (b->kind != RUN_EQ && (!strcasecmp(s->uzstop[i].ref.name, "PERIOD") ||
-                                     s->uzstop[i].ref.index == 11)) {
-      stop_what[i] = -1;
-    } else if ((xi = run_state_index(R, &s->uzstop[i].ref)) >= 0 &&
-               !s->uzstop[i].ref.index) {
-      stop_what[i] = -2 - xi;
+      uc.what[nuz] = k;
+    } else if (b->kind != RUN_EQ && (!strcasecmp(u->ref.name, "PERIOD") ||
+                                     u->ref.index == 11)) {
+      uc.what[nuz] = -1;
+    } else if ((xi = run_state_index(R, &u->ref)) >= 0 && !u->ref.index) {
+      uc.what[nuz] = -2 - xi;
     } else {
-      run_fail(R, WHIRL_RK_UZSTOP, "UZSTOP: '%s' is neither a parameter, "
-               "PERIOD (periodic orbits) nor a state component of model '%s'",
-               s->uzstop[i].ref.index ? "(index)" : s->uzstop[i].ref.name,
-               R->prob.name);
+      run_fail(R, is_stop ? WHIRL_RK_UZSTOP : WHIRL_RK_UZR,
+               "%s: '%s' is neither a parameter, PERIOD (periodic orbits) nor "
+               "a state component of model '%s'", is_stop ? "UZSTOP" : "UZR",
+               u->ref.index ? "(index)" : u->ref.name, R->prob.name);
       return -2;
     }
+    uz[nuz] = u->value;
+    uz_stop[nuz++] = is_stop;
   }
   o.uz = uz;
+  o.uz_stop = uz_stop;
   o.nuz = nuz;
+  o.uz_fun = uz_quantity;
+  o.uz_ctx = &uc;
   char err[512];
   whirl_cont *c = whirl_cont_alloc(b->sys, &o, err, sizeof err);
   if (!c) {
@@ -204,6 +223,8 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     whirl_cont_free(c);
     return -1;
   }
+  uc.pfull = pfull; /* scratch shared with the loop below, never in use */
+  uc.state = state; /* by both at once */
   if (b->bp)
     rc = whirl_cont_start_switch(c, b->bp, dir);
   else if (b->dir)
@@ -239,12 +260,6 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     base_of(b, pt->x, pt->p, pfull);
     int lab = 0, labelled = type != WHIRL_PT_REGULAR ||
                             (s->npr > 0 && pt->index > 0 && pt->index % (size_t)s->npr == 0);
-    if (type == WHIRL_PT_UZ)
-      for (size_t i = 0; i < s->nuzstop; i++)
-        if (stop_what[i] == b->icp &&
-            fabs(pt->p[b->icp] - s->uzstop[i].value) <=
-            1e-9 * (1.0 + fabs(s->uzstop[i].value)))
-          stop = 1;
     if (labelled) lab = ++R->label;
     if (type >= 0 && type < 16) counts[type]++;
     double l2 = 0.0, period = 0.0;
@@ -255,20 +270,6 @@ static int run_branch(run_ctx *R, branch_spec *b) {
                       pfull, pt->stable, &l2, &period, state)) {
       rc = -1;
       break;
-    }
-    for (size_t i = 0; i < s->nuzstop; i++) {
-      if (stop_what[i] == b->icp) continue;
-      double v = stop_what[i] >= 0    ? pfull[stop_what[i]]
-                 : stop_what[i] == -1 ? period
-                                      : state[-2 - stop_what[i]];
-      double d = v - s->uzstop[i].value;
-      if (npts > 1 && (d == 0.0 || (d > 0) != (stop_prev[i] > 0))) {
-        stop = 1;
-        fprintf(R->log, "  UZSTOP %s = %g passed at PT %zu: branch ends\n",
-                s->uzstop[i].ref.index ? "PERIOD" : s->uzstop[i].ref.name,
-                s->uzstop[i].value, pt->index);
-      }
-      stop_prev[i] = d;
     }
     if (!stop && pt->index > 0 && (l2 < s->a0 || l2 > s->a1)) {
       stop = 1;
@@ -318,7 +319,7 @@ static int run_branch(run_ctx *R, branch_spec *b) {
   }
   if (rc == WHIRL_DONE || stop) {
     fprintf(R->log, "  ended: %s after %zu points\n",
-            stop ? "UZSTOP / A0-A1 reached"
+            stop ? "L2-NORM left [A0, A1]"
                  : whirl_stop_reason_name(whirl_cont_stop_reason(c)),
             npts);
     rc = 0;
@@ -332,6 +333,9 @@ static int run_branch(run_ctx *R, branch_spec *b) {
   fprintf(R->log, "  %zu steps, %zu rejected, %zu Newton iterations, %zu "
           "Jacobians, %zu special points\n", st->steps, st->rejected,
           st->newton_its, st->jac_evals, st->special);
+  if (st->spectrum_failed)
+    fprintf(R->log, "  stability unknown at %zu points: the spectrum could not "
+            "be computed there (STAB -1)\n", st->spectrum_failed);
   if (!R->quiet) {
     printf("branch %d: %zu points, %s in [%.8g, %.8g]", R->branch, npts,
            R->pnames[b->icp], pmin, pmax);
@@ -516,6 +520,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
     co.ntst = (size_t)s->ntst;
     co.ncol = (size_t)s->ncol;
     co.forcing_param = R->model->forcing_param;
+    co.adapt_every = s->iad; /* IAD: a new mesh every IAD steps, as AUTO */
     int pd = restart && s->isw == -1 && !strcmp(so->ty, "PD");
     if (restart && so->kind == RUN_COLLOC && (pd || s->isw == -1)) {
       co.ntst = (size_t)so->ntst; /* switching happens on the stored mesh */

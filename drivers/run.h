@@ -78,6 +78,11 @@ int run_solution_find(const char *dir, const char *model, size_t npar,
 
 /* run_table.c */
 int run_table_header(run_ctx *R, run_kind kind, int icp, int q);
+/* L2-NORM, PERIOD (0 for equilibria) and the state (its MAX over the orbit
+ * for periodic orbits, mx[n]) of the solution xb of a problem of this kind */
+int run_point_measures(const run_ctx *R, run_kind kind, const void *obj,
+                       const double *xb, const double *p, double *l2,
+                       double *period, double *mx);
 int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br, size_t pt,
                   const char *ty, int lab, const double *xb, const double *p,
                   int stable, double *l2out, double *period, double *state);

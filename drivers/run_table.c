@@ -1,7 +1,7 @@
 /* drivers/run_table.c — `whirl run` output: the branch table branches.tsv
  * (AUTO's b-file as TSV: BR PT TY LAB, then all parameters, PERIOD for
  * periodic orbits, L2-NORM, the state (MAX of each component for periodic
- * orbits, as AUTO prints), and STAB: 1 stable, 0 unstable, -1 unknown) and
+ * orbits: the maximum over the orbit, see colloc_max), and STAB: 1 stable, 0 unstable, -1 unknown) and
  * the picture diagram.png drawn from it by gnuplot.
  *
  * L2-NORM follows AUTO: |x| for an equilibrium, sqrt(∫_0^1 |x(τ)|² dτ) for a
@@ -71,13 +71,59 @@ static const double gw[5] = {0.2369268850561891, 0.4786286704993665,
                              0.5688888888888889, 0.4786286704993665,
                              0.2369268850561891};
 
-int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,
-                  size_t pt, const char *ty, int lab, const double *xb,
-                  const double *p, int stable, double *l2out, double *period_out,
-                  double *state) {
-  FILE *f = R->table;
+/* The maximum of each component of the collocation polynomial over the
+ * orbit, mx[n] (on entry: the maxima over the nodes).  AUTO prints the
+ * maximum over its mesh and collocation nodes, which depends on the mesh:
+ * on a spike (ab's u2) two meshes differ in the 4th digit.  Here the
+ * polynomial is sampled at 8 points per node interval and every sample
+ * maximum is refined by golden-section search between its neighbours, so
+ * MAX is that of the orbit, to its accuracy (doc/auto-reference.md). */
+static int colloc_max(const whirl_colloc *c, const double *xb,
+                      const double *mesh, size_t ntst, size_t n, double *mx,
+                      double *v) {
+  const size_t ncol = (whirl_colloc_size(c) / n - 1) / ntst, sub = 8;
+  const size_t ns = ntst * ncol * sub; /* samples over [0, 1) */
+  double *best = malloc(2 * n * sizeof *best), *arg = best + n;
+  if (!best) return -1;
+  for (size_t i = 0; i < n; i++) best[i] = -HUGE_VAL, arg[i] = 0.0;
+  for (size_t q = 0; q < ns; q++) {
+    const size_t k = q / (ncol * sub), r = q % (ncol * sub);
+    const double tau = mesh[k] + (mesh[k + 1] - mesh[k]) * (double)r / (double)(ncol * sub);
+    whirl_colloc_eval(c, xb, tau, v);
+    for (size_t i = 0; i < n; i++)
+      if (v[i] > best[i]) best[i] = v[i], arg[i] = tau;
+  }
+  const double g = 0.5 * (sqrt(5.0) - 1.0);
+  for (size_t i = 0; i < n; i++) {
+    /* the neighbouring samples bracket the maximum (within one interval
+     * of the mesh at most, where the polynomial is smooth) */
+    size_t k = 0;
+    while (k + 1 < ntst && mesh[k + 1] <= arg[i]) k++;
+    const double h = (mesh[k + 1] - mesh[k]) / (double)(ncol * sub);
+    double a = fmax(arg[i] - h, 0.0), b = fmin(arg[i] + h, 1.0);
+    double x1 = b - g * (b - a), x2 = a + g * (b - a), f1, f2;
+    whirl_colloc_eval(c, xb, x1, v), f1 = v[i];
+    whirl_colloc_eval(c, xb, x2, v), f2 = v[i];
+    for (int it = 0; it < 60 && b - a > 1e-15; it++) {
+      if (f1 < f2) {
+        a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a);
+        whirl_colloc_eval(c, xb, x2, v), f2 = v[i];
+      } else {
+        b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a);
+        whirl_colloc_eval(c, xb, x1, v), f1 = v[i];
+      }
+    }
+    mx[i] = fmax(mx[i], fmax(best[i], fmax(f1, f2)));
+  }
+  free(best);
+  return 0;
+}
+
+int run_point_measures(const run_ctx *R, run_kind kind, const void *obj,
+                       const double *xb, const double *p, double *l2out,
+                       double *period_out, double *mx) {
   const size_t n = R->n;
-  double *v = calloc(2 * n, sizeof *v), *mx = v + n;
+  double *v = calloc(n, sizeof *v);
   if (!v) return -1;
   double l2 = 0.0, period = 0.0;
   if (kind == RUN_EQ) {
@@ -92,6 +138,10 @@ int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,
     for (size_t i = 0; i < n; i++) mx[i] = -HUGE_VAL;
     for (size_t j = 0; j < nn; j++)
       for (size_t i = 0; i < n; i++) mx[i] = fmax(mx[i], xb[n * j + i]);
+    if (colloc_max(c, xb, mesh, ntst, n, mx, v)) {
+      free(v);
+      return -1;
+    }
     for (size_t k = 0; k < ntst; k++) {
       const double a = mesh[k], h = mesh[k + 1] - mesh[k];
       for (int g = 0; g < 5; g++) {
@@ -113,7 +163,25 @@ int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,
       l2 += s / (double)m;
     }
   }
-  l2 = sqrt(l2);
+  *l2out = sqrt(l2);
+  *period_out = period;
+  free(v);
+  return 0;
+}
+
+int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,
+                  size_t pt, const char *ty, int lab, const double *xb,
+                  const double *p, int stable, double *l2out, double *period_out,
+                  double *state) {
+  FILE *f = R->table;
+  const size_t n = R->n;
+  double *mx = calloc(n, sizeof *mx);
+  if (!mx) return -1;
+  double l2, period;
+  if (run_point_measures(R, kind, obj, xb, p, &l2, &period, mx)) {
+    free(mx);
+    return -1;
+  }
   fprintf(f, "%d\t%zu\t%s\t%d", br, pt, ty, lab);
   for (size_t k = 0; k < R->npar; k++) fprintf(f, "\t%.12g", p[k]);
   if (kind != RUN_EQ) fprintf(f, "\t%.12g", period);
@@ -125,7 +193,7 @@ int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,
   *l2out = l2;
   *period_out = period;
   memcpy(state, mx, n * sizeof *state);
-  free(v);
+  free(mx);
   return ferror(f) ? -1 : 0;
 }
 

@@ -106,6 +106,16 @@ static int multipliers_of(const whirl_problem *prob, const double *p,
     for (size_t i = 0; i < n; ++i) best = fmin(best, hypot(er[i] - 1.0, ei[i]));
     if (trivial) *trivial = best;
     rc = poincare_multipliers(prob, p, t0, x0, xT, Mm, er, ei);
+    if (rc == WHIRL_ESINGULAR && best < INFINITY) {
+      /* f(x0) = 0: a constant orbit (the start of a branch at a Hopf
+       * point), with no Poincaré section: the eigenvalue of M nearest to 1
+       * is dropped instead (at the Hopf point M has the pair e^{±iωT} = 1) */
+      size_t drop = 0;
+      for (size_t i = 1; i < n; ++i)
+        if (hypot(er[i] - 1.0, ei[i]) < hypot(er[drop] - 1.0, ei[drop])) drop = i;
+      for (size_t i = drop; i + 1 < n; ++i) er[i] = er[i + 1], ei[i] = ei[i + 1];
+      rc = WHIRL_OK;
+    }
     if (rc == WHIRL_OK) {
       for (size_t i = 0; i + 1 < n; ++i) re[i] = er[i], im[i] = ei[i];
       *m = n - 1;

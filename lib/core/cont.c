@@ -44,6 +44,7 @@ const char *whirl_stop_reason_name(int reason) {
   case WHIRL_STOP_LOOP: return "branch closed on itself";
   case WHIRL_STOP_XMAX: return "solution norm exceeded its bound";
   case WHIRL_STOP_BP: return "branch point (stop_at_bp)";
+  case WHIRL_STOP_UZ: return "user stop value reached (UZSTOP)";
   default: return "unknown";
   }
 }
@@ -232,10 +233,15 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
     if (!uz) goto nomem;
     memcpy(uz, opt->uz, opt->nuz * sizeof *uz);
     c->opt.uz = uz;
+    int *stop = calloc(opt->nuz, sizeof *stop);
+    if (!stop) goto nomem;
+    if (opt->uz_stop) memcpy(stop, opt->uz_stop, opt->nuz * sizeof *stop);
+    c->opt.uz_stop = stop;
   }
   return c;
 nomem:
   if (c && c->opt.uz == opt->uz) c->opt.uz = NULL; /* not yet owned */
+  if (c && c->opt.uz_stop == opt->uz_stop) c->opt.uz_stop = NULL;
   whirl_cont_free(c);
   if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_cont_alloc: out of memory");
   return NULL;
@@ -264,7 +270,10 @@ void whirl_cont_free(whirl_cont *c) {
   if (c->queue)
     for (size_t i = 0; i < c->qcap; ++i) state_free(&c->queue[i]);
   free(c->queue);
-  if (c->opt.nuz) free((double *)c->opt.uz);
+  if (c->opt.nuz) {
+    free((double *)c->opt.uz);
+    free((int *)c->opt.uz_stop);
+  }
   free(c);
 }
 
@@ -529,12 +538,20 @@ int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
     rc = c->sys.spectrum(st->X, st->p, c->sparse || c->bs ? NULL : c->J, st->re, st->im,
                          &m, c->sys.data);
     ++c->stats.eig_evals;
-    if ((rc = classify(c, rc, "spectrum")) != 0) return rc;
-    st->nspec = m;
-    if (c->sys.spectrum_kind == WHIRL_SPEC_MULTIPLIERS)
-      multiplier_tests(st, m);
-    else
-      eigenvalue_tests(st, m);
+    if (rc == WHIRL_ESINGULAR || rc == WHIRL_ELAPACK || rc == WHIRL_EMAXITER) {
+      /* the stability of this point cannot be computed (e.g. the condensed
+       * monodromy matrix of an orbit near a homoclinic one overflows): it
+       * stays unknown, and no HB/TR/PD is sought across it; the branch
+       * itself is unaffected */
+      ++c->stats.spectrum_failed;
+    } else {
+      if ((rc = classify(c, rc, "spectrum")) != 0) return rc;
+      st->nspec = m;
+      if (c->sys.spectrum_kind == WHIRL_SPEC_MULTIPLIERS)
+        multiplier_tests(st, m);
+      else
+        eigenvalue_tests(st, m);
+    }
   }
   if (c->sys.test && c->sys.ntest) {
     for (size_t k = 0; k < c->sys.ntest; ++k) st->ttype[k] = 0;
@@ -567,6 +584,7 @@ static void fill_point(whirl_cont *c) {
   pt->test[0] = o->psi_lp;
   pt->test[1] = o->sign_det;
   pt->test[2] = o->has_hb ? o->psi_hb : NAN;
+  pt->uz = o->type == WHIRL_PT_UZ ? o->uz : -1;
 }
 
 static void push(whirl_cont *c, const cont_state *st, int type) {
@@ -851,6 +869,30 @@ int whirl_cont_step(whirl_cont *c) {
   if (c->done) return WHIRL_DONE;
   const size_t n = c->n, N = c->N;
   const whirl_cont_options *o = &c->opt;
+  /* every point of the last step has been handed out: the system may now
+   * change the representation of its unknowns (a new collocation mesh) */
+  if (c->sys.remap) {
+    double *v[5] = {c->cur.X, c->cur.t, c->Xstart, c->Xprev, c->tprev};
+    size_t nv = c->have_tprev ? 5 : c->have_prev ? 4 : 3;
+    int rc = c->sys.remap(v, nv, c->cur.p, c->sys.data);
+    if (rc < 0)
+      return CONT_FAIL(c, rc, "the system's remap callback failed (%d)", rc);
+    if (rc == 1) {
+      c->fact_ok = 0;
+      for (int k = 1; k < 5; k += 3) { /* the unit tangents stay unit */
+        if (k == 4 && !c->have_tprev) break;
+        const double nt = cont_norm(c, v[k]);
+        if (nt > 0 && isfinite(nt))
+          for (size_t i = 0; i < N; ++i) v[k][i] /= nt;
+      }
+      memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
+      rc = cont_analyse(c, &c->cur, c->dir);
+      if (rc < 0) return rc;
+      if (rc > 0)
+        return CONT_FAIL(c, WHIRL_ESINGULAR, "the current point is singular "
+                         "after the system's change of representation (remap)");
+    }
+  }
   int last_fail = 1;
   double cosang = 1.0;
   int its = 0;
@@ -948,8 +990,22 @@ int whirl_cont_step(whirl_cont *c) {
       ++nev;
     }
   }
+  /* A fold and a branch point in the same step at the same point: the
+   * branch turns at a pitchfork it meets (enz's asymmetric branch at the
+   * symmetric one).  The fold test, the parameter component of a tangent
+   * that is undetermined there, is noisy near the point; the determinant's
+   * zero is not: both are reported at the branch point. */
+  if (nev >= 2 && evs[0].ev == EV_LP && evs[1].ev == EV_BP) {
+    double d2 = 0.0;
+    for (size_t i = 0; i < N; ++i) {
+      const double di = evs[0].st->X[i] - evs[1].st->X[i];
+      d2 += (i == n ? o->p_weight * o->p_weight : 1.0) * di * di;
+    }
+    if (sqrt(d2) <= 1e-2 * fabs(c->ds)) cont_state_copy(c, evs[0].st, evs[1].st);
+  }
   for (size_t k = 0; k < o->nuz && nev < maxev; ++k) {
-    if (sgn(a->X[n] - o->uz[k]) * sgn(b->X[n] - o->uz[k]) < 0) {
+    if (sgn(cont_uz_value(c, k, a) - o->uz[k]) *
+            sgn(cont_uz_value(c, k, b) - o->uz[k]) < 0) {
       cont_state *q = &c->queue[c->qcap - 1 - nslot++];
       if (cont_locate(c, EV_UZ, k, b, q) == 0) {
         evs[nev].ev = EV_UZ;
@@ -999,8 +1055,14 @@ int whirl_cont_step(whirl_cont *c) {
     /* a complex pair through the unit circle of the multipliers: torus */
     if (type == WHIRL_PT_HB && c->sys.spectrum_kind == WHIRL_SPEC_MULTIPLIERS)
       type = WHIRL_PT_TR;
+    evs[i].st->uz = evs[i].ev == EV_UZ ? (int)evs[i].k : -1;
     push(c, evs[i].st, type);
     ++c->stats.special;
+    if (evs[i].ev == EV_UZ && o->uz_stop[evs[i].k]) {
+      finish(c, WHIRL_STOP_UZ);
+      ended = 1;
+      break;
+    }
     if (evs[i].ev == EV_PMAX || evs[i].ev == EV_PMIN) {
       finish(c, evs[i].ev == EV_PMAX ? WHIRL_STOP_PMAX : WHIRL_STOP_PMIN);
       ended = 1;

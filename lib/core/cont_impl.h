@@ -37,6 +37,7 @@ typedef struct cont_state {
   int *ttype;      /* the point types their zeros stand for [ntest] */
   int tests_valid; /* 0 right after a branch switch: no detection yet */
   int type, label;
+  int uz;          /* UZ: index of the user value, -1 otherwise */
 } cont_state;
 
 struct whirl_cont {
@@ -110,6 +111,9 @@ void cont_state_copy(const whirl_cont *c, cont_state *dst,
 /* Event kinds localised by locate.c. */
 enum { EV_LP, EV_BP, EV_HB, EV_PD, EV_PMIN, EV_PMAX, EV_UZ, EV_NKIND = EV_UZ,
        EV_SYS = EV_UZ + 1 /* system test function k */ };
+
+/* The quantity the user value uz[k] refers to at state st (locate.c). */
+double cont_uz_value(const whirl_cont *c, size_t k, const cont_state *st);
 
 /* Localise the zero of the test function of event kind ev (k: UZ index)
  * between c->cur (s = 0) and the trial point (s = ds) along c->dir; on

@@ -4,13 +4,21 @@
  * variant of regula falsi (Dowell & Jarratt 1971), each trial σ corrected by
  * Newton onto the branch.  Test functions: LP, the parameter component of the
  * unit tangent; BP, det [F_x F_p; r^T]; HB, the real part of the complex
- * eigenvalue nearest the imaginary axis; bounds and UZ, p - value; the
+ * eigenvalue nearest the imaginary axis; bounds, p - value; UZ, the user
+ * quantity (the parameter by default) - value; the
  * system's own test functions (codimension-two points on fold curves).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cont_impl.h"
+
+double cont_uz_value(const whirl_cont *c, size_t k, const cont_state *st) {
+  if (!c->opt.uz_fun) return st->X[c->n];
+  st->p[c->opt.icp] = st->X[c->n]; /* p may lag X during a correction */
+  return c->opt.uz_fun(k, st->X, st->p, c->opt.uz_ctx);
+}
 
 static double psi(const whirl_cont *c, int ev, size_t k, const cont_state *st,
                   double ref_logdet) {
@@ -34,7 +42,7 @@ static double psi(const whirl_cont *c, int ev, size_t k, const cont_state *st,
   case EV_SYS:
     return st->tau[k];
   default:
-    return pv - c->opt.uz[k];
+    return cont_uz_value(c, k, st) - c->opt.uz[k];
   }
 }
 
@@ -88,6 +96,14 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   double sa = 0.0, sb = ds;
   const double stol = c->opt.loc_tol * fmax(1.0, fabs(ds));
   int found = 0;
+  /* the states at the two ends of the bracket: each trial starts from the
+   * chord between them, not between a and b, which near a branch point on
+   * a sharply turning branch is too far for Newton (enz's pitchfork) */
+  double *Xa = malloc(3 * N * sizeof *Xa), *Xb = Xa + N, *Xbest = Xb + N;
+  double sbest = 0.0, fbest = INFINITY, sout = 0.0;
+  if (!Xa) return 1;
+  memcpy(Xa, a->X, N * sizeof *Xa);
+  memcpy(Xb, b->X, N * sizeof *Xb);
   /* the bounds and UZ values need p only: the tangent and the spectrum
    * (a factorisation) are computed at the final point alone */
   const int p_only = ev == EV_PMIN || ev == EV_PMAX || ev == EV_UZ;
@@ -101,29 +117,66 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
     rc = 1;
     for (int retry = 0; retry < 3 && rc != 0; ++retry) {
       if (retry) sigma += 1e-7 * (hi - lo) * (retry == 1 ? 1.0 : -2.0);
-      const double u = sigma / ds;
-      for (size_t i = 0; i < N; ++i) out->X[i] = a->X[i] + u * (b->X[i] - a->X[i]);
+      const double u = (sigma - sa) / (sb - sa);
+      for (size_t i = 0; i < N; ++i) out->X[i] = Xa[i] + u * (Xb[i] - Xa[i]);
       rc = cont_correct(c, a->X, c->dir, sigma, out->X);
       if (rc == 0 && !p_only) rc = cont_analyse(c, out, c->dir);
-      if (rc < 0) return 1;
+      if (rc < 0) break;
     }
-    if (rc != 0) return 1;
+    if (rc != 0) {
+      /* Newton fails very close to a singular point (a branch point, where
+       * it converges only linearly): keep the best point found so far when
+       * the bracket has already shrunk to a small part of the step */
+      if (found && fabs(sb - sa) <= 1e-3 * fabs(ds)) {
+        memcpy(out->X, Xbest, N * sizeof *Xbest);
+        rc = cont_correct(c, a->X, c->dir, sbest, out->X);
+        sout = sbest;
+        if (rc == 0 && !p_only) rc = cont_analyse(c, out, c->dir);
+      }
+      if (rc != 0) found = 0;
+      break;
+    }
     const double f = psi(c, ev, k, out, ref);
-    if (!isfinite(f)) return 1;
+    if (!isfinite(f)) {
+      found = 0;
+      break;
+    }
     found = 1;
+    sout = sigma;
+    if (fabs(f) < fbest) {
+      fbest = fabs(f);
+      sbest = sigma;
+      memcpy(Xbest, out->X, N * sizeof *Xbest);
+    }
     if (f == 0.0 || fabs(f) <= ftol(c, ev, k, out)) break;
     if (f * fb < 0.0) {
       sa = sb;
       fa = fb;
+      memcpy(Xa, Xb, N * sizeof *Xa);
     } else {
       fa *= 0.5; /* Illinois: keep the stale end from stalling the secant */
     }
     sb = sigma;
     fb = f;
+    memcpy(Xb, out->X, N * sizeof *Xb);
     if (fabs(sb - sa) <= stol) break;
   }
+  free(Xa);
   if (!found) return 1;
   if (p_only && cont_analyse(c, out, c->dir) != 0) return 1;
+  if (ev == EV_BP) {
+    /* At the branch point [F_x F_p; r^T] is singular and the tangent solved
+     * from it is an arbitrary vector of the two-dimensional null space.  The
+     * branch's own tangent is smooth through the point: take it from the
+     * regular tangents at both ends of the step, interpolated, so that
+     * switching (whirl_cont_start_switch) finds the other branch. */
+    const double u = fmin(fmax(sout / ds, 0.0), 1.0);
+    for (size_t i = 0; i < N; ++i) out->t[i] = (1.0 - u) * a->t[i] + u * b->t[i];
+    const double nt = sqrt(cont_dot(c, out->t, out->t));
+    if (nt > 0 && isfinite(nt))
+      for (size_t i = 0; i < N; ++i) out->t[i] /= nt;
+    out->psi_lp = out->t[c->n];
+  }
   double d2 = 0.0;
   for (size_t i = 0; i < N; ++i) {
     const double di = out->X[i] - a->X[i];

@@ -448,6 +448,9 @@ static int colloc_accept(const double *X, const double *p, void *data) {
   return 0;
 }
 
+static int colloc_remap(double *const *v, size_t nv, const double *p,
+                        void *data);
+
 /* ------------------------------------------------------------ alloc */
 
 static void *fail_null(char *errbuf, size_t errlen, const char *msg) {
@@ -524,6 +527,7 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   c->t0 = o->t0;
   c->floquet_rtol = o->floquet_rtol > 0 ? o->floquet_rtol : 1e-11;
   c->floquet = o->floquet;
+  c->adapt_every = o->adapt_every;
   const size_t np = prob->npar ? prob->npar : 1;
   c->mesh = malloc((N + 1) * sizeof *c->mesh);
   c->old_mesh = malloc((N + 1) * sizeof *c->old_mesh);
@@ -607,6 +611,7 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   s->spectrum = s->nspec ? colloc_spectrum : NULL;
   s->spectrum_kind = WHIRL_SPEC_MULTIPLIERS;
   s->accept = aut ? colloc_accept : NULL;
+  s->remap = colloc_remap;
   s->bsolver = &colloc_bsolver;
   s->x_names = NULL; /* node-major unknowns have no model names */
   s->p_names = prob->p_names;
@@ -709,8 +714,11 @@ int whirl_colloc_eval(const whirl_colloc *c, const double *X, double tau,
  * these constants once more to estimate x^(NCOL+1); the density here is the
  * one the header documents.)  X (and the phase reference) are then the old
  * piecewise polynomials at the new nodes. */
-int whirl_colloc_adapt(whirl_colloc *c, double *X) {
-  if (!c || !X) return WHIRL_EINVAL;
+/* A new mesh equidistributing |x^(NCOL)|^{1/(NCOL+1)} over the orbit X
+ * (Russell & Christiansen 1978, as AUTO's IAD); the old mesh is kept in
+ * old_mesh for map_nodes.  Returns 1 when the mesh changed, 0 when it is
+ * kept (a constant orbit), WHIRL_EINVAL for a non-finite X. */
+static int new_mesh(whirl_colloc *c, const double *X) {
   const size_t n = c->n, m = c->ncol, N = c->ntst;
   const double pwr = 1.0 / ((double)m + 1.0);
   double *E = c->r1, *Q = c->r2; /* N and N + 1 <= nx */
@@ -730,7 +738,7 @@ int whirl_colloc_adapt(whirl_colloc *c, double *X) {
     Emax = fmax(Emax, e);
     Q[i + 1] = Q[i] + h * e;
   }
-  if (!(Emax > 0)) return WHIRL_OK; /* a constant orbit: keep the mesh */
+  if (!(Emax > 0)) return 0; /* a constant orbit: keep the mesh */
 
   memcpy(c->old_mesh, c->mesh, (N + 1) * sizeof *c->mesh);
   size_t i = 0;
@@ -743,32 +751,67 @@ int whirl_colloc_adapt(whirl_colloc *c, double *X) {
   }
   c->mesh[0] = 0.0;
   c->mesh[N] = 1.0;
-  c->last_ws = NULL; /* factorisations on the old mesh are not reused */
   for (size_t k = 1; k <= N; ++k)
     if (!(c->mesh[k] > c->mesh[k - 1])) {
       /* degenerate interval (cannot happen for positive E): give up */
       memcpy(c->mesh, c->old_mesh, (N + 1) * sizeof *c->mesh);
       return WHIRL_EINVAL;
     }
+  c->last_ws = NULL; /* factorisations on the old mesh are not reused */
+  return 1;
+}
 
-  const size_t nn = c->nnodes * n;
-  memcpy(c->old_X, X, nn * sizeof *X);
+/* The node values of v (a solution or a direction: the map is linear)
+ * from the piecewise polynomial on old_mesh to the nodes of mesh, in place;
+ * entries past the nodes (the period) are left as they are. */
+static void map_nodes(whirl_colloc *c, double *v) {
+  const size_t n = c->n, m = c->ncol, N = c->ntst, nn = c->nnodes * n;
+  memcpy(c->old_X, v, nn * sizeof *v);
   for (size_t ii = 0; ii < N; ++ii) {
     const double h = c->mesh[ii + 1] - c->mesh[ii];
     for (size_t k = 0; k <= m; ++k) {
       const size_t j = ii * m + k;
       double t =
           j == c->nnodes - 1 ? 1.0 : c->mesh[ii] + h * (double)k / (double)m;
-      eval_poly(n, N, m, c->old_mesh, c->old_X, t, X + n * j);
-      if (c->aut && c->have_ref)
-        eval_poly(n, N, m, c->old_mesh, c->ref, t, c->ref_new + n * j);
+      eval_poly(n, N, m, c->old_mesh, c->old_X, t, v + n * j);
     }
   }
-  if (c->aut && c->have_ref) {
-    memcpy(c->ref, c->ref_new, nn * sizeof *c->ref);
-    set_reference(c, c->ref);
-  }
+}
+
+/* The phase reference onto the new mesh. */
+static void map_reference(whirl_colloc *c) {
+  if (!(c->aut && c->have_ref)) return;
+  map_nodes(c, c->ref);
+  set_reference(c, c->ref);
+}
+
+size_t whirl_colloc_adaptations(const whirl_colloc *c) {
+  return c ? c->adaptations : 0;
+}
+
+int whirl_colloc_adapt(whirl_colloc *c, double *X) {
+  if (!c || !X) return WHIRL_EINVAL;
+  int rc = new_mesh(c, X);
+  if (rc <= 0) return rc;
+  map_nodes(c, X);
+  map_reference(c);
   return WHIRL_OK;
+}
+
+/* The system's remap hook: a new mesh every adapt_every accepted points,
+ * with the current point, tangent and previous points carried over. */
+static int colloc_remap(double *const *v, size_t nv, const double *p,
+                        void *data) {
+  (void)p;
+  whirl_colloc *c = data;
+  if (c->adapt_every <= 0 || ++c->since_adapt < c->adapt_every) return 0;
+  c->since_adapt = 0;
+  int rc = new_mesh(c, v[0]);
+  if (rc <= 0) return rc;
+  for (size_t k = 0; k < nv; ++k) map_nodes(c, v[k]);
+  map_reference(c);
+  ++c->adaptations;
+  return 1;
 }
 
 /* ------------------------------------------------------------ PD switch */

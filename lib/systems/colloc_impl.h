@@ -47,6 +47,9 @@ struct whirl_colloc {
   double *xc, *dx, *f, *f2, *J, *Jpar, *work, *pw, *r1, *r2;
   double *old_mesh, *old_X; /* ntst + 1, nnodes*n: mesh adaptation */
   double *ref_new;          /* nnodes*n */
+  int adapt_every;          /* options.adapt_every (AUTO's IAD) */
+  int since_adapt;          /* remap calls since the last adaptation */
+  size_t adaptations;       /* meshes adapted along branches */
 
   int floquet;   /* whirl_colloc_floquet: multipliers route */
   void *spec_ws; /* colloc_bsolver workspace for the condensed multipliers */

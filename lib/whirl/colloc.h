@@ -49,6 +49,10 @@ typedef struct whirl_colloc_options {
   int floquet;       /* route to the multipliers (whirl_colloc_floquet):
                         WHIRL_COLLOC_FLOQUET_CONDENSED (default) or
                         WHIRL_COLLOC_FLOQUET_VARIATIONAL */
+  int adapt_every;   /* IAD: adapt the mesh to the orbit (whirl_colloc_adapt)
+                        every adapt_every continuation steps, the current
+                        point, tangent and previous points carried over by
+                        the system's remap hook; 0 (default): fixed mesh */
 } whirl_colloc_options;
 
 /* The Floquet multipliers of the system's spectrum.  CONDENSED: the
@@ -100,6 +104,9 @@ WHIRL_API double whirl_colloc_period(const whirl_colloc *c, const double *X,
  * the new mesh in place.  The mesh is part of the object, so the caller
  * restarts its continuation from the remapped X. */
 WHIRL_API int whirl_colloc_adapt(whirl_colloc *c, double *X);
+
+/* Meshes adapted along branches so far (options.adapt_every). */
+WHIRL_API size_t whirl_colloc_adaptations(const whirl_colloc *c);
 
 /* Branch switching at a period doubling: from the orbit X (period T) at a
  * PD point at parameters p, fill the collocation object c2 (same model and

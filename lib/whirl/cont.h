@@ -64,7 +64,8 @@ typedef enum whirl_stop_reason {
   WHIRL_STOP_NOCONV, /* Newton failed down to DSMIN */
   WHIRL_STOP_LOOP,   /* the branch closed on itself (isola traced whole) */
   WHIRL_STOP_XMAX,   /* |x|_inf exceeded x_max */
-  WHIRL_STOP_BP      /* stop at the first branch point (stop_at_bp) */
+  WHIRL_STOP_BP,     /* stop at the first branch point (stop_at_bp) */
+  WHIRL_STOP_UZ      /* a user value marked as a stop (uz_stop) */
 } whirl_stop_reason;
 
 WHIRL_API const char *whirl_stop_reason_name(int reason);
@@ -112,8 +113,19 @@ typedef struct whirl_cont_options {
                           system's own structured solver (whirl_system
                           bsolver) when it has one; 0: always the LU of
                           `linsol` (a check, or for comparison) */
-  const double *uz;    /* optional parameter values to output as UZ */
+  const double *uz;    /* optional user values to output as UZ (AUTO's UZR) */
   size_t nuz;
+  /* What uz[k] is a value of: with uz_fun NULL, the continuation parameter;
+   * otherwise the quantity uz_fun(k, x, p, uz_ctx) of the point (x, p), p
+   * the full parameter vector with the current continuation parameter, e.g.
+   * another parameter of a two-parameter system, the period or a state
+   * maximum of a periodic orbit.  The UZ point is localised where the
+   * quantity equals uz[k], like every other special point.  uz_stop[k] != 0
+   * ends the branch there (AUTO's UZSTOP, stop reason WHIRL_STOP_UZ);
+   * uz_stop may be NULL. */
+  double (*uz_fun)(size_t k, const double *x, const double *p, void *uz_ctx);
+  void *uz_ctx;
+  const int *uz_stop;
 } whirl_cont_options;
 
 /* Defaults: icp 0, ds 1e-2, ds_min 1e-8, ds_max 0.5, nmx 1000, p bounds
@@ -131,6 +143,7 @@ typedef struct whirl_cont_stats {
   size_t jac_evals;   /* Jacobian evaluations */
   size_t factorizations;
   size_t eig_evals;   /* spectrum evaluations */
+  size_t spectrum_failed; /* of which failed numerically (stability unknown) */
   size_t special;     /* special points localised */
 } whirl_cont_stats;
 
@@ -150,6 +163,8 @@ typedef struct whirl_point {
   size_t nspec;
   const double *spec_re, *spec_im; /* spectrum, sorted by decreasing Re */
   double test[3];      /* LP, BP, HB test function values */
+  int uz;              /* UZ points: the index k of the user value uz[k]
+                          reached; -1 otherwise */
 } whirl_point;
 
 typedef struct whirl_cont whirl_cont;

@@ -119,6 +119,15 @@ typedef struct whirl_system {
   const char *const *x_names;  /* optional, n names */
   const char *const *p_names;  /* optional, npar names */
   void *data;                  /* borrowed */
+
+  /* Optional change of representation along a branch (mesh adaptation of
+   * collocation, AUTO's IAD): called by the core before each new step with
+   * the current point v[0] (x[n]) and the other vectors of unknowns it
+   * keeps, v[1..nv-1] (tangent and previous point, their x parts).  A
+   * system that changes what its unknowns mean (a new mesh) maps all nv
+   * vectors in place and returns 1; the core then refactors and reanalyses
+   * the current point.  0: nothing changed; < 0: an error. */
+  int (*remap)(double *const *v, size_t nv, const double *p, void *data);
 } whirl_system;
 
 enum { WHIRL_SPEC_EIGENVALUES = 0, WHIRL_SPEC_MULTIPLIERS = 1 };

@@ -204,7 +204,7 @@ c 2 "PAR with an unknown name" "$F:3: PAR: ${q}Foo$q is not a parameter of model
 c 2 "PAR with too many values" "$F:3: PAR: ${q}4$q is not a parameter" "$B"'PAR = [1, 2, 3, 4]\n'
 c 2 "U with an unknown component" "$F:3: U: ${q}u3$q is not a state component of model ${q}ab$q \(u1, u2\)$" "$B"'U = {u3: 1}\n'
 c 2 "IPS = 2 without a start orbit" "$F:3: IPS = 2 from the model's start needs a start orbit" "$B"'IPS = 2\n'
-c 2 "UZR for another parameter" "$F:3: UZR: user points are supported for the continuation parameter" "$B"'UZR = {B: 1}\n'
+c 2 "UZR on PERIOD for equilibria" "$F:3: UZR: ${q}PERIOD$q is neither a parameter, PERIOD \(periodic orbits\) nor a state component of model ${q}ab$q" "$B"'UZR = {PERIOD: 1}\n'
 c 2 "IPS = basins without BASIN_AXES" "$F:[1-9][0-9]*: IPS = basins needs BASIN_AXES" "$B"'IPS = basins\n'
 # restarts
 c 2 "IRS without S" "$F:3: IRS names a label but S .* is not given$" "$B"'IRS = 2\n'
