@@ -83,20 +83,16 @@ out.append(ab_point("ab-6", "UZ", 82, 17, beta, u2))
 # by long time integration (independent of any collocation): classical RK4
 # with a fixed step, first a transient from near the equilibrium inside the
 # cycle, then Newton on the shooting equations phi_T(u1, c) = (u1, c) for
-# (u1, T) with u2 = c fixed, with N steps of T/N.  PERIOD is T, L2-NORM
+# (u1, T) with u2 = c fixed (c halfway through the range of u2), with N
+# steps of T/N.  PERIOD is T, L2-NORM
 # sqrt(1/T int |u|^2 dt) (Simpson), MAX the largest sample refined by the
 # parabola through it and its neighbours.
-def ab_f(u1, u2, Da, B, beta):
-    r = Da * (1.0 - u1) * math.exp(u2)
-    return -u1 + r, -u2 + B * r - beta * u2
-
-
-def ab_rk4(u1, u2, h, nsteps, Da, B, beta, samples=None):
+def rk4(f, u1, u2, h, nsteps, samples=None):
     for _ in range(nsteps):
-        a1, a2 = ab_f(u1, u2, Da, B, beta)
-        b1, b2 = ab_f(u1 + 0.5 * h * a1, u2 + 0.5 * h * a2, Da, B, beta)
-        c1, c2 = ab_f(u1 + 0.5 * h * b1, u2 + 0.5 * h * b2, Da, B, beta)
-        d1, d2 = ab_f(u1 + h * c1, u2 + h * c2, Da, B, beta)
+        a1, a2 = f(u1, u2)
+        b1, b2 = f(u1 + 0.5 * h * a1, u2 + 0.5 * h * a2)
+        c1, c2 = f(u1 + 0.5 * h * b1, u2 + 0.5 * h * b2)
+        d1, d2 = f(u1 + h * c1, u2 + h * c2)
         u1 += h / 6.0 * (a1 + 2.0 * b1 + 2.0 * c1 + d1)
         u2 += h / 6.0 * (a2 + 2.0 * b2 + 2.0 * c2 + d2)
         if samples is not None:
@@ -104,37 +100,43 @@ def ab_rk4(u1, u2, h, nsteps, Da, B, beta, samples=None):
     return u1, u2
 
 
-def ab_cycle(Da, B, beta, c, N=40000):
-    # transient: from near the unstable equilibrium inside the cycle
-    u2e = bisect(lambda v: ab_Da(v, B, beta) - Da, 0.5, B / (1.0 + beta) * (1.0 - 1e-9))
-    u1, u2 = ab_rk4(ab_u1(u2e, B, beta), u2e + 0.01, 1e-3, 200000, Da, B, beta)
+def cycle(f, u1, u2, h=1e-3, transient=200000, N=40000):
+    """The stable limit cycle of the planar system f reached from (u1, u2):
+    (PERIOD, L2-NORM, [MAX u1, MAX u2])."""
+    u1, u2 = rk4(f, u1, u2, h, transient)
+    # the section u2 = c halfway through the range of u2 on the attractor
+    lo2, hi2, y1, y2 = u2, u2, u1, u2
+    for _ in range(int(60.0 / h)):
+        y1, y2 = rk4(f, y1, y2, h, 1)
+        lo2, hi2 = min(lo2, y2), max(hi2, y2)
+    assert hi2 - lo2 > 1e-3, "the transient did not end on a cycle"
+    c = 0.5 * (lo2 + hi2)
     # the first upward crossing of u2 = c, located by bisection in time
-    h = 1e-3
-    while True:
-        n1, n2 = ab_rk4(u1, u2, h, 1, Da, B, beta)
+    for _ in range(int(1e7)):
+        n1, n2 = rk4(f, u1, u2, h, 1)
         if u2 < c <= n2:
             lo, hi = 0.0, h
             for _ in range(60):
                 m = 0.5 * (lo + hi)
-                if ab_rk4(u1, u2, m, 1, Da, B, beta)[1] < c:
+                if rk4(f, u1, u2, m, 1)[1] < c:
                     lo = m
                 else:
                     hi = m
-            x = ab_rk4(u1, u2, lo, 1, Da, B, beta)[0]
+            x = rk4(f, u1, u2, lo, 1)[0]
             break
         u1, u2 = n1, n2
     # the period: the next upward crossing
     T, y1, y2, t = None, x, c, 0.0
     while T is None:
-        n1, n2 = ab_rk4(y1, y2, h, 1, Da, B, beta)
+        n1, n2 = rk4(f, y1, y2, h, 1)
         if t > 0.1 and y2 < c <= n2:
             T = t + h * (c - y2) / (n2 - y2)
         y1, y2, t = n1, n2, t + h
     # Newton on the shooting residual (u1(T) - x, u2(T) - c)
+    def res(x, T):
+        e1, e2 = rk4(f, x, c, T / N, N)
+        return e1 - x, e2 - c
     for _ in range(8):
-        def res(x, T):
-            e1, e2 = ab_rk4(x, c, T / N, N, Da, B, beta)
-            return e1 - x, e2 - c
         r1, r2 = res(x, T)
         dx, dT = 1e-7, 1e-7 * T
         a1, a2 = res(x + dx, T)
@@ -148,7 +150,7 @@ def ab_cycle(Da, B, beta, c, N=40000):
         if abs(sx) < 1e-13 and abs(sT) < 1e-13 * T:
             break
     samples = [(x, c)]
-    ab_rk4(x, c, T / N, N, Da, B, beta, samples)
+    rk4(f, x, c, T / N, N, samples)
     # Simpson over the N + 1 samples (N even) for the mean of |u|^2
     w = [1.0 if k in (0, N) else (4.0 if k % 2 else 2.0) for k in range(N + 1)]
     l2 = math.sqrt(sum(wk * (a * a + b * b) for wk, (a, b) in zip(w, samples)) / (3.0 * N))
@@ -162,8 +164,20 @@ def ab_cycle(Da, B, beta, c, N=40000):
     return T, l2, mx
 
 
+def ab_f(Da, B, beta):
+    def f(u1, u2):
+        r = Da * (1.0 - u1) * math.exp(u2)
+        return -u1 + r, -u2 + B * r - beta * u2
+    return f
+
+
+def ab_cycle(Da, B, beta):
+    u2e = bisect(lambda v: ab_Da(v, B, beta) - Da, 0.5, B / (1.0 + beta) * (1.0 - 1e-9))
+    return cycle(ab_f(Da, B, beta), ab_u1(u2e, B, beta), u2e + 0.01)
+
+
 for run, pt, B in [("ab-8", 161, 14), ("ab-9", 222, 15), ("ab-10", 309, 16)]:
-    T, l2, mx = ab_cycle(0.25, B, beta, 2.0)
+    T, l2, mx = ab_cycle(0.25, B, beta)
     out.append("\t".join([run, "UZ", str(pt), "%.10E" % 0.25, str(B), str(beta),
                           "%.10E" % T, "%.10E" % l2] + ["%.10E" % v for v in mx]))
 
@@ -205,6 +219,50 @@ out.append(row("enz-2", "LP", 172, [s + rho * enz_R(s), 0, 100, 1], [s, s], None
 # --- pp2: fish' = r x (1 - x) - x y - quota (1 - e^(-k x)),
 #          sharks' = -y + c x y.  At quota = 0 the shark-free state is (1, 0).
 out.append(row("pp2-2", "UZ", 79, [0.0, 3, 5, 3], [1.0, 0.0]))
+
+# pp2-5 stops at quota = 0 on the coexistence branch: fish = 1/c,
+# sharks = r (1 - 1/c) - c quota (1 - e^(-k/c)) = 2.
+out.append(row("pp2-5", "UZ", 40, [0.0, 3, 5, 3], [1.0 / 3.0, 2.0]))
+
+
+# pp2-6 stops where the period of the orbits born at the HB reaches 36, a
+# stable orbit: quota is found by the secant method on T(quota) = 36, each
+# T from the limit cycle reached by integration from the coexistence
+# equilibrium (the h and N of the integration resolve the orbit's spike).
+def pp2_f(q, r=3.0, k=5.0, c=3.0):
+    def f(x, y):
+        return r * x * (1.0 - x) - x * y - q * (1.0 - math.exp(-k * x)), -y + c * x * y
+    return f
+
+
+def pp2_cycle(q):
+    x = 1.0 / 3.0
+    y = 3.0 * (1.0 - x) - 3.0 * q * (1.0 - math.exp(-5.0 / 3.0))
+    return cycle(pp2_f(q), x, y + 0.01, h=2e-3, transient=100000, N=120000)
+
+
+q0, q1 = 0.70793, 0.70795
+T0, T1 = pp2_cycle(q0)[0] - 36.0, pp2_cycle(q1)[0] - 36.0
+for _ in range(30):
+    q2 = q1 - T1 * (q1 - q0) / (T1 - T0)
+    q0, T0 = q1, T1
+    q1 = q2
+    res = pp2_cycle(q1)
+    T1 = res[0] - 36.0
+    if abs(T1) < 1e-9 or abs(q1 - q0) < 1e-15:
+        break
+T, l2, mx = res
+out.append("\t".join(["pp2-6", "UZ", "26", "%.10E" % q1, "3", "5", "3", "%.10E" % T,
+                      "%.10E" % l2] + ["%.10E" % v for v in mx]))
+
+# ab-11 and ab-13 stop at PERIOD = 1000 (UZSTOP), where AUTO prints its
+# localised stop at 9.99882E+02 and 9.99998E+02: AUTO's rows with the stop
+# value the run asks for (near the homoclinic orbit the other columns hardly
+# change with the period: whirl agrees with AUTO's to 6 digits).
+out.append("\t".join(["ab-11", "UZ", "116", "1.20102E-01", "17", "3", "1000",
+                      "2.07774E+00", "4.77420E-01", "2.02903E+00"]))
+out.append("\t".join(["ab-13", "UZ", "67", "1.10829E-01", "18", "3", "1000",
+                      "1.75170E+00", "3.80862E-01", "1.71388E+00"]))
 
 print("# run\tTY\tPT\tparameters...\tPERIOD\tL2-NORM\tstate...")
 print("# examples/auto/exact.ref - written by exact.py (see there and")

@@ -297,6 +297,50 @@ static void test_uz(void) {
   whirl_branch_free(b);
 }
 
+/* User values of a quantity other than the continuation parameter (the
+ * state x on the circle x^2 + p^2 = 1): localised like every special point,
+ * and a stop value ends the branch (AUTO's UZR/UZSTOP on any quantity). */
+static double circle_x(size_t k, const double *x, const double *p, void *ctx) {
+  (void)k;
+  (void)p;
+  ++*(int *)ctx;
+  return x[0];
+}
+
+static void test_uz_fun(void) {
+  whirl_system s = {.name = "circle", .n = 1, .npar = 1, .F = circ_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.05;
+  o.ds_max = 0.1;
+  const double uz[2] = {0.6, -0.8};
+  const int stop[2] = {0, 1};
+  int calls = 0;
+  o.uz = uz;
+  o.uz_stop = stop;
+  o.nuz = 2;
+  o.uz_fun = circle_x;
+  o.uz_ctx = &calls;
+  double x0 = 1.0, p0 = 0.0;
+  int reason = 0;
+  whirl_branch *b = run(&s, &o, &x0, &p0, +1, &reason);
+  ok(calls > 0, "uz_fun: the quantity is evaluated (%d calls)", calls);
+  ok(count_type(b, WHIRL_PT_UZ) == 2, "uz_fun: both user values of x output");
+  const whirl_branch_point *u0 = nth_type(b, WHIRL_PT_UZ, 0), *u1 = nth_type(b, WHIRL_PT_UZ, 1);
+  if (u0 && u1) {
+    is_abs(u0->x[0], 0.6, 1e-12, "uz_fun: first UZ at x = 0.6");
+    is_abs(u0->p[0], 0.8, 1e-10, "uz_fun: there p = 0.8 (on the circle)");
+    is_abs(u1->x[0], -0.8, 1e-12, "uz_fun: stop at x = -0.8 past the fold");
+    is_abs(u1->p[0], 0.6, 1e-10, "uz_fun: there p = 0.6");
+  } else {
+    ok(0, "uz_fun: UZ points missing");
+  }
+  ok(reason == WHIRL_STOP_UZ, "uz_fun: the stop value ends the branch (reason %d)", reason);
+  ok(b && b->len && b->pts[b->len - 1].type == WHIRL_PT_UZ,
+     "uz_fun: the branch ends on the UZ point");
+  whirl_branch_free(b);
+}
+
 static void test_bratu(void) {
   int q = 0;
   for (int j = 0; j < BRATU_M; ++j) {
@@ -399,6 +443,7 @@ int main(void) {
   test_hopf();
   test_loop();
   test_uz();
+  test_uz_fun();
   test_bratu();
   test_two_at_once();
   test_errors();
