@@ -198,7 +198,10 @@ int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,
 }
 
 /* gnuplot: stable parts solid, unstable dashed, unknown thin; labelled
- * special points marked and named. */
+ * special points marked and named.  Each series is NaN where the STAB
+ * column differs: gnuplot breaks a line at an undefined point, so a stable
+ * stretch is not joined across an unstable one (no 'set datafile missing',
+ * which would make it skip those points and join them). */
 int run_write_plot(run_ctx *R, char *msg, size_t len) {
   if (R->s->ips == WHIRL_IPS_BASINS) return cli_plot(R->tmp, "basins", msg, len);
   char p[8192];
@@ -213,7 +216,6 @@ int run_write_plot(run_ctx *R, char *msg, size_t len) {
           "set terminal pngcairo size 900,650 enhanced font 'Sans,11'\n"
           "set output '.diagram.png.tmp'\n"
           "set datafile separator '\\t'\n"
-          "set datafile missing 'NaN'\n"
           "set key top left\n"
           "set grid lc rgb '#dddddd'\n"
           "set title 'whirl run: %s (model %s)' noenhanced\n"
