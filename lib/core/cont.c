@@ -879,11 +879,12 @@ int whirl_cont_step(whirl_cont *c) {
       return CONT_FAIL(c, rc, "the system's remap callback failed (%d)", rc);
     if (rc == 1) {
       c->fact_ok = 0;
-      for (int k = 1; k < 5; k += 3) { /* the unit tangents stay unit */
-        if (k == 4 && !c->have_tprev) break;
-        const double nt = cont_norm(c, v[k]);
+      /* the unit tangents (current and previous) stay unit */
+      double *tangents[2] = {c->cur.t, c->have_tprev ? c->tprev : NULL};
+      for (int k = 0; k < 2 && tangents[k]; ++k) {
+        const double nt = cont_norm(c, tangents[k]);
         if (nt > 0 && isfinite(nt))
-          for (size_t i = 0; i < N; ++i) v[k][i] /= nt;
+          for (size_t i = 0; i < N; ++i) tangents[k][i] /= nt;
       }
       memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
       rc = cont_analyse(c, &c->cur, c->dir);
