@@ -1,5 +1,5 @@
 /* drivers/cli.h — shared helpers of the whirl command: option parsing with
- * clear messages, output directories with atomic file writes, and gnuplot.
+ * clear messages and progress lines; output directories in outdir.h.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_CLI_H
 #define WHIRL_CLI_H
@@ -21,26 +21,8 @@ int cli_double(const char *cmd, const char *opt, const char *text, double *v);
 const char *cli_value(int argc, char **argv, int *i, const char *name,
                       int *missing);
 
-/* Create a directory and its parents (mkdir -p).  0 or -1 with errno. */
-int cli_mkdirs(const char *path);
-
-/* An output file written atomically: data go to DIR/.NAME.tmp, and
- * out_commit renames it to DIR/NAME; out_abort removes it. */
-typedef struct out_file {
-  FILE *fp;
-  char tmp[4096], final[4096];
-} out_file;
-int out_open(out_file *o, const char *dir, const char *name);
-int out_commit(out_file *o); /* closes; 0 on success */
-void out_abort(out_file *o);
-
-/* Run gnuplot on a script file in dir (cwd = dir); 0 on success, else a
- * message in msg. */
-int cli_gnuplot(const char *dir, const char *script, char *msg, size_t len);
-
-/* Run gnuplot on DIR/NAME.gp, which writes DIR/.NAME.png.tmp, and rename
- * that to DIR/NAME.png (no half-written picture on failure). */
-int cli_plot(const char *dir, const char *name, char *msg, size_t len);
+/* Output directories, their files and pictures: outdir.h. */
+#include "outdir.h"
 
 /* A table of options for cli_parse. */
 typedef enum {

@@ -59,49 +59,6 @@ static void usage(FILE *f) {
           "solutions, run.log, diagram.png.  The format: doc/run-files.md.\n");
 }
 
-/* ---- the output directory ---------------------------------------------- */
-
-static int remove_dir(const char *dir) {
-  DIR *d = opendir(dir);
-  if (!d) return errno == ENOENT ? 0 : -1;
-  struct dirent *e;
-  char p[8192];
-  int rc = 0;
-  while ((e = readdir(d))) {
-    if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
-    snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
-    if (unlink(p) != 0) rc = -1;
-  }
-  closedir(d);
-  if (rmdir(dir) != 0) rc = -1;
-  return rc;
-}
-
-/* An existing output directory is replaced only if an earlier run wrote it
- * (it holds run.log) or it is empty. */
-static int out_replaceable(const char *dir) {
-  struct stat st;
-  if (stat(dir, &st) != 0) return 1;
-  if (!S_ISDIR(st.st_mode)) return 0;
-  char p[8192];
-  snprintf(p, sizeof p, "%s/run.log", dir);
-  if (access(p, F_OK) == 0) return 1;
-  DIR *d = opendir(dir);
-  if (!d) return 0;
-  struct dirent *e;
-  int empty = 1;
-  while ((e = readdir(d)))
-    if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) empty = 0;
-  closedir(d);
-  return empty;
-}
-
-static FILE *open_in(run_ctx *R, const char *name) {
-  char p[8192];
-  snprintf(p, sizeof p, "%s/%s", R->tmp, name);
-  return fopen(p, "w");
-}
-
 /* ---- one branch --------------------------------------------------------- */
 
 typedef struct branch_spec {
@@ -705,6 +662,32 @@ static int run_continuation(run_ctx *R, run_objects *O) {
 
 /* ---- the command -------------------------------------------------------- */
 
+/* Close the tables, draw the picture and swap the output directory in:
+ * 0, or 1 (a file could not be written, nothing kept; or the picture
+ * failed, the rest kept).  Every failure prints its message. */
+static int finish_output(run_ctx *R) {
+  int bad = 0;
+  if (R->table) bad |= cli_outdir_fclose(&R->od, R->table, "branches.tsv");
+  if (R->sols) bad |= cli_outdir_fclose(&R->od, R->sols, "solutions");
+  R->table = R->sols = NULL;
+  const char *pic = NULL;
+  if (!bad) bad = run_write_plot(R, &pic) != 0;
+  int pic_failed = !bad && cli_outdir_plot(&R->od, pic) != 0;
+  if (pic_failed) fprintf(R->log, "the picture %s.png failed (see stderr)\n", pic);
+  bad |= cli_outdir_fclose(&R->od, R->log, "run.log");
+  R->log = NULL;
+  if (bad) {
+    cli_outdir_abort(&R->od);
+    return 1;
+  }
+  if (cli_outdir_commit(&R->od)) return 1;
+  if (!R->quiet)
+    printf("wrote %s/ (%s%s)\n", R->out, R->s->ips == WHIRL_IPS_BASINS
+           ? "basins.tsv, run.log" : "branches.tsv, solutions, run.log",
+           pic_failed ? "" : R->s->ips == WHIRL_IPS_BASINS ? ", basins.png" : ", diagram.png");
+  return pic_failed;
+}
+
 int cmd_run(int argc, char **argv) {
   const char *file = NULL;
   int quiet = 0;
@@ -762,12 +745,11 @@ int cmd_run(int argc, char **argv) {
   memset(&O, 0, sizeof O);
   int status = 2;
   if (run_load_model(&R) || run_resolve(&R)) goto out;
-  if (!out_replaceable(R.out)) {
-    run_fail(&R, WHIRL_RK_OUT, "output directory '%s' exists and was not "
-             "written by whirl run (no run.log): choose another (out = DIR)",
-             R.out);
-    goto out;
-  }
+  /* the output directory: checked now, staged once the start is known */
+  char where[4200] = "";
+  if (whirl_runfile_given(R.rf, WHIRL_RK_OUT))
+    whirl_runfile_where(R.rf, WHIRL_RK_OUT, where, sizeof where);
+  if (cli_outdir_check("run", where, R.out)) goto out;
   /* the labelled start solution */
   if (R.s->irs > 0 || R.s->irs_type[0]) {
     char msg[1024];
@@ -785,23 +767,13 @@ int cmd_run(int argc, char **argv) {
     if (O.sol.kind == RUN_EQ)
       memcpy(R.u, O.sol.x, R.n * sizeof *R.u);
   }
-  /* the temporary output directory */
-  snprintf(R.tmp, sizeof R.tmp, "%s.tmp.%ld", R.out, (long)getpid());
-  if (cli_mkdirs(R.tmp)) {
-    fprintf(stderr, "whirl run: cannot create '%s': %s\n", R.tmp, strerror(errno));
-    goto out;
-  }
-  R.log = open_in(&R, "run.log");
+  if ((status = cli_outdir_begin(&R.od, "run", where, R.out)) != 0) goto out;
+  status = 1;
   const int basins = R.s->ips == WHIRL_IPS_BASINS;
-  if (!basins) {
-    R.table = open_in(&R, "branches.tsv");
-    R.sols = open_in(&R, "solutions");
-  }
-  if (!R.log || (!basins && (!R.table || !R.sols))) {
-    fprintf(stderr, "whirl run: cannot write in '%s': %s\n", R.tmp, strerror(errno));
-    status = 1;
+  if (!(R.log = cli_outdir_fopen(&R.od, "run.log")) ||
+      (!basins && (!(R.table = cli_outdir_fopen(&R.od, "branches.tsv")) ||
+                   !(R.sols = cli_outdir_fopen(&R.od, "solutions")))))
     goto cleanup;
-  }
   fprintf(R.log, "whirl %s run %s\n", whirl_version(), file);
   for (int i = 1; i < argc; i++)
     if (argv[i][0] == '-' && argv[i][1] == '-')
@@ -823,35 +795,13 @@ int cmd_run(int argc, char **argv) {
     goto cleanup;
   }
   fprintf(R.log, "wall time %.3f s\n", cli_now() - t0);
-  if (R.table) fclose(R.table);
-  if (R.sols) fclose(R.sols);
-  R.table = R.sols = NULL;
-  char msg[1024];
-  if (run_write_plot(&R, msg, sizeof msg)) {
-    fprintf(stderr, "whirl run: the picture failed: %s\n", msg);
-    fprintf(R.log, "picture failed: %s\n", msg);
-  }
-  if (fclose(R.log) != 0) {
-    R.log = NULL;
-    status = 1;
-    goto cleanup;
-  }
-  R.log = NULL;
-  if (remove_dir(R.out) != 0 || rename(R.tmp, R.out) != 0) {
-    fprintf(stderr, "whirl run: cannot replace '%s': %s\n", R.out, strerror(errno));
-    status = 1;
-    goto cleanup;
-  }
-  if (!R.quiet)
-    printf("wrote %s/ (%s)\n", R.out, basins ? "basins.tsv, run.log, basins.png"
-                                        : "branches.tsv, solutions, run.log, diagram.png");
-  status = 0;
+  status = finish_output(&R);
   goto out;
 cleanup:
   if (R.log) fclose(R.log);
   if (R.table) fclose(R.table);
   if (R.sols) fclose(R.sols);
-  remove_dir(R.tmp);
+  cli_outdir_abort(&R.od);
 out:
   objects_free(&O);
   run_unload_model(&R);

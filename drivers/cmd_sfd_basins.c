@@ -64,6 +64,37 @@ static const char *colour_of(const char *name) {
   return "#999999";
 }
 
+/* basins.gp: the initial states coloured by the class they end in, only
+ * the classes that occur (so the key says what is drawn). */
+static int write_script(cli_outdir *od, const whirl_sfd_attractors *A, size_t na,
+                        const size_t *cnt, size_t ncontact, size_t nunset, size_t nfail,
+                        size_t n, double Om, const char *vel) {
+  out_file g;
+  if (out_open(&g, od, "basins.gp")) return -1;
+  FILE *f = g.fp;
+  cli_gp_preamble(f, CMD, "basins", 900, 900, "Sans,12");
+  fprintf(f, "set title 'basins of attraction, {/Symbol W} = %g, %s initial velocities'\n"
+             "set size ratio -1\nset xrange [-1.05:1.05]\nset yrange [-1.05:1.05]\n"
+             "set xlabel 'y_0'\nset ylabel 'z_0'\nset key outside right top box opaque\n"
+             "set object 1 circle at 0,0 size 1 fs empty border lc rgb 'black' lw 2\n",
+          Om, vel);
+  const char *names[20];
+  size_t nn = 0;
+  /* only the classes that occur, so the key says what is drawn */
+  for (size_t j = 0; j < na; ++j)
+    if (cnt[j]) names[nn++] = whirl_sfd_attractors_info(A, j)->name;
+  if (ncontact) names[nn++] = "contact";
+  if (nunset) names[nn++] = "unsettled";
+  if (nfail) names[nn++] = "failed";
+  double ps = n > 20000 ? 0.25 : n > 4000 ? 0.45 : 0.8;
+  fprintf(f, "plot ");
+  for (size_t j = 0; j < nn; ++j)
+    fprintf(f, "%s'basins.tsv' using ((strcol(5) eq '%s') ? $1 : 1/0):2 with points pt 7 ps %g "
+               "lc rgb '%s' title '%s'", j ? ", \\\n  " : "", names[j], ps, colour_of(names[j]), names[j]);
+  fprintf(f, "\n");
+  return out_commit(&g);
+}
+
 int cmd_sfd_basins(int argc, char **argv) {
   double p[WHIRL_SFD_NPAR];
   whirl_sfd_default_params(p);
@@ -117,6 +148,7 @@ int cmd_sfd_basins(int argc, char **argv) {
     cli_error(CMD, "--rtol and --atol must be > 0 (got %g, %g)", rtol, atol);
     return 2;
   }
+  if (cli_outdir_check(CMD, NULL, dir)) return 2; /* before the work, not after */
   const double Om = p[WHIRL_SFD_OMEGA], T = 2 * M_PI / Om;
   char msg[512];
   double t_start = cli_now();
@@ -222,13 +254,10 @@ int cmd_sfd_basins(int argc, char **argv) {
     else if (which[i] == WHIRL_BASIN_UNSETTLED) ++nunset;
     else ++nfail;
   }
-  int status = 0;
-  if (cli_mkdirs(dir)) {
-    cli_error(CMD, "cannot create output directory '%s': %s", dir, strerror(errno));
-    status = 1;
-  }
+  cli_outdir od;
   out_file fb, fa;
-  if (!status && out_open(&fb, dir, "basins.tsv") == 0) {
+  int bad = cli_outdir_begin(&od, CMD, NULL, dir) != 0;
+  if (!bad && !(bad = out_open(&fb, &od, "basins.tsv"))) {
     fprintf(fb.fp, "# whirl sfd basins: Omega=%.10g lambda=%.10g delta=%.10g zeta=%.10g velocities=%s "
                    "periods=%zu%s rtol=%g atol=%g\n",
             Om, p[1], p[2], p[3], vel, periods, fixed ? " (fixed horizon)" : "", rtol, atol);
@@ -240,11 +269,9 @@ int cmd_sfd_basins(int argc, char **argv) {
       fprintf(fb.fp, "%.10g\t%.10g\t%.10g\t%.10g\t%s\t%u\n", X[4 * i], X[4 * i + 1], X[4 * i + 2],
               X[4 * i + 3], name, per[i]);
     }
-    if (out_commit(&fb)) status = 1;
-  } else {
-    status = 1;
+    bad = out_commit(&fb);
   }
-  if (!status && out_open(&fa, dir, "attractors.tsv") == 0) {
+  if (!bad && !(bad = out_open(&fa, &od, "attractors.tsv"))) {
     fprintf(fa.fp, "attractor\tkind\teps_max\teps_min\trate\tlevel\n");
     for (size_t j = 0; j < na; ++j) {
       const whirl_sfd_attractor_info *in = whirl_sfd_attractors_info(A, j);
@@ -252,11 +279,8 @@ int cmd_sfd_basins(int argc, char **argv) {
               in->kind == WHIRL_SFD_CIRCULAR ? "circular" : "quasiperiodic", in->eps, in->eps_min,
               in->rate, in->level);
     }
-    if (out_commit(&fa)) status = 1;
-  } else if (!status) {
-    status = 1;
+    bad = out_commit(&fa);
   }
-  if (status) cli_error(CMD, "writing in '%s' failed: %s", dir, strerror(errno));
 
   printf("attractor\tcount\tpercent\n");
   for (size_t j = 0; j < na; ++j)
@@ -265,38 +289,9 @@ int cmd_sfd_basins(int argc, char **argv) {
   if (nunset) printf("unsettled\t%zu\t%.2f\n", nunset, 100.0 * (double)nunset / (double)n);
   if (nfail) printf("failed\t%zu\t%.2f\n", nfail, 100.0 * (double)nfail / (double)n);
 
-  if (!status && !noplot) {
-    out_file g;
-    if (out_open(&g, dir, "basins.gp") == 0) {
-      FILE *f = g.fp;
-      fprintf(f, "# gnuplot script written by whirl sfd basins\n"
-                 "set terminal pngcairo size 900,900 enhanced font 'Sans,12'\n"
-                 "set output '.basins.png.tmp'\n"
-                 "set title 'basins of attraction, {/Symbol W} = %g, %s initial velocities'\n"
-                 "set size ratio -1\nset xrange [-1.05:1.05]\nset yrange [-1.05:1.05]\n"
-                 "set xlabel 'y_0'\nset ylabel 'z_0'\nset key outside right top box opaque\n"
-                 "set object 1 circle at 0,0 size 1 fs empty border lc rgb 'black' lw 2\n",
-              Om, vel);
-      const char *names[20];
-      size_t nn = 0;
-      /* only the classes that occur, so the key says what is drawn */
-      for (size_t j = 0; j < na; ++j)
-        if (cnt[j]) names[nn++] = whirl_sfd_attractors_info(A, j)->name;
-      if (ncontact) names[nn++] = "contact";
-      if (nunset) names[nn++] = "unsettled";
-      if (nfail) names[nn++] = "failed";
-      double ps = n > 20000 ? 0.25 : n > 4000 ? 0.45 : 0.8;
-      fprintf(f, "plot ");
-      for (size_t j = 0; j < nn; ++j)
-        fprintf(f, "%s'basins.tsv' using ((strcol(5) eq '%s') ? $1 : 1/0):2 with points pt 7 ps %g "
-                   "lc rgb '%s' title '%s'", j ? ", \\\n  " : "", names[j], ps, colour_of(names[j]), names[j]);
-      fprintf(f, "\n");
-      if (out_commit(&g) == 0 && cli_plot(dir, "basins", msg, sizeof msg) != 0) {
-        cli_error(CMD, "plot: %s", msg);
-        status = 1;
-      }
-    }
-  }
+  if (!bad && !noplot) bad = write_script(&od, A, na, cnt, ncontact, nunset, nfail, n, Om, vel);
+  static const char *const pics[] = {"basins", NULL};
+  int status = cli_outdir_finish(&od, bad, noplot ? NULL : pics);
   if (!quiet) {
     fprintf(stderr, "whirl sfd basins: Omega = %g, %zu initial states (%s velocities), %zu attractor%s:\n",
             Om, n, vel, na, na == 1 ? "" : "s");

@@ -80,15 +80,13 @@ static void print_special(FILE *f, const whirl_sfd_periodic_branch *b,
 
 /* eps range of the cycle (stable solid, unstable dashed) over the circular
  * orbits of the synchronous response, and f2 against Omega. */
-static int write_plots(const char *dir, const whirl_sfd_periodic *ns,
+static int write_plots(cli_outdir *od, const whirl_sfd_periodic *ns,
                        const whirl_sfd_response *sync, const double *p, double wmin,
                        double wmax) {
   out_file o;
-  if (out_open(&o, dir, "nonsync.gp")) return -1;
+  if (out_open(&o, od, "nonsync.gp")) return -1;
   FILE *f = o.fp;
-  fprintf(f, "# gnuplot script written by whirl sfd nonsync; run: gnuplot nonsync.gp\n"
-             "set terminal pngcairo size 1100,750 enhanced font 'Sans,12'\n"
-             "set output '.nonsync.png.tmp'\n");
+  cli_gp_preamble(f, CMD, "nonsync", 1100, 750, "Sans,12");
   for (int pass = 0; pass < 2; ++pass) {
     fprintf(f, "$sync%d << EOD\n", pass);
     for (size_t b = 0; sync && b < sync->nbranch; ++b) {
@@ -142,11 +140,9 @@ static int write_plots(const char *dir, const whirl_sfd_periodic *ns,
           p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA], wmin, wmax);
   if (out_commit(&o)) return -1;
 
-  if (out_open(&o, dir, "f2.gp")) return -1;
+  if (out_open(&o, od, "f2.gp")) return -1;
   f = o.fp;
-  fprintf(f, "# gnuplot script written by whirl sfd nonsync; run: gnuplot f2.gp\n"
-             "set terminal pngcairo size 1100,750 enhanced font 'Sans,12'\n"
-             "set output '.f2.png.tmp'\n");
+  cli_gp_preamble(f, CMD, "f2", 1100, 750, "Sans,12");
   for (int pass = 0; pass < 2; ++pass) {
     fprintf(f, "$ns%d << EOD\n", pass);
     for (size_t b = 0; b < ns->nbranch; ++b)
@@ -236,6 +232,7 @@ int cmd_sfd_nonsync(int argc, char **argv) {
   o.uz[0] = w0;
   o.nuz = 1;
 
+  if (cli_outdir_check(CMD, NULL, dir)) return 2; /* before the work, not after */
   const double t0 = cli_now();
   whirl_sfd_periodic ns;
   int rc = whirl_sfd_nonsync(p, w0, &o, &ns, msg, sizeof msg);
@@ -252,22 +249,11 @@ int cmd_sfd_nonsync(int argc, char **argv) {
   ro.omega_max = o.omega_max;
   int have_sync = !noplot && whirl_sfd_response_compute(p, &ro, &sync, msg, sizeof msg) == 0;
 
-  if (cli_mkdirs(dir)) {
-    cli_error(CMD, "cannot create output directory '%s': %s", dir, strerror(errno));
-    whirl_sfd_periodic_free(&ns);
-    if (have_sync) whirl_sfd_response_free(&sync);
-    return 1;
-  }
+  cli_outdir od;
   out_file fb, fs;
-  if (out_open(&fb, dir, "branches.tsv")) {
-    cli_error(CMD, "cannot write %s/branches.tsv: %s", dir, strerror(errno));
-    whirl_sfd_periodic_free(&ns);
-    if (have_sync) whirl_sfd_response_free(&sync);
-    return 1;
-  }
-  if (out_open(&fs, dir, "special.tsv")) {
-    cli_error(CMD, "cannot write %s/special.tsv: %s", dir, strerror(errno));
-    out_abort(&fb);
+  if (cli_outdir_begin(&od, CMD, NULL, dir) || out_open(&fb, &od, "branches.tsv") ||
+      out_open(&fs, &od, "special.tsv")) {
+    cli_outdir_abort(&od);
     whirl_sfd_periodic_free(&ns);
     if (have_sync) whirl_sfd_response_free(&sync);
     return 1;
@@ -317,20 +303,11 @@ int cmd_sfd_nonsync(int argc, char **argv) {
       }
     }
   }
-  int status = 0;
-  if (out_commit(&fb) || out_commit(&fs)) {
-    cli_error(CMD, "writing the tables in '%s' failed: %s", dir, strerror(errno));
-    status = 1;
-  }
-  if (!noplot && !status) {
-    if (write_plots(dir, &ns, have_sync ? &sync : NULL, p, fmax(0.0, lo - 0.5), o.omega_max)) {
-      cli_error(CMD, "cannot write the gnuplot scripts in '%s': %s", dir, strerror(errno));
-      status = 1;
-    } else if (cli_plot(dir, "nonsync", msg, sizeof msg) || cli_plot(dir, "f2", msg, sizeof msg)) {
-      cli_error(CMD, "plot: %s", msg);
-      status = 1;
-    }
-  }
+  int bad = out_commit(&fb) | out_commit(&fs);
+  if (!noplot && !bad)
+    bad = write_plots(&od, &ns, have_sync ? &sync : NULL, p, fmax(0.0, lo - 0.5), o.omega_max);
+  static const char *const pics[] = {"nonsync", "f2", NULL};
+  const int status = cli_outdir_finish(&od, bad, noplot ? NULL : pics);
   if (!quiet) {
     fprintf(stderr, "whirl sfd nonsync: %s\n", ns.note);
     fprintf(stderr, "  %s with %zu unknowns; Omega in [%.10g, %.10g]; stable for Omega in "

@@ -42,10 +42,10 @@ static void help(FILE *f) {
 "stdout: the special points as TSV 'curve type lambda delta Omega eps'.\n");
 }
 
-static int write_curve(const char *dir, const char *name, const whirl_sfd_curve *c,
+static int write_curve(cli_outdir *od, const char *name, const whirl_sfd_curve *c,
                        const char *what, double zeta, double W) {
   out_file o;
-  if (out_open(&o, dir, name)) return -1;
+  if (out_open(&o, od, name)) return -1;
   fprintf(o.fp, "# whirl %s sfd region: %s; zeta = %.10g, W = %.10g; residual = largest "
                 "relative residual of the defining equations of eq. 15\n",
           whirl_version(), what, zeta, W);
@@ -57,9 +57,9 @@ static int write_curve(const char *dir, const char *name, const whirl_sfd_curve 
   return out_commit(&o);
 }
 
-static int write_band(const char *dir, const whirl_sfd_region *r, double a, double b, double W) {
+static int write_band(cli_outdir *od, const whirl_sfd_region *r, double a, double b, double W) {
   out_file o;
-  if (out_open(&o, dir, "band.tsv")) return -1;
+  if (out_open(&o, od, "band.tsv")) return -1;
   fprintf(o.fp, "lambda\tdelta_lower\tdelta_upper\n");
   const size_t K = 600;
   for (size_t k = 0; k <= K; ++k) {
@@ -71,15 +71,13 @@ static int write_band(const char *dir, const whirl_sfd_region *r, double a, doub
   return out_commit(&o);
 }
 
-static int write_plot(const char *dir, const whirl_sfd_region *r, double zeta, double W,
+static int write_plot(cli_outdir *od, const whirl_sfd_region *r, double zeta, double W,
                       double a, double b) {
   out_file o;
-  if (out_open(&o, dir, "region.gp")) return -1;
+  if (out_open(&o, od, "region.gp")) return -1;
   FILE *f = o.fp;
+  cli_gp_preamble(f, CMD, "region", 1000, 750, "Sans,12");
   fprintf(f,
-          "# gnuplot script written by whirl sfd region; run: gnuplot region.gp\n"
-          "set terminal pngcairo size 1000,750 enhanced font 'Sans,12'\n"
-          "set output '.region.png.tmp'\n"
           "set title 'isolated branch below {/Symbol W} = %g: {/Symbol z} = %g (cf. paper Fig. 18)'\n"
           "set xlabel 'SFD constant {/Symbol l}'\nset ylabel 'unbalance {/Symbol d}'\n"
           "set logscale x\nset xrange [%g:%g]\nset yrange [0:1]\nset grid\n"
@@ -147,6 +145,7 @@ int cmd_sfd_region(int argc, char **argv) {
     return 2;
   }
   char msg[512] = "";
+  if (cli_outdir_check(CMD, NULL, dir)) return 2; /* before the work, not after */
   whirl_sfd_region reg;
   const double t0 = cli_now();
   int rc = whirl_sfd_region_compute(&o, &reg, msg, sizeof msg);
@@ -156,31 +155,24 @@ int cmd_sfd_region(int argc, char **argv) {
     whirl_sfd_region_free(&reg);
     return 1;
   }
-  if (cli_mkdirs(dir)) {
-    cli_error(CMD, "cannot create output directory '%s': %s", dir, strerror(errno));
+  cli_outdir od;
+  int bad = cli_outdir_begin(&od, CMD, NULL, dir) != 0;
+  if (bad) {
     whirl_sfd_region_free(&reg);
     return 1;
   }
-  int status = 0;
-  if (write_curve(dir, "upper.tsv", &reg.upper,
+  if (write_curve(&od, "upper.tsv", &reg.upper,
                   "upper boundary: isola-peak merge point (G = G_eps = G_Omega = 0) continued "
                   "in lambda", o.zeta, o.omega_max) ||
-      write_curve(dir, "lower.tsv", &reg.lower,
+      write_curve(&od, "lower.tsv", &reg.lower,
                   "lower boundary: fold at Omega = W (G = G_eps = 0) continued in (lambda, "
                   "delta), both branches", o.zeta, o.omega_max) ||
-      write_band(dir, &reg, o.lambda_min, o.lambda_max, o.omega_max)) {
-    cli_error(CMD, "writing the tables in '%s' failed: %s", dir, strerror(errno));
-    status = 1;
-  }
-  if (!status && !noplot) {
-    if (write_plot(dir, &reg, o.zeta, o.omega_max, o.lambda_min, o.lambda_max)) {
-      cli_error(CMD, "cannot write %s/region.gp: %s", dir, strerror(errno));
-      status = 1;
-    } else if (cli_plot(dir, "region", msg, sizeof msg)) {
-      cli_error(CMD, "plot: %s", msg);
-      status = 1;
-    }
-  }
+      write_band(&od, &reg, o.lambda_min, o.lambda_max, o.omega_max))
+    bad = 1;
+  if (!bad && !noplot)
+    bad = write_plot(&od, &reg, o.zeta, o.omega_max, o.lambda_min, o.lambda_max);
+  static const char *const pics[] = {"region", NULL};
+  const int status = cli_outdir_finish(&od, bad, noplot ? NULL : pics);
   printf("curve\ttype\tlambda\tdelta\tOmega\teps\n");
   for (int c = 0; c < 2; ++c) {
     const whirl_sfd_curve *cv = c ? &reg.lower : &reg.upper;

@@ -195,16 +195,14 @@ static void print_special(FILE *f, const row *r, int type) {
 
 /* Gnuplot script for ε against Ω: stable solid, unstable dashed, LP marked,
  * red dashed region borders at the LPs (Fig. 3). */
-static int write_response_gp(const char *dir, const tab *res,
+static int write_response_gp(cli_outdir *od, const tab *res,
                              const double *p, double wmax, const char *ylab) {
   out_file o;
-  if (out_open(&o, dir, "response.gp")) return -1;
+  if (out_open(&o, od, "response.gp")) return -1;
   FILE *f = o.fp;
   double lp[64];
   int nlp = 0;
-  fprintf(f, "# gnuplot script written by whirl sfd response; run: gnuplot response.gp\n");
-  fprintf(f, "set terminal pngcairo size 1100,750 enhanced font 'Sans,12'\n");
-  fprintf(f, "set output '.response.png.tmp'\n");
+  cli_gp_preamble(f, CMD, "response", 1100, 750, "Sans,12");
   for (int pass = 0; pass < 2; ++pass) {
     fprintf(f, "$%s << EOD\n", pass == 0 ? "stable" : "unstable");
     for (size_t b = 0; b < res->nbranch; ++b) {
@@ -267,14 +265,12 @@ static int write_response_gp(const char *dir, const tab *res,
 }
 
 /* Gnuplot script for the largest Floquet multiplier modulus (Figs. 4-5). */
-static int write_multipliers_gp(const char *dir, const tab *res,
+static int write_multipliers_gp(cli_outdir *od, const tab *res,
                                 double wmax) {
   out_file o;
-  if (out_open(&o, dir, "multipliers.gp")) return -1;
+  if (out_open(&o, od, "multipliers.gp")) return -1;
   FILE *f = o.fp;
-  fprintf(f, "# gnuplot script written by whirl sfd response; run: gnuplot multipliers.gp\n");
-  fprintf(f, "set terminal pngcairo size 1100,750 enhanced font 'Sans,12'\n");
-  fprintf(f, "set output '.multipliers.png.tmp'\n");
+  cli_gp_preamble(f, CMD, "multipliers", 1100, 750, "Sans,12");
   for (size_t b = 0; b < res->nbranch; ++b) {
     fprintf(f, "$b%zu << EOD\n", b + 1);
     for (size_t i = 0; i < res->len[b]; ++i)
@@ -408,6 +404,7 @@ int cmd_sfd_response(int argc, char **argv) {
   po.ds_max = o.ds_max;
   po.linsol = o.linsol;
 
+  if (cli_outdir_check(CMD, NULL, dir)) return 2; /* before the work, not after */
   struct timespec t0, t1;
   clock_gettime(CLOCK_MONOTONIC, &t0);
   whirl_sfd_response res;
@@ -435,20 +432,11 @@ int cmd_sfd_response(int argc, char **argv) {
   whirl_sfd_response_free(&res);
   whirl_sfd_periodic_free(&pres);
 
-  if (cli_mkdirs(dir)) {
-    cli_error(CMD, "cannot create output directory '%s': %s", dir, strerror(errno));
-    tab_free(&T);
-    return 1;
-  }
+  cli_outdir od;
   out_file fb, fs;
-  if (out_open(&fb, dir, "branches.tsv")) {
-    cli_error(CMD, "cannot write %s/branches.tsv: %s", dir, strerror(errno));
-    tab_free(&T);
-    return 1;
-  }
-  if (out_open(&fs, dir, "special.tsv")) {
-    cli_error(CMD, "cannot write %s/special.tsv: %s", dir, strerror(errno));
-    out_abort(&fb);
+  int orc = cli_outdir_begin(&od, CMD, NULL, dir);
+  if (orc || out_open(&fb, &od, "branches.tsv") || out_open(&fs, &od, "special.tsv")) {
+    cli_outdir_abort(&od);
     tab_free(&T);
     return 1;
   }
@@ -497,25 +485,15 @@ int cmd_sfd_response(int argc, char **argv) {
     }
     if (b + 1 < T.nbranch) fprintf(fb.fp, "\n\n");
   }
-  if (out_commit(&fb) || out_commit(&fs)) {
-    cli_error(CMD, "writing the tables in '%s' failed: %s", dir, strerror(errno));
-    tab_free(&T);
-    return 1;
-  }
-  int status = 0;
-  if (plot) {
+  int bad = out_commit(&fb) | out_commit(&fs);
+  if (!bad && plot) {
     const char *ylab = periodic ? "largest eccentricity {/Symbol e}_{max}"
                                 : "relative eccentricity {/Symbol e}";
-    if (write_response_gp(dir, &T, p, o.omega_max, ylab) ||
-        write_multipliers_gp(dir, &T, o.omega_max)) {
-      cli_error(CMD, "cannot write the gnuplot scripts in '%s': %s", dir, strerror(errno));
-      status = 1;
-    } else if (cli_plot(dir, "response", msg, sizeof msg) ||
-               cli_plot(dir, "multipliers", msg, sizeof msg)) {
-      cli_error(CMD, "plot: %s", msg);
-      status = 1;
-    }
+    bad = write_response_gp(&od, &T, p, o.omega_max, ylab) ||
+          write_multipliers_gp(&od, &T, o.omega_max);
   }
+  static const char *const pics[] = {"response", "multipliers", NULL};
+  const int status = cli_outdir_finish(&od, bad, plot ? pics : NULL);
   if (!quiet) {
     fprintf(stderr, "whirl sfd response: %zu branch%s of %s orbits for %g <= Omega <= %g "
                     "(lambda=%g delta=%g zeta=%g FE=%g), method %s\n",

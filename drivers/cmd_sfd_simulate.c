@@ -66,22 +66,56 @@ static int keep(size_t k, double t, const double *x, void *data) {
   return 0;
 }
 
-static int write_gp(const char *dir, const char *name, const char *body,
+/* NAME.gp: the common preamble and title, then BODY. */
+static int write_gp(cli_outdir *od, const char *name, const char *body,
                     const double *p) {
   out_file o;
-  if (out_open(&o, dir, name)) return -1;
-  char base[256];
-  snprintf(base, sizeof base, "%s", name);
-  char *dot = strrchr(base, '.');
-  if (dot) *dot = '\0';
+  char file[64];
+  snprintf(file, sizeof file, "%s.gp", name);
+  if (out_open(&o, od, file)) return -1;
+  cli_gp_preamble(o.fp, CMD, name, 1000, 800, "Sans,12");
   fprintf(o.fp,
-          "# gnuplot script written by whirl sfd simulate; run: gnuplot %s\n"
-          "set terminal pngcairo size 1000,800 enhanced font 'Sans,12'\n"
-          "set output '.%s.png.tmp'\nset grid\n"
+          "set grid\n"
           "set title 'SFD rotor, {/Symbol W} = %g, {/Symbol l} = %g, "
           "{/Symbol d} = %g, {/Symbol z} = %g, F_E = %g'\n%s",
-          name, base, p[0], p[1], p[2], p[3], p[4], body);
+          p[0], p[1], p[2], p[3], p[4], body);
   return out_commit(&o);
+}
+
+/* The pictures' scripts: the time history, the orbit in the clearance
+ * circle with the Poincare section, the phase plane and (without contact)
+ * the spectrum.  K0 is the first steady sample. */
+static int write_scripts(cli_outdir *od, const double *p, size_t k0, int contact) {
+  char body[4096];
+  snprintf(body, sizeof body,
+           "set multiplot layout 2,1\nset xlabel '{/Symbol t}'\nset ylabel 'y'\n"
+           "plot 'history.tsv' using 1:2 with lines lw 1 lc rgb '#1f4e9c' notitle\n"
+           "set ylabel 'z'\nunset title\n"
+           "plot 'history.tsv' using 1:3 with lines lw 1 lc rgb '#1f4e9c' notitle\n"
+           "unset multiplot\n");
+  int bad = write_gp(od, "history", body, p);
+  snprintf(body, sizeof body,
+           "set size ratio -1\nset xrange [-1.05:1.05]\nset yrange [-1.05:1.05]\n"
+           "set xlabel 'y'\nset ylabel 'z'\nset parametric\nset trange [0:2*pi]\n"
+           "plot cos(t), sin(t) with lines lw 2 lc rgb 'black' title 'clearance', \\\n"
+           "  'history.tsv' every ::%zu using 2:3 with lines lw 0.5 lc rgb '#1f77b4' title 'orbit', \\\n"
+           "  'poincare.tsv' using ($7 == 1 ? $3 : 1/0):4 with points pt 7 ps 0.4 lc rgb '#2ca02c' title 'Poincare section'\n",
+           k0 + 1);
+  bad = bad || write_gp(od, "orbit", body, p);
+  if (!contact) {
+    snprintf(body, sizeof body,
+             "set logscale y\nset xlabel 'frequency / rotation frequency'\nset ylabel 'amplitude of y'\n"
+             "set xrange [0:4]\n"
+             "plot 'spectrum.tsv' using 1:2 with lines lw 1.5 lc rgb '#1f4e9c' notitle\n");
+    bad = bad || write_gp(od, "spectrum", body, p);
+  }
+  snprintf(body, sizeof body,
+           "set xlabel 'y'\nset ylabel 'dy/d{/Symbol t}'\n"
+           "plot 'history.tsv' every ::%zu using 2:4 with lines lw 0.5 lc rgb '#1f77b4' title 'trajectory', \\\n"
+           "  'poincare.tsv' using ($7 == 1 ? $3 : 1/0):5 with points pt 7 ps 0.4 lc rgb '#2ca02c' title 'Poincare section'\n",
+           k0 + 1);
+  bad = bad || write_gp(od, "phase", body, p);
+  return bad;
 }
 
 int cmd_sfd_simulate(int argc, char **argv) {
@@ -149,6 +183,8 @@ int cmd_sfd_simulate(int argc, char **argv) {
               (double)periods * (double)samples);
     return 2;
   }
+
+  if (cli_outdir_check(CMD, NULL, dir)) return 2; /* before the work, not after */
 
   const double Om = p[WHIRL_SFD_OMEGA], T = 2 * M_PI / Om;
   const size_t nsamp = periods * samples;
@@ -228,14 +264,15 @@ int cmd_sfd_simulate(int argc, char **argv) {
   }
 
   /* ---- files ---- */
-  if (cli_mkdirs(dir)) {
-    cli_error(CMD, "cannot create output directory '%s': %s", dir, strerror(errno));
+  cli_outdir od;
+  out_file fh, fp, fs, fk;
+  int bad = cli_outdir_begin(&od, CMD, NULL, dir) != 0;
+  if (bad) {
     free(P);
     free(h.buf);
     return 1;
   }
-  out_file fh, fp, fs, fk;
-  int bad = out_open(&fh, dir, "history.tsv");
+  bad = out_open(&fh, &od, "history.tsv");
   if (!bad) {
     fprintf(fh.fp, "# whirl sfd simulate: Omega=%.10g lambda=%.10g delta=%.10g zeta=%.10g FE=%.10g "
                    "x0=(%g, %g, %g, %g) rtol=%g atol=%g\n",
@@ -248,7 +285,7 @@ int cmd_sfd_simulate(int argc, char **argv) {
     }
     bad = out_commit(&fh);
   }
-  if (!bad && !(bad = out_open(&fp, dir, "poincare.tsv"))) {
+  if (!bad && !(bad = out_open(&fp, &od, "poincare.tsv"))) {
     fprintf(fp.fp, "# stroboscopic section tau = k 2 pi / Omega; steady = 1 from period %zu\n", steady_from);
     fprintf(fp.fp, "k\tt\ty\tz\tvy\tvz\tsteady\n");
     for (size_t k = 0; k * samples < h.got; ++k) {
@@ -258,7 +295,7 @@ int cmd_sfd_simulate(int argc, char **argv) {
     }
     bad = out_commit(&fp);
   }
-  if (!bad && !contact && !(bad = out_open(&fs, dir, "spectrum.tsv"))) {
+  if (!bad && !contact && !(bad = out_open(&fs, &od, "spectrum.tsv"))) {
     size_t m = nsamp + 1 - k0, nf = 0;
     double *y = malloc(m * sizeof *y);
     double *fr = NULL, *am = NULL;
@@ -278,14 +315,16 @@ int cmd_sfd_simulate(int argc, char **argv) {
     free(am);
     bad = out_commit(&fs);
   }
-  if (!bad && !(bad = out_open(&fk, dir, "peaks.tsv"))) {
+  if (!bad && !(bad = out_open(&fk, &od, "peaks.tsv"))) {
     fprintf(fk.fp, "rank\tfrequency\tamplitude\n");
     for (size_t k = 0; k < npk; ++k)
       fprintf(fk.fp, "%zu\t%.6f\t%.6g\n", k + 1, peaks[k].freq, peaks[k].amp);
     bad = out_commit(&fk);
   }
+  if (!bad && !noplot) bad = write_scripts(&od, p, k0, contact);
+  const char *pics[] = {"history", "orbit", "phase", contact ? NULL : "spectrum", NULL};
+  int status = cli_outdir_finish(&od, bad, noplot ? NULL : pics);
   if (bad) {
-    cli_error(CMD, "writing the results in '%s' failed: %s", dir, strerror(errno));
     free(P);
     free(h.buf);
     return 1;
@@ -296,43 +335,7 @@ int cmd_sfd_simulate(int argc, char **argv) {
   printf("rank\tfrequency\tamplitude\n");
   for (size_t k = 0; k < npk; ++k) printf("%zu\t%.6f\t%.6g\n", k + 1, peaks[k].freq, peaks[k].amp);
 
-  int status = contact ? 3 : 0;
-  if (!noplot) {
-    char body[4096], msg[512];
-    int pbad = 0;
-    snprintf(body, sizeof body,
-             "set multiplot layout 2,1\nset xlabel '{/Symbol t}'\nset ylabel 'y'\n"
-             "plot 'history.tsv' using 1:2 with lines lw 1 lc rgb '#1f4e9c' notitle\n"
-             "set ylabel 'z'\nunset title\n"
-             "plot 'history.tsv' using 1:3 with lines lw 1 lc rgb '#1f4e9c' notitle\n"
-             "unset multiplot\n");
-    pbad |= write_gp(dir, "history.gp", body, p) || cli_plot(dir, "history", msg, sizeof msg);
-    snprintf(body, sizeof body,
-             "set size ratio -1\nset xrange [-1.05:1.05]\nset yrange [-1.05:1.05]\n"
-             "set xlabel 'y'\nset ylabel 'z'\nset parametric\nset trange [0:2*pi]\n"
-             "plot cos(t), sin(t) with lines lw 2 lc rgb 'black' title 'clearance', \\\n"
-             "  'history.tsv' every ::%zu using 2:3 with lines lw 0.5 lc rgb '#1f77b4' title 'orbit', \\\n"
-             "  'poincare.tsv' using ($7 == 1 ? $3 : 1/0):4 with points pt 7 ps 0.4 lc rgb '#2ca02c' title 'Poincare section'\n",
-             k0 + 1);
-    pbad |= !pbad && (write_gp(dir, "orbit.gp", body, p) || cli_plot(dir, "orbit", msg, sizeof msg));
-    if (!contact) {
-      snprintf(body, sizeof body,
-               "set logscale y\nset xlabel 'frequency / rotation frequency'\nset ylabel 'amplitude of y'\n"
-               "set xrange [0:4]\n"
-               "plot 'spectrum.tsv' using 1:2 with lines lw 1.5 lc rgb '#1f4e9c' notitle\n");
-      pbad |= !pbad && (write_gp(dir, "spectrum.gp", body, p) || cli_plot(dir, "spectrum", msg, sizeof msg));
-    }
-    snprintf(body, sizeof body,
-             "set xlabel 'y'\nset ylabel 'dy/d{/Symbol t}'\n"
-             "plot 'history.tsv' every ::%zu using 2:4 with lines lw 0.5 lc rgb '#1f77b4' title 'trajectory', \\\n"
-             "  'poincare.tsv' using ($7 == 1 ? $3 : 1/0):5 with points pt 7 ps 0.4 lc rgb '#2ca02c' title 'Poincare section'\n",
-             k0 + 1);
-    pbad |= !pbad && (write_gp(dir, "phase.gp", body, p) || cli_plot(dir, "phase", msg, sizeof msg));
-    if (pbad) {
-      cli_error(CMD, "plot: %s", msg);
-      if (!status) status = 1;
-    }
-  }
+  if (contact && !status) status = 3;
   if (contact)
     cli_error(CMD, "the journal touches the housing (eps >= 1) at tau = %.10g (period %.2f) at "
               "Omega = %g; history up to the contact written to %s", t_contact, t_contact / T, Om, dir);

@@ -109,6 +109,66 @@ static double eq15_radius(const double *p, double e) {
   return best;
 }
 
+/* sweep.gp (the markers over the continuation curve of circular orbits)
+ * and bifurcation.gp (the Poincare points against Omega). */
+static int write_scripts(cli_outdir *od, const double *p, double lo, double hi, int up) {
+  /* the continuation curve of circular orbits under the markers */
+  whirl_sfd_response_options ro;
+  whirl_sfd_response_options_default(&ro);
+  ro.omega_max = hi * 1.02;
+  ro.omega_min = fmin(0.01, lo);
+  whirl_sfd_response res;
+  char msg[512];
+  int rc = whirl_sfd_response_compute(p, &ro, &res, msg, sizeof msg);
+  out_file g;
+  int bad = out_open(&g, od, "sweep.gp");
+  if (!bad) {
+    FILE *f = g.fp;
+    cli_gp_preamble(f, CMD, "sweep", 1100, 750, "Sans,12");
+    for (int pass = 0; pass < 2; ++pass) {
+      fprintf(f, "$%s << EOD\n", pass ? "unstable" : "stable");
+      if (rc == WHIRL_OK)
+        for (size_t b = 0; b < res.nbranch; ++b) {
+          const whirl_branch *br = res.branch[b];
+          for (size_t i = 0; i < br->len; ++i) {
+            int st = br->pts[i].stable == 1;
+            if (st == !pass)
+              fprintf(f, "%.8g %.8g\n", br->pts[i].p[0], hypot(br->pts[i].x[0], br->pts[i].x[1]));
+            else
+              fprintf(f, "\n");
+          }
+          fprintf(f, "\n");
+        }
+      fprintf(f, "EOD\n");
+    }
+    fprintf(f,
+            "set title 'speed sweep by time integration over the circular orbits: {/Symbol l} = %g, "
+            "{/Symbol d} = %g, {/Symbol z} = %g'\n"
+            "set xlabel 'dimensionless speed {/Symbol W}'\nset ylabel 'max relative eccentricity {/Symbol e}'\n"
+            "set xrange [%g:%g]\nset yrange [0:1]\nset grid\nset key bottom right box opaque\n"
+            "plot $stable using 1:2 with lines lw 2 lc rgb '#1f4e9c' title 'stable (continuation)', \\\n"
+            "  $unstable using 1:2 with lines dt 2 lw 2 lc rgb '#1f4e9c' title 'unstable', \\\n"
+            "  'sweep.tsv' index 0 using 2:4 with points pt 1 ps 1.2 lc rgb 'black' title '%s sweep', \\\n"
+            "  'sweep.tsv' index 1 using 2:4 with points pt 1 ps 1.2 lc rgb '#2ca02c' title 'down sweep'\n",
+            p[1], p[2], p[3], fmax(0, lo - 0.02 * (hi - lo)), hi + 0.02 * (hi - lo),
+            up ? "up" : "down");
+    bad = out_commit(&g);
+  }
+  if (rc == WHIRL_OK) whirl_sfd_response_free(&res);
+  out_file b;
+  if (!bad && !(bad = out_open(&b, od, "bifurcation.gp"))) {
+    cli_gp_preamble(b.fp, CMD, "bifurcation", 1100, 750, "Sans,12");
+    fprintf(b.fp, "set title 'bifurcation diagram: Poincare points (once per period) of the sweep'\n"
+                  "set xlabel 'dimensionless speed {/Symbol W}'\nset ylabel 'y at {/Symbol t} = k 2{/Symbol p}/{/Symbol W}'\n"
+                  "set grid\nset key bottom right box opaque\n"
+                  "plot 'poincare.tsv' index 0 using 2:3 with points pt 7 ps 0.3 lc rgb 'black' title '%s', \\\n"
+                  "  'poincare.tsv' index 1 using 2:3 with points pt 7 ps 0.3 lc rgb '#2ca02c' title 'down'\n",
+            up ? "up" : "down");
+    bad = out_commit(&b);
+  }
+  return bad;
+}
+
 int cmd_sfd_sweep(int argc, char **argv) {
   double p[WHIRL_SFD_NPAR], x0[4] = {0, 0, 0, 0};
   whirl_sfd_default_params(p);
@@ -169,13 +229,13 @@ int cmd_sfd_sweep(int argc, char **argv) {
     cli_error(CMD, "the initial displacement is outside the clearance (|(y0, z0)| must be < 1)");
     return 2;
   }
-  if (cli_mkdirs(dir)) {
-    cli_error(CMD, "cannot create output directory '%s': %s", dir, strerror(errno));
-    return 1;
-  }
+  /* the tables are written as the sweep goes, into the staged directory */
+  cli_outdir od;
   out_file fs, fp;
-  if (out_open(&fs, dir, "sweep.tsv") || out_open(&fp, dir, "poincare.tsv")) {
-    cli_error(CMD, "cannot write in '%s': %s", dir, strerror(errno));
+  int orc = cli_outdir_begin(&od, CMD, NULL, dir);
+  if (orc) return orc;
+  if (out_open(&fs, &od, "sweep.tsv") || out_open(&fp, &od, "poincare.tsv")) {
+    cli_outdir_abort(&od);
     return 1;
   }
   const char *hdr = "direction\tOmega\tclass\teps_max\teps_min\tperiods\teps_eq15\tdiff\n";
@@ -190,6 +250,7 @@ int cmd_sfd_sweep(int argc, char **argv) {
     cli_error(CMD, "out of memory");
     out_abort(&fs);
     out_abort(&fp);
+    cli_outdir_abort(&od);
     return 1;
   }
   cli_progress prog;
@@ -288,82 +349,18 @@ int cmd_sfd_sweep(int argc, char **argv) {
   if (status) {
     out_abort(&fs);
     out_abort(&fp);
+    cli_outdir_abort(&od);
     return status;
   }
-  if (out_commit(&fs) || out_commit(&fp)) {
-    cli_error(CMD, "writing in '%s' failed: %s", dir, strerror(errno));
-    return 1;
-  }
+  int bad = out_commit(&fs) | out_commit(&fp);
   double secs = cli_now() - t0;
-
-  if (!noplot) {
-    /* the continuation curve of circular orbits under the markers */
-    whirl_sfd_response_options ro;
-    whirl_sfd_response_options_default(&ro);
-    ro.omega_max = hi * 1.02;
-    ro.omega_min = fmin(0.01, lo);
-    whirl_sfd_response res;
-    char msg[512];
-    int rc = whirl_sfd_response_compute(p, &ro, &res, msg, sizeof msg);
-    out_file g;
-    if (out_open(&g, dir, "sweep.gp") == 0) {
-      FILE *f = g.fp;
-      fprintf(f, "# gnuplot script written by whirl sfd sweep\n"
-                 "set terminal pngcairo size 1100,750 enhanced font 'Sans,12'\n"
-                 "set output '.sweep.png.tmp'\n");
-      for (int pass = 0; pass < 2; ++pass) {
-        fprintf(f, "$%s << EOD\n", pass ? "unstable" : "stable");
-        if (rc == WHIRL_OK)
-          for (size_t b = 0; b < res.nbranch; ++b) {
-            const whirl_branch *br = res.branch[b];
-            for (size_t i = 0; i < br->len; ++i) {
-              int st = br->pts[i].stable == 1;
-              if (st == !pass)
-                fprintf(f, "%.8g %.8g\n", br->pts[i].p[0], hypot(br->pts[i].x[0], br->pts[i].x[1]));
-              else
-                fprintf(f, "\n");
-            }
-            fprintf(f, "\n");
-          }
-        fprintf(f, "EOD\n");
-      }
-      fprintf(f,
-              "set title 'speed sweep by time integration over the circular orbits: {/Symbol l} = %g, "
-              "{/Symbol d} = %g, {/Symbol z} = %g'\n"
-              "set xlabel 'dimensionless speed {/Symbol W}'\nset ylabel 'max relative eccentricity {/Symbol e}'\n"
-              "set xrange [%g:%g]\nset yrange [0:1]\nset grid\nset key bottom right box opaque\n"
-              "plot $stable using 1:2 with lines lw 2 lc rgb '#1f4e9c' title 'stable (continuation)', \\\n"
-              "  $unstable using 1:2 with lines dt 2 lw 2 lc rgb '#1f4e9c' title 'unstable', \\\n"
-              "  'sweep.tsv' index 0 using 2:4 with points pt 1 ps 1.2 lc rgb 'black' title '%s sweep', \\\n"
-              "  'sweep.tsv' index 1 using 2:4 with points pt 1 ps 1.2 lc rgb '#2ca02c' title 'down sweep'\n",
-              p[1], p[2], p[3], fmax(0, lo - 0.02 * (hi - lo)), hi + 0.02 * (hi - lo),
-              up ? "up" : "down");
-      if (out_commit(&g) == 0 && cli_plot(dir, "sweep", msg, sizeof msg) != 0) {
-        cli_error(CMD, "plot: %s", msg);
-        status = 1;
-      }
-    }
-    if (rc == WHIRL_OK) whirl_sfd_response_free(&res);
-    out_file b;
-    if (!status && out_open(&b, dir, "bifurcation.gp") == 0) {
-      fprintf(b.fp, "# gnuplot script written by whirl sfd sweep\n"
-                    "set terminal pngcairo size 1100,750 enhanced font 'Sans,12'\n"
-                    "set output '.bifurcation.png.tmp'\n"
-                    "set title 'bifurcation diagram: Poincare points (once per period) of the sweep'\n"
-                    "set xlabel 'dimensionless speed {/Symbol W}'\nset ylabel 'y at {/Symbol t} = k 2{/Symbol p}/{/Symbol W}'\n"
-                    "set grid\nset key bottom right box opaque\n"
-                    "plot 'poincare.tsv' index 0 using 2:3 with points pt 7 ps 0.3 lc rgb 'black' title '%s', \\\n"
-                    "  'poincare.tsv' index 1 using 2:3 with points pt 7 ps 0.3 lc rgb '#2ca02c' title 'down'\n",
-              up ? "up" : "down");
-      if (out_commit(&b) == 0 && cli_plot(dir, "bifurcation", msg, sizeof msg) != 0) {
-        cli_error(CMD, "plot: %s", msg);
-        status = 1;
-      }
-    }
-  }
-  if (!quiet)
+  if (!bad && !noplot) bad = write_scripts(&od, p, lo, hi, up);
+  static const char *const pics[] = {"sweep", "bifurcation", NULL};
+  status = cli_outdir_finish(&od, bad, noplot ? NULL : pics);
+  if (!quiet && !bad)
     fprintf(stderr, "whirl sfd sweep: %zu speeds, %zu settled on circular orbits (max |eps - eq. 15| = %.2e), "
                     "%zu contact; %zu steps, %zu RHS evaluations, %.2f s\n",
             done, ncirc, maxdiff, nfail, tot.steps, tot.rhs_evals, secs);
   return status;
 }
+

@@ -1,8 +1,11 @@
 /* drivers/plot.c — pictures through gnuplot (pngcairo): the driver writes a
- * self-contained script (data in datablocks) next to the data, so a user can
- * edit and re-run it, and runs gnuplot on it in the output directory.
+ * self-contained script (data in datablocks or the tables beside it) into
+ * the output directory, so a user can edit and re-run it as it is, and runs
+ * gnuplot on it there.  gnuplot exits 0 even when it could not write the
+ * picture (a full disk), so the picture is checked to be a complete PNG.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,48 +14,127 @@
 
 #include "config.h"
 #include "cli.h"
+#include "outdir.h"
 
-int cli_gnuplot(const char *dir, const char *script, char *msg, size_t len) {
+extern volatile pid_t cli_outdir_child; /* outdir.c: killed on a signal */
+
+const char *cli_gp_quote(const char *s, char *buf, size_t len) {
+  size_t k = 0;
+  if (len < 3) return "''";
+  buf[k++] = '\'';
+  for (; *s && k + 3 < len; s++) {
+    unsigned char c = (unsigned char)*s;
+    if (c == '\'') buf[k++] = '\'';
+    buf[k++] = c < 0x20 || c == 0x7f ? '?' : (char)c;
+  }
+  buf[k++] = '\'';
+  buf[k] = '\0';
+  return buf;
+}
+
+void cli_gp_preamble(FILE *f, const char *cmd, const char *name, int w, int h,
+                     const char *font) {
+  fprintf(f, "# gnuplot script written by whirl %s; redraw: gnuplot %s.gp\n"
+             "set terminal pngcairo size %d,%d enhanced font '%s'\n"
+             "set output '%s.png'\n",
+          cmd, name, w, h, font, name);
+}
+
+/* Is PATH a complete PNG: the signature, and the IEND chunk at its end? */
+static int png_complete(const char *path) {
+  static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D',
+                                         0xae, 0x42, 0x60, 0x82};
+  unsigned char a[8], b[12];
+  FILE *f = fopen(path, "rb");
+  if (!f) return 0;
+  int ok = fread(a, 1, 8, f) == 8 && !memcmp(a, sig, 8) &&
+           fseek(f, -12, SEEK_END) == 0 && fread(b, 1, 12, f) == 12 &&
+           !memcmp(b, iend, 12);
+  fclose(f);
+  return ok;
+}
+
+/* Run gnuplot on SCRIPT in DIR; its messages are kept in err (the first
+ * line) rather than printed.  0 when it exited 0. */
+static int run_gnuplot(const char *dir, const char *script, char *err, size_t len) {
   const char *gp = getenv("WHIRL_GNUPLOT");
   if (!gp || !*gp) gp = WHIRL_GNUPLOT;
+  int fd[2];
+  err[0] = '\0';
+  if (pipe(fd) != 0) {
+    snprintf(err, len, "cannot start gnuplot: %s", strerror(errno));
+    return -1;
+  }
+  fflush(NULL);
   pid_t pid = fork();
   if (pid < 0) {
-    snprintf(msg, len, "cannot start gnuplot: %s", strerror(errno));
+    snprintf(err, len, "cannot start gnuplot: %s", strerror(errno));
+    close(fd[0]);
+    close(fd[1]);
     return -1;
   }
   if (pid == 0) {
+    dup2(fd[1], STDERR_FILENO);
+    close(fd[0]);
+    close(fd[1]);
     if (chdir(dir) != 0) _exit(126);
-    /* gnuplot's own messages go to our stderr */
     execlp(gp, gp, script, (char *)NULL);
     _exit(127);
   }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) {
-      snprintf(msg, len, "waiting for gnuplot: %s", strerror(errno));
-      return -1;
+  cli_outdir_child = pid;
+  close(fd[1]);
+  char buf[512];
+  size_t got = 0;
+  int line_done = 0;
+  ssize_t r;
+  while ((r = read(fd[0], buf, sizeof buf)) != 0) {
+    if (r < 0 && errno == EINTR) continue;
+    if (r < 0) break;
+    for (ssize_t i = 0; i < r && !line_done; i++) { /* keep the first line */
+      if (buf[i] == '\n') line_done = got > 0;
+      else if (got + 1 < len) err[got++] = buf[i];
     }
+    err[got] = '\0';
+  }
+  close(fd[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+  cli_outdir_child = 0;
   if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
-    snprintf(msg, len, "gnuplot not found ('%s'); on Debian: apt-get install gnuplot-nox", gp);
+    snprintf(err, len, "gnuplot not found ('%s'); on Debian: apt-get install "
+             "gnuplot-nox (or set WHIRL_GNUPLOT)", gp);
     return -1;
   }
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    snprintf(msg, len, "gnuplot failed on %s/%s (exit status %d)", dir, script,
-             WIFEXITED(status) ? WEXITSTATUS(status) : -1);
-    return -1;
-  }
-  return 0;
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
 }
 
-int cli_plot(const char *dir, const char *name, char *msg, size_t len) {
-  char script[512], a[4096], b[4096];
+int cli_outdir_plot(cli_outdir *d, const char *name) {
+  char script[300], png[300], p[8600], shown[4400], err[300];
   snprintf(script, sizeof script, "%s.gp", name);
-  if (cli_gnuplot(dir, script, msg, len)) return -1;
-  snprintf(a, sizeof a, "%s/.%s.png.tmp", dir, name);
-  snprintf(b, sizeof b, "%s/%s.png", dir, name);
-  if (rename(a, b)) {
-    snprintf(msg, len, "gnuplot did not write %s: %s", a, strerror(errno));
-    return -1;
+  snprintf(png, sizeof png, "%s.png", name);
+  snprintf(p, sizeof p, "%s/%s", d->stage, png);
+  cli_outdir_shown(d, png, shown, sizeof shown);
+  int rc = run_gnuplot(d->stage, script, err, sizeof err);
+  if (rc == 0 && png_complete(p)) {
+    return cli_outdir_record(d, png);
   }
-  return 0;
+  unlink(p);
+  if (rc == 0)
+    cli_error(d->cmd, "the picture %s is incomplete: gnuplot could not write "
+              "it (%s%s)", shown, err[0] ? "gnuplot: " : "is the disk full?", err);
+  else
+    cli_error(d->cmd, "the picture %s failed: %s", shown,
+              err[0] ? err : "gnuplot failed");
+  return -1;
+}
+
+int cli_outdir_finish(cli_outdir *d, int bad, const char *const *pics) {
+  if (bad) {
+    cli_outdir_abort(d);
+    return 1;
+  }
+  int pic = 0;
+  for (size_t i = 0; pics && pics[i] && !pic; i++) pic = cli_outdir_plot(d, pics[i]);
+  return cli_outdir_commit(d) || pic;
 }

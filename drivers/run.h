@@ -10,6 +10,8 @@
 
 #include <whirl/whirl.h>
 
+#include "outdir.h"
+
 /* What the unknowns of a branch's system are (a solution's KIND). */
 typedef enum run_kind {
   RUN_EQ = 0,     /* equilibrium: x = state */
@@ -45,8 +47,9 @@ typedef struct run_ctx {
   double *par, *u;         /* start parameters and state */
   int icp[4];              /* resolved, 0-based; -1 for the period (PAR 11) */
   size_t nicp;
-  char out[4096], tmp[4200], rundir[4096];
-  FILE *log, *table, *sols;
+  char out[4096], rundir[4096];
+  cli_outdir od;           /* the output directory, staged (outdir.h) */
+  FILE *log, *table, *sols; /* run.log, branches.tsv, solutions in od */
   int label, branch;
   int quiet;
   int plot_x, plot_y;      /* 1-based columns of the picture's axes */
@@ -86,7 +89,9 @@ int run_point_measures(const run_ctx *R, run_kind kind, const void *obj,
 int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br, size_t pt,
                   const char *ty, int lab, const double *xb, const double *p,
                   int stable, double *l2out, double *period, double *state);
-int run_write_plot(run_ctx *R, char *msg, size_t len);
+/* The picture's script (diagram.gp, or basins.gp written by run_basins):
+ * 0, or -1 with the message printed; *name is the picture to draw. */
+int run_write_plot(run_ctx *R, const char **name);
 
 /* run_basins.c */
 int run_basins(run_ctx *R);

@@ -176,7 +176,7 @@ int run_basins(run_ctx *R) {
     fprintf(stderr, "whirl run: basins: %s\n", err);
     goto done;
   }
-  FILE *f = fopen(strcat(strcpy((char[4300]){0}, R->tmp), "/basins.tsv"), "w");
+  FILE *f = cli_outdir_fopen(&R->od, "basins.tsv");
   if (!f) goto done;
   fprintf(f, "# %s\t%s\tclass\tperiods\n", R->xnames[ax[0]], R->xnames[ax[1]]);
   size_t count[WHIRL_RUN_MAXITEMS + 3] = {0};
@@ -190,7 +190,7 @@ int run_basins(run_ctx *R) {
     }
     fputc('\n', f);
   }
-  if (fclose(f) != 0) goto done;
+  if (cli_outdir_fclose(&R->od, f, "basins.tsv")) goto done;
   fprintf(R->log, "grid %zu x %zu, %zu periods, %zu steps, %zu RHS evaluations\n",
           g0, g1, st.periods, st.steps, st.rhs_evals);
   if (!R->quiet) printf("basins: %zu x %zu grid at", g0, g1);
@@ -208,19 +208,21 @@ int run_basins(run_ctx *R) {
   if (!R->quiet)
     printf("  unsettled %zu, left the domain %zu, failed %zu\n", count[0], count[1], count[2]);
   /* picture */
-  f = fopen(strcat(strcpy((char[4300]){0}, R->tmp), "/basins.gp"), "w");
+  f = cli_outdir_fopen(&R->od, "basins.gp");
   if (!f) goto done;
+  char title[400], qt[900], qx[200], qy[200];
+  snprintf(title, sizeof title, "whirl run: basins of attraction (model %s)", R->prob.name);
+  cli_gp_preamble(f, "run", "basins", 800, 700, "Sans,11");
   fprintf(f,
-          "set terminal pngcairo size 800,700 enhanced font 'Sans,11'\n"
-          "set output '.basins.png.tmp'\n"
           "set datafile separator '\\t'\n"
-          "set title 'whirl run: basins of attraction (model %s)' noenhanced\n"
-          "set xlabel '%s' noenhanced\nset ylabel '%s' noenhanced\n"
+          "set title %s noenhanced\n"
+          "set xlabel %s noenhanced\nset ylabel %s noenhanced\n"
           "set size ratio -1\nset tics out\nunset colorbox\n"
           "set palette defined (-3 'black', -2 '#555555', -1 'white', 0 '#1f4e9c', "
           "1 '#e67e22', 2 '#27ae60', 3 '#8e44ad')\n"
           "set cbrange [-3:3]\n",
-          R->prob.name, R->xnames[ax[0]], R->xnames[ax[1]]);
+          cli_gp_quote(title, qt, sizeof qt), cli_gp_quote(R->xnames[ax[0]], qx, sizeof qx),
+          cli_gp_quote(R->xnames[ax[1]], qy, sizeof qy));
   fprintf(f, "map(c) = c < 0 ? c : (");
   for (size_t a = 0; a < na; a++)
     fprintf(f, "c == %d ? %zu : ", s->attractors[a], a % 4);
@@ -229,7 +231,7 @@ int run_basins(run_ctx *R) {
     fprintf(f, ", \\\n     NaN with boxes fs solid lc palette cb %zu title 'LAB %d'",
             a % 4, s->attractors[a]);
   fputc('\n', f);
-  if (fclose(f) != 0) goto done;
+  if (cli_outdir_fclose(&R->od, f, "basins.gp")) goto done;
   rc = 0;
 done:
   if (tg)

@@ -202,29 +202,28 @@ int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,
  * column differs: gnuplot breaks a line at an undefined point, so a stable
  * stretch is not joined across an unstable one (no 'set datafile missing',
  * which would make it skip those points and join them). */
-int run_write_plot(run_ctx *R, char *msg, size_t len) {
-  if (R->s->ips == WHIRL_IPS_BASINS) return cli_plot(R->tmp, "basins", msg, len);
-  char p[8192];
-  snprintf(p, sizeof p, "%s/diagram.gp", R->tmp);
-  FILE *f = fopen(p, "w");
-  if (!f) {
-    snprintf(msg, len, "cannot write %s", p);
-    return -1;
-  }
+int run_write_plot(run_ctx *R, const char **name) {
+  *name = R->s->ips == WHIRL_IPS_BASINS ? "basins" : "diagram";
+  if (R->s->ips == WHIRL_IPS_BASINS) return 0;
+  FILE *f = cli_outdir_fopen(&R->od, "diagram.gp");
+  if (!f) return -1;
+  /* names of the user's files, model and parameters, quoted for gnuplot */
+  char title[1024], qtitle[2100], qx[200], qy[200];
+  snprintf(title, sizeof title, "whirl run: %s (model %s)", whirl_runfile_name(R->rf),
+           R->prob.name);
   int x = R->plot_x, y = R->plot_y;
+  cli_gp_preamble(f, "run", "diagram", 900, 650, "Sans,11");
   fprintf(f,
-          "set terminal pngcairo size 900,650 enhanced font 'Sans,11'\n"
-          "set output '.diagram.png.tmp'\n"
           "set datafile separator '\\t'\n"
           "set key top left\n"
           "set grid lc rgb '#dddddd'\n"
-          "set title 'whirl run: %s (model %s)' noenhanced\n"
-          "set xlabel '%s' noenhanced\n"
-          "set ylabel '%s' noenhanced\n"
+          "set title %s noenhanced\n"
+          "set xlabel %s noenhanced\n"
+          "set ylabel %s noenhanced\n"
           "S = %zu\n"
           "plot ",
-          whirl_runfile_name(R->rf), R->prob.name, R->plot_x_name, R->plot_y_name,
-          R->ncols);
+          cli_gp_quote(title, qtitle, sizeof qtitle), cli_gp_quote(R->plot_x_name, qx, sizeof qx),
+          cli_gp_quote(R->plot_y_name, qy, sizeof qy), R->ncols);
   /* only the series that have points (gnuplot warns about empty ones) */
   int first = 1;
   for (int k = 2; k >= 0; k--) {
@@ -248,9 +247,5 @@ int run_write_plot(run_ctx *R, char *msg, size_t len) {
             "ne 'RG' && strcol(3) ne 'EP' ? column(%d) : NaN):3 with labels "
             "offset 1,0.7 notitle", x, y, x, y);
   fputc('\n', f);
-  if (fclose(f) != 0) {
-    snprintf(msg, len, "cannot write %s", p);
-    return -1;
-  }
-  return cli_plot(R->tmp, "diagram", msg, len);
+  return cli_outdir_fclose(&R->od, f, "diagram.gp");
 }

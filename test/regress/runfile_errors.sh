@@ -216,7 +216,7 @@ c 2 "IRS label not present" "$F:3: IRS: ab-1\.out/solutions: there is no label 9
 c 2 "IRS type count not present" "$F:3: IRS: ab-1\.out/solutions: there is no LP number 1" "$B"'IRS = LP1\nS = ab-1.out\n'
 c 2 "ISW = 2 with one ICP" "$F:2: ISW = 2 \(two-parameter continuation\) needs two parameters in ICP$" "$B"'IRS = 2\nS = ab-1.out\nISW = 2\n'
 c 2 "ISW = -1 at an HB label" "$F:5: ISW = -1 switches at a BP" "$B"'IRS = 2\nS = ab-1.out\nISW = -1\n'
-c 2 "OUT is a foreign directory" "$F:3: output directory ${q}notwhirl\.out$q exists and was not written by whirl run" "$B"'OUT = notwhirl.out\n'
+c 2 "OUT is a foreign directory" "$F:3: output directory ${q}notwhirl\.out$q holds an entry whirl did not write \(${q}keep\.txt$q\)" "$B"'OUT = notwhirl.out\n'
 # command-line overrides
 c 2 "bad override value (--DS=abc)" "^whirl run: command line \(--DS=abc\): DS: ${q}abc$q is not a finite number$" "$B" --DS=abc
 c 2 "override with an unknown key" "^whirl run: command line \(--bogus=1\): unknown key ${q}bogus$q" "$B" --bogus=1
