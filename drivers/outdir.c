@@ -432,6 +432,7 @@ int cli_outdir_begin(cli_outdir *d, const char *cmd, const char *where,
   d->where = where;
   int rc = check_path(d, path);
   if (rc) return rc;
+  d->where = NULL; /* the rest are I/O errors, not the run file's */
   remove_stale(d);
   snprintf(d->stage, sizeof d->stage, "%s.tmp.%ld", d->path, (long)getpid());
   snprintf(d->old, sizeof d->old, "%s.old.%ld", d->path, (long)getpid());
