@@ -749,7 +749,8 @@ int cmd_run(int argc, char **argv) {
   char where[4200] = "";
   if (whirl_runfile_given(R.rf, WHIRL_RK_OUT))
     whirl_runfile_where(R.rf, WHIRL_RK_OUT, where, sizeof where);
-  if (cli_outdir_check("run", where, R.out)) goto out;
+  if ((status = cli_outdir_check("run", where, R.out)) != 0) goto out;
+  status = 2;
   /* the labelled start solution */
   if (R.s->irs > 0 || R.s->irs_type[0]) {
     char msg[1024];

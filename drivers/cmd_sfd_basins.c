@@ -148,7 +148,8 @@ int cmd_sfd_basins(int argc, char **argv) {
     cli_error(CMD, "--rtol and --atol must be > 0 (got %g, %g)", rtol, atol);
     return 2;
   }
-  if (cli_outdir_check(CMD, NULL, dir)) return 2; /* before the work, not after */
+  int orc = cli_outdir_check(CMD, NULL, dir); /* before the work, not after */
+  if (orc) return orc;
   const double Om = p[WHIRL_SFD_OMEGA], T = 2 * M_PI / Om;
   char msg[512];
   double t_start = cli_now();

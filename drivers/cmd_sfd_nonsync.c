@@ -232,7 +232,8 @@ int cmd_sfd_nonsync(int argc, char **argv) {
   o.uz[0] = w0;
   o.nuz = 1;
 
-  if (cli_outdir_check(CMD, NULL, dir)) return 2; /* before the work, not after */
+  int orc = cli_outdir_check(CMD, NULL, dir); /* before the work, not after */
+  if (orc) return orc;
   const double t0 = cli_now();
   whirl_sfd_periodic ns;
   int rc = whirl_sfd_nonsync(p, w0, &o, &ns, msg, sizeof msg);

@@ -145,7 +145,8 @@ int cmd_sfd_region(int argc, char **argv) {
     return 2;
   }
   char msg[512] = "";
-  if (cli_outdir_check(CMD, NULL, dir)) return 2; /* before the work, not after */
+  int orc = cli_outdir_check(CMD, NULL, dir); /* before the work, not after */
+  if (orc) return orc;
   whirl_sfd_region reg;
   const double t0 = cli_now();
   int rc = whirl_sfd_region_compute(&o, &reg, msg, sizeof msg);

@@ -404,7 +404,8 @@ int cmd_sfd_response(int argc, char **argv) {
   po.ds_max = o.ds_max;
   po.linsol = o.linsol;
 
-  if (cli_outdir_check(CMD, NULL, dir)) return 2; /* before the work, not after */
+  int orc = cli_outdir_check(CMD, NULL, dir); /* before the work, not after */
+  if (orc) return orc;
   struct timespec t0, t1;
   clock_gettime(CLOCK_MONOTONIC, &t0);
   whirl_sfd_response res;
@@ -434,8 +435,7 @@ int cmd_sfd_response(int argc, char **argv) {
 
   cli_outdir od;
   out_file fb, fs;
-  int orc = cli_outdir_begin(&od, CMD, NULL, dir);
-  if (orc || out_open(&fb, &od, "branches.tsv") || out_open(&fs, &od, "special.tsv")) {
+  if (cli_outdir_begin(&od, CMD, NULL, dir) || out_open(&fb, &od, "branches.tsv") || out_open(&fs, &od, "special.tsv")) {
     cli_outdir_abort(&od);
     tab_free(&T);
     return 1;

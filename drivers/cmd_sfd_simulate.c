@@ -184,7 +184,8 @@ int cmd_sfd_simulate(int argc, char **argv) {
     return 2;
   }
 
-  if (cli_outdir_check(CMD, NULL, dir)) return 2; /* before the work, not after */
+  int orc = cli_outdir_check(CMD, NULL, dir); /* before the work, not after */
+  if (orc) return orc;
 
   const double Om = p[WHIRL_SFD_OMEGA], T = 2 * M_PI / Om;
   const size_t nsamp = periods * samples;

@@ -411,7 +411,7 @@ static int check_writable(const cli_outdir *d) {
   if (access(p, W_OK | X_OK) == 0) return 0;
   say(d, "cannot create output directory '%s': '%s': %s", d->shown, p,
       strerror(errno));
-  return 2;
+  return 1; /* an I/O error, not a bad argument */
 }
 
 int cli_outdir_check(const char *cmd, const char *where, const char *path) {

@@ -45,7 +45,8 @@ typedef struct cli_outdir {
  * directory is writable), creating nothing: called before a computation,
  * so that a bad output directory is reported before the work, not after.
  * WHERE (or NULL) is put before the messages: the run file's FILE:LINE.
- * Returns 0, or 2 with the message printed. */
+ * Returns 0, 2 (PATH cannot be an output directory) or 1 (it cannot be
+ * created there: permissions), with the message printed. */
 int cli_outdir_check(const char *cmd, const char *where, const char *path);
 
 /* Check PATH, remove stale temporaries that killed runs left beside it,
