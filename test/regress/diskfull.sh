@@ -31,16 +31,7 @@ diag() { sed 's/^/#   /' "$1"; }
 cd "$tmp" || exit 1
 PAGE=4096
 
-cat > small.whirl << 'EOF'
-model = sfd-rotating
-IPS = 1
-ICP = [Omega]
-PAR = {Omega: 0.5}
-U = {u: 0.1}
-NMX = 30
-DS = 0.05
-DSMAX = 0.2
-EOF
+cp "${top_srcdir:-$OLDPWD}/test/regress/sfd-small.whirl" small.whirl || exit 1
 
 # pages the files of DIR take on tmpfs (each file a whole number of pages)
 pages_of() {

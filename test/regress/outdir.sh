@@ -21,16 +21,7 @@ diag() { sed 's/^/#   /' "$1"; }
 cd "$tmp" || exit 1
 
 # a small run of the built-in rotor: circular orbits, 30 steps in Omega
-cat > small.whirl << 'EOF'
-model = sfd-rotating
-IPS = 1
-ICP = [Omega]
-PAR = {Omega: 0.5}
-U = {u: 0.1}
-NMX = 30
-DS = 0.05
-DSMAX = 0.2
-EOF
+cp "${top_srcdir:-$OLDPWD}/test/regress/sfd-small.whirl" small.whirl || exit 1
 complete_run() { # DIR: a complete whirl run output
   [ -s "$1/branches.tsv" ] && [ -s "$1/solutions" ] && [ -s "$1/run.log" ] &&
     [ -s "$1/diagram.png" ] && grep -q "^wall time" "$1/run.log"
