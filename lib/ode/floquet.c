@@ -1,4 +1,4 @@
-/* lib/analysis/floquet.c — Floquet multipliers from the monodromy matrix
+/* lib/ode/floquet.c — Floquet multipliers from the monodromy matrix
  * (variational equations, lib/ode/variational.c; paper eq. 24; Seydel,
  * Practical Bifurcation and Stability Analysis, §7.1).  For an autonomous
  * orbit one multiplier is 1 in exact arithmetic.  It is not simply dropped

@@ -1,0 +1,90 @@
+#!/bin/sh
+# test/regress/layers.sh — the library's layers, checked: a file of lib/
+# may include headers of its own layer and of the layers below it, never of
+# a layer above (util < linalg < core < ode < systems < analysis < run <
+# models).  Every public header of lib/whirl/ is given its layer here, so a
+# new header must be placed before it can be used.
+#
+#   test/regress/layers.sh [LIBDIR]     (default: $top_srcdir/lib)
+# SPDX-License-Identifier: BSD-3-Clause
+set -u
+lib=${1:-${top_srcdir:-.}/lib}
+n=0
+fails=0
+ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
+
+rank_of_layer() {
+  case $1 in
+    util) echo 0 ;; linalg) echo 1 ;; core) echo 2 ;; ode) echo 3 ;;
+    systems) echo 4 ;; analysis) echo 5 ;; run) echo 6 ;; models) echo 7 ;;
+    whirl) echo 8 ;;  # the umbrella header whirl.h
+    *) echo "" ;;
+  esac
+}
+# the layer of each public header
+layer_of_header() {
+  case $1 in
+    status.h) echo util ;;
+    linsol.h) echo linalg ;;
+    problem.h|system.h|cont.h|branch.h) echo core ;;
+    ode.h|floquet.h) echo ode ;;
+    equilibrium.h|hbm.h|colloc.h|fold.h|hopf.h|periodic.h) echo systems ;;
+    spectrum.h|basins.h) echo analysis ;;
+    runfile.h|model.h|run.h) echo run ;;
+    sfd.h|sfd_dynamics.h|sfd_periodic.h|sfd_region.h) echo models ;;
+    whirl.h) echo whirl ;;
+    *) echo "" ;;
+  esac
+}
+
+# every public header has a layer
+unplaced=""
+for h in "$lib"/whirl/*.h; do
+  b=$(basename "$h")
+  [ -n "$(layer_of_header "$b")" ] || unplaced="$unplaced $b"
+done
+[ -z "$unplaced" ]
+ok $? "every public header of lib/whirl has a layer${unplaced:+ (not placed:$unplaced)}"
+
+# no include runs up the layers
+bad=""
+count=0
+for f in "$lib"/*/*.c "$lib"/*/*.h; do
+  dir=$(basename "$(dirname "$f")")
+  [ "$dir" = whirl ] && dir=$(layer_of_header "$(basename "$f")")
+  r=$(rank_of_layer "$dir")
+  [ -n "$r" ] || continue
+  for inc in $(sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]\([^>"]*\)[>"].*/\1/p' "$f"); do
+    case $inc in
+      whirl/*) l=$(layer_of_header "${inc#whirl/}") ;;
+      ../*/*) l=${inc#../}; l=${l%%/*} ;;
+      */*) l=${inc%%/*}; [ -d "$lib/$l" ] || continue ;;
+      *) continue ;;  # same directory, or a system header
+    esac
+    [ -n "$l" ] || continue
+    ri=$(rank_of_layer "$l")
+    count=$((count + 1))
+    if [ "$ri" -gt "$r" ]; then
+      bad="$bad ${f#"$lib"/} ($dir) includes $inc ($l);"
+    fi
+  done
+done
+[ -z "$bad" ]
+ok $? "no file of lib/ includes a header of a layer above its own ($count includes checked)${bad:+:$bad}"
+
+# a header's implementation lives in its layer (whirl/X.h and lib/*/X.c)
+misplaced=""
+for h in "$lib"/whirl/*.h; do
+  b=$(basename "$h" .h)
+  want=$(layer_of_header "$b.h")
+  for c in "$lib"/*/"$b".c; do
+    [ -f "$c" ] || continue
+    d=$(basename "$(dirname "$c")")
+    [ "$d" = "$want" ] || misplaced="$misplaced ${c#"$lib"/} (header's layer: $want);"
+  done
+done
+[ -z "$misplaced" ]
+ok $? "each public header's implementation is in the header's layer${misplaced:+:$misplaced}"
+
+echo "1..$n"
+[ $fails -eq 0 ]
