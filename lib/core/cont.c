@@ -220,9 +220,14 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   if (!c->fp || !c->f || !c->rhs || !c->row || !c->row2 || !c->work || !c->dir ||
       !c->Xprev || !c->tprev || !c->Xstart)
     goto nomem;
-  c->qcap = 2 * (8 + opt->nuz + (sys->test ? sys->ntest : 0));
+  /* a step's events: LP, BP, HB, PD, two bounds, the user values and the
+   * system's tests; the queue holds their localisations (tail) and what
+   * is emitted (head) */
+  const size_t maxev = 6 + opt->nuz + (sys->test ? sys->ntest : 0);
+  c->evs = calloc(maxev, sizeof *c->evs);
+  c->qcap = 2 * (maxev + 2);
   c->queue = calloc(c->qcap, sizeof *c->queue);
-  if (!c->queue) goto nomem;
+  if (!c->queue || !c->evs) goto nomem;
   if (state_alloc(c, &c->cur) || state_alloc(c, &c->trial) ||
       state_alloc(c, &c->out))
     goto nomem;
@@ -270,6 +275,7 @@ void whirl_cont_free(whirl_cont *c) {
   if (c->queue)
     for (size_t i = 0; i < c->qcap; ++i) state_free(&c->queue[i]);
   free(c->queue);
+  free(c->evs);
   if (c->opt.nuz) {
     free((double *)c->opt.uz);
     free((int *)c->opt.uz_stop);
@@ -821,11 +827,16 @@ static double seg_dist(const whirl_cont *c, const double *P, const double *A,
   return sqrt(d);
 }
 
-typedef struct event {
-  int ev;
-  size_t k;
-  cont_state *st;
-} event;
+/* |A - B|² in the weighted norm of the arclength. */
+static double weighted_dist2(const whirl_cont *c, const double *A, const double *B) {
+  const double w2 = c->opt.p_weight * c->opt.p_weight;
+  double d2 = 0.0;
+  for (size_t i = 0; i < c->N; ++i) {
+    const double di = A[i] - B[i];
+    d2 += (i == c->n ? w2 : 1.0) * di * di;
+  }
+  return d2;
+}
 
 static int finish(whirl_cont *c, int reason) {
   c->done = 1;
@@ -862,42 +873,40 @@ static void curved_guess(whirl_cont *c) {
     c->trial.X[i] = c->cur.X[i] + sg * t[i] + q * (t[i] - tp[i]);
 }
 
-int whirl_cont_step(whirl_cont *c) {
-  if (!c->started)
-    return CONT_FAIL(c, WHIRL_EINVAL, "whirl_cont_step: continuation not started");
-  if (pop(c)) return WHIRL_OK;
-  if (c->done) return WHIRL_DONE;
+/* The system may change the representation of its unknowns between steps
+ * (a new collocation mesh), once every point of the last step has been
+ * handed out. */
+static int remap_if_asked(whirl_cont *c) {
+  const size_t N = c->N;
+  double *v[5] = {c->cur.X, c->cur.t, c->Xstart, c->Xprev, c->tprev};
+  size_t nv = c->have_tprev ? 5 : c->have_prev ? 4 : 3;
+  int rc = c->sys.remap(v, nv, c->cur.p, c->sys.data);
+  if (rc < 0) return CONT_FAIL(c, rc, "the system's remap callback failed (%d)", rc);
+  if (rc != 1) return 0;
+  c->fact_ok = 0;
+  /* the unit tangents (current and previous) stay unit */
+  double *tangents[2] = {c->cur.t, c->have_tprev ? c->tprev : NULL};
+  for (int k = 0; k < 2 && tangents[k]; ++k) {
+    const double nt = cont_norm(c, tangents[k]);
+    if (nt > 0 && isfinite(nt))
+      for (size_t i = 0; i < N; ++i) tangents[k][i] /= nt;
+  }
+  memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
+  rc = cont_analyse(c, &c->cur, c->dir);
+  if (rc < 0) return rc;
+  if (rc > 0)
+    return CONT_FAIL(c, WHIRL_ESINGULAR, "the current point is singular "
+                     "after the system's change of representation (remap)");
+  return 0;
+}
+
+/* Predict along the secant (or the tangent), correct, analyse; halve the
+ * step on a failure or a turn sharper than max_angle.  0 with c->trial the
+ * new point, WHIRL_DONE at DSMIN (the branch ends there), < 0 fatal. */
+static int predict_correct(whirl_cont *c, double *cosang, int *its) {
   const size_t n = c->n, N = c->N;
   const whirl_cont_options *o = &c->opt;
-  /* every point of the last step has been handed out: the system may now
-   * change the representation of its unknowns (a new collocation mesh) */
-  if (c->sys.remap) {
-    double *v[5] = {c->cur.X, c->cur.t, c->Xstart, c->Xprev, c->tprev};
-    size_t nv = c->have_tprev ? 5 : c->have_prev ? 4 : 3;
-    int rc = c->sys.remap(v, nv, c->cur.p, c->sys.data);
-    if (rc < 0)
-      return CONT_FAIL(c, rc, "the system's remap callback failed (%d)", rc);
-    if (rc == 1) {
-      c->fact_ok = 0;
-      /* the unit tangents (current and previous) stay unit */
-      double *tangents[2] = {c->cur.t, c->have_tprev ? c->tprev : NULL};
-      for (int k = 0; k < 2 && tangents[k]; ++k) {
-        const double nt = cont_norm(c, tangents[k]);
-        if (nt > 0 && isfinite(nt))
-          for (size_t i = 0; i < N; ++i) tangents[k][i] /= nt;
-      }
-      memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
-      rc = cont_analyse(c, &c->cur, c->dir);
-      if (rc < 0) return rc;
-      if (rc > 0)
-        return CONT_FAIL(c, WHIRL_ESINGULAR, "the current point is singular "
-                         "after the system's change of representation (remap)");
-    }
-  }
   int last_fail = 1;
-  double cosang = 1.0;
-  int its = 0;
-
   for (;;) {
     if (fabs(c->ds) < o->ds_min) {
       const double pv = c->cur.X[n];
@@ -907,8 +916,6 @@ int whirl_cont_step(whirl_cont *c) {
                pv, whirl_stop_reason_name(c->stop_reason));
       return WHIRL_DONE;
     }
-    /* predictor direction: secant through the last two points, or the
-     * tangent at the current one */
     if (!o->tangent_predictor && c->have_prev) {
       for (size_t i = 0; i < N; ++i) c->dir[i] = c->cur.X[i] - c->Xprev[i];
       double nd = cont_norm(c, c->dir);
@@ -921,7 +928,7 @@ int whirl_cont_step(whirl_cont *c) {
       curved_guess(c);
     int rc = cont_correct(c, c->cur.X, c->dir, c->ds, c->trial.X);
     if (rc < 0) return rc;
-    its = c->its;
+    *its = c->its;
     if (rc == 0) rc = cont_analyse(c, &c->trial, c->dir);
     if (rc < 0) return rc;
     if (rc > 0) {
@@ -930,199 +937,258 @@ int whirl_cont_step(whirl_cont *c) {
       ++c->stats.rejected;
       continue;
     }
-    cosang = cont_dot(c, c->cur.t, c->trial.t);
-    if (cosang < cos(o->max_angle) && fabs(c->ds) > 4.0 * o->ds_min) {
+    *cosang = cont_dot(c, c->cur.t, c->trial.t);
+    if (*cosang < cos(o->max_angle) && fabs(c->ds) > 4.0 * o->ds_min) {
       c->ds *= 0.5;
       ++c->stats.rejected;
       continue;
     }
-    break;
+    c->trial.s = c->cur.s + sqrt(weighted_dist2(c, c->trial.X, c->cur.X));
+    return 0;
   }
-  {
-    double d2 = 0.0;
-    for (size_t i = 0; i < N; ++i) {
-      double di = c->trial.X[i] - c->cur.X[i];
-      d2 += (i == n ? o->p_weight * o->p_weight : 1.0) * di * di;
-    }
-    c->trial.s = c->cur.s + sqrt(d2);
-  }
+}
 
-  /* ---- events between cur (s = 0) and trial (s = ds) */
-  event evs[8 + 64 + 16];
-  const size_t nsys = c->sys.test && o->detect_sys
-                          ? (c->sys.ntest < 16 ? c->sys.ntest : 16)
-                          : 0;
-  size_t nev = 0, maxev = 8 + (o->nuz < 64 ? o->nuz : 64) + nsys;
-  size_t nslot = 0; /* queue tail slots used by localisations */
+/* ---- special points: one table of what a step can contain -------------- */
+
+/* Has the test function of event kind EV (instance k) a zero between the
+ * accepted point a and the new point b? */
+typedef int (*crossing_fn)(const whirl_cont *c, size_t k, const cont_state *a,
+                           const cont_state *b);
+
+static int crosses_lp(const whirl_cont *c, size_t k, const cont_state *a,
+                      const cont_state *b) {
+  (void)k;
+  return a->tests_valid && c->opt.detect_lp && sgn(a->psi_lp) * sgn(b->psi_lp) < 0;
+}
+static int crosses_bp(const whirl_cont *c, size_t k, const cont_state *a,
+                      const cont_state *b) {
+  (void)k;
+  return a->tests_valid && c->opt.detect_bp && a->sign_det * b->sign_det < 0;
+}
+static int crosses_hb(const whirl_cont *c, size_t k, const cont_state *a,
+                      const cont_state *b) {
+  (void)k;
+  return a->tests_valid && c->opt.detect_hb && a->n_cu >= 0 && b->n_cu >= 0 &&
+         a->n_cu != b->n_cu && a->has_hb && b->has_hb &&
+         sgn(a->psi_hb) * sgn(b->psi_hb) < 0;
+}
+static int crosses_pd(const whirl_cont *c, size_t k, const cont_state *a,
+                      const cont_state *b) {
+  (void)k;
+  return a->tests_valid && c->opt.detect_pd && a->n_rn >= 0 && b->n_rn >= 0 &&
+         a->n_rn != b->n_rn && a->has_pd && b->has_pd &&
+         sgn(a->psi_pd) * sgn(b->psi_pd) < 0;
+}
+static int crosses_pmin(const whirl_cont *c, size_t k, const cont_state *a,
+                        const cont_state *b) {
+  (void)k;
+  return b->X[c->n] < c->opt.p_min && a->X[c->n] >= c->opt.p_min;
+}
+static int crosses_pmax(const whirl_cont *c, size_t k, const cont_state *a,
+                        const cont_state *b) {
+  (void)k;
+  return b->X[c->n] > c->opt.p_max && a->X[c->n] <= c->opt.p_max;
+}
+static int crosses_uz(const whirl_cont *c, size_t k, const cont_state *a,
+                      const cont_state *b) {
+  return sgn(cont_uz_value(c, k, a) - c->opt.uz[k]) *
+             sgn(cont_uz_value(c, k, b) - c->opt.uz[k]) < 0;
+}
+static int crosses_sys(const whirl_cont *c, size_t k, const cont_state *a,
+                       const cont_state *b) {
+  (void)c;
+  return a->tests_valid && sgn(a->tau[k]) * sgn(b->tau[k]) < 0;
+}
+
+static const struct event_kind {
+  int ev;             /* what locate.c localises */
+  int type;           /* the point's type (system tests: the state says) */
+  crossing_fn crosses;
+  int bound;          /* ends the branch; kept at b when not localised */
+} event_kinds[] = {
+    {EV_LP, WHIRL_PT_LP, crosses_lp, 0},     {EV_BP, WHIRL_PT_BP, crosses_bp, 0},
+    {EV_HB, WHIRL_PT_HB, crosses_hb, 0},     {EV_PD, WHIRL_PT_PD, crosses_pd, 0},
+    {EV_PMIN, WHIRL_PT_EP, crosses_pmin, 1}, {EV_PMAX, WHIRL_PT_EP, crosses_pmax, 1},
+    {EV_UZ, WHIRL_PT_UZ, crosses_uz, 0},     {EV_SYS, 0, crosses_sys, 0}};
+
+/* Instances of an event kind: the user values, the system's tests. */
+static size_t instances(const whirl_cont *c, int ev) {
+  if (ev == EV_UZ) return c->opt.nuz;
+  if (ev == EV_SYS) return c->sys.test && c->opt.detect_sys ? c->sys.ntest : 0;
+  return 1;
+}
+
+static void add_event(whirl_cont *c, size_t *nev, int ev, size_t k, cont_state *st) {
+  c->evs[*nev].ev = ev;
+  c->evs[*nev].k = k;
+  c->evs[*nev].st = st;
+  ++*nev;
+}
+
+/* A fold and a branch point in the same step at the same point: the
+ * branch turns at a pitchfork it meets (enz's asymmetric branch at the
+ * symmetric one).  The fold test, the parameter component of a tangent
+ * that is undetermined there, is noisy near the point; the determinant's
+ * zero is not: both are reported at the branch point. */
+static void fold_at_branch_point(whirl_cont *c, size_t nev) {
+  cont_event *e = c->evs;
+  if (nev >= 2 && e[0].ev == EV_LP && e[1].ev == EV_BP &&
+      sqrt(weighted_dist2(c, e[0].st->X, e[1].st->X)) <= 1e-2 * fabs(c->ds))
+    cont_state_copy(c, e[0].st, e[1].st);
+}
+
+/* A cusp or a merge found by a system test is also a turning point of the
+ * fold curve in the continuation parameter: report it once, with its own
+ * name (drop the LP at the same arclength). */
+static void drop_lp_at(whirl_cont *c, size_t *nev, const cont_state *q) {
+  for (size_t i = 0; i < *nev; ++i)
+    if (c->evs[i].ev == EV_LP &&
+        fabs(c->evs[i].st->s - q->s) <= 1e-6 * fabs(c->ds) + 1e-12) {
+      c->evs[i] = c->evs[--*nev];
+      return;
+    }
+}
+
+/* Localise every zero of a test function between cur and trial into the
+ * tail of the queue, listed in c->evs in the order of event_kinds, then
+ * ordered by arclength.  Returns their number. */
+static size_t find_events(whirl_cont *c) {
   const cont_state *a = &c->cur, *b = &c->trial;
-  int want[EV_NKIND] = {0};
-  if (a->tests_valid) {
-    want[EV_LP] = o->detect_lp && sgn(a->psi_lp) * sgn(b->psi_lp) < 0;
-    want[EV_BP] = o->detect_bp && a->sign_det * b->sign_det < 0;
-    want[EV_HB] = o->detect_hb && a->n_cu >= 0 && b->n_cu >= 0 &&
-                  a->n_cu != b->n_cu && a->has_hb && b->has_hb &&
-                  sgn(a->psi_hb) * sgn(b->psi_hb) < 0;
-    want[EV_PD] = o->detect_pd && a->n_rn >= 0 && b->n_rn >= 0 &&
-                  a->n_rn != b->n_rn && a->has_pd && b->has_pd &&
-                  sgn(a->psi_pd) * sgn(b->psi_pd) < 0;
-  }
-  want[EV_PMAX] = b->X[n] > o->p_max && a->X[n] <= o->p_max;
-  want[EV_PMIN] = b->X[n] < o->p_min && a->X[n] >= o->p_min;
-  /* a branch started on a bound and heading out ends where it started */
-  if ((want[EV_PMAX] && a->X[n] >= o->p_max - 1e-12 * (1.0 + fabs(o->p_max))) ||
-      (want[EV_PMIN] && a->X[n] <= o->p_min + 1e-12 * (1.0 + fabs(o->p_min)))) {
-    finish(c, want[EV_PMAX] ? WHIRL_STOP_PMAX : WHIRL_STOP_PMIN);
-    return WHIRL_DONE;
-  }
-  for (int ev = 0; ev < EV_NKIND; ++ev) {
-    if (!want[ev] || nev >= maxev) continue;
-    cont_state *q = &c->queue[c->qcap - 1 - nslot++];
-    if (cont_locate(c, ev, 0, b, q) == 0) {
-      evs[nev].ev = ev;
-      evs[nev].k = 0;
-      evs[nev].st = q;
-      ++nev;
-    } else if (ev == EV_PMAX || ev == EV_PMIN) {
-      /* could not localise the bound: end at the trial point anyway */
-      cont_state_copy(c, q, b);
-      evs[nev].ev = ev;
-      evs[nev].k = 0;
-      evs[nev].st = q;
-      ++nev;
-    }
-  }
-  /* A fold and a branch point in the same step at the same point: the
-   * branch turns at a pitchfork it meets (enz's asymmetric branch at the
-   * symmetric one).  The fold test, the parameter component of a tangent
-   * that is undetermined there, is noisy near the point; the determinant's
-   * zero is not: both are reported at the branch point. */
-  if (nev >= 2 && evs[0].ev == EV_LP && evs[1].ev == EV_BP) {
-    double d2 = 0.0;
-    for (size_t i = 0; i < N; ++i) {
-      const double di = evs[0].st->X[i] - evs[1].st->X[i];
-      d2 += (i == n ? o->p_weight * o->p_weight : 1.0) * di * di;
-    }
-    if (sqrt(d2) <= 1e-2 * fabs(c->ds)) cont_state_copy(c, evs[0].st, evs[1].st);
-  }
-  for (size_t k = 0; k < o->nuz && nev < maxev; ++k) {
-    if (sgn(cont_uz_value(c, k, a) - o->uz[k]) *
-            sgn(cont_uz_value(c, k, b) - o->uz[k]) < 0) {
+  size_t nev = 0, nslot = 0; /* queue tail slots used by localisations */
+  for (size_t e = 0; e < sizeof event_kinds / sizeof *event_kinds; ++e) {
+    const struct event_kind *K = &event_kinds[e];
+    const size_t m = instances(c, K->ev);
+    if (K->ev == EV_UZ) fold_at_branch_point(c, nev);
+    for (size_t k = 0; k < m; ++k) {
+      if (!K->crosses(c, k, a, b)) continue;
       cont_state *q = &c->queue[c->qcap - 1 - nslot++];
-      if (cont_locate(c, EV_UZ, k, b, q) == 0) {
-        evs[nev].ev = EV_UZ;
-        evs[nev].k = k;
-        evs[nev].st = q;
-        ++nev;
+      if (cont_locate(c, K->ev, k, b, q) != 0) {
+        if (!K->bound) continue;
+        cont_state_copy(c, q, b); /* not localised: end at the trial point */
       }
+      if (K->ev == EV_SYS) {
+        if (q->ttype[k] == 0) continue;
+        drop_lp_at(c, &nev, q);
+      }
+      add_event(c, &nev, K->ev, k, q);
     }
-  }
-  /* the system's own tests (codimension-two points on fold curves) */
-  for (size_t k = 0; k < nsys && a->tests_valid && nev < maxev; ++k) {
-    if (!(sgn(a->tau[k]) * sgn(b->tau[k]) < 0)) continue;
-    cont_state *q = &c->queue[c->qcap - 1 - nslot++];
-    if (cont_locate(c, EV_SYS, k, b, q) != 0 || q->ttype[k] == 0) continue;
-    /* A cusp or a merge is also a turning point of the fold curve in the
-     * continuation parameter: report it once, with its own name. */
-    for (size_t i = 0; i < nev; ++i)
-      if (evs[i].ev == EV_LP &&
-          fabs(evs[i].st->s - q->s) <= 1e-6 * fabs(c->ds) + 1e-12) {
-        evs[i] = evs[--nev];
-        break;
-      }
-    evs[nev].ev = EV_SYS;
-    evs[nev].k = k;
-    evs[nev].st = q;
-    ++nev;
   }
   /* the localisations moved the work parameter vector: restore it */
-  c->trial.p[o->icp] = c->trial.X[n];
-  /* order by arclength (insertion sort; a handful of entries) */
-  for (size_t i = 1; i < nev; ++i)
-    for (size_t j = i; j > 0 && evs[j].st->s < evs[j - 1].st->s; --j) {
-      event tmp = evs[j];
-      evs[j] = evs[j - 1];
-      evs[j - 1] = tmp;
+  c->trial.p[c->opt.icp] = c->trial.X[c->n];
+  for (size_t i = 1; i < nev; ++i) /* insertion sort: stable, a handful */
+    for (size_t j = i; j > 0 && c->evs[j].st->s < c->evs[j - 1].st->s; --j) {
+      cont_event tmp = c->evs[j];
+      c->evs[j] = c->evs[j - 1];
+      c->evs[j - 1] = tmp;
     }
-  /* The localised states live at the tail of the queue array; copy them to
-   * the head in order.  The queue is empty here, and tail slots are beyond
-   * anything pushed below because qcap >= 8 + nuz > nev + 2. */
-  int ended = 0;
-  for (size_t i = 0; i < nev && !ended; ++i) {
-    static const int type_of[] = {WHIRL_PT_LP, WHIRL_PT_BP, WHIRL_PT_HB,
-                                  WHIRL_PT_PD, WHIRL_PT_EP, WHIRL_PT_EP,
-                                  WHIRL_PT_UZ};
-    int type = evs[i].ev == EV_SYS ? evs[i].st->ttype[evs[i].k]
-                                   : type_of[evs[i].ev];
+  return nev;
+}
+
+/* Emit the events in order (the localised states are copied from the
+ * queue's tail to its head); 1 when one of them ends the branch. */
+static int emit_events(whirl_cont *c, size_t nev) {
+  for (size_t i = 0; i < nev; ++i) {
+    const cont_event *e = &c->evs[i];
+    int type = e->ev == EV_SYS ? e->st->ttype[e->k] : event_kinds[e->ev].type;
     /* a complex pair through the unit circle of the multipliers: torus */
     if (type == WHIRL_PT_HB && c->sys.spectrum_kind == WHIRL_SPEC_MULTIPLIERS)
       type = WHIRL_PT_TR;
-    evs[i].st->uz = evs[i].ev == EV_UZ ? (int)evs[i].k : -1;
-    push(c, evs[i].st, type);
+    e->st->uz = e->ev == EV_UZ ? (int)e->k : -1;
+    push(c, e->st, type);
     ++c->stats.special;
-    if (evs[i].ev == EV_UZ && o->uz_stop[evs[i].k]) {
-      finish(c, WHIRL_STOP_UZ);
-      ended = 1;
-      break;
-    }
-    if (evs[i].ev == EV_PMAX || evs[i].ev == EV_PMIN) {
-      finish(c, evs[i].ev == EV_PMAX ? WHIRL_STOP_PMAX : WHIRL_STOP_PMIN);
-      ended = 1;
-    } else if (evs[i].ev == EV_BP && o->stop_at_bp) {
+    if (e->ev == EV_UZ && c->opt.uz_stop[e->k]) return finish(c, WHIRL_STOP_UZ), 1;
+    if (e->ev == EV_PMAX || e->ev == EV_PMIN)
+      return finish(c, e->ev == EV_PMAX ? WHIRL_STOP_PMAX : WHIRL_STOP_PMIN), 1;
+    if (e->ev == EV_BP && c->opt.stop_at_bp) {
       c->queue[c->qlen - 1].type = WHIRL_PT_BP;
-      finish(c, WHIRL_STOP_BP);
-      ended = 1;
+      return finish(c, WHIRL_STOP_BP), 1;
     }
   }
-  /* closed branch: the start point lies on the new segment */
-  if (!ended && o->detect_loop && c->index > 3) {
-    double u, dlen = 0.0;
-    double d = seg_dist(c, c->Xstart, a->X, b->X, &u);
-    for (size_t i = 0; i < N; ++i)
-      dlen += (b->X[i] - a->X[i]) * (b->X[i] - a->X[i]);
-    dlen = sqrt(dlen);
-    if (u >= 0.0 && u <= 1.0 && d < 0.05 * dlen && b->s > 4.0 * dlen) {
-      /* emit the start point again so the stored polyline closes */
-      cont_state *q = &c->queue[c->qcap - 1];
-      cont_state_copy(c, q, b);
-      memcpy(q->X, c->Xstart, N * sizeof *q->X);
-      q->p[o->icp] = c->Xstart[n];
-      q->s = a->s + u * (b->s - a->s);
-      /* the stability of the start point is the one already reported */
-      push(c, q, WHIRL_PT_EP);
-      finish(c, WHIRL_STOP_LOOP);
-      ended = 1;
-    }
-  }
-  if (!ended) {
-    ++c->stats.steps;
-    int is_end = c->stats.steps >= o->nmx;
-    double xm = 0.0;
-    for (size_t i = 0; i < n; ++i) xm = fmax(xm, fabs(b->X[i]));
-    int xmax = o->x_max > 0 && xm > o->x_max;
-    push(c, b, is_end || xmax ? WHIRL_PT_EP : WHIRL_PT_REGULAR);
-    if (is_end) finish(c, WHIRL_STOP_NMX);
-    else if (xmax) finish(c, WHIRL_STOP_XMAX);
-  } else {
-    ++c->stats.steps;
-  }
-  /* accept */
+  return 0;
+}
+
+/* A branch started on a bound and heading out ends where it started. */
+static int leaves_its_bound(whirl_cont *c) {
+  const whirl_cont_options *o = &c->opt;
+  const double pa = c->cur.X[c->n], pb = c->trial.X[c->n];
+  if (pb > o->p_max && pa <= o->p_max && pa >= o->p_max - 1e-12 * (1.0 + fabs(o->p_max)))
+    return finish(c, WHIRL_STOP_PMAX), 1;
+  if (pb < o->p_min && pa >= o->p_min && pa <= o->p_min + 1e-12 * (1.0 + fabs(o->p_min)))
+    return finish(c, WHIRL_STOP_PMIN), 1;
+  return 0;
+}
+
+/* Closed branch: the start point lies on the new segment.  Emits the start
+ * point again (so the stored polyline closes) and ends; 1 if so. */
+static int closes_loop(whirl_cont *c) {
+  const size_t N = c->N;
+  const cont_state *a = &c->cur, *b = &c->trial;
+  if (!c->opt.detect_loop || c->index <= 3) return 0;
+  double u, dlen = 0.0;
+  double d = seg_dist(c, c->Xstart, a->X, b->X, &u);
+  for (size_t i = 0; i < N; ++i) dlen += (b->X[i] - a->X[i]) * (b->X[i] - a->X[i]);
+  dlen = sqrt(dlen);
+  if (!(u >= 0.0 && u <= 1.0 && d < 0.05 * dlen && b->s > 4.0 * dlen)) return 0;
+  cont_state *q = &c->queue[c->qcap - 1];
+  cont_state_copy(c, q, b);
+  memcpy(q->X, c->Xstart, N * sizeof *q->X);
+  q->p[c->opt.icp] = c->Xstart[c->n];
+  q->s = a->s + u * (b->s - a->s);
+  /* the stability of the start point is the one already reported */
+  push(c, q, WHIRL_PT_EP);
+  finish(c, WHIRL_STOP_LOOP);
+  return 1;
+}
+
+/* The new point itself: regular, or the end at NMX or past x_max. */
+static void emit_step_point(whirl_cont *c) {
+  const cont_state *b = &c->trial;
+  const int is_end = c->stats.steps >= c->opt.nmx;
+  double xm = 0.0;
+  for (size_t i = 0; i < c->n; ++i) xm = fmax(xm, fabs(b->X[i]));
+  const int xmax = c->opt.x_max > 0 && xm > c->opt.x_max;
+  push(c, b, is_end || xmax ? WHIRL_PT_EP : WHIRL_PT_REGULAR);
+  if (is_end) finish(c, WHIRL_STOP_NMX);
+  else if (xmax) finish(c, WHIRL_STOP_XMAX);
+}
+
+/* Accept the trial point and adapt the step: grow after easy steps,
+ * shrink after hard ones. */
+static int accept_step(whirl_cont *c, int its, double cosang) {
+  const size_t N = c->N;
+  const whirl_cont_options *o = &c->opt;
   memcpy(c->Xprev, c->cur.X, N * sizeof *c->Xprev);
   c->have_prev = 1;
   memcpy(c->tprev, c->cur.t, N * sizeof *c->tprev);
   c->hprev = c->trial.s - c->cur.s;
   c->have_tprev = 1;
   cont_state_copy(c, &c->cur, &c->trial);
-  {
-    int rc_acc = notify_accept(c, &c->cur);
-    if (rc_acc) return rc_acc;
-  }
-  /* step control: grow after easy steps, shrink after hard ones */
+  int rc = notify_accept(c, &c->cur);
+  if (rc) return rc;
   if (its <= o->newton_fast && cosang > cos(0.5 * o->max_angle))
     c->ds = fmin(1.5 * fabs(c->ds), o->ds_max);
   else if (its > o->newton_maxit / 2)
     c->ds = fmax(0.7 * fabs(c->ds), o->ds_min);
   pop(c);
   return WHIRL_OK;
+}
+
+int whirl_cont_step(whirl_cont *c) {
+  if (!c->started)
+    return CONT_FAIL(c, WHIRL_EINVAL, "whirl_cont_step: continuation not started");
+  if (pop(c)) return WHIRL_OK;
+  if (c->done) return WHIRL_DONE;
+  int rc = c->sys.remap ? remap_if_asked(c) : 0;
+  double cosang = 1.0;
+  int its = 0;
+  if (!rc) rc = predict_correct(c, &cosang, &its);
+  if (rc) return rc;
+  if (leaves_its_bound(c)) return WHIRL_DONE;
+  const size_t nev = find_events(c);
+  const int ended = emit_events(c, nev) || closes_loop(c);
+  ++c->stats.steps;
+  if (!ended) emit_step_point(c);
+  return accept_step(c, its, cosang);
 }
 
 const whirl_point *whirl_cont_point(const whirl_cont *c) { return &c->pt; }

@@ -63,6 +63,7 @@ struct whirl_cont {
 
   cont_state cur;     /* last accepted point */
   cont_state trial;   /* point being computed */
+  struct cont_event *evs; /* the special points of the current step */
   cont_state *queue;  /* special points and the regular point to emit */
   size_t qlen, qhead, qcap;
   cont_state out;     /* storage behind the point returned to the caller */
@@ -107,6 +108,13 @@ double cont_dot(const whirl_cont *c, const double *a, const double *b);
 /* Copy a state (all arrays). */
 void cont_state_copy(const whirl_cont *c, cont_state *dst,
                      const cont_state *src);
+
+/* A special point found in a step: its kind, instance and localisation. */
+typedef struct cont_event {
+  int ev;
+  size_t k;
+  cont_state *st;
+} cont_event;
 
 /* Event kinds localised by locate.c. */
 enum { EV_LP, EV_BP, EV_HB, EV_PD, EV_PMIN, EV_PMAX, EV_UZ, EV_NKIND = EV_UZ,
