@@ -36,6 +36,7 @@ static void help(FILE *f) {
 "  --samples S      samples per period in the outputs     (64)\n"
 "  --lambda L --delta D --zeta Z --fe F   model parameters (0.0503 0.3 0 0)\n"
 "  --rtol R --atol A  integration tolerances          (1e-12, 1e-15)\n"
+"                    1e-13 <= R <= 1e-3, 0 < A <= 1e-3\n"
 "  --out DIR        output directory                      (sfd-simulate)\n"
 "  --no-plot        data only;   --quiet   no summary on stderr\n"
 "\n"
@@ -139,10 +140,7 @@ int cmd_sfd_simulate(int argc, char **argv) {
     cli_error(CMD, "--steady-from must be < --periods (got %zu >= %zu)", steady_from, periods);
     return 2;
   }
-  if (!(rtol > 0) || !(atol > 0)) {
-    cli_error(CMD, "--rtol and --atol must be > 0 (got %g, %g)", rtol, atol);
-    return 2;
-  }
+  if (sfd_check_tolerances(CMD, rtol, atol)) return 2;
   if ((double)periods * (double)samples > 1e7) {
     cli_error(CMD, "--periods x --samples = %g samples is too many to keep (max 1e7: "
               "lower --samples)",
