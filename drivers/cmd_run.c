@@ -317,7 +317,15 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     }
     if (stop) break;
   }
-  if (rc == WHIRL_DONE || stop) {
+  const int reason = rc == WHIRL_DONE && !stop ? whirl_cont_stop_reason(c) : 0;
+  if (reason == WHIRL_STOP_NOCONV || reason == WHIRL_STOP_DOMAIN) {
+    /* the points so far are a result, the end is not: keep them, fail */
+    fprintf(stderr, "whirl run: %s: branch %d failed after point %zu: %s\n",
+            whirl_runfile_name(R->rf), R->branch, npts, whirl_cont_errmsg(c));
+    fprintf(R->log, "  failed: %s after %zu points\n", whirl_cont_errmsg(c), npts);
+    R->failed = 1;
+    rc = 0;
+  } else if (rc == WHIRL_DONE || stop) {
     fprintf(R->log, "  ended: %s after %zu points\n",
             stop ? "L2-NORM left [A0, A1]"
                  : whirl_stop_reason_name(whirl_cont_stop_reason(c)),
@@ -845,7 +853,7 @@ int cmd_run(int argc, char **argv) {
   if (!R.quiet)
     printf("wrote %s/ (%s)\n", R.out, basins ? "basins.tsv, run.log, basins.png"
                                         : "branches.tsv, solutions, run.log, diagram.png");
-  status = 0;
+  status = R.failed ? 1 : 0; /* a branch failed: kept, and said on stderr */
   goto out;
 cleanup:
   if (R.log) fclose(R.log);

@@ -48,6 +48,9 @@ typedef struct run_ctx {
   char out[4096], tmp[4200], rundir[4096];
   FILE *log, *table, *sols;
   int label, branch;
+  int failed;              /* a branch ended in failure (DSMIN reached without
+                              convergence, a persisting model domain error):
+                              the output is kept, the exit status is 1 */
   int quiet;
   int plot_x, plot_y;      /* 1-based columns of the picture's axes */
   char plot_x_name[80], plot_y_name[80];

@@ -7,6 +7,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 set -u
 WHIRL="$(cd "${top_builddir:-.}" && pwd)/drivers/whirl"
+SRC="$(cd "${top_srcdir:-.}" && pwd)"
+CC=${CC:-cc}
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-failexit.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 n=0
@@ -14,12 +16,13 @@ fails=0
 ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
 
 # expect STATUS PATTERN CMD...: the command exits with STATUS within 20 s and
-# its stderr matches PATTERN (a grep -E expression) on a single line.
+# its stderr matches PATTERN (a grep -E expression) on a single line, or is
+# empty when PATTERN is "".
 expect() {
   want=$1; pattern=$2; shift 2
   timeout 20 "$WHIRL" "$@" > "$tmp/stdout" 2> "$tmp/stderr"
   rc=$?
-  grep -Eq -- "$pattern" "$tmp/stderr"
+  if [ -n "$pattern" ]; then grep -Eq -- "$pattern" "$tmp/stderr"; else [ ! -s "$tmp/stderr" ]; fi
   found=$?
   msg=$(tail -n 1 "$tmp/stderr")
   ok $(( rc != want || found != 0 )) "exit $rc (want $want): whirl $* : $msg"
@@ -43,6 +46,50 @@ for cmd in "simulate --omega 1.5 --out b3" "sweep --from 1 --to 1.1 --step 0.1 -
   # shellcheck disable=SC2086
   expect 2 "rtol must be in" sfd $cmd --rtol 0.5
 done
+
+# defect 7: a branch that ends in failure exits 1 with one line on stderr
+# naming the branch, the point and the reason; the points are kept.  Two
+# one-state plug-ins, x' = p - x (or p - x - x^3): `domain` reports a domain
+# error (recoverable status 1) for p > 0.5, which persists down to DSMIN;
+# `badjac` has a Jacobian of the wrong sign, so Newton diverges on the first
+# step ("branch 1: 1 points", exit 0 before).
+cat > plug.c <<'EOC'
+#include <whirl/model.h>
+static int rhs(double t, const double *x, const double *p, double *f, void *d) {
+  (void)t, (void)d;
+  f[0] = p[0] - x[0] - (BADJAC ? x[0] * x[0] * x[0] : 0.0);
+  return !BADJAC && p[0] > 0.5;
+}
+static int jac(double t, const double *x, const double *p, double *J, void *d) {
+  (void)t, (void)p, (void)d;
+  J[0] = BADJAC ? 1.0 + 3.0 * x[0] * x[0] : -1.0;
+  return 0;
+}
+static const char *const pn[] = {"p"};
+static const double par0[] = {0.0};
+const whirl_model whirl_model_def = {
+    .abi = WHIRL_MODEL_ABI,
+    .problem = {.name = "plug", .n = 1, .npar = 1, .rhs = rhs, .jac_x = jac,
+                .autonomous = 1, .p_names = pn},
+    .par0 = par0, .forcing_param = -1};
+EOC
+built=0
+$CC -std=c11 -shared -fPIC -I"$SRC/lib" -DBADJAC=0 -o domain.so plug.c > cc.log 2>&1 &&
+  $CC -std=c11 -shared -fPIC -I"$SRC/lib" -DBADJAC=1 -o badjac.so plug.c >> cc.log 2>&1 && built=1
+ok $(( built != 1 )) "the test plug-ins build"
+printf 'model = ./domain.so\nICP = [p]\nNMX = 200\nDS = 0.1\nDSMAX = 0.1\nRL1 = 10\n' > domain.whirl
+expect 1 "^whirl run: domain\.whirl: branch 1 failed after point [0-9]+: branch ended at p = 0\.[45][0-9]*: model domain error persisted down to DSMIN$" \
+  run domain.whirl --quiet
+ok $(( $(wc -l < "$tmp/stderr") != 1 )) "one line on stderr"
+grep -q "failed: branch ended at p" domain.out/run.log
+ok $? "the partial branch is kept, run.log says it failed"
+printf 'model = ./badjac.so\nICP = [p]\nNMX = 20\nRL1 = 10\n' > badjac.whirl
+expect 1 "^whirl run: badjac\.whirl: branch 1 failed after point 1: branch ended at p = 0: no convergence with minimum step size \(DSMIN\)$" \
+  run badjac.whirl --quiet
+printf 'model = ./domain.so\nICP = [p]\nNMX = 3\nDS = 0.1\nRL1 = 10\n' > nmx.whirl
+expect 0 "" run nmx.whirl --quiet
+printf 'model = ./domain.so\nICP = [p]\nNMX = 100\nDS = 0.1\nRL1 = 0.3\n' > rl1.whirl
+expect 0 "" run rl1.whirl --quiet
 
 echo "1..$n"
 [ "$fails" -eq 0 ]
