@@ -40,14 +40,23 @@ int whirl_sfd_check_params(const double *p, char *msg, size_t len) {
   }
   for (int k = 0; k < WHIRL_SFD_NPAR; ++k)
     if (!isfinite(p[k])) return param_fail(msg, len, sfd_p_names[k], "finite", p[k]);
-  if (!(p[WHIRL_SFD_OMEGA] >= 0.0))
-    return param_fail(msg, len, "Omega", ">= 0", p[WHIRL_SFD_OMEGA]);
-  if (!(p[WHIRL_SFD_LAMBDA] > 0.0))
-    return param_fail(msg, len, "lambda", "> 0", p[WHIRL_SFD_LAMBDA]);
-  if (!(p[WHIRL_SFD_DELTA] >= 0.0))
-    return param_fail(msg, len, "delta", ">= 0", p[WHIRL_SFD_DELTA]);
-  if (!(p[WHIRL_SFD_ZETA] >= 0.0))
-    return param_fail(msg, len, "zeta", ">= 0", p[WHIRL_SFD_ZETA]);
+  /* the rules, with the limits of whirl/sfd.h in the messages */
+  char rule[64];
+  snprintf(rule, sizeof rule, "in [0, %g]", WHIRL_SFD_OMEGA_MAX);
+  if (!(p[WHIRL_SFD_OMEGA] >= 0.0 && p[WHIRL_SFD_OMEGA] <= WHIRL_SFD_OMEGA_MAX))
+    return param_fail(msg, len, "Omega", rule, p[WHIRL_SFD_OMEGA]);
+  snprintf(rule, sizeof rule, "in (0, %g]", WHIRL_SFD_LAMBDA_MAX);
+  if (!(p[WHIRL_SFD_LAMBDA] > 0.0 && p[WHIRL_SFD_LAMBDA] <= WHIRL_SFD_LAMBDA_MAX))
+    return param_fail(msg, len, "lambda", rule, p[WHIRL_SFD_LAMBDA]);
+  snprintf(rule, sizeof rule, "in [0, %g]", WHIRL_SFD_DELTA_MAX);
+  if (!(p[WHIRL_SFD_DELTA] >= 0.0 && p[WHIRL_SFD_DELTA] <= WHIRL_SFD_DELTA_MAX))
+    return param_fail(msg, len, "delta", rule, p[WHIRL_SFD_DELTA]);
+  snprintf(rule, sizeof rule, "in [0, %g]", WHIRL_SFD_ZETA_MAX);
+  if (!(p[WHIRL_SFD_ZETA] >= 0.0 && p[WHIRL_SFD_ZETA] <= WHIRL_SFD_ZETA_MAX))
+    return param_fail(msg, len, "zeta", rule, p[WHIRL_SFD_ZETA]);
+  if (!(fabs(p[WHIRL_SFD_FE]) < 1.0))
+    return param_fail(msg, len, "FE", "in (-1, 1): a static force |FE| >= 1 "
+                      "puts the journal on the housing", p[WHIRL_SFD_FE]);
   return WHIRL_OK;
 }
 

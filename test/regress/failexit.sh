@@ -91,5 +91,21 @@ expect 0 "" run nmx.whirl --quiet
 printf 'model = ./domain.so\nICP = [p]\nNMX = 100\nDS = 0.1\nRL1 = 0.3\n' > rl1.whirl
 expect 0 "" run rl1.whirl --quiet
 
+# defect 7, sfd response: unphysical parameters are refused up front (1e308
+# made LAPACK print 1200 lines into the results table on stdout, or gave
+# "0 branches" and exit 0); a response without any branch, or with a branch
+# ending at DSMIN, is a failure
+expect 2 "lambda must be in \(0, 100\] \(got 1e\+308\)" sfd response --lambda 1e308 --no-plot --quiet --out r1
+ok $(( $(wc -c < "$tmp/stdout") != 0 )) "nothing on stdout ($(wc -l < "$tmp/stdout") lines)"
+expect 2 "delta must be in \[0, 10\] \(got 1e\+308\)" sfd response --delta 1e308 --no-plot --quiet --out r1
+expect 2 "FE must be in \(-1, 1\)" sfd simulate --omega 1.5 --fe 1.5 --out r1
+expect 2 "zeta must be in \[0, 10\]" sfd basins --omega 1.5 --zeta 11 --out r1
+expect 1 "^whirl sfd response: no branch of orbits found" sfd response --delta 1e-300 --no-plot --quiet --out r2
+expect 1 "^whirl sfd response: branch 1 failed after point [0-9]+ \(Omega = 0\.[0-9]+, eps = 1\): model domain error persisted down to DSMIN$" \
+  sfd response --lambda 1e-300 --no-plot --quiet --out r3
+[ -s r3/branches.tsv ]
+ok $? "the failed response's tables are written"
+expect 0 "" sfd response --omega-max 2 --no-plot --quiet --out r4
+
 echo "1..$n"
 [ "$fails" -eq 0 ]

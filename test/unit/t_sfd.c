@@ -95,11 +95,18 @@ static void test_params(void) {
     double v;
     const char *want;
   } bad[] = {
-      {WHIRL_SFD_LAMBDA, -1.0, "lambda must be > 0 (got -1)"},
-      {WHIRL_SFD_LAMBDA, 0.0, "lambda must be > 0 (got 0)"},
-      {WHIRL_SFD_DELTA, -0.25, "delta must be >= 0 (got -0.25)"},
-      {WHIRL_SFD_ZETA, -0.01, "zeta must be >= 0 (got -0.01)"},
-      {WHIRL_SFD_OMEGA, -2.0, "Omega must be >= 0 (got -2)"},
+      {WHIRL_SFD_LAMBDA, -1.0, "lambda must be in (0, 100] (got -1)"},
+      {WHIRL_SFD_LAMBDA, 0.0, "lambda must be in (0, 100] (got 0)"},
+      {WHIRL_SFD_DELTA, -0.25, "delta must be in [0, 10] (got -0.25)"},
+      {WHIRL_SFD_ZETA, -0.01, "zeta must be in [0, 10] (got -0.01)"},
+      {WHIRL_SFD_OMEGA, -2.0, "Omega must be in [0, 1000] (got -2)"},
+      /* out of the physical range (1e308 overflowed every force) */
+      {WHIRL_SFD_LAMBDA, 1e308, "lambda must be in (0, 100] (got 1e+308)"},
+      {WHIRL_SFD_DELTA, 1e308, "delta must be in [0, 10] (got 1e+308)"},
+      {WHIRL_SFD_ZETA, 10.5, "zeta must be in [0, 10] (got 10.5)"},
+      {WHIRL_SFD_OMEGA, 1e4, "Omega must be in [0, 1000] (got 10000)"},
+      {WHIRL_SFD_FE, 1.0, "FE must be in (-1, 1): a static force |FE| >= 1 puts the journal on the housing (got 1)"},
+      {WHIRL_SFD_FE, -1.5, "FE must be in (-1, 1): a static force |FE| >= 1 puts the journal on the housing (got -1.5)"},
       {WHIRL_SFD_LAMBDA, NAN, "lambda must be finite (got nan)"},
       {WHIRL_SFD_FE, INFINITY, "FE must be finite (got inf)"},
   };
