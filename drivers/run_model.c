@@ -248,6 +248,11 @@ int run_resolve(run_ctx *R) {
     }
     R->u[k] = s->u[i].value;
   }
+  char why[256];
+  if (whirl_model_check_params(m, R->par, why, sizeof why) != WHIRL_OK) {
+    run_fail(R, WHIRL_RK_PAR, "PAR: model '%s': %s", R->prob.name, why);
+    return -1;
+  }
   if (m->forcing_param >= 0 && !(R->par[m->forcing_param] > 0)) {
     run_fail(R, WHIRL_RK_PAR, "PAR: the forcing frequency '%s' of model '%s' "
              "must be > 0 (got %g)", R->pnames[m->forcing_param], R->prob.name,

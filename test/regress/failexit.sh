@@ -107,5 +107,13 @@ expect 1 "^whirl sfd response: branch 1 failed after point [0-9]+ \(Omega = 0\.[
 ok $? "the failed response's tables are written"
 expect 0 "" sfd response --omega-max 2 --no-plot --quiet --out r4
 
+# defect 8: `whirl run` with the SFD model at |FE| >= 1 is refused up front
+# (it crawled along the housing for minutes); a continuation in FE ends at
+# the housing as a domain error, at once
+printf 'model = sfd\nIPS = 2\nICP = [Omega]\nPAR = {Omega: 1.2, FE: 1.5}\nNMX = 20\n' > fe.whirl
+expect 2 "^whirl run: fe\.whirl:4: PAR: model 'sfd_fixed': FE must be in \(-1, 1\)" run fe.whirl --quiet
+printf 'model = sfd\nIPS = 2\nICP = [FE]\nPAR = {Omega: 1.2, FE: 0.5}\nNMX = 400\nRL1 = 5\n' > fe2.whirl
+expect 1 "branch 1 failed after point [0-9]+: branch ended at FE = 0\.99[0-9]*: model domain error" run fe2.whirl --quiet
+
 echo "1..$n"
 [ "$fails" -eq 0 ]

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <whirl/model.h>
 #include <whirl/sfd.h>
 
 #include "../tap.h"
@@ -839,7 +840,35 @@ static void test_fd_helpers(void) {
      "whirl_fd_jac_x/_p pass the callback status on");
 }
 
+/* |F_E| >= 1 presses the journal onto the housing: the fixed-frame model
+ * reports contact (recoverable) for every state, so that `whirl run` with
+ * FE = 1.5 stops at once instead of integrating along the housing for
+ * minutes; the built-in model's parameter check refuses it up front. */
+static void test_fe_domain(void) {
+  const whirl_problem *fx = whirl_sfd_fixed();
+  double p[WHIRL_SFD_NPAR], x[4] = {0.1, 0.0, 0.0, 0.0}, f[4], J[4 * WHIRL_SFD_NPAR];
+  whirl_sfd_default_params(p);
+  p[WHIRL_SFD_FE] = 1.5;
+  ok(fx->rhs(0.0, x, p, f, NULL) == WHIRL_SFD_CONTACT, "rhs with FE = 1.5: contact");
+  ok(fx->jac_x(0.0, x, p, J, NULL) == WHIRL_SFD_CONTACT &&
+         fx->jac_p(0.0, x, p, J, NULL) == WHIRL_SFD_CONTACT,
+     "jac_x, jac_p with FE = 1.5: contact");
+  p[WHIRL_SFD_FE] = -1.0;
+  ok(fx->rhs(0.0, x, p, f, NULL) == WHIRL_SFD_CONTACT, "rhs with FE = -1: contact");
+  p[WHIRL_SFD_FE] = 0.999;
+  ok(fx->rhs(0.0, x, p, f, NULL) == WHIRL_OK, "rhs with FE = 0.999: fine");
+  char msg[256];
+  p[WHIRL_SFD_FE] = 1.5;
+  ok(whirl_model_check_params(whirl_model_builtin("sfd"), p, msg, sizeof msg) == WHIRL_EINVAL &&
+         strstr(msg, "FE must be in (-1, 1)"),
+     "built-in model 'sfd' refuses FE = 1.5: %s", msg);
+  p[WHIRL_SFD_FE] = 0.5;
+  ok(whirl_model_check_params(whirl_model_builtin("sfd"), p, msg, sizeof msg) == WHIRL_OK,
+     "and accepts FE = 0.5");
+}
+
 int main(void) {
+  test_fe_domain();
   test_params();
   test_force();
   test_contact_nan();
