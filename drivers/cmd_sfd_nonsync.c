@@ -227,10 +227,11 @@ int cmd_sfd_nonsync(int argc, char **argv) {
     cli_error(CMD, "need 0 < --ds <= --ds-max (got %g and %g)", o.ds, o.ds_max);
     return 2;
   }
-  if (o.ntst < 2 || o.ncol < 2 || o.ncol > 7 || o.harmonics < 1 || o.harmonics > 200 ||
-      o.oversampling < 1 || o.oversampling > 100) {
-    cli_error(CMD, "need --ntst >= 2, 2 <= --ncol <= 7, 1 <= --harmonics <= 200, "
-                   "1 <= --oversampling <= 100");
+  if (o.ntst < 2 || o.ntst > WHIRL_COLLOC_MAX_NTST || o.ncol < 2 || o.ncol > 7 ||
+      o.harmonics < 1 || o.harmonics > 200 || o.oversampling < 1 || o.oversampling > 100) {
+    cli_error(CMD, "need 2 <= --ntst <= %d, 2 <= --ncol <= 7, 1 <= --harmonics <= 200, "
+                   "1 <= --oversampling <= 100 (got %zu, %zu, %zu, %zu)", WHIRL_COLLOC_MAX_NTST,
+              o.ntst, o.ncol, o.harmonics, o.oversampling);
     return 2;
   }
   o.uz[0] = w0;

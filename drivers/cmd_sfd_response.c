@@ -399,8 +399,9 @@ int cmd_sfd_response(int argc, char **argv) {
     cli_error(CMD, "--oversampling must be in 1..100 (got %zu)", po.oversampling);
     return 2;
   }
-  if (periodic && (po.ntst < 2 || po.ncol < 2 || po.ncol > 7)) {
-    cli_error(CMD, "need --ntst >= 2 and 2 <= --ncol <= 7 (got %zu, %zu)", po.ntst, po.ncol);
+  if (periodic && (po.ntst < 2 || po.ntst > WHIRL_COLLOC_MAX_NTST || po.ncol < 2 || po.ncol > 7)) {
+    cli_error(CMD, "need 2 <= --ntst <= %d and 2 <= --ncol <= 7 (got %zu, %zu)",
+              WHIRL_COLLOC_MAX_NTST, po.ntst, po.ncol);
     return 2;
   }
   if (sparse) o.linsol = WHIRL_LINSOL_SPARSE;

@@ -115,5 +115,9 @@ expect 2 "^whirl run: fe\.whirl:4: PAR: model 'sfd_fixed': FE must be in \(-1, 1
 printf 'model = sfd\nIPS = 2\nICP = [FE]\nPAR = {Omega: 1.2, FE: 0.5}\nNMX = 400\nRL1 = 5\n' > fe2.whirl
 expect 1 "branch 1 failed after point [0-9]+: branch ended at FE = 0\.99[0-9]*: model domain error" run fe2.whirl --quiet
 
+# defect 8: sizes are checked first (--ntst 99999999999 busy-looped)
+expect 2 "need 2 <= --ntst <= 100000" sfd response --method colloc --ntst 99999999999 --no-plot --out n1
+expect 2 "need 2 <= --ntst <= 100000" sfd nonsync --method colloc --ntst 99999999999 --no-plot --out n1
+
 echo "1..$n"
 [ "$fails" -eq 0 ]
