@@ -119,5 +119,13 @@ expect 1 "branch 1 failed after point [0-9]+: branch ended at FE = 0\.99[0-9]*: 
 expect 2 "need 2 <= --ntst <= 100000" sfd response --method colloc --ntst 99999999999 --no-plot --out n1
 expect 2 "need 2 <= --ntst <= 100000" sfd nonsync --method colloc --ntst 99999999999 --no-plot --out n1
 
+# defect 8: a start at the housing ran for over 15 minutes without output;
+# a step budget per forcing period stops it with a message
+expect 1 "needed more than 1000000 steps in one forcing period \(period 1, .*the journal is at the housing \(eps = 0\.99999" \
+  sfd simulate --omega 1.5 --periods 4 --y0 0.999999 --no-plot --out s1
+[ ! -e s1 ]
+ok $? "nothing written"
+expect 2 "max-steps must be >= 100" sfd simulate --omega 1.5 --max-steps 5 --out s1
+
 echo "1..$n"
 [ "$fails" -eq 0 ]
