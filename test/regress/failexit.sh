@@ -25,7 +25,10 @@ expect() {
   if [ -n "$pattern" ]; then grep -Eq -- "$pattern" "$tmp/stderr"; else [ ! -s "$tmp/stderr" ]; fi
   found=$?
   msg=$(tail -n 1 "$tmp/stderr")
-  ok $(( rc != want || found != 0 )) "exit $rc (want $want): whirl $* : $msg"
+  # no C source locations ("(cont.c:683)") in what the user reads
+  ! grep -Eq '\([A-Za-z0-9_/-]+\.[ch]:[0-9]+\)' "$tmp/stderr"
+  clean=$?
+  ok $(( rc != want || found != 0 || clean != 0 )) "exit $rc (want $want): whirl $* : $msg"
 }
 
 cd "$tmp" || exit 1
@@ -132,6 +135,11 @@ expect 2 "max-steps must be >= 100" sfd simulate --omega 1.5 --max-steps 5 --out
 expect 0 "" sfd response --method hbm --harmonics 128 --oversampling 2 --omega-max 0.07 --no-plot --quiet --out h1
 [ "$(grep -c '^1	' h1/branches.tsv)" -ge 3 ]
 ok $? "the 128-harmonic branch has points"
+
+# defect 10: library messages reach the user without source locations
+printf 'model = ./domain.so\nICP = [p]\nPAR = {p: 1}\nNMX = 5\n' > start.whirl
+expect 1 "^whirl run: start\.whirl: cannot start the branch: start: Newton did not converge at p = 1 from the given x0 \(domain error\)$" \
+  run start.whirl --quiet
 
 echo "1..$n"
 [ "$fails" -eq 0 ]
