@@ -141,5 +141,16 @@ printf 'model = ./domain.so\nICP = [p]\nPAR = {p: 1}\nNMX = 5\n' > start.whirl
 expect 1 "^whirl run: start\.whirl: cannot start the branch: start: Newton did not converge at p = 1 from the given x0 \(domain error\)$" \
   run start.whirl --quiet
 
+# defect 10, sfd region: --ds-max below the first step (1e-3) failed with
+# an internal message; too small a --ds-max is refused with the range; the
+# upper curve was cut at 5001 points (NMX) without a word (at --ds-max
+# 0.002 it stopped at lambda = 0.88 of 1.5)
+expect 0 "" sfd region --ds-max 1e-4 --lambda-min 0.01 --lambda-max 0.012 --no-plot --quiet --out g1
+expect 2 "ds-max must be in \[1e-4, 1\] \(got 5e-05\)" sfd region --ds-max 5e-5 --out g1
+expect 0 "" sfd region --ds-max 0.002 --no-plot --quiet --out g2
+top=$(awk '!/^#/ && NF > 3 {print $1}' g2/upper.tsv 2>/dev/null | sort -g | tail -n 1)
+awk -v t="${top:-0}" 'BEGIN { exit !(t >= 1.4999) }'
+ok $? "the upper curve reaches lambda-max 1.5 (got ${top:-nothing})"
+
 echo "1..$n"
 [ "$fails" -eq 0 ]
