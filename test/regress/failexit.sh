@@ -152,5 +152,12 @@ top=$(awk '!/^#/ && NF > 3 {print $1}' g2/upper.tsv 2>/dev/null | sort -g | tail
 awk -v t="${top:-0}" 'BEGIN { exit !(t >= 1.4999) }'
 ok $? "the upper curve reaches lambda-max 1.5 (got ${top:-nothing})"
 
+# defect 10: a plug-in exporting whirl_model_def as a function was read as
+# the struct (an unaligned read of machine code, UBSan's report)
+printf '#include <whirl/model.h>\nwhirl_model whirl_model_def(void);\nwhirl_model whirl_model_def(void) { whirl_model m = {0}; return m; }\n' > fn.c
+$CC -std=c11 -shared -fPIC -I"$SRC/lib" -o fn.so fn.c >> cc.log 2>&1
+printf 'model = ./fn.so\nICP = [p]\n' > fn.whirl
+expect 2 "^whirl run: fn\.whirl:1: model: plug-in '\./fn\.so': the symbol 'whirl_model_def' is (a function|not aligned)" run fn.whirl
+
 echo "1..$n"
 [ "$fails" -eq 0 ]
