@@ -318,7 +318,16 @@ int cmd_sfd_nonsync(int argc, char **argv) {
       }
     }
   }
-  int status = 0;
+  int status = 0, failed = 0;
+  /* a branch of cycles that ended at DSMIN failed there: said, exit 1,
+   * the tables are kept */
+  for (size_t b = 0; b < ns.nbranch; ++b) {
+    const whirl_sfd_periodic_branch *br = &ns.br[b];
+    if (br->stop_reason != WHIRL_STOP_NOCONV && br->stop_reason != WHIRL_STOP_DOMAIN) continue;
+    cli_error(CMD, "branch %d failed after point %zu (Omega = %.10g): %s", br->id, br->len,
+              br->len ? br->pts[br->len - 1].Omega : NAN, whirl_stop_reason_name(br->stop_reason));
+    failed = 1;
+  }
   if (out_commit(&fb) || out_commit(&fs)) {
     cli_error(CMD, "writing the tables in '%s' failed: %s", dir, strerror(errno));
     status = 1;
@@ -350,5 +359,5 @@ int cmd_sfd_nonsync(int argc, char **argv) {
   }
   whirl_sfd_periodic_free(&ns);
   if (have_sync) whirl_sfd_response_free(&sync);
-  return status;
+  return status || failed;
 }
