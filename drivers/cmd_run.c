@@ -43,7 +43,7 @@ void run_fail(run_ctx *R, whirl_run_key k, const char *fmt, ...) {
   vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
   cli_error("run", "%s: %s",
-          whirl_runfile_where(R->rf, k, where, sizeof where), msg);
+            whirl_runfile_where(R->rf, k, where, sizeof where), msg);
 }
 
 static void usage(FILE *f) {
@@ -233,7 +233,7 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     rc = whirl_cont_start(c, b->x0, b->p0, dir);
   if (rc != WHIRL_OK) {
     cli_error("run", "%s: cannot start the branch: %s",
-            whirl_runfile_name(R->rf), whirl_cont_errmsg(c));
+              whirl_runfile_name(R->rf), whirl_cont_errmsg(c));
     fprintf(R->log, "start failed: %s\n", whirl_cont_errmsg(c));
     whirl_cont_free(c);
     free(pfull);
@@ -321,7 +321,7 @@ static int run_branch(run_ctx *R, branch_spec *b) {
   if (reason == WHIRL_STOP_NOCONV || reason == WHIRL_STOP_DOMAIN) {
     /* the points so far are a result, the end is not: keep them, fail */
     cli_error("run", "%s: branch %d failed after point %zu: %s",
-            whirl_runfile_name(R->rf), R->branch, npts, whirl_cont_errmsg(c));
+              whirl_runfile_name(R->rf), R->branch, npts, whirl_cont_errmsg(c));
     fprintf(R->log, "  failed: %s after %zu points\n", whirl_cont_errmsg(c), npts);
     R->failed = 1;
     rc = 0;
@@ -333,7 +333,7 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     rc = 0;
   } else if (rc < 0) {
     cli_error("run", "%s: branch %d failed: %s",
-            whirl_runfile_name(R->rf), R->branch, whirl_cont_errmsg(c));
+              whirl_runfile_name(R->rf), R->branch, whirl_cont_errmsg(c));
     fprintf(R->log, "  failed: %s\n", whirl_cont_errmsg(c));
     rc = -1;
   }
@@ -402,8 +402,8 @@ static int start_samples(run_ctx *R, size_t m, double *xs, double *T) {
   }
   if (rc) {
     cli_error("run", "%s: settling the forced response from U by "
-            "time integration failed: %s", whirl_runfile_name(R->rf),
-            whirl_ode_errmsg(ode));
+              "time integration failed: %s", whirl_runfile_name(R->rf),
+              whirl_ode_errmsg(ode));
     whirl_ode_free(ode);
     return -1;
   }
@@ -564,7 +564,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
       double w;
       if (whirl_colloc_hopf_start(O->colloc, so->x, p0, O->X, O->D, &w)) {
         cli_error("run", "no complex eigenvalue pair at label %d: "
-                "not a Hopf point", so->label);
+                  "not a Hopf point", so->label);
         return -1;
       }
       fprintf(R->log, "Hopf start at label %d: omega = %.10g, period %.10g\n",
@@ -610,7 +610,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
           free(X2);
           free(D2);
           cli_error("run", "period-doubling switch at label %d "
-                  "failed", so->label);
+                    "failed", so->label);
           return -1;
         }
         free(O->X);
