@@ -133,7 +133,8 @@ expect 2 "max-steps must be >= 100" sfd simulate --omega 1.5 --max-steps 5 --out
 # defect 8: --harmonics 128..200 always failed ("invalid argument": the
 # seed orbit had 256 samples, fewer than the 2N + 1 coefficients)
 expect 0 "" sfd response --method hbm --harmonics 128 --oversampling 2 --omega-max 0.07 --no-plot --quiet --out h1
-[ "$(grep -c '^1	' h1/branches.tsv)" -ge 3 ]
+cnt=$(grep -c '^1	' h1/branches.tsv 2>/dev/null)
+[ "${cnt:-0}" -ge 3 ]
 ok $? "the 128-harmonic branch has points"
 
 # defect 10: library messages reach the user without source locations
