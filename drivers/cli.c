@@ -1,6 +1,7 @@
 /* drivers/cli.c — option parsing with messages that say what and where,
  * for every whirl subcommand.
  * SPDX-License-Identifier: BSD-3-Clause */
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -11,13 +12,39 @@
 
 #include "cli.h"
 
+/* Length of a source location " (name.c:123)" at s, or 0. */
+static size_t location_len(const char *s) {
+  if (s[0] != ' ' || s[1] != '(') return 0;
+  size_t k = 2;
+  while (s[k] && (isalnum((unsigned char)s[k]) || s[k] == '_' || s[k] == '-' ||
+                  s[k] == '/'))
+    ++k;
+  if (k == 2 || s[k] != '.' || (s[k + 1] != 'c' && s[k + 1] != 'h') || s[k + 2] != ':')
+    return 0;
+  k += 3;
+  const size_t digits = k;
+  while (isdigit((unsigned char)s[k])) ++k;
+  return k > digits && s[k] == ')' ? k + 1 : 0;
+}
+
+void cli_strip_locations(char *s) {
+  char *w = s;
+  for (const char *r = s; *r;) {
+    const size_t skip = location_len(r);
+    if (skip) r += skip;
+    else *w++ = *r++;
+  }
+  *w = '\0';
+}
+
 void cli_error(const char *cmd, const char *fmt, ...) {
+  char msg[4096];
   va_list ap;
-  fprintf(stderr, "whirl %s: ", cmd);
   va_start(ap, fmt);
-  vfprintf(stderr, fmt, ap);
+  vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
-  fputc('\n', stderr);
+  cli_strip_locations(msg);
+  fprintf(stderr, "whirl %s: %s\n", cmd, msg);
 }
 
 int cli_double(const char *cmd, const char *opt, const char *text, double *v) {

@@ -7,9 +7,14 @@
 #include <stddef.h>
 #include <stdio.h>
 
-/* Print "whirl <cmd>: <message>" to stderr. */
+/* Print "whirl <cmd>: <message>" to stderr, without the source locations
+ * (" (cont.c:683)") that library messages carry for developers: the user
+ * reads what went wrong, run.log keeps the full text. */
 void cli_error(const char *cmd, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
+
+/* Remove every " (name.c:123)" / " (name.h:12)" from s, in place. */
+void cli_strip_locations(char *s);
 
 /* Parse a finite double option value; on failure prints a message naming the
  * option and returns -1. */

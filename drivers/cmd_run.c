@@ -42,8 +42,8 @@ void run_fail(run_ctx *R, whirl_run_key k, const char *fmt, ...) {
   va_start(ap, fmt);
   vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
-  fprintf(stderr, "whirl run: %s: %s\n",
-          whirl_runfile_where(R->rf, k, where, sizeof where), msg);
+  cli_error("run", "%s: %s",
+            whirl_runfile_where(R->rf, k, where, sizeof where), msg);
 }
 
 static void usage(FILE *f) {
@@ -168,7 +168,7 @@ static int run_branch(run_ctx *R, branch_spec *b) {
   char err[512];
   whirl_cont *c = whirl_cont_alloc(b->sys, &o, err, sizeof err);
   if (!c) {
-    fprintf(stderr, "whirl run: %s\n", err);
+    cli_error("run", "%s", err);
     return -1;
   }
   int dir = s->ds < 0 ? -1 : 1, rc;
@@ -189,8 +189,8 @@ static int run_branch(run_ctx *R, branch_spec *b) {
   else
     rc = whirl_cont_start(c, b->x0, b->p0, dir);
   if (rc != WHIRL_OK) {
-    fprintf(stderr, "whirl run: %s: cannot start the branch: %s\n",
-            whirl_runfile_name(R->rf), whirl_cont_errmsg(c));
+    cli_error("run", "%s: cannot start the branch: %s",
+              whirl_runfile_name(R->rf), whirl_cont_errmsg(c));
     fprintf(R->log, "start failed: %s\n", whirl_cont_errmsg(c));
     whirl_cont_free(c);
     free(pfull);
@@ -274,15 +274,23 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     }
     if (stop) break;
   }
-  if (rc == WHIRL_DONE || stop) {
+  const int reason = rc == WHIRL_DONE && !stop ? whirl_cont_stop_reason(c) : 0;
+  if (reason == WHIRL_STOP_NOCONV || reason == WHIRL_STOP_DOMAIN) {
+    /* the points so far are a result, the end is not: keep them, fail */
+    cli_error("run", "%s: branch %d failed after point %zu: %s",
+              whirl_runfile_name(R->rf), R->branch, npts, whirl_cont_errmsg(c));
+    fprintf(R->log, "  failed: %s after %zu points\n", whirl_cont_errmsg(c), npts);
+    R->failed = 1;
+    rc = 0;
+  } else if (rc == WHIRL_DONE || stop) {
     fprintf(R->log, "  ended: %s after %zu points\n",
             stop ? "L2-NORM left [A0, A1]"
                  : whirl_stop_reason_name(whirl_cont_stop_reason(c)),
             npts);
     rc = 0;
   } else if (rc < 0) {
-    fprintf(stderr, "whirl run: %s: branch %d failed: %s\n",
-            whirl_runfile_name(R->rf), R->branch, whirl_cont_errmsg(c));
+    cli_error("run", "%s: branch %d failed: %s",
+              whirl_runfile_name(R->rf), R->branch, whirl_cont_errmsg(c));
     fprintf(R->log, "  failed: %s\n", whirl_cont_errmsg(c));
     rc = -1;
   }
@@ -350,9 +358,9 @@ static int start_samples(run_ctx *R, size_t m, double *xs, double *T) {
     if (!rc) memcpy(xs + k * R->n, whirl_ode_x(ode), R->n * sizeof *xs);
   }
   if (rc) {
-    fprintf(stderr, "whirl run: %s: settling the forced response from U by "
-            "time integration failed: %s\n", whirl_runfile_name(R->rf),
-            whirl_ode_errmsg(ode));
+    cli_error("run", "%s: settling the forced response from U by "
+              "time integration failed: %s", whirl_runfile_name(R->rf),
+              whirl_ode_errmsg(ode));
     whirl_ode_free(ode);
     return -1;
   }
@@ -415,7 +423,7 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
     O->Z = malloc((whirl_fold_size(O->fold) + 1) * sizeof *O->Z);
     if (!O->Z) return -1;
     if (whirl_fold_init(O->fold, x, p, O->Z) != WHIRL_OK) {
-      fprintf(stderr, "whirl run: fold locus: %s\n", whirl_fold_errmsg(O->fold));
+      cli_error("run", "fold locus: %s", whirl_fold_errmsg(O->fold));
       return -1;
     }
     b->fold = O->fold;
@@ -426,7 +434,7 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
     O->Z = malloc((whirl_hopf_size(O->hopf) + 1) * sizeof *O->Z);
     if (!O->Z) return -1;
     if (whirl_hopf_init(O->hopf, x, p, O->Z) != WHIRL_OK) {
-      fprintf(stderr, "whirl run: Hopf locus: %s\n", whirl_hopf_errmsg(O->hopf));
+      cli_error("run", "Hopf locus: %s", whirl_hopf_errmsg(O->hopf));
       return -1;
     }
     b->hopf = O->hopf;
@@ -442,7 +450,7 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
   b->p0 = p;
   return 0;
 fail_alloc:
-  fprintf(stderr, "whirl run: %s\n", err);
+  cli_error("run", "%s", err);
   return -1;
 }
 
@@ -485,7 +493,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
     }
     O->colloc = whirl_colloc_alloc(&R->prob, &co, err, sizeof err);
     if (!O->colloc) {
-      fprintf(stderr, "whirl run: collocation: %s\n", err);
+      cli_error("run", "collocation: %s", err);
       return -1;
     }
     b.kind = RUN_COLLOC;
@@ -512,8 +520,8 @@ static int run_continuation(run_ctx *R, run_objects *O) {
       }
       double w;
       if (whirl_colloc_hopf_start(O->colloc, so->x, p0, O->X, O->D, &w)) {
-        fprintf(stderr, "whirl run: no complex eigenvalue pair at label %d: "
-                "not a Hopf point\n", so->label);
+        cli_error("run", "no complex eigenvalue pair at label %d: "
+                  "not a Hopf point", so->label);
         return -1;
       }
       fprintf(R->log, "Hopf start at label %d: omega = %.10g, period %.10g\n",
@@ -558,8 +566,8 @@ static int run_continuation(run_ctx *R, run_objects *O) {
         if (whirl_colloc_pd_switch(O->colloc, O->X, p0, O->colloc2, X2, D2)) {
           free(X2);
           free(D2);
-          fprintf(stderr, "whirl run: period-doubling switch at label %d "
-                  "failed\n", so->label);
+          cli_error("run", "period-doubling switch at label %d "
+                    "failed", so->label);
           return -1;
         }
         free(O->X);
@@ -592,7 +600,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
     if (s->isp != 2) ho.no_spectrum = 1;
     O->hbm = whirl_hbm_alloc(&R->prob, &ho, err, sizeof err);
     if (!O->hbm) {
-      fprintf(stderr, "whirl run: harmonic balance: %s\n", err);
+      cli_error("run", "harmonic balance: %s", err);
       return -1;
     }
     b.kind = RUN_HBM;
@@ -797,6 +805,7 @@ int cmd_run(int argc, char **argv) {
   }
   fprintf(R.log, "wall time %.3f s\n", cli_now() - t0);
   status = finish_output(&R);
+  if (status == 0 && R.failed) status = 1; /* a branch failed: kept, said */
   goto out;
 cleanup:
   if (R.log) fclose(R.log);

@@ -40,9 +40,10 @@ static void help(FILE *f) {
 "  --radius R        displacements within R of the clearance      (0.98)\n"
 "  --periods P       most forcing periods per trajectory           (500)\n"
 "  --fixed-horizon   always integrate P periods, classify at the end\n"
-"  --threads T       OpenMP threads (0: all)                          (0)\n"
+"  --threads T       OpenMP threads, 0..1024 (0: all)                 (0)\n"
 "  --lambda L --delta D --zeta Z   model parameters   (0.0503 0.3 0)\n"
 "  --rtol R --atol A  integration tolerances          (1e-12, 1e-15)\n"
+"                    1e-13 <= R <= 1e-3, 0 < A <= 1e-3\n"
 "  --out DIR         output directory                     (sfd-basins)\n"
 "  --no-plot  --quiet\n"
 "\n"
@@ -140,14 +141,11 @@ int cmd_sfd_basins(int argc, char **argv) {
     cli_error(CMD, "--periods must be >= 1");
     return 2;
   }
-  if (threads < 0) {
-    cli_error(CMD, "--threads must be >= 0 (got %d)", threads);
+  if (threads < 0 || threads > WHIRL_BASINS_MAX_THREADS) {
+    cli_error(CMD, "--threads must be in 0..%d (got %d)", WHIRL_BASINS_MAX_THREADS, threads);
     return 2;
   }
-  if (!(rtol > 0) || !(atol > 0)) {
-    cli_error(CMD, "--rtol and --atol must be > 0 (got %g, %g)", rtol, atol);
-    return 2;
-  }
+  if (sfd_check_tolerances(CMD, rtol, atol)) return 2;
   int orc = cli_outdir_check(CMD, NULL, dir); /* before the work, not after */
   if (orc) return orc;
   const double Om = p[WHIRL_SFD_OMEGA], T = 2 * M_PI / Om;

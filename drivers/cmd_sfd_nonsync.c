@@ -223,10 +223,11 @@ int cmd_sfd_nonsync(int argc, char **argv) {
     cli_error(CMD, "need 0 < --ds <= --ds-max (got %g and %g)", o.ds, o.ds_max);
     return 2;
   }
-  if (o.ntst < 2 || o.ncol < 2 || o.ncol > 7 || o.harmonics < 1 || o.harmonics > 200 ||
-      o.oversampling < 1 || o.oversampling > 100) {
-    cli_error(CMD, "need --ntst >= 2, 2 <= --ncol <= 7, 1 <= --harmonics <= 200, "
-                   "1 <= --oversampling <= 100");
+  if (o.ntst < 2 || o.ntst > WHIRL_COLLOC_MAX_NTST || o.ncol < 2 || o.ncol > 7 ||
+      o.harmonics < 1 || o.harmonics > 200 || o.oversampling < 1 || o.oversampling > 100) {
+    cli_error(CMD, "need 2 <= --ntst <= %d, 2 <= --ncol <= 7, 1 <= --harmonics <= 200, "
+                   "1 <= --oversampling <= 100 (got %zu, %zu, %zu, %zu)", WHIRL_COLLOC_MAX_NTST,
+              o.ntst, o.ncol, o.harmonics, o.oversampling);
     return 2;
   }
   o.uz[0] = w0;
@@ -304,6 +305,16 @@ int cmd_sfd_nonsync(int argc, char **argv) {
       }
     }
   }
+  int failed = 0;
+  /* a branch of cycles that ended at DSMIN failed there: said, exit 1,
+   * the tables are kept */
+  for (size_t b = 0; b < ns.nbranch; ++b) {
+    const whirl_sfd_periodic_branch *br = &ns.br[b];
+    if (br->stop_reason != WHIRL_STOP_NOCONV && br->stop_reason != WHIRL_STOP_DOMAIN) continue;
+    cli_error(CMD, "branch %d failed after point %zu (Omega = %.10g): %s", br->id, br->len,
+              br->len ? br->pts[br->len - 1].Omega : NAN, whirl_stop_reason_name(br->stop_reason));
+    failed = 1;
+  }
   int bad = out_commit(&fb) | out_commit(&fs);
   if (!noplot && !bad)
     bad = write_plots(&od, &ns, have_sync ? &sync : NULL, p, fmax(0.0, lo - 0.5), o.omega_max);
@@ -327,5 +338,5 @@ int cmd_sfd_nonsync(int argc, char **argv) {
   }
   whirl_sfd_periodic_free(&ns);
   if (have_sync) whirl_sfd_response_free(&sync);
-  return status;
+  return status || failed;
 }

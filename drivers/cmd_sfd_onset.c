@@ -31,6 +31,7 @@ static void help(FILE *f) {
 "                    nonsynchronous                           (3000)\n"
 "  --lambda L --delta D --zeta Z   model parameters  (0.0503 0.3 0)\n"
 "  --rtol R --atol A  integration tolerances         (1e-12, 1e-15)\n"
+"                    1e-13 <= R <= 1e-3, 0 < A <= 1e-3\n"
 "  --quiet\n"
 "\n"
 "stdout: TSV 'Omega class periods' for every speed tried, then a line\n"
@@ -102,10 +103,7 @@ int cmd_sfd_onset(int argc, char **argv) {
     cli_error(CMD, "need --from, --to > 0 and different, --tol > 0, --periods >= 1");
     return 2;
   }
-  if (!(rtol > 0) || !(atol > 0)) {
-    cli_error(CMD, "--rtol and --atol must be > 0");
-    return 2;
-  }
+  if (sfd_check_tolerances(CMD, rtol, atol)) return 2;
   p[0] = fmax(from, to);
   if (sfd_check(CMD, p)) return 2;
   char msg[512];

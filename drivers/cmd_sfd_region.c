@@ -31,7 +31,7 @@ static void help(FILE *f) {
 "  --zeta Z         external damping ratio                       (0)\n"
 "  --omega-max W    maximum speed                                (20)\n"
 "  --lambda-min A   --lambda-max B   range of lambda          (0.01 1.5)\n"
-"  --ds-max S       largest continuation step                    (0.05)\n"
+"  --ds-max S       largest continuation step, 1e-4 <= S <= 1     (0.05)\n"
 "  --out DIR        output directory                    (sfd-region)\n"
 "  --no-plot        tables only\n"
 "  --quiet          no summary on stderr\n"
@@ -135,15 +135,19 @@ int cmd_sfd_region(int argc, char **argv) {
     cli_error(CMD, "--omega-max must be in (1, 1000] (got %g)", o.omega_max);
     return 2;
   }
-  if (!(o.lambda_min > 0) || !(o.lambda_max > o.lambda_min) || o.lambda_max > 1000) {
-    cli_error(CMD, "need 0 < --lambda-min < --lambda-max <= 1000 (got %g, %g)", o.lambda_min,
-              o.lambda_max);
+  if (!(o.lambda_min > 0) || !(o.lambda_max > o.lambda_min) ||
+      o.lambda_max > WHIRL_SFD_LAMBDA_MAX) {
+    cli_error(CMD, "need 0 < --lambda-min < --lambda-max <= %g (got %g, %g)",
+              WHIRL_SFD_LAMBDA_MAX, o.lambda_min, o.lambda_max);
     return 2;
   }
-  if (!(o.ds_max > 0) || o.ds_max > 1) {
-    cli_error(CMD, "--ds-max must be in (0, 1] (got %g)", o.ds_max);
+  if (!(o.ds_max >= 1e-4) || o.ds_max > 1) {
+    cli_error(CMD, "--ds-max must be in [1e-4, 1] (got %g)", o.ds_max);
     return 2;
   }
+  /* steps enough for the same arclength (about 10 per curve and direction
+   * in (lambda, delta, Omega) at the defaults) at a smaller --ds-max */
+  o.nmx = (size_t)fmax((double)o.nmx, ceil(20.0 / o.ds_max));
   char msg[512] = "";
   int orc = cli_outdir_check(CMD, NULL, dir); /* before the work, not after */
   if (orc) return orc;

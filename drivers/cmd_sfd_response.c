@@ -30,13 +30,13 @@ static void help(FILE *f) {
 "fixed-frame Floquet multipliers exp(2 pi mu / Omega).\n"
 "\n"
 "options (defaults: Table 1 of the paper):\n"
-"  --lambda L      SFD constant lambda > 0             (0.0503)\n"
-"  --delta D       unbalance delta = e_G/c >= 0        (0.3)\n"
-"  --zeta Z        external damping ratio zeta >= 0    (0)\n"
-"  --omega-max W   largest speed                       (20)\n"
+"  --lambda L      SFD constant, 0 < L <= 100          (0.0503)\n"
+"  --delta D       unbalance e_G/c, 0 < D <= 10        (0.3)\n"
+"  --zeta Z        external damping ratio, 0 <= Z <= 10 (0)\n"
+"  --omega-max W   largest speed, W <= 1000            (20)\n"
 "  --omega-min M   smallest speed, 0 < M < W  (0.01; hbm/colloc 0.05)\n"
 "  --fe F          static force F_E (gravity not fully compensated by the\n"
-"                  centring springs; static deflection F_E) (0)\n"
+"                  centring springs; static deflection F_E), |F| < 1 (0)\n"
 "  --method M      circular | hbm | colloc: circular orbits from the\n"
 "                  rotating-frame equilibria (F_E = 0 only; the default\n"
 "                  then), or fixed-frame periodic orbits by harmonic balance\n"
@@ -59,7 +59,12 @@ static void help(FILE *f) {
 "eqs. 16-17 (radians): the journal lags the unbalance by beta.  With\n"
 "hbm/colloc, eps is the LARGEST eccentricity of the orbit (eps_min the\n"
 "smallest), stability comes from the monodromy matrix (variational\n"
-"equations), and branches.tsv adds eps_min, period and residual columns.\n");
+"equations), and branches.tsv adds eps_min, period and residual columns.\n"
+"\n"
+"exit status: 0; 2 for bad options (nothing computed); 1 when the run\n"
+"failed: no branch found, or a branch ended at DSMIN without convergence\n"
+"or with a persisting domain error (one line per branch on stderr; the\n"
+"tables are still written).\n");
 }
 
 typedef struct row {
@@ -95,6 +100,29 @@ static int tab_alloc(tab *t, size_t nbranch) {
   t->isola = calloc(nbranch + 1, sizeof *t->isola);
   t->stop = calloc(nbranch + 1, sizeof *t->stop);
   return t->len && t->rows && t->isola && t->stop ? 0 : -1;
+}
+
+/* Branches that ended in failure (DSMIN reached without convergence, a
+ * domain error persisting to DSMIN): one line each on stderr naming the
+ * branch, its last point and the reason; returns their number.  No branch
+ * at all is a failure too: with delta > 0 the main resonance branch exists
+ * for every speed. */
+static size_t report_failures(const tab *t) {
+  if (t->nbranch == 0) {
+    cli_error(CMD, "no branch of orbits found (at least the main resonance branch "
+                   "should exist): the computation failed");
+    return 1;
+  }
+  size_t nfail = 0;
+  for (size_t b = 0; b < t->nbranch; ++b) {
+    if (t->stop[b] != WHIRL_STOP_NOCONV && t->stop[b] != WHIRL_STOP_DOMAIN) continue;
+    const row *last = t->len[b] ? &t->rows[b][t->len[b] - 1] : NULL;
+    cli_error(CMD, "branch %zu failed after point %zu (Omega = %.10g, eps = %.6g): %s",
+              b + 1, t->len[b], last ? last->Om : NAN, last ? last->eps : NAN,
+              whirl_stop_reason_name(t->stop[b]));
+    ++nfail;
+  }
+  return nfail;
 }
 
 static row make_row(const whirl_branch *b, size_t i) {
@@ -367,16 +395,26 @@ int cmd_sfd_response(int argc, char **argv) {
     cli_error(CMD, "--oversampling must be in 1..100 (got %zu)", po.oversampling);
     return 2;
   }
-  if (periodic && (po.ntst < 2 || po.ncol < 2 || po.ncol > 7)) {
-    cli_error(CMD, "need --ntst >= 2 and 2 <= --ncol <= 7 (got %zu, %zu)", po.ntst, po.ncol);
+  if (periodic && (po.ntst < 2 || po.ntst > WHIRL_COLLOC_MAX_NTST || po.ncol < 2 || po.ncol > 7)) {
+    cli_error(CMD, "need 2 <= --ntst <= %d and 2 <= --ncol <= 7 (got %zu, %zu)",
+              WHIRL_COLLOC_MAX_NTST, po.ntst, po.ncol);
     return 2;
   }
   if (sparse) o.linsol = WHIRL_LINSOL_SPARSE;
   /* parameters are checked before anything is computed or written */
   char msg[512];
+  if (!(o.omega_max <= WHIRL_SFD_OMEGA_MAX)) {
+    cli_error(CMD, "--omega-max must be <= %g (got %g)", WHIRL_SFD_OMEGA_MAX, o.omega_max);
+    return 2;
+  }
   p[WHIRL_SFD_OMEGA] = o.omega_max;
   if (whirl_sfd_check_params(p, msg, sizeof msg) != WHIRL_OK) {
     cli_error(CMD, "%s", msg);
+    return 2;
+  }
+  if (!(p[WHIRL_SFD_DELTA] > 0)) {
+    cli_error(CMD, "--delta must be > 0: without unbalance the rotor stays in the "
+                   "centre and there is no orbit to trace");
     return 2;
   }
   if (!(o.omega_min > 0) || !(o.omega_max > o.omega_min)) {
@@ -423,6 +461,15 @@ int cmd_sfd_response(int argc, char **argv) {
   tab T;
   if (periodic ? tab_from_periodic(&T, &pres) : tab_from_circular(&T, &res, o.omega_min)) {
     cli_error(CMD, "out of memory");
+    tab_free(&T);
+    whirl_sfd_response_free(&res);
+    whirl_sfd_periodic_free(&pres);
+    return 1;
+  }
+  /* a failed branch is reported (and the exit status is 1), but the points
+   * computed are written: they show where it failed */
+  const int failed = report_failures(&T);
+  if (T.nbranch == 0) {
     tab_free(&T);
     whirl_sfd_response_free(&res);
     whirl_sfd_periodic_free(&pres);
@@ -494,6 +541,10 @@ int cmd_sfd_response(int argc, char **argv) {
   }
   static const char *const pics[] = {"response", "multipliers", NULL};
   const int status = cli_outdir_finish(&od, bad, plot ? pics : NULL);
+  if (bad) {
+    tab_free(&T);
+    return 1;
+  }
   if (!quiet) {
     fprintf(stderr, "whirl sfd response: %zu branch%s of %s orbits for %g <= Omega <= %g "
                     "(lambda=%g delta=%g zeta=%g FE=%g), method %s\n",
@@ -522,5 +573,5 @@ int cmd_sfd_response(int argc, char **argv) {
             plot && !status ? ", response.png, multipliers.png" : "");
   }
   tab_free(&T);
-  return status;
+  return status || failed;
 }

@@ -34,8 +34,11 @@ static void help(FILE *f) {
 "  --periods N      forcing periods to integrate          (1000)\n"
 "  --steady-from K  first period of the steady state      (N/2)\n"
 "  --samples S      samples per period in the outputs     (64)\n"
+"  --max-steps M    most integration steps in one forcing period; more\n"
+"                   means the journal crawls along the housing (1000000)\n"
 "  --lambda L --delta D --zeta Z --fe F   model parameters (0.0503 0.3 0 0)\n"
 "  --rtol R --atol A  integration tolerances          (1e-12, 1e-15)\n"
+"                    1e-13 <= R <= 1e-3, 0 < A <= 1e-3\n"
 "  --out DIR        output directory                      (sfd-simulate)\n"
 "  --no-plot        data only;   --quiet   no summary on stderr\n"
 "\n"
@@ -54,7 +57,13 @@ typedef struct {
   double *buf; /* (nsamp+1) x 4 */
   size_t cap;
   size_t got;
+  /* the step budget per forcing period, checked once a period */
+  whirl_ode *ode;
+  size_t samples, max_steps, steps0;
+  cli_progress *prog;
 } hist;
+
+#define OVER_BUDGET 2 /* keep's "stop" status: too many steps in a period */
 
 static int keep(size_t k, double t, const double *x, void *data) {
   (void)t;
@@ -62,6 +71,13 @@ static int keep(size_t k, double t, const double *x, void *data) {
   if (k < h->cap) {
     memcpy(h->buf + 4 * k, x, 4 * sizeof *x);
     h->got = k + 1;
+  }
+  if (k % h->samples == 0) {
+    whirl_ode_stats st;
+    whirl_ode_get_stats(h->ode, &st);
+    if (k > 0 && st.steps - h->steps0 > h->max_steps) return OVER_BUDGET;
+    h->steps0 = st.steps;
+    cli_progress_show(h->prog, k, h->cap - 1);
   }
   return 0;
 }
@@ -122,7 +138,7 @@ int cmd_sfd_simulate(int argc, char **argv) {
   double p[WHIRL_SFD_NPAR], x0[4] = {0, 0, 0, 0};
   whirl_sfd_default_params(p);
   p[WHIRL_SFD_OMEGA] = NAN;
-  size_t periods = 1000, samples = 64, steady_from = (size_t)-1;
+  size_t periods = 1000, samples = 64, steady_from = (size_t)-1, max_steps = 1000000;
   double rtol = 1e-12, atol = 1e-15;
   const char *dir = "sfd-simulate";
   int noplot = 0, quiet = 0;
@@ -139,6 +155,7 @@ int cmd_sfd_simulate(int argc, char **argv) {
       {"--periods", CLI_SIZE, &periods},
       {"--steady-from", CLI_SIZE, &steady_from},
       {"--samples", CLI_SIZE, &samples},
+      {"--max-steps", CLI_SIZE, &max_steps},
       {"--rtol", CLI_DOUBLE, &rtol},
       {"--atol", CLI_DOUBLE, &atol},
       {"--out", CLI_STRING, &dir},
@@ -173,8 +190,9 @@ int cmd_sfd_simulate(int argc, char **argv) {
     cli_error(CMD, "--steady-from must be < --periods (got %zu >= %zu)", steady_from, periods);
     return 2;
   }
-  if (!(rtol > 0) || !(atol > 0)) {
-    cli_error(CMD, "--rtol and --atol must be > 0 (got %g, %g)", rtol, atol);
+  if (sfd_check_tolerances(CMD, rtol, atol)) return 2;
+  if (max_steps < 100) {
+    cli_error(CMD, "--max-steps must be >= 100 (got %zu)", max_steps);
     return 2;
   }
   if ((double)periods * (double)samples > 1e7) {
@@ -189,8 +207,11 @@ int cmd_sfd_simulate(int argc, char **argv) {
 
   const double Om = p[WHIRL_SFD_OMEGA], T = 2 * M_PI / Om;
   const size_t nsamp = periods * samples;
-  hist h = {malloc(4 * (nsamp + 1) * sizeof(double)), nsamp + 1, 0};
   whirl_ode *ode = whirl_ode_alloc(whirl_sfd_fixed(), p);
+  cli_progress prog;
+  cli_progress_init(&prog, "whirl sfd simulate", quiet);
+  hist h = {malloc(4 * (nsamp + 1) * sizeof(double)), nsamp + 1, 0, ode, samples, max_steps,
+            0, &prog};
   if (!h.buf || !ode) {
     cli_error(CMD, "out of memory");
     free(h.buf);
@@ -205,9 +226,23 @@ int cmd_sfd_simulate(int argc, char **argv) {
   }
   double t0 = cli_now();
   int rc = whirl_ode_reset(ode, 0.0, x0);
+  /* the same budget between two samples: keep is not called while one
+   * sample interval takes forever */
+  if (rc == WHIRL_OK) rc = whirl_ode_set_max_steps(ode, max_steps);
   if (rc == WHIRL_OK) rc = whirl_ode_sample(ode, T / (double)samples, nsamp, keep, &h);
+  cli_progress_end(&prog);
   double secs = cli_now() - t0;
   int contact = 0;
+  if (rc == OVER_BUDGET || rc == WHIRL_EMAXITER) {
+    const double *x = whirl_ode_x(ode);
+    cli_error(CMD, "the integration needed more than %zu steps in one forcing period "
+              "(period %.0f, tau = %.6g): the journal is at the housing (eps = %.8f); "
+              "start farther from it or raise --max-steps", max_steps,
+              floor(whirl_ode_t(ode) / T) + 1, whirl_ode_t(ode), hypot(x[0], x[1]));
+    free(h.buf);
+    whirl_ode_free(ode);
+    return 1;
+  }
   if (rc != WHIRL_OK) {
     if (rc == WHIRL_ESTEP && whirl_ode_last_rhs_status(ode) == WHIRL_SFD_CONTACT) {
       contact = 1;

@@ -37,6 +37,7 @@ static void help(FILE *f) {
 "  --y0 --z0 --vy0 --vz0   initial state of each direction (0)\n"
 "  --lambda L --delta D --zeta Z   model parameters   (0.0503 0.3 0)\n"
 "  --rtol R --atol A  integration tolerances          (1e-12, 1e-15)\n"
+"                    1e-13 <= R <= 1e-3, 0 < A <= 1e-3\n"
 "  --out DIR         output directory                     (sfd-sweep)\n"
 "  --no-plot  --quiet\n"
 "\n"
@@ -219,8 +220,9 @@ int cmd_sfd_sweep(int argc, char **argv) {
     cli_error(CMD, "need --periods >= 1 and 1 <= --record <= 100000");
     return 2;
   }
-  if (!(settle > 0) || !(rtol > 0) || !(atol > 0)) {
-    cli_error(CMD, "--settle, --rtol and --atol must be > 0");
+  if (sfd_check_tolerances(CMD, rtol, atol)) return 2;
+  if (!(settle > 0)) {
+    cli_error(CMD, "--settle must be > 0");
     return 2;
   }
   p[WHIRL_SFD_OMEGA] = hi;

@@ -51,6 +51,9 @@ typedef struct run_ctx {
   cli_outdir od;           /* the output directory, staged (outdir.h) */
   FILE *log, *table, *sols; /* run.log, branches.tsv, solutions in od */
   int label, branch;
+  int failed;              /* a branch ended in failure (DSMIN reached without
+                              convergence, a persisting model domain error):
+                              the output is kept, the exit status is 1 */
   int quiet;
   int plot_x, plot_y;      /* 1-based columns of the picture's axes */
   char plot_x_name[80], plot_y_name[80];

@@ -133,7 +133,7 @@ int run_basins(run_ctx *R) {
     tg[a].x = malloc(n * sizeof *tg[a].x);
     if (!tg[a].x || section_state(R, &so, tg[a].x)) {
       run_solution_free(&so);
-      fprintf(stderr, "whirl run: label %d: cannot evaluate the solution\n", so.label);
+      cli_error("run", "label %d: cannot evaluate the solution", so.label);
       goto done;
     }
     snprintf(names[a], sizeof names[a], "LAB %d", so.label);
@@ -173,7 +173,7 @@ int run_basins(run_ctx *R) {
                                  periods, &st, err, sizeof err);
   cli_progress_end(&pr);
   if (brc != WHIRL_OK) {
-    fprintf(stderr, "whirl run: basins: %s\n", err);
+    cli_error("run", "basins: %s", err);
     goto done;
   }
   FILE *f = cli_outdir_fopen(&R->od, "basins.tsv");

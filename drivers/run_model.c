@@ -3,14 +3,51 @@
  * its ABI before anything else is read) and resolve the names the run file
  * uses for parameters and state components.
  * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef _GNU_SOURCE
+#define _GNU_SOURCE /* dladdr1: the symbol's ELF type and size */
+#endif
 #include <dlfcn.h>
 #include <errno.h>
+#include <stdalign.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
 #include "run.h"
+
+#ifdef __GLIBC__
+#include <link.h>
+#endif
+
+/* What is wrong with the plug-in's whirl_model_def symbol, or NULL: it must
+ * be a data object (`const whirl_model whirl_model_def = {...}`) of the
+ * struct's size and alignment.  A function of that name (`whirl_model
+ * whirl_model_def(void)`) was read as the struct, an unaligned read of
+ * machine code. */
+static const char *symbol_problem(const void *sym) {
+#ifdef __GLIBC__
+  Dl_info info;
+  const ElfW(Sym) *es = NULL;
+  if (dladdr1(sym, &info, (void **)&es, RTLD_DL_SYMENT) && es) {
+#if __ELF_NATIVE_CLASS == 64
+    const int type = ELF64_ST_TYPE(es->st_info);
+#else
+    const int type = ELF32_ST_TYPE(es->st_info);
+#endif
+    if (type == STT_FUNC || type == STT_GNU_IFUNC)
+      return "is a function, not the struct";
+    if (type != STT_OBJECT)
+      return "is not a data object";
+    if (es->st_size < sizeof(whirl_model))
+      return "is smaller than a whirl_model";
+  }
+#endif
+  if ((uintptr_t)sym % alignof(whirl_model) != 0)
+    return "is not aligned as a whirl_model (a function, not the struct?)";
+  return NULL;
+}
 
 static int is_plugin_path(const char *m) {
   size_t n = strlen(m);
@@ -62,6 +99,14 @@ int run_load_model(run_ctx *R) {
                "model: plug-in '%s' does not export the symbol '%s' (define "
                "`const whirl_model %s = {...}`, see doc/user-models.md)",
                path, WHIRL_MODEL_SYMBOL, WHIRL_MODEL_SYMBOL);
+      return -1;
+    }
+    const char *bad = symbol_problem(sym);
+    if (bad) {
+      run_fail(R, WHIRL_RK_MODEL,
+               "model: plug-in '%s': the symbol '%s' %s (define `const "
+               "whirl_model %s = {...}`, see doc/user-models.md)",
+               path, WHIRL_MODEL_SYMBOL, bad, WHIRL_MODEL_SYMBOL);
       return -1;
     }
     /* the ABI number is the first member: check it before the rest */
@@ -247,6 +292,11 @@ int run_resolve(run_ctx *R) {
       return -1;
     }
     R->u[k] = s->u[i].value;
+  }
+  char why[256];
+  if (whirl_model_check_params(m, R->par, why, sizeof why) != WHIRL_OK) {
+    run_fail(R, WHIRL_RK_PAR, "PAR: model '%s': %s", R->prob.name, why);
+    return -1;
   }
   if (m->forcing_param >= 0 && !(R->par[m->forcing_param] > 0)) {
     run_fail(R, WHIRL_RK_PAR, "PAR: the forcing frequency '%s' of model '%s' "

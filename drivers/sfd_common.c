@@ -58,3 +58,11 @@ int sfd_check(const char *cmd, const double *p) {
   }
   return 0;
 }
+
+int sfd_check_tolerances(const char *cmd, double rtol, double atol) {
+  char msg[128];
+  if (whirl_basins_check_tolerances(rtol, atol, msg, sizeof msg) == WHIRL_OK)
+    return 0;
+  cli_error(cmd, "--%s", msg); /* "rtol must be in [...]" names the option */
+  return -1;
+}

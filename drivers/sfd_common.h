@@ -19,4 +19,8 @@ const char *sfd_steady_class(const double *P, size_t npts, double eps_spread,
 /* Check the SFD parameter vector and print a message naming the option. */
 int sfd_check(const char *cmd, const double *p);
 
+/* Check --rtol/--atol against the library's limits (whirl/basins.h) and
+ * print a message naming the option; 0 if they are usable, -1 if not. */
+int sfd_check_tolerances(const char *cmd, double rtol, double atol);
+
 #endif

@@ -24,6 +24,24 @@ void whirl_basins_options_default(whirl_basins_options *o) {
   o->atol = 1e-15;
 }
 
+int whirl_basins_check_tolerances(double rtol, double atol, char *msg,
+                                  size_t len) {
+  char dummy[1];
+  if (!msg || len == 0) msg = dummy, len = sizeof dummy;
+  msg[0] = '\0';
+  if (!(rtol >= WHIRL_BASINS_RTOL_MIN && rtol <= WHIRL_BASINS_RTOL_MAX)) {
+    snprintf(msg, len, "rtol must be in [%g, %g] (got %g)",
+             WHIRL_BASINS_RTOL_MIN, WHIRL_BASINS_RTOL_MAX, rtol);
+    return WHIRL_EINVAL;
+  }
+  if (!(atol > 0 && atol <= WHIRL_BASINS_ATOL_MAX)) {
+    snprintf(msg, len, "atol must be in (0, %g] (got %g)",
+             WHIRL_BASINS_ATOL_MAX, atol);
+    return WHIRL_EINVAL;
+  }
+  return WHIRL_OK;
+}
+
 typedef struct {
   const whirl_attractor *att;
   size_t natt;
@@ -126,6 +144,16 @@ int whirl_basins_compute(const whirl_problem *prob, const double *p,
   if (natt > MAX_ATTRACTORS) {
     snprintf(errbuf, errlen, "basins: at most %d attractors (got %zu)",
              MAX_ATTRACTORS, natt);
+    return WHIRL_EINVAL;
+  }
+  if (o->nthreads < 0 || o->nthreads > WHIRL_BASINS_MAX_THREADS) {
+    snprintf(errbuf, errlen, "basins: nthreads must be in 0..%d (got %d)",
+             WHIRL_BASINS_MAX_THREADS, o->nthreads);
+    return WHIRL_EINVAL;
+  }
+  char tmsg[128];
+  if (whirl_basins_check_tolerances(o->rtol, o->atol, tmsg, sizeof tmsg)) {
+    snprintf(errbuf, errlen, "basins: %s", tmsg);
     return WHIRL_EINVAL;
   }
   for (size_t j = 0; j < natt; ++j)

@@ -407,7 +407,9 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
     if (!fresh && (rc = reborder(c)) == 4) fresh = 1;
     else if (rc != 0) return rc;
     if (fresh) {
-      if ((rc = jac_factor(c, X, p, dir)) != 0) return rc;
+      /* singular at a later iterate: Newton has wandered off onto a
+       * singular point, a failure to converge, not a singular start */
+      if ((rc = jac_factor(c, X, p, dir)) != 0) return rc == 3 && it > 1 ? 1 : rc;
       fresh = 0;
       ++refreshed;
       prev = INFINITY;

@@ -23,7 +23,11 @@ static void dense_free(void *backend) {
 static int dense_factor(whirl_linsol *ls) {
   dense_backend *d = ls->backend;
   int info = 0;
+  char lmsg[96];
+  whirl_lapack_clear();
   dgetrf_(&d->n, &d->n, ls->vals, &d->n, d->ipiv, &info);
+  if (whirl_lapack_take(lmsg, sizeof lmsg))
+    return WHIRL_FAIL(ls, WHIRL_ELAPACK, "dgetrf: %s", lmsg);
   if (info < 0)
     return WHIRL_FAIL(ls, WHIRL_ELAPACK, "dgetrf: argument %d had an illegal value",
                       -info);
@@ -39,7 +43,11 @@ static int dense_solve(whirl_linsol *ls, double *B, size_t nrhs, int trans) {
   const char tr = trans ? 'T' : 'N';
   const int nr = (int)nrhs; /* range checked by whirl_linsol_solve */
   int info = 0;
+  char lmsg[96];
+  whirl_lapack_clear();
   dgetrs_(&tr, &d->n, &nr, ls->vals, &d->n, d->ipiv, B, &d->n, &info, 1);
+  if (whirl_lapack_take(lmsg, sizeof lmsg))
+    return WHIRL_FAIL(ls, WHIRL_ELAPACK, "dgetrs: %s", lmsg);
   if (info != 0)
     return WHIRL_FAIL(ls, WHIRL_ELAPACK, "dgetrs: argument %d had an illegal value",
                       -info);

@@ -16,6 +16,7 @@ struct whirl_eig {
   double *a;    /* a[n*n]: copy of the input, destroyed by dgeev */
   double *work; /* work[lwork], optimal size from the dgeev query */
   int lwork;
+  char errmsg[WHIRL_ERRMSG_SIZE];
 };
 
 void whirl_eig_free(whirl_eig *e) {
@@ -37,9 +38,10 @@ whirl_eig *whirl_eig_alloc(size_t n) {
   if (!e->a) goto fail;
   /* Workspace query (lwork = -1): only work[0] is written.  WR and WI are
    * not referenced; pass a valid pointer anyway. */
+  whirl_lapack_clear();
   dgeev_("N", "N", &e->n, e->a, &e->n, &dummy, &dummy, &dummy, &one, &dummy,
          &one, &query, &minus1, &info, 1, 1);
-  if (info != 0 || !(query >= 1.0) || query > (double)INT_MAX) goto fail;
+  if (whirl_lapack_take(NULL, 0) || info != 0 || !(query >= 1.0) || query > (double)INT_MAX) goto fail;
   e->lwork = (int)query;
   if ((size_t)e->lwork < 3 * n) e->lwork = (int)(3 * n); /* documented min */
   e->work = malloc((size_t)e->lwork * sizeof *e->work);
@@ -59,19 +61,34 @@ static int eig_before(double re1, double im1, double re2, double im2) {
   return im1 > im2;
 }
 
+const char *whirl_eig_errmsg(const whirl_eig *e) {
+  return e ? e->errmsg : "no eigenvalue workspace";
+}
+
 int whirl_eig_compute(whirl_eig *e, const double *A, double *re, double *im) {
   const size_t n = e ? (size_t)e->n : 0;
   size_t i, j;
   int info = 0, one = 1;
   double dummy = 0.0;
+  char lmsg[96];
   if (!e || !A || !re || !im) return WHIRL_EINVAL;
+  e->errmsg[0] = '\0';
   for (i = 0; i < n * n; ++i) {
-    if (!isfinite(A[i])) return WHIRL_EINVAL; /* dgeev would return garbage */
+    if (!isfinite(A[i])) /* dgeev would return garbage */
+      return WHIRL_FAIL(e, WHIRL_EINVAL, "eigenvalues: entry %zu of the "
+                        "matrix is not finite", i);
     e->a[i] = A[i];
   }
+  whirl_lapack_clear();
   dgeev_("N", "N", &e->n, e->a, &e->n, re, im, &dummy, &one, &dummy, &one,
          e->work, &e->lwork, &info, 1, 1);
-  if (info != 0) return WHIRL_ELAPACK; /* < 0 bad argument, > 0 QR failed */
+  /* dgeev does not check what its helpers report: an overflowing matrix
+   * makes dgebal's scaling NaN, dgebal complains and dgeev goes on */
+  if (whirl_lapack_take(lmsg, sizeof lmsg))
+    return WHIRL_FAIL(e, WHIRL_ELAPACK, "dgeev: %s", lmsg);
+  if (info != 0) /* > 0: the QR algorithm did not converge */
+    return WHIRL_FAIL(e, WHIRL_ELAPACK, "dgeev: the QR algorithm failed "
+                      "(info = %d)", info);
   /* Stable insertion sort: dgeev already returns each conjugate pair with
    * bit-identical real parts, positive imaginary part first; O(n^2)
    * comparisons are negligible next to the O(n^3) QR algorithm and need
@@ -121,9 +138,10 @@ int whirl_null_vectors(size_t m, size_t k, const double *A, size_t nvec,
     goto cleanup;
   }
   memcpy(a, A, m * k * sizeof *a);
+  whirl_lapack_clear();
   dgesvd_("N", "A", &im, &ik, a, &im, s, &dummy, &one, vt, &ik, &query,
           &minus1, &info, 1, 1);
-  if (info != 0 || !(query >= 1.0) || query > (double)INT_MAX) {
+  if (whirl_lapack_take(NULL, 0) || info != 0 || !(query >= 1.0) || query > (double)INT_MAX) {
     rc = WHIRL_ELAPACK;
     goto cleanup;
   }
@@ -133,9 +151,10 @@ int whirl_null_vectors(size_t m, size_t k, const double *A, size_t nvec,
     rc = WHIRL_ENOMEM;
     goto cleanup;
   }
+  whirl_lapack_clear();
   dgesvd_("N", "A", &im, &ik, a, &im, s, &dummy, &one, vt, &ik, work, &lwork,
           &info, 1, 1);
-  if (info != 0) { /* < 0 bad argument, > 0 dbdsqr did not converge */
+  if (whirl_lapack_take(NULL, 0) || info != 0) { /* < 0 bad argument, > 0 dbdsqr did not converge */
     rc = WHIRL_ELAPACK;
     goto cleanup;
   }

@@ -50,6 +50,15 @@ static inline int whirl_errmsg_set(char *buf, size_t size, int code,
                    __LINE__, __VA_ARGS__)
 
 /* ------------------------------------------------------------------------
+ * LAPACK's complaints (xerbla.c): xerbla_ records the routine and argument
+ * for the calling thread instead of printing.  Call whirl_lapack_clear
+ * before a LAPACK call; whirl_lapack_take afterwards returns 1 (and
+ * "LAPACK DGEBAL: argument 3 had an illegal value" in msg) if LAPACK
+ * complained during the call, and clears the record. */
+void whirl_lapack_clear(void);
+int whirl_lapack_take(char *msg, size_t len);
+
+/* ------------------------------------------------------------------------
  * LAPACK (Fortran 77 interface, reference or optimised).  Integers are
  * Fortran INTEGER = C int (LP64).  CHARACTER arguments carry a hidden length
  * appended after the last argument; gfortran >= 8 passes it as size_t.  We

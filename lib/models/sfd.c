@@ -40,14 +40,23 @@ int whirl_sfd_check_params(const double *p, char *msg, size_t len) {
   }
   for (int k = 0; k < WHIRL_SFD_NPAR; ++k)
     if (!isfinite(p[k])) return param_fail(msg, len, sfd_p_names[k], "finite", p[k]);
-  if (!(p[WHIRL_SFD_OMEGA] >= 0.0))
-    return param_fail(msg, len, "Omega", ">= 0", p[WHIRL_SFD_OMEGA]);
-  if (!(p[WHIRL_SFD_LAMBDA] > 0.0))
-    return param_fail(msg, len, "lambda", "> 0", p[WHIRL_SFD_LAMBDA]);
-  if (!(p[WHIRL_SFD_DELTA] >= 0.0))
-    return param_fail(msg, len, "delta", ">= 0", p[WHIRL_SFD_DELTA]);
-  if (!(p[WHIRL_SFD_ZETA] >= 0.0))
-    return param_fail(msg, len, "zeta", ">= 0", p[WHIRL_SFD_ZETA]);
+  /* the rules, with the limits of whirl/sfd.h in the messages */
+  char rule[64];
+  snprintf(rule, sizeof rule, "in [0, %g]", WHIRL_SFD_OMEGA_MAX);
+  if (!(p[WHIRL_SFD_OMEGA] >= 0.0 && p[WHIRL_SFD_OMEGA] <= WHIRL_SFD_OMEGA_MAX))
+    return param_fail(msg, len, "Omega", rule, p[WHIRL_SFD_OMEGA]);
+  snprintf(rule, sizeof rule, "in (0, %g]", WHIRL_SFD_LAMBDA_MAX);
+  if (!(p[WHIRL_SFD_LAMBDA] > 0.0 && p[WHIRL_SFD_LAMBDA] <= WHIRL_SFD_LAMBDA_MAX))
+    return param_fail(msg, len, "lambda", rule, p[WHIRL_SFD_LAMBDA]);
+  snprintf(rule, sizeof rule, "in [0, %g]", WHIRL_SFD_DELTA_MAX);
+  if (!(p[WHIRL_SFD_DELTA] >= 0.0 && p[WHIRL_SFD_DELTA] <= WHIRL_SFD_DELTA_MAX))
+    return param_fail(msg, len, "delta", rule, p[WHIRL_SFD_DELTA]);
+  snprintf(rule, sizeof rule, "in [0, %g]", WHIRL_SFD_ZETA_MAX);
+  if (!(p[WHIRL_SFD_ZETA] >= 0.0 && p[WHIRL_SFD_ZETA] <= WHIRL_SFD_ZETA_MAX))
+    return param_fail(msg, len, "zeta", rule, p[WHIRL_SFD_ZETA]);
+  if (!(fabs(p[WHIRL_SFD_FE]) < 1.0))
+    return param_fail(msg, len, "FE", "in (-1, 1): a static force |FE| >= 1 "
+                      "puts the journal on the housing", p[WHIRL_SFD_FE]);
   return WHIRL_OK;
 }
 
@@ -158,6 +167,17 @@ static int params_finite(const double *p) {
   return 1;
 }
 
+/* The fixed-frame callbacks' check: WHIRL_EINVAL (fatal) for a non-finite
+ * parameter; WHIRL_SFD_CONTACT for |F_E| >= 1, a static force that presses
+ * the journal onto the housing (every state is outside the domain there:
+ * recoverable, so that a continuation in F_E ends at |F_E| = 1 and a time
+ * integration stops at once instead of crawling along the housing). */
+static int fixed_params(const double *p, double t) {
+  if (!params_finite(p) || !isfinite(t)) return WHIRL_EINVAL;
+  if (!(fabs(p[WHIRL_SFD_FE]) < 1.0)) return WHIRL_SFD_CONTACT;
+  return WHIRL_OK;
+}
+
 /* ------------------------------------------------------------------------
  * Fixed frame, x = (y, z, y', z') (DESIGN.md; paper eq. 1 made dimensionless
  * with eqs. 11–14):
@@ -167,7 +187,8 @@ static int params_finite(const double *p) {
 static int fixed_rhs(double t, const double *x, const double *p, double *f,
                      void *data) {
   (void)data;
-  if (!params_finite(p) || !isfinite(t)) return WHIRL_EINVAL;
+  int prc = fixed_params(p, t);
+  if (prc != WHIRL_OK) return prc;
   const double Om = p[WHIRL_SFD_OMEGA], de = p[WHIRL_SFD_DELTA];
   const double ze = p[WHIRL_SFD_ZETA];
   double fd[2];
@@ -185,7 +206,8 @@ static int fixed_rhs(double t, const double *x, const double *p, double *f,
 static int fixed_jac_x(double t, const double *x, const double *p, double *J,
                        void *data) {
   (void)data;
-  if (!params_finite(p) || !isfinite(t)) return WHIRL_EINVAL;
+  int prc = fixed_params(p, t);
+  if (prc != WHIRL_OK) return prc;
   double fd[2], Jf[8];
   int rc = whirl_sfd_force(x[0], x[1], x[2], x[3], p[WHIRL_SFD_LAMBDA], fd, Jf,
                            NULL);
@@ -208,7 +230,8 @@ static int fixed_jac_x(double t, const double *x, const double *p, double *J,
 static int fixed_jac_p(double t, const double *x, const double *p, double *J,
                        void *data) {
   (void)data;
-  if (!params_finite(p) || !isfinite(t)) return WHIRL_EINVAL;
+  int prc = fixed_params(p, t);
+  if (prc != WHIRL_OK) return prc;
   double fd[2], dl[2];
   int rc = whirl_sfd_force(x[0], x[1], x[2], x[3], p[WHIRL_SFD_LAMBDA], fd,
                            NULL, dl);

@@ -8,19 +8,11 @@
 #include <math.h>
 #include <stddef.h>
 
+#include <whirl/linsol.h>
 #include <whirl/sfd.h>
 
 #define SFD_PI 3.14159265358979323846
 
-/* LAPACK (Fortran 77 interface, LP64).  The CHARACTER arguments carry hidden
- * lengths that gfortran >= 8 passes as size_t; we pass them (always 1)
- * because omitting them is undefined (GCC PR 90329).  Same prototype as
- * lib/linalg/linsol_impl.h, which models must not include. */
-extern void dgeev_(const char *jobvl, const char *jobvr, const int *n,
-                   double *a, const int *lda, double *wr, double *wi,
-                   double *vl, const int *ldvl, double *vr, const int *ldvr,
-                   double *work, const int *lwork, int *info, size_t jobvl_len,
-                   size_t jobvr_len);
 
 static int check_args(double eps, double lambda, double delta, double zeta) {
   if (!isfinite(eps) || !isfinite(lambda) || !isfinite(delta) ||
@@ -167,15 +159,18 @@ int whirl_sfd_circ_roots(double eps, double lambda, double delta, double zeta,
     wi[0] = 0.0;
   } else {
     /* companion matrix of the monic polynomial, column-major; dgeev
-     * balances it, which copes with the wide root spread near ε = δ. */
-    double A[16] = {0}, work[64], dummy[1];
-    const int n = deg, one = 1, lwork = 64;
-    int info = 0;
+     * balances it, which copes with the wide root spread near ε = δ.
+     * Through whirl_eig, so that LAPACK's complaints (overflowing
+     * coefficients) come back as a status, never as text on stdout. */
+    double A[16] = {0};
+    const int n = deg;
     for (int j = 0; j < n; ++j) A[0 + n * j] = -q[deg - 1 - j] / q[deg];
     for (int i = 1; i < n; ++i) A[i + n * (i - 1)] = 1.0;
-    dgeev_("N", "N", &n, A, &n, wr, wi, dummy, &one, dummy, &one, work, &lwork,
-           &info, 1, 1);
-    if (info != 0) return WHIRL_ELAPACK;
+    whirl_eig *e = whirl_eig_alloc((size_t)n);
+    if (!e) return WHIRL_ENOMEM;
+    rc = whirl_eig_compute(e, A, wr, wi);
+    whirl_eig_free(e);
+    if (rc != WHIRL_OK) return rc;
   }
 
   double r[4];

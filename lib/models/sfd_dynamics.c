@@ -446,6 +446,11 @@ int whirl_sfd_attractors_find(const double *p,
     o = *opt;
   else
     whirl_sfd_attractors_options_default(&o);
+  char tmsg[128];
+  if (whirl_basins_check_tolerances(o.rtol, o.atol, tmsg, sizeof tmsg)) {
+    snprintf(errbuf, errlen, "attractors: %s", tmsg);
+    return WHIRL_EINVAL;
+  }
   if (whirl_sfd_check_params(p, errbuf, errlen) != WHIRL_OK)
     return WHIRL_EINVAL;
   if (p[WHIRL_SFD_FE] != 0.0) {

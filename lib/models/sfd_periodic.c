@@ -323,7 +323,14 @@ static int check_options(const double *p, const whirl_sfd_periodic_options *o,
   return WHIRL_OK;
 }
 
-enum { MSAMP = 256 };
+/* Samples of one period for a seed orbit: 256, or for harmonic balance
+ * twice the 2N + 1 coefficients per component, since the projection onto N
+ * harmonics needs at least 2N + 1 samples (256 made 128..200 harmonics
+ * fail with "invalid argument"). */
+static size_t seed_samples(const whirl_sfd_periodic_options *o) {
+  const size_t hb = o->method == WHIRL_SFD_METHOD_HBM ? 2 * (2 * o->harmonics + 1) : 0;
+  return hb > 256 ? hb : 256;
+}
 
 int whirl_sfd_periodic_response(const double *p0,
                                 const whirl_sfd_periodic_options *o,
@@ -335,6 +342,7 @@ int whirl_sfd_periodic_response(const double *p0,
   p[WHIRL_SFD_OMEGA] = o->omega_max;
   int rc = check_options(p, o, errbuf, errlen);
   if (rc) return rc;
+  const size_t msamp = seed_samples(o);
   out->method = o->method;
   pdisc d;
   if ((rc = pd_alloc(&d, whirl_sfd_fixed(), WHIRL_SFD_OMEGA, o, errbuf, errlen)))
@@ -356,7 +364,7 @@ int whirl_sfd_periodic_response(const double *p0,
   }
   const size_t maxb = circ.nbranch + 2;
   whirl_branch **seen = calloc(maxb, sizeof *seen);
-  double *X = malloc(d.size * sizeof *X), *xs = malloc(4 * MSAMP * sizeof *xs);
+  double *X = malloc(d.size * sizeof *X), *xs = malloc(4 * msamp * sizeof *xs);
   size_t nseen = 0;
   if (!seen || !X || !xs) rc = WHIRL_ENOMEM;
   whirl_cont_options co;
@@ -371,9 +379,9 @@ int whirl_sfd_periodic_response(const double *p0,
       double lo = INFINITY;
       for (size_t i = 0; i < cb->len; ++i) lo = fmin(lo, cb->pts[i].p[WHIRL_SFD_OMEGA]);
       const double Om = q->p[WHIRL_SFD_OMEGA];
-      circle_samples(p, hypot(q->x[0], q->x[1]), Om, MSAMP, xs);
+      circle_samples(p, hypot(q->x[0], q->x[1]), Om, msamp, xs);
       p[WHIRL_SFD_OMEGA] = Om;
-      rc = pd_from_samples(&d, xs, MSAMP, 2.0 * M_PI / Om, X);
+      rc = pd_from_samples(&d, xs, msamp, 2.0 * M_PI / Om, X);
       if (rc == WHIRL_OK)
         rc = trace_add(out, &d, &co, X, p, 1, lo > o->omega_min * (1 + 1e-9), seen,
                        &nseen, errbuf, errlen);
@@ -382,15 +390,15 @@ int whirl_sfd_periodic_response(const double *p0,
     /* main branch: the static deflection z = F_E plus the undamped linear
      * unbalance response at omega_min */
     const double Om = o->omega_min, A = p[WHIRL_SFD_DELTA] * Om * Om / (1.0 - Om * Om);
-    for (size_t j = 0; j < MSAMP; ++j) {
-      const double th = 2.0 * M_PI * (double)j / MSAMP;
+    for (size_t j = 0; j < msamp; ++j) {
+      const double th = 2.0 * M_PI * (double)j / msamp;
       xs[4 * j] = A * cos(th);
       xs[4 * j + 1] = FE + A * sin(th);
       xs[4 * j + 2] = -Om * A * sin(th);
       xs[4 * j + 3] = Om * A * cos(th);
     }
     p[WHIRL_SFD_OMEGA] = Om;
-    rc = pd_from_samples(&d, xs, MSAMP, 2.0 * M_PI / Om, X);
+    rc = pd_from_samples(&d, xs, msamp, 2.0 * M_PI / Om, X);
     if (rc == WHIRL_OK)
       rc = trace_add(out, &d, &co, X, p, 1, 0, seen, &nseen, errbuf, errlen);
     size_t carried = 0, nisola = 0;
@@ -403,12 +411,12 @@ int whirl_sfd_periodic_response(const double *p0,
       ++nisola;
       const whirl_branch_point *q = &cb->pts[cb->len / 2];
       const double Oi = q->p[WHIRL_SFD_OMEGA];
-      circle_samples(p, hypot(q->x[0], q->x[1]), Oi, MSAMP, xs);
+      circle_samples(p, hypot(q->x[0], q->x[1]), Oi, msamp, xs);
       double pf[WHIRL_SFD_NPAR];
       memcpy(pf, p, sizeof pf);
       pf[WHIRL_SFD_OMEGA] = Oi;
       pf[WHIRL_SFD_FE] = 0.0;
-      if ((rc = pd_from_samples(&d, xs, MSAMP, 2.0 * M_PI / Oi, X))) break;
+      if ((rc = pd_from_samples(&d, xs, msamp, 2.0 * M_PI / Oi, X))) break;
       whirl_cont_options cf = co;
       cf.icp = WHIRL_SFD_FE;
       cf.p_min = FE < 0 ? FE : 0.0;
@@ -575,9 +583,10 @@ int whirl_sfd_nonsync(const double *p0, double omega_start,
                 "nonsync: start speed %g outside [%g, %g]", omega_start, o->omega_min,
                 o->omega_max);
   out->method = o->method;
-  double *xs = malloc(4 * MSAMP * sizeof *xs), T = 0;
+  const size_t msamp = seed_samples(o);
+  double *xs = malloc(4 * msamp * sizeof *xs), T = 0;
   if (!xs) return WHIRL_ENOMEM;
-  rc = cycle_from_integration(p, MSAMP, xs, &T, errbuf, errlen);
+  rc = cycle_from_integration(p, msamp, xs, &T, errbuf, errlen);
   pdisc d;
   if (rc == WHIRL_OK) rc = pd_alloc(&d, whirl_sfd_rotating(), -1, o, errbuf, errlen);
   if (rc != WHIRL_OK) {
@@ -588,7 +597,7 @@ int whirl_sfd_nonsync(const double *p0, double omega_start,
   double *X = malloc(d.size * sizeof *X);
   whirl_branch *br = NULL;
   if (!X) rc = WHIRL_ENOMEM;
-  if (rc == WHIRL_OK) rc = pd_from_samples(&d, xs, MSAMP, T, X);
+  if (rc == WHIRL_OK) rc = pd_from_samples(&d, xs, msamp, T, X);
   if (rc == WHIRL_OK && d.c) {
     /* collocation: correct once, adapt the mesh to the orbit, go on */
     whirl_cont_options co;

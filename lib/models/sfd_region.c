@@ -274,8 +274,8 @@ static int trace_dir(const trace_job *job, const whirl_sfd_region_options *o,
   whirl_cont_options co;
   whirl_cont_options_default(&co);
   co.icp = WHIRL_SFD_LAMBDA;
-  co.ds = 1e-3;
-  co.ds_min = 1e-10;
+  co.ds = fmin(1e-3, o->ds_max);
+  co.ds_min = fmin(1e-10, co.ds);
   co.ds_max = o->ds_max;
   co.nmx = o->nmx;
   co.p_min = o->lambda_min;
@@ -309,7 +309,15 @@ static int trace_dir(const trace_job *job, const whirl_sfd_region_options *o,
   const whirl_cont_stats *st = whirl_cont_get_stats(c);
   r->steps += st->steps;
   r->newton_its += st->newton_its;
-  if (rc < 0 && errbuf && errlen)
+  if (rc == WHIRL_DONE && whirl_cont_stop_reason(c) == WHIRL_STOP_NMX) {
+    /* the curve would be cut short without a word (5001 points) */
+    rc = WHIRL_EMAXITER;
+    if (errbuf && errlen)
+      snprintf(errbuf, errlen, "region: the %s curve took %zu steps (nmx) before "
+               "reaching the lambda range's ends at %s lambda = %.6g: raise nmx "
+               "or ds-max", job->upper ? "upper" : "lower", co.nmx,
+               dir < 0 ? "decreasing" : "increasing", whirl_cont_point(c)->p[WHIRL_SFD_LAMBDA]);
+  } else if (rc < 0 && errbuf && errlen)
     snprintf(errbuf, errlen, "region: continuation failed: %s", whirl_cont_errmsg(c));
   whirl_cont_free(c);
   return rc < 0 ? rc : 0;
@@ -382,6 +390,7 @@ static int on_curve(const whirl_sfd_curve *c, double lambda, double delta) {
 int whirl_sfd_region_compute(const whirl_sfd_region_options *o,
                              whirl_sfd_region *r, char *errbuf, size_t errlen) {
   memset(r, 0, sizeof *r);
+  if (errbuf && errlen) errbuf[0] = '\0';
   r->lambda_m = r->delta_m = r->lambda_c = r->delta_c = NAN;
   const char *why = NULL;
   if (!(isfinite(o->zeta) && o->zeta >= 0)) why = "zeta must be >= 0";

@@ -20,6 +20,8 @@
 
 #include <whirl/ode.h>
 
+#include "ode_impl.h"
+
 /* ------------------------------------------------------------------------
  * Butcher tableau (Dormand & Prince 1980, Table 2; HNW I Table II.5.2) */
 static const double C2 = 1.0 / 5.0, C3 = 3.0 / 10.0, C4 = 4.0 / 5.0,
@@ -203,6 +205,16 @@ int whirl_ode_set_max_steps(whirl_ode *o, size_t max_steps) {
   if (o == NULL) return WHIRL_EINVAL;
   o->max_steps = max_steps;
   return WHIRL_OK;
+}
+
+size_t whirl_ode_max_steps_(const whirl_ode *o) { return o->max_steps; }
+
+int whirl_ode_fail_(whirl_ode *o, int rc, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(o->errmsg, sizeof o->errmsg, fmt, ap);
+  va_end(ap);
+  return rc;
 }
 
 int whirl_ode_set_params(whirl_ode *o, const double *p) {

@@ -8,6 +8,8 @@
 
 #include <whirl/ode.h>
 
+#include "ode_impl.h"
+
 int whirl_ode_sample(whirl_ode *ode, double dt, size_t nsamples,
                      whirl_sample_fn fn, void *data) {
   if (!ode || !fn || !(dt != 0.0) || !isfinite(dt)) return WHIRL_EINVAL;
@@ -22,11 +24,26 @@ int whirl_ode_sample(whirl_ode *ode, double dt, size_t nsamples,
   if (r != 0) return r;
   if (nsamples == 0) return WHIRL_OK;
   k = 1;
+  /* step budget between two samples: a stiff stretch (a journal pressed to
+   * the housing) cannot make one interval take hours */
+  const size_t budget = whirl_ode_max_steps_(ode);
+  size_t since = 0;
   while (k <= nsamples) {
+    if (budget > 0 && since >= budget) {
+      status = whirl_ode_fail_(ode, WHIRL_EMAXITER,
+                               "%zu steps between two samples (t = %.10g, "
+                               "next sample at %.10g)",
+                               since, whirl_ode_t(ode),
+                               t_s + (double)k * dt);
+      break;
+    }
     status = whirl_ode_step(ode, t_end);
+    ++since;
     if (status == WHIRL_DONE) status = WHIRL_OK;
     if (status != WHIRL_OK) break;
     const double t_now = whirl_ode_t(ode);
+    if (dir * ((k == nsamples ? t_end : t_s + (double)k * dt) - t_now) <= 0)
+      since = 0; /* this step reaches the next sample */
     for (; k <= nsamples; ++k) {
       double tk = (k == nsamples) ? t_end : t_s + (double)k * dt;
       if (dir * (tk - t_now) > 0) break;

@@ -52,6 +52,21 @@ const whirl_model *whirl_model_builtin(const char *name) {
   return NULL;
 }
 
+int whirl_model_check_params(const whirl_model *m, const double *p,
+                             char *msg, size_t len) {
+  char dummy[8];
+  if (!msg || !len) msg = dummy, len = sizeof dummy;
+  msg[0] = '\0';
+  if (!m || !p) {
+    snprintf(msg, len, "no model or no parameters");
+    return WHIRL_EINVAL;
+  }
+  init_builtins();
+  if (m == &sfd_models[0] || m == &sfd_models[1])
+    return whirl_sfd_check_params(p, msg, len);
+  return WHIRL_OK;
+}
+
 static int name_ok(const char *s) {
   if (!s || !*s || strlen(s) >= 64 || isdigit((unsigned char)s[0])) return 0;
   for (; *s; s++) {

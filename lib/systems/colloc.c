@@ -467,8 +467,9 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   if (!prob || !prob->rhs || prob->n == 0)
     return fail_null(errbuf, errlen, "model is NULL, has no rhs or n = 0");
   if (!o) return fail_null(errbuf, errlen, "no options");
-  if (o->ntst < 2)
-    snprintf(why, sizeof why, "need NTST >= 2 (got %zu)", o->ntst);
+  if (o->ntst < 2 || o->ntst > WHIRL_COLLOC_MAX_NTST)
+    snprintf(why, sizeof why, "need 2 <= NTST <= %d (got %zu)",
+             WHIRL_COLLOC_MAX_NTST, o->ntst);
   else if (o->ncol < 2 || o->ncol > COLLOC_MAXCOL)
     snprintf(why, sizeof why, "need 2 <= NCOL <= %d (got %zu)", COLLOC_MAXCOL,
              o->ncol);
@@ -497,7 +498,14 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
 
   const size_t n = prob->n, m = o->ncol, N = o->ntst;
   const int aut = o->forcing_param < 0;
-  const size_t nnodes = N * m + 1;
+  const size_t nnodes = N * m + 1; /* N, m bounded above: no overflow */
+  /* sizes first, in floating point so that nothing overflows: at most
+   * 2 n m + 2 nonzeros in each of the n nnodes + 1 columns */
+  if ((double)n * (double)nnodes + 1.0 >= (double)INT_MAX ||
+      (double)n * (double)nnodes * (2.0 * (double)n * (double)m + 3.0) >=
+          (double)INT_MAX)
+    return fail_null(errbuf, errlen, "problem too large for int indices "
+                     "(reduce NTST, NCOL or the model's dimension)");
   const size_t nx = n * nnodes + (size_t)aut;
   /* nonzeros: n*ncol collocation rows per interval holding the node (two at
    * inner mesh points), periodicity at the end nodes, the phase row, and the

@@ -42,6 +42,12 @@ enum {
   WHIRL_BASIN_FAILED = -3     /* integration error (see the message) */
 };
 
+/* Limits on the options, checked by whirl_basins_compute. */
+#define WHIRL_BASINS_MAX_THREADS 1024
+#define WHIRL_BASINS_RTOL_MIN 1e-13
+#define WHIRL_BASINS_RTOL_MAX 1e-3
+#define WHIRL_BASINS_ATOL_MAX 1e-3
+
 typedef struct whirl_basins_options {
   double t0;            /* start time (section phase), default 0 */
   double period;        /* section period T > 0 (required) */
@@ -49,14 +55,23 @@ typedef struct whirl_basins_options {
   int fixed_horizon;    /* 1: integrate max_periods always; the class is
                            the attractor whose test holds on the last
                            `confirm` section points */
-  double rtol, atol;    /* default 1e-12, 1e-15 */
-  int nthreads;         /* 0: OpenMP's default */
+  double rtol, atol;    /* default 1e-12, 1e-15; WHIRL_BASINS_RTOL_MIN <=
+                           rtol <= WHIRL_BASINS_RTOL_MAX, 0 < atol <=
+                           WHIRL_BASINS_ATOL_MAX (looser tolerances do not
+                           classify, they only make the steps crawl) */
+  int nthreads;         /* 0: OpenMP's default; at most
+                           WHIRL_BASINS_MAX_THREADS */
   /* Optional progress report, called (serialised) after each point. */
   void (*progress)(size_t done, size_t total, void *data);
   void *progress_data;
 } whirl_basins_options;
 
 WHIRL_API void whirl_basins_options_default(whirl_basins_options *o);
+
+/* Check integration tolerances against the limits above: WHIRL_OK, or
+ * WHIRL_EINVAL with "rtol must be in [1e-13, 0.001] (got 1)" in msg[len]. */
+WHIRL_API int whirl_basins_check_tolerances(double rtol, double atol,
+                                            char *msg, size_t len);
 
 typedef struct whirl_basins_stats {
   size_t periods;   /* section periods integrated, all points */

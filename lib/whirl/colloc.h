@@ -38,8 +38,13 @@
 extern "C" {
 #endif
 
+/* Largest NTST accepted (the run files' limit too); the unknowns and the
+ * Jacobian's nonzeros must also fit in int indices. */
+#define WHIRL_COLLOC_MAX_NTST 100000
+
 typedef struct whirl_colloc_options {
-  size_t ntst;       /* NTST, mesh intervals (default 20) */
+  size_t ntst;       /* NTST, mesh intervals (default 20, at most
+                        WHIRL_COLLOC_MAX_NTST) */
   size_t ncol;       /* NCOL, collocation points per interval, 2..7 (default 4) */
   int forcing_param; /* >= 0: forced model, ω = p[forcing_param];
                         -1 (default): autonomous, T unknown */

@@ -87,6 +87,8 @@ WHIRL_API const char *whirl_bordered_errmsg(const whirl_bordered *b);
 typedef struct whirl_eig whirl_eig;
 WHIRL_API whirl_eig *whirl_eig_alloc(size_t n);
 WHIRL_API void whirl_eig_free(whirl_eig *e);  /* accepts NULL */
+/* The reason of the last failure of whirl_eig_compute ("" after success). */
+WHIRL_API const char *whirl_eig_errmsg(const whirl_eig *e);
 /* Eigenvalues of A[n*n] (column-major, not modified): re[n], im[n], sorted by
  * decreasing real part (conjugate pairs adjacent, positive imaginary first). */
 WHIRL_API int whirl_eig_compute(whirl_eig *e, const double *A, double *re,

@@ -64,6 +64,14 @@ typedef struct whirl_model {
  * WHIRL_EINVAL with a one-line reason in msg[len]. */
 WHIRL_API int whirl_model_check(const whirl_model *m, char *msg, size_t len);
 
+/* Check parameter values p[npar] against the model's own rules: for the
+ * built-in SFD models whirl_sfd_check_params (physical ranges, |F_E| < 1);
+ * plug-ins have no rules here (their callbacks report a bad parameter by
+ * their return status).  WHIRL_OK, or WHIRL_EINVAL with the reason in
+ * msg[len] ("FE must be in (-1, 1): ... (got 1.5)"). */
+WHIRL_API int whirl_model_check_params(const whirl_model *m, const double *p,
+                                       char *msg, size_t len);
+
 /* The built-in models by name ("sfd": the rigid rotor on two short SFDs in
  * the fixed frame, forced; "sfd-rotating": the same in the rotating frame,
  * autonomous).  NULL for an unknown name. */

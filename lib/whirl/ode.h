@@ -59,7 +59,9 @@ WHIRL_API int whirl_ode_set_tolerances(whirl_ode *ode, double rtol,
  * gives fixed steps h. */
 WHIRL_API int whirl_ode_set_step_limits(whirl_ode *ode, double h_init,
                                         double h_min, double h_max);
-/* Maximum accepted steps per whirl_ode_evolve call (0: unlimited). */
+/* Maximum accepted steps per whirl_ode_evolve call, and between two
+ * consecutive samples of whirl_ode_sample (0: unlimited); beyond it those
+ * return WHIRL_EMAXITER with a message. */
 WHIRL_API int whirl_ode_set_max_steps(whirl_ode *ode, size_t max_steps);
 /* Replace the parameters (takes effect at the next reset). */
 WHIRL_API int whirl_ode_set_params(whirl_ode *ode, const double *p);

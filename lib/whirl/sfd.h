@@ -42,9 +42,19 @@ enum {
 /* Table 1 of the paper (ζ = 0, F_E = 0, Ω = 1): p[WHIRL_SFD_NPAR]. */
 WHIRL_API void whirl_sfd_default_params(double *p);
 
-/* Check a parameter vector: finite, λ > 0, δ >= 0, ζ >= 0, Ω >= 0.  On
- * failure returns WHIRL_EINVAL and writes "lambda must be > 0 (got -1)"-style
- * text to msg[len]. */
+/* Physical ranges of the parameters.  The paper studies λ in 0.01..1.5,
+ * δ in 0.05..0.95, Ω <= 20; the limits leave a wide margin around that and
+ * exclude only values where the model is meaningless or the arithmetic
+ * overflows (λ = 1e308 makes every force infinite).  |F_E| >= 1 is a static
+ * deflection beyond the clearance: the journal rests on the housing. */
+#define WHIRL_SFD_OMEGA_MAX 1000.0
+#define WHIRL_SFD_LAMBDA_MAX 100.0
+#define WHIRL_SFD_DELTA_MAX 10.0
+#define WHIRL_SFD_ZETA_MAX 10.0
+
+/* Check a parameter vector: finite, 0 <= Ω <= 1000, 0 < λ <= 100,
+ * 0 <= δ <= 10, 0 <= ζ <= 10, |F_E| < 1.  On failure returns WHIRL_EINVAL
+ * and writes "lambda must be in (0, 100] (got -1)"-style text to msg[len]. */
 WHIRL_API int whirl_sfd_check_params(const double *p, char *msg, size_t len);
 
 /* π-film force of both dampers (dimensionless, eq. 8 times 2/(m c ω_n²)) at

@@ -284,7 +284,41 @@ static void test_inputs(void) {
      "trajectory samples with an empty span rejected");
 }
 
+/* Absurd options are refused with a message, before any thread starts
+ * (100000 threads crashed libgomp; rtol = 1 or atol = 16 made the steps
+ * crawl for minutes). */
+static void test_option_limits(void) {
+  double p[5], x0[4] = {0.1, 0, 0, 0}, t = 2 * M_PI / 1.78;
+  table1(p, 1.78);
+  whirl_basins_options bo;
+  whirl_basins_options_default(&bo);
+  bo.period = t;
+  bo.max_periods = 1;
+  int which = 99;
+  char msg[256];
+  const struct { int nthreads; double rtol, atol; const char *word; } bad[] = {
+      {100000, 1e-12, 1e-15, "nthreads"}, {-1, 1e-12, 1e-15, "nthreads"},
+      {1, 1.0, 1e-15, "rtol"},            {1, 1e-16, 1e-15, "rtol"},
+      {1, 1e-12, 16.0, "atol"},           {1, 1e-12, 0.0, "atol"}};
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+    bo.nthreads = bad[k].nthreads;
+    bo.rtol = bad[k].rtol;
+    bo.atol = bad[k].atol;
+    int rc = whirl_basins_compute(whirl_sfd_fixed(), p, 1, x0, NULL, 0, &bo, &which, NULL, NULL, msg,
+                                  sizeof msg);
+    ok(rc == WHIRL_EINVAL && strstr(msg, bad[k].word) && which == 99,
+       "basins refuse nthreads %d, rtol %g, atol %g: %s", bad[k].nthreads, bad[k].rtol, bad[k].atol, msg);
+  }
+  whirl_sfd_attractors_options ao;
+  whirl_sfd_attractors_options_default(&ao);
+  ao.atol = 16;
+  whirl_sfd_attractors *A = NULL;
+  ok(whirl_sfd_attractors_find(p, &ao, &A, msg, sizeof msg) == WHIRL_EINVAL && A == NULL && strstr(msg, "atol"),
+     "attractors refuse atol 16: %s", msg);
+}
+
 int main(void) {
+  test_option_limits();
   test_frames();
   test_circular_orbits();
   test_integrate_circle();

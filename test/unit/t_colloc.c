@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include <whirl/branch.h>
 #include <whirl/colloc.h>
@@ -367,6 +368,30 @@ done:
   if (ws) s->bsolver->free(ws);
   whirl_bordered_free(bd);
   free(Jx), free(fk), free(wk), free(r), free(b1), free(b2);
+}
+
+/* Sizes are checked before anything is counted or allocated: NTST =
+ * 99999999999 busy-looped over the mesh nodes counting nonzeros before the
+ * int-index check; a large model at the largest NTST must be refused by
+ * its size too, without overflowing size_t on the way. */
+static void test_size_limits(void) {
+  char err[256];
+  whirl_colloc_options o;
+  whirl_colloc_options_default(&o);
+  o.ntst = 99999999999u;
+  const clock_t t0 = clock();
+  whirl_colloc *c = whirl_colloc_alloc(&lorenz, &o, err, sizeof err);
+  const double secs = (double)(clock() - t0) / CLOCKS_PER_SEC;
+  ok(!c && strstr(err, "NTST") && secs < 0.5, "NTST = 99999999999 refused at once (%.3f s CPU): %s",
+     secs, err);
+  whirl_colloc_free(c);
+  o.ntst = WHIRL_COLLOC_MAX_NTST;
+  o.ncol = 7;
+  whirl_problem big = lorenz;
+  big.n = (size_t)1 << 40;
+  c = whirl_colloc_alloc(&big, &o, err, sizeof err);
+  ok(!c && strstr(err, "too large"), "n = 2^40 at NTST %d refused: %s", WHIRL_COLLOC_MAX_NTST, err);
+  whirl_colloc_free(c);
 }
 
 static void test_structured(void) {
@@ -1146,6 +1171,7 @@ static void test_errors(void) {
 
 int main(int argc, char **argv) {
   const int quick = argc > 1 && strcmp(argv[1], "quick") == 0;
+  test_size_limits();
   test_jacobians();
   test_structured();
   test_lambda_omega();

@@ -436,7 +436,43 @@ static void test_errors(void) {
   whirl_cont_free(c);
 }
 
+/* F = x^2 - p with an analytic F_x = 2x. */
+static int sq_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[0] * x[0] - p[0];
+  return 0;
+}
+static int sq_Fx(const double *x, const double *p, double *J, void *d) {
+  (void)p, (void)d;
+  J[0] = 2.0 * x[0];
+  return 0;
+}
+
+/* The start's message says which failure it is: at p = -1 (no solution)
+ * Newton from x0 = 1 jumps to x = 0 where F_x = 0 — that is a Newton that
+ * does not converge, not a singular start point (it was reported as "F_x is
+ * singular at the start point"); from x0 = 0 at p = 1 the start point
+ * itself is singular. */
+static void test_start_messages(void) {
+  whirl_system s = {.name = "square", .n = 1, .npar = 1, .F = sq_F, .Fx = sq_Fx};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  char err[256];
+  whirl_cont *c = whirl_cont_alloc(&s, &o, err, sizeof err);
+  double x0 = 1.0, p0 = -1.0;
+  int rc = whirl_cont_start(c, &x0, &p0, 1);
+  ok(rc == WHIRL_ENOCONV && strstr(whirl_cont_errmsg(c), "did not converge") &&
+         !strstr(whirl_cont_errmsg(c), "singular"),
+     "Newton wandering onto F_x = 0 is a divergence (%d): %s", rc, whirl_cont_errmsg(c));
+  x0 = 0.0, p0 = 1.0;
+  rc = whirl_cont_start(c, &x0, &p0, 1);
+  ok(rc == WHIRL_ESINGULAR && strstr(whirl_cont_errmsg(c), "singular at the start point"),
+     "a singular start point is one (%d): %s", rc, whirl_cont_errmsg(c));
+  whirl_cont_free(c);
+}
+
 int main(void) {
+  test_start_messages();
   test_cusp(1);
   test_cusp(0);
   test_bp();

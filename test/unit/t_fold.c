@@ -687,7 +687,31 @@ static void test_errors(void) {
   whirl_equilibrium_free(eq);
 }
 
+/* A region curve that needs more steps than nmx is a failure with a
+ * message, not a curve cut short without a word (the upper curve stopped
+ * at 5001 points); a ds_max below the first step (1e-3) works. */
+static void test_region_limits(void) {
+  whirl_sfd_region_options o;
+  whirl_sfd_region_options_default(&o);
+  o.nmx = 20;
+  whirl_sfd_region r;
+  char msg[512] = "";
+  int rc = whirl_sfd_region_compute(&o, &r, msg, sizeof msg);
+  ok(rc == WHIRL_EMAXITER && strstr(msg, "took 20 steps (nmx)"), "nmx = 20: the cut is a failure (%d): %s",
+     rc, msg);
+  whirl_sfd_region_free(&r);
+  whirl_sfd_region_options_default(&o);
+  o.ds_max = 1e-4;
+  o.nmx = 100000;
+  o.lambda_min = 0.01;
+  o.lambda_max = 0.012;
+  rc = whirl_sfd_region_compute(&o, &r, msg, sizeof msg);
+  ok(rc == WHIRL_OK && !msg[0], "ds_max = 1e-4 works (%d) '%s'", rc, msg);
+  whirl_sfd_region_free(&r);
+}
+
 int main(void) {
+  test_region_limits();
   test_cusp();
   test_ab();
   test_bt();

@@ -866,7 +866,40 @@ static void test_independent(void) {
 #endif
 }
 
+/* whirl_ode_sample honours max_steps between two samples: a stiff stretch
+ * (the SFD journal pressed to the housing) made `sfd simulate --y0
+ * 0.999999` run for over 15 minutes inside one call.  Here the harmonic
+ * oscillator sampled once per period needs a few hundred steps per sample
+ * at tight tolerances: a budget of 50 must stop it with a message. */
+static int count_samples(size_t k, double t, const double *x, void *data) {
+  (void)t, (void)x;
+  *(size_t *)data = k;
+  return 0;
+}
+
+static void test_sample_budget(void) {
+  const double p[1] = {1.0}, x0[2] = {1.0, 0.0};
+  whirl_ode *o = whirl_ode_alloc(&osc, p);
+  size_t last = 0;
+  whirl_ode_set_tolerances(o, 1e-12, 1e-14);
+  whirl_ode_reset(o, 0.0, x0);
+  whirl_ode_set_max_steps(o, 50);
+  int rc = whirl_ode_sample(o, 2 * M_PI, 3, count_samples, &last);
+  ok(rc == WHIRL_EMAXITER && strstr(whirl_ode_errmsg(o), "50 steps between two samples") && last == 0,
+     "sample: budget of 50 steps per sample exceeded (%d): %s", rc, whirl_ode_errmsg(o));
+  whirl_ode_reset(o, 0.0, x0);
+  whirl_ode_set_max_steps(o, 100000);
+  rc = whirl_ode_sample(o, 2 * M_PI, 3, count_samples, &last);
+  ok(rc == WHIRL_OK && last == 3, "sample: a sufficient budget changes nothing (%d, %zu samples)", rc, last);
+  whirl_ode_reset(o, 0.0, x0);
+  whirl_ode_set_max_steps(o, 50);
+  rc = whirl_ode_sample(o, 2 * M_PI / 1000, 3000, count_samples, &last);
+  ok(rc == WHIRL_OK && last == 3000, "sample: the budget is per sample, not per call (%d)", rc);
+  whirl_ode_free(o);
+}
+
 int main(void) {
+  test_sample_budget();
   test_order();
   test_accuracy();
   test_dense();

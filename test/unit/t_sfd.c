@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <whirl/model.h>
 #include <whirl/sfd.h>
 
 #include "../tap.h"
@@ -95,11 +96,18 @@ static void test_params(void) {
     double v;
     const char *want;
   } bad[] = {
-      {WHIRL_SFD_LAMBDA, -1.0, "lambda must be > 0 (got -1)"},
-      {WHIRL_SFD_LAMBDA, 0.0, "lambda must be > 0 (got 0)"},
-      {WHIRL_SFD_DELTA, -0.25, "delta must be >= 0 (got -0.25)"},
-      {WHIRL_SFD_ZETA, -0.01, "zeta must be >= 0 (got -0.01)"},
-      {WHIRL_SFD_OMEGA, -2.0, "Omega must be >= 0 (got -2)"},
+      {WHIRL_SFD_LAMBDA, -1.0, "lambda must be in (0, 100] (got -1)"},
+      {WHIRL_SFD_LAMBDA, 0.0, "lambda must be in (0, 100] (got 0)"},
+      {WHIRL_SFD_DELTA, -0.25, "delta must be in [0, 10] (got -0.25)"},
+      {WHIRL_SFD_ZETA, -0.01, "zeta must be in [0, 10] (got -0.01)"},
+      {WHIRL_SFD_OMEGA, -2.0, "Omega must be in [0, 1000] (got -2)"},
+      /* out of the physical range (1e308 overflowed every force) */
+      {WHIRL_SFD_LAMBDA, 1e308, "lambda must be in (0, 100] (got 1e+308)"},
+      {WHIRL_SFD_DELTA, 1e308, "delta must be in [0, 10] (got 1e+308)"},
+      {WHIRL_SFD_ZETA, 10.5, "zeta must be in [0, 10] (got 10.5)"},
+      {WHIRL_SFD_OMEGA, 1e4, "Omega must be in [0, 1000] (got 10000)"},
+      {WHIRL_SFD_FE, 1.0, "FE must be in (-1, 1): a static force |FE| >= 1 puts the journal on the housing (got 1)"},
+      {WHIRL_SFD_FE, -1.5, "FE must be in (-1, 1): a static force |FE| >= 1 puts the journal on the housing (got -1.5)"},
       {WHIRL_SFD_LAMBDA, NAN, "lambda must be finite (got nan)"},
       {WHIRL_SFD_FE, INFINITY, "FE must be finite (got inf)"},
   };
@@ -832,7 +840,35 @@ static void test_fd_helpers(void) {
      "whirl_fd_jac_x/_p pass the callback status on");
 }
 
+/* |F_E| >= 1 presses the journal onto the housing: the fixed-frame model
+ * reports contact (recoverable) for every state, so that `whirl run` with
+ * FE = 1.5 stops at once instead of integrating along the housing for
+ * minutes; the built-in model's parameter check refuses it up front. */
+static void test_fe_domain(void) {
+  const whirl_problem *fx = whirl_sfd_fixed();
+  double p[WHIRL_SFD_NPAR], x[4] = {0.1, 0.0, 0.0, 0.0}, f[4], J[4 * WHIRL_SFD_NPAR];
+  whirl_sfd_default_params(p);
+  p[WHIRL_SFD_FE] = 1.5;
+  ok(fx->rhs(0.0, x, p, f, NULL) == WHIRL_SFD_CONTACT, "rhs with FE = 1.5: contact");
+  ok(fx->jac_x(0.0, x, p, J, NULL) == WHIRL_SFD_CONTACT &&
+         fx->jac_p(0.0, x, p, J, NULL) == WHIRL_SFD_CONTACT,
+     "jac_x, jac_p with FE = 1.5: contact");
+  p[WHIRL_SFD_FE] = -1.0;
+  ok(fx->rhs(0.0, x, p, f, NULL) == WHIRL_SFD_CONTACT, "rhs with FE = -1: contact");
+  p[WHIRL_SFD_FE] = 0.999;
+  ok(fx->rhs(0.0, x, p, f, NULL) == WHIRL_OK, "rhs with FE = 0.999: fine");
+  char msg[256];
+  p[WHIRL_SFD_FE] = 1.5;
+  ok(whirl_model_check_params(whirl_model_builtin("sfd"), p, msg, sizeof msg) == WHIRL_EINVAL &&
+         strstr(msg, "FE must be in (-1, 1)"),
+     "built-in model 'sfd' refuses FE = 1.5: %s", msg);
+  p[WHIRL_SFD_FE] = 0.5;
+  ok(whirl_model_check_params(whirl_model_builtin("sfd"), p, msg, sizeof msg) == WHIRL_OK,
+     "and accepts FE = 0.5");
+}
+
 int main(void) {
+  test_fe_domain();
   test_params();
   test_force();
   test_contact_nan();
