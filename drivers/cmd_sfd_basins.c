@@ -3,14 +3,14 @@
  * evenly spread in 98 % of the clearance with zero or circular-orbit
  * velocities, or taken from a quasiperiodic trajectory; each trajectory is
  * integrated until it provably settles on one of the attractors found at
- * that speed (whirl/sfd_dynamics.h), in parallel (OpenMP).
+ * that speed (whirl/rotor/sfd_dynamics.h), in parallel (OpenMP).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include <whirl/whirl.h>
+#include <whirl/rotor.h>
 
 #include "cli.h"
 #include "sfd_common.h"

@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <whirl/whirl.h>
+#include <whirl/rotor.h>
 
 #include "cli.h"
 

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <whirl/whirl.h>
+#include <whirl/rotor.h>
 
 #include "cli.h"
 #include "sfd_common.h"

@@ -1,15 +1,15 @@
 /* drivers/cmd_sfd_region.c — `whirl sfd region`: the region of (lambda,
  * delta) in which the rotor has an isolated branch below Omega = W (paper
  * Fig. 18), its two boundaries traced by two-parameter continuation
- * (whirl/sfd_region.h), written as TSV and drawn like the paper's figure.
+ * (whirl/rotor/sfd_region.h), written as TSV and drawn like the paper's figure.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include <whirl/whirl.h>
-#include <whirl/sfd_region.h>
+#include <whirl/rotor.h>
+#include <whirl/rotor/sfd_region.h>
 
 #include "cli.h"
 

@@ -12,7 +12,7 @@
 #include <string.h>
 #include <time.h>
 
-#include <whirl/whirl.h>
+#include <whirl/rotor.h>
 
 #include "cli.h"
 

@@ -8,7 +8,7 @@
 
 #include <stdio.h>
 
-#include <whirl/whirl.h>
+#include <whirl/rotor.h>
 
 #include "outdir.h"
 
@@ -41,6 +41,7 @@ typedef struct run_ctx {
   const whirl_run_settings *s;
   const whirl_model *model;
   void *dl;               /* dlopen handle of a plug-in, or NULL */
+  whirl_model_registry *models; /* the registered models (model = NAME) */
   whirl_problem prob;     /* the model's problem (JAC = 0: no Jacobians) */
   size_t n, npar;
   char **pnames, **xnames; /* resolved names (model's or PAR(k)/U(k)) */

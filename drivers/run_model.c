@@ -54,21 +54,34 @@ static int is_plugin_path(const char *m) {
   return strchr(m, '/') != NULL || (n > 3 && !strcmp(m + n - 3, ".so"));
 }
 
+/* The model NAME from the registry the modules fill (today the rotor
+ * module: sfd, sfd-rotating); NULL with the message printed. */
+static const whirl_model *registered_model(run_ctx *R, const char *name) {
+  char msg[512];
+  if (!R->models && (!(R->models = whirl_model_registry_alloc()) ||
+                     whirl_rotor_register_models(R->models, msg, sizeof msg) != WHIRL_OK)) {
+    run_fail(R, WHIRL_RK_MODEL, "model: the registered models are not available: %s",
+             R->models ? msg : "out of memory");
+    return NULL;
+  }
+  const whirl_model *model = whirl_model_registry_find(R->models, name);
+  if (model) return model;
+  char list[256] = "";
+  for (size_t i = 0; i < whirl_model_registry_count(R->models); i++) {
+    if (list[0]) strcat(list, ", ");
+    strncat(list, whirl_model_registry_name(R->models, i), sizeof list - strlen(list) - 3);
+  }
+  run_fail(R, WHIRL_RK_MODEL,
+           "model: '%s' is neither a built-in model (%s) nor a plug-in "
+           "(a path to a .so file)", name, list);
+  return NULL;
+}
+
 int run_load_model(run_ctx *R) {
   const char *m = R->s->model;
   if (!is_plugin_path(m)) {
-    R->model = whirl_model_builtin(m);
-    if (!R->model) {
-      char list[256] = "";
-      for (const char *const *b = whirl_model_builtin_names(); *b; b++) {
-        if (list[0]) strcat(list, ", ");
-        strncat(list, *b, sizeof list - strlen(list) - 3);
-      }
-      run_fail(R, WHIRL_RK_MODEL,
-               "model: '%s' is neither a built-in model (%s) nor a plug-in "
-               "(a path to a .so file)", m, list);
-      return -1;
-    }
+    R->model = registered_model(R, m);
+    if (!R->model) return -1;
   } else {
     char path[8192];
     if (m[0] == '/' || (!R->rundir[0] && strchr(m, '/')))
@@ -144,6 +157,8 @@ void run_unload_model(run_ctx *R) {
   free(R->u);
   if (R->dl) dlclose(R->dl);
   R->dl = NULL;
+  whirl_model_registry_free(R->models);
+  R->models = NULL;
 }
 
 static int find_name(char **names, size_t n, const whirl_run_ref *r) {

@@ -6,7 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include <whirl/whirl.h>
+#include <whirl/rotor.h>
 
 #include "cli.h"
 #include "sfd_common.h"

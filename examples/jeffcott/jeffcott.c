@@ -37,7 +37,7 @@
 #include <stddef.h>
 
 #include <whirl/model.h>
-#include <whirl/whirl.h>
+#include <whirl/rotor.h>
 
 enum { J_OMEGA, J_LAMBDA, J_DELTA, J_ZETA, J_ALPHA, J_KAPPA, J_NPAR };
 #define J_N 8

@@ -1,55 +1,90 @@
 /* lib/run/model.c — model descriptions for `whirl run` (whirl/model.h): the
- * built-in models by name and the checks a plug-in's description must pass
- * before anything calls into it.
+ * checks a description must pass before anything calls into it, and the
+ * registry of models by name that modules fill (the rotor module's
+ * whirl_rotor_register_models) and run files name.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <ctype.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <whirl/model.h>
-#include <whirl/sfd.h>
 
-static double sfd_par0[WHIRL_SFD_NPAR];
-static const double sfd_u0[4] = {0.0, 0.0, 0.0, 0.0};
+struct whirl_model_registry {
+  char **names;
+  whirl_model *models;
+  size_t n, cap;
+};
 
-static int sfd_stpnt(double tau, double *u, double *par, void *data) {
-  (void)tau;
-  (void)par;
-  (void)data;
-  memset(u, 0, 4 * sizeof *u); /* at rest in the centre */
+whirl_model_registry *whirl_model_registry_alloc(void) {
+  return calloc(1, sizeof(whirl_model_registry));
+}
+
+void whirl_model_registry_free(whirl_model_registry *reg) {
+  if (!reg) return;
+  for (size_t i = 0; i < reg->n; i++) free(reg->names[i]);
+  free(reg->names);
+  free(reg->models);
+  free(reg);
+}
+
+static int registry_name_ok(const char *s) {
+  if (!s || !*s || strlen(s) >= 64) return 0;
+  for (; *s; s++)
+    if (!(isalnum((unsigned char)*s) || *s == '_' || *s == '-' || *s == '.')) return 0;
+  return 1;
+}
+
+static int registry_grow(whirl_model_registry *reg) {
+  if (reg->n < reg->cap) return 0;
+  const size_t cap = reg->cap ? 2 * reg->cap : 8;
+  char **names = realloc(reg->names, cap * sizeof *names);
+  if (!names) return -1;
+  reg->names = names;
+  whirl_model *models = realloc(reg->models, cap * sizeof *models);
+  if (!models) return -1;
+  reg->models = models;
+  reg->cap = cap;
   return 0;
 }
 
-/* The problems are static; the tables are filled on first use (the
- * parameter defaults come from whirl_sfd_default_params, Table 1). */
-static whirl_model sfd_models[2];
-
-static void init_builtins(void) {
-  if (sfd_models[0].abi) return;
-  whirl_sfd_default_params(sfd_par0);
-  sfd_models[0] = (whirl_model){
-      .abi = WHIRL_MODEL_ABI, .problem = *whirl_sfd_fixed(), .par0 = sfd_par0,
-      .u0 = sfd_u0, .stpnt = sfd_stpnt, .forcing_param = WHIRL_SFD_OMEGA,
-      .description = "rigid rotor on two short squeeze-film dampers, fixed "
-                     "frame (unbalance forcing at Omega)"};
-  sfd_models[1] = (whirl_model){
-      .abi = WHIRL_MODEL_ABI, .problem = *whirl_sfd_rotating(),
-      .par0 = sfd_par0, .u0 = sfd_u0, .stpnt = sfd_stpnt, .forcing_param = -1,
-      .description = "rigid rotor on two short squeeze-film dampers, rotating "
-                     "frame (circular orbits are equilibria)"};
+int whirl_model_registry_add(whirl_model_registry *reg, const char *name,
+                             const whirl_model *m, char *msg, size_t len) {
+  char dummy[8];
+  if (!msg || !len) msg = dummy, len = sizeof dummy;
+  if (!reg || !registry_name_ok(name)) {
+    snprintf(msg, len, "model name '%s' is not usable (letters, digits, _ - .)",
+             name ? name : "(null)");
+    return WHIRL_EINVAL;
+  }
+  if (whirl_model_registry_find(reg, name)) {
+    snprintf(msg, len, "a model named '%s' is registered already", name);
+    return WHIRL_EINVAL;
+  }
+  if (whirl_model_check(m, msg, len) != WHIRL_OK) return WHIRL_EINVAL;
+  if (registry_grow(reg) || !(reg->names[reg->n] = malloc(strlen(name) + 1))) {
+    snprintf(msg, len, "out of memory");
+    return WHIRL_ENOMEM;
+  }
+  strcpy(reg->names[reg->n], name);
+  reg->models[reg->n++] = *m;
+  return WHIRL_OK;
 }
 
-static const char *const builtin_names[] = {"sfd", "sfd-rotating", NULL};
-
-const char *const *whirl_model_builtin_names(void) { return builtin_names; }
-
-const whirl_model *whirl_model_builtin(const char *name) {
-  if (!name) return NULL;
-  init_builtins();
-  for (size_t i = 0; builtin_names[i]; i++)
-    if (!strcmp(name, builtin_names[i])) return &sfd_models[i];
+const whirl_model *whirl_model_registry_find(const whirl_model_registry *reg,
+                                             const char *name) {
+  for (size_t i = 0; reg && name && i < reg->n; i++)
+    if (!strcmp(reg->names[i], name)) return &reg->models[i];
   return NULL;
+}
+
+size_t whirl_model_registry_count(const whirl_model_registry *reg) {
+  return reg ? reg->n : 0;
+}
+
+const char *whirl_model_registry_name(const whirl_model_registry *reg, size_t i) {
+  return reg && i < reg->n ? reg->names[i] : NULL;
 }
 
 int whirl_model_check_params(const whirl_model *m, const double *p,
@@ -61,9 +96,11 @@ int whirl_model_check_params(const whirl_model *m, const double *p,
     snprintf(msg, len, "no model or no parameters");
     return WHIRL_EINVAL;
   }
-  init_builtins();
-  if (m == &sfd_models[0] || m == &sfd_models[1])
-    return whirl_sfd_check_params(p, msg, len);
+  if (m->check_params && m->check_params(p, msg, len) != 0) {
+    if (!msg[0]) snprintf(msg, len, "the parameters are outside the model's domain");
+    return WHIRL_EINVAL;
+  }
+  msg[0] = '\0';
   return WHIRL_OK;
 }
 

@@ -1,7 +1,8 @@
 /* whirl/model.h — a model as `whirl run` loads it: the vector field (a
  * whirl_problem) plus what a run needs to start, AUTO's STPNT and PVLS in
- * one struct.  Built-in models (`model = sfd`) and plug-ins (`model =
- * ./mymodel.so`) are described the same way.
+ * one struct.  Registered models (`model = sfd`, added to a
+ * whirl_model_registry by a module such as the rotor module) and plug-ins
+ * (`model = ./mymodel.so`) are described the same way.
  *
  * A plug-in is a shared object exporting ONE symbol, `whirl_model_def`, of
  * type `const whirl_model`:
@@ -36,7 +37,7 @@
 extern "C" {
 #endif
 
-#define WHIRL_MODEL_ABI 1
+#define WHIRL_MODEL_ABI 2
 #define WHIRL_MODEL_SYMBOL "whirl_model_def"
 
 typedef struct whirl_model {
@@ -57,6 +58,10 @@ typedef struct whirl_model {
                             the period is 2 pi / p[forcing_param]; -1 for an
                             autonomous model */
   const char *description; /* optional one-line description */
+  /* Optional: are the parameter values p[npar] inside the model's domain
+   * (physical ranges)?  0, or nonzero with a one-line reason in msg[len].
+   * whirl run refuses a run whose parameters fail before computing. */
+  int (*check_params)(const double *p, char *msg, size_t len);
 } whirl_model;
 
 /* Check a model description: abi, sizes, required callbacks, parameter
@@ -64,21 +69,35 @@ typedef struct whirl_model {
  * WHIRL_EINVAL with a one-line reason in msg[len]. */
 WHIRL_API int whirl_model_check(const whirl_model *m, char *msg, size_t len);
 
-/* Check parameter values p[npar] against the model's own rules: for the
- * built-in SFD models whirl_sfd_check_params (physical ranges, |F_E| < 1);
- * plug-ins have no rules here (their callbacks report a bad parameter by
- * their return status).  WHIRL_OK, or WHIRL_EINVAL with the reason in
- * msg[len] ("FE must be in (-1, 1): ... (got 1.5)"). */
+/* Check parameter values p[npar] against the model's own rules (its
+ * check_params; none: every value is accepted, and the callbacks report a
+ * bad parameter by their return status).  WHIRL_OK, or WHIRL_EINVAL with
+ * the reason in msg[len] ("FE must be in (-1, 1): ... (got 1.5)"). */
 WHIRL_API int whirl_model_check_params(const whirl_model *m, const double *p,
                                        char *msg, size_t len);
 
-/* The built-in models by name ("sfd": the rigid rotor on two short SFDs in
- * the fixed frame, forced; "sfd-rotating": the same in the rotating frame,
- * autonomous).  NULL for an unknown name. */
-WHIRL_API const whirl_model *whirl_model_builtin(const char *name);
+/* ---- a registry of models, by name (what `model = NAME` finds) ---------- */
 
-/* Names of the built-in models, NULL-terminated. */
-WHIRL_API const char *const *whirl_model_builtin_names(void);
+typedef struct whirl_model_registry whirl_model_registry;
+
+WHIRL_API whirl_model_registry *whirl_model_registry_alloc(void);
+WHIRL_API void whirl_model_registry_free(whirl_model_registry *reg);
+
+/* Add model m under NAME (letters, digits, '_', '-', '.'; not a path).  The
+ * struct is copied, the data it points to borrowed.  WHIRL_OK, or
+ * WHIRL_EINVAL (m fails whirl_model_check, the name is not usable or
+ * taken), WHIRL_ENOMEM, with the reason in msg[len]. */
+WHIRL_API int whirl_model_registry_add(whirl_model_registry *reg, const char *name,
+                                       const whirl_model *m, char *msg, size_t len);
+
+/* The model registered as NAME, or NULL. */
+WHIRL_API const whirl_model *whirl_model_registry_find(const whirl_model_registry *reg,
+                                                       const char *name);
+
+/* The registered names, in the order they were added: count and i-th. */
+WHIRL_API size_t whirl_model_registry_count(const whirl_model_registry *reg);
+WHIRL_API const char *whirl_model_registry_name(const whirl_model_registry *reg,
+                                                size_t i);
 
 #ifdef __cplusplus
 }

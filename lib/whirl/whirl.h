@@ -9,18 +9,14 @@
 #include <whirl/cont.h>
 #include <whirl/branch.h>
 #include <whirl/equilibrium.h>
-#include <whirl/sfd.h>
 #include <whirl/ode.h>
 #include <whirl/spectrum.h>
 #include <whirl/basins.h>
-#include <whirl/sfd_dynamics.h>
 #include <whirl/floquet.h>
 #include <whirl/hbm.h>
 #include <whirl/colloc.h>
-#include <whirl/sfd_periodic.h>
 #include <whirl/fold.h>
 #include <whirl/hopf.h>
-#include <whirl/sfd_region.h>
 #include <whirl/model.h>
 #include <whirl/runfile.h>
 #endif

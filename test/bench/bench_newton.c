@@ -17,7 +17,7 @@
 #include <string.h>
 #include <time.h>
 
-#include <whirl/whirl.h>
+#include <whirl/rotor.h>
 
 static double now(void) {
   struct timespec t;

@@ -13,8 +13,8 @@
 #include <string.h>
 #include <time.h>
 
-#include <whirl/whirl.h>
-#include <whirl/sfd_region.h>
+#include <whirl/rotor.h>
+#include <whirl/rotor/sfd_region.h>
 
 static double now(void) {
   struct timespec ts;

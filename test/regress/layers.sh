@@ -8,7 +8,8 @@
 #   test/regress/layers.sh [LIBDIR]     (default: $top_srcdir/lib)
 # SPDX-License-Identifier: BSD-3-Clause
 set -u
-lib=${1:-${top_srcdir:-.}/lib}
+top=${1:-${top_srcdir:-.}}
+lib=$top/lib
 n=0
 fails=0
 ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
@@ -16,8 +17,8 @@ ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not o
 rank_of_layer() {
   case $1 in
     util) echo 0 ;; linalg) echo 1 ;; core) echo 2 ;; ode) echo 3 ;;
-    systems) echo 4 ;; analysis) echo 5 ;; run) echo 6 ;; models) echo 7 ;;
-    whirl) echo 8 ;;  # the umbrella header whirl.h
+    systems) echo 4 ;; analysis) echo 5 ;; run) echo 6 ;;
+    whirl) echo 7 ;;  # the umbrella header whirl.h
     *) echo "" ;;
   esac
 }
@@ -31,7 +32,6 @@ layer_of_header() {
     equilibrium.h|hbm.h|colloc.h|fold.h|hopf.h|periodic.h) echo systems ;;
     spectrum.h|basins.h) echo analysis ;;
     runfile.h|model.h|run.h) echo run ;;
-    sfd.h|sfd_dynamics.h|sfd_periodic.h|sfd_region.h) echo models ;;
     whirl.h) echo whirl ;;
     *) echo "" ;;
   esac
@@ -85,6 +85,27 @@ for h in "$lib"/whirl/*.h; do
 done
 [ -z "$misplaced" ]
 ok $? "each public header's implementation is in the header's layer${misplaced:+:$misplaced}"
+
+# the rotor module: public headers only
+inside=""
+nrot=0
+for f in "$top"/rotor/*.c "$top"/rotor/whirl/*.h "$top"/rotor/whirl/rotor/*.h; do
+  [ -f "$f" ] || continue
+  for inc in $(sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*\([<"][^>"]*[>"]\).*/\1/p' "$f"); do
+    nrot=$((nrot + 1))
+    case $inc in
+      \<whirl/rotor/*|\<whirl/rotor.h\>) ;;
+      \<whirl/*) h=${inc#<whirl/}; h=${h%>}
+        [ -f "$lib/whirl/$h" ] || inside="$inside ${f#"$top"/} includes $inc (no public header);" ;;
+      \"*/*|\"../*) inside="$inside ${f#"$top"/} includes $inc;" ;;
+      *) ;;
+    esac
+  done
+  grep -q 'lib/\(core\|linalg\|ode\|systems\|analysis\|run\|util\)/' "$f" &&
+    grep -n '#.*include.*lib/' "$f" > /dev/null && inside="$inside ${f#"$top"/} names lib/ internals;"
+done
+[ -z "$inside" ] && [ $nrot -gt 0 ]
+ok $? "the rotor module includes libwhirl's public headers only ($nrot includes checked)${inside:+:$inside}"
 
 echo "1..$n"
 [ $fails -eq 0 ]

@@ -195,7 +195,8 @@ c 2 "unknown built-in model name" "$F:1: model: ${q}nosuch$q is neither a built-
 c 2 "plug-in path that does not exist" "$F:1: model: cannot open plug-in ${q}(\./)*nosuch\.so$q: No such file" 'model = ./nosuch.so\nICP = [Da]\n'
 c 2 "plug-in name that does not exist" "$F:1: model: cannot open plug-in ${q}(\./)*nosuch\.so$q: No such file" 'model = nosuch.so\nICP = [Da]\n'
 c 2 "plug-in without the symbol" "$F:1: model: plug-in ${q}(\./)*nosym\.so$q does not export the symbol ${q}whirl_model_def$q" 'model = ./nosym.so\nICP = [Da]\n'
-c 2 "plug-in with a wrong ABI number" "$F:1: model: plug-in ${q}(\./)*abi\.so$q was built for model ABI 42, .*needs ABI 1" 'model = ./abi.so\nICP = [Da]\n'
+abi=$(sed -n 's/^#define WHIRL_MODEL_ABI \([0-9]*\).*/\1/p' "$top_srcdir/lib/whirl/model.h")
+c 2 "plug-in with a wrong ABI number" "$F:1: model: plug-in ${q}(\./)*abi\.so$q was built for model ABI $((abi + 41)), .*needs ABI $abi" 'model = ./abi.so\nICP = [Da]\n'
 c 2 "NDIM mismatch" "$F:3: NDIM = 3, but model ${q}ab$q has 2 state components$" "$B"'NDIM = 3\n'
 c 2 "ICP naming an unknown parameter" "$F:2: ICP: ${q}Foo$q is not a parameter of model ${q}ab$q \(Da, B, beta\)$" 'model = ./ab.so\nICP = [Foo]\n'
 c 2 "ICP index out of range" "$F:2: ICP: ${q}4$q is not a parameter" 'model = ./ab.so\nICP = [4]\n'

@@ -21,8 +21,8 @@
 #include <whirl/cont.h>
 #include <whirl/linsol.h>
 #include <whirl/ode.h>
-#include <whirl/sfd.h>
-#include <whirl/sfd_dynamics.h>
+#include <whirl/rotor/sfd.h>
+#include <whirl/rotor/sfd_dynamics.h>
 
 #include "../tap.h"
 

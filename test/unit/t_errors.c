@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include <whirl/whirl.h>
+#include <whirl/rotor.h>
 
 #include "../tap.h"
 

@@ -24,8 +24,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <whirl/whirl.h>
-#include <whirl/sfd_region.h>
+#include <whirl/rotor.h>
+#include <whirl/rotor/sfd_region.h>
 
 #include "../tap.h"
 

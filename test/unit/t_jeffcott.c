@@ -21,6 +21,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <whirl/rotor.h>
+
 #include "../tap.h"
 
 #define PI 3.14159265358979323846
@@ -31,7 +33,7 @@ static const whirl_problem *jeff = &whirl_model_def.problem;
  * Closed form of the synchronous circular orbits (doc/jeffcott-model.md §5).
  * Journal w_j = W_j e^{iΩτ}, |W_j| = ε; disc w_d = W_d e^{iΩτ}.  The π-film
  * force on a circular orbit is (a + ib) Ω W_j / ε with a = −4λε²/s²,
- * b = −πλε/s^{3/2}, s = 1 − ε² (whirl/sfd.h); `linear` replaces it by the
+ * b = −πλε/s^{3/2}, s = 1 − ε² (whirl/rotor/sfd.h); `linear` replaces it by the
  * ε → 0 value −iπλΩ W_j (force −πλ v). */
 static double complex circ_Dd(const double *p) {
   return 0.5 * p[J_KAPPA] - p[J_ALPHA] * p[J_OMEGA] * p[J_OMEGA] +

@@ -1,5 +1,5 @@
-/* test/unit/t_sfd.c — the SFD rotor model (lib/models/sfd.c) and the
- * circular-orbit solver (lib/models/sfd_circular.c): force against the polar
+/* test/unit/t_sfd.c — the SFD rotor model (rotor/sfd.c) and the
+ * circular-orbit solver (rotor/sfd_circular.c): force against the polar
  * form of eq. 8, analytic against finite-difference Jacobians, frame
  * equivalence, contact and argument errors, roots of eq. 15 as equilibria of
  * both frames, the degree drop at ε = δ, and the Ω-folds of Table 1.
@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include <whirl/model.h>
-#include <whirl/sfd.h>
+#include <whirl/rotor.h>
 
 #include "../tap.h"
 
@@ -859,12 +859,23 @@ static void test_fe_domain(void) {
   ok(fx->rhs(0.0, x, p, f, NULL) == WHIRL_OK, "rhs with FE = 0.999: fine");
   char msg[256];
   p[WHIRL_SFD_FE] = 1.5;
-  ok(whirl_model_check_params(whirl_model_builtin("sfd"), p, msg, sizeof msg) == WHIRL_EINVAL &&
+  whirl_model_registry *reg = whirl_model_registry_alloc();
+  const int rc = reg ? whirl_rotor_register_models(reg, msg, sizeof msg) : WHIRL_ENOMEM;
+  ok(rc == WHIRL_OK && whirl_model_registry_count(reg) == 2 &&
+         !strcmp(whirl_model_registry_name(reg, 1), "sfd-rotating"),
+     "the rotor module registers its models (%zu: %s, %s)", whirl_model_registry_count(reg),
+     whirl_model_registry_name(reg, 0), whirl_model_registry_name(reg, 1));
+  const whirl_model *sfd = whirl_model_registry_find(reg, "sfd");
+  ok(whirl_model_check_params(sfd, p, msg, sizeof msg) == WHIRL_EINVAL &&
          strstr(msg, "FE must be in (-1, 1)"),
-     "built-in model 'sfd' refuses FE = 1.5: %s", msg);
+     "registered model 'sfd' refuses FE = 1.5: %s", msg);
   p[WHIRL_SFD_FE] = 0.5;
-  ok(whirl_model_check_params(whirl_model_builtin("sfd"), p, msg, sizeof msg) == WHIRL_OK,
+  ok(whirl_model_check_params(sfd, p, msg, sizeof msg) == WHIRL_OK,
      "and accepts FE = 0.5");
+  ok(whirl_rotor_register_models(reg, msg, sizeof msg) == WHIRL_EINVAL &&
+         strstr(msg, "registered already"),
+     "a name is registered once: %s", msg);
+  whirl_model_registry_free(reg);
 }
 
 int main(void) {

@@ -1,4 +1,4 @@
-/* lib/models/sfd_response.c — the complete synchronous response of the SFD
+/* rotor/sfd_response.c — the complete synchronous response of the SFD
  * rotor: every branch of circular orbits in omega_min <= Ω <= omega_max.
  * A continuation started at small Ω cannot reach an isolated branch, so the
  * seeds come from an independent source: every real root Ω of the paper's
@@ -14,7 +14,7 @@
 
 #include <whirl/branch.h>
 #include <whirl/equilibrium.h>
-#include <whirl/sfd.h>
+#include <whirl/rotor/sfd.h>
 
 void whirl_sfd_response_options_default(whirl_sfd_response_options *o) {
   o->omega_min = 0.01;

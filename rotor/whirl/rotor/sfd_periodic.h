@@ -10,7 +10,7 @@
 #define WHIRL_SFD_PERIODIC_H
 
 #include <stddef.h>
-#include <whirl/sfd.h>
+#include <whirl/rotor/sfd.h>
 
 #ifdef __cplusplus
 extern "C" {

@@ -1,4 +1,4 @@
-/* lib/models/sfd_periodic.c — periodic responses of the SFD rotor by the
+/* rotor/sfd_periodic.c — periodic responses of the SFD rotor by the
  * generic periodic-orbit constructors (lib/systems/hbm.c, colloc.c) and the
  * generic continuation core: synchronous orbits in the fixed frame (F_E = 0
  * as a check of eq. 15, F_E != 0 for non-circular orbits) and the
@@ -17,8 +17,8 @@
 #include <whirl/colloc.h>
 #include <whirl/hbm.h>
 #include <whirl/ode.h>
-#include <whirl/sfd_dynamics.h>
-#include <whirl/sfd_periodic.h>
+#include <whirl/rotor/sfd_dynamics.h>
+#include <whirl/rotor/sfd_periodic.h>
 
 const char *whirl_sfd_method_name(int method) {
   switch (method) {

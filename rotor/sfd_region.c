@@ -1,4 +1,4 @@
-/* lib/models/sfd_region.c — the isola region of the SFD rotor (paper §5.4,
+/* rotor/sfd_region.c — the isola region of the SFD rotor (paper §5.4,
  * Fig. 18) by two-parameter continuation: the merge curve (fold system of
  * the rotating-frame equilibria with the MG condition, continued in lambda)
  * and the fold locus at Omega = W (fold system with delta freed and Omega
@@ -13,8 +13,8 @@
 #include <whirl/cont.h>
 #include <whirl/equilibrium.h>
 #include <whirl/fold.h>
-#include <whirl/sfd.h>
-#include <whirl/sfd_region.h>
+#include <whirl/rotor/sfd.h>
+#include <whirl/rotor/sfd_region.h>
 
 /* ------------------------------------------------------------ curves */
 

@@ -1,4 +1,4 @@
-/* lib/models/sfd_dynamics.c — the attractors of the SFD rotor at one speed
+/* rotor/sfd_dynamics.c — the attractors of the SFD rotor at one speed
  * (circular orbits from eq. 15 with Lyapunov certificates, the
  * nonsynchronous limit cycle of the rotating frame) and the initial states
  * of the paper's basins (§5.3).  See whirl/sfd_dynamics.h for the method.
@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include <whirl/linsol.h>
-#include <whirl/sfd_dynamics.h>
+#include <whirl/rotor/sfd_dynamics.h>
 
 #define TWO_PI 6.283185307179586476925286766559
 

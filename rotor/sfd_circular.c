@@ -1,4 +1,4 @@
-/* lib/models/sfd_circular.c — synchronous circular centred orbits of the SFD
+/* rotor/sfd_circular.c — synchronous circular centred orbits of the SFD
  * rotor (paper §4.1): the quartic in Ω of eq. 15, its real roots (companion
  * matrix eigenvalues by LAPACK dgeev, polished by Newton), the phase of
  * eqs. 16–17, the rotating-frame state, and Ω-folds (G = ∂G/∂ε = 0).
@@ -9,7 +9,7 @@
 #include <stddef.h>
 
 #include <whirl/linsol.h>
-#include <whirl/sfd.h>
+#include <whirl/rotor/sfd.h>
 
 #define SFD_PI 3.14159265358979323846
 

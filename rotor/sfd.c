@@ -1,4 +1,4 @@
-/* lib/models/sfd.c — the rigid rotor on two short squeeze-film dampers
+/* rotor/sfd.c — the rigid rotor on two short squeeze-film dampers
  * (paper eqs. 1–14, dimensionless as in eqs. 9–14): the π-film force of
  * eq. 8 in a Cartesian form that is exact at ε = 0, its analytic Jacobians,
  * and the fixed-frame and rotating-frame models with analytic jac_x, jac_p.
@@ -6,7 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include <whirl/sfd.h>
+#include <whirl/rotor/sfd.h>
 
 #define SFD_PI 3.14159265358979323846
 

@@ -37,7 +37,7 @@
 
 #include <stddef.h>
 #include <whirl/basins.h>
-#include <whirl/sfd.h>
+#include <whirl/rotor/sfd.h>
 
 #ifdef __cplusplus
 extern "C" {

@@ -1,0 +1,33 @@
+/* whirl/rotor.h — the rotor module (libwhirl-rotor, pkg-config whirl-rotor):
+ * models of nonlinear rotors built on the generic library (whirl/whirl.h)
+ * through its public API only.  Today: the rigid rotor on two short
+ * squeeze-film dampers of the paper (sfd.h: the force, both frames, eq. 15;
+ * sfd_dynamics.h: time-domain attractors and basins; sfd_periodic.h:
+ * periodic responses and the nonsynchronous branch; sfd_region.h: the isola
+ * merge curve and region of Fig. 18), registered for `whirl run` by
+ * whirl_rotor_register_models.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_ROTOR_H
+#define WHIRL_ROTOR_H
+
+#include <whirl/whirl.h>
+#include <whirl/rotor/sfd.h>
+#include <whirl/rotor/sfd_dynamics.h>
+#include <whirl/rotor/sfd_periodic.h>
+#include <whirl/rotor/sfd_region.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Add the rotor module's models to a registry of `whirl run` models:
+ * "sfd" (the SFD rigid rotor in the fixed frame, forced at Omega) and
+ * "sfd-rotating" (the same in the rotating frame, where circular orbits are
+ * equilibria).  WHIRL_OK, or an error status with the reason in msg. */
+WHIRL_API int whirl_rotor_register_models(whirl_model_registry *reg, char *msg,
+                                          size_t len);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
