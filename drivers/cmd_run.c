@@ -772,8 +772,8 @@ int cmd_run(int argc, char **argv) {
   if (R.s->irs > 0 || R.s->irs_type[0]) {
     char msg[1024];
     /* S is relative to the current directory, like the output directory */
-    if (run_solution_find(R.s->s, R.prob.name, R.npar, R.s->irs, R.s->irs_type,
-                          &O.sol, msg, sizeof msg)) {
+    if (run_solution_find(&R, R.s->s, R.s->irs, R.s->irs_type, &O.sol, msg,
+                          sizeof msg)) {
       run_fail(&R, WHIRL_RK_IRS, "IRS: %s", msg);
       goto out;
     }

@@ -32,7 +32,17 @@ typedef struct run_solution {
   double *mesh;     /* colloc: ntst + 1 */
   int nhb;          /* hbm: harmonics */
   int stable;
+  size_t nstate;    /* state components: NX (eq), or NX = M nstate + aut
+                       for orbits (M nodes or coefficients) */
+  int aut;          /* orbits: 1 if the period is the last unknown */
 } run_solution;
+
+/* The model a stored solution must fit (0 / NULL / -1: anything). */
+typedef struct run_shape {
+  const char *model; /* name */
+  size_t n, npar;    /* state components, parameters */
+  int forced;        /* 1 forced (no period unknown), 0 autonomous */
+} run_shape;
 
 typedef struct run_ctx {
   whirl_runfile *rf;
@@ -70,11 +80,16 @@ void run_unload_model(run_ctx *R);
 /* run_solution.c */
 void run_solution_free(run_solution *s);
 int run_solution_write(FILE *f, const run_solution *s);
-/* Find the solution of label (or the count-th of type ty if ty[0]) in
- * DIR/solutions; 0, or -1 with a message in msg. */
-int run_solution_find(const char *dir, const char *model, size_t npar,
-                      int label, const char *ty, run_solution *out,
-                      char *msg, size_t len);
+/* Read the solution of label (or the count-th of type ty if ty[0]) from a
+ * solutions file f called path, checking every block read up to it (sizes,
+ * numbers) and the one found against want; 0, or -1 with a message
+ * ("PATH:LINE: ..." or "label 2 of PATH has ...") in msg. */
+int run_solution_read(FILE *f, const char *path, const run_shape *want,
+                      int label, const char *ty, run_solution *out, char *msg,
+                      size_t len);
+/* The same from DIR/solutions, for the model of R. */
+int run_solution_find(const run_ctx *R, const char *dir, int label,
+                      const char *ty, run_solution *out, char *msg, size_t len);
 
 /* run_table.c */
 int run_table_header(run_ctx *R, run_kind kind, int icp, int q);
