@@ -78,7 +78,10 @@ static int bad(reader *r, const char *fmt, ...) {
   va_start(ap, fmt);
   vsnprintf(m, sizeof m, fmt, ap);
   va_end(ap);
-  snprintf(r->msg, r->len, "%s:%d: %s", r->path, r->line, m);
+  if (r->line > 0)
+    snprintf(r->msg, r->len, "%s:%d: %s", r->path, r->line, m);
+  else /* nothing read: no line to blame */
+    snprintf(r->msg, r->len, "%s: %s", r->path, m);
   return -1;
 }
 
@@ -272,7 +275,8 @@ static int rd_header(reader *r, char *model, size_t cap, size_t *npar) {
   const size_t hl = sizeof head - 1;
   int rc = rd_line(r);
   if (rc < 0) return -1;
-  if (rc || strncmp(r->buf, head, hl)) return bad(r, "not a whirl solutions file");
+  if (rc) return bad(r, "the file is empty (not a whirl solutions file)");
+  if (strncmp(r->buf, head, hl)) return bad(r, "not a whirl solutions file");
   char *comma = NULL, *end;
   for (char *q = strstr(r->buf + hl, ", npar "); q; q = strstr(q + 1, ", npar "))
     comma = q;
