@@ -705,6 +705,17 @@ static int run_continuation(run_ctx *R, run_objects *O) {
 
 /* ---- the command -------------------------------------------------------- */
 
+/* "--NMX 5": an override written with a blank for '=' would take its value
+ * for a second run file; 1 (message printed) if argv[i] is one. */
+static int override_without_eq(int argc, char **argv, int i) {
+  const char *a = argv[i];
+  if (strncmp(a, "--", 2) || strchr(a, '=') || !strcmp(a, "--quiet") ||
+      i + 1 >= argc || !strncmp(argv[i + 1], "--", 2))
+    return 0;
+  fprintf(stderr, "whirl run: %s needs '=': write %s=%s\n", a, a, argv[i + 1]);
+  return 1;
+}
+
 int cmd_run(int argc, char **argv) {
   const char *file = NULL;
   int quiet = 0;
@@ -717,6 +728,7 @@ int cmd_run(int argc, char **argv) {
       quiet = 1;
       continue;
     }
+    if (override_without_eq(argc, argv, i)) return 2;
     if (argv[i][0] == '-' && argv[i][1] == '-') continue; /* overrides below */
     if (file) {
       fprintf(stderr, "whirl run: more than one run file ('%s' and '%s'); "

@@ -44,6 +44,10 @@ typedef struct run_shape {
   int forced;        /* 1 forced (no period unknown), 0 autonomous */
 } run_shape;
 
+/* What PLOT (the y axis of the picture) names. */
+enum { RUN_PLOT_DEFAULT, RUN_PLOT_PAR, RUN_PLOT_PERIOD, RUN_PLOT_L2,
+       RUN_PLOT_STATE };
+
 typedef struct run_ctx {
   whirl_runfile *rf;
   const whirl_run_settings *s;
@@ -59,6 +63,8 @@ typedef struct run_ctx {
   FILE *log, *table, *sols;
   int label, branch;
   int quiet;
+  int plot_kind, plot_index; /* PLOT resolved: RUN_PLOT_*, parameter or
+                               state index */
   int plot_x, plot_y;      /* 1-based columns of the picture's axes */
   char plot_x_name[80], plot_y_name[80];
   int seen_stab[3];         /* rows with STAB -1, 0, 1 */

@@ -84,6 +84,24 @@ rc=$?
 ok $rc "control: 'model = ab.so' with the run file in the current directory (whirl run bare.whirl)"
 [ $rc -eq 0 ] || diag "$tmp/stderr"
 rm -rf bare.out bare.whirl
+# numbers: a denormal is a number (the nearest double); blanks after '='
+# are fine in an override as in the file; PLOT takes a parameter, a state
+# component, MAX of one, L2-NORM (the picture's y label says which)
+ctl() { # OVERRIDE YLABEL
+  rm -rf ctl.out
+  "$WHIRL" run ab-1.whirl --quiet "$1" --OUT=ctl.out > "$tmp/stdout" 2> "$tmp/stderr" &&
+    grep -q "^set ylabel '$2' " ctl.out/diagram.gp
+  rc=$?
+  ok $rc "control: whirl run ab-1.whirl $1 runs, exit 0, y axis $2"
+  [ $rc -eq 0 ] || diag "$tmp/stderr"
+  rm -rf ctl.out
+}
+ctl --DSMIN=1e-310 L2-NORM
+ctl '--NMX= 5' L2-NORM
+ctl --PLOT=beta beta
+ctl --PLOT=u2 u2
+ctl '--PLOT=MAX u1' u1
+ctl --PLOT=l2-norm L2-NORM
 # a directory that is not a whirl output
 mkdir notwhirl.out && echo "not whirl's" > notwhirl.out/keep.txt
 : > plain.out
@@ -247,6 +265,18 @@ c 2 "ISW out of range" "$F:3: ISW = 3: must be 1" "$B"'ISW = 3\n'
 c 2 "IPS = 4 unsupported" "$F:3: IPS = 4 is not supported" "$B"'IPS = 4\n'
 c 2 "unknown METHOD" "$F:3: METHOD: ${q}rk4$q is not a method" "$B"'METHOD = rk4\n'
 c 2 "UZR not a dictionary" "$F:3: UZR: expected a dictionary" "$B"'UZR = 0.1\n'
+c 2 "JAC = -1 (AUTO has 0 and 1)" "$F:3: JAC = -1: must be 0 \(finite differences\) or 1" "$B"'JAC = -1\n'
+c 2 "dictionary key twice (PAR)" "$F:3: PAR: key ${q}B$q given twice$" "$B"'PAR = {B: 14, B: 15}\n'
+c 2 "dictionary key twice (UZR)" "$F:3: UZR: key ${q}Da$q given twice$" "$B"'UZR = {Da: 0.1, Da: 0.2}\n'
+c 2 "dictionary key twice (an ignored AUTO key)" "$F:3: THL: key ${q}11$q given twice$" "$B"'THL = {11: 0, 11: 1}\n'
+c 2 "one parameter by name and index" "$F:3: PAR: ${q}B$q and ${q}2$q are the same parameter$" "$B"'PAR = {B: 14, 2: 15}\n'
+c 2 "one component by name and U(k)" "$F:3: U: ${q}u1$q and ${q}U\(1\)$q are the same state component$" "$B"'U = {u1: 0, U(1): 1}\n'
+c 2 "blank in a quoted label" "$F:3: IRS: ${q} 2$q is not a label" "$B""IRS = ' 2'\nS = ab-1.out\n"
+c 2 "blank in a type count" "$F:3: IRS: ${q}HB 1$q is not a label" "$B""IRS = 'HB 1'\nS = ab-1.out\n"
+c 2 "blank in a quoted range bound" "$F:4: BASIN_AXES: a range bound is not a finite number$" "$B""IPS = basins\nBASIN_AXES = {u1: [' 0', 1], u2: [0, 1]}\nBASIN_ATTRACTORS = [1]\nS = ab-1.out\n"
+c 2 "hexadecimal number" "$F:3: DS: ${q}0x1p-3$q is not a finite number$" "$B"'DS = 0x1p-3\n'
+c 2 "PLOT naming nothing of the model" "$F:3: PLOT: ${q}MAX xx$q is neither a parameter \(Da, B, beta\), PERIOD, L2-NORM, a state component nor MAX of one \(u1, u2\) of model ${q}ab$q$" "$B"'PLOT = MAX xx\n'
+c 2 "PLOT = PERIOD for equilibria" "$F:3: PLOT = PERIOD: only periodic orbits \(IPS = 2\) have a period$" "$B"'PLOT = PERIOD\n'
 # syntax
 c 2 "unterminated quote (string key)" "$F:3: OUT: unterminated quoted string$" "$B"'OUT = "abc\n'
 c 2 "unterminated quote (in a dictionary)" "$F:3: PAR: unterminated quoted string$" "$B""PAR = {B: 'x}\n"
@@ -326,6 +356,8 @@ c 2 "bad override value (--DS=abc)" "^whirl run: command line \(--DS=abc\): DS: 
 c 2 "override with an unknown key" "^whirl run: command line \(--bogus=1\): unknown key ${q}bogus$q" "$B" --bogus=1
 c 2 "override key typo" "^whirl run: command line \(--DSMX=0\.1\): unknown key ${q}DSMX$q \(did you mean DSMAX\?\)$" "$B" --DSMX=0.1
 c 2 "override without '='" "^whirl run: command line \(--DS\): expected --KEY=value$" "$B" --DS
+c 2 "override with a blank for '=' (--NMX 5)" "^whirl run: --NMX needs ${q}=$q: write --NMX=5$" "$B" --NMX 5
+c 2 "override with a blank for '=' (--DS -0.01)" "^whirl run: --DS needs ${q}=$q: write --DS=-0.01$" "$B" --DS -0.01
 c 2 "override naming an unknown parameter" "^whirl run: command line \(--ICP=\[Foo\]\): ICP: ${q}Foo$q is not a parameter" "$B" '--ICP=[Foo]'
 c 2 "override with an unknown model" "^whirl run: command line \(--model=nosuch\): model: " "$B" --model=nosuch
 c 2 "override NDIM mismatch" "^whirl run: command line \(--NDIM=3\): NDIM = 3, but" "$B" --NDIM=3
