@@ -4,8 +4,9 @@
  *
  * Each input is a solutions file called fuzz.sol, read through fmemopen
  * (the reader takes a stream).  It is asked for labels 1, 2 and 3 and for
- * the first HB with no model to fit, and for label 2 as the model 'ab'
- * (2 states, 3 parameters, autonomous) would ask.
+ * the first HB with no model to fit, for label 2 as the model 'ab' (2
+ * states, 3 parameters, autonomous) would ask, and for label 1 as 'ab' with
+ * a third state and a forced 'ab' would.
  *
  * Besides what ASan/UBSan catch (a read past a vector, a leak, overflowing
  * arithmetic), the target aborts (a finding) when the reader breaks its
@@ -14,7 +15,8 @@
  *     its stated end (par[npar], x[nx], tan[nx + 1], mesh[ntst + 1]), every
  *     value is finite, NX = nstate (eq) or (NTST x NCOL + 1 | 2 NHB + 1) x
  *     nstate + aut, the mesh increases from 0 to 1, TY is two capitals, the
- *     label or type asked for, and for 'ab' 2 states, 3 parameters, aut 1;
+ *     label or type asked for, and the state count, parameter count and
+ *     kind of model asked for;
  *   - a solution that does not survive run_solution_write and a second
  *     read bit for bit;
  *   - an error message that is empty, not one line of printable text, or
@@ -47,6 +49,8 @@
 
 static const run_shape any = {NULL, 0, 0, -1};
 static const run_shape ab = {"ab", 2, 3, 0};
+static const run_shape ab3 = {"ab", 3, 3, 0}; /* a state more */
+static const run_shape abf = {"ab", 2, 3, 1}; /* forced */
 
 /* Every value of v[n], finite (reading them all lets ASan see the end). */
 static void check_vec(const double *v, size_t n) {
@@ -186,5 +190,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   for (int label = 1; label <= 3; label++) ask(data, size, nlines, &any, label, NULL);
   ask(data, size, nlines, &any, 1, "HB");
   ask(data, size, nlines, &ab, 2, NULL);
+  ask(data, size, nlines, &ab3, 1, NULL);
+  ask(data, size, nlines, &abf, 1, NULL);
   return 0;
 }
