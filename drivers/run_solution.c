@@ -179,10 +179,12 @@ static int rd_lab(reader *r, size_t npar, run_solution *s) {
   s->label = (int)lab, s->br = (int)br, s->pt = (int)pt;
   s->icp = (int)icp - 1, s->icp2 = (int)icp2 - 1;
   s->nx = (size_t)nx, s->stable = (int)stab, s->npar = npar;
-  if (strlen(ty) != 2 || !isupper((unsigned char)ty[0]) ||
-      !isupper((unsigned char)ty[1]))
-    return bad(r, "label %d: TY '%s' is not a point type (two capital "
-               "letters)", s->label, shown(ty, b));
+  /* two characters: AUTO's names (HB, LP, ...), or "??" for a type the
+   * writer did not know */
+  if (strlen(ty) != 2 || !isgraph((unsigned char)ty[0]) ||
+      !isgraph((unsigned char)ty[1]))
+    return bad(r, "label %d: TY '%s' is not a point type (two characters, "
+               "such as HB)", s->label, shown(ty, b));
   memcpy(s->ty, ty, 3);
   if (icp2 == icp) return bad(r, "label %d: ICP2 equals ICP", s->label);
   if (!strcmp(kind, "eq")) {
