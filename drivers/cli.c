@@ -10,6 +10,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <whirl/runfile.h>
+
 #include "cli.h"
 
 /* Length of a source location " (name.c:123)" at s, or 0. */
@@ -47,20 +49,15 @@ void cli_error(const char *cmd, const char *fmt, ...) {
   fprintf(stderr, "whirl %s: %s\n", cmd, msg);
 }
 
+/* Numbers as run files write them (whirl_run_number): no blanks, no
+ * hexadecimal; an underflow such as 1e-310 is the nearest double. */
 int cli_double(const char *cmd, const char *opt, const char *text, double *v) {
-  char *end = NULL;
-  errno = 0;
-  double d = strtod(text, &end);
-  if (end == text || *end != '\0' || errno == ERANGE) {
-    cli_error(cmd, "%s expects a number, got '%s'", opt, text);
-    return -1;
-  }
-  if (!isfinite(d)) {
+  int rc = whirl_run_number(text, v);
+  if (rc == WHIRL_EDOMAIN)
     cli_error(cmd, "%s must be a finite number, got '%s'", opt, text);
-    return -1;
-  }
-  *v = d;
-  return 0;
+  else if (rc)
+    cli_error(cmd, "%s expects a number, got '%s'", opt, text);
+  return rc ? -1 : 0;
 }
 
 const char *cli_value(int argc, char **argv, int *i, const char *name,
@@ -114,7 +111,7 @@ int cli_parse(const char *cmd, int argc, char **argv, const cli_opt *opts,
         case CLI_INT: {
           errno = 0;
           long long n = strtoll(v, &end, 10);
-          if (end == v || *end || errno == ERANGE ||
+          if (end == v || *end || errno == ERANGE || isspace((unsigned char)v[0]) ||
               (o->kind == CLI_SIZE && n < 0) ||
               (o->kind == CLI_INT && (n < -2147483647LL || n > 2147483647LL))) {
             cli_error(cmd, "%s expects %s integer, got '%s'", o->name,

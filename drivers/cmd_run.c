@@ -696,6 +696,17 @@ static int finish_output(run_ctx *R) {
   return pic_failed;
 }
 
+/* "--NMX 5": an override written with a blank for '=' would take its value
+ * for a second run file; 1 (message printed) if argv[i] is one. */
+static int override_without_eq(int argc, char **argv, int i) {
+  const char *a = argv[i];
+  if (strncmp(a, "--", 2) || strchr(a, '=') || !strcmp(a, "--quiet") ||
+      i + 1 >= argc || !strncmp(argv[i + 1], "--", 2))
+    return 0;
+  fprintf(stderr, "whirl run: %s needs '=': write %s=%s\n", a, a, argv[i + 1]);
+  return 1;
+}
+
 int cmd_run(int argc, char **argv) {
   const char *file = NULL;
   int quiet = 0;
@@ -708,6 +719,7 @@ int cmd_run(int argc, char **argv) {
       quiet = 1;
       continue;
     }
+    if (override_without_eq(argc, argv, i)) return 2;
     if (argv[i][0] == '-' && argv[i][1] == '-') continue; /* overrides below */
     if (file) {
       fprintf(stderr, "whirl run: more than one run file ('%s' and '%s'); "
@@ -763,8 +775,8 @@ int cmd_run(int argc, char **argv) {
   if (R.s->irs > 0 || R.s->irs_type[0]) {
     char msg[1024];
     /* S is relative to the current directory, like the output directory */
-    if (run_solution_find(R.s->s, R.prob.name, R.npar, R.s->irs, R.s->irs_type,
-                          &O.sol, msg, sizeof msg)) {
+    if (run_solution_find(&R, R.s->s, R.s->irs, R.s->irs_type, &O.sol, msg,
+                          sizeof msg)) {
       run_fail(&R, WHIRL_RK_IRS, "IRS: %s", msg);
       goto out;
     }

@@ -8,7 +8,7 @@
 
 #include <stdio.h>
 
-#include <whirl/rotor.h>
+#include <whirl/whirl.h>
 
 #include "outdir.h"
 
@@ -34,7 +34,21 @@ typedef struct run_solution {
   double *mesh;     /* colloc: ntst + 1 */
   int nhb;          /* hbm: harmonics */
   int stable;
+  size_t nstate;    /* state components: NX (eq), or NX = M nstate + aut
+                       for orbits (M nodes or coefficients) */
+  int aut;          /* orbits: 1 if the period is the last unknown */
 } run_solution;
+
+/* The model a stored solution must fit (0 / NULL / -1: anything). */
+typedef struct run_shape {
+  const char *model; /* name */
+  size_t n, npar;    /* state components, parameters */
+  int forced;        /* 1 forced (no period unknown), 0 autonomous */
+} run_shape;
+
+/* What PLOT (the y axis of the picture) names. */
+enum { RUN_PLOT_DEFAULT, RUN_PLOT_PAR, RUN_PLOT_PERIOD, RUN_PLOT_L2,
+       RUN_PLOT_STATE };
 
 typedef struct run_ctx {
   whirl_runfile *rf;
@@ -56,6 +70,8 @@ typedef struct run_ctx {
                               convergence, a persisting model domain error):
                               the output is kept, the exit status is 1 */
   int quiet;
+  int plot_kind, plot_index; /* PLOT resolved: RUN_PLOT_*, parameter or
+                               state index */
   int plot_x, plot_y;      /* 1-based columns of the picture's axes */
   char plot_x_name[80], plot_y_name[80];
   int seen_stab[3];         /* rows with STAB -1, 0, 1 */
@@ -77,11 +93,16 @@ void run_unload_model(run_ctx *R);
 /* run_solution.c */
 void run_solution_free(run_solution *s);
 int run_solution_write(FILE *f, const run_solution *s);
-/* Find the solution of label (or the count-th of type ty if ty[0]) in
- * DIR/solutions; 0, or -1 with a message in msg. */
-int run_solution_find(const char *dir, const char *model, size_t npar,
-                      int label, const char *ty, run_solution *out,
-                      char *msg, size_t len);
+/* Read the solution of label (or the count-th of type ty if ty[0]) from a
+ * solutions file f called path, checking every block read up to it (sizes,
+ * numbers) and the one found against want; 0, or -1 with a message
+ * ("PATH:LINE: ..." or "label 2 of PATH has ...") in msg. */
+int run_solution_read(FILE *f, const char *path, const run_shape *want,
+                      int label, const char *ty, run_solution *out, char *msg,
+                      size_t len);
+/* The same from DIR/solutions, for the model of R. */
+int run_solution_find(const run_ctx *R, const char *dir, int label,
+                      const char *ty, run_solution *out, char *msg, size_t len);
 
 /* run_table.c */
 int run_table_header(run_ctx *R, run_kind kind, int icp, int q);

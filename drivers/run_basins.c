@@ -100,8 +100,7 @@ int run_basins(run_ctx *R) {
   for (size_t a = 0; a < na; a++) {
     run_solution so;
     char msg[1024];
-    if (run_solution_find(s->s, R->prob.name, R->npar, s->attractors[a], "",
-                          &so, msg, sizeof msg)) {
+    if (run_solution_find(R, s->s, s->attractors[a], "", &so, msg, sizeof msg)) {
       run_fail(R, WHIRL_RK_BASIN_ATTRACTORS, "BASIN_ATTRACTORS: %s", msg);
       rc = -2;
       goto done;

@@ -15,6 +15,8 @@
 #include <string.h>
 #include <strings.h>
 
+#include <whirl/rotor.h>
+
 #include "run.h"
 
 #ifdef __GLIBC__
@@ -211,6 +213,63 @@ static const char *ref_text(const whirl_run_ref *r, char *buf, size_t len) {
   return buf;
 }
 
+/* PLOT: a parameter, PERIOD (orbits), L2-NORM, a state component or "MAX
+ * component", into R->plot_kind and R->plot_index; 0 or -1 (message). */
+static int resolve_plot(run_ctx *R) {
+  const char *p = R->s->plot;
+  R->plot_kind = RUN_PLOT_DEFAULT;
+  if (!p[0]) return 0;
+  if (!strcasecmp(p, "L2-NORM")) {
+    R->plot_kind = RUN_PLOT_L2;
+    return 0;
+  }
+  if (!strcasecmp(p, "PERIOD")) {
+    if (R->s->ips != WHIRL_IPS_PERIODIC) {
+      run_fail(R, WHIRL_RK_PLOT, "PLOT = %s: only periodic orbits (IPS = 2) "
+               "have a period", p);
+      return -1;
+    }
+    R->plot_kind = RUN_PLOT_PERIOD;
+    return 0;
+  }
+  const int max = !strncasecmp(p, "MAX ", 4);
+  whirl_run_ref r;
+  memset(&r, 0, sizeof r);
+  snprintf(r.name, sizeof r.name, "%s", max ? p + 4 + strspn(p + 4, " ") : p);
+  int k = max ? -1 : run_par_index(R, &r);
+  if (k >= 0) {
+    R->plot_kind = RUN_PLOT_PAR;
+  } else if ((k = run_state_index(R, &r)) >= 0) {
+    R->plot_kind = RUN_PLOT_STATE;
+  } else {
+    char pl[512], xl[512];
+    list_names(R->pnames, R->npar, pl, sizeof pl);
+    list_names(R->xnames, R->n, xl, sizeof xl);
+    run_fail(R, WHIRL_RK_PLOT, "PLOT: '%s' is neither a parameter (%s), "
+             "PERIOD, L2-NORM, a state component nor MAX of one (%s) of model "
+             "'%s'", p, pl, xl, R->prob.name);
+    return -1;
+  }
+  R->plot_index = k;
+  return 0;
+}
+
+/* Two entries of PAR (or U) that name the same parameter (component), as
+ * {B: 1, 2: 3} or {B: 1, PAR(2): 3} do; 0 or -1 (message). */
+static int same_twice(run_ctx *R, whirl_run_key key, const whirl_run_value *v,
+                      size_t n, int (*index)(run_ctx *, const whirl_run_ref *)) {
+  char a[80], b[80];
+  for (size_t i = 1; i < n; i++)
+    for (size_t j = 0; j < i; j++)
+      if (index(R, &v[i].ref) >= 0 && index(R, &v[i].ref) == index(R, &v[j].ref)) {
+        run_fail(R, key, "%s: '%s' and '%s' are the same %s", whirl_run_key_name(key),
+                 ref_text(&v[j].ref, a, sizeof a), ref_text(&v[i].ref, b, sizeof b),
+                 key == WHIRL_RK_PAR ? "parameter" : "state component");
+        return -1;
+      }
+  return 0;
+}
+
 int run_resolve(run_ctx *R) {
   const whirl_run_settings *s = R->s;
   const whirl_model *m = R->model;
@@ -298,6 +357,7 @@ int run_resolve(run_ctx *R) {
     }
     R->par[k] = s->par[i].value;
   }
+  if (same_twice(R, WHIRL_RK_PAR, s->par, s->npar, run_par_index)) return -1;
   list_names(R->xnames, R->n, list, sizeof list);
   for (size_t i = 0; i < s->nu; i++) {
     int k = run_state_index(R, &s->u[i].ref);
@@ -308,6 +368,7 @@ int run_resolve(run_ctx *R) {
     }
     R->u[k] = s->u[i].value;
   }
+  if (same_twice(R, WHIRL_RK_U, s->u, s->nu, run_state_index)) return -1;
   char why[256];
   if (whirl_model_check_params(m, R->par, why, sizeof why) != WHIRL_OK) {
     run_fail(R, WHIRL_RK_PAR, "PAR: model '%s': %s", R->prob.name, why);
@@ -326,5 +387,5 @@ int run_resolve(run_ctx *R) {
                ref_text(&s->axes[i].ref, t, sizeof t), R->prob.name, list);
       return -1;
     }
-  return 0;
+  return resolve_plot(R);
 }

@@ -10,8 +10,11 @@
  *   MESH ...           (collocation: NTST + 1 mesh points; NTST, NCOL on LAB)
  *   END
  * SPDX-License-Identifier: BSD-3-Clause */
+#include <ctype.h>
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -52,6 +55,12 @@ int run_solution_write(FILE *f, const run_solution *s) {
 
 /* ---- reading ------------------------------------------------------------ */
 
+/* The file is read line by line and every block is checked for its own
+ * consistency before it is compared with the label asked for: the header's
+ * fields and their ranges, a known KIND and point type, NX against NTST and
+ * NCOL (or NHB), the number of values on PAR, X, TAN and MESH lines, finite
+ * numbers, an increasing mesh, END.  A caller may then index every vector
+ * by the sizes in the run_solution. */
 typedef struct reader {
   FILE *f;
   const char *path;
@@ -62,173 +71,322 @@ typedef struct reader {
   size_t len;
 } reader;
 
-static int rd_line(reader *r) {
-  ssize_t got = getline(&r->buf, &r->cap, r->f);
-  if (got < 0) return -1;
-  r->line++;
-  return 0;
-}
-
-static int bad(reader *r, const char *what) {
-  snprintf(r->msg, r->len, "%s:%d: %s", r->path, r->line, what);
+static int bad(reader *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static int bad(reader *r, const char *fmt, ...) {
+  char m[600];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(m, sizeof m, fmt, ap);
+  va_end(ap);
+  if (r->line > 0)
+    snprintf(r->msg, r->len, "%s:%d: %s", r->path, r->line, m);
+  else /* nothing read: no line to blame */
+    snprintf(r->msg, r->len, "%s: %s", r->path, m);
   return -1;
 }
 
-/* "TAG v1 v2 ... vn" into v[n] (allocated). */
-static int rd_vec(reader *r, const char *tag, size_t n, double **v) {
-  if (rd_line(r)) return bad(r, "unexpected end of file");
-  size_t tl = strlen(tag);
-  if (strncmp(r->buf, tag, tl) || (r->buf[tl] != ' ' && r->buf[tl] != '\n'))
-    return bad(r, "malformed solution block (a line is missing)");
-  *v = malloc((n ? n : 1) * sizeof **v);
-  if (!*v) return bad(r, "out of memory");
-  char *p = r->buf + tl, *end;
-  for (size_t i = 0; i < n; i++) {
-    errno = 0;
-    (*v)[i] = strtod(p, &end);
-    if (end == p || !isfinite((*v)[i])) return bad(r, "a value is missing or not finite");
-    p = end;
-  }
-  while (*p == ' ' || *p == '\n' || *p == '\r') p++;
-  if (*p) return bad(r, "too many values");
+/* Untrusted text for a message: at most 60 bytes, unprintable ones as '?'. */
+static const char *shown(const char *s, char buf[72]) {
+  size_t j = 0;
+  for (; s[j] && j < 60; j++)
+    buf[j] = s[j] >= 32 && s[j] < 127 ? s[j] : '?';
+  if (s[j]) memcpy(buf + j, "...", 3), j += 3;
+  buf[j] = '\0';
+  return buf;
+}
+
+/* The next line, without its '\n': 0, 1 at the end of the file, -1 with
+ * the message set for a read error or a NUL byte. */
+static int rd_line(reader *r) {
+  ssize_t got = getline(&r->buf, &r->cap, r->f);
+  if (got < 0 && ferror(r->f)) return bad(r, "cannot read: %s", strerror(errno));
+  if (got < 0) return 1;
+  r->line++;
+  if (got > 0 && r->buf[got - 1] == '\n') r->buf[--got] = '\0';
+  if ((size_t)got != strlen(r->buf))
+    return bad(r, "NUL byte in the line (not a whirl solutions file?)");
   return 0;
 }
 
-int run_solution_find(const char *dir, const char *model, size_t npar,
+/* " KEY value" at *p: an integer in [lo, hi]; *p moves past it. */
+static int lab_int(reader *r, char **p, const char *key, long lo, long hi,
+                   long *v) {
+  size_t kl = strlen(key);
+  char *q = *p + (**p == ' '), *end;
+  if (strncmp(q, key, kl) || q[kl] != ' ')
+    return bad(r, "malformed LAB line: %s expected", key);
+  errno = 0;
+  *v = strtol(q + kl + 1, &end, 10);
+  if (end == q + kl + 1 || (*end && *end != ' ') || errno || *v < lo || *v > hi)
+    return bad(r, "LAB line: %s must be an integer in [%ld, %ld]", key, lo, hi);
+  *p = end;
+  return 0;
+}
+
+/* " KEY word" at *p into w[cap]. */
+static int lab_word(reader *r, char **p, const char *key, char *w, size_t cap) {
+  size_t kl = strlen(key), n;
+  char *q = *p + (**p == ' '), b[72];
+  if (strncmp(q, key, kl) || q[kl] != ' ')
+    return bad(r, "malformed LAB line: %s expected", key);
+  q += kl + 1;
+  n = strcspn(q, " ");
+  if (n == 0 || n >= cap) {
+    q[n] = '\0';
+    return bad(r, "LAB line: %s '%s' is too long or empty", key, shown(q, b));
+  }
+  memcpy(w, q, n);
+  w[n] = '\0';
+  *p = q + n;
+  return 0;
+}
+
+/* NX of a periodic orbit is (M x n) state values, plus the period for an
+ * autonomous model, with M = NTST x NCOL + 1 nodes (colloc) or 2 NHB + 1
+ * coefficients (hbm): the state count and the period from NX. */
+static int orbit_size(reader *r, run_solution *s) {
+  const size_t m = s->kind == RUN_COLLOC ? (size_t)s->ntst * (size_t)s->ncol + 1
+                                         : 2 * (size_t)s->nhb + 1;
+  if (s->nx < m || s->nx % m > 1) {
+    if (s->kind == RUN_COLLOC)
+      return bad(r, "label %d: NX %zu does not fit NTST %d, NCOL %d (a "
+                 "collocation orbit has (NTST x NCOL + 1) x n values, + 1 "
+                 "for the period)", s->label, s->nx, s->ntst, s->ncol);
+    return bad(r, "label %d: NX %zu does not fit NHB %d (a harmonic-balance "
+               "orbit has (2 x NHB + 1) x n values, + 1 for the period)",
+               s->label, s->nx, s->nhb);
+  }
+  s->nstate = s->nx / m;
+  s->aut = (int)(s->nx % m);
+  return 0;
+}
+
+/* The LAB line of a block, into s (vectors not read yet). */
+static int rd_lab(reader *r, size_t npar, run_solution *s) {
+  char *p = r->buf, ty[8], kind[16], b[72];
+  long lab, br, pt, icp, icp2, nx, stab, v1, v2;
+  if (strncmp(p, "LAB ", 4)) return bad(r, "'%s' is not a LAB line", shown(p, b));
+  if (lab_int(r, &p, "LAB", 1, INT_MAX, &lab) ||
+      lab_word(r, &p, "TY", ty, sizeof ty) ||
+      lab_int(r, &p, "BR", 1, INT_MAX, &br) ||
+      lab_int(r, &p, "PT", 0, INT_MAX, &pt) ||
+      lab_word(r, &p, "KIND", kind, sizeof kind) ||
+      lab_int(r, &p, "ICP", 1, (long)npar, &icp) ||
+      lab_int(r, &p, "ICP2", 0, (long)npar, &icp2) ||
+      lab_int(r, &p, "NX", 1, 100000000, &nx) ||
+      lab_int(r, &p, "STAB", -1, 1, &stab))
+    return -1;
+  s->label = (int)lab, s->br = (int)br, s->pt = (int)pt;
+  s->icp = (int)icp - 1, s->icp2 = (int)icp2 - 1;
+  s->nx = (size_t)nx, s->stable = (int)stab, s->npar = npar;
+  /* two characters: AUTO's names (HB, LP, ...), or "??" for a type the
+   * writer did not know */
+  if (strlen(ty) != 2 || !isgraph((unsigned char)ty[0]) ||
+      !isgraph((unsigned char)ty[1]))
+    return bad(r, "label %d: TY '%s' is not a point type (two characters, "
+               "such as HB)", s->label, shown(ty, b));
+  memcpy(s->ty, ty, 3);
+  if (icp2 == icp) return bad(r, "label %d: ICP2 equals ICP", s->label);
+  if (!strcmp(kind, "eq")) {
+    s->kind = RUN_EQ;
+    s->nstate = s->nx;
+  } else if (!strcmp(kind, "colloc")) {
+    s->kind = RUN_COLLOC;
+    if (lab_int(r, &p, "NTST", 2, 100000, &v1) || lab_int(r, &p, "NCOL", 2, 7, &v2))
+      return -1;
+    s->ntst = (int)v1, s->ncol = (int)v2;
+  } else if (!strcmp(kind, "hbm")) {
+    s->kind = RUN_HBM;
+    if (lab_int(r, &p, "NHB", 1, 1000, &v1)) return -1;
+    s->nhb = (int)v1;
+  } else {
+    return bad(r, "label %d: unknown KIND '%s' (eq, colloc or hbm)", s->label,
+               shown(kind, b));
+  }
+  if (*p) return bad(r, "label %d: unexpected '%s' at the end of the LAB line",
+                     s->label, shown(p + 1, b));
+  return s->kind == RUN_EQ ? 0 : orbit_size(r, s);
+}
+
+/* The numbers after a tag: exactly want of them, finite, into *v. */
+static int rd_values(reader *r, const run_solution *s, const char *tag,
+                     const char *text, size_t want, const char *expect,
+                     double **v) {
+  size_t k = 0;
+  char *end, b[72];
+  for (const char *p = text;; p = end) {
+    while (*p == ' ') p++;
+    if (!*p) break;
+    double x = strtod(p, &end);
+    if (end == p || (*end && *end != ' '))
+      return bad(r, "label %d: %s: '%s' is not a number", s->label, tag,
+                 shown(p, b));
+    if (!isfinite(x))
+      return bad(r, "label %d: %s: value %zu is not finite", s->label, tag, k + 1);
+    k++;
+  }
+  if (k != want)
+    return bad(r, "label %d: %s has %zu values, %s = %zu expected", s->label,
+               tag, k, expect, want);
+  *v = malloc((want ? want : 1) * sizeof **v);
+  if (!*v) return bad(r, "out of memory");
+  const char *p = text;
+  for (size_t i = 0; i < want; i++, p = end) (*v)[i] = strtod(p, &end);
+  return 0;
+}
+
+/* The lines after LAB up to END: PAR, X, optional TAN, MESH (colloc). */
+static int rd_body(reader *r, run_solution *s) {
+  char b[72];
+  for (;;) {
+    int rc = rd_line(r);
+    if (rc > 0)
+      return bad(r, "end of file inside the block of label %d (END missing)",
+                 s->label);
+    if (rc) return -1;
+    if (!strcmp(r->buf, "END")) break;
+    const size_t tl = strcspn(r->buf, " ");
+    const char *tags[] = {"PAR", "X", "TAN", "MESH"};
+    const char *expect[] = {"npar", "NX", "NX + 1", "NTST + 1"};
+    const size_t want[] = {s->npar, s->nx, s->nx + 1, (size_t)s->ntst + 1};
+    double **dst[] = {&s->par, &s->x, &s->tan, &s->mesh};
+    int t = 0;
+    while (t < 4 && (strlen(tags[t]) != tl || strncmp(r->buf, tags[t], tl))) t++;
+    if (t == 4 || (t == 3 && s->kind != RUN_COLLOC))
+      return bad(r, "label %d: unexpected line '%s' in the block", s->label,
+                 shown(r->buf, b));
+    if (*dst[t]) return bad(r, "label %d: a second %s line", s->label, tags[t]);
+    if (rd_values(r, s, tags[t], r->buf + tl, want[t], expect[t], dst[t])) return -1;
+  }
+  if (!s->par || !s->x)
+    return bad(r, "label %d: the block has no %s line", s->label,
+               s->par ? "X" : "PAR");
+  if (s->kind == RUN_COLLOC && !s->mesh)
+    return bad(r, "label %d: collocation solution without MESH", s->label);
+  if (s->mesh) {
+    int ok = s->mesh[0] == 0.0 && s->mesh[s->ntst] == 1.0;
+    for (int i = 1; i <= s->ntst; i++) ok &= s->mesh[i] > s->mesh[i - 1];
+    if (!ok) return bad(r, "label %d: MESH does not increase from 0 to 1", s->label);
+  }
+  return 0;
+}
+
+/* "# whirl solutions: model NAME, npar N": NAME into model, N into *npar. */
+static int rd_header(reader *r, char *model, size_t cap, size_t *npar) {
+  static const char head[] = "# whirl solutions: model ";
+  const size_t hl = sizeof head - 1;
+  int rc = rd_line(r);
+  if (rc < 0) return -1;
+  if (rc) return bad(r, "the file is empty (not a whirl solutions file)");
+  if (strncmp(r->buf, head, hl)) return bad(r, "not a whirl solutions file");
+  char *comma = NULL, *end;
+  for (char *q = strstr(r->buf + hl, ", npar "); q; q = strstr(q + 1, ", npar "))
+    comma = q;
+  if (!comma) return bad(r, "not a whirl solutions file");
+  errno = 0;
+  long n = strtol(comma + 7, &end, 10);
+  if (end == comma + 7 || *end || errno || n < 1 || n > 100000 ||
+      (size_t)(comma - (r->buf + hl)) >= cap)
+    return bad(r, "malformed header line");
+  memcpy(model, r->buf + hl, (size_t)(comma - (r->buf + hl)));
+  model[comma - (r->buf + hl)] = '\0';
+  *npar = (size_t)n;
+  return 0;
+}
+
+/* Does the solution fit the model of want?  0, or -1 with the message. */
+static int fits(reader *r, const run_solution *s, const run_shape *want) {
+  if (!want->n) return 0;
+  if (s->kind != RUN_EQ && want->forced >= 0 && s->aut == want->forced) {
+    snprintf(r->msg, r->len, "label %d of %s is an orbit of %s NX %zu "
+             "unknowns; model '%s' is %s", s->label, r->path,
+             s->aut ? "an autonomous model: its period is the last of its"
+                    : "a forced model: the period is none of its",
+             s->nx, want->model ? want->model : "?",
+             want->forced ? "forced" : "autonomous");
+    return -1;
+  }
+  if (s->nstate == want->n) return 0;
+  char how[128] = "";
+  if (s->kind == RUN_COLLOC)
+    snprintf(how, sizeof how, " = (NTST %d x NCOL %d + 1) x %zu%s", s->ntst,
+             s->ncol, s->nstate, s->aut ? " + 1" : "");
+  if (s->kind == RUN_HBM)
+    snprintf(how, sizeof how, " = (2 x NHB %d + 1) x %zu%s", s->nhb, s->nstate,
+             s->aut ? " + 1" : "");
+  snprintf(r->msg, r->len, "label %d of %s %s %zu states (NX %zu%s); model "
+           "'%s' has %zu", s->label, r->path,
+           s->kind == RUN_EQ ? "has" : "is an orbit of", s->nstate, s->nx, how,
+           want->model ? want->model : "?", want->n);
+  return -1;
+}
+
+int run_solution_read(FILE *f, const char *path, const run_shape *want,
                       int label, const char *ty, run_solution *out, char *msg,
                       size_t len) {
+  memset(out, 0, sizeof *out);
+  if (len) msg[0] = '\0';
+  reader r = {f, path, 0, NULL, 0, msg, len};
+  char model[256];
+  size_t npar = 0;
+  int rc = -1, count = 0;
+  if (rd_header(&r, model, sizeof model, &npar)) goto done;
+  if (want->model && strcmp(model, want->model)) {
+    char b[72];
+    bad(&r, "the solutions are of model '%s', this run's model is '%s'",
+        shown(model, b), want->model);
+    goto done;
+  }
+  if (want->npar && npar != want->npar) {
+    bad(&r, "the solutions have %zu parameters (npar %zu); model '%s' has %zu",
+        npar, npar, model, want->npar);
+    goto done;
+  }
+  for (;;) {
+    run_solution s;
+    memset(&s, 0, sizeof s);
+    int got = rd_line(&r);
+    if (got < 0) goto done;
+    if (got > 0) break;
+    if (rd_lab(&r, npar, &s) || rd_body(&r, &s)) {
+      run_solution_free(&s);
+      goto done;
+    }
+    if (ty && ty[0] ? !strcmp(s.ty, ty) && ++count == label : s.label == label) {
+      if (fits(&r, &s, want)) {
+        run_solution_free(&s);
+        goto done;
+      }
+      *out = s;
+      rc = 0;
+      goto done;
+    }
+    run_solution_free(&s);
+  }
+  if (ty && ty[0])
+    snprintf(msg, len, "%s: there is no %s number %d (IRS = %s%d)", path, ty,
+             label, ty, label);
+  else
+    snprintf(msg, len, "%s: there is no label %d", path, label);
+done:
+  free(r.buf);
+  return rc;
+}
+
+int run_solution_find(const run_ctx *R, const char *dir, int label,
+                      const char *ty, run_solution *out, char *msg, size_t len) {
   char path[8192];
   snprintf(path, sizeof path, "%s/solutions", dir);
   memset(out, 0, sizeof *out);
-  reader r = {fopen(path, "r"), path, 0, NULL, 0, msg, len};
-  if (!r.f) {
+  FILE *f = fopen(path, "r");
+  if (!f) {
     snprintf(msg, len, "cannot open %s: %s (S must name the output directory "
              "of an earlier whirl run)", path, strerror(errno));
     return -1;
   }
-  int rc = -1, count = 0, found = 0;
-  char want_model[256];
-  if (rd_line(&r) || sscanf(r.buf, "# whirl solutions: model %255[^,], npar", want_model) != 1) {
-    bad(&r, "not a whirl solutions file");
-    goto done;
-  }
-  if (strcmp(want_model, model)) {
-    char m[600];
-    snprintf(m, sizeof m, "the solutions are of model '%s', this run's model "
-             "is '%s'", want_model, model);
-    bad(&r, m);
-    goto done;
-  }
-  while (!found && rd_line(&r) == 0) {
-    run_solution s;
-    memset(&s, 0, sizeof s);
-    char tyb[8], kb[16];
-    int icp = 0, icp2 = 0, nconv = 0;
-    size_t nx = 0;
-    nconv = sscanf(r.buf, "LAB %d TY %7s BR %d PT %d KIND %15s ICP %d ICP2 %d NX %zu STAB %d",
-                   &s.label, tyb, &s.br, &s.pt, kb, &icp, &icp2, &nx, &s.stable);
-    if (nconv != 9) {
-      bad(&r, "malformed solution header (LAB ... line)");
-      goto done;
-    }
-    snprintf(s.ty, sizeof s.ty, "%.2s", tyb);
-    s.kind = !strcmp(kb, "colloc") ? RUN_COLLOC : !strcmp(kb, "hbm") ? RUN_HBM : RUN_EQ;
-    if (strcmp(kb, "eq") && s.kind == RUN_EQ) {
-      bad(&r, "unknown solution KIND");
-      goto done;
-    }
-    if (icp < 1 || (size_t)icp > npar || icp2 < 0 || (size_t)icp2 > npar ||
-        nx == 0 || nx > 100000000) {
-      bad(&r, "solution header out of range");
-      goto done;
-    }
-    s.icp = icp - 1;
-    s.icp2 = icp2 - 1;
-    s.nx = nx;
-    s.npar = npar;
-    if (s.kind == RUN_COLLOC) {
-      char *q = strstr(r.buf, "NTST");
-      if (!q || sscanf(q, "NTST %d NCOL %d", &s.ntst, &s.ncol) != 2 ||
-          s.ntst < 2 || s.ncol < 2 || s.ncol > 7) {
-        bad(&r, "collocation solution without a valid NTST/NCOL");
-        goto done;
-      }
-    }
-    if (s.kind == RUN_HBM) {
-      char *q = strstr(r.buf, "NHB");
-      if (!q || sscanf(q, "NHB %d", &s.nhb) != 1 || s.nhb < 1) {
-        bad(&r, "harmonic-balance solution without NHB");
-        goto done;
-      }
-    }
-    int match = ty && ty[0] ? !strcmp(s.ty, ty) && ++count == label
-                            : s.label == label;
-    if (rd_vec(&r, "PAR", npar, &s.par) || rd_vec(&r, "X", nx, &s.x)) {
-      run_solution_free(&s);
-      goto done;
-    }
-    /* optional TAN and MESH, then END */
-    for (;;) {
-      if (rd_line(&r)) {
-        bad(&r, "unexpected end of file (END missing)");
-        run_solution_free(&s);
-        goto done;
-      }
-      if (!strncmp(r.buf, "END", 3)) break;
-      if (!strncmp(r.buf, "TAN ", 4) || !strncmp(r.buf, "MESH ", 5)) {
-        int is_tan = r.buf[0] == 'T';
-        size_t m = is_tan ? nx + 1 : (size_t)s.ntst + 1;
-        double **dst = is_tan ? &s.tan : &s.mesh;
-        if (*dst || (!is_tan && s.kind != RUN_COLLOC)) {
-          bad(&r, "unexpected line in a solution block");
-          run_solution_free(&s);
-          goto done;
-        }
-        *dst = malloc(m * sizeof **dst);
-        if (!*dst) {
-          bad(&r, "out of memory");
-          run_solution_free(&s);
-          goto done;
-        }
-        char *p = r.buf + (is_tan ? 3 : 4), *end;
-        for (size_t i = 0; i < m; i++) {
-          (*dst)[i] = strtod(p, &end);
-          if (end == p || !isfinite((*dst)[i])) {
-            bad(&r, "a value is missing or not finite");
-            run_solution_free(&s);
-            goto done;
-          }
-          p = end;
-        }
-        continue;
-      }
-      bad(&r, "unexpected line in a solution block");
-      run_solution_free(&s);
-      goto done;
-    }
-    if (s.kind == RUN_COLLOC && !s.mesh) {
-      bad(&r, "collocation solution without MESH");
-      run_solution_free(&s);
-      goto done;
-    }
-    if (match) {
-      *out = s;
-      found = 1;
-    } else {
-      run_solution_free(&s);
-    }
-  }
-  if (!found) {
-    if (ty && ty[0])
-      snprintf(msg, len, "%s: there is no %s number %d (IRS = %s%d)", path, ty,
-               label, ty, label);
-    else
-      snprintf(msg, len, "%s: there is no label %d", path, label);
-    goto done;
-  }
-  rc = 0;
-done:
-  free(r.buf);
-  fclose(r.f);
+  const run_shape want = {R->prob.name, R->n, R->npar,
+                          R->model->forcing_param >= 0};
+  int rc = run_solution_read(f, path, &want, label, ty, out, msg, len);
+  fclose(f);
   return rc;
 }

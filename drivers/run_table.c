@@ -28,24 +28,21 @@ int run_table_header(run_ctx *R, run_kind kind, int icp, int q) {
     fprintf(f, "\t%s", R->pnames[k]);
     col++;
     if ((int)k == icp) R->plot_x = (int)col;
-    if ((int)k == q) ycol = (int)col;
-    if (R->s->plot[0] && !strcmp(R->s->plot, R->pnames[k])) ycol = (int)col;
+    if ((int)k == q && R->plot_kind == RUN_PLOT_DEFAULT) ycol = (int)col;
+    if (R->plot_kind == RUN_PLOT_PAR && (int)k == R->plot_index) ycol = (int)col;
   }
   if (kind != RUN_EQ) {
     fprintf(f, "\tPERIOD");
     col++;
-    if (R->s->plot[0] && !strcasecmp(R->s->plot, "PERIOD")) ycol = (int)col;
+    if (R->plot_kind == RUN_PLOT_PERIOD) ycol = (int)col;
   }
   fprintf(f, "\tL2-NORM");
   col++;
-  if (!ycol) ycol = (int)col;
+  if (!ycol || R->plot_kind == RUN_PLOT_L2) ycol = (int)col;
   for (size_t i = 0; i < R->n; i++) {
     fprintf(f, kind == RUN_EQ ? "\t%s" : "\tMAX %s", R->xnames[i]);
     col++;
-    char mx[96];
-    snprintf(mx, sizeof mx, "MAX %s", R->xnames[i]);
-    if (R->s->plot[0] && (!strcmp(R->s->plot, R->xnames[i]) || !strcmp(R->s->plot, mx)))
-      ycol = (int)col;
+    if (R->plot_kind == RUN_PLOT_STATE && (int)i == R->plot_index) ycol = (int)col;
   }
   fprintf(f, "\tSTAB\n");
   col++;

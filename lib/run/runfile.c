@@ -408,32 +408,78 @@ static int parse_value(const char *s, size_t n, pvalue *v, const char **msg) {
   return 0;
 }
 
-/* ---- typed conversion --------------------------------------------------- */
-
-static int to_double(const char *s, double *x) {
-  if (!*s) return -1;
-  char *end;
-  errno = 0;
-  if (strpbrk(s, "xXpP")) return -1; /* no hexadecimal floats */
-  double v = strtod(s, &end);
-  if (*end || end == s || !isfinite(v)) return -1; /* underflow gives 0 */
-  *x = v;
-  return 0;
+/* The first dictionary key written twice ({B: 1, B: 2}), or NULL. */
+static const char *dup_key(const pvalue *v) {
+  if (v->kind != V_DICT) return NULL;
+  for (size_t i = 1; i < v->n; i++)
+    for (size_t j = 0; j < i; j++)
+      if (v->it[j].group != v->it[i].group && !strcmp(v->it[j].key, v->it[i].key))
+        return v->it[i].key;
+  return NULL;
 }
 
-static int to_int(const char *s, int *x) {
-  if (!*s) return -1;
-  char *end;
-  errno = 0;
-  long v = strtol(s, &end, 10);
-  if (*end || end == s || errno == ERANGE || v > INT_MAX / 2 || v < INT_MIN / 2) {
-    /* "1e3" or "2.0" for an integer key: accept exact integral reals */
-    double d;
-    if (to_double(s, &d) || d != floor(d) || fabs(d) > INT_MAX / 2) return -1;
-    *x = (int)d;
-    return 0;
+/* parse_value for key kn, and no key twice in a dictionary; WHIRL_OK or the
+ * error. */
+static int parse_checked(whirl_runfile *rf, const char *where, const char *kn,
+                         const char *text, size_t n) {
+  const char *msg, *dup;
+  char shown[64];
+  if (parse_value(text, n, &rf->v, &msg)) return fail(rf, where, "%s: %s", kn, msg);
+  if ((dup = dup_key(&rf->v)))
+    return fail(rf, where, "%s: key '%s' given twice", kn,
+                show(dup, ITEMLEN, shown, sizeof shown));
+  return WHIRL_OK;
+}
+
+/* ---- typed conversion --------------------------------------------------- */
+
+/* Length of the decimal number at s as AUTO reads one: an optional sign,
+ * digits with an optional point (at least one digit), an optional exponent
+ * (e or E, optional sign, digits); 0 if there is none. */
+static size_t decimal_len(const char *s) {
+  size_t i = 0, digits = 0;
+  if (s[i] == '+' || s[i] == '-') i++;
+  while (isdigit((unsigned char)s[i])) i++, digits++;
+  if (s[i] == '.') {
+    i++;
+    while (isdigit((unsigned char)s[i])) i++, digits++;
   }
-  *x = (int)v;
+  if (!digits) return 0;
+  if (s[i] == 'e' || s[i] == 'E') {
+    size_t j = i + 1;
+    if (s[j] == '+' || s[j] == '-') j++;
+    if (!isdigit((unsigned char)s[j])) return 0;
+    while (isdigit((unsigned char)s[j])) j++;
+    i = j;
+  }
+  return i;
+}
+
+int whirl_run_number(const char *s, double *x) {
+  if (!s || !x) return WHIRL_EINVAL;
+  if (!strcasecmp(s, "nan") || !strcasecmp(s, "inf") ||
+      !strcasecmp(s, "infinity") || ((s[0] == '+' || s[0] == '-') &&
+                                     (!strcasecmp(s + 1, "inf") ||
+                                      !strcasecmp(s + 1, "infinity"))))
+    return WHIRL_EDOMAIN;
+  const size_t n = decimal_len(s);
+  if (!n || s[n]) return WHIRL_EINVAL;
+  double v = strtod(s, NULL); /* an underflow gives a denormal or 0: fine */
+  if (!isfinite(v)) return WHIRL_EDOMAIN;
+  *x = v;
+  return WHIRL_OK;
+}
+
+static int to_double(const char *s, double *x) {
+  return whirl_run_number(s, x) == WHIRL_OK ? 0 : -1;
+}
+
+/* An integer: digits with an optional sign, or an exact integral decimal
+ * ("1e3", "2.0"), within +-INT_MAX / 2. */
+static int to_int(const char *s, int *x) {
+  double d;
+  if (to_double(s, &d) || d != floor(d) || fabs(d) > INT_MAX / 2) return -1;
+  *x = (int)d;
   return 0;
 }
 
@@ -509,9 +555,10 @@ static const char *check_int(whirl_run_key k, int x) {
     case WHIRL_RK_NPR: return x < 0 ? "must be >= 0" : NULL;
     case WHIRL_RK_ITNW: return x < 1 || x > 1000 ? "must be in [1, 1000]" : NULL;
     case WHIRL_RK_JAC:
-      return x != 0 && x != 1 && x != -1 ? "must be 0 (finite differences) "
-                                           "or 1 (the model's Jacobian)"
-                                         : NULL;
+      /* AUTO-07p documents 0 and 1 only */
+      return x != 0 && x != 1 ? "must be 0 (finite differences) or 1 (the "
+                                "model's Jacobian)"
+                              : NULL;
     case WHIRL_RK_BASIN_PERIODS: return x < 1 ? "must be >= 1" : NULL;
     default: return NULL;
   }
@@ -598,7 +645,8 @@ static int set_value(whirl_runfile *rf, const key_def *d, const char *where,
     return WHIRL_OK;
   }
 
-  if (parse_value(text, n, v, &msg)) return fail(rf, where, "%s: %s", kn, msg);
+  int rc = parse_checked(rf, where, kn, text, n);
+  if (rc) return rc;
 
   switch (d->kind) {
     case K_INT:
@@ -889,10 +937,8 @@ static int assign(whirl_runfile *rf, int line, const char *where,
   const key_def *d = find_key(k, kn);
   if (!d) {
     if (is_ignored_key(k, kn)) {
-      pvalue *v = &rf->v;
-      const char *msg;
-      if (parse_value(val, vn, v, &msg))
-        return fail(rf, where, "%s: %s", show(k, kn, shown, sizeof shown), msg);
+      int rc = parse_checked(rf, where, show(k, kn, shown, sizeof shown), val, vn);
+      if (rc) return rc;
       note_ignored(rf, k, kn);
       return WHIRL_OK;
     }

@@ -11,7 +11,8 @@
  *
  * A value is a number, a word or quoted string, a list `[a, b]` (or items
  * separated by commas/blanks), or a dictionary `{key: value, ...}` whose
- * values are scalars or lists.  `#` starts a comment outside quotes.  One
+ * values are scalars or lists and whose keys differ.  Numbers are decimal
+ * (whirl_run_number).  `#` starts a comment outside quotes.  One
  * key per line; a key may appear once in a file; command-line overrides
  * (`--DS=0.02`) replace file values.  Every error names the file and line
  * ("ab.whirl:7: DS: '0,01' is not a number") and the parse stops there.
@@ -152,6 +153,15 @@ WHIRL_API const char *whirl_run_key_name(whirl_run_key k);
 /* Keys the file set that whirl accepts for AUTO compatibility but ignores,
  * as a comma-separated list ("" if none), for the run's log. */
 WHIRL_API const char *whirl_runfile_ignored(const whirl_runfile *rf);
+
+/* A number as run files write it (AUTO's syntax): decimal with an optional
+ * sign, point and exponent (0.1, -2, .5, 1e-3, 2.0E+1), nothing else: no
+ * blanks, no hexadecimal, no inf or nan.  An underflow (1e-310, 1e-400)
+ * gives the nearest double, a denormal or 0.  Returns WHIRL_OK with *x set,
+ * WHIRL_EDOMAIN for a number that is not finite (nan, inf, 1e999),
+ * WHIRL_EINVAL for anything else.  The other commands read their numeric
+ * options with it too. */
+WHIRL_API int whirl_run_number(const char *s, double *x);
 
 /* The last error, "FILE:LINE: message" ("" if none); owned by rf. */
 WHIRL_API const char *whirl_runfile_errmsg(const whirl_runfile *rf);

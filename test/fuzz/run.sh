@@ -1,26 +1,43 @@
 #!/bin/sh
-# test/fuzz/run.sh — build the run-file parser's libFuzzer target and run it.
+# test/fuzz/run.sh — build the libFuzzer targets and run them, one after
+# the other.
 #
-#   test/fuzz/run.sh [RUNS]        RUNS inputs (default 1000000)
+#   test/fuzz/run.sh [RUNS] [TARGET ...]
 #
+# RUNS inputs per target (default 1000000); TARGET is one of
+#   runfile     the run-file parser (fuzz_runfile.c, lib/run/runfile.c)
+#   solutions   the reader of solutions files, what restarts read
+#               (fuzz_solutions.c, drivers/run_solution.c)
+# (default: all).  Each target prints one line
+#   fuzz_NAME: RUNS runs requested, exit RC, N s wall
 # Environment: CLANG (default clang), FUZZ_JOBS (parallel workers, default 1),
-# FUZZ_FLAGS (extra libFuzzer flags, e.g. -max_total_time=600),
-# FUZZ_KEEP=1 (keep the work directory).  The checked-in seed corpus
-# test/fuzz/corpus/ is copied, not modified; a crashing input is saved under
-# test/fuzz/crashes/ (crash-<sha1>, leak-<sha1>, ...).
+# FUZZ_FLAGS (extra libFuzzer flags, e.g. -max_total_time=600: each target
+# stops at RUNS inputs or at that time, whichever comes first), FUZZ_KEEP=1
+# (keep the work directory).  The checked-in seed corpora (test/fuzz/corpus/,
+# test/fuzz/corpus-solutions/) are copied, not modified; a crashing input is
+# saved under test/fuzz/crashes/ (crash-<sha1>, leak-<sha1>, ...).
 #
 # Exit status: 0 no finding, 1 a finding (crash, leak, timeout, broken
-# promise) or a build failure, 77 skipped (no clang with libFuzzer).
-# Not part of `make check`: doc/fuzzing.md.
+# promise) in any target or a build failure, 2 usage, 77 skipped (no clang
+# with libFuzzer).  Not part of `make check`: doc/fuzzing.md.
+# CI: FUZZ_FLAGS=-max_total_time=60 sh test/fuzz/run.sh 1000000000
 # SPDX-License-Identifier: BSD-3-Clause
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
-runs=${1:-1000000}
-CLANG=${CLANG:-clang}
-case $runs in
-  ''|*[!0-9]*) echo "usage: $0 [RUNS]" >&2; exit 2 ;;
+all="runfile solutions"
+usage() { echo "usage: $0 [RUNS] [TARGET ...]   (targets: $all)" >&2; exit 2; }
+runs=1000000
+case ${1:-} in
+  '') ;;
+  *[!0-9]*) ;;
+  *) runs=$1; shift ;;
 esac
+targets=${*:-$all}
+for t in $targets; do
+  case " $all " in *" $t "*) ;; *) usage ;; esac
+done
+CLANG=${CLANG:-clang}
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/whirl-fuzz.XXXXXX") || exit 1
 if [ "${FUZZ_KEEP:-0}" = 1 ]; then
@@ -38,40 +55,69 @@ if ! "$CLANG" -fsanitize=fuzzer "$work/probe.c" -o "$work/probe" > /dev/null 2>&
   echo "SKIP: $CLANG cannot link -fsanitize=fuzzer (libFuzzer runtime missing)"; exit 77
 fi
 
-# runfile.c is self-contained: it needs only the headers (whirl/status.h
-# for the status codes), not lib/util/status.c (which needs the generated
-# config.h and provides nothing the parser calls).
-san=-fsanitize=fuzzer,address,undefined
-"$CLANG" -std=c11 -g -O1 $san -fno-sanitize-recover=undefined \
-  -I "$top/lib" "$here/fuzz_runfile.c" "$top/lib/run/runfile.c" -lm \
-  -o "$work/fuzz_runfile" || { echo "build failed" >&2; exit 1; }
+# Sources of each target.  Both readers are self-contained: they need the
+# headers only (whirl/status.h for the status codes, drivers/run.h for the
+# solution struct), not lib/util/status.c (which needs the generated
+# config.h and provides nothing they call).
+sources() {
+  case $1 in
+    runfile) echo "$here/fuzz_runfile.c $top/lib/run/runfile.c" ;;
+    solutions) echo "$here/fuzz_solutions.c $top/drivers/run_solution.c" ;;
+  esac
+}
+corpus() {
+  case $1 in
+    runfile) echo "$here/corpus" ;;
+    *) echo "$here/corpus-$1" ;;
+  esac
+}
 
-mkdir -p "$work/corpus" "$work/artifacts"
-cp "$here"/corpus/* "$work/corpus/"
-cd "$work" || exit 1   # with -jobs, libFuzzer writes fuzz-N.log here
-start=$(date +%s)
-# shellcheck disable=SC2086
-ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} \
-UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
-"$work/fuzz_runfile" -runs="$runs" -dict="$here/runfile.dict" \
-  -artifact_prefix="$work/artifacts/" -print_final_stats=1 \
-  ${FUZZ_JOBS:+-jobs=$FUZZ_JOBS -workers=$FUZZ_JOBS} ${FUZZ_FLAGS:-} \
-  "$work/corpus" > "$work/fuzz.log" 2>&1
-rc=$?
-end=$(date +%s)
-grep -E '^#[0-9]+[[:space:]]+(INITED|DONE)|^Done |^stat::' "$work/fuzz.log"
-echo "fuzz_runfile: $runs runs requested, exit $rc, $((end - start)) s wall"
-if [ $rc -ne 0 ]; then
+# fuzz NAME: build fuzz_NAME, run it on a copy of its corpus; its exit status
+fuzz() {
+  name=$1 dir="$work/$1"
+  mkdir -p "$dir/corpus" "$dir/artifacts"
+  san=-fsanitize=fuzzer,address,undefined
+  # shellcheck disable=SC2046 # the list of sources
+  if ! "$CLANG" -std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 $san \
+      -fno-sanitize-recover=undefined -I "$top/lib" -I "$top/drivers" \
+      $(sources "$name") -lm -o "$dir/fuzz_$name" > "$dir/build.log" 2>&1; then
+    cat "$dir/build.log" >&2
+    echo "fuzz_$name: build failed, exit 1"
+    return 1
+  fi
+  cp "$(corpus "$name")"/* "$dir/corpus/"
+  dict=
+  [ -f "$here/$name.dict" ] && dict="-dict=$here/$name.dict"
+  start=$(date +%s)
+  # with -jobs, libFuzzer writes fuzz-N.log in the current directory
+  # shellcheck disable=SC2086
+  (cd "$dir" &&
+    ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} \
+    UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
+    "$dir/fuzz_$name" -runs="$runs" $dict -artifact_prefix="$dir/artifacts/" \
+      -print_final_stats=1 ${FUZZ_JOBS:+-jobs=$FUZZ_JOBS -workers=$FUZZ_JOBS} \
+      ${FUZZ_FLAGS:-} "$dir/corpus" > "$dir/fuzz.log" 2>&1)
+  rc=$?
+  end=$(date +%s)
+  grep -E '^#[0-9]+[[:space:]]+(INITED|DONE)|^Done |^stat::' "$dir/fuzz.log"
+  echo "fuzz_$name: $runs runs requested, exit $rc, $((end - start)) s wall"
+  [ $rc -eq 0 ] && return 0
   # the report: sanitizer stack, or libFuzzer's "deadly signal" / leak note
   awk '/==[0-9]+==ERROR|runtime error|deadly signal|ERROR: libFuzzer/ { on = 1 }
        /^Shadow bytes around/ { on = 0 }
-       on || /^SUMMARY|Test unit written|^artifact_prefix/' "$work/fuzz.log"
-  if [ -n "$(ls "$work/artifacts")" ]; then
-    mkdir -p "$top/test/fuzz/crashes" && cp "$work/artifacts"/* "$top/test/fuzz/crashes/"
+       on || /^SUMMARY|Test unit written|^artifact_prefix/' "$dir/fuzz.log"
+  if [ -n "$(ls "$dir/artifacts")" ]; then
+    mkdir -p "$top/test/fuzz/crashes"
+    for a in "$dir/artifacts"/*; do cp "$a" "$top/test/fuzz/crashes/$name-$(basename "$a")"; done
     ls "$top/test/fuzz/crashes"
   fi
-  echo "FINDING: the input is saved in $top/test/fuzz/crashes/ (reproduce:" \
-    "build as above and run ./fuzz_runfile test/fuzz/crashes/<file>)" >&2
-  exit 1
-fi
-exit 0
+  echo "FINDING in fuzz_$name: the input is saved in $top/test/fuzz/crashes/$name-* (reproduce:" \
+    "build as above and run ./fuzz_$name test/fuzz/crashes/<file>)" >&2
+  return 1
+}
+
+status=0
+for t in $targets; do
+  fuzz "$t" || status=1
+done
+exit $status

@@ -39,7 +39,12 @@ check_bad "delta" --delta -0.2
 check_bad "zeta" --zeta -0.5
 check_bad "finite" --lambda nan
 check_bad "expects a number" --delta abc
-check_bad "expects a number" --lambda 1e999
+check_bad "must be a finite number" --lambda 1e999
+check_bad "expects a number" --delta 0x1p-3
+check_bad "expects a number" --delta " 0.2"
+check_bad "expects a non-negative integer" --ntst " 20"
+# a denormal is a number (the nearest double): the run goes on to the next check
+check_bad "lambda" --zeta 1e-310 --lambda 0
 check_bad "unknown option" --bogus
 check_bad "needs a value" --lambda
 check_bad "omega-min" --omega-max 0.001

@@ -84,9 +84,98 @@ rc=$?
 ok $rc "control: 'model = ab.so' with the run file in the current directory (whirl run bare.whirl)"
 [ $rc -eq 0 ] || diag "$tmp/stderr"
 rm -rf bare.out bare.whirl
+# numbers: a denormal is a number (the nearest double); blanks after '='
+# are fine in an override as in the file; PLOT takes a parameter, a state
+# component, MAX of one, L2-NORM (the picture's y label says which)
+ctl() { # OVERRIDE YLABEL
+  rm -rf ctl.out
+  "$WHIRL" run ab-1.whirl --quiet "$1" --OUT=ctl.out > "$tmp/stdout" 2> "$tmp/stderr" &&
+    grep -q "^set ylabel '$2' " ctl.out/diagram.gp
+  rc=$?
+  ok $rc "control: whirl run ab-1.whirl $1 runs, exit 0, y axis $2"
+  [ $rc -eq 0 ] || diag "$tmp/stderr"
+  rm -rf ctl.out
+}
+ctl --DSMIN=1e-310 L2-NORM
+ctl '--NMX= 5' L2-NORM
+ctl --PLOT=beta beta
+ctl --PLOT=u2 u2
+ctl '--PLOT=MAX u1' u1
+ctl --PLOT=l2-norm L2-NORM
 # a directory that is not a whirl output
 mkdir notwhirl.out && echo "not whirl's" > notwhirl.out/keep.txt
 : > plain.out
+
+# restarts from solutions that do not fit the model: ab3.so is ab with a
+# third state u3' = -u3 (a plug-in that gained a state and kept its name),
+# abf.so is ab forced at the frequency beta (periodic orbits have no period
+# unknown); po.out holds periodic orbits by collocation (NTST 10, NCOL 4)
+# from the HB of ab-1.out; edit-*.s are copies of solutions files with one
+# thing changed (sed script)
+cat > abx.c <<'EOF_C'
+#include <math.h>
+#include <whirl/model.h>
+static int rhs(double t, const double *u, const double *p, double *f, void *d) {
+  const double r = p[0] * (1.0 - u[0]) * exp(u[1]);
+  (void)d;
+  f[0] = -u[0] + r + FORCED * 0.01 * cos(p[2] * t);
+  f[1] = -u[1] + p[1] * r - p[2] * u[1];
+  if (NSTATE == 3) f[NSTATE - 1] = -u[NSTATE - 1];
+  return 0;
+}
+static const char *const xn[] = {"u1", "u2", "u3"};
+static const char *const pn[] = {"Da", "B", "beta"};
+static const double par0[] = {0.0, 14.0, 3.0};
+const whirl_model whirl_model_def = {
+    .abi = WHIRL_MODEL_ABI,
+    .problem = {.name = "ab", .n = NSTATE, .npar = 3, .rhs = rhs,
+                .autonomous = !FORCED, .x_names = xn, .p_names = pn},
+    .par0 = par0, .forcing_param = FORCED ? 2 : -1};
+EOF_C
+$CC -std=c11 -shared -fPIC -I"$top_srcdir/lib" -DNSTATE=3 -DFORCED=0 -o ab3.so abx.c -lm > "$tmp/cc.log" 2>&1 &&
+  $CC -std=c11 -shared -fPIC -I"$top_srcdir/lib" -DNSTATE=2 -DFORCED=1 -o abf.so abx.c -lm >> "$tmp/cc.log" 2>&1
+rc=$?
+ok $rc "ab3.so (ab with a third state) and abf.so (ab forced) build"
+[ $rc -eq 0 ] || diag "$tmp/cc.log"
+printf 'model = ./ab.so\nICP = [Da]\nIPS = 2\nS = ab-1.out\nIRS = 2\nNTST = 10\nNMX = 12\nNPR = 5\nOUT = po.out\n' > po.whirl
+"$WHIRL" run po.whirl --quiet > "$tmp/stdout" 2> "$tmp/stderr" && grep -q '^LAB 3 .* NX 83 .* NTST 10 NCOL 4$' po.out/solutions
+rc=$?
+ok $rc "control: periodic orbits from the HB of ab-1.out (po.out, label 3 with NX 83)"
+[ $rc -eq 0 ] || diag "$tmp/stderr"
+printf 'model = ./ab.so\nICP = [Da]\nIPS = 2\nS = po.out\nIRS = 3\nNTST = 10\nNMX = 3\nOUT = po2.out\n' > po2.whirl
+"$WHIRL" run po2.whirl --quiet > "$tmp/stdout" 2> "$tmp/stderr"
+rc=$?
+ok $rc "control: a restart from label 3 of po.out runs, exit 0"
+[ $rc -eq 0 ] || diag "$tmp/stderr"
+rm -rf po2.out po.whirl po2.whirl
+edit() { # NAME SOURCE SED-SCRIPT: edit-NAME.s/solutions
+  mkdir "edit-$1.s" && sed "$3" "$2/solutions" > "edit-$1.s/solutions"
+}
+L2='/^LAB 2 /,/^END/'   # the block of label 2 (an HB) of ab-1.out
+L3='/^LAB 3 /,/^END/'   # the block of label 3 of po.out
+edit nx3 ab-1.out "$L2"'{s/ NX 2 / NX 3 /; /^[XT]/s/$/ 0/;}'
+edit xshort ab-1.out "$L2"'{/^X /s/ [^ ]*$//;}'
+edit tanshort ab-1.out "$L2"'{/^TAN /s/ [^ ]*$//;}'
+edit xnan ab-1.out "$L2"'{/^X /s/ [^ ]* / nan /;}'
+edit xtext ab-1.out "$L2"'{/^X /s/ [^ ]*$/ 1.5x/;}'
+edit par4 ab-1.out '/^LAB 1 /,/^END/{/^PAR /s/$/ 7/;}'
+edit npar ab-1.out '1s/npar 3/npar 4/'
+edit ty ab-1.out "$L2"'{s/ TY HB / TY HBX /;}'
+edit kind ab-1.out "$L2"'{s/ KIND eq / KIND cycle /;}'
+edit junk ab-1.out "$L2"'{s/ STAB 1$/ STAB 1 NTST 9/;}'
+edit icp ab-1.out "$L2"'{s/ ICP 1 / ICP 7 /;}'
+edit mesh ab-1.out "$L2"'{s/^END$/MESH 0 1\nEND/;}'
+edit noend ab-1.out '$d'
+edit empty ab-1.out 'd'
+edit lp ab-1.out "$L2"'{s/ TY HB / TY LP /;}'
+edit bp ab-1.out '/^LAB 1 /s/ TY EP / TY BP /'
+edit ntst po.out "$L3"'{s/ NTST 10 / NTST 11 /;}'
+edit meshshort po.out "$L3"'{/^MESH /s/ [^ ]*$//;}'
+edit meshorder po.out "$L3"'{/^MESH /s/ 1$/ 0.99/;}'
+edit pd po.out "$L3"'{s/ TY RG / TY PD /;}'
+mkdir hbm.s && awk 'NR == 1 { print; print "LAB 1 TY UZ BR 1 PT 0 KIND hbm ICP 1 ICP2 0 NX 35 STAB 1 NHB 8"
+  print "PAR 0.16 14 3"; x = "X"; for (i = 0; i < 35; i++) x = x " 0.5"; print x; print "END" }' \
+  ab-1.out/solutions > hbm.s/solutions
 
 before=$(ls -d ./*.out ./*.tmp.* 2>/dev/null)
 
@@ -176,6 +265,18 @@ c 2 "ISW out of range" "$F:3: ISW = 3: must be 1" "$B"'ISW = 3\n'
 c 2 "IPS = 4 unsupported" "$F:3: IPS = 4 is not supported" "$B"'IPS = 4\n'
 c 2 "unknown METHOD" "$F:3: METHOD: ${q}rk4$q is not a method" "$B"'METHOD = rk4\n'
 c 2 "UZR not a dictionary" "$F:3: UZR: expected a dictionary" "$B"'UZR = 0.1\n'
+c 2 "JAC = -1 (AUTO has 0 and 1)" "$F:3: JAC = -1: must be 0 \(finite differences\) or 1" "$B"'JAC = -1\n'
+c 2 "dictionary key twice (PAR)" "$F:3: PAR: key ${q}B$q given twice$" "$B"'PAR = {B: 14, B: 15}\n'
+c 2 "dictionary key twice (UZR)" "$F:3: UZR: key ${q}Da$q given twice$" "$B"'UZR = {Da: 0.1, Da: 0.2}\n'
+c 2 "dictionary key twice (an ignored AUTO key)" "$F:3: THL: key ${q}11$q given twice$" "$B"'THL = {11: 0, 11: 1}\n'
+c 2 "one parameter by name and index" "$F:3: PAR: ${q}B$q and ${q}2$q are the same parameter$" "$B"'PAR = {B: 14, 2: 15}\n'
+c 2 "one component by name and U(k)" "$F:3: U: ${q}u1$q and ${q}U\(1\)$q are the same state component$" "$B"'U = {u1: 0, U(1): 1}\n'
+c 2 "blank in a quoted label" "$F:3: IRS: ${q} 2$q is not a label" "$B""IRS = ' 2'\nS = ab-1.out\n"
+c 2 "blank in a type count" "$F:3: IRS: ${q}HB 1$q is not a label" "$B""IRS = 'HB 1'\nS = ab-1.out\n"
+c 2 "blank in a quoted range bound" "$F:4: BASIN_AXES: a range bound is not a finite number$" "$B""IPS = basins\nBASIN_AXES = {u1: [' 0', 1], u2: [0, 1]}\nBASIN_ATTRACTORS = [1]\nS = ab-1.out\n"
+c 2 "hexadecimal number" "$F:3: DS: ${q}0x1p-3$q is not a finite number$" "$B"'DS = 0x1p-3\n'
+c 2 "PLOT naming nothing of the model" "$F:3: PLOT: ${q}MAX xx$q is neither a parameter \(Da, B, beta\), PERIOD, L2-NORM, a state component nor MAX of one \(u1, u2\) of model ${q}ab$q$" "$B"'PLOT = MAX xx\n'
+c 2 "PLOT = PERIOD for equilibria" "$F:3: PLOT = PERIOD: only periodic orbits \(IPS = 2\) have a period$" "$B"'PLOT = PERIOD\n'
 # syntax
 c 2 "unterminated quote (string key)" "$F:3: OUT: unterminated quoted string$" "$B"'OUT = "abc\n'
 c 2 "unterminated quote (in a dictionary)" "$F:3: PAR: unterminated quoted string$" "$B""PAR = {B: 'x}\n"
@@ -217,12 +318,47 @@ c 2 "IRS label not present" "$F:3: IRS: ab-1\.out/solutions: there is no label 9
 c 2 "IRS type count not present" "$F:3: IRS: ab-1\.out/solutions: there is no LP number 1" "$B"'IRS = LP1\nS = ab-1.out\n'
 c 2 "ISW = 2 with one ICP" "$F:2: ISW = 2 \(two-parameter continuation\) needs two parameters in ICP$" "$B"'IRS = 2\nS = ab-1.out\nISW = 2\n'
 c 2 "ISW = -1 at an HB label" "$F:5: ISW = -1 switches at a BP" "$B"'IRS = 2\nS = ab-1.out\nISW = -1\n'
+# restarts from solutions that do not fit the model (no read past a stored
+# vector): every block read is checked for itself, the label found against
+# the model
+S2='S = ab-1.out\nIRS = 2\n'  # lines 3-4
+c 2 "restart: solutions with a state more" "$F:4: IRS: label 2 of edit-nx3\.s/solutions has 3 states \(NX 3\); model ${q}ab$q has 2$" "$B"'S = edit-nx3.s\nIRS = 2\n'
+c 2 "restart: X shorter than NX" "$F:4: IRS: edit-xshort\.s/solutions:9: label 2: X has 1 values, NX = 2 expected$" "$B"'S = edit-xshort.s\nIRS = 2\n'
+c 2 "restart: TAN shorter than NX + 1" "$F:4: IRS: edit-tanshort\.s/solutions:10: label 2: TAN has 2 values, NX \+ 1 = 3 expected$" "$B"'S = edit-tanshort.s\nIRS = 2\n'
+c 2 "restart: NaN in X" "$F:4: IRS: edit-xnan\.s/solutions:9: label 2: X: value 1 is not finite$" "$B"'S = edit-xnan.s\nIRS = 2\n'
+c 2 "restart: text in X" "$F:4: IRS: edit-xtext\.s/solutions:9: label 2: X: ${q}1\.5x$q is not a number$" "$B"'S = edit-xtext.s\nIRS = 2\n'
+c 2 "restart: PAR longer than npar (an earlier block)" "$F:4: IRS: edit-par4\.s/solutions:3: label 1: PAR has 4 values, npar = 3 expected$" "$B"'S = edit-par4.s\nIRS = 2\n'
+c 2 "restart: solutions with another npar" "$F:4: IRS: edit-npar\.s/solutions:1: the solutions have 4 parameters \(npar 4\); model ${q}ab$q has 3$" "$B"'S = edit-npar.s\nIRS = 2\n'
+c 2 "restart: TY of three letters" "$F:4: IRS: edit-ty\.s/solutions:7: label 2: TY ${q}HBX$q is not a point type" "$B"'S = edit-ty.s\nIRS = 2\n'
+c 2 "restart: unknown KIND" "$F:4: IRS: edit-kind\.s/solutions:7: label 2: unknown KIND ${q}cycle$q" "$B"'S = edit-kind.s\nIRS = 2\n'
+c 2 "restart: extra field on the LAB line" "$F:4: IRS: edit-junk\.s/solutions:7: label 2: unexpected ${q}NTST 9$q at the end of the LAB line$" "$B"'S = edit-junk.s\nIRS = 2\n'
+c 2 "restart: ICP out of range" "$F:4: IRS: edit-icp\.s/solutions:7: LAB line: ICP must be an integer in \[1, 3\]$" "$B"'S = edit-icp.s\nIRS = 2\n'
+c 2 "restart: MESH in an equilibrium" "$F:4: IRS: edit-mesh\.s/solutions:11: label 2: unexpected line ${q}MESH 0 1$q in the block$" "$B"'S = edit-mesh.s\nIRS = 2\n'
+c 2 "restart: END missing" "$F:4: IRS: edit-noend\.s/solutions:20: end of file inside the block of label 4 \(END missing\)$" "$B"'S = edit-noend.s\nIRS = 4\n'
+c 2 "restart: empty solutions file" "$F:4: IRS: edit-empty\.s/solutions: the file is empty \(not a whirl solutions file\)$" "$B"'S = edit-empty.s\nIRS = 2\n'
+c 2 "restart: NX that does not fit NTST, NCOL" "$F:5: IRS: edit-ntst\.s/solutions:[0-9]+: label 3: NX 83 does not fit NTST 11, NCOL 4" "$B"'IPS = 2\nS = edit-ntst.s\nIRS = 3\n'
+c 2 "restart: MESH shorter than NTST + 1" "$F:5: IRS: edit-meshshort\.s/solutions:[0-9]+: label 3: MESH has 10 values, NTST \+ 1 = 11 expected$" "$B"'IPS = 2\nS = edit-meshshort.s\nIRS = 3\n'
+c 2 "restart: MESH not ending at 1" "$F:5: IRS: edit-meshorder\.s/solutions:[0-9]+: label 3: MESH does not increase from 0 to 1$" "$B"'IPS = 2\nS = edit-meshorder.s\nIRS = 3\n'
+A3='model = ./ab3.so\nICP = [Da]\n'
+c 2 "restart of a model with a state more: equilibria (IPS = 1)" "$F:4: IRS: label 1 of ab-1\.out/solutions has 2 states \(NX 2\); model ${q}ab$q has 3$" "$A3"'S = ab-1.out\nIRS = 1\n'
+c 2 "restart of a model with a state more: Hopf start (IPS = 2)" "$F:4: IRS: label 2 of ab-1\.out/solutions has 2 states \(NX 2\); model ${q}ab$q has 3$" "$A3""$S2"'IPS = 2\n'
+c 2 "restart of a model with a state more: Hopf locus (ISW = 2)" "$F:4: IRS: label 2 of ab-1\.out/solutions has 2 states" 'model = ./ab3.so\nICP = [Da, B]\n'"$S2"'ISW = 2\n'
+c 2 "restart of a model with a state more: fold locus (ISW = 2)" "$F:4: IRS: label 2 of edit-lp\.s/solutions has 2 states" 'model = ./ab3.so\nICP = [Da, B]\nS = edit-lp.s\nIRS = 2\nISW = 2\n'
+c 2 "restart of a model with a state more: BP switch (ISW = -1)" "$F:4: IRS: label 1 of edit-bp\.s/solutions has 2 states" "$A3"'S = edit-bp.s\nIRS = 1\nISW = -1\n'
+c 2 "restart of a model with a state more: orbit, same mesh" "$F:4: IRS: label 3 of po\.out/solutions is an orbit of 2 states \(NX 83 = \(NTST 10 x NCOL 4 \+ 1\) x 2 \+ 1\); model ${q}ab$q has 3$" "$A3"'S = po.out\nIRS = 3\nIPS = 2\nNTST = 10\n'
+c 2 "restart of a model with a state more: orbit, another mesh" "$F:4: IRS: label 3 of po\.out/solutions is an orbit of 2 states" "$A3"'S = po.out\nIRS = 3\nIPS = 2\nNTST = 20\n'
+c 2 "restart of a model with a state more: PD switch (ISW = -1)" "$F:4: IRS: label 3 of edit-pd\.s/solutions is an orbit of 2 states" "$A3"'S = edit-pd.s\nIRS = 3\nIPS = 2\nISW = -1\n'
+c 2 "restart of a model with a state more: harmonic balance" "$F:4: IRS: label 1 of hbm\.s/solutions is an orbit of 2 states \(NX 35 = \(2 x NHB 8 \+ 1\) x 2 \+ 1\); model ${q}ab$q has 3$" "$A3"'S = hbm.s\nIRS = 1\nIPS = 2\nMETHOD = hbm\n'
+c 2 "restart of a model with a state more: basin attractor" "$F:[0-9]+: BASIN_ATTRACTORS: label 1 of ab-1\.out/solutions has 2 states" "$A3"'S = ab-1.out\nIPS = basins\nBASIN_AXES = {u1: [0, 1], u2: [0, 1]}\nBASIN_ATTRACTORS = [1]\n'
+c 2 "restart of a forced model from an autonomous orbit" "$F:4: IRS: label 3 of po\.out/solutions is an orbit of an autonomous model: its period is the last of its NX 83 unknowns; model ${q}ab$q is forced$" 'model = ./abf.so\nICP = [Da]\nS = po.out\nIRS = 3\nIPS = 2\n'
 c 2 "OUT is a foreign directory" "$F:3: output directory ${q}notwhirl\.out$q holds an entry whirl did not write \(${q}keep\.txt$q\)" "$B"'OUT = notwhirl.out\n'
 # command-line overrides
 c 2 "bad override value (--DS=abc)" "^whirl run: command line \(--DS=abc\): DS: ${q}abc$q is not a finite number$" "$B" --DS=abc
 c 2 "override with an unknown key" "^whirl run: command line \(--bogus=1\): unknown key ${q}bogus$q" "$B" --bogus=1
 c 2 "override key typo" "^whirl run: command line \(--DSMX=0\.1\): unknown key ${q}DSMX$q \(did you mean DSMAX\?\)$" "$B" --DSMX=0.1
 c 2 "override without '='" "^whirl run: command line \(--DS\): expected --KEY=value$" "$B" --DS
+c 2 "override with a blank for '=' (--NMX 5)" "^whirl run: --NMX needs ${q}=$q: write --NMX=5$" "$B" --NMX 5
+c 2 "override with a blank for '=' (--DS -0.01)" "^whirl run: --DS needs ${q}=$q: write --DS=-0.01$" "$B" --DS -0.01
 c 2 "override naming an unknown parameter" "^whirl run: command line \(--ICP=\[Foo\]\): ICP: ${q}Foo$q is not a parameter" "$B" '--ICP=[Foo]'
 c 2 "override with an unknown model" "^whirl run: command line \(--model=nosuch\): model: " "$B" --model=nosuch
 c 2 "override NDIM mismatch" "^whirl run: command line \(--NDIM=3\): NDIM = 3, but" "$B" --NDIM=3

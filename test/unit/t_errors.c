@@ -1,8 +1,8 @@
 /* test/unit/t_errors.c — bad input to the library ends in a status code and
  * a message, never a crash: SFD parameters out of range or NaN, F_E != 0 for
  * circular orbits, contact with the housing (eps >= 1), a Newton that
- * diverges, a model that fails fatally, and a branch that runs into a domain
- * error.
+ * diverges, a model that fails fatally, a branch that runs into a domain
+ * error, and numbers as run files write them (whirl_run_number).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdio.h>
@@ -116,6 +116,35 @@ int main(void) {
      "domain error ends the branch: %s", whirl_cont_errmsg(c));
   ok(last < 1.0 && last > 1.0 - 1e-5, "last point just before the wall (p = %.8f)", last);
   whirl_cont_free(c);
+
+  /* numbers as run files (and the commands' options) write them */
+  static const struct {
+    const char *text;
+    int rc;
+    double x;
+  } nums[] = {
+      {"0.1", WHIRL_OK, 0.1},          {"-2", WHIRL_OK, -2.0},
+      {"+.5", WHIRL_OK, 0.5},          {"5.", WHIRL_OK, 5.0},
+      {"2.0E+1", WHIRL_OK, 20.0},      {"1e-400", WHIRL_OK, 0.0},
+      {"1e-310", WHIRL_OK, 1e-310},    {"1e999", WHIRL_EDOMAIN, 0},
+      {"nan", WHIRL_EDOMAIN, 0},       {"-Infinity", WHIRL_EDOMAIN, 0},
+      {"0x10", WHIRL_EINVAL, 0},       {"0x1p-3", WHIRL_EINVAL, 0},
+      {" 1", WHIRL_EINVAL, 0},         {"1 ", WHIRL_EINVAL, 0},
+      {"1e", WHIRL_EINVAL, 0},         {"e5", WHIRL_EINVAL, 0},
+      {".", WHIRL_EINVAL, 0},          {"-", WHIRL_EINVAL, 0},
+      {"", WHIRL_EINVAL, 0},           {"1,5", WHIRL_EINVAL, 0},
+      {"1d-3", WHIRL_EINVAL, 0},       {"--1", WHIRL_EINVAL, 0}};
+  for (size_t i = 0; i < sizeof nums / sizeof nums[0]; i++) {
+    double got = -7.0;
+    rc = whirl_run_number(nums[i].text, &got);
+    ok(rc == nums[i].rc && (rc != WHIRL_OK ? got == -7.0 : got == nums[i].x),
+       "whirl_run_number('%s') = %d (want %d), x = %g", nums[i].text, rc,
+       nums[i].rc, got);
+  }
+  double tiny = 1.0;
+  rc = whirl_run_number("4.9406564584124654e-324", &tiny);
+  ok(rc == WHIRL_OK && tiny > 0 && tiny < 1e-320, "the smallest denormal is read (%g)",
+     tiny);
 
   ok(strcmp(whirl_strerror(WHIRL_ENOCONV), "Newton iteration did not converge") == 0,
      "status messages");

@@ -1,0 +1,5 @@
+# whirl solutions: model ab, npar 3
+LAB 1 TY EP BR 1 PT 0 KIND eq ICP 1 ICP2 0 NX 2 STAB 1
+PAR 0 14 3
+X 4.9406564584124654e-324 -0
+END
