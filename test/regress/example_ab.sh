@@ -8,6 +8,8 @@
 #       Hopf where the trace -(2+beta) - c y/(1-c y) + (1+beta) y vanishes;
 #   (2) AUTO-07p's output for its demo 'ab' (doc/auto-reference.md), to 6
 #       significant digits.
+# CC, CFLAGS and LDFLAGS in the environment (make check exports whirl's
+# own) reach the example's make: a sanitized whirl needs them there.
 # SPDX-License-Identifier: BSD-3-Clause
 set -u
 top_builddir=${top_builddir:-.}

@@ -10,6 +10,8 @@
 #   (2) with the hardening spring the response bends over: two folds (LP)
 #       and three responses at W = 1.2 (UZ), the middle one unstable;
 #   (3) the outputs exist: branches.tsv, solutions, run.log, diagram.png.
+# CC, CFLAGS and LDFLAGS in the environment (make check exports whirl's
+# own) reach the example's make: a sanitized whirl needs them there.
 # SPDX-License-Identifier: BSD-3-Clause
 set -u
 top_builddir=${top_builddir:-.}
