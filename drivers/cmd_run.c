@@ -745,7 +745,9 @@ int cmd_run(int argc, char **argv) {
   if (rc != WHIRL_OK) {
     fprintf(stderr, "whirl run: %s\n", whirl_runfile_errmsg(R.rf));
     whirl_runfile_free(R.rf);
-    return 2;
+    /* a run file that exists but cannot be read is an I/O error (1); a
+     * missing one, like any mistake in it, is bad input (2) */
+    return rc == WHIRL_EIO && access(file, F_OK) == 0 ? 1 : 2;
   }
   R.s = whirl_runfile_settings(R.rf);
   /* directory of the run file: plug-in paths are relative to it */

@@ -121,6 +121,15 @@ rc=$?
 [ $rc -eq 0 ] && [ -s emptydir/history.tsv ]
 ok $? "an empty directory is a valid output directory (exit $rc)"
 
+# I/O errors exit 1, bad input 2: a run file that cannot be read, one missing
+mkdir -p dir.whirl
+"$WHIRL" run dir.whirl > /dev/null 2> err.txt
+rc=$?
+"$WHIRL" run missing.whirl > /dev/null 2> err2.txt
+rc2=$?
+[ $rc -eq 1 ] && [ $rc2 -eq 2 ] && [ -s err.txt ] && [ -s err2.txt ]
+ok $? "unreadable run file: exit $rc (I/O, want 1); missing run file: exit $rc2 (want 2): $(head -n 1 err.txt)"
+
 # ---- 3. nothing injected through names -------------------------------------
 inj="x';system('touch INJECTED');print '.whirl"
 cp small.whirl "$inj"
