@@ -1,5 +1,5 @@
 /* rotor/models.c — the rotor module's models for `whirl run` (model = sfd,
- * model = sfd-rotating), registered by whirl_rotor_register_models: the
+ * model = sfd-rotating, model = jeffcott), registered by whirl_rotor_register_models: the
  * same vector fields as the sfd commands use, Table 1's parameters as
  * defaults, the journal at rest in the centre as the start, and the
  * physical parameter ranges of whirl_sfd_check_params.
@@ -40,5 +40,6 @@ int whirl_rotor_register_models(whirl_model_registry *reg, char *msg, size_t len
       .check_params = sfd_check};
   int rc = whirl_model_registry_add(reg, "sfd", &fixed, msg, len);
   if (rc == WHIRL_OK) rc = whirl_model_registry_add(reg, "sfd-rotating", &rotating, msg, len);
+  if (rc == WHIRL_OK) rc = whirl_model_registry_add(reg, "jeffcott", whirl_rotor_jeffcott(), msg, len);
   return rc;
 }

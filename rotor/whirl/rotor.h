@@ -4,7 +4,8 @@
  * squeeze-film dampers of the paper (sfd.h: the force, both frames, eq. 15;
  * sfd_dynamics.h: time-domain attractors and basins; sfd_periodic.h:
  * periodic responses and the nonsynchronous branch; sfd_region.h: the isola
- * merge curve and region of Fig. 18), registered for `whirl run` by
+ * merge curve and region of Fig. 18) and the Jeffcott rotor on the same
+ * dampers (whirl_rotor_jeffcott), registered for `whirl run` by
  * whirl_rotor_register_models.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_ROTOR_H
@@ -20,10 +21,16 @@
 extern "C" {
 #endif
 
+/* The Jeffcott rotor (a disc on a flexible massless shaft) on two short
+ * pi-film SFDs, fixed frame, forced: x = (yd, zd, yj, zj, dyd, dzd, dyj,
+ * dzj), p = (Omega, lambda, delta, zeta, alpha, kappa) (doc/jeffcott-model.md).
+ * kappa -> infinity is the rigid rotor of whirl_sfd_fixed. */
+WHIRL_API const whirl_model *whirl_rotor_jeffcott(void);
+
 /* Add the rotor module's models to a registry of `whirl run` models:
- * "sfd" (the SFD rigid rotor in the fixed frame, forced at Omega) and
+ * "sfd" (the SFD rigid rotor in the fixed frame, forced at Omega),
  * "sfd-rotating" (the same in the rotating frame, where circular orbits are
- * equilibria).  WHIRL_OK, or an error status with the reason in msg. */
+ * equilibria) and "jeffcott" (whirl_rotor_jeffcott).  WHIRL_OK, or an error status with the reason in msg. */
 WHIRL_API int whirl_rotor_register_models(whirl_model_registry *reg, char *msg,
                                           size_t len);
 

@@ -292,7 +292,7 @@ c 2 "missing model" "$F:2: end of file without the required key ${q}model$q" 'IC
 c 2 "missing ICP" "$F:2: end of file without the required key ${q}ICP$q" 'model = ./ab.so\nNMX = 10\n'
 c 2 "empty run file" "$F(:1)?: .*model" ''
 # the model
-c 2 "unknown built-in model name" "$F:1: model: ${q}nosuch$q is neither a built-in model \(sfd, sfd-rotating\)" 'model = nosuch\nICP = [Da]\n'
+c 2 "unknown built-in model name" "$F:1: model: ${q}nosuch$q is neither a built-in model \(sfd, sfd-rotating, jeffcott\)" 'model = nosuch\nICP = [Da]\n'
 c 2 "plug-in path that does not exist" "$F:1: model: cannot open plug-in ${q}(\./)*nosuch\.so$q: No such file" 'model = ./nosuch.so\nICP = [Da]\n'
 c 2 "plug-in name that does not exist" "$F:1: model: cannot open plug-in ${q}(\./)*nosuch\.so$q: No such file" 'model = nosuch.so\nICP = [Da]\n'
 c 2 "plug-in without the symbol" "$F:1: model: plug-in ${q}(\./)*nosym\.so$q does not export the symbol ${q}whirl_model_def$q" 'model = ./nosym.so\nICP = [Da]\n'

@@ -1,5 +1,5 @@
-/* test/unit/t_jeffcott.c — the Jeffcott-rotor plug-in
- * (examples/jeffcott/jeffcott.c, doc/jeffcott-model.md), through the public
+/* test/unit/t_jeffcott.c — the Jeffcott rotor of the rotor module
+ * (rotor/jeffcott.c, doc/jeffcott-model.md), through the public
  * API only:
  *  (a) analytic jac_x, jac_p against central differences at random states
  *      and parameters (and a deliberately broken Jacobian must fail);
@@ -15,7 +15,7 @@
  *      linear limit (force -pi lambda v) against HBM to O(delta^2);
  *  (d) contact (eps >= 1) is WHIRL_SFD_CONTACT in every callback.
  * SPDX-License-Identifier: BSD-3-Clause */
-#include "../../examples/jeffcott/jeffcott.c"
+#include "../../rotor/jeffcott.c"
 
 #include <complex.h>
 #include <stdlib.h>
@@ -27,7 +27,7 @@
 
 #define PI 3.14159265358979323846
 
-static const whirl_problem *jeff = &whirl_model_def.problem;
+static const whirl_problem *jeff = &jeffcott_model.problem;
 
 /* ------------------------------------------------------------------------
  * Closed form of the synchronous circular orbits (doc/jeffcott-model.md §5).
@@ -121,7 +121,7 @@ static whirl_hbm *hbm_of(const whirl_problem *prob, size_t N) {
   return h;
 }
 
-/* Table 1 with the defaults of the plug-in for alpha, kappa. */
+/* Table 1 with the defaults of the model for alpha, kappa. */
 static void table1(double *p, double Om, double zeta, double alpha,
                    double kappa) {
   p[J_OMEGA] = Om, p[J_LAMBDA] = 0.0503, p[J_DELTA] = 0.3, p[J_ZETA] = zeta;
@@ -131,7 +131,7 @@ static void table1(double *p, double Om, double zeta, double alpha,
 /* ------------------------------------------------------------------------
  * The model description itself. */
 static void test_model(void) {
-  const whirl_model *m = &whirl_model_def;
+  const whirl_model *m = whirl_rotor_jeffcott();
   ok(m->abi == WHIRL_MODEL_ABI && jeff->n == 8 && jeff->npar == 6 &&
          m->forcing_param == 0 && jeff->autonomous == 0,
      "model: abi %d, n 8, npar 6, forced at p[0]", m->abi);

@@ -861,10 +861,13 @@ static void test_fe_domain(void) {
   p[WHIRL_SFD_FE] = 1.5;
   whirl_model_registry *reg = whirl_model_registry_alloc();
   const int rc = reg ? whirl_rotor_register_models(reg, msg, sizeof msg) : WHIRL_ENOMEM;
-  ok(rc == WHIRL_OK && whirl_model_registry_count(reg) == 2 &&
-         !strcmp(whirl_model_registry_name(reg, 1), "sfd-rotating"),
-     "the rotor module registers its models (%zu: %s, %s)", whirl_model_registry_count(reg),
-     whirl_model_registry_name(reg, 0), whirl_model_registry_name(reg, 1));
+  ok(rc == WHIRL_OK && whirl_model_registry_count(reg) == 3 &&
+         !strcmp(whirl_model_registry_name(reg, 1), "sfd-rotating") &&
+         whirl_model_registry_find(reg, "jeffcott") &&
+         whirl_model_registry_find(reg, "jeffcott")->problem.n == 8,
+     "the rotor module registers its models (%zu: %s, %s, %s)",
+     whirl_model_registry_count(reg), whirl_model_registry_name(reg, 0),
+     whirl_model_registry_name(reg, 1), whirl_model_registry_name(reg, 2));
   const whirl_model *sfd = whirl_model_registry_find(reg, "sfd");
   ok(whirl_model_check_params(sfd, p, msg, sizeof msg) == WHIRL_EINVAL &&
          strstr(msg, "FE must be in (-1, 1)"),

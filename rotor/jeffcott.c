@@ -1,7 +1,7 @@
-/* examples/jeffcott/jeffcott.c — a Jeffcott (flexible) rotor on two identical
- * short squeeze-film dampers, as a whirl plug-in written against the public
- * API only (whirl/whirl.h, whirl/model.h; the damper force is
- * whirl_sfd_force of the rigid-rotor module).  Derivation, scaling and checks:
+/* rotor/jeffcott.c — a Jeffcott (flexible) rotor on two identical short
+ * squeeze-film dampers, a model of the rotor module (`model = jeffcott` in
+ * run files, whirl_rotor_jeffcott), written against libwhirl's public API
+ * only (the damper force is whirl_sfd_force of the rigid-rotor model).  Derivation, scaling and checks:
  * doc/jeffcott-model.md.
  *
  * A disc of mass m_d at mid-span of a massless shaft (stiffness k_s at the
@@ -31,7 +31,6 @@
  * continuation in alpha or kappa ends at the edge instead of failing);
  * non-finite t or parameters are WHIRL_EINVAL (fatal).
  *
- * Build:  make   (cc -shared -fPIC ... $(pkg-config --cflags --libs whirl))
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stddef.h>
@@ -158,7 +157,7 @@ static const char *const jeffcott_p_names[J_NPAR] = {"Omega", "lambda", "delta",
 static const double jeffcott_par0[J_NPAR] = {1.0, 0.0503, 0.3, 0.05, 0.5, 10.0};
 static const double jeffcott_u0[J_N] = {0, 0, 0, 0, 0, 0, 0, 0};
 
-const whirl_model whirl_model_def = {
+static const whirl_model jeffcott_model = {
     .abi = WHIRL_MODEL_ABI,
     .problem = {.name = "jeffcott",
                 .n = J_N,
@@ -177,3 +176,5 @@ const whirl_model whirl_model_def = {
     .forcing_param = J_OMEGA,
     .description = "Jeffcott rotor (disc on a flexible shaft) on two short "
                    "pi-film squeeze-film dampers, fixed frame, forced"};
+
+const whirl_model *whirl_rotor_jeffcott(void) { return &jeffcott_model; }
