@@ -16,27 +16,16 @@
 
 #define CMD "sfd onset"
 
-static void help(FILE *f) {
-  fprintf(f,
+static const cli_doc doc = {
 "usage: whirl sfd onset --from A --to B [options]\n"
 "\n"
 "Bisection in Omega for the onset of the nonsynchronous response from rest\n"
 "(zero initial conditions).  At A the response from rest must settle on a\n"
 "circular orbit and at B it must not (or the other way round).\n"
 "\n"
-"options (defaults: Table 1 of the paper):\n"
-"  --from A --to B   bracket (required)\n"
-"  --tol T           width of the final bracket              (1e-5)\n"
-"  --periods P       periods before a response counts as\n"
-"                    nonsynchronous                           (3000)\n"
-"  --lambda L --delta D --zeta Z   model parameters  (0.0503 0.3 0)\n"
-"  --rtol R --atol A  integration tolerances         (1e-12, 1e-15)\n"
-"                    1e-13 <= R <= 1e-3, 0 < A <= 1e-3\n"
-"  --quiet\n"
-"\n"
+"options (defaults: Table 1 of the paper):\n",
 "stdout: TSV 'Omega class periods' for every speed tried, then a line\n"
-"'onset<TAB>lo<TAB>hi'.\n");
-}
+"'onset<TAB>lo<TAB>hi'.\n"};
 
 /* 1 synchronous (captured by a circular orbit), 0 not, -1 contact, < -1
  * error.  *per: periods integrated. */
@@ -88,12 +77,15 @@ int cmd_sfd_onset(int argc, char **argv) {
   size_t periods = 3000;
   int quiet = 0;
   const cli_opt opts[] = {
-      {"--from", CLI_DOUBLE, &from},       {"--to", CLI_DOUBLE, &to},
-      {"--tol", CLI_DOUBLE, &tol},         {"--periods", CLI_SIZE, &periods},
-      {"--lambda", CLI_DOUBLE, &p[1]},     {"--delta", CLI_DOUBLE, &p[2]},
-      {"--zeta", CLI_DOUBLE, &p[3]},       {"--rtol", CLI_DOUBLE, &rtol},
-      {"--atol", CLI_DOUBLE, &atol},       {"--quiet", CLI_FLAG, &quiet}};
-  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+      {"--from", CLI_DOUBLE, &from, "A", "one end of the bracket, A > 0", NULL},
+      {"--to", CLI_DOUBLE, &to, "B", "the other end, B > 0", NULL},
+      {"--tol", CLI_DOUBLE, &tol, "T", "width of the final bracket", NULL},
+      {"--periods", CLI_SIZE, &periods, "P",
+       "periods before a response counts as nonsynchronous", NULL},
+      SFD_OPTS_MODEL(p),
+      SFD_OPTS_TOL(rtol, atol),
+      CLI_OPT_QUIET(quiet)};
+  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
   if (isnan(from) || isnan(to)) {
     cli_error(CMD, "--from and --to are required (e.g. --from 8.5 --to 8.6)");

@@ -17,37 +17,23 @@
 
 #define CMD "sfd sweep"
 
-static void help(FILE *f) {
-  fprintf(f,
+static const cli_doc doc = {
 "usage: whirl sfd sweep --from A --to B --step S [options]\n"
 "\n"
 "Up and/or down sweep of the speed by time integration, each speed started\n"
-"from the end state of the previous one (the first from rest, or --y0 ...).\n"
+"from the end state of the previous one (the first of each direction from\n"
+"rest, or from --y0 --z0 --vy0 --vz0).\n"
 "A speed is finished when successive Poincare points (once per forcing\n"
 "period) differ by less than --settle (relative) for 3 periods, else after\n"
 "--periods periods; then --record periods are kept as the steady state.\n"
 "\n"
-"options (defaults: Table 1 of the paper):\n"
-"  --from A --to B   speed range, A, B > 0 (required)\n"
-"  --step S          speed step > 0 (required)\n"
-"  --direction D     up, down or both                    (both)\n"
-"  --periods N       most periods per speed               (600)\n"
-"  --record R        periods kept as steady state         (400)\n"
-"  --settle TOL      convergence of the section           (1e-11)\n"
-"  --y0 --z0 --vy0 --vz0   initial state of each direction (0)\n"
-"  --lambda L --delta D --zeta Z   model parameters   (0.0503 0.3 0)\n"
-"  --rtol R --atol A  integration tolerances          (1e-12, 1e-15)\n"
-"                    1e-13 <= R <= 1e-3, 0 < A <= 1e-3\n"
-"  --out DIR         output directory                     (sfd-sweep)\n"
-"  --no-plot  --quiet\n"
-"\n"
+"options (defaults: Table 1 of the paper):\n",
 "stdout and DIR/sweep.tsv: direction Omega class eps_max eps_min periods\n"
 "eps_eq15 diff (eps_eq15: the radius of eq. 15 nearest to the settled\n"
 "circular orbit, diff = eps_max - eps_eq15).  DIR/poincare.tsv: the\n"
 "section points against Omega.  DIR/sweep.png: amplitudes over the\n"
 "continuation curve (Fig. 3); DIR/bifurcation.png: y of the section\n"
-"points against Omega (Fig. 11).\n");
-}
+"points against Omega (Fig. 11).\n"};
 
 typedef struct {
   double P[4]; /* last section point */
@@ -178,17 +164,18 @@ int cmd_sfd_sweep(int argc, char **argv) {
   const char *dir = "sfd-sweep", *direction = "both";
   int noplot = 0, quiet = 0;
   const cli_opt opts[] = {
-      {"--from", CLI_DOUBLE, &from},        {"--to", CLI_DOUBLE, &to},
-      {"--step", CLI_DOUBLE, &step},        {"--direction", CLI_STRING, &direction},
-      {"--periods", CLI_SIZE, &periods},    {"--record", CLI_SIZE, &record},
-      {"--settle", CLI_DOUBLE, &settle},    {"--lambda", CLI_DOUBLE, &p[WHIRL_SFD_LAMBDA]},
-      {"--delta", CLI_DOUBLE, &p[WHIRL_SFD_DELTA]}, {"--zeta", CLI_DOUBLE, &p[WHIRL_SFD_ZETA]},
-      {"--y0", CLI_DOUBLE, &x0[0]},         {"--z0", CLI_DOUBLE, &x0[1]},
-      {"--vy0", CLI_DOUBLE, &x0[2]},        {"--vz0", CLI_DOUBLE, &x0[3]},
-      {"--rtol", CLI_DOUBLE, &rtol},        {"--atol", CLI_DOUBLE, &atol},
-      {"--out", CLI_STRING, &dir},          {"--no-plot", CLI_FLAG, &noplot},
-      {"--quiet", CLI_FLAG, &quiet}};
-  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+      {"--from", CLI_DOUBLE, &from, "A", "one end of the speed range, A > 0", NULL},
+      {"--to", CLI_DOUBLE, &to, "B", "the other end, B > 0", NULL},
+      {"--step", CLI_DOUBLE, &step, "S", "speed step, S > 0", NULL},
+      {"--direction", CLI_STRING, &direction, "D", "up, down or both", NULL},
+      {"--periods", CLI_SIZE, &periods, "N", "most periods per speed", NULL},
+      {"--record", CLI_SIZE, &record, "R", "periods kept as steady state", NULL},
+      {"--settle", CLI_DOUBLE, &settle, "TOL", "convergence of the section", NULL},
+      SFD_OPTS_STATE(x0),
+      SFD_OPTS_MODEL(p),
+      SFD_OPTS_TOL(rtol, atol),
+      CLI_OPTS_OUT(dir, noplot, quiet)};
+  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
   if (isnan(from) || isnan(to) || isnan(step)) {
     cli_error(CMD, "--from, --to and --step are required (e.g. --from 1 --to 10 --step 0.05)");

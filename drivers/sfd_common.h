@@ -7,6 +7,49 @@
 
 #include <stddef.h>
 
+#include <whirl/sfd.h>
+
+#include "cli.h"
+
+/* The SFD model's parameters as entries of a command's option table
+ * (cli_opt initialisers, in the order the command's --help lists them).  P
+ * is the command's parameter vector, filled by whirl_sfd_default_params:
+ * its values are the defaults --help shows.  The ranges are those of
+ * whirl_sfd_check_params (whirl/sfd.h), which sfd_check applies. */
+#define SFD_OPT_OMEGA(p)                                                      \
+  {"--omega", CLI_DOUBLE, &(p)[WHIRL_SFD_OMEGA], "W",                         \
+   "dimensionless speed Omega, 0 < W <= 1000", NULL}
+#define SFD_OPT_LAMBDA(p)                                                     \
+  {"--lambda", CLI_DOUBLE, &(p)[WHIRL_SFD_LAMBDA], "L",                       \
+   "SFD constant lambda, 0 < L <= 100", NULL}
+#define SFD_OPT_DELTA(p)                                                      \
+  {"--delta", CLI_DOUBLE, &(p)[WHIRL_SFD_DELTA], "D",                         \
+   "unbalance delta = e_G/c, 0 <= D <= 10", NULL}
+#define SFD_OPT_ZETA(p)                                                       \
+  {"--zeta", CLI_DOUBLE, &(p)[WHIRL_SFD_ZETA], "Z",                           \
+   "external damping ratio zeta, 0 <= Z <= 10", NULL}
+#define SFD_OPT_FE(p)                                                         \
+  {"--fe", CLI_DOUBLE, &(p)[WHIRL_SFD_FE], "F",                               \
+   "static force F_E (gravity not fully compensated by the centring "        \
+   "springs; static deflection F_E), |F| < 1", NULL}
+/* lambda, delta, zeta: the model of Table 1 */
+#define SFD_OPTS_MODEL(p) SFD_OPT_LAMBDA(p), SFD_OPT_DELTA(p), SFD_OPT_ZETA(p)
+
+/* --y0 --z0 --vy0 --vz0: the initial state x0[4] of a time integration */
+#define SFD_OPTS_STATE(x0)                                                    \
+  {"--y0", CLI_DOUBLE, &(x0)[0], "A", "initial displacement y / clearance", NULL}, \
+  {"--z0", CLI_DOUBLE, &(x0)[1], "B", "initial displacement z / clearance", NULL}, \
+  {"--vy0", CLI_DOUBLE, &(x0)[2], "C", "initial velocity y'", NULL},          \
+  {"--vz0", CLI_DOUBLE, &(x0)[3], "D", "initial velocity z'", NULL}
+
+/* --rtol, --atol of the time integrations (limits: whirl/basins.h, checked
+ * by sfd_check_tolerances). */
+#define SFD_OPTS_TOL(rtol, atol)                                              \
+  {"--rtol", CLI_DOUBLE, &(rtol), "R",                                        \
+   "relative integration tolerance, 1e-13 <= R <= 1e-3", NULL},       \
+  {"--atol", CLI_DOUBLE, &(atol), "A",                                        \
+   "absolute integration tolerance, 0 < A <= 1e-3", NULL}
+
 /* Character of a steady state from npts stroboscopic points P[npts*4] (time
  * order) and the spread of ε over the last period (max − min):
  * "circular" (one point, constant ε), "periodic" (k points; *period = k),
