@@ -104,15 +104,7 @@ int cmd_sfd_basins(int argc, char **argv) {
       CLI_OPTS_OUT(dir, noplot, quiet)};
   int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
-  if (isnan(p[WHIRL_SFD_OMEGA])) {
-    cli_error(CMD, "--omega is required (e.g. --omega 1.78)");
-    return 2;
-  }
-  if (!(p[WHIRL_SFD_OMEGA] > 0)) {
-    cli_error(CMD, "--omega must be > 0 (got %g)", p[WHIRL_SFD_OMEGA]);
-    return 2;
-  }
-  if (sfd_check(CMD, p)) return 2;
+  if (sfd_check(CMD, p, 1)) return 2;
   int vmode = !strcmp(vel, "zero") ? 0 : !strcmp(vel, "circular") ? 1 : !strcmp(vel, "trajectory") ? 2 : -1;
   if (vmode < 0) {
     cli_error(CMD, "--velocities must be zero, circular or trajectory (got '%s')", vel);

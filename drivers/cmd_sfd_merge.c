@@ -39,18 +39,7 @@ int cmd_sfd_merge(int argc, char **argv) {
   int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
   const double lambda = p[WHIRL_SFD_LAMBDA], zeta = p[WHIRL_SFD_ZETA];
-  if (isnan(lambda)) {
-    cli_error(CMD, "--lambda is required (e.g. --lambda 0.25)");
-    return 2;
-  }
-  if (!(lambda > 0) || lambda > 1e3) {
-    cli_error(CMD, "--lambda must be in (0, 1000] (got %g)", lambda);
-    return 2;
-  }
-  if (!(zeta >= 0) || zeta > 10) {
-    cli_error(CMD, "--zeta must be in [0, 10] (got %g)", zeta);
-    return 2;
-  }
+  if (sfd_check(CMD, p, 0)) return 2;
   char msg[512] = "";
   whirl_sfd_curve mp;
   const double t0 = cli_now();

@@ -189,10 +189,7 @@ int cmd_sfd_nonsync(int argc, char **argv) {
   }
   char msg[512];
   p[WHIRL_SFD_OMEGA] = w0;
-  if (whirl_sfd_check_params(p, msg, sizeof msg) != WHIRL_OK) {
-    cli_error(CMD, "%s", msg);
-    return 2;
-  }
+  if (sfd_check(CMD, p, 0)) return 2;
   if (!(o.omega_min > 0) || !(o.omega_max > o.omega_min) || !(w0 >= o.omega_min) ||
       !(w0 <= o.omega_max)) {
     cli_error(CMD, "need 0 < --omega-min <= --omega-start <= --omega-max (got %g, %g, %g)",

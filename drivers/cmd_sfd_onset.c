@@ -97,7 +97,7 @@ int cmd_sfd_onset(int argc, char **argv) {
   }
   if (sfd_check_tolerances(CMD, rtol, atol)) return 2;
   p[0] = fmax(from, to);
-  if (sfd_check(CMD, p)) return 2;
+  if (sfd_check(CMD, p, 0)) return 2;
   char msg[512];
   unsigned per = 0;
   printf("Omega\tclass\tperiods\n");

@@ -121,10 +121,7 @@ int cmd_sfd_region(int argc, char **argv) {
   int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
   o.zeta = p[WHIRL_SFD_ZETA];
-  if (!(o.zeta >= 0) || o.zeta > 10) {
-    cli_error(CMD, "--zeta must be in [0, 10] (got %g)", o.zeta);
-    return 2;
-  }
+  if (sfd_check(CMD, p, 0)) return 2;
   if (!(o.omega_max > 1) || o.omega_max > 1000) {
     cli_error(CMD, "--omega-max must be in (1, 1000] (got %g)", o.omega_max);
     return 2;

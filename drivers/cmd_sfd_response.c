@@ -356,15 +356,6 @@ int cmd_sfd_response(int argc, char **argv) {
                    "circular (use --method hbm or colloc)", p[WHIRL_SFD_FE]);
     return 2;
   }
-  if (!isfinite(p[WHIRL_SFD_FE])) {
-    cli_error(CMD, "--fe must be finite");
-    return 2;
-  }
-  if (fabs(p[WHIRL_SFD_FE]) >= 1.0) {
-    cli_error(CMD, "--fe %g: the static deflection |F_E| >= 1 puts the journal on the "
-                   "housing (|F_E| < 1 needed)", p[WHIRL_SFD_FE]);
-    return 2;
-  }
   if (!has_option(argc, argv, "--ds") && periodic) o.ds = po.ds;
   if (!(omega_min == omega_min)) omega_min = periodic ? po.omega_min : o.omega_min;
   o.omega_min = omega_min;
@@ -389,10 +380,7 @@ int cmd_sfd_response(int argc, char **argv) {
     return 2;
   }
   p[WHIRL_SFD_OMEGA] = o.omega_max;
-  if (whirl_sfd_check_params(p, msg, sizeof msg) != WHIRL_OK) {
-    cli_error(CMD, "%s", msg);
-    return 2;
-  }
+  if (sfd_check(CMD, p, 0)) return 2;
   if (!(p[WHIRL_SFD_DELTA] > 0)) {
     cli_error(CMD, "--delta must be > 0: without unbalance the rotor stays in the "
                    "centre and there is no orbit to trace");

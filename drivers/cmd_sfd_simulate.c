@@ -141,15 +141,7 @@ int cmd_sfd_simulate(int argc, char **argv) {
       CLI_OPTS_OUT(dir, noplot, quiet)};
   int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
-  if (isnan(p[WHIRL_SFD_OMEGA])) {
-    cli_error(CMD, "--omega is required (the dimensionless speed, e.g. --omega 8.7)");
-    return 2;
-  }
-  if (!(p[WHIRL_SFD_OMEGA] > 0)) {
-    cli_error(CMD, "--omega must be > 0 (got %g)", p[WHIRL_SFD_OMEGA]);
-    return 2;
-  }
-  if (sfd_check(CMD, p)) return 2;
+  if (sfd_check(CMD, p, 1)) return 2;
   if (hypot(x0[0], x0[1]) >= 1) {
     cli_error(CMD, "the initial displacement (%g, %g) is outside the clearance "
               "(|(y0, z0)| = %g must be < 1)", x0[0], x0[1], hypot(x0[0], x0[1]));

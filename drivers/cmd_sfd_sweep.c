@@ -213,7 +213,7 @@ int cmd_sfd_sweep(int argc, char **argv) {
     return 2;
   }
   p[WHIRL_SFD_OMEGA] = hi;
-  if (sfd_check(CMD, p)) return 2;
+  if (sfd_check(CMD, p, 0)) return 2;
   if (hypot(x0[0], x0[1]) >= 1) {
     cli_error(CMD, "the initial displacement is outside the clearance (|(y0, z0)| must be < 1)");
     return 2;

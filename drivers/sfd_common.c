@@ -50,7 +50,24 @@ const char *sfd_steady_class(const double *P, size_t npts, double eps_spread,
   return kind == WHIRL_SECTION_CURVE ? "quasiperiodic" : "irregular";
 }
 
-int sfd_check(const char *cmd, const double *p) {
+/* The options of the parameters, for the messages (whirl/sfd.h's order). */
+static const char *const param_option[WHIRL_SFD_NPAR][2] = {
+    {"--omega", "the dimensionless speed, e.g. --omega 8.7"},
+    {"--lambda", "the SFD constant, e.g. --lambda 0.25"},
+    {"--delta", "the unbalance, e.g. --delta 0.3"},
+    {"--zeta", "the external damping ratio, e.g. --zeta 0"},
+    {"--fe", "the static force, e.g. --fe 0"}};
+
+int sfd_check(const char *cmd, const double *p, int omega_option) {
+  for (int k = 0; k < WHIRL_SFD_NPAR; ++k)
+    if (isnan(p[k])) {
+      cli_error(cmd, "%s is required (%s)", param_option[k][0], param_option[k][1]);
+      return -1;
+    }
+  if (omega_option && !(p[WHIRL_SFD_OMEGA] > 0)) {
+    cli_error(cmd, "--omega must be > 0 (got %g)", p[WHIRL_SFD_OMEGA]);
+    return -1;
+  }
   char msg[256];
   if (whirl_sfd_check_params(p, msg, sizeof msg) != WHIRL_OK) {
     cli_error(cmd, "%s", msg);

@@ -59,8 +59,14 @@
 const char *sfd_steady_class(const double *P, size_t npts, double eps_spread,
                              size_t *period, double *dimension);
 
-/* Check the SFD parameter vector and print a message naming the option. */
-int sfd_check(const char *cmd, const double *p);
+/* Check a command's SFD parameters p[WHIRL_SFD_NPAR] (the options above)
+ * and print a message naming the parameter; 0 if they are usable, -1 if
+ * not.  A NaN is an option that is required and was not given.  With
+ * OMEGA_OPTION, p[WHIRL_SFD_OMEGA] is the option --omega and must be > 0;
+ * otherwise the command puts there the largest speed it reaches (response
+ * --omega-max, sweep --to), checked against the model's range only.  Then
+ * the model's ranges: whirl_sfd_check_params. */
+int sfd_check(const char *cmd, const double *p, int omega_option);
 
 /* Check --rtol/--atol against the library's limits (whirl/basins.h) and
  * print a message naming the option; 0 if they are usable, -1 if not. */
