@@ -106,9 +106,9 @@ static int write_plots(cli_outdir *od, const whirl_sfd_periodic *ns,
         fprintf(f, "%.10g %.10g %.10g %.10g\n", ns->br[b].pts[i].Omega,
                 ns->br[b].pts[i].eps_max, ns->br[b].pts[i].eps_min, ns->br[b].pts[i].f2);
   fprintf(f, "EOD\n");
+  char title[256];
   fprintf(f,
-          "set title 'nonsynchronous response (rotating-frame cycle): {/Symbol l} = %g, "
-          "{/Symbol d} = %g, {/Symbol z} = %g'\n"
+          "set title 'nonsynchronous response (rotating-frame cycle): %s'\n"
           "set xlabel 'dimensionless speed {/Symbol W}'\n"
           "set ylabel 'eccentricity {/Symbol e}'\n"
           "set xrange [%g:%g]\nset yrange [0:1]\nset grid\nset key bottom right box opaque\n"
@@ -120,7 +120,7 @@ static int write_plots(cli_outdir *od, const whirl_sfd_periodic *ns,
           "     $ns1 using 1:3 with lines dt 2 lw 2 lc rgb '#ff7f0e' title 'nonsync {/Symbol e}_{min}, unstable', \\\n"
           "     $lp using 1:2 with points pt 7 ps 1.6 lc rgb '#2ca02c' title 'LP of cycles (birth)', \\\n"
           "     $lp using 1:3 with points pt 7 ps 1.6 lc rgb '#2ca02c' notitle\n",
-          p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA], wmin, wmax);
+          sfd_gp_params(title, sizeof title, p, SFD_P_MODEL), wmin, wmax);
   if (out_commit(&o)) return -1;
 
   if (out_open(&o, od, "f2.gp")) return -1;

@@ -254,8 +254,9 @@ static int write_response_gp(cli_outdir *od, const tab *res,
       fprintf(f, "set label '%c' at %.10g, graph 0.95 center font 'Sans,14' tc rgb '#d62728'\n",
               'A' + i, xs[i]);
   }
+  char title[256];
   fprintf(f,
-          "set title 'SFD rigid rotor, %s: {/Symbol l} = %g, {/Symbol d} = %g, {/Symbol z} = %g, F_E = %g'\n"
+          "set title 'SFD rigid rotor, %s: %s'\n"
           "set xlabel 'dimensionless speed {/Symbol W}'\n"
           "set ylabel '%s'\n"
           "set xrange [0:%g]\nset yrange [0:1]\nset grid\nset key bottom right box opaque\n"
@@ -263,8 +264,7 @@ static int write_response_gp(cli_outdir *od, const tab *res,
           "     $unstable using 1:2 with lines dt 2 lw 2.5 lc rgb '#1f4e9c' title 'unstable', \\\n"
           "     $special using 1:2 with points pt 7 ps 1.6 lc rgb '#2ca02c' title 'LP (saddle-node)'\n",
           p[WHIRL_SFD_FE] == 0.0 ? "circular orbits" : "synchronous orbits",
-          p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA], p[WHIRL_SFD_FE],
-          ylab, wmax);
+          sfd_gp_params(title, sizeof title, p, SFD_P_MODEL | SFD_P(WHIRL_SFD_FE)), ylab, wmax);
   return out_commit(&o);
 }
 

@@ -74,11 +74,9 @@ static int write_gp(cli_outdir *od, const char *name, const char *body,
   snprintf(file, sizeof file, "%s.gp", name);
   if (out_open(&o, od, file)) return -1;
   cli_gp_preamble(o.fp, CMD, name, 1000, 800, "Sans,12");
-  fprintf(o.fp,
-          "set grid\n"
-          "set title 'SFD rotor, {/Symbol W} = %g, {/Symbol l} = %g, "
-          "{/Symbol d} = %g, {/Symbol z} = %g, F_E = %g'\n%s",
-          p[0], p[1], p[2], p[3], p[4], body);
+  char title[256];
+  fprintf(o.fp, "set grid\nset title 'SFD rotor, %s'\n%s",
+          sfd_gp_params(title, sizeof title, p, ~0u), body);
   return out_commit(&o);
 }
 

@@ -128,16 +128,17 @@ static int write_scripts(cli_outdir *od, const double *p, double lo, double hi, 
         }
       fprintf(f, "EOD\n");
     }
+    char title[256];
     fprintf(f,
-            "set title 'speed sweep by time integration over the circular orbits: {/Symbol l} = %g, "
-            "{/Symbol d} = %g, {/Symbol z} = %g'\n"
+            "set title 'speed sweep by time integration over the circular orbits: %s'\n"
             "set xlabel 'dimensionless speed {/Symbol W}'\nset ylabel 'max relative eccentricity {/Symbol e}'\n"
             "set xrange [%g:%g]\nset yrange [0:1]\nset grid\nset key bottom right box opaque\n"
             "plot $stable using 1:2 with lines lw 2 lc rgb '#1f4e9c' title 'stable (continuation)', \\\n"
             "  $unstable using 1:2 with lines dt 2 lw 2 lc rgb '#1f4e9c' title 'unstable', \\\n"
             "  'sweep.tsv' index 0 using 2:4 with points pt 1 ps 1.2 lc rgb 'black' title '%s sweep', \\\n"
             "  'sweep.tsv' index 1 using 2:4 with points pt 1 ps 1.2 lc rgb '#2ca02c' title 'down sweep'\n",
-            p[1], p[2], p[3], fmax(0, lo - 0.02 * (hi - lo)), hi + 0.02 * (hi - lo),
+            sfd_gp_params(title, sizeof title, p, SFD_P_MODEL), fmax(0, lo - 0.02 * (hi - lo)),
+            hi + 0.02 * (hi - lo),
             up ? "up" : "down");
     bad = out_commit(&g);
   }

@@ -76,6 +76,20 @@ int sfd_check(const char *cmd, const double *p, int omega_option) {
   return 0;
 }
 
+const char *sfd_gp_params(char *buf, size_t len, const double *p, unsigned mask) {
+  static const char *const symbol[WHIRL_SFD_NPAR] = {"{/Symbol W}", "{/Symbol l}",
+                                                     "{/Symbol d}", "{/Symbol z}", "F_E"};
+  size_t used = 0;
+  buf[0] = '\0';
+  for (int k = 0; k < WHIRL_SFD_NPAR && used < len; ++k)
+    if (mask & SFD_P(k)) {
+      int n = snprintf(buf + used, len - used, "%s%s = %g", used ? ", " : "", symbol[k], p[k]);
+      if (n < 0) break;
+      used += (size_t)n;
+    }
+  return buf;
+}
+
 int sfd_check_tolerances(const char *cmd, double rtol, double atol) {
   char msg[128];
   if (whirl_basins_check_tolerances(rtol, atol, msg, sizeof msg) == WHIRL_OK)

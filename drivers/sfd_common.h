@@ -68,6 +68,14 @@ const char *sfd_steady_class(const double *P, size_t npts, double eps_spread,
  * the model's ranges: whirl_sfd_check_params. */
 int sfd_check(const char *cmd, const double *p, int omega_option);
 
+/* The parameters p[k] of the bits SFD_P(k) of MASK, in whirl/sfd.h's order,
+ * as text for a gnuplot title: "{/Symbol l} = 0.0503, {/Symbol d} = 0.3,
+ * {/Symbol z} = 0" for SFD_P_MODEL.  Returns buf. */
+#define SFD_P(k) (1u << (k))
+#define SFD_P_MODEL                                                           \
+  (SFD_P(WHIRL_SFD_LAMBDA) | SFD_P(WHIRL_SFD_DELTA) | SFD_P(WHIRL_SFD_ZETA))
+const char *sfd_gp_params(char *buf, size_t len, const double *p, unsigned mask);
+
 /* Check --rtol/--atol against the library's limits (whirl/basins.h) and
  * print a message naming the option; 0 if they are usable, -1 if not. */
 int sfd_check_tolerances(const char *cmd, double rtol, double atol);
