@@ -256,14 +256,17 @@ int cmd_sfd_simulate(int argc, char **argv) {
       emax = fmax(emax, e);
     }
     eps_spread = emax - emin;
-    cls = sfd_steady_class(P, npoin, eps_spread, &period, &dim);
+    cls = sfd_steady_class(CMD, P, npoin, eps_spread, &period, &dim);
+    if (!cls) {
+      free(P);
+      free(y);
+      free(h.buf);
+      return 1;
+    }
     for (size_t k = k0; k <= nsamp; ++k) y[k - k0] = h.buf[4 * k];
     /* dt = T/samples; frequency in units of the rotation frequency = f T */
     rc = whirl_spectrum_peaks(y, nsamp + 1 - k0, 1.0 / (double)samples, 1e-3, peaks, 12, &npk);
     if (rc != WHIRL_OK) npk = 0;
-    if (!strcmp(cls, "circular") || !strcmp(cls, "periodic")) {
-      /* a settled periodic response: only harmonics of the period remain */
-    }
     free(y);
   }
 

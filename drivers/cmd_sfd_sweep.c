@@ -305,10 +305,13 @@ int cmd_sfd_sweep(int argc, char **argv) {
         memcpy(x, whirl_ode_x(ode), sizeof x);
         size_t per = 0;
         double dim;
-        if (sc.settled) {
-          cls = rcx.emax - rcx.emin < 1e-6 ? "circular" : "periodic";
-        } else {
-          cls = sfd_steady_class(P, rcx.np, rcx.emax - rcx.emin, &per, &dim);
+        cls = sc.settled ? sfd_steady_name(WHIRL_STEADY_FIXED, rcx.emax - rcx.emin)
+                         : sfd_steady_class(CMD, P, rcx.np, rcx.emax - rcx.emin, &per, &dim);
+        if (!cls) {
+          cli_progress_end(&prog);
+          whirl_ode_free(ode);
+          status = 1;
+          break;
         }
         if (!strcmp(cls, "circular")) {
           e15 = eq15_radius(p, rcx.emax);

@@ -1,7 +1,6 @@
-/* drivers/sfd_common.c — shared by the SFD time-domain commands: the class
- * of a steady state (whirl_section_classify plus a check that the points are
- * not still converging to a fixed point, which would otherwise look like a
- * curve: a slowly settling spiral).
+/* drivers/sfd_common.c — shared by the SFD commands: the names of the
+ * classes of a steady state (whirl_steady_classify), the checks of the
+ * parameters and tolerances, the parameters in a picture's title.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdio.h>
@@ -11,43 +10,26 @@
 #include "cli.h"
 #include "sfd_common.h"
 
-static double step_len(const double *P, size_t k) {
-  double s = 0;
-  for (int i = 0; i < 4; ++i) {
-    double d = P[4 * (k + 1) + i] - P[4 * k + i];
-    s += d * d;
+const char *sfd_steady_name(whirl_steady_kind kind, double eps_spread) {
+  switch (kind) {
+    case WHIRL_STEADY_FIXED: return eps_spread < 1e-6 ? "circular" : "periodic";
+    case WHIRL_STEADY_PERIODIC: return "periodic";
+    case WHIRL_STEADY_QUASIPERIODIC: return "quasiperiodic";
+    case WHIRL_STEADY_IRREGULAR: return "irregular";
+    case WHIRL_STEADY_TRANSIENT:
+    case WHIRL_STEADY_DIVERGENT: return "transient";
   }
-  return sqrt(s);
+  return "irregular";
 }
 
-const char *sfd_steady_class(const double *P, size_t npts, double eps_spread,
+const char *sfd_steady_class(const char *cmd, const double *P, size_t npts, double eps_spread,
                              size_t *period, double *dimension) {
-  *period = 0;
-  *dimension = NAN;
-  if (npts < 64) return "transient";
-  /* still converging?  mean step over the first and the last tenth */
-  size_t m = npts / 10;
-  double a = 0, b = 0;
-  for (size_t k = 0; k < m; ++k) {
-    a += step_len(P, k);
-    b += step_len(P, npts - 2 - k);
+  whirl_steady_kind kind;
+  if (whirl_steady_classify(P, npts, 4, 1e-6, 16, &kind, period, dimension) != WHIRL_OK) {
+    cli_error(cmd, "out of memory classifying the steady state");
+    return NULL;
   }
-  whirl_section_kind kind;
-  size_t per = 0;
-  double dim = NAN;
-  int rc = whirl_section_classify(P, npts, 4, 1e-6, 16, &kind, &per, &dim);
-  if (rc != WHIRL_OK) return "irregular";
-  *dimension = dim;
-  if (kind == WHIRL_SECTION_FIXED) {
-    *period = 1;
-    return eps_spread < 1e-6 ? "circular" : "periodic";
-  }
-  if (kind == WHIRL_SECTION_PERIODIC) {
-    *period = per;
-    return "periodic";
-  }
-  if (b < 1e-3 * a) return "transient";
-  return kind == WHIRL_SECTION_CURVE ? "quasiperiodic" : "irregular";
+  return sfd_steady_name(kind, eps_spread);
 }
 
 /* The options of the parameters, for the messages (whirl/sfd.h's order). */

@@ -1,12 +1,13 @@
-/* drivers/sfd_common.h — pieces shared by the SFD time-domain commands
- * (simulate, sweep, basins, onset): the character of a steady state from
- * its Poincaré points, and the SFD parameter options.
+/* drivers/sfd_common.h — pieces shared by the SFD commands: the model's
+ * parameters as options, their checks and their text in titles, and the
+ * names of the classes of a steady state (simulate, sweep).
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_SFD_COMMON_H
 #define WHIRL_SFD_COMMON_H
 
 #include <stddef.h>
 
+#include <whirl/section.h>
 #include <whirl/sfd.h>
 
 #include "cli.h"
@@ -50,14 +51,22 @@
   {"--atol", CLI_DOUBLE, &(atol), "A",                                        \
    "absolute integration tolerance, 0 < A <= 1e-3", NULL}
 
-/* Character of a steady state from npts stroboscopic points P[npts*4] (time
- * order) and the spread of ε over the last period (max − min):
- * "circular" (one point, constant ε), "periodic" (k points; *period = k),
- * "quasiperiodic" (points on a closed curve), "irregular" (area-filling),
- * or "transient" (points still converging: successive distances shrink by
- * more than 1e3 over the record). */
-const char *sfd_steady_class(const double *P, size_t npts, double eps_spread,
-                             size_t *period, double *dimension);
+/* The class of a steady state as the SFD commands name it: a fixed point
+ * of the stroboscopic map is "circular" when the eccentricity is constant
+ * over a period (its spread max - min below 1e-6), else "periodic";
+ * "quasiperiodic", "irregular"; "transient" for points still converging or
+ * moving away (not settled yet). */
+const char *sfd_steady_name(whirl_steady_kind kind, double eps_spread);
+
+/* The class (sfd_steady_name) of the steady state sampled by npts
+ * stroboscopic points P[npts*4] (time order; whirl_steady_classify with
+ * tolerance 1e-6 and periods up to 16), eps_spread the spread of the
+ * eccentricity over the last period; *period (1 for a fixed point),
+ * *dimension as there.  NULL, with the message printed, when the points
+ * cannot be classified (out of memory). */
+const char *sfd_steady_class(const char *cmd, const double *P, size_t npts,
+                             double eps_spread, size_t *period,
+                             double *dimension);
 
 /* Check a command's SFD parameters p[WHIRL_SFD_NPAR] (the options above)
  * and print a message naming the parameter; 0 if they are usable, -1 if

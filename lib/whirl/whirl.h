@@ -12,6 +12,7 @@
 #include <whirl/sfd.h>
 #include <whirl/ode.h>
 #include <whirl/spectrum.h>
+#include <whirl/section.h>
 #include <whirl/basins.h>
 #include <whirl/sfd_dynamics.h>
 #include <whirl/floquet.h>
