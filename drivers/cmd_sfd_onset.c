@@ -70,6 +70,25 @@ static const char *cls_name(int c) {
   return c == 1 ? "synchronous" : c == 0 ? "nonsynchronous" : "contact";
 }
 
+/* The response from rest at Omega = om (from_rest), its row printed on
+ * stdout: its class, or < -1 after the message (PROG, unless NULL, cleared
+ * first). */
+static int try_speed(double *p, double om, size_t periods, double rtol, double atol,
+                     cli_progress *prog) {
+  char msg[512];
+  unsigned per = 0;
+  p[WHIRL_SFD_OMEGA] = om;
+  const int c = from_rest(p, periods, rtol, atol, &per, msg, sizeof msg);
+  if (c < -1) {
+    if (prog) cli_progress_end(prog);
+    cli_error(CMD, "%s", msg);
+    return c;
+  }
+  printf("%.10f\t%s\t%u\n", om, cls_name(c), per);
+  fflush(stdout);
+  return c;
+}
+
 int cmd_sfd_onset(int argc, char **argv) {
   double p[WHIRL_SFD_NPAR];
   whirl_sfd_default_params(p);
@@ -96,27 +115,14 @@ int cmd_sfd_onset(int argc, char **argv) {
     return 2;
   }
   if (sfd_check_tolerances(CMD, rtol, atol)) return 2;
-  p[0] = fmax(from, to);
+  p[WHIRL_SFD_OMEGA] = fmax(from, to);
   if (sfd_check(CMD, p, 0)) return 2;
-  char msg[512];
-  unsigned per = 0;
   printf("Omega\tclass\tperiods\n");
   double a = from, b = to;
-  p[0] = a;
-  int ca = from_rest(p, periods, rtol, atol, &per, msg, sizeof msg);
-  if (ca < -1) {
-    cli_error(CMD, "%s", msg);
-    return 1;
-  }
-  printf("%.10f\t%s\t%u\n", a, cls_name(ca), per);
-  p[0] = b;
-  int cb = from_rest(p, periods, rtol, atol, &per, msg, sizeof msg);
-  if (cb < -1) {
-    cli_error(CMD, "%s", msg);
-    return 1;
-  }
-  printf("%.10f\t%s\t%u\n", b, cls_name(cb), per);
-  fflush(stdout);
+  const int ca = try_speed(p, a, periods, rtol, atol, NULL);
+  if (ca < -1) return 1;
+  const int cb = try_speed(p, b, periods, rtol, atol, NULL);
+  if (cb < -1) return 1;
   if (ca == cb) {
     cli_error(CMD, "no change of the response from rest between %g and %g (both %s): widen the bracket",
               a, b, cls_name(ca));
@@ -127,16 +133,9 @@ int cmd_sfd_onset(int argc, char **argv) {
   size_t total = (size_t)ceil(log2(fabs(b - a) / tol)), k = 0;
   while (fabs(b - a) > tol) {
     cli_progress_show(&prog, k++, total);
-    double m = 0.5 * (a + b);
-    p[0] = m;
-    int cm = from_rest(p, periods, rtol, atol, &per, msg, sizeof msg);
-    if (cm < -1) {
-      cli_progress_end(&prog);
-      cli_error(CMD, "%s", msg);
-      return 1;
-    }
-    printf("%.10f\t%s\t%u\n", m, cls_name(cm), per);
-    fflush(stdout);
+    const double m = 0.5 * (a + b);
+    const int cm = try_speed(p, m, periods, rtol, atol, &prog);
+    if (cm < -1) return 1;
     if (cm == ca) a = m;
     else b = m;
   }

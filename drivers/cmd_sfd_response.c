@@ -319,7 +319,10 @@ int cmd_sfd_response(int argc, char **argv) {
            po.omega_min);
   snprintf(ds_shown, sizeof ds_shown, "%g; hbm/colloc %g, the paper's", o.ds, po.ds);
   const cli_opt opts[] = {
-      SFD_OPTS_MODEL(p),
+      SFD_OPT_LAMBDA(p),
+      SFD_OPT_PARAM(p, WHIRL_SFD_DELTA, "--delta", "D",
+                    "unbalance delta = e_G/c, 0 < D <= 10"),
+      SFD_OPT_ZETA(p),
       {"--omega-max", CLI_DOUBLE, &o.omega_max, "W", "largest speed, W <= 1000", NULL},
       {"--omega-min", CLI_DOUBLE, &omega_min, "M", "smallest speed, 0 < M < W", omega_min_shown},
       SFD_OPT_FE(p),

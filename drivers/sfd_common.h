@@ -17,22 +17,24 @@
  * is the command's parameter vector, filled by whirl_sfd_default_params:
  * its values are the defaults --help shows.  The ranges are those of
  * whirl_sfd_check_params (whirl/sfd.h), which sfd_check applies. */
+#define SFD_OPT_PARAM(p, k, name, arg, help)                                  \
+  { name, CLI_DOUBLE, &(p)[k], arg, help, NULL }
 #define SFD_OPT_OMEGA(p)                                                      \
-  {"--omega", CLI_DOUBLE, &(p)[WHIRL_SFD_OMEGA], "W",                         \
-   "dimensionless speed Omega, 0 < W <= 1000", NULL}
+  SFD_OPT_PARAM(p, WHIRL_SFD_OMEGA, "--omega", "W",                           \
+                "dimensionless speed Omega, 0 < W <= 1000")
 #define SFD_OPT_LAMBDA(p)                                                     \
-  {"--lambda", CLI_DOUBLE, &(p)[WHIRL_SFD_LAMBDA], "L",                       \
-   "SFD constant lambda, 0 < L <= 100", NULL}
+  SFD_OPT_PARAM(p, WHIRL_SFD_LAMBDA, "--lambda", "L",                         \
+                "SFD constant lambda, 0 < L <= 100")
 #define SFD_OPT_DELTA(p)                                                      \
-  {"--delta", CLI_DOUBLE, &(p)[WHIRL_SFD_DELTA], "D",                         \
-   "unbalance delta = e_G/c, 0 <= D <= 10", NULL}
+  SFD_OPT_PARAM(p, WHIRL_SFD_DELTA, "--delta", "D",                           \
+                "unbalance delta = e_G/c, 0 <= D <= 10")
 #define SFD_OPT_ZETA(p)                                                       \
-  {"--zeta", CLI_DOUBLE, &(p)[WHIRL_SFD_ZETA], "Z",                           \
-   "external damping ratio zeta, 0 <= Z <= 10", NULL}
+  SFD_OPT_PARAM(p, WHIRL_SFD_ZETA, "--zeta", "Z",                             \
+                "external damping ratio zeta, 0 <= Z <= 10")
 #define SFD_OPT_FE(p)                                                         \
-  {"--fe", CLI_DOUBLE, &(p)[WHIRL_SFD_FE], "F",                               \
-   "static force F_E (gravity not fully compensated by the centring "        \
-   "springs; static deflection F_E), |F| < 1", NULL}
+  SFD_OPT_PARAM(p, WHIRL_SFD_FE, "--fe", "F",                                 \
+                "static force F_E (gravity not fully compensated by the "    \
+                "centring springs; static deflection F_E), |F| < 1")
 /* lambda, delta, zeta: the model of Table 1 */
 #define SFD_OPTS_MODEL(p) SFD_OPT_LAMBDA(p), SFD_OPT_DELTA(p), SFD_OPT_ZETA(p)
 
