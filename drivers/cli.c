@@ -111,8 +111,12 @@ static void format_default(const cli_opt *o, char *buf, size_t len) {
   switch (o->kind) {
     case CLI_DOUBLE: {
       const double v = *(const double *)o->dst;
-      snprintf(buf, len, isnan(v) ? "required" : "%g", v);
-      tidy_exponent(buf);
+      if (isnan(v)) {
+        snprintf(buf, len, "required");
+      } else {
+        snprintf(buf, len, "%g", v);
+        tidy_exponent(buf);
+      }
       break;
     }
     case CLI_SIZE:
@@ -189,10 +193,10 @@ static void print_option(FILE *f, const char *label, const char *help,
 static void print_help(FILE *f, const cli_opt *opts, size_t nopts,
                        const char (*shown)[DEFAULT_LEN], const cli_doc *doc) {
   char label[128];
-  size_t col = strlen("--help") + 4;
+  size_t col = strlen("--help") + 6; /* 2 before, at least 2 after */
   for (size_t k = 0; k < nopts; ++k) {
     option_label(&opts[k], label, sizeof label);
-    const size_t want = strlen(label) + 6; /* 2 before, at least 2 after */
+    const size_t want = strlen(label) + 6;
     if (want <= HELP_COL_MAX && want > col) col = want;
   }
   fputs(doc->head, f);
