@@ -188,6 +188,10 @@ static void print_option(FILE *f, const char *label, const char *help,
   print_wrapped(f, text, col);
 }
 
+void cli_help_item(FILE *f, const char *label, const char *text, size_t col) {
+  print_option(f, label, text, "", col);
+}
+
 /* The help of a command: doc->head, the options with the defaults
  * shown[k], --help itself, doc->tail. */
 static void print_help(FILE *f, const cli_opt *opts, size_t nopts,

@@ -73,6 +73,11 @@ typedef struct cli_doc {
 int cli_parse(const char *cmd, int argc, char **argv, const cli_opt *opts,
               size_t nopts, const cli_doc *doc);
 
+/* One item of a help text: "  LABEL", then TEXT from column COL, wrapped
+ * to 79 columns ('\n' breaks a line); LABEL wider than COL - 4 puts TEXT
+ * on the next line. */
+void cli_help_item(FILE *f, const char *label, const char *text, size_t col);
+
 /* Progress line on stderr (only on a terminal and when not quiet): at most
  * five updates a second, cleared by cli_progress_end. */
 typedef struct cli_progress {

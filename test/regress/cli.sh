@@ -19,11 +19,19 @@ for args in "--help" "sfd --help" "sfd response --help"; do
   ok $(( rc != 0 || $? != 0 )) "whirl $args prints usage and exits 0"
 done
 
+# the sfd commands: `whirl sfd --help` and `whirl --help` list the same,
+# every one of them
+sfd_cmds=$("$WHIRL" sfd --help | sed -n 's/^  \([a-z][a-z]*\)   *[a-z].*/\1/p')
+top_cmds=$("$WHIRL" --help | sed -n 's/^  sfd \([a-z][a-z]*\)   *[a-z].*/\1/p')
+[ "$(echo $sfd_cmds)" = "response simulate sweep basins onset nonsync merge region" ] &&
+  [ "$(echo $top_cmds)" = "$(echo $sfd_cmds)" ]
+ok $? "whirl --help and whirl sfd --help list the eight sfd commands (got: $(echo $sfd_cmds); $(echo $top_cmds))"
+
 # every sfd command's --help comes from its option table: each option it
 # lists is one the command accepts (OPT or OPT=1, then an unknown option,
 # so nothing runs), the defaults are the code's (those before the options
 # given), and the SFD parameters show Table 1
-for c in response simulate sweep basins onset nonsync merge region; do
+for c in $sfd_cmds; do
   "$WHIRL" sfd $c --help > "$tmp/help.txt" 2>&1
   rc=$?
   # "  --name ARG  text": ARG an upper-case placeholder; flags have none
