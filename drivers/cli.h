@@ -55,7 +55,8 @@ typedef struct cli_opt {
   {"--quiet", CLI_FLAG, &(quiet), NULL, "no summary on stderr", NULL}
 #define CLI_OPTS_OUT(dir, noplot, quiet)                                      \
   {"--out", CLI_STRING, &(dir), "DIR", "output directory", NULL},             \
-  {"--no-plot", CLI_FLAG, &(noplot), NULL, "write the data only, no PNG", NULL}, \
+  {"--no-plot", CLI_FLAG, &(noplot), NULL, "write the data only, no PNG",     \
+   NULL},                                                                     \
   CLI_OPT_QUIET(quiet)
 
 /* A command's --help around its options: HEAD (usage line, description,

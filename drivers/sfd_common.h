@@ -33,15 +33,17 @@
                 "external damping ratio zeta, 0 <= Z <= 10")
 #define SFD_OPT_FE(p)                                                         \
   SFD_OPT_PARAM(p, WHIRL_SFD_FE, "--fe", "F",                                 \
-                "static force F_E (gravity not fully compensated by the "    \
+                "static force F_E (gravity not fully compensated by the "     \
                 "centring springs; static deflection F_E), |F| < 1")
 /* lambda, delta, zeta: the model of Table 1 */
 #define SFD_OPTS_MODEL(p) SFD_OPT_LAMBDA(p), SFD_OPT_DELTA(p), SFD_OPT_ZETA(p)
 
 /* --y0 --z0 --vy0 --vz0: the initial state x0[4] of a time integration */
 #define SFD_OPTS_STATE(x0)                                                    \
-  {"--y0", CLI_DOUBLE, &(x0)[0], "A", "initial displacement y / clearance", NULL}, \
-  {"--z0", CLI_DOUBLE, &(x0)[1], "B", "initial displacement z / clearance", NULL}, \
+  {"--y0", CLI_DOUBLE, &(x0)[0], "A", "initial displacement y / clearance",   \
+   NULL},                                                                     \
+  {"--z0", CLI_DOUBLE, &(x0)[1], "B", "initial displacement z / clearance",   \
+   NULL},                                                                     \
   {"--vy0", CLI_DOUBLE, &(x0)[2], "C", "initial velocity y'", NULL},          \
   {"--vz0", CLI_DOUBLE, &(x0)[3], "D", "initial velocity z'", NULL}
 
@@ -49,7 +51,7 @@
  * by sfd_check_tolerances). */
 #define SFD_OPTS_TOL(rtol, atol)                                              \
   {"--rtol", CLI_DOUBLE, &(rtol), "R",                                        \
-   "relative integration tolerance, 1e-13 <= R <= 1e-3", NULL},       \
+   "relative integration tolerance, 1e-13 <= R <= 1e-3", NULL},               \
   {"--atol", CLI_DOUBLE, &(atol), "A",                                        \
    "absolute integration tolerance, 0 < A <= 1e-3", NULL}
 
@@ -75,8 +77,8 @@ const char *sfd_steady_class(const char *cmd, const double *P, size_t npts,
  * not.  A NaN is an option that is required and was not given.  With
  * OMEGA_OPTION, p[WHIRL_SFD_OMEGA] is the option --omega and must be > 0;
  * otherwise the command puts there the largest speed it reaches (response
- * --omega-max, sweep --to), checked against the model's range only.  Then
- * the model's ranges: whirl_sfd_check_params. */
+ * --omega-max, the top of a sweep), checked against the model's range
+ * only.  Then the model's ranges: whirl_sfd_check_params. */
 int sfd_check(const char *cmd, const double *p, int omega_option);
 
 /* The parameters p[k] of the bits SFD_P(k) of MASK, in whirl/sfd.h's order,
