@@ -29,7 +29,8 @@ const char *cli_value(int argc, char **argv, int *i, const char *name,
 /* Output directories, their files and pictures: outdir.h. */
 #include "outdir.h"
 
-/* A table of options for cli_parse. */
+/* A table of options for cli_parse, which prints --help from it too: one
+ * line an option, "  --name ARG   help (default)", in the table's order. */
 typedef enum {
   CLI_DOUBLE, /* double *              --name X */
   CLI_SIZE,   /* size_t *, >= 0 integer */
@@ -38,15 +39,45 @@ typedef enum {
   CLI_FLAG    /* int *, set to 1 when present */
 } cli_kind;
 typedef struct cli_opt {
-  const char *name;
+  const char *name; /* "--periods" */
   cli_kind kind;
-  void *dst;
+  void *dst;        /* the value; its value before parsing is the default */
+  const char *arg;  /* the value's placeholder in --help ("N"); NULL: flags */
+  const char *help; /* what it means, for --help (wrapped; '\n' breaks) */
+  const char *dflt; /* the default as --help shows it where *dst does not
+                       hold it ("N/2", one computed later); NULL: *dst as
+                       parsing found it, "required" for a NaN; "": none */
 } cli_opt;
-/* Parse argv[1..argc-1] against opts; --help/-h calls help(stdout).
- * Returns 0 to go on, 1 when help was shown (exit 0), 2 on a bad option
- * (message printed; exit 2). */
+
+/* Options most commands share: the output directory DIR, --no-plot (the
+ * data only) and --quiet (no summary on stderr). */
+#define CLI_OPT_QUIET(quiet)                                                  \
+  {"--quiet", CLI_FLAG, &(quiet), NULL, "no summary on stderr", NULL}
+#define CLI_OPTS_OUT(dir, noplot, quiet)                                      \
+  {"--out", CLI_STRING, &(dir), "DIR", "output directory", NULL},             \
+  {"--no-plot", CLI_FLAG, &(noplot), NULL, "write the data only, no PNG",     \
+   NULL},                                                                     \
+  CLI_OPT_QUIET(quiet)
+
+/* A command's --help around its options: HEAD (usage line, description,
+ * the heading of the options), the options, then TAIL (outputs, exit
+ * status; NULL for none) after an empty line. */
+typedef struct cli_doc {
+  const char *head;
+  const char *tail;
+} cli_doc;
+
+/* Parse argv[1..argc-1] against opts; --help/-h prints doc and the options
+ * (with their defaults, whatever came before --help) to stdout.  Returns 0
+ * to go on, 1 when help was shown (exit 0), 2 on a bad option (message
+ * printed; exit 2). */
 int cli_parse(const char *cmd, int argc, char **argv, const cli_opt *opts,
-              size_t nopts, void (*help)(FILE *));
+              size_t nopts, const cli_doc *doc);
+
+/* One item of a help text: "  LABEL", then TEXT from column COL, wrapped
+ * to 79 columns ('\n' breaks a line); LABEL wider than COL - 4 puts TEXT
+ * on the next line. */
+void cli_help_item(FILE *f, const char *label, const char *text, size_t col);
 
 /* Progress line on stderr (only on a terminal and when not quiet): at most
  * five updates a second, cleared by cli_progress_end. */

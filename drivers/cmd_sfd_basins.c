@@ -17,8 +17,7 @@
 
 #define CMD "sfd basins"
 
-static void help(FILE *f) {
-  fprintf(f,
+static const cli_doc doc = {
 "usage: whirl sfd basins --omega W [options]\n"
 "\n"
 "Basins of attraction at speed W.  The attractors are found first: the\n"
@@ -28,29 +27,10 @@ static void help(FILE *f) {
 "trajectory settles on one.  Every initial state is then integrated until\n"
 "it enters one of those neighbourhoods (or --periods have passed).\n"
 "\n"
-"options (defaults: Table 1 of the paper):\n"
-"  --omega W         dimensionless speed > 0 (required)\n"
-"  --velocities V    zero: y' = z' = 0 (Figs. 12, 13a, 14a)          (zero)\n"
-"                    circular: (y', z') = Omega (-z, y), the velocity of a\n"
-"                      circular orbit through (y, z) (Figs. 13b, 14b, 15b)\n"
-"                    trajectory: displacements sampled from the trajectory\n"
-"                      from rest over periods 600..1200, zero velocities\n"
-"                      (Figs. 15a-17)\n"
-"  --points N        about N initial states                        (8000)\n"
-"  --radius R        displacements within R of the clearance      (0.98)\n"
-"  --periods P       most forcing periods per trajectory           (500)\n"
-"  --fixed-horizon   always integrate P periods, classify at the end\n"
-"  --threads T       OpenMP threads, 0..1024 (0: all)                 (0)\n"
-"  --lambda L --delta D --zeta Z   model parameters   (0.0503 0.3 0)\n"
-"  --rtol R --atol A  integration tolerances          (1e-12, 1e-15)\n"
-"                    1e-13 <= R <= 1e-3, 0 < A <= 1e-3\n"
-"  --out DIR         output directory                     (sfd-basins)\n"
-"  --no-plot  --quiet\n"
-"\n"
+"options (defaults: Table 1 of the paper):\n",
 "stdout: TSV 'attractor count percent'.  DIR/basins.tsv: y0 z0 vy0 vz0\n"
 "attractor periods; DIR/attractors.tsv; DIR/basins.png (red small orbit,\n"
-"green large, blue quasiperiodic, black contact, grey unsettled).\n");
-}
+"green large, blue quasiperiodic, black contact, grey unsettled).\n"};
 
 static void progress_cb(size_t done, size_t total, void *data) {
   cli_progress_show(data, done, total);
@@ -105,25 +85,26 @@ int cmd_sfd_basins(int argc, char **argv) {
   int threads = 0, fixed = 0, noplot = 0, quiet = 0;
   const char *vel = "zero", *dir = "sfd-basins";
   const cli_opt opts[] = {
-      {"--omega", CLI_DOUBLE, &p[WHIRL_SFD_OMEGA]}, {"--velocities", CLI_STRING, &vel},
-      {"--points", CLI_SIZE, &npoints},             {"--radius", CLI_DOUBLE, &radius},
-      {"--periods", CLI_SIZE, &periods},            {"--fixed-horizon", CLI_FLAG, &fixed},
-      {"--threads", CLI_INT, &threads},             {"--lambda", CLI_DOUBLE, &p[WHIRL_SFD_LAMBDA]},
-      {"--delta", CLI_DOUBLE, &p[WHIRL_SFD_DELTA]}, {"--zeta", CLI_DOUBLE, &p[WHIRL_SFD_ZETA]},
-      {"--rtol", CLI_DOUBLE, &rtol},                {"--atol", CLI_DOUBLE, &atol},
-      {"--out", CLI_STRING, &dir},                  {"--no-plot", CLI_FLAG, &noplot},
-      {"--quiet", CLI_FLAG, &quiet}};
-  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+      SFD_OPT_OMEGA(p),
+      {"--velocities", CLI_STRING, &vel, "V",
+       "initial velocities\n"
+       "zero: y' = z' = 0 (Figs. 12, 13a, 14a);\n"
+       "circular: (y', z') = Omega (-z, y), the velocity of a circular orbit through (y, z) "
+       "(Figs. 13b, 14b, 15b);\n"
+       "trajectory: displacements sampled from the trajectory from rest over periods "
+       "600..1200, zero velocities (Figs. 15a-17)", NULL},
+      {"--points", CLI_SIZE, &npoints, "N", "about N initial states", NULL},
+      {"--radius", CLI_DOUBLE, &radius, "R", "displacements within R of the clearance", NULL},
+      {"--periods", CLI_SIZE, &periods, "P", "most forcing periods per trajectory", NULL},
+      {"--fixed-horizon", CLI_FLAG, &fixed, NULL,
+       "always integrate P periods, classify at the end", NULL},
+      {"--threads", CLI_INT, &threads, "T", "OpenMP threads, 0..1024; 0: as many as OpenMP offers", NULL},
+      SFD_OPTS_MODEL(p),
+      SFD_OPTS_TOL(rtol, atol),
+      CLI_OPTS_OUT(dir, noplot, quiet)};
+  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
-  if (isnan(p[WHIRL_SFD_OMEGA])) {
-    cli_error(CMD, "--omega is required (e.g. --omega 1.78)");
-    return 2;
-  }
-  if (!(p[WHIRL_SFD_OMEGA] > 0)) {
-    cli_error(CMD, "--omega must be > 0 (got %g)", p[WHIRL_SFD_OMEGA]);
-    return 2;
-  }
-  if (sfd_check(CMD, p)) return 2;
+  if (sfd_check(CMD, p, 1)) return 2;
   int vmode = !strcmp(vel, "zero") ? 0 : !strcmp(vel, "circular") ? 1 : !strcmp(vel, "trajectory") ? 2 : -1;
   if (vmode < 0) {
     cli_error(CMD, "--velocities must be zero, circular or trajectory (got '%s')", vel);

@@ -11,11 +11,11 @@
 #include <whirl/rotor/sfd_region.h>
 
 #include "cli.h"
+#include "sfd_common.h"
 
 #define CMD "sfd merge"
 
-static void help(FILE *f) {
-  fprintf(f,
+static const cli_doc doc = {
 "usage: whirl sfd merge --lambda L [--zeta Z] [--quiet]\n"
 "\n"
 "The isola-peak merge point of the circular synchronous orbits (F_E = 0):\n"
@@ -25,36 +25,21 @@ static void help(FILE *f) {
 "dG/dOmega = 0 in eq. 15), converged on the rotating-frame equilibrium\n"
 "equations (fold system with the merge condition).\n"
 "\n"
-"options:\n"
-"  --lambda L   SFD constant (required, > 0)\n"
-"  --zeta Z     external damping ratio                      (0)\n"
-"  --quiet      no summary on stderr\n"
-"\n"
+"options:\n",
 "stdout: TSV 'lambda zeta delta Omega eps type residual', one row per point\n"
 "(type MG: an isola merges with another branch; IS: an isola is born as a\n"
-"point); residual = largest relative residual of G, G_eps, G_Omega.\n");
-}
+"point); residual = largest relative residual of G, G_eps, G_Omega.\n"};
 
 int cmd_sfd_merge(int argc, char **argv) {
-  double lambda = NAN, zeta = 0.0;
+  double p[WHIRL_SFD_NPAR];
+  whirl_sfd_default_params(p);
+  p[WHIRL_SFD_LAMBDA] = NAN; /* required */
   int quiet = 0;
-  const cli_opt opts[] = {{"--lambda", CLI_DOUBLE, &lambda},
-                          {"--zeta", CLI_DOUBLE, &zeta},
-                          {"--quiet", CLI_FLAG, &quiet}};
-  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+  const cli_opt opts[] = {SFD_OPT_LAMBDA(p), SFD_OPT_ZETA(p), CLI_OPT_QUIET(quiet)};
+  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
-  if (isnan(lambda)) {
-    cli_error(CMD, "--lambda is required (e.g. --lambda 0.25)");
-    return 2;
-  }
-  if (!(lambda > 0) || lambda > 1e3) {
-    cli_error(CMD, "--lambda must be in (0, 1000] (got %g)", lambda);
-    return 2;
-  }
-  if (!(zeta >= 0) || zeta > 10) {
-    cli_error(CMD, "--zeta must be in [0, 10] (got %g)", zeta);
-    return 2;
-  }
+  const double lambda = p[WHIRL_SFD_LAMBDA], zeta = p[WHIRL_SFD_ZETA];
+  if (sfd_check(CMD, p, 0)) return 2;
   char msg[512] = "";
   whirl_sfd_curve mp;
   const double t0 = cli_now();

@@ -16,11 +16,11 @@
 #include <whirl/rotor.h>
 
 #include "cli.h"
+#include "sfd_common.h"
 
 #define CMD "sfd nonsync"
 
-static void help(FILE *f) {
-  fprintf(f,
+static const cli_doc doc = {
 "usage: whirl sfd nonsync [options]\n"
 "\n"
 "The nonsynchronous response of the rigid rotor on two short SFDs (F_E = 0):\n"
@@ -33,31 +33,14 @@ static void help(FILE *f) {
 "from the monodromy matrix, folds of cycles (LP, where the branch is born),\n"
 "period doublings (PD) and torus points (TR).\n"
 "\n"
-"options (defaults: Table 1 of the paper):\n"
-"  --lambda L        SFD constant lambda > 0           (0.0503)\n"
-"  --delta D         unbalance delta >= 0              (0.3)\n"
-"  --zeta Z          external damping ratio >= 0       (0)\n"
-"  --omega-start S   speed of the time integration     (8.7)\n"
-"  --omega-max W     largest speed                     (20)\n"
-"  --omega-min M     smallest speed                    (1)\n"
-"  --method M        colloc | hbm                      (colloc)\n"
-"  --ntst N, --ncol C  collocation mesh                (35, 6)\n"
-"  --harmonics N     HBM harmonics                     (40)\n"
-"  --oversampling K  HBM: K (2N+1) time samples        (10)\n"
-"  --ds S, --ds-max S  arclength steps                 (0.01, 0.2)\n"
-"  --out DIR         output directory                  (sfd-nonsync)\n"
-"  --no-plot         write the data only, no PNG\n"
-"  --quiet           no summary on stderr\n"
-"  --help            this text\n"
-"\n"
+"options (defaults: Table 1 of the paper):\n",
 "outputs: DIR/branches.tsv (branch pt type label Omega f2 period eps_max\n"
 "eps_min stable n_unstable max_multiplier mult_re mult_im residual),\n"
 "DIR/special.tsv, DIR/nonsync.png, DIR/f2.png.  stdout: the special points\n"
 "(type branch label Omega f2 period eps_max eps_min stable max_multiplier\n"
 "meaning), including UZ at --omega-start on the unstable side and the start\n"
 "point itself (type ST).  Exit 1 if the rotor does not settle on a\n"
-"nonsynchronous cycle at --omega-start.\n");
-}
+"nonsynchronous cycle at --omega-start.\n"};
 
 static const char *meaning(int type) {
   switch (type) {
@@ -123,9 +106,9 @@ static int write_plots(cli_outdir *od, const whirl_sfd_periodic *ns,
         fprintf(f, "%.10g %.10g %.10g %.10g\n", ns->br[b].pts[i].Omega,
                 ns->br[b].pts[i].eps_max, ns->br[b].pts[i].eps_min, ns->br[b].pts[i].f2);
   fprintf(f, "EOD\n");
+  char title[256];
   fprintf(f,
-          "set title 'nonsynchronous response (rotating-frame cycle): {/Symbol l} = %g, "
-          "{/Symbol d} = %g, {/Symbol z} = %g'\n"
+          "set title 'nonsynchronous response (rotating-frame cycle): %s'\n"
           "set xlabel 'dimensionless speed {/Symbol W}'\n"
           "set ylabel 'eccentricity {/Symbol e}'\n"
           "set xrange [%g:%g]\nset yrange [0:1]\nset grid\nset key bottom right box opaque\n"
@@ -137,7 +120,7 @@ static int write_plots(cli_outdir *od, const whirl_sfd_periodic *ns,
           "     $ns1 using 1:3 with lines dt 2 lw 2 lc rgb '#ff7f0e' title 'nonsync {/Symbol e}_{min}, unstable', \\\n"
           "     $lp using 1:2 with points pt 7 ps 1.6 lc rgb '#2ca02c' title 'LP of cycles (birth)', \\\n"
           "     $lp using 1:3 with points pt 7 ps 1.6 lc rgb '#2ca02c' notitle\n",
-          p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA], wmin, wmax);
+          sfd_gp_params(title, sizeof title, p, SFD_P_MODEL), wmin, wmax);
   if (out_commit(&o)) return -1;
 
   if (out_open(&o, od, "f2.gp")) return -1;
@@ -180,24 +163,21 @@ int cmd_sfd_nonsync(int argc, char **argv) {
   double w0 = 8.7;
   const char *dir = "sfd-nonsync", *method_name = NULL;
   int noplot = 0, quiet = 0;
+  const char *method_shown = whirl_sfd_method_name(o.method);
   const cli_opt opts[] = {
-      {"--lambda", CLI_DOUBLE, &p[WHIRL_SFD_LAMBDA]},
-      {"--delta", CLI_DOUBLE, &p[WHIRL_SFD_DELTA]},
-      {"--zeta", CLI_DOUBLE, &p[WHIRL_SFD_ZETA]},
-      {"--omega-start", CLI_DOUBLE, &w0},
-      {"--omega-max", CLI_DOUBLE, &o.omega_max},
-      {"--omega-min", CLI_DOUBLE, &o.omega_min},
-      {"--method", CLI_STRING, &method_name},
-      {"--ntst", CLI_SIZE, &o.ntst},
-      {"--ncol", CLI_SIZE, &o.ncol},
-      {"--harmonics", CLI_SIZE, &o.harmonics},
-      {"--oversampling", CLI_SIZE, &o.oversampling},
-      {"--ds", CLI_DOUBLE, &o.ds},
-      {"--ds-max", CLI_DOUBLE, &o.ds_max},
-      {"--out", CLI_STRING, &dir},
-      {"--no-plot", CLI_FLAG, &noplot},
-      {"--quiet", CLI_FLAG, &quiet}};
-  int prc = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+      SFD_OPTS_MODEL(p),
+      {"--omega-start", CLI_DOUBLE, &w0, "S", "speed of the time integration", NULL},
+      {"--omega-max", CLI_DOUBLE, &o.omega_max, "W", "largest speed", NULL},
+      {"--omega-min", CLI_DOUBLE, &o.omega_min, "M", "smallest speed", NULL},
+      {"--method", CLI_STRING, &method_name, "M", "colloc | hbm", method_shown},
+      {"--ntst", CLI_SIZE, &o.ntst, "N", "collocation mesh intervals", NULL},
+      {"--ncol", CLI_SIZE, &o.ncol, "C", "collocation points per interval", NULL},
+      {"--harmonics", CLI_SIZE, &o.harmonics, "N", "HBM harmonics", NULL},
+      {"--oversampling", CLI_SIZE, &o.oversampling, "K", "HBM: K (2N+1) time samples", NULL},
+      {"--ds", CLI_DOUBLE, &o.ds, "S", "first arclength step", NULL},
+      {"--ds-max", CLI_DOUBLE, &o.ds_max, "S", "largest arclength step", NULL},
+      CLI_OPTS_OUT(dir, noplot, quiet)};
+  int prc = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (prc) return prc == 1 ? 0 : 2;
   if (method_name) {
     if (!strcmp(method_name, "colloc")) o.method = WHIRL_SFD_METHOD_COLLOC;
@@ -209,10 +189,7 @@ int cmd_sfd_nonsync(int argc, char **argv) {
   }
   char msg[512];
   p[WHIRL_SFD_OMEGA] = w0;
-  if (whirl_sfd_check_params(p, msg, sizeof msg) != WHIRL_OK) {
-    cli_error(CMD, "%s", msg);
-    return 2;
-  }
+  if (sfd_check(CMD, p, 0)) return 2;
   if (!(o.omega_min > 0) || !(o.omega_max > o.omega_min) || !(w0 >= o.omega_min) ||
       !(w0 <= o.omega_max)) {
     cli_error(CMD, "need 0 < --omega-min <= --omega-start <= --omega-max (got %g, %g, %g)",

@@ -16,27 +16,16 @@
 
 #define CMD "sfd onset"
 
-static void help(FILE *f) {
-  fprintf(f,
+static const cli_doc doc = {
 "usage: whirl sfd onset --from A --to B [options]\n"
 "\n"
 "Bisection in Omega for the onset of the nonsynchronous response from rest\n"
 "(zero initial conditions).  At A the response from rest must settle on a\n"
 "circular orbit and at B it must not (or the other way round).\n"
 "\n"
-"options (defaults: Table 1 of the paper):\n"
-"  --from A --to B   bracket (required)\n"
-"  --tol T           width of the final bracket              (1e-5)\n"
-"  --periods P       periods before a response counts as\n"
-"                    nonsynchronous                           (3000)\n"
-"  --lambda L --delta D --zeta Z   model parameters  (0.0503 0.3 0)\n"
-"  --rtol R --atol A  integration tolerances         (1e-12, 1e-15)\n"
-"                    1e-13 <= R <= 1e-3, 0 < A <= 1e-3\n"
-"  --quiet\n"
-"\n"
+"options (defaults: Table 1 of the paper):\n",
 "stdout: TSV 'Omega class periods' for every speed tried, then a line\n"
-"'onset<TAB>lo<TAB>hi'.\n");
-}
+"'onset<TAB>lo<TAB>hi'.\n"};
 
 /* 1 synchronous (captured by a circular orbit), 0 not, -1 contact, < -1
  * error.  *per: periods integrated. */
@@ -81,6 +70,25 @@ static const char *cls_name(int c) {
   return c == 1 ? "synchronous" : c == 0 ? "nonsynchronous" : "contact";
 }
 
+/* The response from rest at Omega = om (from_rest), its row printed on
+ * stdout: its class, or < -1 after the message (PROG, unless NULL, cleared
+ * first). */
+static int try_speed(double *p, double om, size_t periods, double rtol, double atol,
+                     cli_progress *prog) {
+  char msg[512];
+  unsigned per = 0;
+  p[WHIRL_SFD_OMEGA] = om;
+  const int c = from_rest(p, periods, rtol, atol, &per, msg, sizeof msg);
+  if (c < -1) {
+    if (prog) cli_progress_end(prog);
+    cli_error(CMD, "%s", msg);
+    return c;
+  }
+  printf("%.10f\t%s\t%u\n", om, cls_name(c), per);
+  fflush(stdout);
+  return c;
+}
+
 int cmd_sfd_onset(int argc, char **argv) {
   double p[WHIRL_SFD_NPAR];
   whirl_sfd_default_params(p);
@@ -88,12 +96,15 @@ int cmd_sfd_onset(int argc, char **argv) {
   size_t periods = 3000;
   int quiet = 0;
   const cli_opt opts[] = {
-      {"--from", CLI_DOUBLE, &from},       {"--to", CLI_DOUBLE, &to},
-      {"--tol", CLI_DOUBLE, &tol},         {"--periods", CLI_SIZE, &periods},
-      {"--lambda", CLI_DOUBLE, &p[1]},     {"--delta", CLI_DOUBLE, &p[2]},
-      {"--zeta", CLI_DOUBLE, &p[3]},       {"--rtol", CLI_DOUBLE, &rtol},
-      {"--atol", CLI_DOUBLE, &atol},       {"--quiet", CLI_FLAG, &quiet}};
-  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+      {"--from", CLI_DOUBLE, &from, "A", "one end of the bracket, A > 0", NULL},
+      {"--to", CLI_DOUBLE, &to, "B", "the other end, B > 0", NULL},
+      {"--tol", CLI_DOUBLE, &tol, "T", "width of the final bracket", NULL},
+      {"--periods", CLI_SIZE, &periods, "P",
+       "periods before a response counts as nonsynchronous", NULL},
+      SFD_OPTS_MODEL(p),
+      SFD_OPTS_TOL(rtol, atol),
+      CLI_OPT_QUIET(quiet)};
+  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
   if (isnan(from) || isnan(to)) {
     cli_error(CMD, "--from and --to are required (e.g. --from 8.5 --to 8.6)");
@@ -104,27 +115,14 @@ int cmd_sfd_onset(int argc, char **argv) {
     return 2;
   }
   if (sfd_check_tolerances(CMD, rtol, atol)) return 2;
-  p[0] = fmax(from, to);
-  if (sfd_check(CMD, p)) return 2;
-  char msg[512];
-  unsigned per = 0;
+  p[WHIRL_SFD_OMEGA] = fmax(from, to);
+  if (sfd_check(CMD, p, 0)) return 2;
   printf("Omega\tclass\tperiods\n");
   double a = from, b = to;
-  p[0] = a;
-  int ca = from_rest(p, periods, rtol, atol, &per, msg, sizeof msg);
-  if (ca < -1) {
-    cli_error(CMD, "%s", msg);
-    return 1;
-  }
-  printf("%.10f\t%s\t%u\n", a, cls_name(ca), per);
-  p[0] = b;
-  int cb = from_rest(p, periods, rtol, atol, &per, msg, sizeof msg);
-  if (cb < -1) {
-    cli_error(CMD, "%s", msg);
-    return 1;
-  }
-  printf("%.10f\t%s\t%u\n", b, cls_name(cb), per);
-  fflush(stdout);
+  const int ca = try_speed(p, a, periods, rtol, atol, NULL);
+  if (ca < -1) return 1;
+  const int cb = try_speed(p, b, periods, rtol, atol, NULL);
+  if (cb < -1) return 1;
   if (ca == cb) {
     cli_error(CMD, "no change of the response from rest between %g and %g (both %s): widen the bracket",
               a, b, cls_name(ca));
@@ -135,16 +133,9 @@ int cmd_sfd_onset(int argc, char **argv) {
   size_t total = (size_t)ceil(log2(fabs(b - a) / tol)), k = 0;
   while (fabs(b - a) > tol) {
     cli_progress_show(&prog, k++, total);
-    double m = 0.5 * (a + b);
-    p[0] = m;
-    int cm = from_rest(p, periods, rtol, atol, &per, msg, sizeof msg);
-    if (cm < -1) {
-      cli_progress_end(&prog);
-      cli_error(CMD, "%s", msg);
-      return 1;
-    }
-    printf("%.10f\t%s\t%u\n", m, cls_name(cm), per);
-    fflush(stdout);
+    const double m = 0.5 * (a + b);
+    const int cm = try_speed(p, m, periods, rtol, atol, &prog);
+    if (cm < -1) return 1;
     if (cm == ca) a = m;
     else b = m;
   }

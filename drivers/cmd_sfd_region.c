@@ -12,11 +12,11 @@
 #include <whirl/rotor/sfd_region.h>
 
 #include "cli.h"
+#include "sfd_common.h"
 
 #define CMD "sfd region"
 
-static void help(FILE *f) {
-  fprintf(f,
+static const cli_doc doc = {
 "usage: whirl sfd region [options]\n"
 "\n"
 "Where the response of circular orbits (F_E = 0) has an isolated branch\n"
@@ -27,20 +27,11 @@ static void help(FILE *f) {
 "                  other fold at W.  The boundaries touch where the merge\n"
 "                  speed reaches W (label MG on the lower curve).\n"
 "\n"
-"options:\n"
-"  --zeta Z         external damping ratio                       (0)\n"
-"  --omega-max W    maximum speed                                (20)\n"
-"  --lambda-min A   --lambda-max B   range of lambda          (0.01 1.5)\n"
-"  --ds-max S       largest continuation step, 1e-4 <= S <= 1     (0.05)\n"
-"  --out DIR        output directory                    (sfd-region)\n"
-"  --no-plot        tables only\n"
-"  --quiet          no summary on stderr\n"
-"\n"
+"options:\n",
 "files: DIR/upper.tsv and DIR/lower.tsv ('lambda delta Omega eps type\n"
 "residual'; type CP, MG, LP or '-'), DIR/band.tsv (lambda, lower and upper\n"
 "delta of the region on a log grid), DIR/region.png and region.gp.\n"
-"stdout: the special points as TSV 'curve type lambda delta Omega eps'.\n");
-}
+"stdout: the special points as TSV 'curve type lambda delta Omega eps'.\n"};
 
 static int write_curve(cli_outdir *od, const char *name, const whirl_sfd_curve *c,
                        const char *what, double zeta, double W) {
@@ -117,20 +108,20 @@ int cmd_sfd_region(int argc, char **argv) {
   whirl_sfd_region_options_default(&o);
   const char *dir = "sfd-region";
   int quiet = 0, noplot = 0;
-  const cli_opt opts[] = {{"--zeta", CLI_DOUBLE, &o.zeta},
-                          {"--omega-max", CLI_DOUBLE, &o.omega_max},
-                          {"--lambda-min", CLI_DOUBLE, &o.lambda_min},
-                          {"--lambda-max", CLI_DOUBLE, &o.lambda_max},
-                          {"--ds-max", CLI_DOUBLE, &o.ds_max},
-                          {"--out", CLI_STRING, &dir},
-                          {"--no-plot", CLI_FLAG, &noplot},
-                          {"--quiet", CLI_FLAG, &quiet}};
-  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+  double p[WHIRL_SFD_NPAR];
+  whirl_sfd_default_params(p);
+  p[WHIRL_SFD_ZETA] = o.zeta;
+  const cli_opt opts[] = {
+      SFD_OPT_ZETA(p),
+      {"--omega-max", CLI_DOUBLE, &o.omega_max, "W", "maximum speed, 1 < W <= 1000", NULL},
+      {"--lambda-min", CLI_DOUBLE, &o.lambda_min, "A", "smallest lambda", NULL},
+      {"--lambda-max", CLI_DOUBLE, &o.lambda_max, "B", "largest lambda, B <= 100", NULL},
+      {"--ds-max", CLI_DOUBLE, &o.ds_max, "S", "largest continuation step, 1e-4 <= S <= 1", NULL},
+      CLI_OPTS_OUT(dir, noplot, quiet)};
+  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
-  if (!(o.zeta >= 0) || o.zeta > 10) {
-    cli_error(CMD, "--zeta must be in [0, 10] (got %g)", o.zeta);
-    return 2;
-  }
+  o.zeta = p[WHIRL_SFD_ZETA];
+  if (sfd_check(CMD, p, 0)) return 2;
   if (!(o.omega_max > 1) || o.omega_max > 1000) {
     cli_error(CMD, "--omega-max must be in (1, 1000] (got %g)", o.omega_max);
     return 2;

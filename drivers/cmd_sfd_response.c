@@ -15,11 +15,11 @@
 #include <whirl/rotor.h>
 
 #include "cli.h"
+#include "sfd_common.h"
 
 #define CMD "sfd response"
 
-static void help(FILE *f) {
-  fprintf(f,
+static const cli_doc doc = {
 "usage: whirl sfd response [options]\n"
 "\n"
 "All branches of synchronous orbits of the rigid rotor on two short\n"
@@ -29,30 +29,7 @@ static void help(FILE *f) {
 "eq. 15).  Stability from the rotating-frame eigenvalues mu, reported as\n"
 "fixed-frame Floquet multipliers exp(2 pi mu / Omega).\n"
 "\n"
-"options (defaults: Table 1 of the paper):\n"
-"  --lambda L      SFD constant, 0 < L <= 100          (0.0503)\n"
-"  --delta D       unbalance e_G/c, 0 < D <= 10        (0.3)\n"
-"  --zeta Z        external damping ratio, 0 <= Z <= 10 (0)\n"
-"  --omega-max W   largest speed, W <= 1000            (20)\n"
-"  --omega-min M   smallest speed, 0 < M < W  (0.01; hbm/colloc 0.05)\n"
-"  --fe F          static force F_E (gravity not fully compensated by the\n"
-"                  centring springs; static deflection F_E), |F| < 1 (0)\n"
-"  --method M      circular | hbm | colloc: circular orbits from the\n"
-"                  rotating-frame equilibria (F_E = 0 only; the default\n"
-"                  then), or fixed-frame periodic orbits by harmonic balance\n"
-"                  (default when F_E != 0) or by collocation\n"
-"  --harmonics N   HBM harmonics                       (8, the paper's)\n"
-"  --oversampling K  HBM: K (2N+1) time samples (AFT)  (10, the paper's)\n"
-"  --ntst N, --ncol C  collocation mesh                (40, 4)\n"
-"  --uz W          hbm/colloc: also report the orbits at Omega = W (UZ)\n"
-"  --ds S          first continuation step  (0.02; hbm/colloc 0.01, the paper's)\n"
-"  --ds-max S      largest continuation step (DSMAX)   (0.2)\n"
-"  --sparse        use the sparse (UMFPACK) linear solver\n"
-"  --out DIR       output directory                    (sfd-response)\n"
-"  --no-plot       write the data only, no PNG\n"
-"  --quiet         no summary on stderr\n"
-"  --help          this text\n"
-"\n"
+"options (defaults: Table 1 of the paper):\n",
 "outputs: DIR/branches.tsv (branch pt type label Omega eps phase u v stable\n"
 "n_unstable max_multiplier mu_re mu_im), DIR/special.tsv, DIR/response.png,\n"
 "DIR/multipliers.png.  stdout: the special points as TSV.  phase is beta of\n"
@@ -64,8 +41,7 @@ static void help(FILE *f) {
 "exit status: 0; 2 for bad options (nothing computed); 1 when the run\n"
 "failed: no branch found, or a branch ended at DSMIN without convergence\n"
 "or with a persisting domain error (one line per branch on stderr; the\n"
-"tables are still written).\n");
-}
+"tables are still written).\n"};
 
 typedef struct row {
   int branch, pt, label, stable, nu, itype;
@@ -278,8 +254,9 @@ static int write_response_gp(cli_outdir *od, const tab *res,
       fprintf(f, "set label '%c' at %.10g, graph 0.95 center font 'Sans,14' tc rgb '#d62728'\n",
               'A' + i, xs[i]);
   }
+  char title[256];
   fprintf(f,
-          "set title 'SFD rigid rotor, %s: {/Symbol l} = %g, {/Symbol d} = %g, {/Symbol z} = %g, F_E = %g'\n"
+          "set title 'SFD rigid rotor, %s: %s'\n"
           "set xlabel 'dimensionless speed {/Symbol W}'\n"
           "set ylabel '%s'\n"
           "set xrange [0:%g]\nset yrange [0:1]\nset grid\nset key bottom right box opaque\n"
@@ -287,8 +264,7 @@ static int write_response_gp(cli_outdir *od, const tab *res,
           "     $unstable using 1:2 with lines dt 2 lw 2.5 lc rgb '#1f4e9c' title 'unstable', \\\n"
           "     $special using 1:2 with points pt 7 ps 1.6 lc rgb '#2ca02c' title 'LP (saddle-node)'\n",
           p[WHIRL_SFD_FE] == 0.0 ? "circular orbits" : "synchronous orbits",
-          p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA], p[WHIRL_SFD_FE],
-          ylab, wmax);
+          sfd_gp_params(title, sizeof title, p, SFD_P_MODEL | SFD_P(WHIRL_SFD_FE)), ylab, wmax);
   return out_commit(&o);
 }
 
@@ -337,26 +313,34 @@ int cmd_sfd_response(int argc, char **argv) {
   const char *dir = "sfd-response", *method_name = NULL;
   int plot = 1, quiet = 0, sparse = 0, noplot = 0;
   double omega_min = NAN, uz = NAN;
+  /* defaults that depend on the method */
+  char omega_min_shown[64], ds_shown[64];
+  snprintf(omega_min_shown, sizeof omega_min_shown, "%g; hbm/colloc %g", o.omega_min,
+           po.omega_min);
+  snprintf(ds_shown, sizeof ds_shown, "%g; hbm/colloc %g, the paper's", o.ds, po.ds);
   const cli_opt opts[] = {
-      {"--lambda", CLI_DOUBLE, &p[WHIRL_SFD_LAMBDA]},
-      {"--delta", CLI_DOUBLE, &p[WHIRL_SFD_DELTA]},
-      {"--zeta", CLI_DOUBLE, &p[WHIRL_SFD_ZETA]},
-      {"--fe", CLI_DOUBLE, &p[WHIRL_SFD_FE]},
-      {"--omega-max", CLI_DOUBLE, &o.omega_max},
-      {"--omega-min", CLI_DOUBLE, &omega_min},
-      {"--ds-max", CLI_DOUBLE, &o.ds_max},
-      {"--ds", CLI_DOUBLE, &o.ds},
-      {"--method", CLI_STRING, &method_name},
-      {"--harmonics", CLI_SIZE, &po.harmonics},
-      {"--oversampling", CLI_SIZE, &po.oversampling},
-      {"--ntst", CLI_SIZE, &po.ntst},
-      {"--ncol", CLI_SIZE, &po.ncol},
-      {"--uz", CLI_DOUBLE, &uz},
-      {"--sparse", CLI_FLAG, &sparse},
-      {"--out", CLI_STRING, &dir},
-      {"--no-plot", CLI_FLAG, &noplot},
-      {"--quiet", CLI_FLAG, &quiet}};
-  int prc = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+      SFD_OPT_LAMBDA(p),
+      SFD_OPT_PARAM(p, WHIRL_SFD_DELTA, "--delta", "D",
+                    "unbalance delta = e_G/c, 0 < D <= 10"),
+      SFD_OPT_ZETA(p),
+      {"--omega-max", CLI_DOUBLE, &o.omega_max, "W", "largest speed, W <= 1000", NULL},
+      {"--omega-min", CLI_DOUBLE, &omega_min, "M", "smallest speed, 0 < M < W", omega_min_shown},
+      SFD_OPT_FE(p),
+      {"--method", CLI_STRING, &method_name, "M",
+       "circular | hbm | colloc: circular orbits from the rotating-frame equilibria (F_E = 0 "
+       "only; the default then), or fixed-frame periodic orbits by harmonic balance (default "
+       "when F_E != 0) or by collocation", ""},
+      {"--harmonics", CLI_SIZE, &po.harmonics, "N", "HBM harmonics as in the paper", NULL},
+      {"--oversampling", CLI_SIZE, &po.oversampling, "K",
+       "HBM: K (2N+1) time samples (AFT) as in the paper", NULL},
+      {"--ntst", CLI_SIZE, &po.ntst, "N", "collocation mesh intervals", NULL},
+      {"--ncol", CLI_SIZE, &po.ncol, "C", "collocation points per interval", NULL},
+      {"--uz", CLI_DOUBLE, &uz, "W", "hbm/colloc: also report the orbits at Omega = W (UZ)", ""},
+      {"--ds", CLI_DOUBLE, &o.ds, "S", "first continuation step", ds_shown},
+      {"--ds-max", CLI_DOUBLE, &o.ds_max, "S", "largest continuation step (DSMAX)", NULL},
+      {"--sparse", CLI_FLAG, &sparse, NULL, "use the sparse (UMFPACK) linear solver", NULL},
+      CLI_OPTS_OUT(dir, noplot, quiet)};
+  int prc = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (prc) return prc == 1 ? 0 : 2;
   plot = !noplot;
   int method = p[WHIRL_SFD_FE] != 0.0 ? WHIRL_SFD_METHOD_HBM : WHIRL_SFD_METHOD_CIRCULAR;
@@ -373,15 +357,6 @@ int cmd_sfd_response(int argc, char **argv) {
   if (!periodic && p[WHIRL_SFD_FE] != 0.0) {
     cli_error(CMD, "--method circular needs --fe 0: with F_E = %g the orbits are not "
                    "circular (use --method hbm or colloc)", p[WHIRL_SFD_FE]);
-    return 2;
-  }
-  if (!isfinite(p[WHIRL_SFD_FE])) {
-    cli_error(CMD, "--fe must be finite");
-    return 2;
-  }
-  if (fabs(p[WHIRL_SFD_FE]) >= 1.0) {
-    cli_error(CMD, "--fe %g: the static deflection |F_E| >= 1 puts the journal on the "
-                   "housing (|F_E| < 1 needed)", p[WHIRL_SFD_FE]);
     return 2;
   }
   if (!has_option(argc, argv, "--ds") && periodic) o.ds = po.ds;
@@ -408,10 +383,7 @@ int cmd_sfd_response(int argc, char **argv) {
     return 2;
   }
   p[WHIRL_SFD_OMEGA] = o.omega_max;
-  if (whirl_sfd_check_params(p, msg, sizeof msg) != WHIRL_OK) {
-    cli_error(CMD, "%s", msg);
-    return 2;
-  }
+  if (sfd_check(CMD, p, 0)) return 2;
   if (!(p[WHIRL_SFD_DELTA] > 0)) {
     cli_error(CMD, "--delta must be > 0: without unbalance the rotor stays in the "
                    "centre and there is no orbit to trace");

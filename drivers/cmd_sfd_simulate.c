@@ -17,8 +17,7 @@
 
 #define CMD "sfd simulate"
 
-static void help(FILE *f) {
-  fprintf(f,
+static const cli_doc doc = {
 "usage: whirl sfd simulate --omega W [options]\n"
 "\n"
 "Transient and steady-state response of the rigid rotor on two short SFDs\n"
@@ -27,21 +26,7 @@ static void help(FILE *f) {
 "the run (or from --steady-from); its Poincare section is the state once per\n"
 "forcing period (tau = k 2 pi / Omega).\n"
 "\n"
-"options (defaults: Table 1 of the paper):\n"
-"  --omega W        dimensionless speed Omega > 0 (required)\n"
-"  --y0 A --z0 B    initial displacement / clearance     (0, 0)\n"
-"  --vy0 C --vz0 D  initial velocity                     (0, 0)\n"
-"  --periods N      forcing periods to integrate          (1000)\n"
-"  --steady-from K  first period of the steady state      (N/2)\n"
-"  --samples S      samples per period in the outputs     (64)\n"
-"  --max-steps M    most integration steps in one forcing period; more\n"
-"                   means the journal crawls along the housing (1000000)\n"
-"  --lambda L --delta D --zeta Z --fe F   model parameters (0.0503 0.3 0 0)\n"
-"  --rtol R --atol A  integration tolerances          (1e-12, 1e-15)\n"
-"                    1e-13 <= R <= 1e-3, 0 < A <= 1e-3\n"
-"  --out DIR        output directory                      (sfd-simulate)\n"
-"  --no-plot        data only;   --quiet   no summary on stderr\n"
-"\n"
+"options (defaults: Table 1 of the paper):\n",
 "stdout: a line 'class<TAB>K' with K one of circular, periodic,\n"
 "quasiperiodic, irregular, transient (not settled yet), contact; then the\n"
 "dominant frequencies of y in the steady state as TSV 'rank frequency\n"
@@ -50,8 +35,7 @@ static void help(FILE *f) {
 "files: history.tsv (t y z vy vz eps), poincare.tsv, spectrum.tsv,\n"
 "peaks.tsv, and history.png, orbit.png, spectrum.png, phase.png.\n"
 "exit status: 0 ok, 1 runtime error, 2 bad option, 3 the journal touched\n"
-"the housing (eps >= 1; data up to the contact are written).\n");
-}
+"the housing (eps >= 1; data up to the contact are written).\n"};
 
 typedef struct {
   double *buf; /* (nsamp+1) x 4 */
@@ -90,11 +74,9 @@ static int write_gp(cli_outdir *od, const char *name, const char *body,
   snprintf(file, sizeof file, "%s.gp", name);
   if (out_open(&o, od, file)) return -1;
   cli_gp_preamble(o.fp, CMD, name, 1000, 800, "Sans,12");
-  fprintf(o.fp,
-          "set grid\n"
-          "set title 'SFD rotor, {/Symbol W} = %g, {/Symbol l} = %g, "
-          "{/Symbol d} = %g, {/Symbol z} = %g, F_E = %g'\n%s",
-          p[0], p[1], p[2], p[3], p[4], body);
+  char title[256];
+  fprintf(o.fp, "set grid\nset title 'SFD rotor, %s'\n%s",
+          sfd_gp_params(title, sizeof title, p, ~0u), body);
   return out_commit(&o);
 }
 
@@ -143,35 +125,21 @@ int cmd_sfd_simulate(int argc, char **argv) {
   const char *dir = "sfd-simulate";
   int noplot = 0, quiet = 0;
   const cli_opt opts[] = {
-      {"--omega", CLI_DOUBLE, &p[WHIRL_SFD_OMEGA]},
-      {"--lambda", CLI_DOUBLE, &p[WHIRL_SFD_LAMBDA]},
-      {"--delta", CLI_DOUBLE, &p[WHIRL_SFD_DELTA]},
-      {"--zeta", CLI_DOUBLE, &p[WHIRL_SFD_ZETA]},
-      {"--fe", CLI_DOUBLE, &p[WHIRL_SFD_FE]},
-      {"--y0", CLI_DOUBLE, &x0[0]},
-      {"--z0", CLI_DOUBLE, &x0[1]},
-      {"--vy0", CLI_DOUBLE, &x0[2]},
-      {"--vz0", CLI_DOUBLE, &x0[3]},
-      {"--periods", CLI_SIZE, &periods},
-      {"--steady-from", CLI_SIZE, &steady_from},
-      {"--samples", CLI_SIZE, &samples},
-      {"--max-steps", CLI_SIZE, &max_steps},
-      {"--rtol", CLI_DOUBLE, &rtol},
-      {"--atol", CLI_DOUBLE, &atol},
-      {"--out", CLI_STRING, &dir},
-      {"--no-plot", CLI_FLAG, &noplot},
-      {"--quiet", CLI_FLAG, &quiet}};
-  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+      SFD_OPT_OMEGA(p),
+      SFD_OPTS_STATE(x0),
+      {"--periods", CLI_SIZE, &periods, "N", "forcing periods to integrate", NULL},
+      {"--steady-from", CLI_SIZE, &steady_from, "K", "first period of the steady state", "N/2"},
+      {"--samples", CLI_SIZE, &samples, "S", "samples per period in the outputs", NULL},
+      {"--max-steps", CLI_SIZE, &max_steps, "M",
+       "most integration steps in one forcing period; more means the journal crawls along "
+       "the housing", NULL},
+      SFD_OPTS_MODEL(p),
+      SFD_OPT_FE(p),
+      SFD_OPTS_TOL(rtol, atol),
+      CLI_OPTS_OUT(dir, noplot, quiet)};
+  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
-  if (isnan(p[WHIRL_SFD_OMEGA])) {
-    cli_error(CMD, "--omega is required (the dimensionless speed, e.g. --omega 8.7)");
-    return 2;
-  }
-  if (!(p[WHIRL_SFD_OMEGA] > 0)) {
-    cli_error(CMD, "--omega must be > 0 (got %g)", p[WHIRL_SFD_OMEGA]);
-    return 2;
-  }
-  if (sfd_check(CMD, p)) return 2;
+  if (sfd_check(CMD, p, 1)) return 2;
   if (hypot(x0[0], x0[1]) >= 1) {
     cli_error(CMD, "the initial displacement (%g, %g) is outside the clearance "
               "(|(y0, z0)| = %g must be < 1)", x0[0], x0[1], hypot(x0[0], x0[1]));
@@ -288,14 +256,17 @@ int cmd_sfd_simulate(int argc, char **argv) {
       emax = fmax(emax, e);
     }
     eps_spread = emax - emin;
-    cls = sfd_steady_class(P, npoin, eps_spread, &period, &dim);
+    cls = sfd_steady_class(CMD, P, npoin, eps_spread, &period, &dim);
+    if (!cls) {
+      free(P);
+      free(y);
+      free(h.buf);
+      return 1;
+    }
     for (size_t k = k0; k <= nsamp; ++k) y[k - k0] = h.buf[4 * k];
     /* dt = T/samples; frequency in units of the rotation frequency = f T */
     rc = whirl_spectrum_peaks(y, nsamp + 1 - k0, 1.0 / (double)samples, 1e-3, peaks, 12, &npk);
     if (rc != WHIRL_OK) npk = 0;
-    if (!strcmp(cls, "circular") || !strcmp(cls, "periodic")) {
-      /* a settled periodic response: only harmonics of the period remain */
-    }
     free(y);
   }
 

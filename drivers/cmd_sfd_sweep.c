@@ -17,37 +17,23 @@
 
 #define CMD "sfd sweep"
 
-static void help(FILE *f) {
-  fprintf(f,
+static const cli_doc doc = {
 "usage: whirl sfd sweep --from A --to B --step S [options]\n"
 "\n"
 "Up and/or down sweep of the speed by time integration, each speed started\n"
-"from the end state of the previous one (the first from rest, or --y0 ...).\n"
+"from the end state of the previous one (the first of each direction from\n"
+"rest, or from --y0 --z0 --vy0 --vz0).\n"
 "A speed is finished when successive Poincare points (once per forcing\n"
 "period) differ by less than --settle (relative) for 3 periods, else after\n"
 "--periods periods; then --record periods are kept as the steady state.\n"
 "\n"
-"options (defaults: Table 1 of the paper):\n"
-"  --from A --to B   speed range, A, B > 0 (required)\n"
-"  --step S          speed step > 0 (required)\n"
-"  --direction D     up, down or both                    (both)\n"
-"  --periods N       most periods per speed               (600)\n"
-"  --record R        periods kept as steady state         (400)\n"
-"  --settle TOL      convergence of the section           (1e-11)\n"
-"  --y0 --z0 --vy0 --vz0   initial state of each direction (0)\n"
-"  --lambda L --delta D --zeta Z   model parameters   (0.0503 0.3 0)\n"
-"  --rtol R --atol A  integration tolerances          (1e-12, 1e-15)\n"
-"                    1e-13 <= R <= 1e-3, 0 < A <= 1e-3\n"
-"  --out DIR         output directory                     (sfd-sweep)\n"
-"  --no-plot  --quiet\n"
-"\n"
+"options (defaults: Table 1 of the paper):\n",
 "stdout and DIR/sweep.tsv: direction Omega class eps_max eps_min periods\n"
 "eps_eq15 diff (eps_eq15: the radius of eq. 15 nearest to the settled\n"
 "circular orbit, diff = eps_max - eps_eq15).  DIR/poincare.tsv: the\n"
 "section points against Omega.  DIR/sweep.png: amplitudes over the\n"
 "continuation curve (Fig. 3); DIR/bifurcation.png: y of the section\n"
-"points against Omega (Fig. 11).\n");
-}
+"points against Omega (Fig. 11).\n"};
 
 typedef struct {
   double P[4]; /* last section point */
@@ -142,16 +128,17 @@ static int write_scripts(cli_outdir *od, const double *p, double lo, double hi, 
         }
       fprintf(f, "EOD\n");
     }
+    char title[256];
     fprintf(f,
-            "set title 'speed sweep by time integration over the circular orbits: {/Symbol l} = %g, "
-            "{/Symbol d} = %g, {/Symbol z} = %g'\n"
+            "set title 'speed sweep by time integration over the circular orbits: %s'\n"
             "set xlabel 'dimensionless speed {/Symbol W}'\nset ylabel 'max relative eccentricity {/Symbol e}'\n"
             "set xrange [%g:%g]\nset yrange [0:1]\nset grid\nset key bottom right box opaque\n"
             "plot $stable using 1:2 with lines lw 2 lc rgb '#1f4e9c' title 'stable (continuation)', \\\n"
             "  $unstable using 1:2 with lines dt 2 lw 2 lc rgb '#1f4e9c' title 'unstable', \\\n"
             "  'sweep.tsv' index 0 using 2:4 with points pt 1 ps 1.2 lc rgb 'black' title '%s sweep', \\\n"
             "  'sweep.tsv' index 1 using 2:4 with points pt 1 ps 1.2 lc rgb '#2ca02c' title 'down sweep'\n",
-            p[1], p[2], p[3], fmax(0, lo - 0.02 * (hi - lo)), hi + 0.02 * (hi - lo),
+            sfd_gp_params(title, sizeof title, p, SFD_P_MODEL), fmax(0, lo - 0.02 * (hi - lo)),
+            hi + 0.02 * (hi - lo),
             up ? "up" : "down");
     bad = out_commit(&g);
   }
@@ -178,17 +165,18 @@ int cmd_sfd_sweep(int argc, char **argv) {
   const char *dir = "sfd-sweep", *direction = "both";
   int noplot = 0, quiet = 0;
   const cli_opt opts[] = {
-      {"--from", CLI_DOUBLE, &from},        {"--to", CLI_DOUBLE, &to},
-      {"--step", CLI_DOUBLE, &step},        {"--direction", CLI_STRING, &direction},
-      {"--periods", CLI_SIZE, &periods},    {"--record", CLI_SIZE, &record},
-      {"--settle", CLI_DOUBLE, &settle},    {"--lambda", CLI_DOUBLE, &p[WHIRL_SFD_LAMBDA]},
-      {"--delta", CLI_DOUBLE, &p[WHIRL_SFD_DELTA]}, {"--zeta", CLI_DOUBLE, &p[WHIRL_SFD_ZETA]},
-      {"--y0", CLI_DOUBLE, &x0[0]},         {"--z0", CLI_DOUBLE, &x0[1]},
-      {"--vy0", CLI_DOUBLE, &x0[2]},        {"--vz0", CLI_DOUBLE, &x0[3]},
-      {"--rtol", CLI_DOUBLE, &rtol},        {"--atol", CLI_DOUBLE, &atol},
-      {"--out", CLI_STRING, &dir},          {"--no-plot", CLI_FLAG, &noplot},
-      {"--quiet", CLI_FLAG, &quiet}};
-  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], help);
+      {"--from", CLI_DOUBLE, &from, "A", "one end of the speed range, A > 0", NULL},
+      {"--to", CLI_DOUBLE, &to, "B", "the other end, B > 0", NULL},
+      {"--step", CLI_DOUBLE, &step, "S", "speed step, S > 0", NULL},
+      {"--direction", CLI_STRING, &direction, "D", "up, down or both", NULL},
+      {"--periods", CLI_SIZE, &periods, "N", "most periods per speed", NULL},
+      {"--record", CLI_SIZE, &record, "R", "periods kept as steady state", NULL},
+      {"--settle", CLI_DOUBLE, &settle, "TOL", "convergence of the section", NULL},
+      SFD_OPTS_STATE(x0),
+      SFD_OPTS_MODEL(p),
+      SFD_OPTS_TOL(rtol, atol),
+      CLI_OPTS_OUT(dir, noplot, quiet)};
+  int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
   if (isnan(from) || isnan(to) || isnan(step)) {
     cli_error(CMD, "--from, --to and --step are required (e.g. --from 1 --to 10 --step 0.05)");
@@ -226,7 +214,7 @@ int cmd_sfd_sweep(int argc, char **argv) {
     return 2;
   }
   p[WHIRL_SFD_OMEGA] = hi;
-  if (sfd_check(CMD, p)) return 2;
+  if (sfd_check(CMD, p, 0)) return 2;
   if (hypot(x0[0], x0[1]) >= 1) {
     cli_error(CMD, "the initial displacement is outside the clearance (|(y0, z0)| must be < 1)");
     return 2;
@@ -317,10 +305,13 @@ int cmd_sfd_sweep(int argc, char **argv) {
         memcpy(x, whirl_ode_x(ode), sizeof x);
         size_t per = 0;
         double dim;
-        if (sc.settled) {
-          cls = rcx.emax - rcx.emin < 1e-6 ? "circular" : "periodic";
-        } else {
-          cls = sfd_steady_class(P, rcx.np, rcx.emax - rcx.emin, &per, &dim);
+        cls = sc.settled ? sfd_steady_name(WHIRL_STEADY_FIXED, rcx.emax - rcx.emin)
+                         : sfd_steady_class(CMD, P, rcx.np, rcx.emax - rcx.emin, &per, &dim);
+        if (!cls) {
+          cli_progress_end(&prog);
+          whirl_ode_free(ode);
+          status = 1;
+          break;
         }
         if (!strcmp(cls, "circular")) {
           e15 = eq15_radius(p, rcx.emax);

@@ -9,6 +9,37 @@
 
 #include "cli.h"
 
+/* The sfd commands: the dispatch and both command lists of the help. */
+typedef struct sfd_command {
+  const char *name;
+  int (*run)(int argc, char **argv);
+  const char *what;
+} sfd_command;
+static const sfd_command sfd_commands[] = {
+    {"response", cmd_sfd_response,
+     "every branch of synchronous circular orbits of the SFD rotor against speed, with "
+     "stability, Floquet multipliers, folds (LP) and pictures"},
+    {"simulate", cmd_sfd_simulate,
+     "one response by time integration: orbit, Poincare section, spectrum, class"},
+    {"sweep", cmd_sfd_sweep, "up/down speed sweep by time integration (Figs. 3, 11)"},
+    {"basins", cmd_sfd_basins, "basins of attraction at one speed (Figs. 12-17)"},
+    {"onset", cmd_sfd_onset, "onset of the nonsynchronous response from rest"},
+    {"nonsync", cmd_sfd_nonsync,
+     "the nonsynchronous response continued as a periodic orbit of the rotating frame "
+     "(birth, stability, second frequency)"},
+    {"merge", cmd_sfd_merge, "isola-peak merge point (two-parameter continuation)"},
+    {"region", cmd_sfd_region, "region of (lambda, delta) with an isola (Fig. 18)"}};
+#define NSFD (sizeof sfd_commands / sizeof sfd_commands[0])
+
+/* The sfd commands as help items, each named PREFIX NAME, text at COL. */
+static void list_sfd(FILE *f, const char *prefix, size_t col) {
+  char label[64];
+  for (size_t k = 0; k < NSFD; ++k) {
+    snprintf(label, sizeof label, "%s%s", prefix, sfd_commands[k].name);
+    cli_help_item(f, label, sfd_commands[k].what, col);
+  }
+}
+
 static void usage(FILE *f) {
   fprintf(f,
           "usage: whirl <command> [options]\n"
@@ -16,20 +47,13 @@ static void usage(FILE *f) {
           "Numerical continuation and bifurcation analysis, first for rigid\n"
           "rotors on squeeze-film dampers.\n"
           "\n"
-          "commands:\n"
-          "  run FILE       run an AUTO-style run file on any model (built-in or\n"
-          "                 a plug-in .so): equilibria, periodic orbits, loci,\n"
-          "                 branch switching, basins (doc/run-files.md)\n"
-          "  sfd response   every branch of synchronous circular orbits of the\n"
-          "                 SFD rotor against speed, with stability, Floquet\n"
-          "                 multipliers, folds (LP) and pictures\n"
-          "  sfd simulate   one response by time integration: orbit, Poincare\n"
-          "                 section, spectrum, class\n"
-          "  sfd sweep      up/down speed sweep by time integration (Figs. 3, 11)\n"
-          "  sfd basins     basins of attraction at one speed (Figs. 12-17)\n"
-          "  sfd onset      onset of the nonsynchronous response from rest\n"
-          "  sfd merge      isola-peak merge point (two-parameter continuation)\n"
-          "  sfd region     region of (lambda, delta) with an isola (Fig. 18)\n"
+          "commands:\n");
+  cli_help_item(f, "run FILE",
+                "run an AUTO-style run file on any model (built-in or a plug-in .so): "
+                "equilibria, periodic orbits, loci, branch switching, basins "
+                "(doc/run-files.md)", 17);
+  list_sfd(f, "sfd ", 17);
+  fprintf(f,
           "\n"
           "  whirl <command> --help   options of a command\n"
           "  whirl --version          library version\n");
@@ -40,16 +64,9 @@ static void sfd_usage(FILE *f) {
           "usage: whirl sfd <command> [options]\n"
           "\n"
           "The rigid rotor on two short squeeze-film dampers (pi-film).\n"
-          "commands:\n"
-          "  response   all branches of circular orbits, stability, LP points\n"
-          "  simulate   one response by time integration\n"
-          "  sweep      speed sweep by time integration\n"
-          "  basins     basins of attraction\n"
-          "  onset      onset of the nonsynchronous response from rest\n"
-          "  nonsync    the nonsynchronous response continued as a periodic orbit\n"
-          "             of the rotating frame (birth, stability, second frequency)\n"
-          "  merge      isola-peak merge point for one lambda\n"
-          "  region     region of (lambda, delta) with an isolated branch (Fig. 18)\n");
+          "commands:\n");
+  list_sfd(f, "", 13);
+  fprintf(f, "\n  whirl sfd <command> --help   options of a command\n");
 }
 
 int main(int argc, char **argv) {
@@ -75,14 +92,8 @@ int main(int argc, char **argv) {
       sfd_usage(stdout);
       return 0;
     }
-    if (!strcmp(argv[2], "response")) return cmd_sfd_response(argc - 2, argv + 2);
-    if (!strcmp(argv[2], "simulate")) return cmd_sfd_simulate(argc - 2, argv + 2);
-    if (!strcmp(argv[2], "sweep")) return cmd_sfd_sweep(argc - 2, argv + 2);
-    if (!strcmp(argv[2], "basins")) return cmd_sfd_basins(argc - 2, argv + 2);
-    if (!strcmp(argv[2], "onset")) return cmd_sfd_onset(argc - 2, argv + 2);
-    if (!strcmp(argv[2], "nonsync")) return cmd_sfd_nonsync(argc - 2, argv + 2);
-    if (!strcmp(argv[2], "merge")) return cmd_sfd_merge(argc - 2, argv + 2);
-    if (!strcmp(argv[2], "region")) return cmd_sfd_region(argc - 2, argv + 2);
+    for (size_t k = 0; k < NSFD; ++k)
+      if (!strcmp(argv[2], sfd_commands[k].name)) return sfd_commands[k].run(argc - 2, argv + 2);
     fprintf(stderr, "whirl sfd: unknown command '%s' (see whirl sfd --help)\n", argv[2]);
     return 2;
   }

@@ -40,7 +40,7 @@ int whirl_sfd_check_params(const double *p, char *msg, size_t len) {
   }
   for (int k = 0; k < WHIRL_SFD_NPAR; ++k)
     if (!isfinite(p[k])) return param_fail(msg, len, sfd_p_names[k], "finite", p[k]);
-  /* the rules, with the limits of whirl/sfd.h in the messages */
+  /* the rules, with the limits of whirl/rotor/sfd.h in the messages */
   char rule[64];
   snprintf(rule, sizeof rule, "in [0, %g]", WHIRL_SFD_OMEGA_MAX);
   if (!(p[WHIRL_SFD_OMEGA] >= 0.0 && p[WHIRL_SFD_OMEGA] <= WHIRL_SFD_OMEGA_MAX))

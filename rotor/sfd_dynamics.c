@@ -1,7 +1,7 @@
 /* rotor/sfd_dynamics.c — the attractors of the SFD rotor at one speed
  * (circular orbits from eq. 15 with Lyapunov certificates, the
  * nonsynchronous limit cycle of the rotating frame) and the initial states
- * of the paper's basins (§5.3).  See whirl/sfd_dynamics.h for the method.
+ * of the paper's basins (§5.3).  See whirl/rotor/sfd_dynamics.h for the method.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdint.h>

@@ -2,7 +2,7 @@
  * Fig. 18) by two-parameter continuation: the merge curve (fold system of
  * the rotating-frame equilibria with the MG condition, continued in lambda)
  * and the fold locus at Omega = W (fold system with delta freed and Omega
- * fixed, continued in lambda).  See whirl/sfd_region.h and
+ * fixed, continued in lambda).  See whirl/rotor/sfd_region.h and
  * doc/isola-region.md.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>

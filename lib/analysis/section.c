@@ -1,6 +1,8 @@
 /* lib/analysis/section.c — character of a Poincaré section
- * (whirl_section_classify, whirl/spectrum.h): fixed point, period-k cycle,
- * invariant curve or irregular set.  Points coincide within tol·size + tol,
+ * (whirl_section_classify, whirl/section.h): fixed point, period-k cycle,
+ * invariant curve or irregular set; and of the steady state it samples
+ * (whirl_steady_classify), which also tells points still converging or
+ * moving away.  Points coincide within tol·size + tol,
  * size the largest distance of a point from the centroid.  The period is the
  * smallest k ≤ max_period with every point P_i within that tolerance of
  * P_(i mod k) (so a slow drift is not taken for a cycle).
@@ -42,7 +44,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include <whirl/spectrum.h>
+#include <whirl/section.h>
 
 /* Minimum number of points for the dimension estimate (the 32nd neighbour
  * must lie well inside the set; reliable from a few hundred points). */
@@ -279,4 +281,71 @@ int whirl_section_classify(const double *pts, size_t npts, size_t dim,
   if (period) *period = 0;
   if (dimension) *dimension = d;
   return WHIRL_OK;
+}
+
+/* ------------------------------------------------------------------------
+ * Steady states */
+
+/* Sums of the distances between successive points over the first (*first)
+ * and the last (*last) tenth of the record (the same number of terms). */
+static void step_sums(const double *pts, size_t npts, size_t dim,
+                      double *first, double *last) {
+  const size_t m = npts / 10;
+  *first = *last = 0.0;
+  for (size_t k = 0; k < m; ++k) {
+    *first += sqrt(sqdist(pts + (k + 1) * dim, pts + k * dim, dim));
+    *last += sqrt(sqdist(pts + (npts - 1 - k) * dim, pts + (npts - 2 - k) * dim, dim));
+  }
+}
+
+int whirl_steady_classify(const double *pts, size_t npts, size_t dim,
+                          double tol, size_t max_period,
+                          whirl_steady_kind *kind, size_t *period,
+                          double *dimension) {
+  if (pts == NULL || kind == NULL || dim == 0 || !(tol >= 0.0) || !isfinite(tol))
+    return WHIRL_EINVAL;
+  if (npts > SIZE_MAX / dim) return WHIRL_EINVAL;
+  if (period) *period = 0;
+  if (dimension) *dimension = NAN;
+  for (size_t i = 0; i < npts * dim; ++i)
+    if (!isfinite(pts[i])) {
+      *kind = WHIRL_STEADY_DIVERGENT;
+      return WHIRL_OK;
+    }
+  if (npts < WHIRL_STEADY_MIN_POINTS) {
+    *kind = WHIRL_STEADY_TRANSIENT;
+    return WHIRL_OK;
+  }
+  whirl_section_kind sk;
+  size_t per = 0;
+  double d = NAN;
+  const int st = whirl_section_classify(pts, npts, dim, tol, max_period, &sk, &per, &d);
+  if (st != WHIRL_OK) return st;
+  if (period) *period = per;
+  if (dimension) *dimension = d;
+  if (sk == WHIRL_SECTION_FIXED || sk == WHIRL_SECTION_PERIODIC) {
+    *kind = sk == WHIRL_SECTION_FIXED ? WHIRL_STEADY_FIXED : WHIRL_STEADY_PERIODIC;
+    return WHIRL_OK;
+  }
+  double first, last;
+  step_sums(pts, npts, dim, &first, &last);
+  if (last < 1e-3 * first)
+    *kind = WHIRL_STEADY_TRANSIENT;
+  else if (last > 1e3 * first)
+    *kind = WHIRL_STEADY_DIVERGENT;
+  else
+    *kind = sk == WHIRL_SECTION_CURVE ? WHIRL_STEADY_QUASIPERIODIC : WHIRL_STEADY_IRREGULAR;
+  return WHIRL_OK;
+}
+
+const char *whirl_steady_kind_name(whirl_steady_kind kind) {
+  switch (kind) {
+    case WHIRL_STEADY_FIXED: return "fixed";
+    case WHIRL_STEADY_PERIODIC: return "periodic";
+    case WHIRL_STEADY_QUASIPERIODIC: return "quasiperiodic";
+    case WHIRL_STEADY_IRREGULAR: return "irregular";
+    case WHIRL_STEADY_TRANSIENT: return "transient";
+    case WHIRL_STEADY_DIVERGENT: return "divergent";
+  }
+  return "?";
 }

@@ -1,6 +1,7 @@
 /* whirl/spectrum.h — signal analysis of time histories: amplitude spectra by
- * a windowed DFT with peak interpolation, and the character of a Poincaré
- * section (fixed point, period-k, invariant curve, irregular).
+ * a windowed DFT with peak interpolation.  The character of a Poincaré
+ * section (fixed point, period-k, invariant curve, irregular) is in
+ * whirl/section.h, included here for the code that found it here.
  *
  * Spectrum: the (window-weighted) mean is removed, a Hann window applied, the record zero-
  * padded to 4 times the next power of two ≥ m (radix-2 FFT), and each peak's
@@ -18,6 +19,7 @@
 
 #include <stddef.h>
 #include <whirl/status.h>
+#include <whirl/section.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -55,40 +57,6 @@ WHIRL_API int whirl_spectrum(const double *x, size_t m, double dt,
 WHIRL_API int whirl_spectrum_peaks(const double *x, size_t m, double dt,
                                    double rel_threshold, whirl_peak *peaks,
                                    size_t maxpeaks, size_t *npeaks);
-
-/* Character of a Poincaré section. */
-typedef enum whirl_section_kind {
-  WHIRL_SECTION_FIXED = 0,     /* all points coincide: period-1 motion */
-  WHIRL_SECTION_PERIODIC = 1,  /* k distinct points repeating: period-k */
-  WHIRL_SECTION_CURVE = 2,     /* points fill a closed curve: quasiperiodic */
-  WHIRL_SECTION_IRREGULAR = 3  /* points fill an area or a fractal: chaotic */
-} whirl_section_kind;
-
-/* Classify npts points pts[npts*dim] (row i = pts[i*dim .. i*dim+dim-1], in
- * time order).  Two points coincide when their distance is at most tol times
- * the size of the set (largest distance from the centroid) plus tol
- * (absolute).  Period k is the smallest k ≤ max_period (at least 1 is tried)
- * with every P_i coinciding with P_{i mod k} (hence |P_{i+k} − P_i| small
- * for all i, and no slow drift): k = 1 is FIXED, k > 1 PERIODIC.  A cycle
- * longer than max_period (some k ≤ npts/2) is PERIODIC with *period = 0.
- * Otherwise the correlation-type dimension d of the set is estimated from
- * how nearest-neighbour distances scale, r ∝ (k/n)^(1/d) for the k-th of n
- * points: d = log 4 / log(r_32 / r_8), r_k the median distance to the k-th
- * nearest neighbour (the 8th among a quarter of the points is on average
- * the 32nd among all; using several neighbours and all points averages out
- * the gap structure of quasi-periodic points and is blind to a 2- or 4-fold
- * interleaving, where the 1st neighbour of every 4th point fails — see
- * lib/analysis/section.c).  d < 1.5 is a curve, otherwise irregular;
- * reliable from a few hundred points.
- * Outputs: *kind, *period (k, or 0), *dimension (0 for fixed and periodic,
- * +inf if the distances do not shrink at all); period and dimension may be
- * NULL.  WHIRL_EINVAL for npts < 2, npts < 2*max_period, npts < 64 when
- * the dimension is needed, dim = 0, tol < 0 or non-finite coordinates. */
-WHIRL_API int whirl_section_classify(const double *pts, size_t npts,
-                                     size_t dim, double tol,
-                                     size_t max_period,
-                                     whirl_section_kind *kind, size_t *period,
-                                     double *dimension);
 
 #ifdef __cplusplus
 }

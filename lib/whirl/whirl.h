@@ -11,6 +11,7 @@
 #include <whirl/equilibrium.h>
 #include <whirl/ode.h>
 #include <whirl/spectrum.h>
+#include <whirl/section.h>
 #include <whirl/basins.h>
 #include <whirl/floquet.h>
 #include <whirl/hbm.h>

@@ -19,6 +19,70 @@ for args in "--help" "sfd --help" "sfd response --help"; do
   ok $(( rc != 0 || $? != 0 )) "whirl $args prints usage and exits 0"
 done
 
+# the sfd commands: `whirl sfd --help` and `whirl --help` list the same,
+# every one of them
+sfd_cmds=$("$WHIRL" sfd --help | sed -n 's/^  \([a-z][a-z]*\)   *[a-z].*/\1/p')
+top_cmds=$("$WHIRL" --help | sed -n 's/^  sfd \([a-z][a-z]*\)   *[a-z].*/\1/p')
+[ "$(echo $sfd_cmds)" = "response simulate sweep basins onset nonsync merge region" ] &&
+  [ "$(echo $top_cmds)" = "$(echo $sfd_cmds)" ]
+ok $? "whirl --help and whirl sfd --help list the eight sfd commands (got: $(echo $sfd_cmds); $(echo $top_cmds))"
+
+# every sfd command's --help comes from its option table: each option it
+# lists is one the command accepts (OPT or OPT=1, then an unknown option,
+# so nothing runs), the defaults are the code's (those before the options
+# given), and the SFD parameters show Table 1
+for c in $sfd_cmds; do
+  "$WHIRL" sfd $c --help > "$tmp/help.txt" 2>&1
+  rc=$?
+  # "  --name ARG  text": ARG an upper-case placeholder; flags have none
+  opts=$(sed -n 's/^  \(--[a-z0-9-]*\)\( [A-Z][A-Z]*\)\{0,1\} .*/\1\2/p' "$tmp/help.txt" |
+         sed 's/ [A-Z]*$/=1/' | grep -v '^--help$')
+  bad=""
+  for o in $opts; do
+    "$WHIRL" sfd $c "$o" --no-such-option > /dev/null 2> "$tmp/stderr"
+    grep -q "unknown option '--no-such-option'" "$tmp/stderr" || bad="$bad $o"
+  done
+  ok $(( rc != 0 )) "whirl sfd $c --help exits 0"
+  [ -n "$opts" ] && [ -z "$bad" ]
+  ok $? "whirl sfd $c accepts every option its --help lists ($(echo $opts | wc -w))${bad:+, not:$bad}"
+done
+"$WHIRL" sfd sweep --periods 7 --lambda 2 --help > "$tmp/help.txt"
+grep -q -- "--periods N .*(600)" "$tmp/help.txt" && grep -q -- "--lambda L .*(0.0503)" "$tmp/help.txt"
+ok $? "--help after options shows the defaults, not the values given"
+miss=""
+for c in response simulate sweep basins onset nonsync; do
+  "$WHIRL" sfd $c --help > "$tmp/help.txt"
+  grep -q -- "--lambda L .*(0.0503)" "$tmp/help.txt" && grep -q -- "--delta D .*(0.3)" "$tmp/help.txt" &&
+    grep -q -- "--zeta Z .*(0)" "$tmp/help.txt" || miss="$miss $c"
+done
+[ -z "$miss" ]
+ok $? "--help shows Table 1 (lambda 0.0503, delta 0.3, zeta 0)${miss:+; not in:$miss}"
+"$WHIRL" sfd simulate --help | grep -q -- "--steady-from K .*(N/2)" &&
+  "$WHIRL" sfd response --help | grep -q -- "--omega-min M .*(0.01; hbm/colloc 0.05)" &&
+  "$WHIRL" sfd nonsync --help | grep -q -- "--ntst N .*(35)"
+ok $? "--help shows computed defaults (simulate --steady-from, response --omega-min, nonsync --ntst)"
+
+# the SFD parameters are checked alike by every command, before any work
+check_param() {
+  pattern=$1; shift
+  rm -rf "$tmp/p-out"
+  (cd "$tmp" && "$WHIRL" "$@" > stdout 2> stderr)
+  rc=$?
+  grep -q -- "$pattern" "$tmp/stderr"
+  found=$?
+  [ ! -e "$tmp/p-out" ] && [ ! -e "$tmp/sfd-region" ]
+  ok $(( rc != 2 || found != 0 || $? != 0 )) "whirl $* : $(head -n 1 "$tmp/stderr")"
+}
+check_param "lambda is required" sfd merge
+check_param "lambda must be in (0, 100\] (got 500)" sfd merge --lambda 500
+check_param "zeta must be in \[0, 10\] (got 11)" sfd merge --lambda 0.25 --zeta 11
+check_param "zeta must be in \[0, 10\] (got -1)" sfd region --zeta -1
+check_param "lambda must be in (0, 100\] (got 200)" sfd nonsync --lambda 200 --out p-out
+check_param "omega is required" sfd basins --out p-out
+check_param "FE must be in (-1, 1)" sfd simulate --omega 2 --fe -1 --out p-out
+check_param "delta must be in \[0, 10\] (got 11)" sfd onset --from 1 --to 2 --delta 11
+check_param "zeta must be in \[0, 10\] (got 12)" sfd sweep --from 1 --to 2 --step 0.5 --zeta 12 --out p-out
+
 # bad input: message names the problem, exit status non-zero, nothing written
 check_bad() {
   pattern=$1; shift

@@ -4,13 +4,18 @@
  * the Hann kernel on an exact bin, off-bin tones, two incommensurate tones
  * with combination tones, DC offset, deterministic noise and side lobes;
  * fixed points, cycles, invariant curves of irrational rotations, uniformly
- * filled areas, the Hénon attractor, and argument errors.
+ * filled areas, the Hénon attractor, and argument errors; the steady
+ * state those points sample (whirl_steady_classify): fixed, period 3, a
+ * long cycle, a quasiperiodic circle, an area, a converging spiral, a
+ * diverging one, a record too short, a non-finite point.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
+#include <whirl/section.h>
 #include <whirl/spectrum.h>
 
 #include "../tap.h"
@@ -468,6 +473,130 @@ static void test_section_errors(void) {
   ok(st == WHIRL_EINVAL, "-Inf coordinate: EINVAL");
 }
 
+/* ------------------------------------------------------------------------
+ * Steady states */
+
+static int steady(const double *pts, size_t n, size_t dim, whirl_steady_kind *kind,
+                  size_t *per, double *d) {
+  *kind = (whirl_steady_kind)-1;
+  *per = 999;
+  *d = -1.0;
+  return whirl_steady_classify(pts, n, dim, 1e-6, 16, kind, per, d);
+}
+
+/* n points r_k (cos k th, sin k th), r_k = r0 g^k, in the plane */
+static void spiral(double *p, size_t n, double r0, double g, double th) {
+  double r = r0;
+  for (size_t k = 0; k < n; ++k, r *= g) {
+    p[2 * k] = r * cos(th * (double)k);
+    p[2 * k + 1] = r * sin(th * (double)k);
+  }
+}
+
+static void test_steady(void) {
+  enum { N = 400 };
+  double *p = malloc(4 * N * sizeof *p);
+  whirl_steady_kind kind;
+  size_t per;
+  double d;
+  int st;
+
+  for (size_t i = 0; i < 4 * N; ++i) p[i] = (i % 4 == 0 ? 0.6 : 0.1) + tap_urand(-1e-12, 1e-12);
+  st = steady(p, N, 4, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_FIXED && per == 1 && d == 0.0,
+     "a fixed point (+ 1e-12 noise) in 4-d: FIXED, period 1 (got %s, %zu)",
+     whirl_steady_kind_name(kind), per);
+
+  const double cyc[3][2] = {{0.7, 0.1}, {-0.3, 0.5}, {-0.2, -0.6}};
+  for (size_t i = 0; i < N; ++i) {
+    p[2 * i] = cyc[i % 3][0];
+    p[2 * i + 1] = cyc[i % 3][1];
+  }
+  st = steady(p, N, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_PERIODIC && per == 3,
+     "a period-3 sequence: PERIODIC, period 3 (got %s, %zu)", whirl_steady_kind_name(kind), per);
+
+  spiral(p, N, 1.0, 1.0, 2.0 * PI * 3.0 / 29.0);
+  st = steady(p, N, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_PERIODIC && per == 0,
+     "a 29-cycle (longer than 16): PERIODIC, period 0 (got %s, %zu)",
+     whirl_steady_kind_name(kind), per);
+
+  /* the golden rotation on a circle: never repeats, fills the circle */
+  spiral(p, N, 1.0, 1.0, PI * (3.0 - sqrt(5.0)));
+  st = steady(p, N, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_QUASIPERIODIC && per == 0 && fabs(d - 1.0) < 0.2,
+     "a quasiperiodic circle: QUASIPERIODIC, dimension %g ~ 1 (got %s)", d,
+     whirl_steady_kind_name(kind));
+
+  for (size_t i = 0; i < 2 * N; ++i) p[i] = tap_urand(-1.0, 1.0);
+  st = steady(p, N, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_IRREGULAR && d > 1.5,
+     "points filling a square: IRREGULAR, dimension %g (got %s)", d, whirl_steady_kind_name(kind));
+
+  /* converging: the steps shrink by 0.95^360 ~ 1e-8 over the record, too
+   * slowly for the points to be one point within the tolerance */
+  spiral(p, N, 1.0, 0.95, 2.0 * PI * 0.2974);
+  st = steady(p, N, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_TRANSIENT && isfinite(d),
+     "a converging spiral: TRANSIENT, not a curve (got %s, dimension %g)",
+     whirl_steady_kind_name(kind), d);
+  /* the same converging slowly (the steps shrink 100-fold): classified by
+   * the shape of the set, not taken for a transient */
+  spiral(p, N, 1.0, pow(0.01, 1.0 / 360.0), 2.0 * PI * 0.2974);
+  st = steady(p, N, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK && (kind == WHIRL_STEADY_QUASIPERIODIC || kind == WHIRL_STEADY_IRREGULAR),
+     "a spiral converging 100-fold: not TRANSIENT (got %s)", whirl_steady_kind_name(kind));
+
+  /* diverging: r_k = 1e-9 1.05^k, to 3e-1 */
+  spiral(p, N, 1e-9, 1.05, 2.0 * PI * 0.2974);
+  st = steady(p, N, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_DIVERGENT,
+     "a diverging spiral: DIVERGENT (got %s)", whirl_steady_kind_name(kind));
+  /* diverging on a line, x_k = 1.1^k (to 5e16) */
+  for (size_t i = 0; i < N; ++i) {
+    p[2 * i] = pow(1.1, (double)i);
+    p[2 * i + 1] = 0.0;
+  }
+  st = steady(p, N, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_DIVERGENT,
+     "x_k = 1.1^k: DIVERGENT (got %s)", whirl_steady_kind_name(kind));
+  p[2 * 300] = INFINITY;
+  st = steady(p, N, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_DIVERGENT && per == 0 && isnan(d),
+     "an infinite point: DIVERGENT, dimension NaN (got %s)", whirl_steady_kind_name(kind));
+  p[2 * 300] = NAN;
+  st = steady(p, N, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_DIVERGENT, "a NaN point: DIVERGENT");
+
+  spiral(p, N, 1.0, 1.0, PI * (3.0 - sqrt(5.0)));
+  st = steady(p, WHIRL_STEADY_MIN_POINTS - 1, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_TRANSIENT && per == 0 && isnan(d),
+     "63 points: TRANSIENT (too few to tell), dimension NaN");
+  st = steady(p, WHIRL_STEADY_MIN_POINTS, 2, &kind, &per, &d);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_QUASIPERIODIC, "64 points of the circle: QUASIPERIODIC");
+
+  st = whirl_steady_classify(NULL, N, 2, 1e-6, 16, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL, "pts NULL: EINVAL");
+  st = whirl_steady_classify(p, N, 2, 1e-6, 16, NULL, &per, &d);
+  ok(st == WHIRL_EINVAL, "kind NULL: EINVAL");
+  st = whirl_steady_classify(p, N, 0, 1e-6, 16, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL, "dim 0: EINVAL");
+  st = whirl_steady_classify(p, N, 2, -1.0, 16, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL, "tol < 0: EINVAL");
+  st = whirl_steady_classify(p, 100, 2, 1e-6, 51, &kind, &per, &d);
+  ok(st == WHIRL_EINVAL, "max_period > npts / 2: EINVAL");
+  st = whirl_steady_classify(p, N, 2, 1e-6, 16, &kind, NULL, NULL);
+  ok(st == WHIRL_OK && kind == WHIRL_STEADY_QUASIPERIODIC, "period, dimension NULL: fine");
+
+  ok(!strcmp(whirl_steady_kind_name(WHIRL_STEADY_FIXED), "fixed") &&
+         !strcmp(whirl_steady_kind_name(WHIRL_STEADY_QUASIPERIODIC), "quasiperiodic") &&
+         !strcmp(whirl_steady_kind_name(WHIRL_STEADY_DIVERGENT), "divergent") &&
+         !strcmp(whirl_steady_kind_name((whirl_steady_kind)42), "?"),
+     "kind names");
+  free(p);
+}
+
 int main(void) {
   test_bins();
   test_single_tone();
@@ -478,5 +607,6 @@ int main(void) {
   test_curves();
   test_irregular();
   test_section_errors();
+  test_steady();
   return done_testing();
 }
