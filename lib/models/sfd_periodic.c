@@ -51,16 +51,6 @@ void whirl_sfd_periodic_free(whirl_sfd_periodic *r) {
   memset(r, 0, sizeof *r);
 }
 
-static int fail(char *errbuf, size_t errlen, int code, const char *fmt, ...) {
-  if (errbuf && errlen) {
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(errbuf, errlen, fmt, ap);
-    va_end(ap);
-  }
-  return code;
-}
-
 /* ------------------------------------------------ discretisation wrapper */
 typedef struct pdisc {
   int method;
@@ -101,8 +91,9 @@ static int pd_alloc(pdisc *d, const whirl_problem *prob, int forcing_param,
     d->sys = whirl_colloc_system(d->c);
     d->size = whirl_colloc_size(d->c);
   } else {
-    return fail(errbuf, errlen, WHIRL_EINVAL,
-                "periodic orbits need method hbm or colloc (got %d)", o->method);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "periodic orbits need method hbm or colloc (got %d)",
+                        o->method);
   }
   return WHIRL_OK;
 }
@@ -312,14 +303,14 @@ static int check_options(const double *p, const whirl_sfd_periodic_options *o,
                          char *errbuf, size_t errlen) {
   char msg[256];
   if (whirl_sfd_check_params(p, msg, sizeof msg) != WHIRL_OK)
-    return fail(errbuf, errlen, WHIRL_EINVAL, "%s", msg);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "%s", msg);
   if (!(o->omega_min > 0) || !(o->omega_max > o->omega_min))
-    return fail(errbuf, errlen, WHIRL_EINVAL,
-                "need 0 < omega_min < omega_max (got %g, %g)", o->omega_min,
-                o->omega_max);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "need 0 < omega_min < omega_max (got %g, %g)",
+                        o->omega_min, o->omega_max);
   if (!(o->ds > 0) || !(o->ds_max >= o->ds))
-    return fail(errbuf, errlen, WHIRL_EINVAL, "need 0 < ds <= ds_max (got %g, %g)",
-                o->ds, o->ds_max);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "need 0 < ds <= ds_max (got %g, %g)", o->ds, o->ds_max);
   return WHIRL_OK;
 }
 
@@ -457,7 +448,8 @@ int whirl_sfd_periodic_response(const double *p0,
   whirl_sfd_response_free(&circ);
   pd_free(&d);
   if (rc != WHIRL_OK) {
-    if (errbuf && !errbuf[0]) fail(errbuf, errlen, rc, "%s", whirl_strerror(rc));
+    if (errbuf && !errbuf[0])
+      WHIRL_ERRMSG(errbuf, errlen, rc, "%s", whirl_strerror(rc));
     whirl_sfd_periodic_free(out);
   }
   return rc;
@@ -531,18 +523,23 @@ static int cycle_from_integration(const double *p, size_t m, double *xs,
     }
   }
   if (rc != WHIRL_OK) {
-    rc = fail(errbuf, errlen, rc, "nonsync: integration from rest at Omega = %g "
-                                  "failed: %s", Om, whirl_ode_errmsg(ode));
+    rc = WHIRL_ERRMSG(errbuf, errlen, rc,
+                      "nonsync: integration from rest at Omega = %g "
+                      "failed: %s",
+                      Om, whirl_ode_errmsg(ode));
     whirl_ode_free(ode);
     return rc;
   }
   if (nc < 2 || !found || scale < 1e-9) {
     whirl_ode_free(ode);
-    return fail(errbuf, errlen, WHIRL_ENOCONV,
-                "nonsync: from rest at Omega = %g the rotor settles on %s, not "
-                "on a nonsynchronous cycle; start at another speed "
-                "(--omega-start)",
-                Om, nc < 2 ? "a circular orbit" : "no periodic cycle of the rotating frame");
+    return WHIRL_ERRMSG(
+        errbuf, errlen, WHIRL_ENOCONV,
+        "nonsync: from rest at Omega = %g the rotor settles on %s, not "
+        "on a nonsynchronous cycle; start at another speed "
+        "(--omega-start)",
+        Om,
+        nc < 2 ? "a circular orbit"
+               : "no periodic cycle of the rotating frame");
   }
   *T = Tr;
   whirl_ode_set_tolerances(ode, 1e-12, 1e-15);
@@ -550,7 +547,9 @@ static int cycle_from_integration(const double *p, size_t m, double *xs,
   sample_ctx sc = {xs, m};
   rc = whirl_ode_sample(ode, *T / (double)m, m - 1, take_sample, &sc);
   whirl_ode_free(ode);
-  if (rc != WHIRL_OK) return fail(errbuf, errlen, rc, "nonsync: sampling the cycle failed");
+  if (rc != WHIRL_OK)
+    return WHIRL_ERRMSG(errbuf, errlen, rc,
+                        "nonsync: sampling the cycle failed");
   /* a circular orbit is an equilibrium of the rotating frame: its decaying
    * oscillation also returns to the section, but with (almost) no
    * amplitude left */
@@ -558,11 +557,12 @@ static int cycle_from_integration(const double *p, size_t m, double *xs,
   for (size_t k = 1; k < m; ++k)
     for (int i = 0; i < 2; ++i) spread = fmax(spread, fabs(xs[4 * k + i] - xs[i]));
   if (spread < 1e-2 * fmax(scale, 1e-3))
-    return fail(errbuf, errlen, WHIRL_ENOCONV,
-                "nonsync: from rest at Omega = %g the rotor settles on a circular "
-                "orbit (an equilibrium of the rotating frame), not on a "
-                "nonsynchronous cycle; start at another speed (--omega-start)",
-                p[WHIRL_SFD_OMEGA]);
+    return WHIRL_ERRMSG(
+        errbuf, errlen, WHIRL_ENOCONV,
+        "nonsync: from rest at Omega = %g the rotor settles on a circular "
+        "orbit (an equilibrium of the rotating frame), not on a "
+        "nonsynchronous cycle; start at another speed (--omega-start)",
+        p[WHIRL_SFD_OMEGA]);
   return WHIRL_OK;
 }
 
@@ -576,12 +576,13 @@ int whirl_sfd_nonsync(const double *p0, double omega_start,
   int rc = check_options(p, o, errbuf, errlen);
   if (rc) return rc;
   if (p[WHIRL_SFD_FE] != 0.0)
-    return fail(errbuf, errlen, WHIRL_EINVAL,
-                "nonsync: the rotating frame needs F_E = 0 (got %g)", p[WHIRL_SFD_FE]);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "nonsync: the rotating frame needs F_E = 0 (got %g)",
+                        p[WHIRL_SFD_FE]);
   if (!(omega_start >= o->omega_min && omega_start <= o->omega_max))
-    return fail(errbuf, errlen, WHIRL_EINVAL,
-                "nonsync: start speed %g outside [%g, %g]", omega_start, o->omega_min,
-                o->omega_max);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "nonsync: start speed %g outside [%g, %g]", omega_start,
+                        o->omega_min, o->omega_max);
   out->method = o->method;
   const size_t msamp = seed_samples(o);
   double *xs = malloc(4 * msamp * sizeof *xs), T = 0;

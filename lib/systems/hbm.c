@@ -19,6 +19,8 @@
 #include <whirl/floquet.h>
 #include <whirl/hbm.h>
 
+#include "util/errmsg_impl.h"
+
 struct whirl_hbm {
   const whirl_problem *prob;
   whirl_hbm_options o;
@@ -37,6 +39,7 @@ struct whirl_hbm {
   double *work;         /* 2n finite differences */
   int *Jp, *Ji;         /* compressed-column pattern */
   whirl_system sys;
+  char errmsg[WHIRL_ERRMSG_SIZE]; /* last message (whirl_hbm_errmsg) */
 };
 
 void whirl_hbm_options_default(whirl_hbm_options *o) {
@@ -207,7 +210,9 @@ int whirl_hbm_multipliers(const whirl_hbm *h, const double *X, const double *p,
                           char *errbuf, size_t errlen) {
   double x0[64];
   double *x = h->n <= 64 ? x0 : malloc(h->n * sizeof *x);
-  if (!x) return WHIRL_ENOMEM;
+  if (!x)
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_ENOMEM,
+                        "hbm multipliers: out of memory");
   whirl_hbm_eval(h, X, 0.0, x);
   int rc = whirl_floquet_multipliers(h->prob, p, h->o.t0, x,
                                      whirl_hbm_period(h, X, p), h->autonomous,
@@ -220,8 +225,9 @@ int whirl_hbm_multipliers(const whirl_hbm *h, const double *X, const double *p,
 static int hbm_spectrum(const double *X, const double *p, const double *J,
                         double *re, double *im, size_t *m, void *data) {
   (void)J;
-  const whirl_hbm *h = data;
-  int rc = whirl_hbm_multipliers(h, X, p, re, im, m, NULL, NULL, 0);
+  whirl_hbm *h = data;
+  int rc = whirl_hbm_multipliers(h, X, p, re, im, m, NULL, h->errmsg,
+                                 sizeof h->errmsg);
   /* a trajectory that leaves the model's domain during the variational
    * integration is recoverable (the step is retried), as the model says */
   return rc;
@@ -268,10 +274,10 @@ whirl_hbm *whirl_hbm_alloc(const whirl_problem *prob,
   if (opt) o = *opt;
   else whirl_hbm_options_default(&o);
   if (errbuf && errlen) errbuf[0] = '\0';
-#define HBM_BAD(...)                                                           \
-  do {                                                                         \
-    if (errbuf) snprintf(errbuf, errlen, __VA_ARGS__);                         \
-    return NULL;                                                               \
+#define HBM_BAD(...)                                         \
+  do {                                                       \
+    WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, __VA_ARGS__); \
+    return NULL;                                             \
   } while (0)
   if (!prob || !prob->rhs || prob->n == 0) HBM_BAD("hbm: model is NULL or has no rhs");
   if (o.harmonics < 1 || o.harmonics > 1000)
@@ -395,13 +401,19 @@ void whirl_hbm_free(whirl_hbm *h) {
 }
 
 const whirl_system *whirl_hbm_system(const whirl_hbm *h) { return &h->sys; }
+const char *whirl_hbm_errmsg(const whirl_hbm *h) {
+  return h ? h->errmsg : "whirl_hbm: NULL object";
+}
 size_t whirl_hbm_size(const whirl_hbm *h) { return h->size; }
 
-int whirl_hbm_from_samples(const whirl_hbm *h, const double *x, size_t m,
-                           double T, double *X) {
+int whirl_hbm_from_samples(whirl_hbm *h, const double *x, size_t m, double T,
+                           double *X) {
   const size_t n = h->n, L = h->L, N = h->N;
   if (!x || !X || m < L || (h->autonomous && !(T > 0)))
-    return WHIRL_EINVAL;
+    return WHIRL_FAIL(h, WHIRL_EINVAL,
+                      "hbm from_samples: need m >= 2N + 1 "
+                      "= %zu samples (got %zu) and, autonomous, T > 0 (got %g)",
+                      L, m, T);
   memset(X, 0, h->size * sizeof *X);
   for (size_t k = 0; k < m; ++k) {
     const double th = 2.0 * M_PI * (double)k / (double)m;
@@ -444,12 +456,13 @@ void whirl_hbm_eval(const whirl_hbm *h, const double *X, double theta,
   }
 }
 
-int whirl_hbm_time_residual(const whirl_hbm *h, const double *X,
-                            const double *p, size_t K, double *res) {
+int whirl_hbm_time_residual(whirl_hbm *h, const double *X, const double *p,
+                            size_t K, double *res) {
   const size_t n = h->n, L = h->L, m = (K ? K : 1) * h->M;
   const double w = freq(h, X, p);
   double *buf = malloc(3 * n * sizeof *buf);
-  if (!buf) return WHIRL_ENOMEM;
+  if (!buf)
+    return WHIRL_FAIL(h, WHIRL_ENOMEM, "hbm time residual: out of memory");
   double *x = buf, *dx = buf + n, *f = buf + 2 * n, worst = 0.0;
   int rc = 0;
   for (size_t j = 0; j < m && rc == 0; ++j) {
@@ -467,6 +480,9 @@ int whirl_hbm_time_residual(const whirl_hbm *h, const double *X,
     for (size_t i = 0; i < n && rc == 0; ++i) worst = fmax(worst, fabs(dx[i] - f[i]));
   }
   free(buf);
-  if (rc == 0) *res = worst;
+  if (rc != 0)
+    return WHIRL_FAIL(h, rc, "hbm time residual: the model's rhs returned %d",
+                      rc);
+  *res = worst;
   return rc;
 }
