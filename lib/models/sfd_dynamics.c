@@ -12,7 +12,6 @@
 #include <whirl/linsol.h>
 #include <whirl/sfd_dynamics.h>
 
-#define TWO_PI 6.283185307179586476925286766559
 
 /* ------------------------------------------------------------------ frames */
 
@@ -262,7 +261,7 @@ static double gauss(uint64_t *s) {
     u[k] = ((*s * 2685821657736338717ULL) >> 11) * (1.0 / 9007199254740992.0);
   }
   if (u[0] < 1e-300) u[0] = 1e-300;
-  return sqrt(-2.0 * log(u[0])) * cos(TWO_PI * u[1]);
+  return sqrt(-2.0 * log(u[0])) * cos(2.0 * WHIRL_PI * u[1]);
 }
 
 /* Certified level ρ for the circular attractor c (see the header). */
@@ -352,7 +351,7 @@ static int check_recur(size_t k, double t, const double *x, void *data) {
 static int find_cycle(const double *p, whirl_sfd_attractors *a,
                       const whirl_sfd_attractors_options *o, char *errbuf,
                       size_t errlen) {
-  const double Om = p[WHIRL_SFD_OMEGA], T = TWO_PI / Om;
+  const double Om = p[WHIRL_SFD_OMEGA], T = 2.0 * WHIRL_PI / Om;
   const double starts[][2] = {{0, 0},     {0.5, 0},   {0, -0.5}, {0.9, 0},
                               {-0.7, 0.3}, {0.2, 0.2}, {0, 0.95}};
   const size_t nstart = sizeof starts / sizeof starts[0];
@@ -591,7 +590,7 @@ const double *whirl_sfd_attractors_cycle(const whirl_sfd_attractors *a,
 
 size_t whirl_sfd_disc_points(size_t n, double r_max, double *yz, size_t cap) {
   if (n == 0 || !(r_max > 0) || !isfinite(r_max)) return 0;
-  const double h = r_max * sqrt(3.14159265358979323846 / (double)n);
+  const double h = r_max * sqrt(WHIRL_PI / (double)n);
   const long K = (long)floor(r_max / h);
   size_t count = 0;
   for (long i = -K; i <= K; ++i)
@@ -641,7 +640,7 @@ int whirl_sfd_trajectory_samples(const double *p, const double *x0,
                         "trajectory samples: bad arguments");
   if (whirl_sfd_check_params(p, errbuf, errlen) != WHIRL_OK)
     return WHIRL_EINVAL;
-  const double T = TWO_PI / p[WHIRL_SFD_OMEGA];
+  const double T = 2.0 * WHIRL_PI / p[WHIRL_SFD_OMEGA];
   const double zero[4] = {0, 0, 0, 0};
   whirl_ode *ode = whirl_ode_alloc(whirl_sfd_fixed(), p);
   if (!ode) return WHIRL_ENOMEM;

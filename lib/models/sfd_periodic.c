@@ -116,7 +116,7 @@ static int pd_from_samples(pdisc *d, const double *x, size_t m, double T,
 
 /* State at scaled time τ ∈ [0, 1). */
 static void pd_eval(const pdisc *d, const double *X, double tau, double *x) {
-  if (d->h) whirl_hbm_eval(d->h, X, 2.0 * M_PI * tau, x);
+  if (d->h) whirl_hbm_eval(d->h, X, 2.0 * WHIRL_PI * tau, x);
   else whirl_colloc_eval(d->c, X, tau, x);
 }
 
@@ -175,8 +175,8 @@ static void orbit_fill(const pdisc *d, const whirl_branch *b, size_t i,
     const double r = hypot(x[0], x[1]);
     if (r > rmax) rmax = r, kmax = k;
     if (r < rmin) rmin = r, kmin = k;
-    a1 += 2.0 * x[0] * cos(2.0 * M_PI * tau) / NSUM;
-    b1 += 2.0 * x[0] * sin(2.0 * M_PI * tau) / NSUM;
+    a1 += 2.0 * x[0] * cos(2.0 * WHIRL_PI * tau) / NSUM;
+    b1 += 2.0 * x[0] * sin(2.0 * WHIRL_PI * tau) / NSUM;
   }
   const double h = 1.0 / NSUM;
   o->eps_max = fmax(rmax, refine_extremum(d, X, (double)kmax / NSUM, h, 1.0));
@@ -186,7 +186,7 @@ static void orbit_fill(const pdisc *d, const whirl_branch *b, size_t i,
   o->phase = synchronous ? atan2(b1, a1) : NAN;
   o->period = pd_period(d, X, p);
   o->f2 = synchronous ? NAN
-                      : fabs(o->Omega - 2.0 * M_PI / o->period) / o->Omega;
+                      : fabs(o->Omega - 2.0 * WHIRL_PI / o->period) / o->Omega;
   o->max_mult = NAN;
   o->mult_re = o->mult_im = NAN;
   for (size_t k = 0; k < b->nspec; ++k) {
@@ -295,7 +295,7 @@ static void circle_samples(const double *p, double eps, double Om, size_t m,
   whirl_sfd_circ_state(eps, Om, p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA],
                        p[WHIRL_SFD_ZETA], xr);
   for (size_t j = 0; j < m; ++j)
-    whirl_sfd_to_fixed(Om, 2.0 * M_PI * (double)j / ((double)m * Om), xr,
+    whirl_sfd_to_fixed(Om, 2.0 * WHIRL_PI * (double)j / ((double)m * Om), xr,
                        xs + 4 * j);
 }
 
@@ -372,7 +372,7 @@ int whirl_sfd_periodic_response(const double *p0,
       const double Om = q->p[WHIRL_SFD_OMEGA];
       circle_samples(p, hypot(q->x[0], q->x[1]), Om, msamp, xs);
       p[WHIRL_SFD_OMEGA] = Om;
-      rc = pd_from_samples(&d, xs, msamp, 2.0 * M_PI / Om, X);
+      rc = pd_from_samples(&d, xs, msamp, 2.0 * WHIRL_PI / Om, X);
       if (rc == WHIRL_OK)
         rc = trace_add(out, &d, &co, X, p, 1, lo > o->omega_min * (1 + 1e-9), seen,
                        &nseen, errbuf, errlen);
@@ -382,14 +382,14 @@ int whirl_sfd_periodic_response(const double *p0,
      * unbalance response at omega_min */
     const double Om = o->omega_min, A = p[WHIRL_SFD_DELTA] * Om * Om / (1.0 - Om * Om);
     for (size_t j = 0; j < msamp; ++j) {
-      const double th = 2.0 * M_PI * (double)j / msamp;
+      const double th = 2.0 * WHIRL_PI * (double)j / msamp;
       xs[4 * j] = A * cos(th);
       xs[4 * j + 1] = FE + A * sin(th);
       xs[4 * j + 2] = -Om * A * sin(th);
       xs[4 * j + 3] = Om * A * cos(th);
     }
     p[WHIRL_SFD_OMEGA] = Om;
-    rc = pd_from_samples(&d, xs, msamp, 2.0 * M_PI / Om, X);
+    rc = pd_from_samples(&d, xs, msamp, 2.0 * WHIRL_PI / Om, X);
     if (rc == WHIRL_OK)
       rc = trace_add(out, &d, &co, X, p, 1, 0, seen, &nseen, errbuf, errlen);
     size_t carried = 0, nisola = 0;
@@ -407,7 +407,7 @@ int whirl_sfd_periodic_response(const double *p0,
       memcpy(pf, p, sizeof pf);
       pf[WHIRL_SFD_OMEGA] = Oi;
       pf[WHIRL_SFD_FE] = 0.0;
-      if ((rc = pd_from_samples(&d, xs, msamp, 2.0 * M_PI / Oi, X))) break;
+      if ((rc = pd_from_samples(&d, xs, msamp, 2.0 * WHIRL_PI / Oi, X))) break;
       whirl_cont_options cf = co;
       cf.icp = WHIRL_SFD_FE;
       cf.p_min = FE < 0 ? FE : 0.0;
@@ -492,7 +492,7 @@ static int cycle_from_integration(const double *p, size_t m, double *xs,
   whirl_ode *ode = whirl_ode_alloc(rot, p);
   if (!ode) return WHIRL_ENOMEM;
   whirl_ode_set_tolerances(ode, 1e-7, 1e-10);
-  const double Om = p[WHIRL_SFD_OMEGA], Tf = 2.0 * M_PI / Om;
+  const double Om = p[WHIRL_SFD_OMEGA], Tf = 2.0 * WHIRL_PI / Om;
   const double x0[4] = {0, 0, 0, 0};
   whirl_ode_reset(ode, 0.0, x0);
   int rc = whirl_ode_evolve(ode, 10.0 * Tf);

@@ -25,7 +25,6 @@
 #include "colloc_impl.h"
 #include <whirl/linsol.h>
 
-#define WHIRL_TWO_PI 6.28318530717958647692
 
 
 void whirl_colloc_options_default(whirl_colloc_options *o) {
@@ -46,7 +45,7 @@ void whirl_colloc_options_default(whirl_colloc_options *o) {
  * guesses cos(π(k + 3/4)/(m + 1/2)); converged to rounding (~1e-16). */
 static void gauss_legendre(size_t m, double *s, double *w) {
   for (size_t k = 0; k < m; ++k) {
-    double z = cos(COLLOC_PI * ((double)k + 0.75) / ((double)m + 0.5));
+    double z = cos(WHIRL_PI * ((double)k + 0.75) / ((double)m + 0.5));
     double dp = 1.0;
     for (int it = 0; it < 100; ++it) {
       double p0 = 1.0, p1 = z;
@@ -162,7 +161,7 @@ static void eval_poly(size_t n, size_t ntst, size_t m, const double *tau,
 double colloc_period_of(const whirl_colloc *c, const double *X,
                         const double *p) {
   if (c->aut) return X[c->nx - 1];
-  return 2.0 * COLLOC_PI * (double)c->nu / p[c->fpar];
+  return 2.0 * WHIRL_PI * (double)c->nu / p[c->fpar];
 }
 
 static double period_of(const whirl_colloc *c, const double *X,
@@ -1093,7 +1092,7 @@ int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
                      ? 1.0
                      : c->mesh[i] + (c->mesh[i + 1] - c->mesh[i]) *
                                         (double)k / (double)c->ncol;
-    double cs = cos(WHIRL_TWO_PI * tau), sn = sin(WHIRL_TWO_PI * tau);
+    double cs = cos(2.0 * WHIRL_PI * tau), sn = sin(2.0 * WHIRL_PI * tau);
     for (size_t r = 0; r < n; ++r) {
       X[n * j + r] = x0[r];
       D[n * j + r] = a[r] * cs - b[r] * sn;
@@ -1107,7 +1106,7 @@ int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
   }
   const size_t nd = n * c->nnodes;
   for (size_t q = 0; q < nd; ++q) D[q] /= nrm;
-  X[c->nx - 1] = WHIRL_TWO_PI / w;
+  X[c->nx - 1] = 2.0 * WHIRL_PI / w;
   D[c->nx - 1] = 0.0;
   D[c->nx] = 0.0;
   for (size_t q = 0; q < nd; ++q) c->ref_new[q] = X[q] + D[q];

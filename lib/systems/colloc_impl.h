@@ -13,7 +13,6 @@
 
 #include "util/errmsg_impl.h"
 
-#define COLLOC_PI 3.14159265358979323846
 #define COLLOC_MAXCOL 7
 
 struct whirl_colloc {

@@ -62,7 +62,7 @@ double whirl_hbm_frequency(const whirl_hbm *h, const double *X,
 }
 
 double whirl_hbm_period(const whirl_hbm *h, const double *X, const double *p) {
-  return 2.0 * M_PI / freq(h, X, p);
+  return 2.0 * WHIRL_PI / freq(h, X, p);
 }
 
 /* Unscaled coefficients and the state samples x_j = Σ_h B_h(θ_j) coef_h. */
@@ -80,7 +80,7 @@ static void synthesize(whirl_hbm *h, const double *X) {
 }
 
 static double sample_time(const whirl_hbm *h, size_t j, double w) {
-  return h->o.t0 + 2.0 * M_PI * (double)j / ((double)h->M * w);
+  return h->o.t0 + 2.0 * WHIRL_PI * (double)j / ((double)h->M * w);
 }
 
 static int hbm_F(const double *X, const double *p, double *F, void *data) {
@@ -339,12 +339,12 @@ whirl_hbm *whirl_hbm_alloc(const whirl_problem *prob,
   for (size_t k = 0; k <= 2 * N; ++k)
     for (size_t j = 0; j < M; ++j) {
       /* exact reduction of kj mod M keeps the angles accurate */
-      const double th = 2.0 * M_PI * (double)((k * j) % M) / (double)M;
+      const double th = 2.0 * WHIRL_PI * (double)((k * j) % M) / (double)M;
       h->ck[k * M + j] = cos(th);
       h->sk[k * M + j] = sin(th);
     }
   for (size_t j = 0; j < M; ++j) {
-    const double th = 2.0 * M_PI * (double)j / (double)M;
+    const double th = 2.0 * WHIRL_PI * (double)j / (double)M;
     h->B[j] = 1.0;
     h->P[j] = 1.0 / (double)M;
     for (size_t k = 1; k <= N; ++k) {
@@ -416,7 +416,7 @@ int whirl_hbm_from_samples(whirl_hbm *h, const double *x, size_t m, double T,
                       L, m, T);
   memset(X, 0, h->size * sizeof *X);
   for (size_t k = 0; k < m; ++k) {
-    const double th = 2.0 * M_PI * (double)k / (double)m;
+    const double th = 2.0 * WHIRL_PI * (double)k / (double)m;
     for (size_t i = 0; i < n; ++i) {
       const double v = x[k * n + i] / h->scale[i];
       X[i * L] += v / (double)m;
@@ -426,7 +426,7 @@ int whirl_hbm_from_samples(whirl_hbm *h, const double *x, size_t m, double T,
       }
     }
   }
-  if (h->autonomous) X[h->ncoef] = 2.0 * M_PI / T;
+  if (h->autonomous) X[h->ncoef] = 2.0 * WHIRL_PI / T;
   return WHIRL_OK;
 }
 
@@ -466,7 +466,7 @@ int whirl_hbm_time_residual(whirl_hbm *h, const double *X, const double *p,
   double *x = buf, *dx = buf + n, *f = buf + 2 * n, worst = 0.0;
   int rc = 0;
   for (size_t j = 0; j < m && rc == 0; ++j) {
-    const double th = 2.0 * M_PI * (double)j / (double)m;
+    const double th = 2.0 * WHIRL_PI * (double)j / (double)m;
     whirl_hbm_eval(h, X, th, x);
     for (size_t i = 0; i < n; ++i) {
       const double *c = X + i * L;
