@@ -17,6 +17,7 @@ struct whirl_hopf {
   whirl_system base, sys;
   size_t par, n, N, m;  /* N = n + 2 unknowns, m = n + 2 bordered order */
   double *B, *C;        /* borders n x 2, column-major */
+  double *Bn, *Cn;      /* n x 2 each: the new borders of an accepted point */
   int gi[2];            /* entries of G (i + 2j) used as equations */
   whirl_linsol *ls;
   whirl_eig *eig;
@@ -146,7 +147,7 @@ static int hopf_accept(const double *Z, const double *p, void *data) {
   whirl_hopf *h = data;
   const size_t n = h->n;
   whirl_hopf_params(h, Z, p, h->pf);
-  double Cn[2 * n], Bn[2 * n];
+  double *Cn = h->Cn, *Bn = h->Bn;
   if (solve_G(h, Z, h->pf, Z[n + 1], 0) != 0) return 0;
   orthonormal2(h->R, n, h->m, Cn);
   if (solve_G(h, Z, h->pf, Z[n + 1], 1) != 0) return 0;
@@ -182,6 +183,8 @@ whirl_hopf *whirl_hopf_alloc(const whirl_system *base, size_t par, char *errbuf,
   h->gi[1] = 3;
   h->B = calloc(2 * n, sizeof *h->B);
   h->C = calloc(2 * n, sizeof *h->C);
+  h->Bn = calloc(2 * n, sizeof *h->Bn);
+  h->Cn = calloc(2 * n, sizeof *h->Cn);
   h->ls = whirl_linsol_alloc_dense(m);
   h->eig = whirl_eig_alloc(n);
   h->A = calloc(n * n, sizeof *h->A);
@@ -192,7 +195,7 @@ whirl_hopf *whirl_hopf_alloc(const whirl_system *base, size_t par, char *errbuf,
   h->work = calloc(2 * n + 2, sizeof *h->work);
   h->er = calloc(n, sizeof *h->er);
   h->ei = calloc(n, sizeof *h->ei);
-  if (!h->B || !h->C || !h->ls || !h->eig || !h->A || !h->A2 || !h->M ||
+  if (!h->B || !h->C || !h->Bn || !h->Cn || !h->ls || !h->eig || !h->A || !h->A2 || !h->M ||
       !h->R || !h->pf || !h->work || !h->er || !h->ei)
     goto nomem;
   whirl_system *s = &h->sys;
@@ -216,7 +219,8 @@ void whirl_hopf_free(whirl_hopf *h) {
   if (!h) return;
   whirl_linsol_free(h->ls);
   whirl_eig_free(h->eig);
-  free(h->B); free(h->C); free(h->A); free(h->A2); free(h->M); free(h->R);
+  free(h->B); free(h->C); free(h->Bn); free(h->Cn);
+  free(h->A); free(h->A2); free(h->M); free(h->R);
   free(h->pf); free(h->work); free(h->er); free(h->ei);
   free(h);
 }
