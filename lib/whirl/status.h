@@ -22,7 +22,6 @@ extern "C" {
 #define WHIRL_STATUS_LIST(X)                                                   \
   X(WHIRL_OK, 0, "success")                                                    \
   X(WHIRL_DONE, 1, "branch finished (see the stop reason)")                   \
-  X(WHIRL_WSINGULAR, 2, "matrix is singular to working precision")            \
   X(WHIRL_EINVAL, -1, "invalid argument")                                      \
   X(WHIRL_ENOMEM, -2, "out of memory")                                         \
   X(WHIRL_ENOCONV, -3, "Newton iteration did not converge")                    \
