@@ -29,14 +29,17 @@ int whirl_basins_check_tolerances(double rtol, double atol, char *msg,
   char dummy[1];
   if (!msg || len == 0) msg = dummy, len = sizeof dummy;
   msg[0] = '\0';
-  if (!(rtol >= WHIRL_BASINS_RTOL_MIN && rtol <= WHIRL_BASINS_RTOL_MAX))
-    return WHIRL_ERRMSG(msg, len, WHIRL_EINVAL,
-                        "rtol must be in [%g, %g] (got %g)",
-                        WHIRL_BASINS_RTOL_MIN, WHIRL_BASINS_RTOL_MAX, rtol);
-  if (!(atol > 0 && atol <= WHIRL_BASINS_ATOL_MAX))
-    return WHIRL_ERRMSG(msg, len, WHIRL_EINVAL,
-                        "atol must be in (0, %g] (got %g)",
-                        WHIRL_BASINS_ATOL_MAX, atol);
+  /* the message is the check's answer, for the user: no source location */
+  if (!(rtol >= WHIRL_BASINS_RTOL_MIN && rtol <= WHIRL_BASINS_RTOL_MAX)) {
+    snprintf(msg, len, "rtol must be in [%g, %g] (got %g)",
+             WHIRL_BASINS_RTOL_MIN, WHIRL_BASINS_RTOL_MAX, rtol);
+    return WHIRL_EINVAL;
+  }
+  if (!(atol > 0 && atol <= WHIRL_BASINS_ATOL_MAX)) {
+    snprintf(msg, len, "atol must be in (0, %g] (got %g)",
+             WHIRL_BASINS_ATOL_MAX, atol);
+    return WHIRL_EINVAL;
+  }
   return WHIRL_OK;
 }
 

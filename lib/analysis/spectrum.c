@@ -23,7 +23,6 @@
 #include <whirl/problem.h>
 #include <whirl/spectrum.h>
 
-
 /* Zero padding beyond the next power of two: the FFT bin spacing is at most
  * 1/SPEC_PAD of the resolution 1/(m dt), which makes the Gaussian interpolation
  * of a Hann-windowed peak accurate to 2e-4 of a resolution bin in frequency

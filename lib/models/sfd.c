@@ -8,9 +8,9 @@
 
 #include <whirl/sfd.h>
 
-
 /* ------------------------------------------------------------------------
- * Parameters */
+ * Parameters.  The check's message is its answer, for the user, so it has
+ * no source location (unlike the error messages, whirl/status.h). */
 
 void whirl_sfd_default_params(double *p) {
   if (p == NULL) return;
@@ -27,16 +27,14 @@ static const char *const sfd_p_names[WHIRL_SFD_NPAR] = {"Omega", "lambda",
 static int param_fail(char *msg, size_t len, const char *name, const char *rule,
                       double got) {
   if (msg != NULL && len > 0)
-    WHIRL_ERRMSG(msg, len, WHIRL_EINVAL, "%s must be %s (got %g)", name, rule,
-                 got);
+    snprintf(msg, len, "%s must be %s (got %g)", name, rule, got);
   return WHIRL_EINVAL;
 }
 
 int whirl_sfd_check_params(const double *p, char *msg, size_t len) {
   if (msg != NULL && len > 0) msg[0] = '\0';
   if (p == NULL) {
-    if (msg != NULL && len > 0)
-      WHIRL_ERRMSG(msg, len, WHIRL_EINVAL, "parameter vector is NULL");
+    if (msg != NULL && len > 0) snprintf(msg, len, "parameter vector is NULL");
     return WHIRL_EINVAL;
   }
   for (int k = 0; k < WHIRL_SFD_NPAR; ++k)

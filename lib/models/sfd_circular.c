@@ -11,8 +11,6 @@
 #include <whirl/linsol.h>
 #include <whirl/sfd.h>
 
-
-
 static int check_args(double eps, double lambda, double delta, double zeta) {
   if (!isfinite(eps) || !isfinite(lambda) || !isfinite(delta) ||
       !isfinite(zeta) || eps < 0.0 || lambda < 0.0 || delta < 0.0 ||

@@ -12,7 +12,6 @@
 #include <whirl/linsol.h>
 #include <whirl/sfd_dynamics.h>
 
-
 /* ------------------------------------------------------------------ frames */
 
 void whirl_sfd_to_rotating(double Om, double t, const double *x, double *xr) {

@@ -25,8 +25,6 @@
 #include "colloc_impl.h"
 #include <whirl/linsol.h>
 
-
-
 void whirl_colloc_options_default(whirl_colloc_options *o) {
   memset(o, 0, sizeof *o);
   o->ntst = 20;

@@ -65,9 +65,9 @@ WHIRL_API void whirl_hbm_free(whirl_hbm *h); /* accepts NULL */
 WHIRL_API const whirl_system *whirl_hbm_system(const whirl_hbm *h);
 WHIRL_API size_t whirl_hbm_size(const whirl_hbm *h); /* n(2N+1) [+1] */
 
-/* The message of the last failure of a function given h, or of the
- * multipliers of the system's spectrum, with its origin "(hbm.c:N)".
- * Never NULL. */
+/* The message of the last failure of a function given h, with its origin
+ * "(hbm.c:N)"; each evaluation of the system's spectrum (the multipliers)
+ * replaces it, by "" when it succeeds.  Never NULL. */
 WHIRL_API const char *whirl_hbm_errmsg(const whirl_hbm *h);
 
 /* Fundamental frequency w and period 2π/w of the solution X at p. */
