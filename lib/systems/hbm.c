@@ -409,11 +409,18 @@ size_t whirl_hbm_size(const whirl_hbm *h) { return h->size; }
 int whirl_hbm_from_samples(whirl_hbm *h, const double *x, size_t m, double T,
                            double *X) {
   const size_t n = h->n, L = h->L, N = h->N;
-  if (!x || !X || m < L || (h->autonomous && !(T > 0)))
+  if (!x || !X)
+    return WHIRL_FAIL(h, WHIRL_EINVAL, "hbm from_samples: NULL samples or X");
+  if (m < L)
     return WHIRL_FAIL(h, WHIRL_EINVAL,
                       "hbm from_samples: need m >= 2N + 1 "
-                      "= %zu samples (got %zu) and, autonomous, T > 0 (got %g)",
-                      L, m, T);
+                      "= %zu samples (got %zu)",
+                      L, m);
+  if (h->autonomous && !(T > 0))
+    return WHIRL_FAIL(h, WHIRL_EINVAL,
+                      "hbm from_samples: an autonomous "
+                      "orbit needs a period T > 0 (got %g)",
+                      T);
   memset(X, 0, h->size * sizeof *X);
   for (size_t k = 0; k < m; ++k) {
     const double th = 2.0 * WHIRL_PI * (double)k / (double)m;

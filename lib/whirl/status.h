@@ -55,10 +55,10 @@ WHIRL_API const char *whirl_strerror(int status);
  * return code, so that a failing path is one line:
  *   return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "n = %zu", n);
  * Nothing is written when buf is NULL or len is 0; a message that fills buf
- * is truncated and gets no origin.  Every whirl object stores its last
- * message this way (whirl_cont_errmsg, whirl_ode_errmsg, ...); front ends
- * may strip the origins before showing a message to a user.  A good place
- * for a debugger breakpoint. */
+ * is truncated and gets no origin, and so does one with file NULL.  Every whirl
+ * object stores its last message this way (whirl_cont_errmsg, whirl_ode_errmsg,
+ * ...); front ends may strip the origins before showing a message to a user.  A
+ * good place for a debugger breakpoint. */
 WHIRL_API int whirl_errmsg_set(char *buf, size_t len, int code,
                                const char *file, int line, const char *fmt, ...)
     WHIRL_PRINTF_LIKE(6, 7);

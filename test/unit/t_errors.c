@@ -3,7 +3,7 @@
  * circular orbits, contact with the housing (eps >= 1), a Newton that
  * diverges, a model that fails fatally, and a branch that runs into a domain
  * error; the one message formatter (whirl_errmsg_set) and the last message
- * of the periodic-orbit objects (whirl_hbm_errmsg, whirl_colloc_errmsg).
+ * of the hbm, collocation and equilibrium objects (whirl_X_errmsg).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdio.h>
@@ -43,7 +43,7 @@ static void formatter(void) {
      "NULL buffer: only the code");
 }
 
-/* hbm and collocation objects keep the message of their last failure */
+/* hbm, collocation and equilibrium objects keep their last message */
 static void object_messages(void) {
   whirl_hbm_options ho;
   whirl_hbm_options_default(&ho);
@@ -72,6 +72,16 @@ static void object_messages(void) {
      c ? whirl_colloc_errmsg(c) : "");
   whirl_colloc_free(c2);
   whirl_colloc_free(c);
+  /* the equilibrium system's spectrum with no room for the eigenvalues */
+  whirl_equilibrium *eq = whirl_equilibrium_alloc(&osc);
+  const whirl_system *es = eq ? whirl_equilibrium_system(eq) : NULL;
+  double re[2], im[2], p0 = 1.0;
+  size_t m = 1;
+  ok(es && es->spectrum(x, &p0, NULL, re, im, &m, es->data) == WHIRL_EINVAL &&
+         strstr(whirl_equilibrium_errmsg(eq), "room for 1 of 2"),
+     "equilibrium: the spectrum's failure is kept: %s",
+     eq ? whirl_equilibrium_errmsg(eq) : "");
+  whirl_equilibrium_free(eq);
 }
 
 static int atan_F(const double *x, const double *p, double *f, void *d) {
