@@ -8,10 +8,9 @@
 
 #include <whirl/rotor/sfd.h>
 
-#define SFD_PI 3.14159265358979323846
-
 /* ------------------------------------------------------------------------
- * Parameters */
+ * Parameters.  The check's message is its answer, for the user, so it has
+ * no source location (unlike the error messages, whirl/status.h). */
 
 void whirl_sfd_default_params(double *p) {
   if (p == NULL) return;
@@ -108,16 +107,16 @@ int whirl_sfd_force(double y, double z, double vy, double vz, double lambda,
     m12 = (yh - zh) * (yh + zh);
     g1 = m11 * vy + m12 * vz; /* ĝ = M(r̂) v */
     g2 = m12 * vy - m11 * vz;
-    c3 = (4.0 / SFD_PI) * eps * s1 * s1; /* (4/π) ε s^{-2} = 2B/π */
+    c3 = (4.0 / WHIRL_PI) * eps * s1 * s1; /* (4/π) ε s^{-2} = 2B/π */
   }
   const double T1 = C * vy + K * rv * y + c3 * g1;
   const double T2 = C * vz + K * rv * z + c3 * g2;
-  const double k = -SFD_PI * lambda;
+  const double k = -WHIRL_PI * lambda;
   f[0] = k * T1;
   f[1] = k * T2;
   if (dl != NULL) {
-    dl[0] = -SFD_PI * T1;
-    dl[1] = -SFD_PI * T2;
+    dl[0] = -WHIRL_PI * T1;
+    dl[1] = -WHIRL_PI * T2;
   }
   if (J == NULL) return WHIRL_OK;
 
@@ -135,7 +134,7 @@ int whirl_sfd_force(double y, double z, double vy, double vz, double lambda,
     /* cross term (4/π) φ(ε) ĝ(r), φ = ε s^{-2}, ĝ = M(r̂) v:
      * d/dr = (4/π) s^{-2} [ (4ε²/s − 1) ĝ r̂ᵀ + N ],  N = ∂(M(r) v)/∂r / ε,
      * d/dv = (4/π) ε s^{-2} M(r̂). */
-    const double q = (4.0 / SFD_PI) * s1 * s1, w = 4.0 * e2 * s1 - 1.0;
+    const double q = (4.0 / WHIRL_PI) * s1 * s1, w = 4.0 * e2 * s1 - 1.0;
     const double n11 = 2.0 * (-zh * vy + yh * vz), n12 = 2.0 * (-yh * vy - zh * vz);
     const double n21 = -n12, n22 = n11;
     Ryy += q * (w * g1 * yh + n11);

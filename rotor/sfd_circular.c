@@ -11,9 +11,6 @@
 #include <whirl/linsol.h>
 #include <whirl/rotor/sfd.h>
 
-#define SFD_PI 3.14159265358979323846
-
-
 static int check_args(double eps, double lambda, double delta, double zeta) {
   if (!isfinite(eps) || !isfinite(lambda) || !isfinite(delta) ||
       !isfinite(zeta) || eps < 0.0 || lambda < 0.0 || delta < 0.0 ||
@@ -34,9 +31,9 @@ static void circ_ab(double eps, double lambda, double a[3], double b[3]) {
   a[0] = -4.0 * lambda * e2 * s1 * s1;
   a[1] = -8.0 * lambda * eps * (1.0 + e2) * s1 * s1 * s1;
   a[2] = -8.0 * lambda * (1.0 + 8.0 * e2 + 3.0 * e2 * e2) * s1 * s1 * s1 * s1;
-  b[0] = -SFD_PI * lambda * eps * s1 * rs;
-  b[1] = -SFD_PI * lambda * (1.0 + 2.0 * e2) * s1 * s1 * rs;
-  b[2] = -3.0 * SFD_PI * lambda * eps * (3.0 + 2.0 * e2) * s1 * s1 * s1 * rs;
+  b[0] = -WHIRL_PI * lambda * eps * s1 * rs;
+  b[1] = -WHIRL_PI * lambda * (1.0 + 2.0 * e2) * s1 * s1 * rs;
+  b[2] = -3.0 * WHIRL_PI * lambda * eps * (3.0 + 2.0 * e2) * s1 * s1 * s1 * rs;
 }
 
 /* c[k] multiplies Ω^k in eq. 15; d1, d2 (may be NULL) get dc/dε, d²c/dε².

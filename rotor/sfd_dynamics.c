@@ -12,8 +12,6 @@
 #include <whirl/linsol.h>
 #include <whirl/rotor/sfd_dynamics.h>
 
-#define TWO_PI 6.283185307179586476925286766559
-
 /* ------------------------------------------------------------------ frames */
 
 void whirl_sfd_to_rotating(double Om, double t, const double *x, double *xr) {
@@ -262,7 +260,7 @@ static double gauss(uint64_t *s) {
     u[k] = ((*s * 2685821657736338717ULL) >> 11) * (1.0 / 9007199254740992.0);
   }
   if (u[0] < 1e-300) u[0] = 1e-300;
-  return sqrt(-2.0 * log(u[0])) * cos(TWO_PI * u[1]);
+  return sqrt(-2.0 * log(u[0])) * cos(2.0 * WHIRL_PI * u[1]);
 }
 
 /* Certified level ρ for the circular attractor c (see the header). */
@@ -352,7 +350,7 @@ static int check_recur(size_t k, double t, const double *x, void *data) {
 static int find_cycle(const double *p, whirl_sfd_attractors *a,
                       const whirl_sfd_attractors_options *o, char *errbuf,
                       size_t errlen) {
-  const double Om = p[WHIRL_SFD_OMEGA], T = TWO_PI / Om;
+  const double Om = p[WHIRL_SFD_OMEGA], T = 2.0 * WHIRL_PI / Om;
   const double starts[][2] = {{0, 0},     {0.5, 0},   {0, -0.5}, {0.9, 0},
                               {-0.7, 0.3}, {0.2, 0.2}, {0, 0.95}};
   const size_t nstart = sizeof starts / sizeof starts[0];
@@ -361,8 +359,8 @@ static int find_cycle(const double *p, whirl_sfd_attractors *a,
   int rc = whirl_ode_set_tolerances(ode, o->rtol, o->atol);
   if (rc != WHIRL_OK) {
     whirl_ode_free(ode);
-    snprintf(errbuf, errlen, "attractors: bad tolerances %g, %g", o->rtol,
-             o->atol);
+    WHIRL_ERRMSG(errbuf, errlen, rc, "attractors: bad tolerances %g, %g",
+                 o->rtol, o->atol);
     return rc;
   }
   whirl_basins_options bo;
@@ -418,11 +416,11 @@ static int find_cycle(const double *p, whirl_sfd_attractors *a,
     found = 1;
   }
   whirl_ode_free(ode);
-  if (rc != WHIRL_OK) {
-    snprintf(errbuf, errlen, "attractors: searching the nonsynchronous "
-             "response failed: %s", whirl_strerror(rc));
-    return rc;
-  }
+  if (rc != WHIRL_OK)
+    return WHIRL_ERRMSG(errbuf, errlen, rc,
+                        "attractors: searching the nonsynchronous "
+                        "response failed: %s",
+                        whirl_strerror(rc));
   return found;
 }
 
@@ -436,10 +434,9 @@ int whirl_sfd_attractors_find(const double *p,
     errlen = sizeof dummy;
   }
   errbuf[0] = '\0';
-  if (!p || !out) {
-    snprintf(errbuf, errlen, "attractors: missing argument");
-    return WHIRL_EINVAL;
-  }
+  if (!p || !out)
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "attractors: missing argument");
   *out = NULL;
   whirl_sfd_attractors_options o;
   if (opt)
@@ -447,27 +444,22 @@ int whirl_sfd_attractors_find(const double *p,
   else
     whirl_sfd_attractors_options_default(&o);
   char tmsg[128];
-  if (whirl_basins_check_tolerances(o.rtol, o.atol, tmsg, sizeof tmsg)) {
-    snprintf(errbuf, errlen, "attractors: %s", tmsg);
-    return WHIRL_EINVAL;
-  }
+  if (whirl_basins_check_tolerances(o.rtol, o.atol, tmsg, sizeof tmsg))
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "attractors: %s", tmsg);
   if (whirl_sfd_check_params(p, errbuf, errlen) != WHIRL_OK)
     return WHIRL_EINVAL;
-  if (p[WHIRL_SFD_FE] != 0.0) {
-    snprintf(errbuf, errlen, "attractors: need FE = 0 (got %g): with a "
-             "static force the rotating frame is not autonomous", p[4]);
-    return WHIRL_EINVAL;
-  }
-  if (!(p[WHIRL_SFD_OMEGA] > 0)) {
-    snprintf(errbuf, errlen, "attractors: Omega must be > 0 (got %g)", p[0]);
-    return WHIRL_EINVAL;
-  }
-  if (!(o.safety > 0 && o.safety <= 1) || !(o.qp_tol > 0) ||
-      o.qp_confirm == 0) {
-    snprintf(errbuf, errlen, "attractors: need 0 < safety <= 1, qp_tol > 0, "
-             "qp_confirm >= 1");
-    return WHIRL_EINVAL;
-  }
+  if (p[WHIRL_SFD_FE] != 0.0)
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "attractors: need FE = 0 (got %g): with a "
+                        "static force the rotating frame is not autonomous",
+                        p[4]);
+  if (!(p[WHIRL_SFD_OMEGA] > 0))
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "attractors: Omega must be > 0 (got %g)", p[0]);
+  if (!(o.safety > 0 && o.safety <= 1) || !(o.qp_tol > 0) || o.qp_confirm == 0)
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "attractors: need 0 < safety <= 1, qp_tol > 0, "
+                        "qp_confirm >= 1");
   whirl_sfd_attractors *a = calloc(1, sizeof *a);
   if (!a) return WHIRL_ENOMEM;
 
@@ -476,8 +468,8 @@ int whirl_sfd_attractors_find(const double *p,
   size_t ncirc = 0;
   int rc = whirl_sfd_circular_orbits(p, eps, stable, mr, 16, &ncirc);
   if (rc != WHIRL_OK) {
-    snprintf(errbuf, errlen, "attractors: circular orbits: %s",
-             whirl_strerror(rc));
+    WHIRL_ERRMSG(errbuf, errlen, rc, "attractors: circular orbits: %s",
+                 whirl_strerror(rc));
     free(a);
     return rc;
   }
@@ -500,8 +492,10 @@ int whirl_sfd_attractors_find(const double *p,
     rc = rot->jac_x(0.0, c->xs, p, J, NULL);
     if (rc == 0) rc = lyapunov(J, c->P);
     if (rc != WHIRL_OK) {
-      snprintf(errbuf, errlen, "attractors: Lyapunov equation at eps = %g "
-               "failed: %s", eps[i], whirl_strerror(rc));
+      WHIRL_ERRMSG(errbuf, errlen, rc,
+                   "attractors: Lyapunov equation at eps = %g "
+                   "failed: %s",
+                   eps[i], whirl_strerror(rc));
       whirl_sfd_attractors_free(a);
       return rc < 0 ? rc : WHIRL_EDOMAIN;
     }
@@ -595,7 +589,7 @@ const double *whirl_sfd_attractors_cycle(const whirl_sfd_attractors *a,
 
 size_t whirl_sfd_disc_points(size_t n, double r_max, double *yz, size_t cap) {
   if (n == 0 || !(r_max > 0) || !isfinite(r_max)) return 0;
-  const double h = r_max * sqrt(3.14159265358979323846 / (double)n);
+  const double h = r_max * sqrt(WHIRL_PI / (double)n);
   const long K = (long)floor(r_max / h);
   size_t count = 0;
   for (long i = -K; i <= K; ++i)
@@ -640,13 +634,12 @@ int whirl_sfd_trajectory_samples(const double *p, const double *x0,
     errlen = sizeof dummy;
   }
   errbuf[0] = '\0';
-  if (!p || !out || n == 0 || !(skip_periods >= 0) || !(span_periods > 0)) {
-    snprintf(errbuf, errlen, "trajectory samples: bad arguments");
-    return WHIRL_EINVAL;
-  }
+  if (!p || !out || n == 0 || !(skip_periods >= 0) || !(span_periods > 0))
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "trajectory samples: bad arguments");
   if (whirl_sfd_check_params(p, errbuf, errlen) != WHIRL_OK)
     return WHIRL_EINVAL;
-  const double T = TWO_PI / p[WHIRL_SFD_OMEGA];
+  const double T = 2.0 * WHIRL_PI / p[WHIRL_SFD_OMEGA];
   const double zero[4] = {0, 0, 0, 0};
   whirl_ode *ode = whirl_ode_alloc(whirl_sfd_fixed(), p);
   if (!ode) return WHIRL_ENOMEM;
@@ -659,12 +652,14 @@ int whirl_sfd_trajectory_samples(const double *p, const double *x0,
                           &c);
   if (rc != WHIRL_OK) {
     if (rc == WHIRL_ESTEP && whirl_ode_last_rhs_status(ode) > 0) {
-      snprintf(errbuf, errlen, "trajectory samples: the journal touches the "
-               "housing (eps >= 1) at t = %g", whirl_ode_t(ode));
+      WHIRL_ERRMSG(errbuf, errlen, WHIRL_EDOMAIN,
+                   "trajectory samples: the journal touches the "
+                   "housing (eps >= 1) at t = %g",
+                   whirl_ode_t(ode));
       rc = WHIRL_EDOMAIN;
     } else {
-      snprintf(errbuf, errlen, "trajectory samples: %s",
-               whirl_ode_errmsg(ode));
+      WHIRL_ERRMSG(errbuf, errlen, rc, "trajectory samples: %s",
+                   whirl_ode_errmsg(ode));
     }
   }
   whirl_ode_free(ode);

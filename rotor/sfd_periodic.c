@@ -51,16 +51,6 @@ void whirl_sfd_periodic_free(whirl_sfd_periodic *r) {
   memset(r, 0, sizeof *r);
 }
 
-static int fail(char *errbuf, size_t errlen, int code, const char *fmt, ...) {
-  if (errbuf && errlen) {
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(errbuf, errlen, fmt, ap);
-    va_end(ap);
-  }
-  return code;
-}
-
 /* ------------------------------------------------ discretisation wrapper */
 typedef struct pdisc {
   int method;
@@ -101,8 +91,9 @@ static int pd_alloc(pdisc *d, const whirl_problem *prob, int forcing_param,
     d->sys = whirl_colloc_system(d->c);
     d->size = whirl_colloc_size(d->c);
   } else {
-    return fail(errbuf, errlen, WHIRL_EINVAL,
-                "periodic orbits need method hbm or colloc (got %d)", o->method);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "periodic orbits need method hbm or colloc (got %d)",
+                        o->method);
   }
   return WHIRL_OK;
 }
@@ -125,7 +116,7 @@ static int pd_from_samples(pdisc *d, const double *x, size_t m, double T,
 
 /* State at scaled time τ ∈ [0, 1). */
 static void pd_eval(const pdisc *d, const double *X, double tau, double *x) {
-  if (d->h) whirl_hbm_eval(d->h, X, 2.0 * M_PI * tau, x);
+  if (d->h) whirl_hbm_eval(d->h, X, 2.0 * WHIRL_PI * tau, x);
   else whirl_colloc_eval(d->c, X, tau, x);
 }
 
@@ -184,8 +175,8 @@ static void orbit_fill(const pdisc *d, const whirl_branch *b, size_t i,
     const double r = hypot(x[0], x[1]);
     if (r > rmax) rmax = r, kmax = k;
     if (r < rmin) rmin = r, kmin = k;
-    a1 += 2.0 * x[0] * cos(2.0 * M_PI * tau) / NSUM;
-    b1 += 2.0 * x[0] * sin(2.0 * M_PI * tau) / NSUM;
+    a1 += 2.0 * x[0] * cos(2.0 * WHIRL_PI * tau) / NSUM;
+    b1 += 2.0 * x[0] * sin(2.0 * WHIRL_PI * tau) / NSUM;
   }
   const double h = 1.0 / NSUM;
   o->eps_max = fmax(rmax, refine_extremum(d, X, (double)kmax / NSUM, h, 1.0));
@@ -195,7 +186,7 @@ static void orbit_fill(const pdisc *d, const whirl_branch *b, size_t i,
   o->phase = synchronous ? atan2(b1, a1) : NAN;
   o->period = pd_period(d, X, p);
   o->f2 = synchronous ? NAN
-                      : fabs(o->Omega - 2.0 * M_PI / o->period) / o->Omega;
+                      : fabs(o->Omega - 2.0 * WHIRL_PI / o->period) / o->Omega;
   o->max_mult = NAN;
   o->mult_re = o->mult_im = NAN;
   for (size_t k = 0; k < b->nspec; ++k) {
@@ -304,7 +295,7 @@ static void circle_samples(const double *p, double eps, double Om, size_t m,
   whirl_sfd_circ_state(eps, Om, p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA],
                        p[WHIRL_SFD_ZETA], xr);
   for (size_t j = 0; j < m; ++j)
-    whirl_sfd_to_fixed(Om, 2.0 * M_PI * (double)j / ((double)m * Om), xr,
+    whirl_sfd_to_fixed(Om, 2.0 * WHIRL_PI * (double)j / ((double)m * Om), xr,
                        xs + 4 * j);
 }
 
@@ -312,14 +303,14 @@ static int check_options(const double *p, const whirl_sfd_periodic_options *o,
                          char *errbuf, size_t errlen) {
   char msg[256];
   if (whirl_sfd_check_params(p, msg, sizeof msg) != WHIRL_OK)
-    return fail(errbuf, errlen, WHIRL_EINVAL, "%s", msg);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "%s", msg);
   if (!(o->omega_min > 0) || !(o->omega_max > o->omega_min))
-    return fail(errbuf, errlen, WHIRL_EINVAL,
-                "need 0 < omega_min < omega_max (got %g, %g)", o->omega_min,
-                o->omega_max);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "need 0 < omega_min < omega_max (got %g, %g)",
+                        o->omega_min, o->omega_max);
   if (!(o->ds > 0) || !(o->ds_max >= o->ds))
-    return fail(errbuf, errlen, WHIRL_EINVAL, "need 0 < ds <= ds_max (got %g, %g)",
-                o->ds, o->ds_max);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "need 0 < ds <= ds_max (got %g, %g)", o->ds, o->ds_max);
   return WHIRL_OK;
 }
 
@@ -381,7 +372,7 @@ int whirl_sfd_periodic_response(const double *p0,
       const double Om = q->p[WHIRL_SFD_OMEGA];
       circle_samples(p, hypot(q->x[0], q->x[1]), Om, msamp, xs);
       p[WHIRL_SFD_OMEGA] = Om;
-      rc = pd_from_samples(&d, xs, msamp, 2.0 * M_PI / Om, X);
+      rc = pd_from_samples(&d, xs, msamp, 2.0 * WHIRL_PI / Om, X);
       if (rc == WHIRL_OK)
         rc = trace_add(out, &d, &co, X, p, 1, lo > o->omega_min * (1 + 1e-9), seen,
                        &nseen, errbuf, errlen);
@@ -391,14 +382,14 @@ int whirl_sfd_periodic_response(const double *p0,
      * unbalance response at omega_min */
     const double Om = o->omega_min, A = p[WHIRL_SFD_DELTA] * Om * Om / (1.0 - Om * Om);
     for (size_t j = 0; j < msamp; ++j) {
-      const double th = 2.0 * M_PI * (double)j / msamp;
+      const double th = 2.0 * WHIRL_PI * (double)j / msamp;
       xs[4 * j] = A * cos(th);
       xs[4 * j + 1] = FE + A * sin(th);
       xs[4 * j + 2] = -Om * A * sin(th);
       xs[4 * j + 3] = Om * A * cos(th);
     }
     p[WHIRL_SFD_OMEGA] = Om;
-    rc = pd_from_samples(&d, xs, msamp, 2.0 * M_PI / Om, X);
+    rc = pd_from_samples(&d, xs, msamp, 2.0 * WHIRL_PI / Om, X);
     if (rc == WHIRL_OK)
       rc = trace_add(out, &d, &co, X, p, 1, 0, seen, &nseen, errbuf, errlen);
     size_t carried = 0, nisola = 0;
@@ -416,7 +407,7 @@ int whirl_sfd_periodic_response(const double *p0,
       memcpy(pf, p, sizeof pf);
       pf[WHIRL_SFD_OMEGA] = Oi;
       pf[WHIRL_SFD_FE] = 0.0;
-      if ((rc = pd_from_samples(&d, xs, msamp, 2.0 * M_PI / Oi, X))) break;
+      if ((rc = pd_from_samples(&d, xs, msamp, 2.0 * WHIRL_PI / Oi, X))) break;
       whirl_cont_options cf = co;
       cf.icp = WHIRL_SFD_FE;
       cf.p_min = FE < 0 ? FE : 0.0;
@@ -457,7 +448,8 @@ int whirl_sfd_periodic_response(const double *p0,
   whirl_sfd_response_free(&circ);
   pd_free(&d);
   if (rc != WHIRL_OK) {
-    if (errbuf && !errbuf[0]) fail(errbuf, errlen, rc, "%s", whirl_strerror(rc));
+    if (errbuf && !errbuf[0])
+      WHIRL_ERRMSG(errbuf, errlen, rc, "%s", whirl_strerror(rc));
     whirl_sfd_periodic_free(out);
   }
   return rc;
@@ -500,7 +492,7 @@ static int cycle_from_integration(const double *p, size_t m, double *xs,
   whirl_ode *ode = whirl_ode_alloc(rot, p);
   if (!ode) return WHIRL_ENOMEM;
   whirl_ode_set_tolerances(ode, 1e-7, 1e-10);
-  const double Om = p[WHIRL_SFD_OMEGA], Tf = 2.0 * M_PI / Om;
+  const double Om = p[WHIRL_SFD_OMEGA], Tf = 2.0 * WHIRL_PI / Om;
   const double x0[4] = {0, 0, 0, 0};
   whirl_ode_reset(ode, 0.0, x0);
   int rc = whirl_ode_evolve(ode, 10.0 * Tf);
@@ -531,18 +523,23 @@ static int cycle_from_integration(const double *p, size_t m, double *xs,
     }
   }
   if (rc != WHIRL_OK) {
-    rc = fail(errbuf, errlen, rc, "nonsync: integration from rest at Omega = %g "
-                                  "failed: %s", Om, whirl_ode_errmsg(ode));
+    rc = WHIRL_ERRMSG(errbuf, errlen, rc,
+                      "nonsync: integration from rest at Omega = %g "
+                      "failed: %s",
+                      Om, whirl_ode_errmsg(ode));
     whirl_ode_free(ode);
     return rc;
   }
   if (nc < 2 || !found || scale < 1e-9) {
     whirl_ode_free(ode);
-    return fail(errbuf, errlen, WHIRL_ENOCONV,
-                "nonsync: from rest at Omega = %g the rotor settles on %s, not "
-                "on a nonsynchronous cycle; start at another speed "
-                "(--omega-start)",
-                Om, nc < 2 ? "a circular orbit" : "no periodic cycle of the rotating frame");
+    return WHIRL_ERRMSG(
+        errbuf, errlen, WHIRL_ENOCONV,
+        "nonsync: from rest at Omega = %g the rotor settles on %s, not "
+        "on a nonsynchronous cycle; start at another speed "
+        "(--omega-start)",
+        Om,
+        nc < 2 ? "a circular orbit"
+               : "no periodic cycle of the rotating frame");
   }
   *T = Tr;
   whirl_ode_set_tolerances(ode, 1e-12, 1e-15);
@@ -550,7 +547,9 @@ static int cycle_from_integration(const double *p, size_t m, double *xs,
   sample_ctx sc = {xs, m};
   rc = whirl_ode_sample(ode, *T / (double)m, m - 1, take_sample, &sc);
   whirl_ode_free(ode);
-  if (rc != WHIRL_OK) return fail(errbuf, errlen, rc, "nonsync: sampling the cycle failed");
+  if (rc != WHIRL_OK)
+    return WHIRL_ERRMSG(errbuf, errlen, rc,
+                        "nonsync: sampling the cycle failed");
   /* a circular orbit is an equilibrium of the rotating frame: its decaying
    * oscillation also returns to the section, but with (almost) no
    * amplitude left */
@@ -558,11 +557,12 @@ static int cycle_from_integration(const double *p, size_t m, double *xs,
   for (size_t k = 1; k < m; ++k)
     for (int i = 0; i < 2; ++i) spread = fmax(spread, fabs(xs[4 * k + i] - xs[i]));
   if (spread < 1e-2 * fmax(scale, 1e-3))
-    return fail(errbuf, errlen, WHIRL_ENOCONV,
-                "nonsync: from rest at Omega = %g the rotor settles on a circular "
-                "orbit (an equilibrium of the rotating frame), not on a "
-                "nonsynchronous cycle; start at another speed (--omega-start)",
-                p[WHIRL_SFD_OMEGA]);
+    return WHIRL_ERRMSG(
+        errbuf, errlen, WHIRL_ENOCONV,
+        "nonsync: from rest at Omega = %g the rotor settles on a circular "
+        "orbit (an equilibrium of the rotating frame), not on a "
+        "nonsynchronous cycle; start at another speed (--omega-start)",
+        p[WHIRL_SFD_OMEGA]);
   return WHIRL_OK;
 }
 
@@ -576,12 +576,13 @@ int whirl_sfd_nonsync(const double *p0, double omega_start,
   int rc = check_options(p, o, errbuf, errlen);
   if (rc) return rc;
   if (p[WHIRL_SFD_FE] != 0.0)
-    return fail(errbuf, errlen, WHIRL_EINVAL,
-                "nonsync: the rotating frame needs F_E = 0 (got %g)", p[WHIRL_SFD_FE]);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "nonsync: the rotating frame needs F_E = 0 (got %g)",
+                        p[WHIRL_SFD_FE]);
   if (!(omega_start >= o->omega_min && omega_start <= o->omega_max))
-    return fail(errbuf, errlen, WHIRL_EINVAL,
-                "nonsync: start speed %g outside [%g, %g]", omega_start, o->omega_min,
-                o->omega_max);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "nonsync: start speed %g outside [%g, %g]", omega_start,
+                        o->omega_min, o->omega_max);
   out->method = o->method;
   const size_t msamp = seed_samples(o);
   double *xs = malloc(4 * msamp * sizeof *xs), T = 0;

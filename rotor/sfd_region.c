@@ -192,8 +192,10 @@ int whirl_sfd_merge_points(double lambda, double zeta, whirl_sfd_curve *out,
   memset(out, 0, sizeof *out);
   if (!(isfinite(lambda) && lambda > 0) || !(isfinite(zeta) && zeta >= 0)) {
     if (errbuf && errlen)
-      snprintf(errbuf, errlen, "merge: need lambda > 0 and zeta >= 0 (got lambda %g, zeta %g)",
-               lambda, zeta);
+      WHIRL_ERRMSG(
+          errbuf, errlen, WHIRL_EINVAL,
+          "merge: need lambda > 0 and zeta >= 0 (got lambda %g, zeta %g)",
+          lambda, zeta);
     return WHIRL_EINVAL;
   }
   ctx c;
@@ -244,7 +246,8 @@ int whirl_sfd_merge_points(double lambda, double zeta, whirl_sfd_curve *out,
     }
   whirl_fold_free(f);
   whirl_equilibrium_free(c.eq);
-  if (rc != 0 && errbuf && errlen) snprintf(errbuf, errlen, "merge: out of memory");
+  if (rc != 0 && errbuf && errlen)
+    WHIRL_ERRMSG(errbuf, errlen, rc, "merge: out of memory");
   return rc;
 }
 
@@ -286,10 +289,7 @@ static int trace_dir(const trace_job *job, const whirl_sfd_region_options *o,
   co.detect_loop = 1;
   char err[256];
   whirl_cont *c = whirl_cont_alloc(job->sys, &co, err, sizeof err);
-  if (!c) {
-    if (errbuf && errlen) snprintf(errbuf, errlen, "region: %s", err);
-    return WHIRL_ENOMEM;
-  }
+  if (!c) return WHIRL_ERRMSG(errbuf, errlen, WHIRL_ENOMEM, "region: %s", err);
   const size_t n = 4;
   int rc = whirl_cont_start(c, Z0, p0, dir);
   while (rc == WHIRL_OK && (rc = whirl_cont_step(c)) == WHIRL_OK) {
@@ -313,12 +313,17 @@ static int trace_dir(const trace_job *job, const whirl_sfd_region_options *o,
     /* the curve would be cut short without a word (5001 points) */
     rc = WHIRL_EMAXITER;
     if (errbuf && errlen)
-      snprintf(errbuf, errlen, "region: the %s curve took %zu steps (nmx) before "
-               "reaching the lambda range's ends at %s lambda = %.6g: raise nmx "
-               "or ds-max", job->upper ? "upper" : "lower", co.nmx,
-               dir < 0 ? "decreasing" : "increasing", whirl_cont_point(c)->p[WHIRL_SFD_LAMBDA]);
+      WHIRL_ERRMSG(
+          errbuf, errlen, WHIRL_EMAXITER,
+          "region: the %s curve took %zu steps (nmx) before "
+          "reaching the lambda range's ends at %s lambda = %.6g: raise nmx "
+          "or ds-max",
+          job->upper ? "upper" : "lower", co.nmx,
+          dir < 0 ? "decreasing" : "increasing",
+          whirl_cont_point(c)->p[WHIRL_SFD_LAMBDA]);
   } else if (rc < 0 && errbuf && errlen)
-    snprintf(errbuf, errlen, "region: continuation failed: %s", whirl_cont_errmsg(c));
+    WHIRL_ERRMSG(errbuf, errlen, rc, "region: continuation failed: %s",
+                 whirl_cont_errmsg(c));
   whirl_cont_free(c);
   return rc < 0 ? rc : 0;
 }
@@ -399,10 +404,7 @@ int whirl_sfd_region_compute(const whirl_sfd_region_options *o,
   else if (!(isfinite(o->lambda_max) && o->lambda_max > o->lambda_min))
     why = "lambda-max must be > lambda-min";
   else if (!(o->ds_max > 0) || o->nmx < 1) why = "ds-max must be > 0 and nmx >= 1";
-  if (why) {
-    if (errbuf && errlen) snprintf(errbuf, errlen, "region: %s", why);
-    return WHIRL_EINVAL;
-  }
+  if (why) return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "region: %s", why);
   int rc = 0;
   /* seeds at a lambda inside the range (log-centre), then the ends */
   const double seeds[3] = {sqrt(o->lambda_min * o->lambda_max), o->lambda_min,
@@ -472,9 +474,11 @@ int whirl_sfd_region_compute(const whirl_sfd_region_options *o,
   }
   if (rc == 0 && (r->upper.len == 0 || r->lower.len == 0)) {
     if (errbuf && errlen)
-      snprintf(errbuf, errlen, "region: no %s found for lambda in [%g, %g] (zeta %g, W %g)",
-               r->upper.len == 0 ? "isola merge point" : "fold at Omega = W",
-               o->lambda_min, o->lambda_max, o->zeta, o->omega_max);
+      WHIRL_ERRMSG(
+          errbuf, errlen, WHIRL_ENOCONV,
+          "region: no %s found for lambda in [%g, %g] (zeta %g, W %g)",
+          r->upper.len == 0 ? "isola merge point" : "fold at Omega = W",
+          o->lambda_min, o->lambda_max, o->zeta, o->omega_max);
     rc = WHIRL_ENOCONV;
   }
   return rc;

@@ -100,23 +100,20 @@ int whirl_sfd_response_compute(const double *p0,
   p[WHIRL_SFD_OMEGA] = o->omega_min;
   int rc = whirl_sfd_check_params(p, errbuf, errlen);
   if (rc != WHIRL_OK) return rc;
-  if (p[WHIRL_SFD_FE] != 0.0) {
-    snprintf(errbuf, errlen,
-             "circular orbits need F_E = 0 (got %g): gravity must be fully "
-             "compensated for the rotating-frame formulation",
-             p[WHIRL_SFD_FE]);
-    return WHIRL_EINVAL;
-  }
+  if (p[WHIRL_SFD_FE] != 0.0)
+    return WHIRL_ERRMSG(
+        errbuf, errlen, WHIRL_EINVAL,
+        "circular orbits need F_E = 0 (got %g): gravity must be fully "
+        "compensated for the rotating-frame formulation",
+        p[WHIRL_SFD_FE]);
   if (!(o->omega_min > 0) || !(o->omega_max > o->omega_min) ||
-      !isfinite(o->omega_max)) {
-    snprintf(errbuf, errlen, "need 0 < omega_min < omega_max (got %g, %g)",
-             o->omega_min, o->omega_max);
-    return WHIRL_EINVAL;
-  }
-  if (o->neps < 10 || !(o->ds > 0) || !(o->ds_max >= o->ds)) {
-    snprintf(errbuf, errlen, "need neps >= 10 and 0 < ds <= ds_max");
-    return WHIRL_EINVAL;
-  }
+      !isfinite(o->omega_max))
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "need 0 < omega_min < omega_max (got %g, %g)",
+                        o->omega_min, o->omega_max);
+  if (o->neps < 10 || !(o->ds > 0) || !(o->ds_max >= o->ds))
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "need neps >= 10 and 0 < ds <= ds_max");
   const double lam = p[WHIRL_SFD_LAMBDA], del = p[WHIRL_SFD_DELTA],
                zet = p[WHIRL_SFD_ZETA];
 
@@ -176,7 +173,7 @@ int whirl_sfd_response_compute(const double *p0,
       /* a seed exactly at a fold cannot start (F_x singular); the other
        * seeds of that branch will.  A fatal model error is reported. */
       if (trc == WHIRL_EUSER || trc == WHIRL_ENOMEM) {
-        snprintf(errbuf, errlen, "%s", msg);
+        WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "%s", msg);
         rc = trc;
         goto done;
       }
@@ -207,7 +204,7 @@ int whirl_sfd_response_compute(const double *p0,
   }
   rc = WHIRL_OK;
 done:
-  if (rc == WHIRL_ENOMEM) snprintf(errbuf, errlen, "out of memory");
+  if (rc == WHIRL_ENOMEM) WHIRL_ERRMSG(errbuf, errlen, rc, "out of memory");
   if (rc != WHIRL_OK) whirl_sfd_response_free(out);
   free(seeds.v);
   whirl_equilibrium_free(eq);

@@ -29,6 +29,7 @@ int whirl_basins_check_tolerances(double rtol, double atol, char *msg,
   char dummy[1];
   if (!msg || len == 0) msg = dummy, len = sizeof dummy;
   msg[0] = '\0';
+  /* the message is the check's answer, for the user: no source location */
   if (!(rtol >= WHIRL_BASINS_RTOL_MIN && rtol <= WHIRL_BASINS_RTOL_MAX)) {
     snprintf(msg, len, "rtol must be in [%g, %g] (got %g)",
              WHIRL_BASINS_RTOL_MIN, WHIRL_BASINS_RTOL_MAX, rtol);
@@ -128,39 +129,31 @@ int whirl_basins_compute(const whirl_problem *prob, const double *p,
     errlen = sizeof dummy;
   }
   errbuf[0] = '\0';
-  if (!prob || !p || (!x0 && npoints) || !o || (!which && npoints)) {
-    snprintf(errbuf, errlen, "basins: missing argument");
-    return WHIRL_EINVAL;
-  }
-  if (!(o->period > 0) || !isfinite(o->period)) {
-    snprintf(errbuf, errlen, "basins: section period must be > 0 (got %g)",
-             o->period);
-    return WHIRL_EINVAL;
-  }
-  if (o->max_periods == 0) {
-    snprintf(errbuf, errlen, "basins: max_periods must be >= 1");
-    return WHIRL_EINVAL;
-  }
-  if (natt > MAX_ATTRACTORS) {
-    snprintf(errbuf, errlen, "basins: at most %d attractors (got %zu)",
-             MAX_ATTRACTORS, natt);
-    return WHIRL_EINVAL;
-  }
-  if (o->nthreads < 0 || o->nthreads > WHIRL_BASINS_MAX_THREADS) {
-    snprintf(errbuf, errlen, "basins: nthreads must be in 0..%d (got %d)",
-             WHIRL_BASINS_MAX_THREADS, o->nthreads);
-    return WHIRL_EINVAL;
-  }
+  if (!prob || !p || (!x0 && npoints) || !o || (!which && npoints))
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "basins: missing argument");
+  if (!(o->period > 0) || !isfinite(o->period))
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "basins: section period must be > 0 (got %g)",
+                        o->period);
+  if (o->max_periods == 0)
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "basins: max_periods must be >= 1");
+  if (natt > MAX_ATTRACTORS)
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "basins: at most %d attractors (got %zu)",
+                        MAX_ATTRACTORS, natt);
+  if (o->nthreads < 0 || o->nthreads > WHIRL_BASINS_MAX_THREADS)
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "basins: nthreads must be in 0..%d (got %d)",
+                        WHIRL_BASINS_MAX_THREADS, o->nthreads);
   char tmsg[128];
-  if (whirl_basins_check_tolerances(o->rtol, o->atol, tmsg, sizeof tmsg)) {
-    snprintf(errbuf, errlen, "basins: %s", tmsg);
-    return WHIRL_EINVAL;
-  }
+  if (whirl_basins_check_tolerances(o->rtol, o->atol, tmsg, sizeof tmsg))
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "basins: %s", tmsg);
   for (size_t j = 0; j < natt; ++j)
-    if (!att[j].test) {
-      snprintf(errbuf, errlen, "basins: attractor %zu has no test", j);
-      return WHIRL_EINVAL;
-    }
+    if (!att[j].test)
+      return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                          "basins: attractor %zu has no test", j);
 
   size_t done = 0, tot_periods = 0, tot_steps = 0, tot_rhs = 0;
   int status = WHIRL_OK;
@@ -216,6 +209,6 @@ int whirl_basins_compute(const whirl_problem *prob, const double *p,
     st->rhs_evals = tot_rhs;
   }
   if (status != WHIRL_OK)
-    snprintf(errbuf, errlen, "basins: %s", whirl_strerror(status));
+    WHIRL_ERRMSG(errbuf, errlen, status, "basins: %s", whirl_strerror(status));
   return status;
 }

@@ -20,9 +20,8 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include <whirl/problem.h>
 #include <whirl/spectrum.h>
-
-#define SPEC_PI 3.14159265358979323846
 
 /* Zero padding beyond the next power of two: the FFT bin spacing is at most
  * 1/SPEC_PAD of the resolution 1/(m dt), which makes the Gaussian interpolation
@@ -85,7 +84,7 @@ static void fft_radix2(double *z, size_t n, const double *tw) {
  * the twiddles carry no accumulated rounding error). */
 static void fft_twiddles(double *tw, size_t n) {
   for (size_t j = 0; j < n / 2; ++j) {
-    const double ang = 2.0 * SPEC_PI * (double)j / (double)n;
+    const double ang = 2.0 * WHIRL_PI * (double)j / (double)n;
     tw[2 * j] = cos(ang);
     tw[2 * j + 1] = -sin(ang);
   }
@@ -131,7 +130,7 @@ static int amplitude_spectrum(const double *x, size_t m, size_t n,
    * show as a spurious peak near f = 0 of relative size ~1/(2π f T) */
   double wsum = 0.0, mean = 0.0;
   for (size_t i = 0; i < m; ++i) {
-    const double w = 0.5 - 0.5 * cos(2.0 * SPEC_PI * (double)i / (double)m);
+    const double w = 0.5 - 0.5 * cos(2.0 * WHIRL_PI * (double)i / (double)m);
     wsum += w;
     mean += w * x[i];
     z[2 * i] = w;
@@ -193,7 +192,7 @@ static int peak_by_amp_desc(const void *pa, const void *pb) {
 /* Hann leakage bound |W(ν)/W(0)| = |sin(πν)| / (π ν |1 − ν²|) ≤
  * 1 / (π ν (ν² − 1)) at ν resolution bins from a tone, ν > 1. */
 static double hann_envelope(double nu) {
-  return 1.0 / (SPEC_PI * nu * (nu * nu - 1.0));
+  return 1.0 / (WHIRL_PI * nu * (nu * nu - 1.0));
 }
 
 /* Is a peak at fb with amplitude a explained as leakage of the larger

@@ -187,7 +187,7 @@ int whirl_trace_branch(const whirl_system *sys, const whirl_cont_options *opt,
     accumulate(stats, whirl_cont_get_stats(c));
     whirl_cont_reset_stats(c);
     if (rc < 0) {
-      if (errbuf && errlen) snprintf(errbuf, errlen, "%s", whirl_cont_errmsg(c));
+      WHIRL_ERRMSG(errbuf, errlen, rc, "%s", whirl_cont_errmsg(c));
       goto done;
     }
     reasons[h] = whirl_cont_stop_reason(c);

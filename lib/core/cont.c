@@ -8,7 +8,6 @@
  * parameter bounds (localised exactly), NMX, closed loops and DSMIN.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -76,20 +75,6 @@ void whirl_cont_options_default(whirl_cont_options *o) {
   o->structured = 1;
   o->uz = NULL;
   o->nuz = 0;
-}
-
-int whirl_cont_fail_(whirl_cont *c, int code, const char *file, int line,
-                     const char *fmt, ...) {
-  va_list ap;
-  va_start(ap, fmt);
-  int k = vsnprintf(c->errmsg, sizeof c->errmsg, fmt, ap);
-  va_end(ap);
-  if (k >= 0 && (size_t)k < sizeof c->errmsg) {
-    const char *base = strrchr(file, '/');
-    snprintf(c->errmsg + k, sizeof c->errmsg - (size_t)k, " (%s:%d)",
-             base ? base + 1 : file, line);
-  }
-  return code;
 }
 
 double cont_dot(const whirl_cont *c, const double *a, const double *b) {
@@ -179,7 +164,7 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
            (sys->nnz == 0 || !sys->Jp || !sys->Ji || !sys->Fx_sparse))
     why = "sparse solver requested but the system has no sparse Jacobian";
   if (why) {
-    if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_cont_alloc: %s", why);
+    WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "whirl_cont_alloc: %s", why);
     return NULL;
   }
   whirl_cont *c = calloc(1, sizeof *c);
@@ -248,7 +233,7 @@ nomem:
   if (c && c->opt.uz == opt->uz) c->opt.uz = NULL; /* not yet owned */
   if (c && c->opt.uz_stop == opt->uz_stop) c->opt.uz_stop = NULL;
   whirl_cont_free(c);
-  if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_cont_alloc: out of memory");
+  WHIRL_ERRMSG(errbuf, errlen, WHIRL_ENOMEM, "whirl_cont_alloc: out of memory");
   return NULL;
 }
 
@@ -290,8 +275,9 @@ void whirl_cont_free(whirl_cont *c) {
 static int classify(whirl_cont *c, int rc, const char *what) {
   if (rc == 0) return 0;
   if (rc > 0 || rc == WHIRL_EBADFUNC) return 2;
-  return CONT_FAIL(c, WHIRL_EUSER, "%s: callback returned fatal status %d (%s)",
-                   what, rc, whirl_strerror(rc));
+  return WHIRL_FAIL(c, WHIRL_EUSER,
+                    "%s: callback returned fatal status %d (%s)", what, rc,
+                    whirl_strerror(rc));
 }
 
 /* F_x (dense or sparse values) and F_p at (x, p). */
@@ -342,8 +328,8 @@ static int jac_factor(whirl_cont *c, const double *x, const double *p,
                              c->row, &c->row[c->n]);
   if (rc == WHIRL_OK) return c->fact_ok = 1, 0;
   if (rc == WHIRL_ESINGULAR) return 3;
-  return CONT_FAIL(c, rc, "factorisation of the extended Jacobian: %s",
-                   whirl_bordered_errmsg(c->bd));
+  return WHIRL_FAIL(c, rc, "factorisation of the extended Jacobian: %s",
+                    whirl_bordered_errmsg(c->bd));
 }
 
 /* Chord Newton: the held F_x and F_p with the border row row2, when that
@@ -367,8 +353,8 @@ static int reborder(whirl_cont *c) {
                              &c->row[c->n]);
   if (rc == WHIRL_OK) return c->fact_ok = 1, 0;
   if (rc == WHIRL_ESINGULAR) return 3;
-  return CONT_FAIL(c, rc, "factorisation of the extended Jacobian: %s",
-                   whirl_bordered_errmsg(c->bd));
+  return WHIRL_FAIL(c, rc, "factorisation of the extended Jacobian: %s",
+                    whirl_bordered_errmsg(c->bd));
 }
 
 /* Solve with the last factorisation, b[N] in place. */
@@ -376,8 +362,8 @@ static int ext_solve(whirl_cont *c, double *b, const char *what) {
   int rc = c->bs ? c->bs->solve(c->bws, b, 1)
                  : whirl_bordered_solve(c->bd, b, 1, 0);
   if (rc == WHIRL_OK) return 0;
-  return CONT_FAIL(c, rc, "%s: %s", what,
-                   c->bs ? whirl_strerror(rc) : whirl_bordered_errmsg(c->bd));
+  return WHIRL_FAIL(c, rc, "%s: %s", what,
+                    c->bs ? whirl_strerror(rc) : whirl_bordered_errmsg(c->bd));
 }
 
 /* ------------------------------------------------------------ corrector */
@@ -635,8 +621,8 @@ static int notify_accept(whirl_cont *c, const cont_state *st) {
   if (!c->sys.accept) return 0;
   int rc = c->sys.accept(st->X, st->p, c->sys.data);
   if (rc != 0)
-    return CONT_FAIL(c, rc < 0 ? rc : WHIRL_EUSER,
-                     "the system's accept callback failed (%d)", rc);
+    return WHIRL_FAIL(c, rc < 0 ? rc : WHIRL_EUSER,
+                      "the system's accept callback failed (%d)", rc);
   return 0;
 }
 
@@ -653,13 +639,13 @@ static int begin(whirl_cont *c, int tests_valid) {
 }
 
 static int check_start(whirl_cont *c, const double *x0, const double *p0) {
-  if (!x0 || !p0) return CONT_FAIL(c, WHIRL_EINVAL, "start: NULL x0 or p0");
+  if (!x0 || !p0) return WHIRL_FAIL(c, WHIRL_EINVAL, "start: NULL x0 or p0");
   for (size_t i = 0; i < c->n; ++i)
     if (!isfinite(x0[i]))
-      return CONT_FAIL(c, WHIRL_EINVAL, "start: x0[%zu] is not finite", i);
+      return WHIRL_FAIL(c, WHIRL_EINVAL, "start: x0[%zu] is not finite", i);
   for (size_t k = 0; k < c->npar; ++k)
     if (!isfinite(p0[k]))
-      return CONT_FAIL(c, WHIRL_EINVAL, "start: p0[%zu] is not finite", k);
+      return WHIRL_FAIL(c, WHIRL_EINVAL, "start: p0[%zu] is not finite", k);
   return 0;
 }
 
@@ -684,14 +670,15 @@ int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
   c->opt.newton_chord = chord;
   if (rc < 0) return rc;
   if (rc == 3)
-    return CONT_FAIL(c, WHIRL_ESINGULAR,
-                     "start: F_x is singular at the start point (a fold or "
-                     "branch point?); start elsewhere or give a direction");
+    return WHIRL_FAIL(c, WHIRL_ESINGULAR,
+                      "start: F_x is singular at the start point (a fold or "
+                      "branch point?); start elsewhere or give a direction");
   if (rc > 0)
-    return CONT_FAIL(c, WHIRL_ENOCONV,
-                     "start: Newton did not converge at %s = %g from the given x0%s",
-                     c->sys.p_names ? c->sys.p_names[c->opt.icp] : "p",
-                     p0[c->opt.icp], rc == 2 ? " (domain error)" : "");
+    return WHIRL_FAIL(
+        c, WHIRL_ENOCONV,
+        "start: Newton did not converge at %s = %g from the given x0%s",
+        c->sys.p_names ? c->sys.p_names[c->opt.icp] : "p", p0[c->opt.icp],
+        rc == 2 ? " (domain error)" : "");
   memcpy(c->cur.X, c->trial.X, N * sizeof *c->cur.X);
   /* references the equations take from the last accepted point (the phase
    * condition of collocation) must be the start point's before its tangent
@@ -700,9 +687,9 @@ int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
   rc = cont_analyse(c, &c->cur, c->dir);
   if (rc < 0) return rc;
   if (rc > 0 || fabs(c->cur.t[n]) < 1e-12)
-    return CONT_FAIL(c, WHIRL_ESINGULAR,
-                     "start: F_x is singular at the start point (a fold?); "
-                     "start elsewhere or give a direction");
+    return WHIRL_FAIL(c, WHIRL_ESINGULAR,
+                      "start: F_x is singular at the start point (a fold?); "
+                      "start elsewhere or give a direction");
   if ((dir < 0) == (c->cur.t[n] > 0))
     for (size_t i = 0; i < N; ++i) c->cur.t[i] = -c->cur.t[i];
   /* Re-evaluate the tests with the tangent as border so their signs are
@@ -710,7 +697,9 @@ int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
   memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
   rc = cont_analyse(c, &c->cur, c->dir);
   if (rc != 0)
-    return rc < 0 ? rc : CONT_FAIL(c, WHIRL_ESINGULAR, "start: singular extended Jacobian");
+    return rc < 0 ? rc
+                  : WHIRL_FAIL(c, WHIRL_ESINGULAR,
+                               "start: singular extended Jacobian");
   return begin(c, 1);
 }
 
@@ -727,7 +716,8 @@ int whirl_cont_start_direction(whirl_cont *c, const double *x0,
   double nt = 0.0;
   for (size_t i = 0; i < N; ++i) nt += t0[i] * t0[i];
   if (!(nt > 0) || !isfinite(nt))
-    return CONT_FAIL(c, WHIRL_EINVAL, "start_direction: zero or non-finite direction");
+    return WHIRL_FAIL(c, WHIRL_EINVAL,
+                      "start_direction: zero or non-finite direction");
   for (size_t i = 0; i < N; ++i) c->dir[i] = t0[i];
   const double nw = cont_norm(c, c->dir);
   for (size_t i = 0; i < N; ++i) c->dir[i] /= nw;
@@ -748,7 +738,8 @@ int whirl_cont_start_direction(whirl_cont *c, const double *x0,
 int whirl_cont_start_switch(whirl_cont *c, const whirl_point *bp, int dir) {
   const size_t n = c->n, N = c->N;
   if (!bp || bp->n != n || bp->npar != c->npar || !bp->t)
-    return CONT_FAIL(c, WHIRL_EINVAL, "start_switch: point does not belong to this system");
+    return WHIRL_FAIL(c, WHIRL_EINVAL,
+                      "start_switch: point does not belong to this system");
   double *A = malloc(n * N * sizeof *A), *V = malloc(N * 2 * sizeof *V);
   double sv[2], phi[64], *ph = N <= 64 ? phi : malloc(N * sizeof *ph);
   int rc = WHIRL_ENOMEM;
@@ -756,7 +747,10 @@ int whirl_cont_start_switch(whirl_cont *c, const whirl_point *bp, int dir) {
   memcpy(c->cur.p, bp->p, c->npar * sizeof *bp->p);
   rc = eval_jac(c, bp->x, bp->p);
   if (rc != 0) {
-    rc = rc < 0 ? rc : CONT_FAIL(c, WHIRL_EDOMAIN, "start_switch: cannot evaluate the Jacobian at the branch point");
+    rc = rc < 0 ? rc
+                : WHIRL_FAIL(c, WHIRL_EDOMAIN,
+                             "start_switch: cannot evaluate the Jacobian at "
+                             "the branch point");
     goto done;
   }
   if (c->sparse) {
@@ -770,7 +764,7 @@ int whirl_cont_start_switch(whirl_cont *c, const whirl_point *bp, int dir) {
   memcpy(A + n * n, c->fp, n * sizeof *A);
   rc = whirl_null_vectors(n, N, A, 2, V, sv);
   if (rc != WHIRL_OK) {
-    rc = CONT_FAIL(c, rc, "start_switch: SVD of [F_x F_p] failed");
+    rc = WHIRL_FAIL(c, rc, "start_switch: SVD of [F_x F_p] failed");
     goto done;
   }
   /* The null space at a simple branch point is spanned by the two right
@@ -883,7 +877,8 @@ static int remap_if_asked(whirl_cont *c) {
   double *v[5] = {c->cur.X, c->cur.t, c->Xstart, c->Xprev, c->tprev};
   size_t nv = c->have_tprev ? 5 : c->have_prev ? 4 : 3;
   int rc = c->sys.remap(v, nv, c->cur.p, c->sys.data);
-  if (rc < 0) return CONT_FAIL(c, rc, "the system's remap callback failed (%d)", rc);
+  if (rc < 0)
+    return WHIRL_FAIL(c, rc, "the system's remap callback failed (%d)", rc);
   if (rc != 1) return 0;
   c->fact_ok = 0;
   /* the unit tangents (current and previous) stay unit */
@@ -897,8 +892,9 @@ static int remap_if_asked(whirl_cont *c) {
   rc = cont_analyse(c, &c->cur, c->dir);
   if (rc < 0) return rc;
   if (rc > 0)
-    return CONT_FAIL(c, WHIRL_ESINGULAR, "the current point is singular "
-                     "after the system's change of representation (remap)");
+    return WHIRL_FAIL(c, WHIRL_ESINGULAR,
+                      "the current point is singular "
+                      "after the system's change of representation (remap)");
   return 0;
 }
 
@@ -1177,7 +1173,8 @@ static int accept_step(whirl_cont *c, int its, double cosang) {
 
 int whirl_cont_step(whirl_cont *c) {
   if (!c->started)
-    return CONT_FAIL(c, WHIRL_EINVAL, "whirl_cont_step: continuation not started");
+    return WHIRL_FAIL(c, WHIRL_EINVAL,
+                      "whirl_cont_step: continuation not started");
   if (pop(c)) return WHIRL_OK;
   if (c->done) return WHIRL_DONE;
   int rc = c->sys.remap ? remap_if_asked(c) : 0;

@@ -10,6 +10,8 @@
 #include <whirl/cont.h>
 #include <whirl/linsol.h>
 
+#include "util/errmsg_impl.h"
+
 /* Everything known about one corrected point: the solution, the unit tangent
  * and the values of the test functions there. */
 typedef struct cont_state {
@@ -84,13 +86,6 @@ struct whirl_cont {
   whirl_cont_stats stats;
   char errmsg[512];
 };
-
-/* Record a formatted message with its origin; returns code. */
-int whirl_cont_fail_(whirl_cont *c, int code, const char *file, int line,
-                     const char *fmt, ...)
-    __attribute__((format(printf, 5, 6)));
-#define CONT_FAIL(c, code, ...) \
-  whirl_cont_fail_((c), (code), __FILE__, __LINE__, __VA_ARGS__)
 
 /* Correct the point X (in/out, N) onto the curve with the constraint
  * <dir, X - X0>_w = s.  Returns 0, > 0 for a recoverable failure (domain,

@@ -99,9 +99,10 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   /* the states at the two ends of the bracket: each trial starts from the
    * chord between them, not between a and b, which near a branch point on
    * a sharply turning branch is too far for Newton (enz's pitchfork) */
-  double *Xa = malloc(3 * N * sizeof *Xa), *Xb = Xa + N, *Xbest = Xb + N;
-  double sbest = 0.0, fbest = INFINITY, sout = 0.0;
+  double *Xa = malloc(3 * N * sizeof *Xa);
   if (!Xa) return 1;
+  double *Xb = Xa + N, *Xbest = Xb + N; /* not before the check: NULL + N */
+  double sbest = 0.0, fbest = INFINITY, sout = 0.0;
   memcpy(Xa, a->X, N * sizeof *Xa);
   memcpy(Xb, b->X, N * sizeof *Xb);
   /* the bounds and UZ values need p only: the tangent and the spectrum

@@ -1,53 +1,16 @@
 /* linalg/linsol_impl.h — private to lib/linalg: the whirl_linsol object and
  * its backend ops table (SUNDIALS SUNLinearSolver shape), the Fortran LAPACK
- * prototypes, the CSC pattern check shared by sparse.c and bordered.c, and
- * WHIRL_FAIL, which stores "message (file.c:line)" in an object's errmsg.
+ * prototypes and the CSC pattern check shared by sparse.c and bordered.c.
+ * Errors: WHIRL_FAIL (util/errmsg_impl.h) into each object's errmsg.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_LINSOL_IMPL_H
 #define WHIRL_LINSOL_IMPL_H
 
-#include <stdarg.h>
 #include <stddef.h>
-#include <stdio.h>
-#include <string.h>
 
 #include <whirl/linsol.h>
 
-/* ------------------------------------------------------------------------
- * Error messages.  Every object of this layer has a `char errmsg[N]` member;
- * WHIRL_FAIL(obj, code, fmt, ...) formats the message, appends the source
- * location as GSL_ERROR does, and evaluates to `code`, so a failing path is
- * one line:  return WHIRL_FAIL(ls, WHIRL_EINVAL, "nrhs = %zu too large", k);
- * whirl_errmsg_set is the place to put a debugger breakpoint. */
-#define WHIRL_ERRMSG_SIZE 256
-
-#if defined(__GNUC__)
-#define WHIRL_PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
-#else
-#define WHIRL_PRINTF_LIKE(f, a)
-#endif
-
-static inline int whirl_errmsg_set(char *buf, size_t size, int code,
-                                   const char *file, int line,
-                                   const char *fmt, ...) WHIRL_PRINTF_LIKE(6, 7);
-static inline int whirl_errmsg_set(char *buf, size_t size, int code,
-                                   const char *file, int line,
-                                   const char *fmt, ...) {
-  const char *base = strrchr(file, '/');
-  va_list ap;
-  int len;
-  base = base ? base + 1 : file;
-  va_start(ap, fmt);
-  len = vsnprintf(buf, size, fmt, ap);
-  va_end(ap);
-  if (len >= 0 && (size_t)len < size)
-    snprintf(buf + len, size - (size_t)len, " (%s:%d)", base, line);
-  return code;
-}
-
-#define WHIRL_FAIL(obj, code, ...)                                             \
-  whirl_errmsg_set((obj)->errmsg, sizeof((obj)->errmsg), (code), __FILE__,     \
-                   __LINE__, __VA_ARGS__)
+#include "util/errmsg_impl.h"
 
 /* ------------------------------------------------------------------------
  * LAPACK's complaints (xerbla.c): xerbla_ records the routine and argument

@@ -12,7 +12,6 @@
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <float.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -53,8 +52,6 @@ static const double D1 = -12715105075.0 / 11282082432.0,
 /* step-size control (DOPRI5 defaults) */
 static const double SAFE = 0.9, BETA = 0.04, FACMIN = 0.2, FACMAX = 10.0;
 
-#define ERRMSG_LEN 256
-
 struct whirl_ode {
   whirl_problem prob; /* copy; data borrowed */
   size_t n, npar;
@@ -73,20 +70,10 @@ struct whirl_ode {
   double *rc; /* dense output: ydiff, bspl, r4, r5 (4n) */
   int last_rhs;
   whirl_ode_stats st;
-  char errmsg[ERRMSG_LEN];
+  char errmsg[WHIRL_ERRMSG_SIZE];
 };
 
 /* ------------------------------------------------------------------------ */
-
-static int fail(whirl_ode *o, int rc, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static int fail(whirl_ode *o, int rc, const char *fmt, ...) {
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(o->errmsg, sizeof o->errmsg, fmt, ap);
-  va_end(ap);
-  return rc;
-}
 
 static int all_finite(const double *v, size_t n) {
   for (size_t i = 0; i < n; ++i)
@@ -170,10 +157,12 @@ void whirl_ode_free(whirl_ode *o) {
 int whirl_ode_set_tolerances(whirl_ode *o, double rtol, double atol) {
   if (o == NULL) return WHIRL_EINVAL;
   if (!(rtol >= 100.0 * DBL_EPSILON) || !isfinite(rtol))
-    return fail(o, WHIRL_EINVAL, "rtol must be finite and >= %.3g (got %g)",
-                100.0 * DBL_EPSILON, rtol);
+    return WHIRL_FAIL(o, WHIRL_EINVAL,
+                      "rtol must be finite and >= %.3g (got %g)",
+                      100.0 * DBL_EPSILON, rtol);
   if (!(atol > 0.0) || !isfinite(atol))
-    return fail(o, WHIRL_EINVAL, "atol must be finite and > 0 (got %g)", atol);
+    return WHIRL_FAIL(o, WHIRL_EINVAL, "atol must be finite and > 0 (got %g)",
+                      atol);
   o->rtol = rtol;
   o->atol = atol;
   return WHIRL_OK;
@@ -184,17 +173,19 @@ int whirl_ode_set_step_limits(whirl_ode *o, double h_init, double h_min,
   if (o == NULL) return WHIRL_EINVAL;
   if (!(h_init >= 0.0) || !(h_min >= 0.0) || !(h_max >= 0.0) ||
       !isfinite(h_init) || !isfinite(h_min) || !isfinite(h_max))
-    return fail(o, WHIRL_EINVAL,
-                "step limits must be finite and >= 0 (got h_init %g, h_min "
-                "%g, h_max %g)",
-                h_init, h_min, h_max);
+    return WHIRL_FAIL(
+        o, WHIRL_EINVAL,
+        "step limits must be finite and >= 0 (got h_init %g, h_min "
+        "%g, h_max %g)",
+        h_init, h_min, h_max);
   if (h_max > 0.0 && (h_min > h_max || h_init > h_max))
-    return fail(o, WHIRL_EINVAL,
-                "need h_min <= h_max and h_init <= h_max (got h_init %g, "
-                "h_min %g, h_max %g)",
-                h_init, h_min, h_max);
+    return WHIRL_FAIL(o, WHIRL_EINVAL,
+                      "need h_min <= h_max and h_init <= h_max (got h_init %g, "
+                      "h_min %g, h_max %g)",
+                      h_init, h_min, h_max);
   if (h_init > 0.0 && h_init < h_min)
-    return fail(o, WHIRL_EINVAL, "h_init %g below h_min %g", h_init, h_min);
+    return WHIRL_FAIL(o, WHIRL_EINVAL, "h_init %g below h_min %g", h_init,
+                      h_min);
   o->h_init = h_init;
   o->h_min = h_min;
   o->h_max = h_max;
@@ -209,20 +200,14 @@ int whirl_ode_set_max_steps(whirl_ode *o, size_t max_steps) {
 
 size_t whirl_ode_max_steps_(const whirl_ode *o) { return o->max_steps; }
 
-int whirl_ode_fail_(whirl_ode *o, int rc, const char *fmt, ...) {
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(o->errmsg, sizeof o->errmsg, fmt, ap);
-  va_end(ap);
-  return rc;
-}
+char *whirl_ode_errbuf_(whirl_ode *o) { return o->errmsg; }
 
 int whirl_ode_set_params(whirl_ode *o, const double *p) {
   if (o == NULL) return WHIRL_EINVAL;
   if (o->npar == 0) return WHIRL_OK;
-  if (p == NULL) return fail(o, WHIRL_EINVAL, "parameter vector is NULL");
+  if (p == NULL) return WHIRL_FAIL(o, WHIRL_EINVAL, "parameter vector is NULL");
   if (!all_finite(p, o->npar))
-    return fail(o, WHIRL_EINVAL, "parameters must be finite");
+    return WHIRL_FAIL(o, WHIRL_EINVAL, "parameters must be finite");
   memcpy(o->p_new, p, o->npar * sizeof *p);
   o->p_pending = 1;
   return WHIRL_OK;
@@ -230,13 +215,13 @@ int whirl_ode_set_params(whirl_ode *o, const double *p) {
 
 int whirl_ode_reset(whirl_ode *o, double t0, const double *x0) {
   if (o == NULL) return WHIRL_EINVAL;
-  if (x0 == NULL) return fail(o, WHIRL_EINVAL, "initial state is NULL");
+  if (x0 == NULL) return WHIRL_FAIL(o, WHIRL_EINVAL, "initial state is NULL");
   if (!isfinite(t0))
-    return fail(o, WHIRL_EINVAL, "initial time %g is not finite", t0);
+    return WHIRL_FAIL(o, WHIRL_EINVAL, "initial time %g is not finite", t0);
   for (size_t i = 0; i < o->n; ++i)
     if (!isfinite(x0[i]))
-      return fail(o, WHIRL_EINVAL, "initial state x[%zu] = %g is not finite",
-                  i, x0[i]);
+      return WHIRL_FAIL(o, WHIRL_EINVAL,
+                        "initial state x[%zu] = %g is not finite", i, x0[i]);
   if (o->p_pending) {
     memcpy(o->p, o->p_new, o->npar * sizeof *o->p);
     o->p_pending = 0;
@@ -299,9 +284,10 @@ static int initial_step(whirl_ode *o, double posneg, double span,
 int whirl_ode_step(whirl_ode *o, double t_end) {
   if (o == NULL) return WHIRL_EINVAL;
   if (!o->started)
-    return fail(o, WHIRL_EINVAL, "no initial state: call whirl_ode_reset");
+    return WHIRL_FAIL(o, WHIRL_EINVAL,
+                      "no initial state: call whirl_ode_reset");
   if (!isfinite(t_end))
-    return fail(o, WHIRL_EINVAL, "t_end %g is not finite", t_end);
+    return WHIRL_FAIL(o, WHIRL_EINVAL, "t_end %g is not finite", t_end);
   if (t_end == o->t) return WHIRL_DONE;
 
   const size_t n = o->n;
@@ -314,13 +300,14 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
   if (!o->have_f) {
     r = eval(o, o->t, x, k[0]);
     if (r < 0)
-      return fail(o, WHIRL_EUSER, "right-hand side returned %d at t = %.17g",
-                  r, o->t);
+      return WHIRL_FAIL(o, WHIRL_EUSER,
+                        "right-hand side returned %d at t = %.17g", r, o->t);
     if (r > 0) {
       char what[64];
       rhs_said(o, what, sizeof what);
-      return fail(o, WHIRL_ESTEP,
-                  "no step possible from t = %.17g: %s there", o->t, what);
+      return WHIRL_FAIL(o, WHIRL_ESTEP,
+                        "no step possible from t = %.17g: %s there", o->t,
+                        what);
     }
     o->have_f = 1;
   }
@@ -328,8 +315,8 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
   if (!(h > 0.0)) {
     r = initial_step(o, posneg, fabs(t_end - o->t), hmax, &h);
     if (r < 0)
-      return fail(o, WHIRL_EUSER, "right-hand side returned %d at t = %.17g",
-                  r, o->t);
+      return WHIRL_FAIL(o, WHIRL_EUSER,
+                        "right-hand side returned %d at t = %.17g", r, o->t);
   }
   h = fmin(h, hmax);
 
@@ -421,19 +408,20 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
       ++o->st.rejected;
       o->reject_last = 1;
       if (hnew < hmin)
-        return fail(o, WHIRL_ESTEP,
-                    "step size %.3g below minimum %.3g at t = %.17g: error "
-                    "test failed (error %.3g)",
-                    hnew, hmin, t, err);
+        return WHIRL_FAIL(
+            o, WHIRL_ESTEP,
+            "step size %.3g below minimum %.3g at t = %.17g: error "
+            "test failed (error %.3g)",
+            hnew, hmin, t, err);
       h = hnew;
       continue;
     }
 
   rhs_failed:
     if (r < 0)
-      return fail(o, WHIRL_EUSER,
-                  "right-hand side returned %d in a step from t = %.17g", r,
-                  t);
+      return WHIRL_FAIL(o, WHIRL_EUSER,
+                        "right-hand side returned %d in a step from t = %.17g",
+                        r, t);
   quarter:
     /* recoverable failure: reject, retry with h/4 */
     ++o->st.rejected;
@@ -442,9 +430,9 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
     if (h < hmin) {
       char what[64];
       if (why == NULL) rhs_said(o, what, sizeof what);
-      return fail(o, WHIRL_ESTEP,
-                  "step size %.3g below minimum %.3g at t = %.17g: %s", h,
-                  hmin, t, why != NULL ? why : what);
+      return WHIRL_FAIL(o, WHIRL_ESTEP,
+                        "step size %.3g below minimum %.3g at t = %.17g: %s", h,
+                        hmin, t, why != NULL ? why : what);
     }
   }
 }
@@ -452,15 +440,17 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
 int whirl_ode_evolve(whirl_ode *o, double t_end) {
   if (o == NULL) return WHIRL_EINVAL;
   if (!o->started)
-    return fail(o, WHIRL_EINVAL, "no initial state: call whirl_ode_reset");
+    return WHIRL_FAIL(o, WHIRL_EINVAL,
+                      "no initial state: call whirl_ode_reset");
   if (!isfinite(t_end))
-    return fail(o, WHIRL_EINVAL, "t_end %g is not finite", t_end);
+    return WHIRL_FAIL(o, WHIRL_EINVAL, "t_end %g is not finite", t_end);
   size_t count = 0;
   while (o->t != t_end) {
     if (o->max_steps > 0 && count >= o->max_steps)
-      return fail(o, WHIRL_EMAXITER,
-                  "%zu steps taken, t = %.17g has not reached t_end = %.17g",
-                  count, o->t, t_end);
+      return WHIRL_FAIL(
+          o, WHIRL_EMAXITER,
+          "%zu steps taken, t = %.17g has not reached t_end = %.17g", count,
+          o->t, t_end);
     const int rc = whirl_ode_step(o, t_end);
     if (rc != WHIRL_OK) return rc;
     ++count;

@@ -150,24 +150,23 @@ int whirl_floquet_multipliers(const whirl_problem *prob, const double *p,
                               double *re, double *im, size_t *m, double *M,
                               double *trivial, char *errbuf, size_t errlen) {
   if (errbuf && errlen) errbuf[0] = '\0';
-  if (!prob || !x0 || !re || !im || !m) {
-    if (errbuf) snprintf(errbuf, errlen, "whirl_floquet_multipliers: NULL argument");
-    return WHIRL_EINVAL;
-  }
+  if (!prob || !x0 || !re || !im || !m)
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "whirl_floquet_multipliers: NULL argument");
   const size_t n = prob->n;
   const size_t want = drop_trivial ? n - 1 : n;
-  if (*m < want || !(T > 0) || !isfinite(T)) {
-    if (errbuf)
-      snprintf(errbuf, errlen,
-               "whirl_floquet_multipliers: capacity %zu < %zu or period %g not "
-               "positive",
-               *m, want, T);
-    return WHIRL_EINVAL;
-  }
+  if (*m < want || !(T > 0) || !isfinite(T))
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "whirl_floquet_multipliers: capacity %zu < %zu or "
+                        "period %g not positive",
+                        *m, want, T);
   if (rtol <= 0) rtol = 1e-11;
   if (atol <= 0) atol = 1e-13;
   double *buf = malloc((n * n + 3 * n) * sizeof *buf);
-  if (!buf) return WHIRL_ENOMEM;
+  if (!buf)
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_ENOMEM,
+                        "whirl_floquet_multipliers: out of memory (n = %zu)",
+                        n);
   double *Mm = buf, *xT = buf + n * n, *er = xT + n, *ei = er + n;
   int rc = whirl_ode_monodromy(prob, p, t0, x0, T, rtol, atol, xT, Mm, NULL,
                                errbuf, errlen);
@@ -177,7 +176,8 @@ int whirl_floquet_multipliers(const whirl_problem *prob, const double *p,
   if (rc == WHIRL_OK) {
     if (M) memcpy(M, Mm, n * n * sizeof *M);
   } else if (errbuf && !errbuf[0]) {
-    snprintf(errbuf, errlen, "Floquet multipliers: %s", whirl_strerror(rc));
+    WHIRL_ERRMSG(errbuf, errlen, rc, "Floquet multipliers: %s",
+                 whirl_strerror(rc));
   }
   free(buf);
   return rc;

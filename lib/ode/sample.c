@@ -30,11 +30,10 @@ int whirl_ode_sample(whirl_ode *ode, double dt, size_t nsamples,
   size_t since = 0;
   while (k <= nsamples) {
     if (budget > 0 && since >= budget) {
-      status = whirl_ode_fail_(ode, WHIRL_EMAXITER,
-                               "%zu steps between two samples (t = %.10g, "
-                               "next sample at %.10g)",
-                               since, whirl_ode_t(ode),
-                               t_s + (double)k * dt);
+      status = ODE_FAIL(ode, WHIRL_EMAXITER,
+                        "%zu steps between two samples (t = %.10g, "
+                        "next sample at %.10g)",
+                        since, whirl_ode_t(ode), t_s + (double)k * dt);
       break;
     }
     status = whirl_ode_step(ode, t_end);

@@ -7,7 +7,6 @@
  * differences (whirl_fd_jac_x).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -53,18 +52,6 @@ static int var_rhs(double t, const double *y, const double *p, double *f,
   return 0;
 }
 
-static int msg(char *errbuf, size_t errlen, int rc, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-static int msg(char *errbuf, size_t errlen, int rc, const char *fmt, ...) {
-  if (errbuf != NULL && errlen > 0) {
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(errbuf, errlen, fmt, ap);
-    va_end(ap);
-  }
-  return rc;
-}
-
 int whirl_ode_monodromy(const whirl_problem *prob, const double *p, double t0,
                         const double *x0, double T, double rtol, double atol,
                         double *xT, double *M, whirl_ode_stats *stats,
@@ -72,21 +59,23 @@ int whirl_ode_monodromy(const whirl_problem *prob, const double *p, double t0,
   if (errbuf != NULL && errlen > 0) errbuf[0] = '\0';
   if (stats != NULL) memset(stats, 0, sizeof *stats);
   if (prob == NULL || prob->rhs == NULL || prob->n == 0)
-    return msg(errbuf, errlen, WHIRL_EINVAL,
-               "whirl_ode_monodromy: problem is NULL, has no rhs or n = 0");
+    return WHIRL_ERRMSG(
+        errbuf, errlen, WHIRL_EINVAL,
+        "whirl_ode_monodromy: problem is NULL, has no rhs or n = 0");
   if (x0 == NULL || M == NULL || (prob->npar > 0 && p == NULL))
-    return msg(errbuf, errlen, WHIRL_EINVAL,
-               "whirl_ode_monodromy: x0, M or p is NULL");
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "whirl_ode_monodromy: x0, M or p is NULL");
   if (!isfinite(t0) || !isfinite(T))
-    return msg(errbuf, errlen, WHIRL_EINVAL,
-               "whirl_ode_monodromy: t0 = %g and T = %g must be finite", t0,
-               T);
+    return WHIRL_ERRMSG(
+        errbuf, errlen, WHIRL_EINVAL,
+        "whirl_ode_monodromy: t0 = %g and T = %g must be finite", t0, T);
   const size_t n = prob->n;
   if (n > 4096)
-    return msg(errbuf, errlen, WHIRL_EINVAL,
-               "whirl_ode_monodromy: n = %zu too large for dense variational "
-               "equations",
-               n);
+    return WHIRL_ERRMSG(
+        errbuf, errlen, WHIRL_EINVAL,
+        "whirl_ode_monodromy: n = %zu too large for dense variational "
+        "equations",
+        n);
   const size_t N = n + n * n;
 
   var_ctx ctx = {.prob = prob, .J = NULL, .work = NULL};
@@ -100,8 +89,8 @@ int whirl_ode_monodromy(const whirl_problem *prob, const double *p, double t0,
   whirl_ode *ode = buf != NULL ? whirl_ode_alloc(&var, p) : NULL;
   int rc;
   if (ode == NULL) {
-    rc = msg(errbuf, errlen, WHIRL_ENOMEM,
-             "whirl_ode_monodromy: out of memory (n = %zu)", n);
+    rc = WHIRL_ERRMSG(errbuf, errlen, WHIRL_ENOMEM,
+                      "whirl_ode_monodromy: out of memory (n = %zu)", n);
     goto done;
   }
   ctx.J = buf;
@@ -114,8 +103,9 @@ int whirl_ode_monodromy(const whirl_problem *prob, const double *p, double t0,
   if ((rc = whirl_ode_set_tolerances(ode, rtol, atol)) != WHIRL_OK ||
       (rc = whirl_ode_reset(ode, t0, y0)) != WHIRL_OK ||
       (rc = whirl_ode_evolve(ode, t0 + T)) != WHIRL_OK) {
-    msg(errbuf, errlen, rc, "whirl_ode_monodromy (%s): %s",
-        prob->name != NULL ? prob->name : "model", whirl_ode_errmsg(ode));
+    WHIRL_ERRMSG(errbuf, errlen, rc, "whirl_ode_monodromy (%s): %s",
+                 prob->name != NULL ? prob->name : "model",
+                 whirl_ode_errmsg(ode));
   } else {
     const double *y = whirl_ode_x(ode);
     if (xT != NULL) memcpy(xT, y, n * sizeof *xT);

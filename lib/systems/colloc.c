@@ -25,9 +25,6 @@
 #include "colloc_impl.h"
 #include <whirl/linsol.h>
 
-#define WHIRL_TWO_PI 6.28318530717958647692
-
-
 void whirl_colloc_options_default(whirl_colloc_options *o) {
   memset(o, 0, sizeof *o);
   o->ntst = 20;
@@ -46,7 +43,7 @@ void whirl_colloc_options_default(whirl_colloc_options *o) {
  * guesses cos(π(k + 3/4)/(m + 1/2)); converged to rounding (~1e-16). */
 static void gauss_legendre(size_t m, double *s, double *w) {
   for (size_t k = 0; k < m; ++k) {
-    double z = cos(COLLOC_PI * ((double)k + 0.75) / ((double)m + 0.5));
+    double z = cos(WHIRL_PI * ((double)k + 0.75) / ((double)m + 0.5));
     double dp = 1.0;
     for (int it = 0; it < 100; ++it) {
       double p0 = 1.0, p1 = z;
@@ -162,7 +159,7 @@ static void eval_poly(size_t n, size_t ntst, size_t m, const double *tau,
 double colloc_period_of(const whirl_colloc *c, const double *X,
                         const double *p) {
   if (c->aut) return X[c->nx - 1];
-  return 2.0 * COLLOC_PI * (double)c->nu / p[c->fpar];
+  return 2.0 * WHIRL_PI * (double)c->nu / p[c->fpar];
 }
 
 static double period_of(const whirl_colloc *c, const double *X,
@@ -417,10 +414,9 @@ static int colloc_spectrum(const double *X, const double *p, const double *J,
                                         X + c->n * (c->nnodes - 1), M, c->aut,
                                         re, im, mcap, NULL);
     if (M != Mbuf) free(M);
-    if (rc != WHIRL_OK && c->errmsg[0] == '\0')
-      snprintf(c->errmsg, sizeof c->errmsg,
-               "Floquet multipliers (condensed collocation): %s",
-               whirl_strerror(rc));
+    if (rc != WHIRL_OK)
+      WHIRL_FAIL(c, rc, "Floquet multipliers (condensed collocation): %s",
+                 whirl_strerror(rc));
   } else {
     rc = whirl_floquet_multipliers(&c->shim, p, c->t0, X, T, c->aut,
                                    c->floquet_rtol, 0.0, re, im, mcap, NULL,
@@ -453,10 +449,11 @@ static int colloc_remap(double *const *v, size_t nv, const double *p,
 
 /* ------------------------------------------------------------ alloc */
 
-static void *fail_null(char *errbuf, size_t errlen, const char *msg) {
-  if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_colloc_alloc: %s", msg);
-  return NULL;
-}
+/* The message of a failed whirl_colloc_alloc in errbuf; evaluates to NULL. */
+#define ALLOC_FAIL(...)                              \
+  (WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,        \
+                "whirl_colloc_alloc: " __VA_ARGS__), \
+   NULL)
 
 whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
                                  const whirl_colloc_options *o, char *errbuf,
@@ -465,8 +462,8 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   why[0] = '\0';
   if (errbuf && errlen) errbuf[0] = '\0';
   if (!prob || !prob->rhs || prob->n == 0)
-    return fail_null(errbuf, errlen, "model is NULL, has no rhs or n = 0");
-  if (!o) return fail_null(errbuf, errlen, "no options");
+    return ALLOC_FAIL("model is NULL, has no rhs or n = 0");
+  if (!o) return ALLOC_FAIL("no options");
   if (o->ntst < 2 || o->ntst > WHIRL_COLLOC_MAX_NTST)
     snprintf(why, sizeof why, "need 2 <= NTST <= %d (got %zu)",
              WHIRL_COLLOC_MAX_NTST, o->ntst);
@@ -494,7 +491,7 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
            o->floquet != WHIRL_COLLOC_FLOQUET_VARIATIONAL)
     snprintf(why, sizeof why, "floquet must be CONDENSED or VARIATIONAL (got %d)",
              o->floquet);
-  if (why[0]) return fail_null(errbuf, errlen, why);
+  if (why[0]) return ALLOC_FAIL("%s", why);
 
   const size_t n = prob->n, m = o->ncol, N = o->ntst;
   const int aut = o->forcing_param < 0;
@@ -504,8 +501,9 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   if ((double)n * (double)nnodes + 1.0 >= (double)INT_MAX ||
       (double)n * (double)nnodes * (2.0 * (double)n * (double)m + 3.0) >=
           (double)INT_MAX)
-    return fail_null(errbuf, errlen, "problem too large for int indices "
-                     "(reduce NTST, NCOL or the model's dimension)");
+    return ALLOC_FAIL(
+        "problem too large for int indices "
+        "(reduce NTST, NCOL or the model's dimension)");
   const size_t nx = n * nnodes + (size_t)aut;
   /* nonzeros: n*ncol collocation rows per interval holding the node (two at
    * inner mesh points), periodicity at the end nodes, the phase row, and the
@@ -518,10 +516,10 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
     nnz += n * rows;
   }
   if (nx >= (size_t)INT_MAX || nnz >= (size_t)INT_MAX || nx > SIZE_MAX / nx)
-    return fail_null(errbuf, errlen, "problem too large for int indices");
+    return ALLOC_FAIL("problem too large for int indices");
 
   whirl_colloc *c = calloc(1, sizeof *c);
-  if (!c) return fail_null(errbuf, errlen, "out of memory");
+  if (!c) return ALLOC_FAIL("out of memory");
   c->prob = prob;
   c->n = n;
   c->ntst = N;
@@ -560,7 +558,7 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
       !c->phase || !c->old_X || !c->ref_new || !c->xc || !c->dx || !c->f ||
       !c->f2 || !c->J || !c->Jpar || !c->work || !c->pw || !c->r1 || !c->r2) {
     whirl_colloc_free(c);
-    return fail_null(errbuf, errlen, "out of memory");
+    return ALLOC_FAIL("out of memory");
   }
   for (size_t i = 0; i <= N; ++i) c->mesh[i] = (double)i / (double)N;
   c->mesh[N] = 1.0;
@@ -676,7 +674,12 @@ double whirl_colloc_period(const whirl_colloc *c, const double *X,
  * model, time t0 + kT/m); T itself only enters X for autonomous models. */
 int whirl_colloc_from_samples(whirl_colloc *c, const double *x, size_t m,
                               double T, double *X) {
-  if (!c || !x || !X || m < 4 || !(T > 0) || !isfinite(T)) return WHIRL_EINVAL;
+  if (!c) return WHIRL_EINVAL;
+  if (!x || !X || m < 4 || !(T > 0) || !isfinite(T))
+    return WHIRL_FAIL(c, WHIRL_EINVAL,
+                      "from_samples: need samples, m >= 4 (got %zu) and a "
+                      "finite period T > 0 (got %g)",
+                      m, T);
   const size_t n = c->n, M = c->ncol, N = c->ntst;
   for (size_t i = 0; i < N; ++i) {
     const double h = c->mesh[i + 1] - c->mesh[i];
@@ -741,7 +744,10 @@ static int new_mesh(whirl_colloc *c, const double *X) {
       for (size_t k = 0; k <= m; ++k) d += c->dm[k] * X[n * (i * m + k) + r];
       e += pow(fabs(d * sc), pwr);
     }
-    if (!isfinite(e)) return WHIRL_EINVAL;
+    if (!isfinite(e))
+      return WHIRL_FAIL(
+          c, WHIRL_EINVAL,
+          "mesh adaptation: the orbit is not finite in interval %zu", i);
     E[i] = e;
     Emax = fmax(Emax, e);
     Q[i + 1] = Q[i] + h * e;
@@ -763,7 +769,8 @@ static int new_mesh(whirl_colloc *c, const double *X) {
     if (!(c->mesh[k] > c->mesh[k - 1])) {
       /* degenerate interval (cannot happen for positive E): give up */
       memcpy(c->mesh, c->old_mesh, (N + 1) * sizeof *c->mesh);
-      return WHIRL_EINVAL;
+      return WHIRL_FAIL(c, WHIRL_EINVAL,
+                        "mesh adaptation: interval %zu degenerate", k);
     }
   c->last_ws = NULL; /* factorisations on the old mesh are not reused */
   return 1;
@@ -791,6 +798,10 @@ static void map_reference(whirl_colloc *c) {
   if (!(c->aut && c->have_ref)) return;
   map_nodes(c, c->ref);
   set_reference(c, c->ref);
+}
+
+const char *whirl_colloc_errmsg(const whirl_colloc *c) {
+  return c ? c->errmsg : "whirl_colloc: NULL object";
 }
 
 size_t whirl_colloc_adaptations(const whirl_colloc *c) {
@@ -873,22 +884,28 @@ static int pd_sample_phi(whirl_ode *ode, size_t n, const double *y0,
 int whirl_colloc_pd_switch(const whirl_colloc *c, const double *X,
                            const double *p, whirl_colloc *c2, double *X2,
                            double *D2) {
-  if (!c || !X || !p || !c2 || !X2 || !D2 || c2 == c) return WHIRL_EINVAL;
+  if (!c2 || c2 == c) return WHIRL_EINVAL;
+  if (!c || !X || !p || !X2 || !D2)
+    return WHIRL_FAIL(c2, WHIRL_EINVAL, "PD switch: NULL argument");
   const whirl_problem *pr = c->prob;
   const size_t n = c->n;
   if (c2->n != n || c2->prob->npar != pr->npar || c2->aut != c->aut ||
       c2->fpar != c->fpar || c2->t0 != c->t0 ||
       (!c->aut && c2->nu != 2 * c->nu))
-    return WHIRL_EINVAL;
+    return WHIRL_FAIL(c2, WHIRL_EINVAL,
+                      "PD switch: the doubled orbit's object does not match "
+                      "(model, forcing or nu = 2 nu)");
   const double T = period_of(c, X, p);
-  if (!(T > 0) || !isfinite(T)) return WHIRL_EINVAL;
+  if (!(T > 0) || !isfinite(T))
+    return WHIRL_FAIL(c2, WHIRL_EINVAL, "PD switch: period %g", T);
   for (size_t q = 0; q < c->nx; ++q)
-    if (!isfinite(X[q])) return WHIRL_EINVAL;
+    if (!isfinite(X[q]))
+      return WHIRL_FAIL(c2, WHIRL_EINVAL, "PD switch: X[%zu] not finite", q);
 
   const size_t N = c->ntst, m = c->ncol, N2 = c2->ntst, m2 = c2->ncol;
   const size_t nn2 = c2->nnodes, nx2 = c2->nx;
   double *buf = malloc((2 * n * n + 9 * n + 2 * nn2) * sizeof *buf);
-  if (!buf) return WHIRL_ENOMEM;
+  if (!buf) return WHIRL_FAIL(c2, WHIRL_ENOMEM, "PD switch: out of memory");
   double *M = buf, *Ja = M + n * n, *v = Ja + n * n, *xT = v + n,
          *y0 = xT + n, *y = y0 + 2 * n, *wk = y + 2 * n, *tau2 = wk + 2 * n,
          *sq = tau2 + nn2;
@@ -972,6 +989,7 @@ int whirl_colloc_pd_switch(const whirl_colloc *c, const double *X,
   if (c2->aut) set_reference(c2, X2);
   rc = WHIRL_OK;
 done:
+  if (rc != WHIRL_OK) WHIRL_FAIL(c2, rc, "PD switch: %s", whirl_strerror(rc));
   whirl_ode_free(ode);
   free(buf);
   return rc;
@@ -980,18 +998,25 @@ done:
 /* ------------------------------------------------------------ restart */
 
 int whirl_colloc_set_mesh(whirl_colloc *c, const double *tau) {
-  if (!c || !tau) return WHIRL_EINVAL;
+  if (!c) return WHIRL_EINVAL;
+  if (!tau) return WHIRL_FAIL(c, WHIRL_EINVAL, "set_mesh: no mesh");
   const size_t N = c->ntst;
-  if (tau[0] != 0.0 || tau[N] != 1.0) return WHIRL_EINVAL;
+  if (tau[0] != 0.0 || tau[N] != 1.0)
+    return WHIRL_FAIL(c, WHIRL_EINVAL,
+                      "the mesh must run from 0 to 1 (got %g .. %g)", tau[0],
+                      tau[N]);
   for (size_t k = 1; k <= N; ++k)
-    if (!(tau[k] > tau[k - 1]) || !isfinite(tau[k])) return WHIRL_EINVAL;
+    if (!(tau[k] > tau[k - 1]) || !isfinite(tau[k]))
+      return WHIRL_FAIL(c, WHIRL_EINVAL,
+                        "the mesh is not increasing at point %zu", k);
   memcpy(c->mesh, tau, (N + 1) * sizeof *tau);
   c->last_ws = NULL;
   return WHIRL_OK;
 }
 
 int whirl_colloc_set_reference(whirl_colloc *c, const double *X) {
-  if (!c || !X) return WHIRL_EINVAL;
+  if (!c) return WHIRL_EINVAL;
+  if (!X) return WHIRL_FAIL(c, WHIRL_EINVAL, "set_reference: no orbit");
   if (c->aut) set_reference(c, X);
   return WHIRL_OK;
 }
@@ -1012,8 +1037,12 @@ int whirl_colloc_set_reference(whirl_colloc *c, const double *X) {
 int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
                             const double *p, double *X, double *D,
                             double *omega) {
-  if (!c || !x0 || !p || !X || !D) return WHIRL_EINVAL;
-  if (!c->aut) return WHIRL_EINVAL;
+  if (!c) return WHIRL_EINVAL;
+  if (!x0 || !p || !X || !D)
+    return WHIRL_FAIL(c, WHIRL_EINVAL, "Hopf start: NULL argument");
+  if (!c->aut)
+    return WHIRL_FAIL(c, WHIRL_EINVAL,
+                      "Hopf start: the model is forced, not autonomous");
   const size_t n = c->n, nn = 2 * n;
   const whirl_problem *pr = c->prob;
   double *buf = malloc((n * n + 2 * n + nn * nn + 2 * nn + 2) * sizeof *buf);
@@ -1037,7 +1066,8 @@ int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
   for (size_t k = 0; k < n; ++k)
     if (im[k] > 0 && fabs(re[k]) < best) best = fabs(re[k]), w = im[k];
   if (!(w > 0)) {
-    rc = WHIRL_EINVAL; /* no complex pair: not a Hopf point */
+    rc = WHIRL_FAIL(c, WHIRL_EINVAL,
+                    "Hopf start: f_x has no complex pair (not a Hopf point)");
     goto done;
   }
   memset(A, 0, nn * nn * sizeof *A);
@@ -1060,7 +1090,7 @@ int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
                      ? 1.0
                      : c->mesh[i] + (c->mesh[i + 1] - c->mesh[i]) *
                                         (double)k / (double)c->ncol;
-    double cs = cos(WHIRL_TWO_PI * tau), sn = sin(WHIRL_TWO_PI * tau);
+    double cs = cos(2.0 * WHIRL_PI * tau), sn = sin(2.0 * WHIRL_PI * tau);
     for (size_t r = 0; r < n; ++r) {
       X[n * j + r] = x0[r];
       D[n * j + r] = a[r] * cs - b[r] * sn;
@@ -1074,13 +1104,15 @@ int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
   }
   const size_t nd = n * c->nnodes;
   for (size_t q = 0; q < nd; ++q) D[q] /= nrm;
-  X[c->nx - 1] = WHIRL_TWO_PI / w;
+  X[c->nx - 1] = 2.0 * WHIRL_PI / w;
   D[c->nx - 1] = 0.0;
   D[c->nx] = 0.0;
   for (size_t q = 0; q < nd; ++q) c->ref_new[q] = X[q] + D[q];
   set_reference(c, c->ref_new);
   if (omega) *omega = w;
 done:
+  if (rc != WHIRL_OK && rc != WHIRL_EINVAL)
+    WHIRL_FAIL(c, rc, "Hopf start: %s", whirl_strerror(rc));
   whirl_eig_free(e);
   free(buf);
   return rc;

@@ -86,9 +86,9 @@ typedef struct cond_ws {
   det_acc det_c; /* product of the pivots of the collocation rows */
   size_t npiv_c; /* their number */
   int sign_c;    /* sign of the row and column orders (see factor_colloc) */
-  int jac_ok;    /* the collocation rows are factored (at Xf, pf, kf) */
+  int jac_ok;    /* the collocation rows are factored (at Xf, pf) */
   double *Xf, *pf;
-  size_t kf, npar;
+  size_t npar;
   int *slab;     /* n: M's rows of the n rows left after step 2 */
   double *Jrow;  /* n */
   double *mblk;  /* 2n^2 + 2n: the monodromy matrix */
@@ -477,7 +477,6 @@ static int factor_colloc(cond_ws *w, const double *X, const double *p,
                 perm_sign(w->pcol, nx + 1, w->mark);
     memcpy(w->Xf, X, w->nx * sizeof *w->Xf);
     memcpy(w->pf, p, w->npar * sizeof *w->pf);
-    w->kf = k;
     w->jac_ok = 1;
     c->last_ws = w; /* for the multipliers at the same point */
   }

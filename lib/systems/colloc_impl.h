@@ -11,7 +11,8 @@
 #include <whirl/colloc.h>
 #include <whirl/system.h>
 
-#define COLLOC_PI 3.14159265358979323846
+#include "util/errmsg_impl.h"
+
 #define COLLOC_MAXCOL 7
 
 struct whirl_colloc {
@@ -56,7 +57,7 @@ struct whirl_colloc {
   void *last_ws; /* the workspace factored last (any owner), or NULL */
 
   int rhs_fail; /* last recoverable model failure seen by the shim */
-  char errmsg[256];
+  char errmsg[WHIRL_ERRMSG_SIZE]; /* last message (whirl_colloc_errmsg) */
 };
 
 /* colloc.c: the period of X at p (the unknown T, or 2π nu/ω). */

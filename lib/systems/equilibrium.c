@@ -9,6 +9,8 @@
 #include <whirl/equilibrium.h>
 #include <whirl/linsol.h>
 
+#include "util/errmsg_impl.h"
+
 struct whirl_equilibrium {
   const whirl_problem *prob;
   whirl_system sys;
@@ -17,6 +19,7 @@ struct whirl_equilibrium {
   double *work; /* 2n scratch for finite differences */
   int *Jp, *Ji; /* full compressed-column pattern, so the sparse path of the
                    core (UMFPACK) can be used and checked against the dense */
+  char errmsg[WHIRL_ERRMSG_SIZE]; /* last message (whirl_equilibrium_errmsg) */
 };
 
 static int eq_F(const double *x, const double *p, double *f, void *data) {
@@ -34,11 +37,11 @@ static int eq_Fx(const double *x, const double *p, double *J, void *data) {
  * differences otherwise (in the core). */
 static int eq_Fp(const double *x, const double *p, size_t k, double *fk,
                  void *data) {
-  const whirl_equilibrium *eq = data;
+  whirl_equilibrium *eq = data;
   const size_t n = eq->prob->n, np = eq->prob->npar;
   double stackbuf[256];
   double *Jp = n * np <= 256 ? stackbuf : malloc(n * np * sizeof *Jp);
-  if (!Jp) return WHIRL_ENOMEM;
+  if (!Jp) return WHIRL_FAIL(eq, WHIRL_ENOMEM, "F_p: out of memory");
   int rc = eq->prob->jac_p(0.0, x, p, Jp, eq->prob->data);
   if (rc == 0) memcpy(fk, Jp + n * k, n * sizeof *fk);
   if (Jp != stackbuf) free(Jp);
@@ -56,14 +59,20 @@ static int eq_spectrum(const double *x, const double *p, const double *J,
                        double *re, double *im, size_t *m, void *data) {
   whirl_equilibrium *eq = data;
   const size_t n = eq->prob->n;
-  if (*m < n) return WHIRL_EINVAL;
+  if (*m < n)
+    return WHIRL_FAIL(eq, WHIRL_EINVAL,
+                      "spectrum: room for %zu of %zu "
+                      "eigenvalues",
+                      *m, n);
   if (!J) {
     int rc = eq_Fx(x, p, eq->J, data);
     if (rc != 0) return rc;
     J = eq->J;
   }
   int rc = whirl_eig_compute(eq->eig, J, re, im);
-  if (rc != WHIRL_OK) return rc;
+  if (rc != WHIRL_OK)
+    return WHIRL_FAIL(eq, rc, "eigenvalues of f_x: %s",
+                      whirl_eig_errmsg(eq->eig));
   *m = n;
   return 0;
 }
@@ -115,4 +124,8 @@ void whirl_equilibrium_free(whirl_equilibrium *eq) {
 
 const whirl_system *whirl_equilibrium_system(const whirl_equilibrium *eq) {
   return &eq->sys;
+}
+
+const char *whirl_equilibrium_errmsg(const whirl_equilibrium *eq) {
+  return eq ? eq->errmsg : "whirl_equilibrium: NULL object";
 }

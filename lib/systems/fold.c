@@ -5,7 +5,6 @@
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <complex.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,6 +12,8 @@
 #include <whirl/cont.h>
 #include <whirl/fold.h>
 #include <whirl/linsol.h>
+
+#include "util/errmsg_impl.h"
 
 struct whirl_fold {
   whirl_system base; /* copy; data borrowed */
@@ -33,18 +34,8 @@ struct whirl_fold {
   double *work;      /* 2n: scratch of whirl_system_jacobian / _param */
   double *Zs, *tmp;  /* N: scratch for finite differences of the cond row */
   double *er, *ei;   /* n: eigenvalues */
-  char errmsg[256];
+  char errmsg[WHIRL_ERRMSG_SIZE];
 };
-
-static int fail(whirl_fold *f, int code, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static int fail(whirl_fold *f, int code, const char *fmt, ...) {
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(f->errmsg, sizeof f->errmsg, fmt, ap);
-  va_end(ap);
-  return code;
-}
 
 void whirl_fold_options_default(whirl_fold_options *o, size_t par) {
   memset(o, 0, sizeof *o);
@@ -105,16 +96,16 @@ static int null_solve(whirl_fold *f, const double *x, const double *p) {
   f->M[n + m * n] = 0.0;
   rc = whirl_linsol_factor(f->ls, f->M);
   if (rc != WHIRL_OK)
-    return fail(f, rc == WHIRL_ESINGULAR ? 1 : rc,
-                "fold system: bordered matrix [F_x b; c^T 0] is singular "
-                "(the fold is not simple here)");
+    return WHIRL_FAIL(f, rc == WHIRL_ESINGULAR ? 1 : rc,
+                      "fold system: bordered matrix [F_x b; c^T 0] is singular "
+                      "(the fold is not simple here)");
   memset(f->v, 0, m * sizeof *f->v);
   f->v[n] = 1.0;
   memset(f->w, 0, m * sizeof *f->w);
   f->w[n] = 1.0;
   if ((rc = whirl_linsol_solve(f->ls, f->v, 1, 0)) != WHIRL_OK ||
       (rc = whirl_linsol_solve(f->ls, f->w, 1, 1)) != WHIRL_OK)
-    return fail(f, rc, "fold system: bordered solve failed");
+    return WHIRL_FAIL(f, rc, "fold system: bordered solve failed");
   return 0;
 }
 
@@ -336,7 +327,8 @@ static int classify_mg(whirl_fold *f, const double *x, const double *p,
   for (size_t i = 0; i < n; ++i) f->phi[i] = -f->fq[i];
   f->phi[n] = 0.0;
   int rc = whirl_linsol_solve(f->ls, f->phi, 1, 0);
-  if (rc != WHIRL_OK) return fail(f, rc, "fold system: solve for F_q failed");
+  if (rc != WHIRL_OK)
+    return WHIRL_FAIL(f, rc, "fold system: solve for F_q failed");
   f->phi[n] = 1.0;
   double q11, q12, q22;
   if ((rc = hess_wd(f, x, p, u1, u1, &q11)) != 0) return rc;
@@ -400,7 +392,7 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
     why = "a codimension-two condition needs exactly two freed parameters "
           "(and two freed parameters need a condition)";
   if (why) {
-    if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_fold_alloc: %s", why);
+    WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "whirl_fold_alloc: %s", why);
     return NULL;
   }
   whirl_fold *f = calloc(1, sizeof *f);
@@ -456,7 +448,7 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   return f;
 nomem:
   whirl_fold_free(f);
-  if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_fold_alloc: out of memory");
+  WHIRL_ERRMSG(errbuf, errlen, WHIRL_ENOMEM, "whirl_fold_alloc: out of memory");
   return NULL;
 }
 
@@ -478,16 +470,20 @@ const char *whirl_fold_errmsg(const whirl_fold *f) { return f->errmsg; }
 int whirl_fold_init(whirl_fold *f, const double *x, const double *p, double *Z) {
   const size_t n = f->n;
   for (size_t i = 0; i < n; ++i)
-    if (!isfinite(x[i])) return fail(f, WHIRL_EINVAL, "fold start: x[%zu] is not finite", i);
+    if (!isfinite(x[i]))
+      return WHIRL_FAIL(f, WHIRL_EINVAL, "fold start: x[%zu] is not finite", i);
   int rc = jac(f, x, p, f->A);
-  if (rc != 0) return fail(f, rc < 0 ? rc : WHIRL_EDOMAIN, "fold start: the Jacobian failed (%d)", rc);
+  if (rc != 0)
+    return WHIRL_FAIL(f, rc < 0 ? rc : WHIRL_EDOMAIN,
+                      "fold start: the Jacobian failed (%d)", rc);
   double sv;
   rc = whirl_null_vectors(n, n, f->A, 1, f->c, &sv);
-  if (rc != WHIRL_OK) return fail(f, rc, "fold start: SVD of F_x failed");
+  if (rc != WHIRL_OK) return WHIRL_FAIL(f, rc, "fold start: SVD of F_x failed");
   for (size_t i = 0; i < n; ++i)
     for (size_t j = 0; j < n; ++j) f->Ap[j + n * i] = f->A[i + n * j];
   rc = whirl_null_vectors(n, n, f->Ap, 1, f->b, &sv);
-  if (rc != WHIRL_OK) return fail(f, rc, "fold start: SVD of F_x^T failed");
+  if (rc != WHIRL_OK)
+    return WHIRL_FAIL(f, rc, "fold start: SVD of F_x^T failed");
   memcpy(Z, x, n * sizeof *Z);
   for (size_t k = 0; k < f->o.nfree; ++k) Z[n + k] = p[f->o.free[k]];
   f->errmsg[0] = 0;

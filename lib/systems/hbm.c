@@ -19,6 +19,8 @@
 #include <whirl/floquet.h>
 #include <whirl/hbm.h>
 
+#include "util/errmsg_impl.h"
+
 struct whirl_hbm {
   const whirl_problem *prob;
   whirl_hbm_options o;
@@ -37,6 +39,7 @@ struct whirl_hbm {
   double *work;         /* 2n finite differences */
   int *Jp, *Ji;         /* compressed-column pattern */
   whirl_system sys;
+  char errmsg[WHIRL_ERRMSG_SIZE]; /* last message (whirl_hbm_errmsg) */
 };
 
 void whirl_hbm_options_default(whirl_hbm_options *o) {
@@ -59,7 +62,7 @@ double whirl_hbm_frequency(const whirl_hbm *h, const double *X,
 }
 
 double whirl_hbm_period(const whirl_hbm *h, const double *X, const double *p) {
-  return 2.0 * M_PI / freq(h, X, p);
+  return 2.0 * WHIRL_PI / freq(h, X, p);
 }
 
 /* Unscaled coefficients and the state samples x_j = Σ_h B_h(θ_j) coef_h. */
@@ -77,7 +80,7 @@ static void synthesize(whirl_hbm *h, const double *X) {
 }
 
 static double sample_time(const whirl_hbm *h, size_t j, double w) {
-  return h->o.t0 + 2.0 * M_PI * (double)j / ((double)h->M * w);
+  return h->o.t0 + 2.0 * WHIRL_PI * (double)j / ((double)h->M * w);
 }
 
 static int hbm_F(const double *X, const double *p, double *F, void *data) {
@@ -207,7 +210,9 @@ int whirl_hbm_multipliers(const whirl_hbm *h, const double *X, const double *p,
                           char *errbuf, size_t errlen) {
   double x0[64];
   double *x = h->n <= 64 ? x0 : malloc(h->n * sizeof *x);
-  if (!x) return WHIRL_ENOMEM;
+  if (!x)
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_ENOMEM,
+                        "hbm multipliers: out of memory");
   whirl_hbm_eval(h, X, 0.0, x);
   int rc = whirl_floquet_multipliers(h->prob, p, h->o.t0, x,
                                      whirl_hbm_period(h, X, p), h->autonomous,
@@ -220,8 +225,9 @@ int whirl_hbm_multipliers(const whirl_hbm *h, const double *X, const double *p,
 static int hbm_spectrum(const double *X, const double *p, const double *J,
                         double *re, double *im, size_t *m, void *data) {
   (void)J;
-  const whirl_hbm *h = data;
-  int rc = whirl_hbm_multipliers(h, X, p, re, im, m, NULL, NULL, 0);
+  whirl_hbm *h = data;
+  int rc = whirl_hbm_multipliers(h, X, p, re, im, m, NULL, h->errmsg,
+                                 sizeof h->errmsg);
   /* a trajectory that leaves the model's domain during the variational
    * integration is recoverable (the step is retried), as the model says */
   return rc;
@@ -268,10 +274,10 @@ whirl_hbm *whirl_hbm_alloc(const whirl_problem *prob,
   if (opt) o = *opt;
   else whirl_hbm_options_default(&o);
   if (errbuf && errlen) errbuf[0] = '\0';
-#define HBM_BAD(...)                                                           \
-  do {                                                                         \
-    if (errbuf) snprintf(errbuf, errlen, __VA_ARGS__);                         \
-    return NULL;                                                               \
+#define HBM_BAD(...)                                         \
+  do {                                                       \
+    WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, __VA_ARGS__); \
+    return NULL;                                             \
   } while (0)
   if (!prob || !prob->rhs || prob->n == 0) HBM_BAD("hbm: model is NULL or has no rhs");
   if (o.harmonics < 1 || o.harmonics > 1000)
@@ -333,12 +339,12 @@ whirl_hbm *whirl_hbm_alloc(const whirl_problem *prob,
   for (size_t k = 0; k <= 2 * N; ++k)
     for (size_t j = 0; j < M; ++j) {
       /* exact reduction of kj mod M keeps the angles accurate */
-      const double th = 2.0 * M_PI * (double)((k * j) % M) / (double)M;
+      const double th = 2.0 * WHIRL_PI * (double)((k * j) % M) / (double)M;
       h->ck[k * M + j] = cos(th);
       h->sk[k * M + j] = sin(th);
     }
   for (size_t j = 0; j < M; ++j) {
-    const double th = 2.0 * M_PI * (double)j / (double)M;
+    const double th = 2.0 * WHIRL_PI * (double)j / (double)M;
     h->B[j] = 1.0;
     h->P[j] = 1.0 / (double)M;
     for (size_t k = 1; k <= N; ++k) {
@@ -395,16 +401,29 @@ void whirl_hbm_free(whirl_hbm *h) {
 }
 
 const whirl_system *whirl_hbm_system(const whirl_hbm *h) { return &h->sys; }
+const char *whirl_hbm_errmsg(const whirl_hbm *h) {
+  return h ? h->errmsg : "whirl_hbm: NULL object";
+}
 size_t whirl_hbm_size(const whirl_hbm *h) { return h->size; }
 
-int whirl_hbm_from_samples(const whirl_hbm *h, const double *x, size_t m,
-                           double T, double *X) {
+int whirl_hbm_from_samples(whirl_hbm *h, const double *x, size_t m, double T,
+                           double *X) {
   const size_t n = h->n, L = h->L, N = h->N;
-  if (!x || !X || m < L || (h->autonomous && !(T > 0)))
-    return WHIRL_EINVAL;
+  if (!x || !X)
+    return WHIRL_FAIL(h, WHIRL_EINVAL, "hbm from_samples: NULL samples or X");
+  if (m < L)
+    return WHIRL_FAIL(h, WHIRL_EINVAL,
+                      "hbm from_samples: need m >= 2N + 1 "
+                      "= %zu samples (got %zu)",
+                      L, m);
+  if (h->autonomous && !(T > 0))
+    return WHIRL_FAIL(h, WHIRL_EINVAL,
+                      "hbm from_samples: an autonomous "
+                      "orbit needs a period T > 0 (got %g)",
+                      T);
   memset(X, 0, h->size * sizeof *X);
   for (size_t k = 0; k < m; ++k) {
-    const double th = 2.0 * M_PI * (double)k / (double)m;
+    const double th = 2.0 * WHIRL_PI * (double)k / (double)m;
     for (size_t i = 0; i < n; ++i) {
       const double v = x[k * n + i] / h->scale[i];
       X[i * L] += v / (double)m;
@@ -414,7 +433,7 @@ int whirl_hbm_from_samples(const whirl_hbm *h, const double *x, size_t m,
       }
     }
   }
-  if (h->autonomous) X[h->ncoef] = 2.0 * M_PI / T;
+  if (h->autonomous) X[h->ncoef] = 2.0 * WHIRL_PI / T;
   return WHIRL_OK;
 }
 
@@ -444,16 +463,17 @@ void whirl_hbm_eval(const whirl_hbm *h, const double *X, double theta,
   }
 }
 
-int whirl_hbm_time_residual(const whirl_hbm *h, const double *X,
-                            const double *p, size_t K, double *res) {
+int whirl_hbm_time_residual(whirl_hbm *h, const double *X, const double *p,
+                            size_t K, double *res) {
   const size_t n = h->n, L = h->L, m = (K ? K : 1) * h->M;
   const double w = freq(h, X, p);
   double *buf = malloc(3 * n * sizeof *buf);
-  if (!buf) return WHIRL_ENOMEM;
+  if (!buf)
+    return WHIRL_FAIL(h, WHIRL_ENOMEM, "hbm time residual: out of memory");
   double *x = buf, *dx = buf + n, *f = buf + 2 * n, worst = 0.0;
   int rc = 0;
   for (size_t j = 0; j < m && rc == 0; ++j) {
-    const double th = 2.0 * M_PI * (double)j / (double)m;
+    const double th = 2.0 * WHIRL_PI * (double)j / (double)m;
     whirl_hbm_eval(h, X, th, x);
     for (size_t i = 0; i < n; ++i) {
       const double *c = X + i * L;
@@ -467,6 +487,9 @@ int whirl_hbm_time_residual(const whirl_hbm *h, const double *X,
     for (size_t i = 0; i < n && rc == 0; ++i) worst = fmax(worst, fabs(dx[i] - f[i]));
   }
   free(buf);
-  if (rc == 0) *res = worst;
+  if (rc != 0)
+    return WHIRL_FAIL(h, rc, "hbm time residual: the model's rhs returned %d",
+                      rc);
+  *res = worst;
   return rc;
 }

@@ -3,7 +3,6 @@
  * ch. 4.4) with its Bogdanov-Takens and zero-Hopf tests.  See whirl/hopf.h.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,28 +11,21 @@
 #include <whirl/hopf.h>
 #include <whirl/linsol.h>
 
+#include "util/errmsg_impl.h"
+
 struct whirl_hopf {
   whirl_system base, sys;
   size_t par, n, N, m;  /* N = n + 2 unknowns, m = n + 2 bordered order */
   double *B, *C;        /* borders n x 2, column-major */
+  double *Bn, *Cn;      /* n x 2 each: the new borders of an accepted point */
   int gi[2];            /* entries of G (i + 2j) used as equations */
   whirl_linsol *ls;
   whirl_eig *eig;
   double *A, *A2, *M;   /* F_x, F_x^2 + kappa I, bordered */
   double *R;            /* m x 2 right-hand sides / solutions */
   double *pf, *work, *er, *ei;
-  char errmsg[256];
+  char errmsg[WHIRL_ERRMSG_SIZE];
 };
-
-static int fail(whirl_hopf *h, int code, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static int fail(whirl_hopf *h, int code, const char *fmt, ...) {
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(h->errmsg, sizeof h->errmsg, fmt, ap);
-  va_end(ap);
-  return code;
-}
 
 void whirl_hopf_params(const whirl_hopf *h, const double *Z, const double *p,
                        double *pfull) {
@@ -63,13 +55,15 @@ static int solve_G(whirl_hopf *h, const double *x, const double *p,
   for (size_t k = 0; k < 2; ++k) memcpy(h->M + m * (n + k), h->B + n * k, n * sizeof *h->M);
   rc = whirl_linsol_factor(h->ls, h->M);
   if (rc != WHIRL_OK)
-    return fail(h, rc == WHIRL_ESINGULAR ? 1 : rc,
-                "Hopf system: bordered matrix of F_x^2 + kappa I is singular");
+    return WHIRL_FAIL(
+        h, rc == WHIRL_ESINGULAR ? 1 : rc,
+        "Hopf system: bordered matrix of F_x^2 + kappa I is singular");
   memset(h->R, 0, 2 * m * sizeof *h->R);
   h->R[n] = 1.0;
   h->R[m + n + 1] = 1.0;
   rc = whirl_linsol_solve(h->ls, h->R, 2, trans);
-  if (rc != WHIRL_OK) return fail(h, rc, "Hopf system: bordered solve failed");
+  if (rc != WHIRL_OK)
+    return WHIRL_FAIL(h, rc, "Hopf system: bordered solve failed");
   return 0;
 }
 
@@ -153,7 +147,7 @@ static int hopf_accept(const double *Z, const double *p, void *data) {
   whirl_hopf *h = data;
   const size_t n = h->n;
   whirl_hopf_params(h, Z, p, h->pf);
-  double Cn[2 * n], Bn[2 * n];
+  double *Cn = h->Cn, *Bn = h->Bn;
   if (solve_G(h, Z, h->pf, Z[n + 1], 0) != 0) return 0;
   orthonormal2(h->R, n, h->m, Cn);
   if (solve_G(h, Z, h->pf, Z[n + 1], 1) != 0) return 0;
@@ -174,7 +168,7 @@ whirl_hopf *whirl_hopf_alloc(const whirl_system *base, size_t par, char *errbuf,
   if (!base || !base->F || base->n < 2) why = "base system needs F and n >= 2";
   else if (par >= base->npar) why = "Hopf parameter is not a parameter of the base system";
   if (why) {
-    if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_hopf_alloc: %s", why);
+    WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "whirl_hopf_alloc: %s", why);
     return NULL;
   }
   const size_t n = base->n, m = n + 2;
@@ -189,6 +183,8 @@ whirl_hopf *whirl_hopf_alloc(const whirl_system *base, size_t par, char *errbuf,
   h->gi[1] = 3;
   h->B = calloc(2 * n, sizeof *h->B);
   h->C = calloc(2 * n, sizeof *h->C);
+  h->Bn = calloc(2 * n, sizeof *h->Bn);
+  h->Cn = calloc(2 * n, sizeof *h->Cn);
   h->ls = whirl_linsol_alloc_dense(m);
   h->eig = whirl_eig_alloc(n);
   h->A = calloc(n * n, sizeof *h->A);
@@ -199,7 +195,7 @@ whirl_hopf *whirl_hopf_alloc(const whirl_system *base, size_t par, char *errbuf,
   h->work = calloc(2 * n + 2, sizeof *h->work);
   h->er = calloc(n, sizeof *h->er);
   h->ei = calloc(n, sizeof *h->ei);
-  if (!h->B || !h->C || !h->ls || !h->eig || !h->A || !h->A2 || !h->M ||
+  if (!h->B || !h->C || !h->Bn || !h->Cn || !h->ls || !h->eig || !h->A || !h->A2 || !h->M ||
       !h->R || !h->pf || !h->work || !h->er || !h->ei)
     goto nomem;
   whirl_system *s = &h->sys;
@@ -215,7 +211,7 @@ whirl_hopf *whirl_hopf_alloc(const whirl_system *base, size_t par, char *errbuf,
   return h;
 nomem:
   whirl_hopf_free(h);
-  if (errbuf && errlen) snprintf(errbuf, errlen, "whirl_hopf_alloc: out of memory");
+  WHIRL_ERRMSG(errbuf, errlen, WHIRL_ENOMEM, "whirl_hopf_alloc: out of memory");
   return NULL;
 }
 
@@ -223,7 +219,8 @@ void whirl_hopf_free(whirl_hopf *h) {
   if (!h) return;
   whirl_linsol_free(h->ls);
   whirl_eig_free(h->eig);
-  free(h->B); free(h->C); free(h->A); free(h->A2); free(h->M); free(h->R);
+  free(h->B); free(h->C); free(h->Bn); free(h->Cn);
+  free(h->A); free(h->A2); free(h->M); free(h->R);
   free(h->pf); free(h->work); free(h->er); free(h->ei);
   free(h);
 }
@@ -235,14 +232,17 @@ const char *whirl_hopf_errmsg(const whirl_hopf *h) { return h->errmsg; }
 int whirl_hopf_init(whirl_hopf *h, const double *x, const double *p, double *Z) {
   const size_t n = h->n;
   int rc = whirl_system_jacobian(&h->base, x, p, h->A, h->work);
-  if (rc != 0) return fail(h, rc < 0 ? rc : WHIRL_EDOMAIN, "Hopf start: the Jacobian failed (%d)", rc);
+  if (rc != 0)
+    return WHIRL_FAIL(h, rc < 0 ? rc : WHIRL_EDOMAIN,
+                      "Hopf start: the Jacobian failed (%d)", rc);
   if ((rc = whirl_eig_compute(h->eig, h->A, h->er, h->ei)) != WHIRL_OK)
-    return fail(h, rc, "Hopf start: eigenvalues failed");
+    return WHIRL_FAIL(h, rc, "Hopf start: eigenvalues failed");
   double best = INFINITY, omega = 0.0;
   for (size_t i = 0; i < n; ++i)
     if (h->ei[i] > 0 && fabs(h->er[i]) < best) best = fabs(h->er[i]), omega = h->ei[i];
   if (!(omega > 0))
-    return fail(h, WHIRL_EINVAL, "Hopf start: F_x has no complex pair (not a Hopf point)");
+    return WHIRL_FAIL(h, WHIRL_EINVAL,
+                      "Hopf start: F_x has no complex pair (not a Hopf point)");
   const double kappa = omega * omega;
   for (size_t j = 0; j < n; ++j)
     for (size_t i = 0; i < n; ++i) {
@@ -252,12 +252,12 @@ int whirl_hopf_init(whirl_hopf *h, const double *x, const double *p, double *Z) 
     }
   double sv[2];
   if ((rc = whirl_null_vectors(n, n, h->A2, 2, h->C, sv)) != WHIRL_OK)
-    return fail(h, rc, "Hopf start: SVD failed");
+    return WHIRL_FAIL(h, rc, "Hopf start: SVD failed");
   double *T = h->M; /* scratch n*n <= m*m */
   for (size_t i = 0; i < n; ++i)
     for (size_t j = 0; j < n; ++j) T[j + n * i] = h->A2[i + n * j];
   if ((rc = whirl_null_vectors(n, n, T, 2, h->B, sv)) != WHIRL_OK)
-    return fail(h, rc, "Hopf start: SVD failed");
+    return WHIRL_FAIL(h, rc, "Hopf start: SVD failed");
   memcpy(Z, x, n * sizeof *Z);
   Z[n] = p[h->par];
   Z[n + 1] = kappa;
@@ -273,7 +273,13 @@ int whirl_hopf_init(whirl_hopf *h, const double *x, const double *p, double *Z) 
       whirl_hopf_params(h, Z, p, h->pf);
       if (k == 0) h->pf[h->par] += sg * hq;
       rc = solve_G(h, x, h->pf, kappa + (k == 1 ? sg * hk : 0.0), 0);
-      if (rc != 0) return fail(h, rc < 0 ? rc : WHIRL_ESINGULAR, "Hopf start: %s", h->errmsg);
+      if (rc != 0) {
+        char
+            why[sizeof h->errmsg]; /* the message is formatted into h->errmsg */
+        memcpy(why, h->errmsg, sizeof why);
+        return WHIRL_FAIL(h, rc < 0 ? rc : WHIRL_ESINGULAR, "Hopf start: %s",
+                          why);
+      }
       for (int e = 0; e < 4; ++e) (side ? gm : gp)[e] = G_entry(h, e);
     }
     for (int e = 0; e < 4; ++e) d[k][e] = (gp[e] - gm[e]) / (2.0 * (k ? hk : hq));

@@ -110,6 +110,11 @@ WHIRL_API double whirl_colloc_period(const whirl_colloc *c, const double *X,
  * restarts its continuation from the remapped X. */
 WHIRL_API int whirl_colloc_adapt(whirl_colloc *c, double *X);
 
+/* The message of the last failure of a function given c (or, for
+ * whirl_colloc_pd_switch, c2), with its origin "(colloc.c:N)"; also of a
+ * failed evaluation of the multipliers.  Never NULL. */
+WHIRL_API const char *whirl_colloc_errmsg(const whirl_colloc *c);
+
 /* Meshes adapted along branches so far (options.adapt_every). */
 WHIRL_API size_t whirl_colloc_adaptations(const whirl_colloc *c);
 

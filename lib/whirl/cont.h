@@ -3,11 +3,14 @@
  * corrector, secant (default) or tangent predictor, adaptive step (AUTO's DS,
  * DSMIN, DSMAX, NMX), and detection and localisation of special points by
  * test functions: folds LP (parameter component of the tangent), branch
- * points BP (sign of det [F_x F_p; t^T]) and Hopf points HB (real part of the
- * critical complex pair of the system's spectrum).
+ * points BP (sign of det [F_x F_p; t^T]), Hopf points HB (real part of the
+ * critical complex pair of the system's spectrum), for Floquet multipliers
+ * period doublings PD and tori TR, user values UZ and the system's own test
+ * functions.
  *
  * The loop belongs to the caller (GSL style):
- *     whirl_cont *c = whirl_cont_alloc(&sys, &opt);
+ *     char err[256];
+ *     whirl_cont *c = whirl_cont_alloc(&sys, &opt, err, sizeof err);
  *     whirl_cont_start(c, x0, p0, +1);
  *     while ((rc = whirl_cont_step(c)) == WHIRL_OK) {
  *       const whirl_point *pt = whirl_cont_point(c); ...

@@ -23,6 +23,10 @@ WHIRL_API void whirl_equilibrium_free(whirl_equilibrium *eq); /* NULL ok */
 WHIRL_API const whirl_system *whirl_equilibrium_system(
     const whirl_equilibrium *eq);
 
+/* The message of the system's last failure (the eigenvalues of its
+ * spectrum), with its origin "(equilibrium.c:N)".  Never NULL. */
+WHIRL_API const char *whirl_equilibrium_errmsg(const whirl_equilibrium *eq);
+
 #ifdef __cplusplus
 }
 #endif

@@ -65,6 +65,11 @@ WHIRL_API void whirl_hbm_free(whirl_hbm *h); /* accepts NULL */
 WHIRL_API const whirl_system *whirl_hbm_system(const whirl_hbm *h);
 WHIRL_API size_t whirl_hbm_size(const whirl_hbm *h); /* n(2N+1) [+1] */
 
+/* The message of the last failure of a function given h, with its origin
+ * "(hbm.c:N)"; each evaluation of the system's spectrum (the multipliers)
+ * replaces it, by "" when it succeeds.  Never NULL. */
+WHIRL_API const char *whirl_hbm_errmsg(const whirl_hbm *h);
+
 /* Fundamental frequency w and period 2π/w of the solution X at p. */
 WHIRL_API double whirl_hbm_frequency(const whirl_hbm *h, const double *X,
                                      const double *p);
@@ -77,8 +82,8 @@ WHIRL_API double whirl_hbm_period(const whirl_hbm *h, const double *X,
  * frequency 2π/T is stored and the phase is NOT adjusted (rotate with
  * whirl_hbm_set_phase before starting a continuation).  Linear in x for
  * fixed T, so it maps perturbations as well. */
-WHIRL_API int whirl_hbm_from_samples(const whirl_hbm *h, const double *x,
-                                     size_t m, double T, double *X);
+WHIRL_API int whirl_hbm_from_samples(whirl_hbm *h, const double *x, size_t m,
+                                     double T, double *X);
 
 /* Shift the time origin so that the phase condition b_{j,1} = 0 holds with
  * a_{j,1} >= 0 (autonomous models); no-op for forced ones. */
@@ -91,7 +96,7 @@ WHIRL_API void whirl_hbm_eval(const whirl_hbm *h, const double *X,
 /* Largest |x' − f(t, x, p)| of the truncated series over K·M equally spaced
  * phases: the time-domain residual (it measures the truncation error; the
  * Galerkin residual F is what Newton drives to zero). */
-WHIRL_API int whirl_hbm_time_residual(const whirl_hbm *h, const double *X,
+WHIRL_API int whirl_hbm_time_residual(whirl_hbm *h, const double *X,
                                       const double *p, size_t K, double *res);
 
 /* Floquet multipliers of X at p (as the system's spectrum), with the

@@ -1,7 +1,9 @@
 /* whirl/problem.h — a model: the vector field x' = f(t, x, p) of an ODE.
  * A model is a struct of callbacks plus a borrowed void *data (GSL style).
  * Constructors in lib/systems turn it into an algebraic problem (whirl_system):
- * equilibria today; harmonic balance, collocation and shooting later.
+ * equilibria (whirl/equilibrium.h), periodic orbits by harmonic balance
+ * (whirl/hbm.h) or collocation (whirl/colloc.h); fold and Hopf curves wrap
+ * those systems (whirl/fold.h, whirl/hopf.h).
  *
  * Callback contract (SUNDIALS): return 0 on success, > 0 for a recoverable
  * failure (e.g. a state outside the model's domain such as journal-housing
@@ -18,6 +20,9 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* π to double precision, for models and the library (ISO C has no M_PI). */
+#define WHIRL_PI 3.14159265358979323846
 
 /* f[n] = right-hand side at (t, x[n], p[npar]). */
 typedef int (*whirl_rhs_fn)(double t, const double *x, const double *p,

@@ -5,6 +5,8 @@
 #ifndef WHIRL_STATUS_H
 #define WHIRL_STATUS_H
 
+#include <stddef.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -20,7 +22,6 @@ extern "C" {
 #define WHIRL_STATUS_LIST(X)                                                   \
   X(WHIRL_OK, 0, "success")                                                    \
   X(WHIRL_DONE, 1, "branch finished (see the stop reason)")                   \
-  X(WHIRL_WSINGULAR, 2, "matrix is singular to working precision")            \
   X(WHIRL_EINVAL, -1, "invalid argument")                                      \
   X(WHIRL_ENOMEM, -2, "out of memory")                                         \
   X(WHIRL_ENOCONV, -3, "Newton iteration did not converge")                    \
@@ -42,6 +43,27 @@ typedef enum whirl_status {
 
 /* Message for a status code; never NULL, static storage. */
 WHIRL_API const char *whirl_strerror(int status);
+
+#if defined(__GNUC__)
+#define WHIRL_PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
+#else
+#define WHIRL_PRINTF_LIKE(f, a)
+#endif
+
+/* Write the message fmt, ... to buf[len] followed by its origin
+ * " (name.c:line)", name the base name of file, as GSL_ERROR does, and
+ * return code, so that a failing path is one line:
+ *   return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "n = %zu", n);
+ * Nothing is written when buf is NULL or len is 0; a message that fills buf
+ * is truncated and gets no origin, and so does one with file NULL.  Every whirl
+ * object stores its last message this way (whirl_cont_errmsg, whirl_ode_errmsg,
+ * ...); front ends may strip the origins before showing a message to a user.  A
+ * good place for a debugger breakpoint. */
+WHIRL_API int whirl_errmsg_set(char *buf, size_t len, int code,
+                               const char *file, int line, const char *fmt, ...)
+    WHIRL_PRINTF_LIKE(6, 7);
+#define WHIRL_ERRMSG(buf, len, code, ...) \
+  whirl_errmsg_set((buf), (len), (code), __FILE__, __LINE__, __VA_ARGS__)
 
 /* Version of the library, "MAJOR.MINOR.PATCH"; static storage. */
 WHIRL_API const char *whirl_version(void);

@@ -2,7 +2,9 @@
  * a message, never a crash: SFD parameters out of range or NaN, F_E != 0 for
  * circular orbits, contact with the housing (eps >= 1), a Newton that
  * diverges, a model that fails fatally, a branch that runs into a domain
- * error, and numbers as run files write them (whirl_run_number).
+ * error, numbers as run files write them (whirl_run_number), the one
+ * message formatter (whirl_errmsg_set) and the last message of the hbm,
+ * collocation and equilibrium objects (whirl_X_errmsg).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdio.h>
@@ -11,6 +13,77 @@
 #include <whirl/rotor.h>
 
 #include "../tap.h"
+
+/* a forced linear oscillator x'' + x = cos(p0 t), for the HBM and
+ * collocation objects */
+static int osc_rhs(double t, const double *x, const double *p, double *f,
+                   void *d) {
+  (void)d;
+  f[0] = x[1];
+  f[1] = -x[0] + cos(p[0] * t);
+  return 0;
+}
+static const whirl_problem osc = {.name = "osc", .n = 2, .npar = 1,
+                                  .rhs = osc_rhs};
+
+/* whirl_errmsg_set: message, origin, truncation, NULL buffer */
+static void formatter(void) {
+  char buf[64];
+  int rc = whirl_errmsg_set(buf, sizeof buf, WHIRL_EINVAL, "/a/b/thing.c", 42,
+                            "n = %d", 7);
+  ok(rc == WHIRL_EINVAL && strcmp(buf, "n = 7 (thing.c:42)") == 0,
+     "errmsg_set: message and base name of the origin: '%s'", buf);
+  rc = WHIRL_ERRMSG(buf, sizeof buf, WHIRL_ENOMEM, "at %s", "here");
+  ok(rc == WHIRL_ENOMEM && strncmp(buf, "at here (t_errors.c:", 20) == 0,
+     "WHIRL_ERRMSG records this file and line: '%s'", buf);
+  char small[8];
+  whirl_errmsg_set(small, sizeof small, 0, "x.c", 1, "%s", "0123456789");
+  ok(strcmp(small, "0123456") == 0, "a message that fills the buffer is "
+     "truncated, without origin: '%s'", small);
+  ok(whirl_errmsg_set(NULL, 0, WHIRL_EIO, "x.c", 1, "nothing") == WHIRL_EIO,
+     "NULL buffer: only the code");
+}
+
+/* hbm, collocation and equilibrium objects keep their last message */
+static void object_messages(void) {
+  whirl_hbm_options ho;
+  whirl_hbm_options_default(&ho);
+  ho.forcing_param = 0;
+  whirl_hbm *h = whirl_hbm_alloc(&osc, &ho, NULL, 0);
+  double X[64], x[8] = {0};
+  ok(h && whirl_hbm_from_samples(h, x, 4, 1.0, X) == WHIRL_EINVAL &&
+         strstr(whirl_hbm_errmsg(h), "2N + 1 = 17") &&
+         strstr(whirl_hbm_errmsg(h), "(hbm.c:"),
+     "hbm: too few samples, message kept: %s", h ? whirl_hbm_errmsg(h) : "");
+  whirl_hbm_free(h);
+  whirl_colloc_options co;
+  whirl_colloc_options_default(&co);
+  co.forcing_param = 0;
+  whirl_colloc *c = whirl_colloc_alloc(&osc, &co, NULL, 0);
+  const double bad[3] = {0.0, 0.7, 0.5};
+  co.ntst = 2;
+  whirl_colloc *c2 = whirl_colloc_alloc(&osc, &co, NULL, 0);
+  ok(c2 && whirl_colloc_set_mesh(c2, bad) == WHIRL_EINVAL &&
+         strstr(whirl_colloc_errmsg(c2), "0 to 1"),
+     "colloc: a mesh that does not end at 1 is refused: %s",
+     c2 ? whirl_colloc_errmsg(c2) : "");
+  ok(c && whirl_colloc_hopf_start(c, x, x, X, X, NULL) == WHIRL_EINVAL &&
+         strstr(whirl_colloc_errmsg(c), "forced"),
+     "colloc: a Hopf start of a forced model is refused: %s",
+     c ? whirl_colloc_errmsg(c) : "");
+  whirl_colloc_free(c2);
+  whirl_colloc_free(c);
+  /* the equilibrium system's spectrum with no room for the eigenvalues */
+  whirl_equilibrium *eq = whirl_equilibrium_alloc(&osc);
+  const whirl_system *es = eq ? whirl_equilibrium_system(eq) : NULL;
+  double re[2], im[2], p0 = 1.0;
+  size_t m = 1;
+  ok(es && es->spectrum(x, &p0, NULL, re, im, &m, es->data) == WHIRL_EINVAL &&
+         strstr(whirl_equilibrium_errmsg(eq), "room for 1 of 2"),
+     "equilibrium: the spectrum's failure is kept: %s",
+     eq ? whirl_equilibrium_errmsg(eq) : "");
+  whirl_equilibrium_free(eq);
+}
 
 static int atan_F(const double *x, const double *p, double *f, void *d) {
   (void)p;
@@ -34,6 +107,8 @@ static int wall_F(const double *x, const double *p, double *f, void *d) {
 }
 
 int main(void) {
+  formatter();
+  object_messages();
   double p[WHIRL_SFD_NPAR];
   char msg[256];
   struct {

@@ -559,7 +559,7 @@ static whirl_hbm *sfd_hbm(size_t N) {
 }
 
 /* HBM coefficients of the circular orbit (eps, Omega) of eq. 15. */
-static void circular_X(const whirl_hbm *h, double eps, const double *p, double *X) {
+static void circular_X(whirl_hbm *h, double eps, const double *p, double *X) {
   const double W = p[WHIRL_SFD_OMEGA];
   double r[4];
   whirl_sfd_circ_state(eps, W, p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA], r);

@@ -1,4 +1,4 @@
-/* whirl/sfd.h — the rigid rotor on two short squeeze-film dampers
+/* whirl/rotor/sfd.h — the rigid rotor on two short squeeze-film dampers
  * (π-film, paper eqs. 1–17; shared/DESIGN.md), dimensionless.
  *
  * Parameters p[WHIRL_SFD_NPAR] (same order in every SFD problem):
@@ -114,8 +114,9 @@ struct whirl_cont_stats;
 
 typedef struct whirl_sfd_response_options {
   double omega_min, omega_max; /* defaults 0.01, 20 */
-  double ds, ds_max;           /* continuation steps, defaults 0.02, 0.25 */
-  size_t neps;                 /* ε grid for seeding, default 400 */
+  double ds, ds_max;           /* continuation steps, defaults 0.02, 0.2;
+                                  need 0 < ds <= ds_max */
+  size_t neps;                 /* ε grid for seeding, default 400, >= 10 */
   int linsol;                  /* whirl_linsol_kind, default dense */
 } whirl_sfd_response_options;
 

@@ -1,4 +1,4 @@
-/* whirl/sfd_dynamics.h — time-domain analysis of the SFD rotor (F_E = 0):
+/* whirl/rotor/sfd_dynamics.h — time-domain analysis of the SFD rotor (F_E = 0):
  * the attractors that exist at a speed, with membership tests that let a
  * basin computation stop a trajectory as soon as it has settled, and the
  * initial states the paper uses for its basins (§5.3, Figs. 12–17).

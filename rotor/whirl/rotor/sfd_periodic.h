@@ -1,4 +1,4 @@
-/* whirl/sfd_periodic.h — periodic responses of the SFD rotor that are not
+/* whirl/rotor/sfd_periodic.h — periodic responses of the SFD rotor that are not
  * rotating-frame equilibria: (1) synchronous orbits in the fixed frame by
  * harmonic balance or collocation, needed when gravity is not fully
  * compensated (F_E != 0, orbits not circular) and, with F_E = 0, as a check

@@ -1,4 +1,4 @@
-/* whirl/sfd_region.h — where the SFD rotor has an isolated branch (paper §5.4,
+/* whirl/rotor/sfd_region.h — where the SFD rotor has an isolated branch (paper §5.4,
  * Fig. 18), traced by two-parameter continuation of circular synchronous
  * orbits (rotating-frame equilibria, F_E = 0) with the fold system of
  * whirl/fold.h:
