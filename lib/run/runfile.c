@@ -611,14 +611,260 @@ static char *string_field(whirl_run_settings *s, whirl_run_key k, size_t *len) {
   }
 }
 
+/* INT and REAL keys: one number, checked against the key's range. */
+static int set_number(whirl_runfile *rf, const key_def *d, const char *where) {
+  whirl_run_settings *s = &rf->s;
+  const pvalue *v = &rf->v;
+  const char *kn = d->name;
+  char shown[64];
+  if (v->kind != V_SCALAR)
+    return fail(rf, where, "%s: expected one number, got a %s", kn,
+                v->kind == V_DICT ? "dictionary" : "list");
+  const char *t = v->it[0].text;
+  if (d->kind == K_INT) {
+    int x;
+    if (v->it[0].quoted || to_int(t, &x))
+      return fail(rf, where, "%s: '%s' is not an integer", kn,
+                  show(t, ITEMLEN, shown, sizeof shown));
+    const char *why = check_int(d->key, x);
+    if (why) return fail(rf, where, "%s = %d: %s", kn, x, why);
+    *int_field(s, d->key) = x;
+  } else {
+    double x;
+    if (v->it[0].quoted || to_double(t, &x))
+      return fail(rf, where, "%s: '%s' is not a finite number", kn,
+                  show(t, ITEMLEN, shown, sizeof shown));
+    const char *why = check_real(d->key, x);
+    if (why) return fail(rf, where, "%s = %s: %s", kn, t, why);
+    *real_field(s, d->key) = x;
+  }
+  return WHIRL_OK;
+}
+
+/* IPS: 1 or equilibria, 2 or periodic, basins. */
+static int set_ips(whirl_runfile *rf, const key_def *d, const char *where) {
+  whirl_run_settings *s = &rf->s;
+  const pvalue *v = &rf->v;
+  const char *kn = d->name;
+  char shown[64];
+  if (v->kind != V_SCALAR)
+    return fail(rf, where, "%s: expected one value", kn);
+  const char *t = v->it[0].text;
+  int x;
+  if (!strcasecmp(t, "equilibria") || !strcasecmp(t, "EQ"))
+    x = WHIRL_IPS_EQUILIBRIA;
+  else if (!strcasecmp(t, "periodic") || !strcasecmp(t, "PO"))
+    x = WHIRL_IPS_PERIODIC;
+  else if (!strcasecmp(t, "basins"))
+    x = WHIRL_IPS_BASINS;
+  else if (to_int(t, &x))
+    return fail(rf, where,
+                "%s: '%s' is not a problem type (1 or equilibria, 2 or "
+                "periodic, basins)",
+                kn, show(t, ITEMLEN, shown, sizeof shown));
+  else if (x != 1 && x != 2)
+    return fail(rf, where,
+                "%s = %d is not supported (1 equilibria, 2 periodic "
+                "orbits, basins)",
+                kn, x);
+  s->ips = x;
+  return WHIRL_OK;
+}
+
+/* METHOD: colloc or hbm. */
+static int set_method(whirl_runfile *rf, const key_def *d, const char *where) {
+  whirl_run_settings *s = &rf->s;
+  const pvalue *v = &rf->v;
+  const char *kn = d->name;
+  char shown[64];
+  if (v->kind != V_SCALAR)
+    return fail(rf, where, "%s: expected one word", kn);
+  const char *t = v->it[0].text;
+  if (!strcasecmp(t, "colloc") || !strcasecmp(t, "collocation"))
+    s->method = WHIRL_METHOD_COLLOC;
+  else if (!strcasecmp(t, "hbm") || !strcasecmp(t, "harmonic_balance"))
+    s->method = WHIRL_METHOD_HBM;
+  else
+    return fail(rf, where, "%s: '%s' is not a method (colloc or hbm)", kn,
+                show(t, ITEMLEN, shown, sizeof shown));
+  return WHIRL_OK;
+}
+
+/* ICP: a list of at most 4 parameters. */
+static int set_reflist(whirl_runfile *rf, const key_def *d, const char *where) {
+  whirl_run_settings *s = &rf->s;
+  const pvalue *v = &rf->v;
+  const char *kn = d->name, *msg = NULL;
+  char shown[64];
+  if (v->kind == V_DICT)
+    return fail(rf, where, "%s: expected a list of parameters, got a "
+                "dictionary", kn);
+  if (v->n == 0) return fail(rf, where, "%s: empty list", kn);
+  if (v->n > 4) return fail(rf, where, "%s: at most 4 parameters", kn);
+  for (size_t i = 0; i < v->n; i++)
+    if (to_ref(&v->it[i], &s->icp[i], &msg))
+      return fail(rf, where, "%s: '%s' %s", kn,
+                  show(v->it[i].text, ITEMLEN, shown, sizeof shown), msg);
+  s->nicp = v->n;
+  return WHIRL_OK;
+}
+
+/* PAR, U (a dictionary or a positional list), UZR, UZSTOP (dictionaries). */
+static int set_values(whirl_runfile *rf, const key_def *d, const char *where) {
+  whirl_run_settings *s = &rf->s;
+  const pvalue *v = &rf->v;
+  const char *kn = d->name, *msg = NULL;
+  char shown[64];
+  whirl_run_value *dst = d->key == WHIRL_RK_PAR ? s->par
+                         : d->key == WHIRL_RK_U ? s->u
+                         : d->key == WHIRL_RK_UZR ? s->uzr
+                                                  : s->uzstop;
+  size_t *cnt = d->key == WHIRL_RK_PAR ? &s->npar
+                : d->key == WHIRL_RK_U ? &s->nu
+                : d->key == WHIRL_RK_UZR ? &s->nuzr
+                                         : &s->nuzstop;
+  if (v->kind != V_DICT && d->kind == K_UZDICT)
+    return fail(rf, where, "%s: expected a dictionary {parameter: "
+                "value or [values]}", kn);
+  if (v->n > WHIRL_RUN_MAXITEMS)
+    return fail(rf, where, "%s: too many values (at most %d)", kn,
+                WHIRL_RUN_MAXITEMS);
+  for (size_t i = 0; i < v->n; i++) {
+    whirl_run_value *e = &dst[i];
+    if (v->kind == V_DICT) {
+      item key = v->it[i];
+      snprintf(key.text, sizeof key.text, "%s", v->it[i].key);
+      key.quoted = 0;
+      if (to_ref(&key, &e->ref, &msg))
+        return fail(rf, where, "%s: key '%s' %s", kn,
+                    show(key.text, ITEMLEN, shown, sizeof shown), msg);
+      if (d->kind == K_VALDICT && i > 0 && v->it[i].group == v->it[i - 1].group)
+        return fail(rf, where, "%s: '%s' has a list where one value is "
+                    "expected", kn, show(key.text, ITEMLEN, shown, sizeof shown));
+    } else {
+      memset(&e->ref, 0, sizeof e->ref);
+      e->ref.index = (int)i + 1; /* positional: PAR = [a, b, c] */
+    }
+    if (v->it[i].quoted || to_double(v->it[i].text, &e->value))
+      return fail(rf, where, "%s: '%s' is not a finite number", kn,
+                  show(v->it[i].text, ITEMLEN, shown, sizeof shown));
+  }
+  *cnt = v->n;
+  return WHIRL_OK;
+}
+
+/* IRS: a label, or a type and count (HB1). */
+static int set_irs(whirl_runfile *rf, const key_def *d, const char *where) {
+  whirl_run_settings *s = &rf->s;
+  const pvalue *v = &rf->v;
+  const char *kn = d->name;
+  char shown[64];
+  if (v->kind != V_SCALAR) return fail(rf, where, "%s: expected a label", kn);
+  const char *t = v->it[0].text;
+  int x;
+  s->irs_type[0] = '\0';
+  if (!to_int(t, &x)) {
+    if (x < 0) return fail(rf, where, "%s = %d: must be >= 0", kn, x);
+    s->irs = x;
+    return WHIRL_OK;
+  }
+  /* TY[k]: the k-th point of type TY (AUTO: IRS = 'HB1') */
+  static const char *const types[] = {"EP", "LP", "BP", "HB", "UZ", "PD",
+                                      "TR", "CP", "BT", "ZH", "IS", "MG", "RG"};
+  for (size_t i = 0; i < sizeof types / sizeof types[0]; i++) {
+    if (strncasecmp(t, types[i], 2)) continue;
+    int k = 1;
+    if (t[2] && (to_int(t + 2, &k) || k < 1)) break;
+    memcpy(s->irs_type, types[i], 3);
+    s->irs = k;
+    return WHIRL_OK;
+  }
+  return fail(rf, where, "%s: '%s' is not a label (a number, or a type "
+              "and count such as HB1)", kn, show(t, ITEMLEN, shown, sizeof shown));
+}
+
+/* BASIN_AXES: one or two {component: [min, max]}. */
+static int set_ranges(whirl_runfile *rf, const key_def *d, const char *where) {
+  whirl_run_settings *s = &rf->s;
+  const pvalue *v = &rf->v;
+  const char *kn = d->name, *msg = NULL;
+  char shown[64];
+  if (v->kind != V_DICT || v->ngroups < 1 || v->ngroups > 2)
+    return fail(rf, where, "%s: expected {component: [min, max], "
+                "component: [min, max]}", kn);
+  for (size_t g = 0; g < v->ngroups; g++) {
+    size_t first = MAXITEMS, count = 0;
+    for (size_t i = 0; i < v->n; i++)
+      if (v->it[i].group == (int)g) {
+        if (first == MAXITEMS) first = i;
+        count++;
+      }
+    if (count != 2)
+      return fail(rf, where, "%s: each axis needs [min, max]", kn);
+    whirl_run_range *r = &s->axes[g];
+    item key = v->it[first];
+    snprintf(key.text, sizeof key.text, "%s", v->it[first].key);
+    key.quoted = 0;
+    if (to_ref(&key, &r->ref, &msg))
+      return fail(rf, where, "%s: key '%s' %s", kn,
+                  show(key.text, ITEMLEN, shown, sizeof shown), msg);
+    if (to_double(v->it[first].text, &r->lo) ||
+        to_double(v->it[first + 1].text, &r->hi))
+      return fail(rf, where, "%s: a range bound is not a finite number", kn);
+    if (!(r->lo < r->hi))
+      return fail(rf, where, "%s: range [%g, %g] is empty", kn, r->lo, r->hi);
+  }
+  s->naxes = v->ngroups;
+  return WHIRL_OK;
+}
+
+/* BASIN_GRID: N or [N1, N2]. */
+static int set_grid(whirl_runfile *rf, const key_def *d, const char *where) {
+  whirl_run_settings *s = &rf->s;
+  const pvalue *v = &rf->v;
+  const char *kn = d->name;
+  char shown[64];
+  if (v->kind == V_DICT || v->n > 2 || v->n == 0)
+    return fail(rf, where, "%s: expected N or [N1, N2]", kn);
+  for (size_t i = 0; i < 2; i++) {
+    int x;
+    const item *it = &v->it[i < v->n ? i : 0];
+    if (it->quoted || to_int(it->text, &x))
+      return fail(rf, where, "%s: '%s' is not an integer", kn,
+                  show(it->text, ITEMLEN, shown, sizeof shown));
+    if (x < 2 || x > 4096)
+      return fail(rf, where, "%s = %d: must be in [2, 4096]", kn, x);
+    s->grid[i] = x;
+  }
+  return WHIRL_OK;
+}
+
+/* BASIN_ATTRACTORS: a list of labels. */
+static int set_intlist(whirl_runfile *rf, const key_def *d, const char *where) {
+  whirl_run_settings *s = &rf->s;
+  const pvalue *v = &rf->v;
+  const char *kn = d->name;
+  char shown[64];
+  if (v->kind == V_DICT) return fail(rf, where, "%s: expected a list of labels", kn);
+  if (v->n > WHIRL_RUN_MAXITEMS)
+    return fail(rf, where, "%s: too many labels", kn);
+  for (size_t i = 0; i < v->n; i++) {
+    int x;
+    if (v->it[i].quoted || to_int(v->it[i].text, &x) || x < 1)
+      return fail(rf, where, "%s: '%s' is not a label (a positive integer)",
+                  kn, show(v->it[i].text, ITEMLEN, shown, sizeof shown));
+    s->attractors[i] = x;
+  }
+  s->nattractors = v->n;
+  return WHIRL_OK;
+}
+
 /* Convert the value text (already comment-stripped) for key d.  where:
  * "FILE:LINE" for messages. */
 static int set_value(whirl_runfile *rf, const key_def *d, const char *where,
                      const char *text, size_t n) {
   whirl_run_settings *s = &rf->s;
-  const char *kn = d->name, *msg = NULL;
-  char shown[64];
-  pvalue *v = &rf->v;
+  const char *kn = d->name;
 
   /* strings take the whole value (quotes removed), so paths may contain
    * blanks, commas and brackets */
@@ -649,202 +895,17 @@ static int set_value(whirl_runfile *rf, const key_def *d, const char *where,
   if (rc) return rc;
 
   switch (d->kind) {
-    case K_INT:
-    case K_REAL: {
-      if (v->kind != V_SCALAR)
-        return fail(rf, where, "%s: expected one number, got a %s", kn,
-                    v->kind == V_DICT ? "dictionary" : "list");
-      const char *t = v->it[0].text;
-      if (d->kind == K_INT) {
-        int x;
-        if (v->it[0].quoted || to_int(t, &x))
-          return fail(rf, where, "%s: '%s' is not an integer", kn,
-                      show(t, ITEMLEN, shown, sizeof shown));
-        const char *why = check_int(d->key, x);
-        if (why) return fail(rf, where, "%s = %d: %s", kn, x, why);
-        *int_field(s, d->key) = x;
-      } else {
-        double x;
-        if (v->it[0].quoted || to_double(t, &x))
-          return fail(rf, where, "%s: '%s' is not a finite number", kn,
-                      show(t, ITEMLEN, shown, sizeof shown));
-        const char *why = check_real(d->key, x);
-        if (why) return fail(rf, where, "%s = %s: %s", kn, t, why);
-        *real_field(s, d->key) = x;
-      }
-      return WHIRL_OK;
-    }
-    case K_IPS: {
-      if (v->kind != V_SCALAR)
-        return fail(rf, where, "%s: expected one value", kn);
-      const char *t = v->it[0].text;
-      int x;
-      if (!strcasecmp(t, "equilibria") || !strcasecmp(t, "EQ"))
-        x = WHIRL_IPS_EQUILIBRIA;
-      else if (!strcasecmp(t, "periodic") || !strcasecmp(t, "PO"))
-        x = WHIRL_IPS_PERIODIC;
-      else if (!strcasecmp(t, "basins"))
-        x = WHIRL_IPS_BASINS;
-      else if (to_int(t, &x))
-        return fail(rf, where,
-                    "%s: '%s' is not a problem type (1 or equilibria, 2 or "
-                    "periodic, basins)",
-                    kn, show(t, ITEMLEN, shown, sizeof shown));
-      else if (x != 1 && x != 2)
-        return fail(rf, where,
-                    "%s = %d is not supported (1 equilibria, 2 periodic "
-                    "orbits, basins)",
-                    kn, x);
-      s->ips = x;
-      return WHIRL_OK;
-    }
-    case K_METHOD: {
-      if (v->kind != V_SCALAR)
-        return fail(rf, where, "%s: expected one word", kn);
-      const char *t = v->it[0].text;
-      if (!strcasecmp(t, "colloc") || !strcasecmp(t, "collocation"))
-        s->method = WHIRL_METHOD_COLLOC;
-      else if (!strcasecmp(t, "hbm") || !strcasecmp(t, "harmonic_balance"))
-        s->method = WHIRL_METHOD_HBM;
-      else
-        return fail(rf, where, "%s: '%s' is not a method (colloc or hbm)", kn,
-                    show(t, ITEMLEN, shown, sizeof shown));
-      return WHIRL_OK;
-    }
-    case K_REFLIST: {
-      if (v->kind == V_DICT)
-        return fail(rf, where, "%s: expected a list of parameters, got a "
-                    "dictionary", kn);
-      if (v->n == 0) return fail(rf, where, "%s: empty list", kn);
-      if (v->n > 4) return fail(rf, where, "%s: at most 4 parameters", kn);
-      for (size_t i = 0; i < v->n; i++)
-        if (to_ref(&v->it[i], &s->icp[i], &msg))
-          return fail(rf, where, "%s: '%s' %s", kn,
-                      show(v->it[i].text, ITEMLEN, shown, sizeof shown), msg);
-      s->nicp = v->n;
-      return WHIRL_OK;
-    }
-    case K_VALDICT:
-    case K_UZDICT: {
-      whirl_run_value *dst = d->key == WHIRL_RK_PAR ? s->par
-                             : d->key == WHIRL_RK_U ? s->u
-                             : d->key == WHIRL_RK_UZR ? s->uzr
-                                                      : s->uzstop;
-      size_t *cnt = d->key == WHIRL_RK_PAR ? &s->npar
-                    : d->key == WHIRL_RK_U ? &s->nu
-                    : d->key == WHIRL_RK_UZR ? &s->nuzr
-                                             : &s->nuzstop;
-      if (v->kind != V_DICT && d->kind == K_UZDICT)
-        return fail(rf, where, "%s: expected a dictionary {parameter: "
-                    "value or [values]}", kn);
-      if (v->n > WHIRL_RUN_MAXITEMS)
-        return fail(rf, where, "%s: too many values (at most %d)", kn,
-                    WHIRL_RUN_MAXITEMS);
-      for (size_t i = 0; i < v->n; i++) {
-        whirl_run_value *e = &dst[i];
-        if (v->kind == V_DICT) {
-          item key = v->it[i];
-          snprintf(key.text, sizeof key.text, "%s", v->it[i].key);
-          key.quoted = 0;
-          if (to_ref(&key, &e->ref, &msg))
-            return fail(rf, where, "%s: key '%s' %s", kn,
-                        show(key.text, ITEMLEN, shown, sizeof shown), msg);
-          if (d->kind == K_VALDICT && i > 0 && v->it[i].group == v->it[i - 1].group)
-            return fail(rf, where, "%s: '%s' has a list where one value is "
-                        "expected", kn, show(key.text, ITEMLEN, shown, sizeof shown));
-        } else {
-          memset(&e->ref, 0, sizeof e->ref);
-          e->ref.index = (int)i + 1; /* positional: PAR = [a, b, c] */
-        }
-        if (v->it[i].quoted || to_double(v->it[i].text, &e->value))
-          return fail(rf, where, "%s: '%s' is not a finite number", kn,
-                      show(v->it[i].text, ITEMLEN, shown, sizeof shown));
-      }
-      *cnt = v->n;
-      return WHIRL_OK;
-    }
-    case K_IRS: {
-      if (v->kind != V_SCALAR) return fail(rf, where, "%s: expected a label", kn);
-      const char *t = v->it[0].text;
-      int x;
-      s->irs_type[0] = '\0';
-      if (!to_int(t, &x)) {
-        if (x < 0) return fail(rf, where, "%s = %d: must be >= 0", kn, x);
-        s->irs = x;
-        return WHIRL_OK;
-      }
-      /* TY[k]: the k-th point of type TY (AUTO: IRS = 'HB1') */
-      static const char *const types[] = {"EP", "LP", "BP", "HB", "UZ", "PD",
-                                          "TR", "CP", "BT", "ZH", "IS", "MG", "RG"};
-      for (size_t i = 0; i < sizeof types / sizeof types[0]; i++) {
-        if (strncasecmp(t, types[i], 2)) continue;
-        int k = 1;
-        if (t[2] && (to_int(t + 2, &k) || k < 1)) break;
-        memcpy(s->irs_type, types[i], 3);
-        s->irs = k;
-        return WHIRL_OK;
-      }
-      return fail(rf, where, "%s: '%s' is not a label (a number, or a type "
-                  "and count such as HB1)", kn, show(t, ITEMLEN, shown, sizeof shown));
-    }
-    case K_RANGES: {
-      if (v->kind != V_DICT || v->ngroups < 1 || v->ngroups > 2)
-        return fail(rf, where, "%s: expected {component: [min, max], "
-                    "component: [min, max]}", kn);
-      for (size_t g = 0; g < v->ngroups; g++) {
-        size_t first = MAXITEMS, count = 0;
-        for (size_t i = 0; i < v->n; i++)
-          if (v->it[i].group == (int)g) {
-            if (first == MAXITEMS) first = i;
-            count++;
-          }
-        if (count != 2)
-          return fail(rf, where, "%s: each axis needs [min, max]", kn);
-        whirl_run_range *r = &s->axes[g];
-        item key = v->it[first];
-        snprintf(key.text, sizeof key.text, "%s", v->it[first].key);
-        key.quoted = 0;
-        if (to_ref(&key, &r->ref, &msg))
-          return fail(rf, where, "%s: key '%s' %s", kn,
-                      show(key.text, ITEMLEN, shown, sizeof shown), msg);
-        if (to_double(v->it[first].text, &r->lo) ||
-            to_double(v->it[first + 1].text, &r->hi))
-          return fail(rf, where, "%s: a range bound is not a finite number", kn);
-        if (!(r->lo < r->hi))
-          return fail(rf, where, "%s: range [%g, %g] is empty", kn, r->lo, r->hi);
-      }
-      s->naxes = v->ngroups;
-      return WHIRL_OK;
-    }
-    case K_GRID: {
-      if (v->kind == V_DICT || v->n > 2 || v->n == 0)
-        return fail(rf, where, "%s: expected N or [N1, N2]", kn);
-      for (size_t i = 0; i < 2; i++) {
-        int x;
-        const item *it = &v->it[i < v->n ? i : 0];
-        if (it->quoted || to_int(it->text, &x))
-          return fail(rf, where, "%s: '%s' is not an integer", kn,
-                      show(it->text, ITEMLEN, shown, sizeof shown));
-        if (x < 2 || x > 4096)
-          return fail(rf, where, "%s = %d: must be in [2, 4096]", kn, x);
-        s->grid[i] = x;
-      }
-      return WHIRL_OK;
-    }
-    case K_INTLIST: {
-      if (v->kind == V_DICT) return fail(rf, where, "%s: expected a list of labels", kn);
-      if (v->n > WHIRL_RUN_MAXITEMS)
-        return fail(rf, where, "%s: too many labels", kn);
-      for (size_t i = 0; i < v->n; i++) {
-        int x;
-        if (v->it[i].quoted || to_int(v->it[i].text, &x) || x < 1)
-          return fail(rf, where, "%s: '%s' is not a label (a positive integer)",
-                      kn, show(v->it[i].text, ITEMLEN, shown, sizeof shown));
-        s->attractors[i] = x;
-      }
-      s->nattractors = v->n;
-      return WHIRL_OK;
-    }
+    case K_INT: return set_number(rf, d, where);
+    case K_REAL: return set_number(rf, d, where);
+    case K_IPS: return set_ips(rf, d, where);
+    case K_METHOD: return set_method(rf, d, where);
+    case K_REFLIST: return set_reflist(rf, d, where);
+    case K_VALDICT: return set_values(rf, d, where);
+    case K_UZDICT: return set_values(rf, d, where);
+    case K_IRS: return set_irs(rf, d, where);
+    case K_RANGES: return set_ranges(rf, d, where);
+    case K_GRID: return set_grid(rf, d, where);
+    case K_INTLIST: return set_intlist(rf, d, where);
     case K_IGNORED:
     case K_STRING:
       return WHIRL_OK;
