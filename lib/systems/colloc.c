@@ -455,59 +455,43 @@ static int colloc_remap(double *const *v, size_t nv, const double *p,
                 "whirl_colloc_alloc: " __VA_ARGS__), \
    NULL)
 
-whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
-                                 const whirl_colloc_options *o, char *errbuf,
-                                 size_t errlen) {
-  char why[200];
+/* The options' rules: "" when they hold, else why not. */
+static void check_options(const whirl_problem *prob, const whirl_colloc_options *o,
+                          char *why, size_t len) {
   why[0] = '\0';
-  if (errbuf && errlen) errbuf[0] = '\0';
-  if (!prob || !prob->rhs || prob->n == 0)
-    return ALLOC_FAIL("model is NULL, has no rhs or n = 0");
-  if (!o) return ALLOC_FAIL("no options");
   if (o->ntst < 2 || o->ntst > WHIRL_COLLOC_MAX_NTST)
-    snprintf(why, sizeof why, "need 2 <= NTST <= %d (got %zu)",
+    snprintf(why, len, "need 2 <= NTST <= %d (got %zu)",
              WHIRL_COLLOC_MAX_NTST, o->ntst);
   else if (o->ncol < 2 || o->ncol > COLLOC_MAXCOL)
-    snprintf(why, sizeof why, "need 2 <= NCOL <= %d (got %zu)", COLLOC_MAXCOL,
+    snprintf(why, len, "need 2 <= NCOL <= %d (got %zu)", COLLOC_MAXCOL,
              o->ncol);
   else if (o->forcing_param < -1 ||
            (o->forcing_param >= 0 && (size_t)o->forcing_param >= prob->npar))
-    snprintf(why, sizeof why,
+    snprintf(why, len,
              "forcing_param %d is neither -1 nor a parameter index (npar %zu)",
              o->forcing_param, prob->npar);
   else if (o->forcing_param >= 0 && o->nu < 1)
-    snprintf(why, sizeof why, "need nu >= 1 for a forced orbit");
+    snprintf(why, len, "need nu >= 1 for a forced orbit");
   else if (o->forcing_param >= 0 && prob->autonomous)
     /* an autonomous model at an imposed period with no phase condition has a
      * singular Jacobian (every time shift is a solution) */
-    snprintf(why, sizeof why,
+    snprintf(why, len,
              "forcing_param %d given but model '%s' is autonomous; use -1",
              o->forcing_param, prob->name ? prob->name : "?");
   else if (o->forcing_param < 0 && prob->n < 2)
-    snprintf(why, sizeof why, "an autonomous model needs n >= 2 for a cycle");
+    snprintf(why, len, "an autonomous model needs n >= 2 for a cycle");
   else if (!isfinite(o->t0) || !(o->floquet_rtol >= 0.0))
-    snprintf(why, sizeof why, "t0 must be finite and floquet_rtol >= 0");
+    snprintf(why, len, "t0 must be finite and floquet_rtol >= 0");
   else if (o->floquet != WHIRL_COLLOC_FLOQUET_CONDENSED &&
            o->floquet != WHIRL_COLLOC_FLOQUET_VARIATIONAL)
-    snprintf(why, sizeof why, "floquet must be CONDENSED or VARIATIONAL (got %d)",
+    snprintf(why, len, "floquet must be CONDENSED or VARIATIONAL (got %d)",
              o->floquet);
-  if (why[0]) return ALLOC_FAIL("%s", why);
+}
 
-  const size_t n = prob->n, m = o->ncol, N = o->ntst;
-  const int aut = o->forcing_param < 0;
-  const size_t nnodes = N * m + 1; /* N, m bounded above: no overflow */
-  /* sizes first, in floating point so that nothing overflows: at most
-   * 2 n m + 2 nonzeros in each of the n nnodes + 1 columns */
-  if ((double)n * (double)nnodes + 1.0 >= (double)INT_MAX ||
-      (double)n * (double)nnodes * (2.0 * (double)n * (double)m + 3.0) >=
-          (double)INT_MAX)
-    return ALLOC_FAIL(
-        "problem too large for int indices "
-        "(reduce NTST, NCOL or the model's dimension)");
-  const size_t nx = n * nnodes + (size_t)aut;
-  /* nonzeros: n*ncol collocation rows per interval holding the node (two at
-   * inner mesh points), periodicity at the end nodes, the phase row, and the
-   * T column over all collocation rows */
+/* The nonzeros of F_x: n*ncol collocation rows per interval holding the
+ * node (two at inner mesh points), periodicity at the end nodes, the phase
+ * row, and the T column over all collocation rows. */
+static size_t count_nonzeros(size_t n, size_t m, size_t N, size_t nnodes, int aut) {
   size_t nnz = n * (size_t)aut * N * m;
   for (size_t j = 0; j < nnodes; ++j) {
     size_t rows = (j % m == 0 && j != 0 && j != nnodes - 1) ? 2 * n * m : n * m;
@@ -515,25 +499,13 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
     rows += (size_t)aut;
     nnz += n * rows;
   }
-  if (nx >= (size_t)INT_MAX || nnz >= (size_t)INT_MAX || nx > SIZE_MAX / nx)
-    return ALLOC_FAIL("problem too large for int indices");
+  return nnz;
+}
 
-  whirl_colloc *c = calloc(1, sizeof *c);
-  if (!c) return ALLOC_FAIL("out of memory");
-  c->prob = prob;
-  c->n = n;
-  c->ntst = N;
-  c->ncol = m;
-  c->nnodes = nnodes;
-  c->nx = nx;
-  c->nnz = nnz;
-  c->aut = aut;
-  c->fpar = o->forcing_param;
-  c->nu = o->nu ? o->nu : 1;
-  c->t0 = o->t0;
-  c->floquet_rtol = o->floquet_rtol > 0 ? o->floquet_rtol : 1e-11;
-  c->floquet = o->floquet;
-  c->adapt_every = o->adapt_every;
+/* The work arrays; 0, or -1 out of memory. */
+static int alloc_arrays(whirl_colloc *c) {
+  const whirl_problem *prob = c->prob;
+  const size_t n = c->n, N = c->ntst, nnodes = c->nnodes, nx = c->nx, nnz = c->nnz;
   const size_t np = prob->npar ? prob->npar : 1;
   c->mesh = malloc((N + 1) * sizeof *c->mesh);
   c->old_mesh = malloc((N + 1) * sizeof *c->old_mesh);
@@ -557,9 +529,15 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   if (!c->mesh || !c->old_mesh || !c->Jp || !c->Ji || !c->Jx || !c->ref ||
       !c->phase || !c->old_X || !c->ref_new || !c->xc || !c->dx || !c->f ||
       !c->f2 || !c->J || !c->Jpar || !c->work || !c->pw || !c->r1 || !c->r2) {
-    whirl_colloc_free(c);
-    return ALLOC_FAIL("out of memory");
+    return -1;
   }
+  return 0;
+}
+
+/* The uniform mesh, Gauss points and weights, the Lagrange basis and its
+ * derivatives there, and the m-th derivative of the interpolant. */
+static void init_quadrature(whirl_colloc *c) {
+  const size_t m = c->ncol, N = c->ntst;
   for (size_t i = 0; i <= N; ++i) c->mesh[i] = (double)i / (double)N;
   c->mesh[N] = 1.0;
 
@@ -577,7 +555,12 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
     }
   }
 
-  /* pattern, rows sorted within each column */
+}
+
+/* The sparsity pattern of F_x, rows sorted within each column. */
+static void build_pattern(whirl_colloc *c) {
+  const size_t n = c->n, m = c->ncol, N = c->ntst, nnodes = c->nnodes, nx = c->nx;
+  const int aut = c->aut;
   size_t pos = 0;
   for (size_t j = 0; j < nnodes; ++j) {
     const size_t i0 = (j % m == 0 && j != 0) ? j / m - 1 : j / m;
@@ -596,6 +579,13 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   }
   c->Jp[nx] = (int)pos;
 
+}
+
+/* The model seen at a node (shim) and the continuation system. */
+static void init_system(whirl_colloc *c) {
+  const whirl_problem *prob = c->prob;
+  const size_t n = c->n;
+  const int aut = c->aut;
   c->shim = *prob;
   c->shim.rhs = colloc_shim_rhs;
   c->shim.jac_x = prob->jac_x ? colloc_shim_jac : NULL;
@@ -604,12 +594,12 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
 
   whirl_system *s = &c->sys;
   s->name = prob->name;
-  s->n = nx;
+  s->n = c->nx;
   s->npar = prob->npar;
   s->F = colloc_F;
   s->Fx = colloc_Fx;
   s->Fp = prob->jac_p ? colloc_Fp : NULL;
-  s->nnz = nnz;
+  s->nnz = c->nnz;
   s->Jp = c->Jp;
   s->Ji = c->Ji;
   s->Fx_sparse = colloc_Fx_sparse;
@@ -622,6 +612,58 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   s->x_names = NULL; /* node-major unknowns have no model names */
   s->p_names = prob->p_names;
   s->data = c;
+}
+
+whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
+                                 const whirl_colloc_options *o, char *errbuf,
+                                 size_t errlen) {
+  char why[200];
+  if (errbuf && errlen) errbuf[0] = '\0';
+  if (!prob || !prob->rhs || prob->n == 0)
+    return ALLOC_FAIL("model is NULL, has no rhs or n = 0");
+  if (!o) return ALLOC_FAIL("no options");
+  check_options(prob, o, why, sizeof why);
+  if (why[0]) return ALLOC_FAIL("%s", why);
+
+  const size_t n = prob->n, m = o->ncol, N = o->ntst;
+  const int aut = o->forcing_param < 0;
+  const size_t nnodes = N * m + 1; /* N, m bounded above: no overflow */
+  /* sizes first, in floating point so that nothing overflows: at most
+   * 2 n m + 2 nonzeros in each of the n nnodes + 1 columns */
+  if ((double)n * (double)nnodes + 1.0 >= (double)INT_MAX ||
+      (double)n * (double)nnodes * (2.0 * (double)n * (double)m + 3.0) >=
+          (double)INT_MAX)
+    return ALLOC_FAIL(
+        "problem too large for int indices "
+        "(reduce NTST, NCOL or the model's dimension)");
+  const size_t nx = n * nnodes + (size_t)aut;
+  const size_t nnz = count_nonzeros(n, m, N, nnodes, aut);
+  if (nx >= (size_t)INT_MAX || nnz >= (size_t)INT_MAX || nx > SIZE_MAX / nx)
+    return ALLOC_FAIL("problem too large for int indices");
+
+  whirl_colloc *c = calloc(1, sizeof *c);
+  if (!c) return ALLOC_FAIL("out of memory");
+  c->prob = prob;
+  c->n = n;
+  c->ntst = N;
+  c->ncol = m;
+  c->nnodes = nnodes;
+  c->nx = nx;
+  c->nnz = nnz;
+  c->aut = aut;
+  c->fpar = o->forcing_param;
+  c->nu = o->nu ? o->nu : 1;
+  c->t0 = o->t0;
+  c->floquet_rtol = o->floquet_rtol > 0 ? o->floquet_rtol : 1e-11;
+  c->floquet = o->floquet;
+  c->adapt_every = o->adapt_every;
+  if (alloc_arrays(c)) {
+    whirl_colloc_free(c);
+    return ALLOC_FAIL("out of memory");
+  }
+  init_quadrature(c);
+  build_pattern(c);
+  init_system(c);
   return c;
 }
 
