@@ -281,6 +281,101 @@ static int initial_step(whirl_ode *o, double posneg, double span,
 /* ------------------------------------------------------------------------
  * One step */
 
+/* The right-hand side at the start of the first step (later steps reuse
+ * the last stage: first same as last). */
+static int first_rhs(whirl_ode *o) {
+  int r = eval(o, o->t, o->x, o->k[0]);
+  if (r < 0)
+    return WHIRL_FAIL(o, WHIRL_EUSER,
+                      "right-hand side returned %d at t = %.17g", r, o->t);
+  if (r > 0) {
+    char what[64];
+    rhs_said(o, what, sizeof what);
+    return WHIRL_FAIL(o, WHIRL_ESTEP,
+                      "no step possible from t = %.17g: %s there", o->t, what);
+  }
+  o->have_f = 1;
+  return WHIRL_OK;
+}
+
+/* The six stages of a step of hh from (t, x) to tn (Dormand & Prince 1980,
+ * Butcher table above): k[1..6] and the 5th-order solution in xnew.  The
+ * rhs status: 0, or the first nonzero one. */
+static int stages(whirl_ode *o, double t, double hh, double tn) {
+  const size_t n = o->n;
+  const double *const x = o->x;
+  double *const xs = o->xs, *const xn = o->xnew;
+  double **k = o->k;
+  size_t i;
+  int r;
+  for (i = 0; i < n; ++i) xs[i] = x[i] + hh * A21 * k[0][i];
+  if ((r = eval(o, t + C2 * hh, xs, k[1])) != 0) return r;
+  for (i = 0; i < n; ++i)
+    xs[i] = x[i] + hh * (A31 * k[0][i] + A32 * k[1][i]);
+  if ((r = eval(o, t + C3 * hh, xs, k[2])) != 0) return r;
+  for (i = 0; i < n; ++i)
+    xs[i] = x[i] + hh * (A41 * k[0][i] + A42 * k[1][i] + A43 * k[2][i]);
+  if ((r = eval(o, t + C4 * hh, xs, k[3])) != 0) return r;
+  for (i = 0; i < n; ++i)
+    xs[i] = x[i] + hh * (A51 * k[0][i] + A52 * k[1][i] + A53 * k[2][i] +
+                         A54 * k[3][i]);
+  if ((r = eval(o, t + C5 * hh, xs, k[4])) != 0) return r;
+  for (i = 0; i < n; ++i)
+    xs[i] = x[i] + hh * (A61 * k[0][i] + A62 * k[1][i] + A63 * k[2][i] +
+                         A64 * k[3][i] + A65 * k[4][i]);
+  if ((r = eval(o, tn, xs, k[5])) != 0) return r;
+  for (i = 0; i < n; ++i)
+    xn[i] = x[i] + hh * (A71 * k[0][i] + A73 * k[2][i] + A74 * k[3][i] +
+                         A75 * k[4][i] + A76 * k[5][i]);
+  return eval(o, tn, xn, k[6]);
+}
+
+/* ode45's error test: max_i |e_i| / max(atol, rtol max(|x|, |x_new|)). */
+static double error_norm(const whirl_ode *o, double hh) {
+  const double *const x = o->x, *const xn = o->xnew;
+  double *const *k = o->k;
+  double err = 0.0;
+  for (size_t i = 0; i < o->n; ++i) {
+    const double e =
+        hh * (E1 * k[0][i] + E3 * k[2][i] + E4 * k[3][i] + E5 * k[4][i] +
+              E6 * k[5][i] + E7 * k[6][i]);
+    const double sk = fmax(o->atol, o->rtol * fmax(fabs(x[i]), fabs(xn[i])));
+    err = fmax(err, fabs(e) / sk);
+  }
+  return err;
+}
+
+/* Accept the step from t to tn: the dense output (CONTD5), then advance;
+ * the next step is hnew. */
+static void accept_step(whirl_ode *o, double t, double tn, double hh, double err,
+                        double hnew) {
+  const size_t n = o->n;
+  double *const x = o->x, *const xn = o->xnew;
+  double **k = o->k;
+  double *rc = o->rc;
+  for (size_t i = 0; i < n; ++i) {
+    const double ydiff = xn[i] - x[i];
+    const double bspl = hh * k[0][i] - ydiff;
+    rc[i] = ydiff;
+    rc[n + i] = bspl;
+    rc[2 * n + i] = ydiff - hh * k[6][i] - bspl;
+    rc[3 * n + i] = hh * (D1 * k[0][i] + D3 * k[2][i] + D4 * k[3][i] +
+                          D5 * k[4][i] + D6 * k[5][i] + D7 * k[6][i]);
+  }
+  memcpy(o->x_prev, x, n * sizeof *x);
+  memcpy(x, xn, n * sizeof *x);
+  double *tmp = k[0]; /* first same as last */
+  k[0] = k[6];
+  k[6] = tmp;
+  o->t_prev = t;
+  o->t = tn;
+  o->facold = fmax(err, 1e-4);
+  o->h = hnew;
+  o->reject_last = 0;
+  o->have_step = 1;
+  ++o->st.steps;
+}
+
 int whirl_ode_step(whirl_ode *o, double t_end) {
   if (o == NULL) return WHIRL_EINVAL;
   if (!o->started)
@@ -290,27 +385,10 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
     return WHIRL_FAIL(o, WHIRL_EINVAL, "t_end %g is not finite", t_end);
   if (t_end == o->t) return WHIRL_DONE;
 
-  const size_t n = o->n;
   const double posneg = t_end > o->t ? 1.0 : -1.0;
   const double hmax = o->h_max > 0.0 ? o->h_max : INFINITY;
-  double *const x = o->x, *const xs = o->xs, *const xn = o->xnew;
-  double **k = o->k;
   int r;
-
-  if (!o->have_f) {
-    r = eval(o, o->t, x, k[0]);
-    if (r < 0)
-      return WHIRL_FAIL(o, WHIRL_EUSER,
-                        "right-hand side returned %d at t = %.17g", r, o->t);
-    if (r > 0) {
-      char what[64];
-      rhs_said(o, what, sizeof what);
-      return WHIRL_FAIL(o, WHIRL_ESTEP,
-                        "no step possible from t = %.17g: %s there", o->t,
-                        what);
-    }
-    o->have_f = 1;
-  }
+  if (!o->have_f && (r = first_rhs(o)) != WHIRL_OK) return r;
   double h = o->h;
   if (!(h > 0.0)) {
     r = initial_step(o, posneg, fabs(t_end - o->t), hmax, &h);
@@ -329,79 +407,26 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
     const double hs = last ? span : h, hh = posneg * hs;
     const double tn = last ? t_end : t + hh;
     const char *why = NULL;
-    double err = 0.0;
 
-    size_t i;
-    for (i = 0; i < n; ++i) xs[i] = x[i] + hh * A21 * k[0][i];
-    if ((r = eval(o, t + C2 * hh, xs, k[1])) != 0) goto rhs_failed;
-    for (i = 0; i < n; ++i)
-      xs[i] = x[i] + hh * (A31 * k[0][i] + A32 * k[1][i]);
-    if ((r = eval(o, t + C3 * hh, xs, k[2])) != 0) goto rhs_failed;
-    for (i = 0; i < n; ++i)
-      xs[i] = x[i] + hh * (A41 * k[0][i] + A42 * k[1][i] + A43 * k[2][i]);
-    if ((r = eval(o, t + C4 * hh, xs, k[3])) != 0) goto rhs_failed;
-    for (i = 0; i < n; ++i)
-      xs[i] = x[i] + hh * (A51 * k[0][i] + A52 * k[1][i] + A53 * k[2][i] +
-                           A54 * k[3][i]);
-    if ((r = eval(o, t + C5 * hh, xs, k[4])) != 0) goto rhs_failed;
-    for (i = 0; i < n; ++i)
-      xs[i] = x[i] + hh * (A61 * k[0][i] + A62 * k[1][i] + A63 * k[2][i] +
-                           A64 * k[3][i] + A65 * k[4][i]);
-    if ((r = eval(o, tn, xs, k[5])) != 0) goto rhs_failed;
-    for (i = 0; i < n; ++i)
-      xn[i] = x[i] + hh * (A71 * k[0][i] + A73 * k[2][i] + A74 * k[3][i] +
-                           A75 * k[4][i] + A76 * k[5][i]);
-    if ((r = eval(o, tn, xn, k[6])) != 0) goto rhs_failed;
-
-    /* ode45's error test: max_i |e_i| / max(atol, rtol max(|x|, |x_new|)) */
-    for (i = 0; i < n; ++i) {
-      const double e =
-          hh * (E1 * k[0][i] + E3 * k[2][i] + E4 * k[3][i] + E5 * k[4][i] +
-                E6 * k[5][i] + E7 * k[6][i]);
-      const double sk =
-          fmax(o->atol, o->rtol * fmax(fabs(x[i]), fabs(xn[i])));
-      err = fmax(err, fabs(e) / sk);
-    }
-    if (!isfinite(err)) {
-      why = "non-finite error estimate";
-      goto quarter;
-    }
-
-    {
+    r = stages(o, t, hh, tn);
+    if (r < 0)
+      return WHIRL_FAIL(o, WHIRL_EUSER,
+                        "right-hand side returned %d in a step from t = %.17g",
+                        r, t);
+    const double err = r ? NAN : error_norm(o, hh);
+    if (!r && !isfinite(err)) why = "non-finite error estimate";
+    if (!r && !why) {
       /* PI controller of DOPRI5 */
       const double fac11 = pow(err, 0.2 - 0.75 * BETA);
       double fac = fac11 / pow(o->facold, BETA);
       fac = fmax(1.0 / FACMAX, fmin(1.0 / FACMIN, fac / SAFE));
       double hnew = hs / fac;
       if (err <= 1.0) {
-        /* accepted: dense output (CONTD5), then advance */
-        double *rc = o->rc;
-        for (i = 0; i < n; ++i) {
-          const double ydiff = xn[i] - x[i];
-          const double bspl = hh * k[0][i] - ydiff;
-          rc[i] = ydiff;
-          rc[n + i] = bspl;
-          rc[2 * n + i] = ydiff - hh * k[6][i] - bspl;
-          rc[3 * n + i] =
-              hh * (D1 * k[0][i] + D3 * k[2][i] + D4 * k[3][i] +
-                    D5 * k[4][i] + D6 * k[5][i] + D7 * k[6][i]);
-        }
-        memcpy(o->x_prev, x, n * sizeof *x);
-        memcpy(x, xn, n * sizeof *x);
-        double *tmp = k[0]; /* first same as last */
-        k[0] = k[6];
-        k[6] = tmp;
-        o->t_prev = t;
-        o->t = tn;
-        o->facold = fmax(err, 1e-4);
         hnew = fmin(hnew, hmax);
         if (o->reject_last) hnew = fmin(hnew, hs);
         /* a step shortened to hit t_end says little about the next one */
         if (last && hs < h) hnew = fmin(fmax(hnew, h), hmax);
-        o->h = hnew;
-        o->reject_last = 0;
-        o->have_step = 1;
-        ++o->st.steps;
+        accept_step(o, t, tn, hh, err, hnew);
         return WHIRL_OK;
       }
       hnew = hs / fmin(1.0 / FACMIN, fac11 / SAFE);
@@ -416,14 +441,8 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
       h = hnew;
       continue;
     }
-
-  rhs_failed:
-    if (r < 0)
-      return WHIRL_FAIL(o, WHIRL_EUSER,
-                        "right-hand side returned %d in a step from t = %.17g",
-                        r, t);
-  quarter:
-    /* recoverable failure: reject, retry with h/4 */
+    /* recoverable failure (the model's domain, a non-finite error):
+     * reject, retry with h/4 */
     ++o->st.rejected;
     o->reject_last = 1;
     h = hs / 4.0;
