@@ -347,7 +347,7 @@ static int start_samples(run_ctx *R, size_t m, double *xs, double *T) {
     return 0;
   }
   /* forced: integrate 200 periods from U, sample the next one */
-  const double w = R->par[md->forcing_param], Tf = 2.0 * M_PI / w;
+  const double w = R->par[md->forcing_param], Tf = 2.0 * WHIRL_PI / w;
   whirl_ode *ode = whirl_ode_alloc(&R->prob, R->par);
   if (!ode) return -1;
   int rc = whirl_ode_set_tolerances(ode, 1e-10, 1e-12);
@@ -525,7 +525,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
         return -1;
       }
       fprintf(R->log, "Hopf start at label %d: omega = %.10g, period %.10g\n",
-              so->label, w, 2 * M_PI / w);
+              so->label, w, 2 * WHIRL_PI / w);
       b.dir = O->D;
     } else if (so->kind == RUN_COLLOC) {
       if ((size_t)so->ntst == co.ntst && (size_t)so->ncol == co.ncol) {

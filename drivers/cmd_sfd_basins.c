@@ -59,7 +59,7 @@ static int write_script(cli_outdir *od, const whirl_sfd_attractors *A, size_t na
              "set xlabel 'y_0'\nset ylabel 'z_0'\nset key outside right top box opaque\n"
              "set object 1 circle at 0,0 size 1 fs empty border lc rgb 'black' lw 2\n",
           Om, vel);
-  const char *names[20];
+  const char *names[WHIRL_BASINS_MAX_ATTRACTORS + 3]; /* and the 3 outcomes */
   size_t nn = 0;
   /* only the classes that occur, so the key says what is drawn */
   for (size_t j = 0; j < na; ++j)
@@ -129,7 +129,7 @@ int cmd_sfd_basins(int argc, char **argv) {
   if (sfd_check_tolerances(CMD, rtol, atol)) return 2;
   int orc = cli_outdir_check(CMD, NULL, dir); /* before the work, not after */
   if (orc) return orc;
-  const double Om = p[WHIRL_SFD_OMEGA], T = 2 * M_PI / Om;
+  const double Om = p[WHIRL_SFD_OMEGA], T = 2 * WHIRL_PI / Om;
   char msg[512];
   double t_start = cli_now();
 
@@ -227,7 +227,7 @@ int cmd_sfd_basins(int argc, char **argv) {
   }
 
   /* 4. tally and write */
-  size_t cnt[16] = {0}, ncontact = 0, nunset = 0, nfail = 0;
+  size_t cnt[WHIRL_BASINS_MAX_ATTRACTORS] = {0}, ncontact = 0, nunset = 0, nfail = 0;
   for (size_t i = 0; i < n; ++i) {
     if (which[i] >= 0) ++cnt[which[i]];
     else if (which[i] == WHIRL_BASIN_DOMAIN) ++ncontact;

@@ -48,7 +48,7 @@ static int from_rest(double *p, size_t periods, double rtol, double atol, unsign
   }
   whirl_basins_options bo;
   whirl_basins_options_default(&bo);
-  bo.period = 2 * M_PI / p[WHIRL_SFD_OMEGA];
+  bo.period = 2 * WHIRL_PI / p[WHIRL_SFD_OMEGA];
   bo.max_periods = periods;
   bo.rtol = rtol;
   bo.atol = atol;

@@ -117,10 +117,10 @@ static row make_row(const whirl_branch *b, size_t i) {
   r.phase = atan2(-r.v, r.u);
   r.mure = b->nspec ? q->spec_re[0] : NAN;
   r.muim = b->nspec ? fabs(q->spec_im[0]) : NAN;
-  r.maxmult = exp(2.0 * M_PI * r.mure / r.Om);
+  r.maxmult = exp(2.0 * WHIRL_PI * r.mure / r.Om);
   r.itype = q->type;
   r.eps_min = r.eps;
-  r.period = 2.0 * M_PI / r.Om;
+  r.period = 2.0 * WHIRL_PI / r.Om;
   r.residual = NAN;
   return r;
 }

@@ -173,7 +173,7 @@ int cmd_sfd_simulate(int argc, char **argv) {
   int orc = cli_outdir_check(CMD, NULL, dir); /* before the work, not after */
   if (orc) return orc;
 
-  const double Om = p[WHIRL_SFD_OMEGA], T = 2 * M_PI / Om;
+  const double Om = p[WHIRL_SFD_OMEGA], T = 2 * WHIRL_PI / Om;
   const size_t nsamp = periods * samples;
   whirl_ode *ode = whirl_ode_alloc(whirl_sfd_fixed(), p);
   cli_progress prog;

@@ -259,7 +259,7 @@ int cmd_sfd_sweep(int argc, char **argv) {
       cli_progress_show(&prog, done, total);
       double Om = pass == 0 ? lo + step * (double)j : hi - step * (double)j;
       p[WHIRL_SFD_OMEGA] = Om;
-      const double T = 2 * M_PI / Om;
+      const double T = 2 * WHIRL_PI / Om;
       whirl_ode *ode = whirl_ode_alloc(whirl_sfd_fixed(), p);
       if (!ode || whirl_ode_set_tolerances(ode, rtol, atol) != WHIRL_OK) {
         cli_error(CMD, "cannot set up the integrator (out of memory or bad tolerances)");

@@ -158,7 +158,7 @@ int run_basins(run_ctx *R) {
     }
   whirl_basins_options o;
   whirl_basins_options_default(&o);
-  o.period = fp >= 0 ? 2.0 * M_PI / R->par[fp] : 1.0;
+  o.period = fp >= 0 ? 2.0 * WHIRL_PI / R->par[fp] : 1.0;
   o.max_periods = (size_t)s->basin_periods;
   o.rtol = 1e-9;
   o.atol = 1e-12;

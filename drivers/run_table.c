@@ -154,7 +154,7 @@ int run_point_measures(const run_ctx *R, run_kind kind, const void *obj,
     const size_t m = 8 * (2 * (size_t)R->s->nhb + 1);
     for (size_t i = 0; i < n; i++) mx[i] = -HUGE_VAL;
     for (size_t k = 0; k < m; k++) {
-      whirl_hbm_eval(h, xb, 2.0 * M_PI * (double)k / (double)m, v);
+      whirl_hbm_eval(h, xb, 2.0 * WHIRL_PI * (double)k / (double)m, v);
       double s = 0.0;
       for (size_t i = 0; i < n; i++) s += v[i] * v[i], mx[i] = fmax(mx[i], v[i]);
       l2 += s / (double)m;

@@ -184,7 +184,10 @@ static int cycle_test(double t, const double *x, void *data) {
 
 /* ------------------------------------------------------ attractor set */
 
-#define MAX_ATT 8
+/* every stable circular orbit the solver can return (16) and the limit
+ * cycle: no attractor is ever left out */
+#define MAX_CIRC 16
+#define MAX_ATT (MAX_CIRC + 1)
 
 struct whirl_sfd_attractors {
   size_t n;
@@ -463,19 +466,19 @@ int whirl_sfd_attractors_find(const double *p,
   whirl_sfd_attractors *a = calloc(1, sizeof *a);
   if (!a) return WHIRL_ENOMEM;
 
-  double eps[16], mr[16];
-  int stable[16];
+  double eps[MAX_CIRC], mr[MAX_CIRC];
+  int stable[MAX_CIRC];
   size_t ncirc = 0;
-  int rc = whirl_sfd_circular_orbits(p, eps, stable, mr, 16, &ncirc);
+  int rc = whirl_sfd_circular_orbits(p, eps, stable, mr, MAX_CIRC, &ncirc);
   if (rc != WHIRL_OK) {
     WHIRL_ERRMSG(errbuf, errlen, rc, "attractors: circular orbits: %s",
                  whirl_strerror(rc));
     free(a);
     return rc;
   }
-  if (ncirc > 16) ncirc = 16;
+  if (ncirc > MAX_CIRC) ncirc = MAX_CIRC; /* the solver returns at most that */
   const double Om = p[WHIRL_SFD_OMEGA];
-  double xall[16][4];
+  double xall[MAX_CIRC][4];
   for (size_t i = 0; i < ncirc; ++i)
     whirl_sfd_circ_state(eps[i], Om, p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA],
                          p[WHIRL_SFD_ZETA], xall[i]);

@@ -14,7 +14,7 @@
 
 #include <whirl/basins.h>
 
-#define MAX_ATTRACTORS 32
+#define MAX_ATTRACTORS WHIRL_BASINS_MAX_ATTRACTORS
 
 void whirl_basins_options_default(whirl_basins_options *o) {
   if (!o) return;

@@ -43,6 +43,9 @@ enum {
 };
 
 /* Limits on the options, checked by whirl_basins_compute. */
+/* The most attractors one whirl_basins_compute call classifies into
+ * (more: WHIRL_EINVAL with a message). */
+#define WHIRL_BASINS_MAX_ATTRACTORS 32
 #define WHIRL_BASINS_MAX_THREADS 1024
 #define WHIRL_BASINS_RTOL_MIN 1e-13
 #define WHIRL_BASINS_RTOL_MAX 1e-3
