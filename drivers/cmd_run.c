@@ -102,12 +102,13 @@ static double uz_quantity(size_t k, const double *x, const double *p, void *ctx)
   const int w = u->what[k];
   base_of(b, x, p, u->pfull);
   if (w >= 0) return u->pfull[w];
-  if (w == -1)
-    return b->kind == RUN_COLLOC ? whirl_colloc_period(b->colloc, x, u->pfull)
-                                 : whirl_hbm_period(b->hbm, x, u->pfull);
   if (b->kind == RUN_EQ) return x[-2 - w];
-  double l2, period;
   const void *obj = b->kind == RUN_COLLOC ? (const void *)b->colloc : (const void *)b->hbm;
+  if (w == -1) {
+    const whirl_periodic po = run_periodic(b->kind, obj);
+    return whirl_periodic_period(&po, x, u->pfull);
+  }
+  double l2, period;
   if (run_point_measures(u->R, b->kind, obj, x, u->pfull, &l2, &period, u->state))
     return NAN;
   return u->state[-2 - w];

@@ -111,6 +111,9 @@ int run_table_header(run_ctx *R, run_kind kind, int icp, int q);
 int run_point_measures(const run_ctx *R, run_kind kind, const void *obj,
                        const double *xb, const double *p, double *l2,
                        double *period, double *mx);
+/* The periodic orbit of a branch of this kind (RUN_COLLOC, RUN_HBM) as
+ * the library's one interface (whirl/periodic.h). */
+whirl_periodic run_periodic(run_kind kind, const void *obj);
 int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br, size_t pt,
                   const char *ty, int lab, const double *xb, const double *p,
                   int stable, double *l2out, double *period, double *state);

@@ -62,108 +62,24 @@ int run_table_header(run_ctx *R, run_kind kind, int icp, int q) {
   return ferror(f) ? -1 : 0;
 }
 
-static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0.0,
-                             0.5384693101056831, 0.9061798459386640};
-static const double gw[5] = {0.2369268850561891, 0.4786286704993665,
-                             0.5688888888888889, 0.4786286704993665,
-                             0.2369268850561891};
-
-/* The maximum of each component of the collocation polynomial over the
- * orbit, mx[n] (on entry: the maxima over the nodes).  AUTO prints the
- * maximum over its mesh and collocation nodes, which depends on the mesh:
- * on a spike (ab's u2) two meshes differ in the 4th digit.  Here the
- * polynomial is sampled at 8 points per node interval and every sample
- * maximum is refined by golden-section search between its neighbours, so
- * MAX is that of the orbit, to its accuracy (doc/auto-reference.md). */
-static int colloc_max(const whirl_colloc *c, const double *xb,
-                      const double *mesh, size_t ntst, size_t n, double *mx,
-                      double *v) {
-  const size_t ncol = (whirl_colloc_size(c) / n - 1) / ntst, sub = 8;
-  const size_t ns = ntst * ncol * sub; /* samples over [0, 1) */
-  double *best = malloc(2 * n * sizeof *best), *arg = best + n;
-  if (!best) return -1;
-  for (size_t i = 0; i < n; i++) best[i] = -HUGE_VAL, arg[i] = 0.0;
-  for (size_t q = 0; q < ns; q++) {
-    const size_t k = q / (ncol * sub), r = q % (ncol * sub);
-    const double tau = mesh[k] + (mesh[k + 1] - mesh[k]) * (double)r / (double)(ncol * sub);
-    whirl_colloc_eval(c, xb, tau, v);
-    for (size_t i = 0; i < n; i++)
-      if (v[i] > best[i]) best[i] = v[i], arg[i] = tau;
-  }
-  const double g = 0.5 * (sqrt(5.0) - 1.0);
-  for (size_t i = 0; i < n; i++) {
-    /* the neighbouring samples bracket the maximum (within one interval
-     * of the mesh at most, where the polynomial is smooth) */
-    size_t k = 0;
-    while (k + 1 < ntst && mesh[k + 1] <= arg[i]) k++;
-    const double h = (mesh[k + 1] - mesh[k]) / (double)(ncol * sub);
-    double a = fmax(arg[i] - h, 0.0), b = fmin(arg[i] + h, 1.0);
-    double x1 = b - g * (b - a), x2 = a + g * (b - a), f1, f2;
-    whirl_colloc_eval(c, xb, x1, v), f1 = v[i];
-    whirl_colloc_eval(c, xb, x2, v), f2 = v[i];
-    for (int it = 0; it < 60 && b - a > 1e-15; it++) {
-      if (f1 < f2) {
-        a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a);
-        whirl_colloc_eval(c, xb, x2, v), f2 = v[i];
-      } else {
-        b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a);
-        whirl_colloc_eval(c, xb, x1, v), f1 = v[i];
-      }
-    }
-    mx[i] = fmax(mx[i], fmax(best[i], fmax(f1, f2)));
-  }
-  free(best);
-  return 0;
+whirl_periodic run_periodic(run_kind kind, const void *obj) {
+  return kind == RUN_COLLOC ? whirl_periodic_of_colloc(obj) : whirl_periodic_of_hbm(obj);
 }
 
 int run_point_measures(const run_ctx *R, run_kind kind, const void *obj,
                        const double *xb, const double *p, double *l2out,
                        double *period_out, double *mx) {
-  const size_t n = R->n;
-  double *v = calloc(n, sizeof *v);
-  if (!v) return -1;
-  double l2 = 0.0, period = 0.0;
   if (kind == RUN_EQ) {
-    for (size_t i = 0; i < n; i++) l2 += xb[i] * xb[i], mx[i] = xb[i];
-  } else if (kind == RUN_COLLOC) {
-    const whirl_colloc *c = obj;
-    const double *mesh = whirl_colloc_mesh(c);
-    size_t nx = whirl_colloc_size(c), nn = (nx - (R->prob.autonomous ? 1 : 0)) / n;
-    size_t ntst = 0;
-    while (mesh[ntst] < 1.0) ntst++;
-    period = whirl_colloc_period(c, xb, p);
-    for (size_t i = 0; i < n; i++) mx[i] = -HUGE_VAL;
-    for (size_t j = 0; j < nn; j++)
-      for (size_t i = 0; i < n; i++) mx[i] = fmax(mx[i], xb[n * j + i]);
-    if (colloc_max(c, xb, mesh, ntst, n, mx, v)) {
-      free(v);
-      return -1;
-    }
-    for (size_t k = 0; k < ntst; k++) {
-      const double a = mesh[k], h = mesh[k + 1] - mesh[k];
-      for (int g = 0; g < 5; g++) {
-        whirl_colloc_eval(c, xb, a + 0.5 * h * (1.0 + gx[g]), v);
-        double s = 0.0;
-        for (size_t i = 0; i < n; i++) s += v[i] * v[i];
-        l2 += 0.5 * h * gw[g] * s;
-      }
-    }
-  } else {
-    const whirl_hbm *h = obj;
-    period = whirl_hbm_period(h, xb, p);
-    const size_t m = 8 * (2 * (size_t)R->s->nhb + 1);
-    for (size_t i = 0; i < n; i++) mx[i] = -HUGE_VAL;
-    for (size_t k = 0; k < m; k++) {
-      whirl_hbm_eval(h, xb, 2.0 * WHIRL_PI * (double)k / (double)m, v);
-      double s = 0.0;
-      for (size_t i = 0; i < n; i++) s += v[i] * v[i], mx[i] = fmax(mx[i], v[i]);
-      l2 += s / (double)m;
-    }
+    double l2 = 0.0;
+    for (size_t i = 0; i < R->n; i++) l2 += xb[i] * xb[i], mx[i] = xb[i];
+    *l2out = sqrt(l2);
+    *period_out = 0.0;
+    return 0;
   }
-  *l2out = sqrt(l2);
-  *period_out = period;
-  free(v);
-  return 0;
+  const whirl_periodic po = run_periodic(kind, obj);
+  *period_out = whirl_periodic_period(&po, xb, p);
+  *l2out = whirl_periodic_l2norm(&po, xb);
+  return whirl_periodic_max(&po, xb, mx) != WHIRL_OK || isnan(*l2out) ? -1 : 0;
 }
 
 int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,

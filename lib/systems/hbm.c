@@ -493,3 +493,66 @@ int whirl_hbm_time_residual(whirl_hbm *h, const double *X, const double *p,
   *res = worst;
   return rc;
 }
+
+/* ---- measures of the orbit ----------------------------------------------- */
+
+/* Component i of the series at θ and its first two θ-derivatives. */
+static void series_derivs(const whirl_hbm *h, const double *c, double th,
+                          double *u, double *du, double *ddu) {
+  double s = c[0], d1 = 0.0, d2 = 0.0;
+  for (size_t k = 1; k <= h->N; ++k) {
+    const double kk = (double)k, ck = cos(kk * th), sk = sin(kk * th);
+    const double a = c[2 * k - 1], b = c[2 * k];
+    s += a * ck + b * sk;
+    d1 += kk * (b * ck - a * sk);
+    d2 -= kk * kk * (a * ck + b * sk);
+  }
+  *u = s, *du = d1, *ddu = d2;
+}
+
+/* The samples the measures take: 8 per degree of freedom of the series. */
+static size_t measure_samples(const whirl_hbm *h) { return 8 * (2 * h->N + 1); }
+
+int whirl_hbm_max(const whirl_hbm *h, const double *X, double *mx) {
+  if (!h || !X || !mx) return WHIRL_EINVAL;
+  const size_t L = h->L, m = measure_samples(h);
+  const double step = 2.0 * WHIRL_PI / (double)m;
+  for (size_t i = 0; i < h->n; ++i) {
+    const double *c = X + i * L;
+    double best = -HUGE_VAL, arg = 0.0, u, du, ddu;
+    for (size_t k = 0; k < m; ++k) {
+      series_derivs(h, c, step * (double)k, &u, &du, &ddu);
+      if (u > best) best = u, arg = step * (double)k;
+    }
+    /* Newton on u'(θ) = 0 from the best sample: the maximum of the
+     * trigonometric polynomial, not of its samples (they fall short by up
+     * to (step/2)² |u''| / 2) */
+    double th = arg;
+    for (int it = 0; it < 30; ++it) {
+      series_derivs(h, c, th, &u, &du, &ddu);
+      if (!(ddu < 0.0)) break;
+      const double d = du / ddu;
+      th -= d;
+      if (fabs(th - arg) > step) break; /* left the sample's neighbourhood */
+      if (fabs(d) < 1e-15) break;
+    }
+    series_derivs(h, c, th, &u, &du, &ddu);
+    if (fabs(th - arg) <= step && u > best) best = u;
+    mx[i] = best * h->scale[i];
+  }
+  return WHIRL_OK;
+}
+
+double whirl_hbm_l2norm(const whirl_hbm *h, const double *X) {
+  const size_t m = measure_samples(h), n = h->n;
+  double l2 = 0.0, *v = malloc(n * sizeof *v);
+  if (!v) return NAN;
+  for (size_t k = 0; k < m; k++) {
+    whirl_hbm_eval(h, X, 2.0 * WHIRL_PI * (double)k / (double)m, v);
+    double s = 0.0;
+    for (size_t i = 0; i < n; i++) s += v[i] * v[i];
+    l2 += s / (double)m;
+  }
+  free(v);
+  return sqrt(l2);
+}

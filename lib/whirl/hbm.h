@@ -93,6 +93,16 @@ WHIRL_API void whirl_hbm_set_phase(const whirl_hbm *h, double *X);
 WHIRL_API void whirl_hbm_eval(const whirl_hbm *h, const double *X,
                               double theta, double *x);
 
+/* The maximum over the orbit of each component, mx[n]: the maximum of the
+ * truncated series (Newton on its derivative from the largest of 8(2N+1)
+ * samples), not of samples.  WHIRL_OK or WHIRL_EINVAL. */
+WHIRL_API int whirl_hbm_max(const whirl_hbm *h, const double *X, double *mx);
+
+/* AUTO's L2-NORM of the orbit, sqrt(∫₀¹ |x(τ)|² dτ) (exact for the series:
+ * 8(2N+1) samples of a trigonometric polynomial of degree 2N); NaN when out
+ * of memory. */
+WHIRL_API double whirl_hbm_l2norm(const whirl_hbm *h, const double *X);
+
 /* Largest |x' − f(t, x, p)| of the truncated series over K·M equally spaced
  * phases: the time-domain residual (it measures the truncation error; the
  * Galerkin residual F is what Newton drives to zero). */

@@ -18,6 +18,7 @@
 
 #include <whirl/branch.h>
 #include <whirl/colloc.h>
+#include <whirl/periodic.h>
 #include <whirl/cont.h>
 #include <whirl/linsol.h>
 #include <whirl/ode.h>
@@ -527,6 +528,17 @@ static void test_lambda_omega(void) {
     is_abs(hypot(xe[0], xe[1]), r, 1e-7, "eval at τ = 0.337 lies on the cycle");
     ok(fabs(xe[0] - xw[0]) < 1e-14 && fabs(xe[1] - xw[1]) < 1e-14,
        "eval wraps τ periodically");
+    /* the one periodic-orbit interface: on the circle of radius r the
+     * maximum of each component is r, the L2-NORM r, the period 2π */
+    const whirl_periodic po = whirl_periodic_of_colloc(c);
+    double pmx[2];
+    const int rcm = whirl_periodic_max(&po, X, pmx);
+    ok(rcm == WHIRL_OK && !strcmp(whirl_periodic_method(&po), "colloc") &&
+           fabs(pmx[0] - r) < 1e-7 && fabs(pmx[1] - r) < 1e-7 &&
+           fabs(whirl_periodic_l2norm(&po, X) - r) < 1e-7 &&
+           fabs(whirl_periodic_period(&po, X, p) - 2.0 * PI) < 1e-9,
+       "periodic interface over collocation: MAX %.10f, %.10f, L2 %.10f (r = %.10f)",
+       pmx[0], pmx[1], whirl_periodic_l2norm(&po, X), r);
     /* the phase: x(τ) = r (cos 2π(τ + φ), sin ...) with φ from the phase
      * condition against the reference circle starting at (1.1 r, 0): φ = 0 */
     is_abs(atan2(X[1], X[0]), 0.0, 1e-9,

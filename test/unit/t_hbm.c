@@ -431,7 +431,77 @@ static void test_bad(void) {
      "zero harmonics rejected: %s", err);
 }
 
+
+/* The maximum over the orbit is the series' maximum (whirl_hbm_max), not
+ * that of its samples: an orbit whose first component is the trigonometric
+ * polynomial u(θ) = 0.3 + cos(θ − 0.05) + 0.4 sin(3θ + 0.7), its second
+ * u'(θ).  Reference: the maximum over 10^6 phases refined by golden-section
+ * search (independent of the library's Newton refinement). */
+static double poly_u(double th) { return 0.3 + cos(th - 0.05) + 0.4 * sin(3.0 * th + 0.7); }
+static double poly_du(double th) { return -sin(th - 0.05) + 1.2 * cos(3.0 * th + 0.7); }
+static double dense_max(double (*f)(double)) {
+  const size_t m = 1000000;
+  double best = -HUGE_VAL, arg = 0.0;
+  for (size_t k = 0; k < m; ++k) {
+    const double th = 2.0 * WHIRL_PI * (double)k / (double)m, v = f(th);
+    if (v > best) best = v, arg = th;
+  }
+  const double g = 0.5 * (sqrt(5.0) - 1.0), h = 2.0 * WHIRL_PI / (double)m;
+  double a = arg - h, b = arg + h;
+  for (int it = 0; it < 200 && b - a > 1e-15; ++it) {
+    const double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    if (f(x1) < f(x2)) a = x1; else b = x2;
+  }
+  return fmax(best, f(0.5 * (a + b)));
+}
+
+static void test_true_max(void) {
+  whirl_hbm_options o;
+  whirl_hbm_options_default(&o);
+  o.harmonics = 3;
+  o.forcing_param = 0;
+  char err[256];
+  whirl_hbm *h = whirl_hbm_alloc(&duffing, &o, err, sizeof err);
+  ok(h != NULL, "hbm for the maximum test: %s", h ? "allocated" : err);
+  if (!h) return;
+  const size_t m = 64;
+  double xs[2 * 64], *X = calloc(whirl_hbm_size(h), sizeof *X), mx[2];
+  for (size_t k = 0; k < m; ++k) {
+    const double th = 2.0 * WHIRL_PI * (double)k / (double)m;
+    xs[2 * k] = poly_u(th), xs[2 * k + 1] = poly_du(th);
+  }
+  const int rc = whirl_hbm_from_samples(h, xs, m, 2.0 * WHIRL_PI, X);
+  const double ref0 = dense_max(poly_u), ref1 = dense_max(poly_du);
+  /* the samples the maximum starts from: 8 (2N + 1) phases */
+  double s0 = -HUGE_VAL, v[2];
+  for (size_t k = 0; k < 56; ++k) {
+    whirl_hbm_eval(h, X, 2.0 * WHIRL_PI * (double)k / 56.0, v);
+    s0 = fmax(s0, v[0]);
+  }
+  const int rcm = whirl_hbm_max(h, X, mx);
+  ok(rc == WHIRL_OK && rcm == WHIRL_OK &&
+         fabs(mx[0] - ref0) < 1e-12 && fabs(mx[1] - ref1) < 1e-12,
+     "whirl_hbm_max is the series' maximum: %.15f, %.15f (reference %.15f, %.15f)",
+     mx[0], mx[1], ref0, ref1);
+  ok(ref0 - s0 > 1e-4, "... where the 56 samples fall short by %.2e", ref0 - s0);
+  const whirl_periodic po = whirl_periodic_of_hbm(h);
+  double pmx[2];
+  const double l2 = whirl_periodic_l2norm(&po, X);
+  const int rcp = whirl_periodic_max(&po, X, pmx);
+  /* ∫ u² over a period / 2π: 0.09 + 1/2 + 0.08; ∫ u'² / 2π: 1/2 + 0.72 */
+  const double l2_ref = sqrt(0.09 + 0.5 + 0.08 + 0.5 + 0.72);
+  ok(!strcmp(whirl_periodic_method(&po), "hbm") &&
+         whirl_periodic_size(&po) == whirl_hbm_size(h) &&
+         rcp == WHIRL_OK && pmx[0] == mx[0] &&
+         fabs(l2 - l2_ref) < 1e-13,
+     "the periodic interface over hbm: max, L2-NORM %.15f (closed form %.15f)", l2,
+     l2_ref);
+  free(X);
+  whirl_hbm_free(h);
+}
+
 int main(void) {
+  test_true_max();
   test_jacobians();
   test_sfd_circular();
   test_duffing();

@@ -1,0 +1,143 @@
+/* lib/systems/periodic.c — one interface to the discretisations of a
+ * periodic orbit (whirl/periodic.h): the adapters for harmonic balance and
+ * collocation, and the collocation orbit's maximum and L2 norm.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <stdlib.h>
+
+#include <whirl/periodic.h>
+
+#include "colloc_impl.h"
+
+/* ---- collocation: the maximum and the L2 norm of the orbit -------------- */
+
+static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0.0,
+                             0.5384693101056831, 0.9061798459386640};
+static const double gw[5] = {0.2369268850561891, 0.4786286704993665,
+                             0.5688888888888889, 0.4786286704993665,
+                             0.2369268850561891};
+
+/* Refine the maximum of component i near the sample arg by golden-section
+ * search between its neighbouring samples (within one mesh interval,
+ * where the polynomial is smooth); the larger of it and best. */
+static double refine_max(const whirl_colloc *c, const double *x, size_t i,
+                         double arg, double best, double *v) {
+  const double *mesh = c->mesh, g = 0.5 * (sqrt(5.0) - 1.0);
+  const size_t sub = 8;
+  size_t k = 0;
+  while (k + 1 < c->ntst && mesh[k + 1] <= arg) k++;
+  const double h = (mesh[k + 1] - mesh[k]) / (double)(c->ncol * sub);
+  double a = fmax(arg - h, 0.0), b = fmin(arg + h, 1.0);
+  double x1 = b - g * (b - a), x2 = a + g * (b - a), f1, f2;
+  whirl_colloc_eval(c, x, x1, v), f1 = v[i];
+  whirl_colloc_eval(c, x, x2, v), f2 = v[i];
+  for (int it = 0; it < 60 && b - a > 1e-15; it++) {
+    if (f1 < f2) {
+      a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a);
+      whirl_colloc_eval(c, x, x2, v), f2 = v[i];
+    } else {
+      b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a);
+      whirl_colloc_eval(c, x, x1, v), f1 = v[i];
+    }
+  }
+  return fmax(best, fmax(f1, f2));
+}
+
+/* AUTO prints the maximum over its mesh and collocation nodes, which
+ * depends on the mesh: on a spike (ab's u2) two meshes differ in the 4th
+ * digit.  Here it is the maximum of the polynomial, to its accuracy
+ * (doc/auto-reference.md). */
+int whirl_colloc_max(const whirl_colloc *c, const double *x, double *mx) {
+  if (!c || !x || !mx) return WHIRL_EINVAL;
+  const size_t n = c->n, ntst = c->ntst, ncol = c->ncol, sub = 8;
+  const size_t ns = ntst * ncol * sub; /* samples over [0, 1) */
+  double *best = malloc(3 * n * sizeof *best), *arg = best + n, *v = best + 2 * n;
+  if (!best) return WHIRL_ENOMEM;
+  for (size_t i = 0; i < n; i++) mx[i] = -HUGE_VAL;
+  for (size_t j = 0; j < c->nnodes; j++) /* the nodes */
+    for (size_t i = 0; i < n; i++) mx[i] = fmax(mx[i], x[n * j + i]);
+  for (size_t i = 0; i < n; i++) best[i] = -HUGE_VAL, arg[i] = 0.0;
+  for (size_t q = 0; q < ns; q++) {
+    const size_t k = q / (ncol * sub), r = q % (ncol * sub);
+    const double *mesh = c->mesh;
+    const double tau = mesh[k] + (mesh[k + 1] - mesh[k]) * (double)r / (double)(ncol * sub);
+    whirl_colloc_eval(c, x, tau, v);
+    for (size_t i = 0; i < n; i++)
+      if (v[i] > best[i]) best[i] = v[i], arg[i] = tau;
+  }
+  for (size_t i = 0; i < n; i++)
+    mx[i] = fmax(mx[i], refine_max(c, x, i, arg[i], best[i], v));
+  free(best);
+  return WHIRL_OK;
+}
+
+double whirl_colloc_l2norm(const whirl_colloc *c, const double *x) {
+  const size_t n = c->n;
+  double *v = malloc(n * sizeof *v), l2 = 0.0;
+  if (!v) return NAN;
+  for (size_t k = 0; k < c->ntst; k++) {
+    const double a = c->mesh[k], h = c->mesh[k + 1] - c->mesh[k];
+    for (int g = 0; g < 5; g++) {
+      whirl_colloc_eval(c, x, a + 0.5 * h * (1.0 + gx[g]), v);
+      double s = 0.0;
+      for (size_t i = 0; i < n; i++) s += v[i] * v[i];
+      l2 += 0.5 * h * gw[g] * s;
+    }
+  }
+  free(v);
+  return sqrt(l2);
+}
+
+/* ---- the adapters ----------------------------------------------------------- */
+
+static size_t hbm_size(const void *o) { return whirl_hbm_size(o); }
+static double hbm_period(const void *o, const double *x, const double *p) {
+  return whirl_hbm_period(o, x, p);
+}
+static int hbm_eval(const void *o, const double *x, double tau, double *u) {
+  whirl_hbm_eval(o, x, 2.0 * WHIRL_PI * tau, u);
+  return WHIRL_OK;
+}
+static int hbm_max(const void *o, const double *x, double *mx) {
+  return whirl_hbm_max(o, x, mx);
+}
+static double hbm_l2(const void *o, const double *x) { return whirl_hbm_l2norm(o, x); }
+
+static size_t colloc_size(const void *o) { return whirl_colloc_size(o); }
+static double colloc_period(const void *o, const double *x, const double *p) {
+  return whirl_colloc_period(o, x, p);
+}
+static int colloc_eval(const void *o, const double *x, double tau, double *u) {
+  return whirl_colloc_eval(o, x, tau, u);
+}
+static int colloc_max_op(const void *o, const double *x, double *mx) {
+  return whirl_colloc_max(o, x, mx);
+}
+static double colloc_l2(const void *o, const double *x) { return whirl_colloc_l2norm(o, x); }
+
+static const whirl_periodic_ops hbm_ops = {"hbm", hbm_size, hbm_period, hbm_eval,
+                                           hbm_max, hbm_l2};
+static const whirl_periodic_ops colloc_ops = {"colloc", colloc_size, colloc_period,
+                                              colloc_eval, colloc_max_op, colloc_l2};
+
+whirl_periodic whirl_periodic_of_hbm(const whirl_hbm *h) {
+  return (whirl_periodic){&hbm_ops, h};
+}
+whirl_periodic whirl_periodic_of_colloc(const whirl_colloc *c) {
+  return (whirl_periodic){&colloc_ops, c};
+}
+
+const char *whirl_periodic_method(const whirl_periodic *po) { return po->ops->method; }
+size_t whirl_periodic_size(const whirl_periodic *po) { return po->ops->size(po->obj); }
+double whirl_periodic_period(const whirl_periodic *po, const double *x, const double *p) {
+  return po->ops->period(po->obj, x, p);
+}
+int whirl_periodic_eval(const whirl_periodic *po, const double *x, double tau, double *u) {
+  return po->ops->eval(po->obj, x, tau, u);
+}
+int whirl_periodic_max(const whirl_periodic *po, const double *x, double *mx) {
+  return po->ops->max(po->obj, x, mx);
+}
+double whirl_periodic_l2norm(const whirl_periodic *po, const double *x) {
+  return po->ops->l2norm(po->obj, x);
+}
