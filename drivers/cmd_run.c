@@ -62,7 +62,7 @@ static void usage(FILE *f) {
 /* ---- one branch --------------------------------------------------------- */
 
 typedef struct branch_spec {
-  run_kind kind;           /* base kind */
+  whirl_solution_kind kind;           /* base kind */
   whirl_colloc *colloc;    /* base objects (borrowed) */
   whirl_hbm *hbm;
   whirl_fold *fold;        /* locus layers (borrowed), or NULL */
@@ -102,8 +102,8 @@ static double uz_quantity(size_t k, const double *x, const double *p, void *ctx)
   const int w = u->what[k];
   base_of(b, x, p, u->pfull);
   if (w >= 0) return u->pfull[w];
-  if (b->kind == RUN_EQ) return x[-2 - w];
-  const void *obj = b->kind == RUN_COLLOC ? (const void *)b->colloc : (const void *)b->hbm;
+  if (b->kind == WHIRL_SOL_EQ) return x[-2 - w];
+  const void *obj = b->kind == WHIRL_SOL_COLLOC ? (const void *)b->colloc : (const void *)b->hbm;
   if (w == -1) {
     const whirl_periodic po = run_periodic(b->kind, obj);
     return whirl_periodic_period(&po, x, u->pfull);
@@ -131,7 +131,7 @@ static int run_branch(run_ctx *R, branch_spec *b) {
   o.detect_bp = s->isp != 0;
   o.detect_hb = s->isp != 0;
   o.detect_pd = s->isp == 2;
-  if (b->kind != RUN_EQ && s->isp != 2) o.detect_hb = 0; /* TR needs Floquet */
+  if (b->kind != WHIRL_SOL_EQ && s->isp != 2) o.detect_hb = 0; /* TR needs Floquet */
   if (b->sys->Jp && b->sys->n > 400) o.linsol = WHIRL_LINSOL_SPARSE;
   /* user points (UZR) and stops (UZSTOP): values of a parameter, of the
    * period (PERIOD, AUTO's PAR(11)) or of a state component (its MAX for
@@ -146,7 +146,7 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     int k = run_par_index(R, &u->ref), xi;
     if (k >= 0) {
       uc.what[nuz] = k;
-    } else if (b->kind != RUN_EQ && (!strcasecmp(u->ref.name, "PERIOD") ||
+    } else if (b->kind != WHIRL_SOL_EQ && (!strcasecmp(u->ref.name, "PERIOD") ||
                                      u->ref.index == 11)) {
       uc.what[nuz] = -1;
     } else if ((xi = run_state_index(R, &u->ref)) >= 0 && !u->ref.index) {
@@ -221,8 +221,8 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     if (labelled) lab = ++R->label;
     if (type >= 0 && type < 16) counts[type]++;
     double l2 = 0.0, period = 0.0;
-    const void *obj = b->kind == RUN_COLLOC ? (const void *)b->colloc
-                      : b->kind == RUN_HBM  ? (const void *)b->hbm
+    const void *obj = b->kind == WHIRL_SOL_COLLOC ? (const void *)b->colloc
+                      : b->kind == WHIRL_SOL_HBM  ? (const void *)b->hbm
                                             : NULL;
     if (run_table_row(R, b->kind, obj, R->branch, pt->index, ty, lab, pt->x,
                       pfull, pt->stable, &l2, &period, state)) {
@@ -234,7 +234,7 @@ static int run_branch(run_ctx *R, branch_spec *b) {
       fprintf(R->log, "  L2-NORM = %g left [A0, A1]: branch ends\n", l2);
     }
     if (labelled) {
-      run_solution so;
+      whirl_solution so;
       memset(&so, 0, sizeof so);
       so.label = lab;
       so.br = R->branch;
@@ -249,13 +249,13 @@ static int run_branch(run_ctx *R, branch_spec *b) {
       so.x = (double *)pt->x;
       so.tan = (b->fold || b->hopf) ? NULL : (double *)pt->t;
       so.stable = pt->stable;
-      if (b->kind == RUN_COLLOC) {
+      if (b->kind == WHIRL_SOL_COLLOC) {
         so.ncol = s->ncol;
         so.mesh = (double *)whirl_colloc_mesh(b->colloc);
         so.ntst = (int)((b->nb - (R->prob.autonomous ? 1 : 0)) / R->n - 1) / s->ncol;
       }
-      if (b->kind == RUN_HBM) so.nhb = s->nhb;
-      if (run_solution_write(R->sols, &so)) {
+      if (b->kind == WHIRL_SOL_HBM) so.nhb = s->nhb;
+      if (whirl_solution_write(R->sols, &so)) {
         rc = -1;
         break;
       }
@@ -378,7 +378,7 @@ typedef struct run_objects {
   whirl_fold *fold;
   whirl_hopf *hopf;
   double *X, *D, *Z, *xs;
-  run_solution sol;
+  whirl_solution sol;
   int have_sol;
 } run_objects;
 
@@ -393,12 +393,12 @@ static void objects_free(run_objects *O) {
   free(O->D);
   free(O->Z);
   free(O->xs);
-  if (O->have_sol) run_solution_free(&O->sol);
+  if (O->have_sol) whirl_solution_free(&O->sol);
 }
 
 static int locus(run_ctx *R, run_objects *O, branch_spec *b,
                  const whirl_system *base, const double *x, const double *p) {
-  const run_solution *so = &O->sol;
+  const whirl_solution *so = &O->sol;
   int q = so->icp, other = -1;
   for (size_t i = 0; i < R->nicp; i++)
     if (R->icp[i] != q) {
@@ -429,7 +429,7 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
     }
     b->fold = O->fold;
     b->sys = whirl_fold_system(O->fold);
-  } else if (!strcmp(so->ty, "HB") && so->kind == RUN_EQ) {
+  } else if (!strcmp(so->ty, "HB") && so->kind == WHIRL_SOL_EQ) {
     O->hopf = whirl_hopf_alloc(base, (size_t)q, err, sizeof err);
     if (!O->hopf) goto fail_alloc;
     O->Z = malloc((whirl_hopf_size(O->hopf) + 1) * sizeof *O->Z);
@@ -443,7 +443,7 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
   } else {
     run_fail(R, WHIRL_RK_ISW, "ISW = 2 needs an LP (any problem) or an HB of "
              "equilibria; label %d is %s%s (loci of %s are not available)",
-             so->label, so->ty, so->kind == RUN_EQ ? "" : " of periodic orbits",
+             so->label, so->ty, so->kind == WHIRL_SOL_EQ ? "" : " of periodic orbits",
              so->ty);
     return -2;
   }
@@ -458,7 +458,7 @@ fail_alloc:
 static int run_continuation(run_ctx *R, run_objects *O) {
   const whirl_run_settings *s = R->s;
   const int restart = O->have_sol;
-  run_solution *so = &O->sol;
+  whirl_solution *so = &O->sol;
   branch_spec b;
   memset(&b, 0, sizeof b);
   b.icp = R->icp[0];
@@ -468,14 +468,14 @@ static int run_continuation(run_ctx *R, run_objects *O) {
   const double *p0 = R->par;
 
   if (s->ips == WHIRL_IPS_EQUILIBRIA) {
-    if (restart && so->kind != RUN_EQ) {
+    if (restart && so->kind != WHIRL_SOL_EQ) {
       run_fail(R, WHIRL_RK_IRS, "IRS = %d is a periodic orbit; IPS = 1 needs "
                "an equilibrium", so->label);
       return -2;
     }
     O->eq = whirl_equilibrium_alloc(&R->prob);
     if (!O->eq) return -1;
-    b.kind = RUN_EQ;
+    b.kind = WHIRL_SOL_EQ;
     b.sys = whirl_equilibrium_system(O->eq);
     b.nb = R->n;
     b.x0 = restart ? so->x : R->u;
@@ -488,7 +488,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
     co.forcing_param = R->model->forcing_param;
     co.adapt_every = s->iad; /* IAD: a new mesh every IAD steps, as AUTO */
     int pd = restart && s->isw == -1 && !strcmp(so->ty, "PD");
-    if (restart && so->kind == RUN_COLLOC && (pd || s->isw == -1)) {
+    if (restart && so->kind == WHIRL_SOL_COLLOC && (pd || s->isw == -1)) {
       co.ntst = (size_t)so->ntst; /* switching happens on the stored mesh */
       co.ncol = (size_t)so->ncol;
     }
@@ -497,7 +497,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
       cli_error("run", "collocation: %s", err);
       return -1;
     }
-    b.kind = RUN_COLLOC;
+    b.kind = WHIRL_SOL_COLLOC;
     b.colloc = O->colloc;
     b.sys = whirl_colloc_system(O->colloc);
     b.nb = whirl_colloc_size(O->colloc);
@@ -513,7 +513,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
       O->xs = malloc(m * R->n * sizeof *O->xs);
       if (!O->xs || start_samples(R, m, O->xs, &T)) return O->xs ? -2 : -1;
       whirl_colloc_from_samples(O->colloc, O->xs, m, T, O->X);
-    } else if (so->kind == RUN_EQ) {
+    } else if (so->kind == WHIRL_SOL_EQ) {
       if (strcmp(so->ty, "HB") || !R->prob.autonomous) {
         run_fail(R, WHIRL_RK_IRS, "IPS = 2 from an equilibrium label needs an "
                  "HB of an autonomous model; label %d is %s", so->label, so->ty);
@@ -528,7 +528,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
       fprintf(R->log, "Hopf start at label %d: omega = %.10g, period %.10g\n",
               so->label, w, 2 * WHIRL_PI / w);
       b.dir = O->D;
-    } else if (so->kind == RUN_COLLOC) {
+    } else if (so->kind == WHIRL_SOL_COLLOC) {
       if ((size_t)so->ntst == co.ntst && (size_t)so->ncol == co.ncol) {
         whirl_colloc_set_mesh(O->colloc, so->mesh);
         memcpy(O->X, so->x, b.nb * sizeof *O->X);
@@ -604,7 +604,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
       cli_error("run", "harmonic balance: %s", err);
       return -1;
     }
-    b.kind = RUN_HBM;
+    b.kind = WHIRL_SOL_HBM;
     b.hbm = O->hbm;
     b.sys = whirl_hbm_system(O->hbm);
     b.nb = whirl_hbm_size(O->hbm);
@@ -619,12 +619,12 @@ static int run_continuation(run_ctx *R, run_objects *O) {
       if (!O->xs || start_samples(R, m, O->xs, &T)) return O->xs ? -2 : -1;
       whirl_hbm_from_samples(O->hbm, O->xs, m, T, O->X);
       whirl_hbm_set_phase(O->hbm, O->X);
-    } else if (so->kind == RUN_HBM && so->nx == b.nb) {
+    } else if (so->kind == WHIRL_SOL_HBM && so->nx == b.nb) {
       memcpy(O->X, so->x, b.nb * sizeof *O->X);
     } else {
       run_fail(R, WHIRL_RK_IRS, "label %d is not a harmonic-balance solution "
                "with NHB = %d (it is %s%s)", so->label, s->nhb,
-               so->kind == RUN_EQ ? "an equilibrium" : so->kind == RUN_COLLOC ?
+               so->kind == WHIRL_SOL_EQ ? "an equilibrium" : so->kind == WHIRL_SOL_COLLOC ?
                "a collocation orbit" : "a harmonic-balance solution with another NHB",
                "");
       return -2;
@@ -651,7 +651,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
       bp.stable = -1;
       bp.n_unstable = -1;
       b.bp = &bp;
-    } else if (strcmp(so->ty, "PD") || b.kind != RUN_COLLOC) {
+    } else if (strcmp(so->ty, "PD") || b.kind != WHIRL_SOL_COLLOC) {
       run_fail(R, WHIRL_RK_ISW, "ISW = -1 switches at a BP, or at a PD of "
                "periodic orbits by collocation; label %d is %s", so->label,
                so->ty);
@@ -661,7 +661,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
     int rc = locus(R, O, &b, b.sys, b.x0, p0);
     if (rc) return rc;
     b.ds_scale = 1.0;
-    if (b.kind == RUN_COLLOC) b.ds_scale = sqrt((double)(s->ntst * s->ncol + 1));
+    if (b.kind == WHIRL_SOL_COLLOC) b.ds_scale = sqrt((double)(s->ntst * s->ncol + 1));
   }
   if (b.dir && s->ds < 0)
     for (size_t i = 0; i <= b.nb; i++) O->D[i] = -O->D[i];
@@ -788,7 +788,7 @@ int cmd_run(int argc, char **argv) {
     for (size_t k = 0; k < R.npar; k++) R.par[k] = O.sol.par[k];
     for (size_t i = 0; i < R.s->npar; i++)
       R.par[run_par_index(&R, &R.s->par[i].ref)] = R.s->par[i].value;
-    if (O.sol.kind == RUN_EQ)
+    if (O.sol.kind == WHIRL_SOL_EQ)
       memcpy(R.u, O.sol.x, R.n * sizeof *R.u);
   }
   if ((status = cli_outdir_begin(&R.od, "run", where, R.out)) != 0) goto out;

@@ -41,13 +41,13 @@ static void progress(size_t done, size_t total, void *data) {
 }
 
 /* The state at the section t = 0 of a stored solution. */
-static int section_state(run_ctx *R, const run_solution *so, double *x) {
+static int section_state(run_ctx *R, const whirl_solution *so, double *x) {
   char err[256];
-  if (so->kind == RUN_EQ) {
+  if (so->kind == WHIRL_SOL_EQ) {
     memcpy(x, so->x, R->n * sizeof *x);
     return 0;
   }
-  if (so->kind == RUN_COLLOC) {
+  if (so->kind == WHIRL_SOL_COLLOC) {
     whirl_colloc_options co;
     whirl_colloc_options_default(&co);
     co.ntst = (size_t)so->ntst;
@@ -98,7 +98,7 @@ int run_basins(run_ctx *R) {
   char (*names)[32] = calloc(na, sizeof *names);
   if (!tg || !att || !x0 || !which || !periods || !names) goto done;
   for (size_t a = 0; a < na; a++) {
-    run_solution so;
+    whirl_solution so;
     char msg[1024];
     if (run_solution_find(R, s->s, s->attractors[a], "", &so, msg, sizeof msg)) {
       run_fail(R, WHIRL_RK_BASIN_ATTRACTORS, "BASIN_ATTRACTORS: %s", msg);
@@ -108,7 +108,7 @@ int run_basins(run_ctx *R) {
     if (so.stable != 1) {
       run_fail(R, WHIRL_RK_BASIN_ATTRACTORS, "BASIN_ATTRACTORS: label %d is "
                "not a stable solution (STAB = %d)", so.label, so.stable);
-      run_solution_free(&so);
+      whirl_solution_free(&so);
       rc = -2;
       goto done;
     }
@@ -123,7 +123,7 @@ int run_basins(run_ctx *R) {
                  "has %s = %.10g, the basins are computed at %.10g (all "
                  "attractors must be at the same parameters: use UZR in the "
                  "continuation run)", so.label, R->pnames[k], so.par[k], R->par[k]);
-        run_solution_free(&so);
+        whirl_solution_free(&so);
         rc = -2;
         goto done;
       }
@@ -131,7 +131,7 @@ int run_basins(run_ctx *R) {
     tg[a].tol = s->basin_tol;
     tg[a].x = malloc(n * sizeof *tg[a].x);
     if (!tg[a].x || section_state(R, &so, tg[a].x)) {
-      run_solution_free(&so);
+      whirl_solution_free(&so);
       cli_error("run", "label %d: cannot evaluate the solution", so.label);
       goto done;
     }
@@ -141,10 +141,10 @@ int run_basins(run_ctx *R) {
     att[a].data = &tg[a];
     att[a].confirm = 3;
     fprintf(R->log, "attractor %zu: label %d (%s, %s), section state", a + 1,
-            so.label, so.ty, so.kind == RUN_EQ ? "equilibrium" : "periodic orbit");
+            so.label, so.ty, so.kind == WHIRL_SOL_EQ ? "equilibrium" : "periodic orbit");
     for (size_t i = 0; i < n; i++) fprintf(R->log, " %.10g", tg[a].x[i]);
     fputc('\n', R->log);
-    run_solution_free(&so);
+    whirl_solution_free(&so);
   }
   fprintf(R->log, "basins at");
   for (size_t k = 0; k < R->npar; k++) fprintf(R->log, " %s = %.10g", R->pnames[k], R->par[k]);

@@ -389,3 +389,10 @@ int run_resolve(run_ctx *R) {
     }
   return resolve_plot(R);
 }
+
+int run_solution_find(const run_ctx *R, const char *dir, int label,
+                      const char *ty, whirl_solution *out, char *msg, size_t len) {
+  const whirl_solution_shape want = {R->prob.name, R->n, R->npar,
+                                     R->model->forcing_param >= 0};
+  return whirl_solution_find(dir, &want, label, ty, out, msg, len);
+}

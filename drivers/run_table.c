@@ -19,7 +19,7 @@
 #include "cli.h"
 #include "run.h"
 
-int run_table_header(run_ctx *R, run_kind kind, int icp, int q) {
+int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q) {
   FILE *f = R->table;
   size_t col = 4;
   fprintf(f, "# BR\tPT\tTY\tLAB");
@@ -31,7 +31,7 @@ int run_table_header(run_ctx *R, run_kind kind, int icp, int q) {
     if ((int)k == q && R->plot_kind == RUN_PLOT_DEFAULT) ycol = (int)col;
     if (R->plot_kind == RUN_PLOT_PAR && (int)k == R->plot_index) ycol = (int)col;
   }
-  if (kind != RUN_EQ) {
+  if (kind != WHIRL_SOL_EQ) {
     fprintf(f, "\tPERIOD");
     col++;
     if (R->plot_kind == RUN_PLOT_PERIOD) ycol = (int)col;
@@ -40,7 +40,7 @@ int run_table_header(run_ctx *R, run_kind kind, int icp, int q) {
   col++;
   if (!ycol || R->plot_kind == RUN_PLOT_L2) ycol = (int)col;
   for (size_t i = 0; i < R->n; i++) {
-    fprintf(f, kind == RUN_EQ ? "\t%s" : "\tMAX %s", R->xnames[i]);
+    fprintf(f, kind == WHIRL_SOL_EQ ? "\t%s" : "\tMAX %s", R->xnames[i]);
     col++;
     if (R->plot_kind == RUN_PLOT_STATE && (int)i == R->plot_index) ycol = (int)col;
   }
@@ -52,24 +52,24 @@ int run_table_header(run_ctx *R, run_kind kind, int icp, int q) {
   snprintf(R->plot_x_name, sizeof R->plot_x_name, "%s", R->pnames[R->plot_x - 5]);
   if (ycol >= 5 && ycol < 5 + (int)R->npar)
     snprintf(R->plot_y_name, sizeof R->plot_y_name, "%s", R->pnames[ycol - 5]);
-  else if (kind != RUN_EQ && ycol == 5 + (int)R->npar)
+  else if (kind != WHIRL_SOL_EQ && ycol == 5 + (int)R->npar)
     snprintf(R->plot_y_name, sizeof R->plot_y_name, "PERIOD");
-  else if (ycol == 5 + (int)R->npar + (kind != RUN_EQ))
+  else if (ycol == 5 + (int)R->npar + (kind != WHIRL_SOL_EQ))
     snprintf(R->plot_y_name, sizeof R->plot_y_name, "L2-NORM");
   else
-    snprintf(R->plot_y_name, sizeof R->plot_y_name, "%s%s", kind == RUN_EQ ? "" : "MAX ",
-             R->xnames[ycol - 6 - (int)R->npar - (kind != RUN_EQ)]);
+    snprintf(R->plot_y_name, sizeof R->plot_y_name, "%s%s", kind == WHIRL_SOL_EQ ? "" : "MAX ",
+             R->xnames[ycol - 6 - (int)R->npar - (kind != WHIRL_SOL_EQ)]);
   return ferror(f) ? -1 : 0;
 }
 
-whirl_periodic run_periodic(run_kind kind, const void *obj) {
-  return kind == RUN_COLLOC ? whirl_periodic_of_colloc(obj) : whirl_periodic_of_hbm(obj);
+whirl_periodic run_periodic(whirl_solution_kind kind, const void *obj) {
+  return kind == WHIRL_SOL_COLLOC ? whirl_periodic_of_colloc(obj) : whirl_periodic_of_hbm(obj);
 }
 
-int run_point_measures(const run_ctx *R, run_kind kind, const void *obj,
+int run_point_measures(const run_ctx *R, whirl_solution_kind kind, const void *obj,
                        const double *xb, const double *p, double *l2out,
                        double *period_out, double *mx) {
-  if (kind == RUN_EQ) {
+  if (kind == WHIRL_SOL_EQ) {
     double l2 = 0.0;
     for (size_t i = 0; i < R->n; i++) l2 += xb[i] * xb[i], mx[i] = xb[i];
     *l2out = sqrt(l2);
@@ -82,7 +82,7 @@ int run_point_measures(const run_ctx *R, run_kind kind, const void *obj,
   return whirl_periodic_max(&po, xb, mx) != WHIRL_OK || isnan(*l2out) ? -1 : 0;
 }
 
-int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,
+int run_table_row(run_ctx *R, whirl_solution_kind kind, const void *obj, int br,
                   size_t pt, const char *ty, int lab, const double *xb,
                   const double *p, int stable, double *l2out, double *period_out,
                   double *state) {
@@ -97,7 +97,7 @@ int run_table_row(run_ctx *R, run_kind kind, const void *obj, int br,
   }
   fprintf(f, "%d\t%zu\t%s\t%d", br, pt, ty, lab);
   for (size_t k = 0; k < R->npar; k++) fprintf(f, "\t%.12g", p[k]);
-  if (kind != RUN_EQ) fprintf(f, "\t%.12g", period);
+  if (kind != WHIRL_SOL_EQ) fprintf(f, "\t%.12g", period);
   fprintf(f, "\t%.12g", l2);
   for (size_t i = 0; i < n; i++) fprintf(f, "\t%.12g", mx[i]);
   fprintf(f, "\t%d\n", stable);

@@ -21,4 +21,5 @@
 #include <whirl/hopf.h>
 #include <whirl/model.h>
 #include <whirl/runfile.h>
+#include <whirl/solution.h>
 #endif

@@ -7,7 +7,7 @@
 # RUNS inputs per target (default 1000000); TARGET is one of
 #   runfile     the run-file parser (fuzz_runfile.c, lib/run/runfile.c)
 #   solutions   the reader of solutions files, what restarts read
-#               (fuzz_solutions.c, drivers/run_solution.c)
+#               (fuzz_solutions.c, lib/run/solution.c)
 # (default: all).  Each target prints one line
 #   fuzz_NAME: RUNS runs requested, exit RC, N s wall
 # Environment: CLANG (default clang), FUZZ_JOBS (parallel workers, default 1),
@@ -56,13 +56,13 @@ if ! "$CLANG" -fsanitize=fuzzer "$work/probe.c" -o "$work/probe" > /dev/null 2>&
 fi
 
 # Sources of each target.  Both readers are self-contained: they need the
-# headers only (whirl/status.h for the status codes, drivers/run.h for the
+# headers only (whirl/status.h for the status codes, whirl/solution.h for the
 # solution struct), not lib/util/status.c (which needs the generated
 # config.h and provides nothing they call).
 sources() {
   case $1 in
     runfile) echo "$here/fuzz_runfile.c $top/lib/run/runfile.c" ;;
-    solutions) echo "$here/fuzz_solutions.c $top/drivers/run_solution.c" ;;
+    solutions) echo "$here/fuzz_solutions.c $top/lib/run/solution.c" ;;
   esac
 }
 corpus() {
@@ -79,7 +79,7 @@ fuzz() {
   san=-fsanitize=fuzzer,address,undefined
   # shellcheck disable=SC2046 # the list of sources
   if ! "$CLANG" -std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 $san \
-      -fno-sanitize-recover=undefined -I "$top/lib" -I "$top/drivers" \
+      -fno-sanitize-recover=undefined -I "$top/lib" \
       $(sources "$name") -lm -o "$dir/fuzz_$name" > "$dir/build.log" 2>&1; then
     cat "$dir/build.log" >&2
     echo "fuzz_$name: build failed, exit 1"

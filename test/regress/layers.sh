@@ -31,7 +31,7 @@ layer_of_header() {
     ode.h|floquet.h) echo ode ;;
     equilibrium.h|hbm.h|colloc.h|fold.h|hopf.h|periodic.h) echo systems ;;
     spectrum.h|section.h|basins.h) echo analysis ;;
-    runfile.h|model.h|run.h) echo run ;;
+    runfile.h|model.h|run.h|solution.h) echo run ;;
     whirl.h) echo whirl ;;
     *) echo "" ;;
   esac

@@ -1,15 +1,7 @@
-/* drivers/run_solution.c — labelled solutions of `whirl run`, the
- * counterpart of AUTO's s-files: OUT/solutions holds one block per label
- * with all digits (%.17g), enough to restart exactly (IRS):
- *
- *   # whirl solutions: model ab, npar 3
- *   LAB 3 TY HB BR 1 PT 27 KIND eq ICP 1 ICP2 0 NX 2 STAB 0
- *   PAR 0.165 14 3
- *   X 0.4059 1.4208
- *   TAN ...            (optional: the branch's unit tangent, NX + 1)
- *   MESH ...           (collocation: NTST + 1 mesh points; NTST, NCOL on LAB)
- *   END
+/* lib/run/solution.c — labelled solutions (whirl/solution.h): writing a
+ * block, and reading one back with every count and number checked.
  * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* getline */
 #include <ctype.h>
 #include <errno.h>
 #include <limits.h>
@@ -19,11 +11,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "run.h"
+#include <whirl/solution.h>
 
 static const char *kind_name[] = {"eq", "colloc", "hbm"};
 
-void run_solution_free(run_solution *s) {
+void whirl_solution_free(whirl_solution *s) {
   if (!s) return;
   free(s->par);
   free(s->x);
@@ -38,17 +30,17 @@ static void put_vec(FILE *f, const char *tag, const double *v, size_t n) {
   fputc('\n', f);
 }
 
-int run_solution_write(FILE *f, const run_solution *s) {
+int whirl_solution_write(FILE *f, const whirl_solution *s) {
   fprintf(f, "LAB %d TY %s BR %d PT %d KIND %s ICP %d ICP2 %d NX %zu STAB %d",
           s->label, s->ty, s->br, s->pt, kind_name[s->kind], s->icp + 1,
           s->icp2 + 1, s->nx, s->stable);
-  if (s->kind == RUN_COLLOC) fprintf(f, " NTST %d NCOL %d", s->ntst, s->ncol);
-  if (s->kind == RUN_HBM) fprintf(f, " NHB %d", s->nhb);
+  if (s->kind == WHIRL_SOL_COLLOC) fprintf(f, " NTST %d NCOL %d", s->ntst, s->ncol);
+  if (s->kind == WHIRL_SOL_HBM) fprintf(f, " NHB %d", s->nhb);
   fputc('\n', f);
   put_vec(f, "PAR", s->par, s->npar);
   put_vec(f, "X", s->x, s->nx);
   if (s->tan) put_vec(f, "TAN", s->tan, s->nx + 1);
-  if (s->kind == RUN_COLLOC && s->mesh) put_vec(f, "MESH", s->mesh, (size_t)s->ntst + 1);
+  if (s->kind == WHIRL_SOL_COLLOC && s->mesh) put_vec(f, "MESH", s->mesh, (size_t)s->ntst + 1);
   fputs("END\n", f);
   return ferror(f) ? -1 : 0;
 }
@@ -60,7 +52,7 @@ int run_solution_write(FILE *f, const run_solution *s) {
  * fields and their ranges, a known KIND and point type, NX against NTST and
  * NCOL (or NHB), the number of values on PAR, X, TAN and MESH lines, finite
  * numbers, an increasing mesh, END.  A caller may then index every vector
- * by the sizes in the run_solution. */
+ * by the sizes in the whirl_solution. */
 typedef struct reader {
   FILE *f;
   const char *path;
@@ -144,11 +136,11 @@ static int lab_word(reader *r, char **p, const char *key, char *w, size_t cap) {
 /* NX of a periodic orbit is (M x n) state values, plus the period for an
  * autonomous model, with M = NTST x NCOL + 1 nodes (colloc) or 2 NHB + 1
  * coefficients (hbm): the state count and the period from NX. */
-static int orbit_size(reader *r, run_solution *s) {
-  const size_t m = s->kind == RUN_COLLOC ? (size_t)s->ntst * (size_t)s->ncol + 1
+static int orbit_size(reader *r, whirl_solution *s) {
+  const size_t m = s->kind == WHIRL_SOL_COLLOC ? (size_t)s->ntst * (size_t)s->ncol + 1
                                          : 2 * (size_t)s->nhb + 1;
   if (s->nx < m || s->nx % m > 1) {
-    if (s->kind == RUN_COLLOC)
+    if (s->kind == WHIRL_SOL_COLLOC)
       return bad(r, "label %d: NX %zu does not fit NTST %d, NCOL %d (a "
                  "collocation orbit has (NTST x NCOL + 1) x n values, + 1 "
                  "for the period)", s->label, s->nx, s->ntst, s->ncol);
@@ -162,7 +154,7 @@ static int orbit_size(reader *r, run_solution *s) {
 }
 
 /* The LAB line of a block, into s (vectors not read yet). */
-static int rd_lab(reader *r, size_t npar, run_solution *s) {
+static int rd_lab(reader *r, size_t npar, whirl_solution *s) {
   char *p = r->buf, ty[8], kind[16], b[72];
   long lab, br, pt, icp, icp2, nx, stab, v1, v2;
   if (strncmp(p, "LAB ", 4)) return bad(r, "'%s' is not a LAB line", shown(p, b));
@@ -188,15 +180,15 @@ static int rd_lab(reader *r, size_t npar, run_solution *s) {
   memcpy(s->ty, ty, 3);
   if (icp2 == icp) return bad(r, "label %d: ICP2 equals ICP", s->label);
   if (!strcmp(kind, "eq")) {
-    s->kind = RUN_EQ;
+    s->kind = WHIRL_SOL_EQ;
     s->nstate = s->nx;
   } else if (!strcmp(kind, "colloc")) {
-    s->kind = RUN_COLLOC;
+    s->kind = WHIRL_SOL_COLLOC;
     if (lab_int(r, &p, "NTST", 2, 100000, &v1) || lab_int(r, &p, "NCOL", 2, 7, &v2))
       return -1;
     s->ntst = (int)v1, s->ncol = (int)v2;
   } else if (!strcmp(kind, "hbm")) {
-    s->kind = RUN_HBM;
+    s->kind = WHIRL_SOL_HBM;
     if (lab_int(r, &p, "NHB", 1, 1000, &v1)) return -1;
     s->nhb = (int)v1;
   } else {
@@ -205,11 +197,11 @@ static int rd_lab(reader *r, size_t npar, run_solution *s) {
   }
   if (*p) return bad(r, "label %d: unexpected '%s' at the end of the LAB line",
                      s->label, shown(p + 1, b));
-  return s->kind == RUN_EQ ? 0 : orbit_size(r, s);
+  return s->kind == WHIRL_SOL_EQ ? 0 : orbit_size(r, s);
 }
 
 /* The numbers after a tag: exactly want of them, finite, into *v. */
-static int rd_values(reader *r, const run_solution *s, const char *tag,
+static int rd_values(reader *r, const whirl_solution *s, const char *tag,
                      const char *text, size_t want, const char *expect,
                      double **v) {
   size_t k = 0;
@@ -236,7 +228,7 @@ static int rd_values(reader *r, const run_solution *s, const char *tag,
 }
 
 /* The lines after LAB up to END: PAR, X, optional TAN, MESH (colloc). */
-static int rd_body(reader *r, run_solution *s) {
+static int rd_body(reader *r, whirl_solution *s) {
   char b[72];
   for (;;) {
     int rc = rd_line(r);
@@ -252,7 +244,7 @@ static int rd_body(reader *r, run_solution *s) {
     double **dst[] = {&s->par, &s->x, &s->tan, &s->mesh};
     int t = 0;
     while (t < 4 && (strlen(tags[t]) != tl || strncmp(r->buf, tags[t], tl))) t++;
-    if (t == 4 || (t == 3 && s->kind != RUN_COLLOC))
+    if (t == 4 || (t == 3 && s->kind != WHIRL_SOL_COLLOC))
       return bad(r, "label %d: unexpected line '%s' in the block", s->label,
                  shown(r->buf, b));
     if (*dst[t]) return bad(r, "label %d: a second %s line", s->label, tags[t]);
@@ -261,7 +253,7 @@ static int rd_body(reader *r, run_solution *s) {
   if (!s->par || !s->x)
     return bad(r, "label %d: the block has no %s line", s->label,
                s->par ? "X" : "PAR");
-  if (s->kind == RUN_COLLOC && !s->mesh)
+  if (s->kind == WHIRL_SOL_COLLOC && !s->mesh)
     return bad(r, "label %d: collocation solution without MESH", s->label);
   if (s->mesh) {
     int ok = s->mesh[0] == 0.0 && s->mesh[s->ntst] == 1.0;
@@ -295,9 +287,9 @@ static int rd_header(reader *r, char *model, size_t cap, size_t *npar) {
 }
 
 /* Does the solution fit the model of want?  0, or -1 with the message. */
-static int fits(reader *r, const run_solution *s, const run_shape *want) {
+static int fits(reader *r, const whirl_solution *s, const whirl_solution_shape *want) {
   if (!want->n) return 0;
-  if (s->kind != RUN_EQ && want->forced >= 0 && s->aut == want->forced) {
+  if (s->kind != WHIRL_SOL_EQ && want->forced >= 0 && s->aut == want->forced) {
     snprintf(r->msg, r->len, "label %d of %s is an orbit of %s NX %zu "
              "unknowns; model '%s' is %s", s->label, r->path,
              s->aut ? "an autonomous model: its period is the last of its"
@@ -308,21 +300,21 @@ static int fits(reader *r, const run_solution *s, const run_shape *want) {
   }
   if (s->nstate == want->n) return 0;
   char how[128] = "";
-  if (s->kind == RUN_COLLOC)
+  if (s->kind == WHIRL_SOL_COLLOC)
     snprintf(how, sizeof how, " = (NTST %d x NCOL %d + 1) x %zu%s", s->ntst,
              s->ncol, s->nstate, s->aut ? " + 1" : "");
-  if (s->kind == RUN_HBM)
+  if (s->kind == WHIRL_SOL_HBM)
     snprintf(how, sizeof how, " = (2 x NHB %d + 1) x %zu%s", s->nhb, s->nstate,
              s->aut ? " + 1" : "");
   snprintf(r->msg, r->len, "label %d of %s %s %zu states (NX %zu%s); model "
            "'%s' has %zu", s->label, r->path,
-           s->kind == RUN_EQ ? "has" : "is an orbit of", s->nstate, s->nx, how,
+           s->kind == WHIRL_SOL_EQ ? "has" : "is an orbit of", s->nstate, s->nx, how,
            want->model ? want->model : "?", want->n);
   return -1;
 }
 
-int run_solution_read(FILE *f, const char *path, const run_shape *want,
-                      int label, const char *ty, run_solution *out, char *msg,
+int whirl_solution_read(FILE *f, const char *path, const whirl_solution_shape *want,
+                      int label, const char *ty, whirl_solution *out, char *msg,
                       size_t len) {
   memset(out, 0, sizeof *out);
   if (len) msg[0] = '\0';
@@ -343,25 +335,25 @@ int run_solution_read(FILE *f, const char *path, const run_shape *want,
     goto done;
   }
   for (;;) {
-    run_solution s;
+    whirl_solution s;
     memset(&s, 0, sizeof s);
     int got = rd_line(&r);
     if (got < 0) goto done;
     if (got > 0) break;
     if (rd_lab(&r, npar, &s) || rd_body(&r, &s)) {
-      run_solution_free(&s);
+      whirl_solution_free(&s);
       goto done;
     }
     if (ty && ty[0] ? !strcmp(s.ty, ty) && ++count == label : s.label == label) {
       if (fits(&r, &s, want)) {
-        run_solution_free(&s);
+        whirl_solution_free(&s);
         goto done;
       }
       *out = s;
       rc = 0;
       goto done;
     }
-    run_solution_free(&s);
+    whirl_solution_free(&s);
   }
   if (ty && ty[0])
     snprintf(msg, len, "%s: there is no %s number %d (IRS = %s%d)", path, ty,
@@ -373,8 +365,9 @@ done:
   return rc;
 }
 
-int run_solution_find(const run_ctx *R, const char *dir, int label,
-                      const char *ty, run_solution *out, char *msg, size_t len) {
+int whirl_solution_find(const char *dir, const whirl_solution_shape *want,
+                        int label, const char *ty, whirl_solution *out, char *msg,
+                        size_t len) {
   char path[8192];
   snprintf(path, sizeof path, "%s/solutions", dir);
   memset(out, 0, sizeof *out);
@@ -384,9 +377,7 @@ int run_solution_find(const run_ctx *R, const char *dir, int label,
              "of an earlier whirl run)", path, strerror(errno));
     return -1;
   }
-  const run_shape want = {R->prob.name, R->n, R->npar,
-                          R->model->forcing_param >= 0};
-  int rc = run_solution_read(f, path, &want, label, ty, out, msg, len);
+  int rc = whirl_solution_read(f, path, want, label, ty, out, msg, len);
   fclose(f);
   return rc;
 }
