@@ -107,5 +107,13 @@ done
 [ -z "$inside" ] && [ $nrot -gt 0 ]
 ok $? "the rotor module includes libwhirl's public headers only ($nrot includes checked)${inside:+:$inside}"
 
+# the built library exports no model: no symbol of the rotor module
+so="${top_builddir:-.}/lib/.libs/libwhirl.so"
+if [ -f "$so" ] && command -v nm > /dev/null 2>&1; then
+  models=$(nm -D --defined-only "$so" | awk '{print $3}' | grep -i 'sfd\|rotor\|jeffcott')
+  [ -z "$models" ]
+  ok $? "libwhirl.so exports no model symbol ($(nm -D --defined-only "$so" | grep -c ' T ') functions)${models:+: $(echo $models | head -c 200)}"
+fi
+
 echo "1..$n"
 [ $fails -eq 0 ]
