@@ -22,4 +22,5 @@
 #include <whirl/model.h>
 #include <whirl/runfile.h>
 #include <whirl/solution.h>
+#include <whirl/run.h>
 #endif

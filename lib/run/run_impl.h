@@ -1,4 +1,5 @@
-/* drivers/run.h — `whirl run FILE`: shared state of the run-file driver.
+/* lib/run/run_impl.h — a run of a run file (whirl/run.h): its state, shared
+ * by the files of the run.
  * cmd_run.c orchestrates; run_model.c loads models and resolves names;
  * labelled solutions are whirl/solution.h's; run_table.c writes
  * the branch table and the picture; run_basins.c computes basins.
@@ -8,20 +9,30 @@
 
 #include <stdio.h>
 
-#include <whirl/whirl.h>
+#include <whirl/basins.h>
+#include <whirl/branch.h>
+#include <whirl/colloc.h>
+#include <whirl/cont.h>
+#include <whirl/equilibrium.h>
+#include <whirl/fold.h>
+#include <whirl/hbm.h>
+#include <whirl/hopf.h>
+#include <whirl/model.h>
+#include <whirl/periodic.h>
+#include <whirl/runfile.h>
+#include <whirl/solution.h>
+#include <whirl/run.h>
 
-#include "outdir.h"
 
 /* What PLOT (the y axis of the picture) names. */
 enum { RUN_PLOT_DEFAULT, RUN_PLOT_PAR, RUN_PLOT_PERIOD, RUN_PLOT_L2,
        RUN_PLOT_STATE };
 
-typedef struct run_ctx {
+struct whirl_run {
   whirl_runfile *rf;
   const whirl_run_settings *s;
   const whirl_model *model;
   void *dl;               /* dlopen handle of a plug-in, or NULL */
-  whirl_model_registry *models; /* the registered models (model = NAME) */
   whirl_problem prob;     /* the model's problem (JAC = 0: no Jacobians) */
   size_t n, npar;
   char **pnames, **xnames; /* resolved names (model's or PAR(k)/U(k)) */
@@ -29,13 +40,11 @@ typedef struct run_ctx {
   int icp[4];              /* resolved, 0-based; -1 for the period (PAR 11) */
   size_t nicp;
   char out[4096], rundir[4096];
-  cli_outdir od;           /* the output directory, staged (outdir.h) */
   FILE *log, *table, *sols; /* run.log, branches.tsv, solutions in od */
   int label, branch;
   int failed;              /* a branch ended in failure (DSMIN reached without
                               convergence, a persisting model domain error):
                               the output is kept, the exit status is 1 */
-  int quiet;
   int plot_kind, plot_index; /* PLOT resolved: RUN_PLOT_*, parameter or
                                state index */
   int plot_x, plot_y;      /* 1-based columns of the picture's axes */
@@ -43,11 +52,29 @@ typedef struct run_ctx {
   int seen_stab[3];         /* rows with STAB -1, 0, 1 */
   int seen_special;
   size_t ncols;
-} run_ctx;
+  /* the library object (whirl/run.h) */
+  whirl_run_io io;
+  const whirl_model_registry *registry;
+  char file[4096], out_where[4200];
+  char **overrides;
+  size_t noverrides;
+  whirl_run_special *special; /* the labelled points, in order */
+  size_t nspecial, capspecial;
+  whirl_run_plot plot;
+  char errmsg[4600];
+};
+typedef struct whirl_run run_ctx;
 
-/* "FILE:LINE: message" to stderr (exit 2 errors about the run file). */
+/* "FILE:LINE: message" through io.message (errors about the run file). */
 void run_fail(run_ctx *R, whirl_run_key k, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* A message (the first is kept as errmsg), a summary line. */
+void run_say(run_ctx *R, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+void run_summary(run_ctx *R, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* A file of the output through io.open / io.close (0, or -1 said). */
+FILE *run_open(run_ctx *R, const char *name);
+int run_close(run_ctx *R, FILE *f, const char *name);
+double run_now(void); /* monotonic seconds */
 
 /* run_model.c */
 int run_load_model(run_ctx *R);  /* 0 or -1 (message printed) */
@@ -74,9 +101,10 @@ whirl_periodic run_periodic(whirl_solution_kind kind, const void *obj);
 int run_table_row(run_ctx *R, whirl_solution_kind kind, const void *obj, int br, size_t pt,
                   const char *ty, int lab, const double *xb, const double *p,
                   int stable, double *l2out, double *period, double *state);
-/* The picture's script (diagram.gp, or basins.gp written by run_basins):
- * 0, or -1 with the message printed; *name is the picture to draw. */
-int run_write_plot(run_ctx *R, const char **name);
+/* Keep a labelled point (its row of the branch table and its numbers). */
+int run_keep_special(run_ctx *R, int br, size_t pt, const char *ty, int lab,
+                     const double *p, double period, double l2, const double *state,
+                     const char *row);
 
 /* run_basins.c */
 int run_basins(run_ctx *R);

@@ -16,8 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli.h"
-#include "run.h"
+#include "run_impl.h"
 
 typedef struct target {
   size_t n;
@@ -37,7 +36,8 @@ static int near_target(double t, const double *x, void *data) {
 }
 
 static void progress(size_t done, size_t total, void *data) {
-  cli_progress_show(data, done, total);
+  const run_ctx *R = data;
+  if (R->io.progress) R->io.progress(done, total, R->io.ctx);
 }
 
 /* The state at the section t = 0 of a stored solution. */
@@ -132,7 +132,7 @@ int run_basins(run_ctx *R) {
     tg[a].x = malloc(n * sizeof *tg[a].x);
     if (!tg[a].x || section_state(R, &so, tg[a].x)) {
       whirl_solution_free(&so);
-      cli_error("run", "label %d: cannot evaluate the solution", so.label);
+      run_say(R, "label %d: cannot evaluate the solution", so.label);
       goto done;
     }
     snprintf(names[a], sizeof names[a], "LAB %d", so.label);
@@ -162,20 +162,17 @@ int run_basins(run_ctx *R) {
   o.max_periods = (size_t)s->basin_periods;
   o.rtol = 1e-9;
   o.atol = 1e-12;
-  cli_progress pr;
-  cli_progress_init(&pr, "basins", R->quiet);
   o.progress = progress;
-  o.progress_data = &pr;
+  o.progress_data = R;
   whirl_basins_stats st;
   char err[512];
   int brc = whirl_basins_compute(&R->prob, R->par, np, x0, att, na, &o, which,
                                  periods, &st, err, sizeof err);
-  cli_progress_end(&pr);
   if (brc != WHIRL_OK) {
-    cli_error("run", "basins: %s", err);
+    run_say(R, "basins: %s", err);
     goto done;
   }
-  FILE *f = cli_outdir_fopen(&R->od, "basins.tsv");
+  FILE *f = run_open(R, "basins.tsv");
   if (!f) goto done;
   fprintf(f, "# %s\t%s\tclass\tperiods\n", R->xnames[ax[0]], R->xnames[ax[1]]);
   size_t count[WHIRL_RUN_MAXITEMS + 3] = {0};
@@ -189,48 +186,29 @@ int run_basins(run_ctx *R) {
     }
     fputc('\n', f);
   }
-  if (cli_outdir_fclose(&R->od, f, "basins.tsv")) goto done;
+  if (run_close(R, f, "basins.tsv")) goto done;
   fprintf(R->log, "grid %zu x %zu, %zu periods, %zu steps, %zu RHS evaluations\n",
           g0, g1, st.periods, st.steps, st.rhs_evals);
-  if (!R->quiet) printf("basins: %zu x %zu grid at", g0, g1);
-  for (size_t k = 0; k < R->npar && !R->quiet; k++) printf(" %s = %g", R->pnames[k], R->par[k]);
-  if (!R->quiet) printf("\n");
+  char line[1024];
+  int len = snprintf(line, sizeof line, "basins: %zu x %zu grid at", g0, g1);
+  for (size_t k = 0; k < R->npar && len > 0 && (size_t)len < sizeof line; k++)
+    len += snprintf(line + len, sizeof line - (size_t)len, " %s = %g", R->pnames[k], R->par[k]);
+  run_summary(R, "%s", line);
   for (size_t a = 0; a < na; a++) {
     fprintf(R->log, "  LAB %d: %zu points (%.1f%%)\n", s->attractors[a], count[a + 3],
             100.0 * (double)count[a + 3] / (double)np);
-    if (!R->quiet)
-      printf("  attractor LAB %d: %.1f%% of the grid\n", s->attractors[a],
-             100.0 * (double)count[a + 3] / (double)np);
+    run_summary(R, "  attractor LAB %d: %.1f%% of the grid", s->attractors[a],
+                100.0 * (double)count[a + 3] / (double)np);
   }
   fprintf(R->log, "  unsettled: %zu, left the domain: %zu, failed: %zu\n",
           count[0], count[1], count[2]);
-  if (!R->quiet)
-    printf("  unsettled %zu, left the domain %zu, failed %zu\n", count[0], count[1], count[2]);
-  /* picture */
-  f = cli_outdir_fopen(&R->od, "basins.gp");
-  if (!f) goto done;
-  char title[400], qt[900], qx[200], qy[200];
-  snprintf(title, sizeof title, "whirl run: basins of attraction (model %s)", R->prob.name);
-  cli_gp_preamble(f, "run", "basins", 800, 700, "Sans,11");
-  fprintf(f,
-          "set datafile separator '\\t'\n"
-          "set title %s noenhanced\n"
-          "set xlabel %s noenhanced\nset ylabel %s noenhanced\n"
-          "set size ratio -1\nset tics out\nunset colorbox\n"
-          "set palette defined (-3 'black', -2 '#555555', -1 'white', 0 '#1f4e9c', "
-          "1 '#e67e22', 2 '#27ae60', 3 '#8e44ad')\n"
-          "set cbrange [-3:3]\n",
-          cli_gp_quote(title, qt, sizeof qt), cli_gp_quote(R->xnames[ax[0]], qx, sizeof qx),
-          cli_gp_quote(R->xnames[ax[1]], qy, sizeof qy));
-  fprintf(f, "map(c) = c < 0 ? c : (");
-  for (size_t a = 0; a < na; a++)
-    fprintf(f, "c == %d ? %zu : ", s->attractors[a], a % 4);
-  fprintf(f, "0)\nplot 'basins.tsv' using 1:2:(map($3)) with image notitle");
-  for (size_t a = 0; a < na; a++)
-    fprintf(f, ", \\\n     NaN with boxes fs solid lc palette cb %zu title 'LAB %d'",
-            a % 4, s->attractors[a]);
-  fputc('\n', f);
-  if (cli_outdir_fclose(&R->od, f, "basins.gp")) goto done;
+  run_summary(R, "  unsettled %zu, left the domain %zu, failed %zu", count[0], count[1],
+              count[2]);
+  /* what the picture shows */
+  R->plot.x_name = R->xnames[ax[0]];
+  R->plot.y_name = R->xnames[ax[1]];
+  R->plot.attractors = s->attractors;
+  R->plot.nattractors = na;
   rc = 0;
 done:
   if (tg)

@@ -10,14 +10,14 @@
  * the accuracy of the orbit beyond; a uniform trapezoidal rule, exact for
  * trigonometric polynomials, for harmonic balance).
  * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* open_memstream */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
-#include "cli.h"
-#include "run.h"
+#include "run_impl.h"
 
 int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q) {
   FILE *f = R->table;
@@ -82,6 +82,52 @@ int run_point_measures(const run_ctx *R, whirl_solution_kind kind, const void *o
   return whirl_periodic_max(&po, xb, mx) != WHIRL_OK || isnan(*l2out) ? -1 : 0;
 }
 
+/* One row of the branch table. */
+static void write_row(FILE *f, const run_ctx *R, int br, size_t pt, const char *ty,
+                      int lab, const double *p, int periodic, double period, double l2,
+                      const double *mx, int stable) {
+  fprintf(f, "%d\t%zu\t%s\t%d", br, pt, ty, lab);
+  for (size_t k = 0; k < R->npar; k++) fprintf(f, "\t%.12g", p[k]);
+  if (periodic) fprintf(f, "\t%.12g", period);
+  fprintf(f, "\t%.12g", l2);
+  for (size_t i = 0; i < R->n; i++) fprintf(f, "\t%.12g", mx[i]);
+  fprintf(f, "\t%d", stable);
+}
+
+int run_keep_special(run_ctx *R, int br, size_t pt, const char *ty, int lab,
+                     const double *p, double period, double l2, const double *state,
+                     const char *row) {
+  if (R->nspecial == R->capspecial) {
+    const size_t cap = R->capspecial ? 2 * R->capspecial : 16;
+    whirl_run_special *g = realloc(R->special, cap * sizeof *g);
+    if (!g) return -1;
+    R->special = g;
+    R->capspecial = cap;
+  }
+  double *v = malloc((R->npar + R->n) * sizeof *v);
+  char *copy = malloc(strlen(row) + 1);
+  if (!v || !copy) {
+    free(v);
+    free(copy);
+    return -1;
+  }
+  memcpy(v, p, R->npar * sizeof *v);
+  memcpy(v + R->npar, state, R->n * sizeof *v);
+  strcpy(copy, row);
+  whirl_run_special *s = &R->special[R->nspecial++];
+  memset(s, 0, sizeof *s);
+  s->br = br;
+  s->pt = pt;
+  s->lab = lab;
+  snprintf(s->ty, sizeof s->ty, "%s", ty);
+  s->par = v;
+  s->state = v + R->npar;
+  s->period = period;
+  s->l2norm = l2;
+  s->row = copy;
+  return 0;
+}
+
 int run_table_row(run_ctx *R, whirl_solution_kind kind, const void *obj, int br,
                   size_t pt, const char *ty, int lab, const double *xb,
                   const double *p, int stable, double *l2out, double *period_out,
@@ -95,70 +141,24 @@ int run_table_row(run_ctx *R, whirl_solution_kind kind, const void *obj, int br,
     free(mx);
     return -1;
   }
-  fprintf(f, "%d\t%zu\t%s\t%d", br, pt, ty, lab);
-  for (size_t k = 0; k < R->npar; k++) fprintf(f, "\t%.12g", p[k]);
-  if (kind != WHIRL_SOL_EQ) fprintf(f, "\t%.12g", period);
-  fprintf(f, "\t%.12g", l2);
-  for (size_t i = 0; i < n; i++) fprintf(f, "\t%.12g", mx[i]);
-  fprintf(f, "\t%d\n", stable);
+  const int periodic = kind != WHIRL_SOL_EQ;
+  write_row(f, R, br, pt, ty, lab, p, periodic, period, l2, mx, stable);
+  fputc('\n', f);
+  int rc = 0;
+  if (strcmp(ty, "RG")) { /* a labelled point: kept, with its row */
+    char *row = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&row, &len);
+    if (m) write_row(m, R, br, pt, ty, lab, p, periodic, period, l2, mx, stable);
+    if (!m || fclose(m) != 0 || run_keep_special(R, br, pt, ty, lab, p, period, l2, mx, row))
+      rc = -1;
+    free(row);
+  }
   if (stable >= -1 && stable <= 1) R->seen_stab[stable + 1] = 1;
   if (strcmp(ty, "RG") && strcmp(ty, "EP")) R->seen_special = 1;
   *l2out = l2;
   *period_out = period;
   memcpy(state, mx, n * sizeof *state);
   free(mx);
-  return ferror(f) ? -1 : 0;
-}
-
-/* gnuplot: stable parts solid, unstable dashed, unknown thin; labelled
- * special points marked and named.  Each series is NaN where the STAB
- * column differs: gnuplot breaks a line at an undefined point, so a stable
- * stretch is not joined across an unstable one (no 'set datafile missing',
- * which would make it skip those points and join them). */
-int run_write_plot(run_ctx *R, const char **name) {
-  *name = R->s->ips == WHIRL_IPS_BASINS ? "basins" : "diagram";
-  if (R->s->ips == WHIRL_IPS_BASINS) return 0;
-  FILE *f = cli_outdir_fopen(&R->od, "diagram.gp");
-  if (!f) return -1;
-  /* names of the user's files, model and parameters, quoted for gnuplot */
-  char title[1024], qtitle[2100], qx[200], qy[200];
-  snprintf(title, sizeof title, "whirl run: %s (model %s)", whirl_runfile_name(R->rf),
-           R->prob.name);
-  int x = R->plot_x, y = R->plot_y;
-  cli_gp_preamble(f, "run", "diagram", 900, 650, "Sans,11");
-  fprintf(f,
-          "set datafile separator '\\t'\n"
-          "set key top left\n"
-          "set grid lc rgb '#dddddd'\n"
-          "set title %s noenhanced\n"
-          "set xlabel %s noenhanced\n"
-          "set ylabel %s noenhanced\n"
-          "S = %zu\n"
-          "plot ",
-          cli_gp_quote(title, qtitle, sizeof qtitle), cli_gp_quote(R->plot_x_name, qx, sizeof qx),
-          cli_gp_quote(R->plot_y_name, qy, sizeof qy), R->ncols);
-  /* only the series that have points (gnuplot warns about empty ones) */
-  int first = 1;
-  for (int k = 2; k >= 0; k--) {
-    if (!R->seen_stab[k]) continue;
-    fprintf(f, "%s'branches.tsv' using %d:", first ? "" : ", \\\n     ", x);
-    if (k == 2)
-      fprintf(f, "(column(S) == 1 ? column(%d) : NaN) with lines lw 2 lc rgb "
-              "'#1f4e9c' title 'stable'", y);
-    else if (k == 1)
-      fprintf(f, "(column(S) == 0 ? column(%d) : NaN) with lines lw 2 dt 2 lc "
-              "rgb '#c0392b' title 'unstable'", y);
-    else
-      fprintf(f, "(column(S) < 0 ? column(%d) : NaN) with lines lw 1 lc rgb "
-              "'#777777' title 'stability unknown'", y);
-    first = 0;
-  }
-  if (R->seen_special)
-    fprintf(f, ", \\\n     'branches.tsv' using %d:(strcol(3) ne 'RG' && "
-            "strcol(3) ne 'EP' ? column(%d) : NaN) with points pt 7 ps 1 lc "
-            "rgb 'black' notitle, \\\n     'branches.tsv' using %d:(strcol(3) "
-            "ne 'RG' && strcol(3) ne 'EP' ? column(%d) : NaN):3 with labels "
-            "offset 1,0.7 notitle", x, y, x, y);
-  fputc('\n', f);
-  return cli_outdir_fclose(&R->od, f, "diagram.gp");
+  return rc || ferror(f) ? -1 : 0;
 }

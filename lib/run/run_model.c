@@ -15,9 +15,7 @@
 #include <string.h>
 #include <strings.h>
 
-#include <whirl/rotor.h>
-
-#include "run.h"
+#include "run_impl.h"
 
 #ifdef __GLIBC__
 #include <link.h>
@@ -56,22 +54,15 @@ static int is_plugin_path(const char *m) {
   return strchr(m, '/') != NULL || (n > 3 && !strcmp(m + n - 3, ".so"));
 }
 
-/* The model NAME from the registry the modules fill (today the rotor
- * module: sfd, sfd-rotating); NULL with the message printed. */
+/* The model NAME from the registry the caller gave (the command fills it
+ * from the rotor module: sfd, sfd-rotating, jeffcott); NULL, said. */
 static const whirl_model *registered_model(run_ctx *R, const char *name) {
-  char msg[512];
-  if (!R->models && (!(R->models = whirl_model_registry_alloc()) ||
-                     whirl_rotor_register_models(R->models, msg, sizeof msg) != WHIRL_OK)) {
-    run_fail(R, WHIRL_RK_MODEL, "model: the registered models are not available: %s",
-             R->models ? msg : "out of memory");
-    return NULL;
-  }
-  const whirl_model *model = whirl_model_registry_find(R->models, name);
+  const whirl_model *model = whirl_model_registry_find(R->registry, name);
   if (model) return model;
   char list[256] = "";
-  for (size_t i = 0; i < whirl_model_registry_count(R->models); i++) {
+  for (size_t i = 0; i < whirl_model_registry_count(R->registry); i++) {
     if (list[0]) strcat(list, ", ");
-    strncat(list, whirl_model_registry_name(R->models, i), sizeof list - strlen(list) - 3);
+    strncat(list, whirl_model_registry_name(R->registry, i), sizeof list - strlen(list) - 3);
   }
   run_fail(R, WHIRL_RK_MODEL,
            "model: '%s' is neither a built-in model (%s) nor a plug-in "
@@ -159,8 +150,6 @@ void run_unload_model(run_ctx *R) {
   free(R->u);
   if (R->dl) dlclose(R->dl);
   R->dl = NULL;
-  whirl_model_registry_free(R->models);
-  R->models = NULL;
 }
 
 static int find_name(char **names, size_t n, const whirl_run_ref *r) {
@@ -279,7 +268,7 @@ int run_resolve(run_ctx *R) {
   R->par = calloc(R->npar, sizeof *R->par);
   R->u = calloc(R->n, sizeof *R->u);
   if (!R->pnames || !R->xnames || !R->par || !R->u) {
-    fprintf(stderr, "whirl run: out of memory\n");
+    run_say(R, "out of memory");
     return -1;
   }
   for (size_t k = 0; k < R->npar; k++) {

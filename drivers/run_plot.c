@@ -1,0 +1,96 @@
+/* drivers/run_plot.c — the picture of `whirl run`: the gnuplot script of
+ * the bifurcation diagram (diagram.gp over branches.tsv) or of the basins
+ * (basins.gp over basins.tsv), from what the run says it drew
+ * (whirl_run_plot_info).  Every name the user chose is quoted for gnuplot.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <stdio.h>
+
+#include <whirl/whirl.h>
+
+#include "cli.h"
+#include "run_cmd.h"
+
+/* Stable parts solid, unstable dashed, unknown thin; labelled special
+ * points marked and named.  Each series is NaN where the STAB column
+ * differs: gnuplot breaks a line at an undefined point, so a stable
+ * stretch is not joined across an unstable one (no 'set datafile missing',
+ * which would make it skip those points and join them). */
+static int write_diagram(cli_outdir *od, const whirl_run *r, const whirl_run_plot *pl) {
+  FILE *f = cli_outdir_fopen(od, "diagram.gp");
+  if (!f) return -1;
+  char title[1024], qtitle[2100], qx[200], qy[200];
+  snprintf(title, sizeof title, "whirl run: %s (model %s)", whirl_run_file_name(r),
+           whirl_run_model_name(r));
+  const int x = pl->x, y = pl->y;
+  cli_gp_preamble(f, "run", "diagram", 900, 650, "Sans,11");
+  fprintf(f,
+          "set datafile separator '\\t'\n"
+          "set key top left\n"
+          "set grid lc rgb '#dddddd'\n"
+          "set title %s noenhanced\n"
+          "set xlabel %s noenhanced\n"
+          "set ylabel %s noenhanced\n"
+          "S = %zu\n"
+          "plot ",
+          cli_gp_quote(title, qtitle, sizeof qtitle), cli_gp_quote(pl->x_name, qx, sizeof qx),
+          cli_gp_quote(pl->y_name, qy, sizeof qy), pl->stab_col);
+  /* only the series that have points (gnuplot warns about empty ones) */
+  int first = 1;
+  for (int k = 2; k >= 0; k--) {
+    if (!pl->seen_stab[k]) continue;
+    fprintf(f, "%s'branches.tsv' using %d:", first ? "" : ", \\\n     ", x);
+    if (k == 2)
+      fprintf(f, "(column(S) == 1 ? column(%d) : NaN) with lines lw 2 lc rgb "
+              "'#1f4e9c' title 'stable'", y);
+    else if (k == 1)
+      fprintf(f, "(column(S) == 0 ? column(%d) : NaN) with lines lw 2 dt 2 lc "
+              "rgb '#c0392b' title 'unstable'", y);
+    else
+      fprintf(f, "(column(S) < 0 ? column(%d) : NaN) with lines lw 1 lc rgb "
+              "'#777777' title 'stability unknown'", y);
+    first = 0;
+  }
+  if (pl->seen_special)
+    fprintf(f, ", \\\n     'branches.tsv' using %d:(strcol(3) ne 'RG' && "
+            "strcol(3) ne 'EP' ? column(%d) : NaN) with points pt 7 ps 1 lc "
+            "rgb 'black' notitle, \\\n     'branches.tsv' using %d:(strcol(3) "
+            "ne 'RG' && strcol(3) ne 'EP' ? column(%d) : NaN):3 with labels "
+            "offset 1,0.7 notitle", x, y, x, y);
+  fputc('\n', f);
+  return cli_outdir_fclose(od, f, "diagram.gp");
+}
+
+/* The initial states coloured by the attractor they end on. */
+static int write_basins(cli_outdir *od, const whirl_run *r, const whirl_run_plot *pl) {
+  FILE *f = cli_outdir_fopen(od, "basins.gp");
+  if (!f) return -1;
+  char title[400], qt[900], qx[200], qy[200];
+  snprintf(title, sizeof title, "whirl run: basins of attraction (model %s)",
+           whirl_run_model_name(r));
+  cli_gp_preamble(f, "run", "basins", 800, 700, "Sans,11");
+  fprintf(f,
+          "set datafile separator '\\t'\n"
+          "set title %s noenhanced\n"
+          "set xlabel %s noenhanced\nset ylabel %s noenhanced\n"
+          "set size ratio -1\nset tics out\nunset colorbox\n"
+          "set palette defined (-3 'black', -2 '#555555', -1 'white', 0 '#1f4e9c', "
+          "1 '#e67e22', 2 '#27ae60', 3 '#8e44ad')\n"
+          "set cbrange [-3:3]\n",
+          cli_gp_quote(title, qt, sizeof qt), cli_gp_quote(pl->x_name, qx, sizeof qx),
+          cli_gp_quote(pl->y_name, qy, sizeof qy));
+  fprintf(f, "map(c) = c < 0 ? c : (");
+  for (size_t a = 0; a < pl->nattractors; a++)
+    fprintf(f, "c == %d ? %zu : ", pl->attractors[a], a % 4);
+  fprintf(f, "0)\nplot 'basins.tsv' using 1:2:(map($3)) with image notitle");
+  for (size_t a = 0; a < pl->nattractors; a++)
+    fprintf(f, ", \\\n     NaN with boxes fs solid lc palette cb %zu title 'LAB %d'",
+            a % 4, pl->attractors[a]);
+  fputc('\n', f);
+  return cli_outdir_fclose(od, f, "basins.gp");
+}
+
+int run_write_plot(cli_outdir *od, const whirl_run *r, const char **name) {
+  const whirl_run_plot *pl = whirl_run_plot_info(r);
+  *name = pl->basins ? "basins" : "diagram";
+  return pl->basins ? write_basins(od, r, pl) : write_diagram(od, r, pl);
+}

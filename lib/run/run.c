@@ -1,0 +1,876 @@
+/* lib/run/run.c — a run of a run file (whirl/run.h): build the problem
+ * the run asks for out of the library's constructors, continue it and
+ * write the branch table, the labelled solutions and the log:
+ *
+ *   branches.tsv   # BR PT TY LAB, parameters, norms, state, STAB per point
+ *   solutions      labelled solutions, full precision, restartable (IRS)
+ *   run.log        diagnostics: settings, model, steps, stop reasons
+ *
+ * Problems (AUTO-07p manual, ch. 10, IPS/ISW):
+ *   IPS 1, ISW 1      equilibria from the model's start or a label
+ *   IPS 1, ISW -1     branch switching at a BP
+ *   IPS 1, ISW 2      fold (LP) or Hopf (HB) locus in two parameters
+ *   IPS 2             periodic orbits (METHOD colloc | hbm): from the
+ *                     model's start orbit, a settled forced response, an HB
+ *                     label (Hopf start) or a periodic label
+ *   IPS 2, ISW -1     period doubling (PD) or BP switching
+ *   IPS 2, ISW 2      fold of periodic orbits (LP of cycles)
+ *   IPS basins        basins of attraction (run_basins.c)
+ * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
+#include <dirent.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "run_impl.h"
+
+
+void run_fail(run_ctx *R, whirl_run_key k, const char *fmt, ...) {
+  char where[4200], msg[2048];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(msg, sizeof msg, fmt, ap);
+  va_end(ap);
+  run_say(R, "%s: %s", whirl_runfile_where(R->rf, k, where, sizeof where), msg);
+}
+
+void run_say(run_ctx *R, const char *fmt, ...) {
+  char msg[4600];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(msg, sizeof msg, fmt, ap);
+  va_end(ap);
+  if (!R->errmsg[0]) snprintf(R->errmsg, sizeof R->errmsg, "%s", msg);
+  if (R->io.message) R->io.message(msg, R->io.ctx);
+}
+
+void run_summary(run_ctx *R, const char *fmt, ...) {
+  char line[2048];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(line, sizeof line, fmt, ap);
+  va_end(ap);
+  if (R->io.summary) R->io.summary(line, R->io.ctx);
+}
+
+FILE *run_open(run_ctx *R, const char *name) {
+  if (R->io.open) return R->io.open(name, R->io.ctx);
+  char p[8300];
+  if (mkdir(R->out, 0777) != 0 && errno != EEXIST) {
+    run_say(R, "cannot create '%s': %s", R->out, strerror(errno));
+    return NULL;
+  }
+  snprintf(p, sizeof p, "%s/%s", R->out, name);
+  FILE *f = fopen(p, "w");
+  if (!f) run_say(R, "cannot write %s: %s", p, strerror(errno));
+  return f;
+}
+
+int run_close(run_ctx *R, FILE *f, const char *name) {
+  if (!f) return -1;
+  if (R->io.close) return R->io.close(f, name, R->io.ctx);
+  int bad = fflush(f) != 0 || ferror(f);
+  if (fclose(f) != 0) bad = 1;
+  if (bad) run_say(R, "writing %s/%s failed", R->out, name);
+  return bad ? -1 : 0;
+}
+
+double run_now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* ---- one branch --------------------------------------------------------- */
+
+typedef struct branch_spec {
+  whirl_solution_kind kind;           /* base kind */
+  whirl_colloc *colloc;    /* base objects (borrowed) */
+  whirl_hbm *hbm;
+  whirl_fold *fold;        /* locus layers (borrowed), or NULL */
+  whirl_hopf *hopf;
+  const whirl_system *sys; /* the system continued */
+  size_t nb;               /* unknowns of the base system */
+  int icp;                 /* core's continuation parameter */
+  int q;                   /* loci: the point's own parameter, else -1 */
+  double ds_scale;         /* arclength scale of the unknowns (colloc) */
+  /* start: Newton from (x0, p0); or along dir from exact (x0, p0); or a
+   * BP switch from `bp` */
+  const double *x0, *p0, *dir;
+  const whirl_point *bp;
+} branch_spec;
+
+static void base_of(const branch_spec *b, const double *Z, const double *p,
+                    double *pfull) {
+  if (b->fold)
+    whirl_fold_params(b->fold, Z, p, pfull);
+  else if (b->hopf)
+    whirl_hopf_params(b->hopf, Z, p, pfull);
+  else
+    memcpy(pfull, p, b->sys->npar * sizeof *pfull);
+}
+
+/* The quantity a UZR/UZSTOP value refers to (whirl_cont_options.uz_fun). */
+typedef struct uz_ctx {
+  run_ctx *R;
+  const branch_spec *b;
+  int what[2 * WHIRL_RUN_MAXITEMS]; /* >= 0 parameter, -1 period, -2 - i state i */
+  double *pfull, *state;
+} uz_ctx;
+
+static double uz_quantity(size_t k, const double *x, const double *p, void *ctx) {
+  uz_ctx *u = ctx;
+  const branch_spec *b = u->b;
+  const int w = u->what[k];
+  base_of(b, x, p, u->pfull);
+  if (w >= 0) return u->pfull[w];
+  if (b->kind == WHIRL_SOL_EQ) return x[-2 - w];
+  const void *obj = b->kind == WHIRL_SOL_COLLOC ? (const void *)b->colloc : (const void *)b->hbm;
+  if (w == -1) {
+    const whirl_periodic po = run_periodic(b->kind, obj);
+    return whirl_periodic_period(&po, x, u->pfull);
+  }
+  double l2, period;
+  if (run_point_measures(u->R, b->kind, obj, x, u->pfull, &l2, &period, u->state))
+    return NAN;
+  return u->state[-2 - w];
+}
+
+static int run_branch(run_ctx *R, branch_spec *b) {
+  const whirl_run_settings *s = R->s;
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.icp = (size_t)b->icp;
+  o.ds = fmin(fmax(fabs(s->ds), s->dsmin), s->dsmax) * b->ds_scale; /* AUTO clips */
+  o.ds_min = s->dsmin * b->ds_scale;
+  o.ds_max = s->dsmax * b->ds_scale;
+  o.nmx = (size_t)s->nmx;
+  o.p_min = s->rl0;
+  o.p_max = s->rl1;
+  o.newton_tol = fmin(s->epsl, s->epsu);
+  o.newton_maxit = s->itnw;
+  o.detect_lp = s->ilp;
+  o.detect_bp = s->isp != 0;
+  o.detect_hb = s->isp != 0;
+  o.detect_pd = s->isp == 2;
+  if (b->kind != WHIRL_SOL_EQ && s->isp != 2) o.detect_hb = 0; /* TR needs Floquet */
+  if (b->sys->Jp && b->sys->n > 400) o.linsol = WHIRL_LINSOL_SPARSE;
+  /* user points (UZR) and stops (UZSTOP): values of a parameter, of the
+   * period (PERIOD, AUTO's PAR(11)) or of a state component (its MAX for
+   * periodic orbits), all localised by the core through uz_quantity */
+  double uz[2 * WHIRL_RUN_MAXITEMS];
+  int uz_stop[2 * WHIRL_RUN_MAXITEMS];
+  uz_ctx uc = {R, b, {0}, NULL, NULL};
+  size_t nuz = 0;
+  for (size_t i = 0; i < s->nuzr + s->nuzstop; i++) {
+    const int is_stop = i >= s->nuzr;
+    const whirl_run_value *u = is_stop ? &s->uzstop[i - s->nuzr] : &s->uzr[i];
+    int k = run_par_index(R, &u->ref), xi;
+    if (k >= 0) {
+      uc.what[nuz] = k;
+    } else if (b->kind != WHIRL_SOL_EQ && (!strcasecmp(u->ref.name, "PERIOD") ||
+                                     u->ref.index == 11)) {
+      uc.what[nuz] = -1;
+    } else if ((xi = run_state_index(R, &u->ref)) >= 0 && !u->ref.index) {
+      uc.what[nuz] = -2 - xi;
+    } else {
+      run_fail(R, is_stop ? WHIRL_RK_UZSTOP : WHIRL_RK_UZR,
+               "%s: '%s' is neither a parameter, PERIOD (periodic orbits) nor "
+               "a state component of model '%s'", is_stop ? "UZSTOP" : "UZR",
+               u->ref.index ? "(index)" : u->ref.name, R->prob.name);
+      return -2;
+    }
+    uz[nuz] = u->value;
+    uz_stop[nuz++] = is_stop;
+  }
+  o.uz = uz;
+  o.uz_stop = uz_stop;
+  o.nuz = nuz;
+  o.uz_fun = uz_quantity;
+  o.uz_ctx = &uc;
+  char err[512];
+  whirl_cont *c = whirl_cont_alloc(b->sys, &o, err, sizeof err);
+  if (!c) {
+    run_say(R, "%s", err);
+    return -1;
+  }
+  int dir = s->ds < 0 ? -1 : 1, rc;
+  double *pfull = malloc(R->npar * sizeof *pfull);
+  double *state = malloc(R->n * sizeof *state);
+  if (!pfull || !state) {
+    free(pfull);
+    free(state);
+    whirl_cont_free(c);
+    return -1;
+  }
+  uc.pfull = pfull; /* scratch shared with the loop below, never in use */
+  uc.state = state; /* by both at once */
+  if (b->bp)
+    rc = whirl_cont_start_switch(c, b->bp, dir);
+  else if (b->dir)
+    rc = whirl_cont_start_direction(c, b->x0, b->p0, b->dir);
+  else
+    rc = whirl_cont_start(c, b->x0, b->p0, dir);
+  if (rc != WHIRL_OK) {
+    run_say(R, "%s: cannot start the branch: %s",
+              whirl_runfile_name(R->rf), whirl_cont_errmsg(c));
+    fprintf(R->log, "start failed: %s\n", whirl_cont_errmsg(c));
+    whirl_cont_free(c);
+    free(pfull);
+    free(state);
+    return -1;
+  }
+  R->branch++;
+  fprintf(R->log, "branch %d: %s, continuation in %s (%s)\n", R->branch,
+          b->sys->name ? b->sys->name : "?", R->pnames[b->icp],
+          b->fold ? "fold locus" : b->hopf ? "Hopf locus" : "one parameter");
+  int counts[16] = {0};
+  int stop = 0;
+  size_t npts = 0;
+  double pmin = 0.0, pmax = 0.0;
+  for (;;) {
+    rc = whirl_cont_step(c);
+    if (rc != WHIRL_OK) break;
+    const whirl_point *pt = whirl_cont_point(c);
+    npts++;
+    if (npts == 1 || pt->p[b->icp] < pmin) pmin = pt->p[b->icp];
+    if (npts == 1 || pt->p[b->icp] > pmax) pmax = pt->p[b->icp];
+    int type = pt->type;
+    const char *ty = type ? whirl_point_type_name(type) : "RG";
+    base_of(b, pt->x, pt->p, pfull);
+    int lab = 0, labelled = type != WHIRL_PT_REGULAR ||
+                            (s->npr > 0 && pt->index > 0 && pt->index % (size_t)s->npr == 0);
+    if (labelled) lab = ++R->label;
+    if (type >= 0 && type < 16) counts[type]++;
+    double l2 = 0.0, period = 0.0;
+    const void *obj = b->kind == WHIRL_SOL_COLLOC ? (const void *)b->colloc
+                      : b->kind == WHIRL_SOL_HBM  ? (const void *)b->hbm
+                                            : NULL;
+    if (run_table_row(R, b->kind, obj, R->branch, pt->index, ty, lab, pt->x,
+                      pfull, pt->stable, &l2, &period, state)) {
+      rc = -1;
+      break;
+    }
+    if (!stop && pt->index > 0 && (l2 < s->a0 || l2 > s->a1)) {
+      stop = 1;
+      fprintf(R->log, "  L2-NORM = %g left [A0, A1]: branch ends\n", l2);
+    }
+    if (labelled) {
+      whirl_solution so;
+      memset(&so, 0, sizeof so);
+      so.label = lab;
+      so.br = R->branch;
+      so.pt = (int)pt->index;
+      snprintf(so.ty, sizeof so.ty, "%s", ty);
+      so.kind = b->kind;
+      so.icp = b->q >= 0 ? b->q : b->icp;
+      so.icp2 = b->q >= 0 ? b->icp : -1;
+      so.npar = R->npar;
+      so.nx = b->nb;
+      so.par = pfull;
+      so.x = (double *)pt->x;
+      so.tan = (b->fold || b->hopf) ? NULL : (double *)pt->t;
+      so.stable = pt->stable;
+      if (b->kind == WHIRL_SOL_COLLOC) {
+        so.ncol = s->ncol;
+        so.mesh = (double *)whirl_colloc_mesh(b->colloc);
+        so.ntst = (int)((b->nb - (R->prob.autonomous ? 1 : 0)) / R->n - 1) / s->ncol;
+      }
+      if (b->kind == WHIRL_SOL_HBM) so.nhb = s->nhb;
+      if (whirl_solution_write(R->sols, &so)) {
+        rc = -1;
+        break;
+      }
+      if (type != WHIRL_PT_REGULAR && type != WHIRL_PT_EP) {
+        fprintf(R->log, "  %s  LAB %d  PT %zu  %s = %.10g", ty, lab, pt->index,
+                R->pnames[b->icp], pt->p[b->icp]);
+        if (b->q >= 0)
+          fprintf(R->log, "  %s = %.10g", R->pnames[b->q], pfull[b->q]);
+        if (type == WHIRL_PT_HB && pt->nspec)
+          for (size_t k = 0; k < pt->nspec; k++)
+            if (pt->spec_im[k] > 0) {
+              fprintf(R->log, "  omega = %.10g", pt->spec_im[k]);
+              break;
+            }
+        fputc('\n', R->log);
+      }
+    }
+    if (stop) break;
+  }
+  const int reason = rc == WHIRL_DONE && !stop ? whirl_cont_stop_reason(c) : 0;
+  if (reason == WHIRL_STOP_NOCONV || reason == WHIRL_STOP_DOMAIN) {
+    /* the points so far are a result, the end is not: keep them, fail */
+    run_say(R, "%s: branch %d failed after point %zu: %s",
+              whirl_runfile_name(R->rf), R->branch, npts, whirl_cont_errmsg(c));
+    fprintf(R->log, "  failed: %s after %zu points\n", whirl_cont_errmsg(c), npts);
+    R->failed = 1;
+    rc = 0;
+  } else if (rc == WHIRL_DONE || stop) {
+    fprintf(R->log, "  ended: %s after %zu points\n",
+            stop ? "L2-NORM left [A0, A1]"
+                 : whirl_stop_reason_name(whirl_cont_stop_reason(c)),
+            npts);
+    rc = 0;
+  } else if (rc < 0) {
+    run_say(R, "%s: branch %d failed: %s",
+              whirl_runfile_name(R->rf), R->branch, whirl_cont_errmsg(c));
+    fprintf(R->log, "  failed: %s\n", whirl_cont_errmsg(c));
+    rc = -1;
+  }
+  const whirl_cont_stats *st = whirl_cont_get_stats(c);
+  fprintf(R->log, "  %zu steps, %zu rejected, %zu Newton iterations, %zu "
+          "Jacobians, %zu special points\n", st->steps, st->rejected,
+          st->newton_its, st->jac_evals, st->special);
+  if (st->spectrum_failed)
+    fprintf(R->log, "  stability unknown at %zu points: the spectrum could not "
+            "be computed there (STAB -1)\n", st->spectrum_failed);
+  {
+    char line[1024];
+    int len = snprintf(line, sizeof line, "branch %d: %zu points, %s in [%.8g, %.8g]",
+                       R->branch, npts, R->pnames[b->icp], pmin, pmax);
+    static const int order[] = {WHIRL_PT_LP, WHIRL_PT_BP, WHIRL_PT_HB,
+                                WHIRL_PT_PD, WHIRL_PT_TR, WHIRL_PT_UZ,
+                                WHIRL_PT_CP, WHIRL_PT_BT, WHIRL_PT_ZH,
+                                WHIRL_PT_MG, WHIRL_PT_IS};
+    for (size_t i = 0; i < sizeof order / sizeof order[0]; i++)
+      if (counts[order[i]] && len > 0 && (size_t)len < sizeof line)
+        len += snprintf(line + len, sizeof line - (size_t)len, " %d %s", counts[order[i]],
+                        whirl_point_type_name(order[i]));
+    run_summary(R, "%s", line);
+  }
+  whirl_cont_free(c);
+  free(pfull);
+  free(state);
+  return rc;
+}
+
+/* ---- building the problem ---------------------------------------------- */
+
+/* Samples of one period of the start orbit: the model's stpnt (autonomous),
+ * or a forced response settled by time integration from U. */
+static int start_samples(run_ctx *R, size_t m, double *xs, double *T) {
+  const whirl_model *md = R->model;
+  if (md->forcing_param < 0) {
+    if (!md->stpnt || !(md->period0 > 0)) {
+      run_fail(R, WHIRL_RK_IPS, "IPS = 2 from the model's start needs a "
+               "start orbit: model '%s' has no stpnt/period0 (start from an "
+               "HB label instead: S, IRS)", R->prob.name);
+      return -1;
+    }
+    double *ptmp = malloc(R->npar * sizeof *ptmp);
+    if (!ptmp) return -1;
+    for (size_t k = 0; k < m; k++) {
+      memcpy(ptmp, R->par, R->npar * sizeof *ptmp);
+      if (md->stpnt((double)k / (double)m, xs + k * R->n, ptmp, R->prob.data)) {
+        free(ptmp);
+        run_fail(R, WHIRL_RK_MODEL, "model '%s': stpnt failed", R->prob.name);
+        return -1;
+      }
+    }
+    free(ptmp);
+    *T = md->period0;
+    return 0;
+  }
+  /* forced: integrate 200 periods from U, sample the next one */
+  const double w = R->par[md->forcing_param], Tf = 2.0 * WHIRL_PI / w;
+  whirl_ode *ode = whirl_ode_alloc(&R->prob, R->par);
+  if (!ode) return -1;
+  int rc = whirl_ode_set_tolerances(ode, 1e-10, 1e-12);
+  if (!rc) rc = whirl_ode_reset(ode, 0.0, R->u);
+  if (!rc) rc = whirl_ode_evolve(ode, 200.0 * Tf);
+  for (size_t k = 0; !rc && k < m; k++) {
+    rc = whirl_ode_evolve(ode, 200.0 * Tf + Tf * (double)k / (double)m);
+    if (!rc) memcpy(xs + k * R->n, whirl_ode_x(ode), R->n * sizeof *xs);
+  }
+  if (rc) {
+    run_say(R, "%s: settling the forced response from U by "
+              "time integration failed: %s", whirl_runfile_name(R->rf),
+              whirl_ode_errmsg(ode));
+    whirl_ode_free(ode);
+    return -1;
+  }
+  whirl_ode_free(ode);
+  *T = Tf;
+  return 0;
+}
+
+/* Everything a run may allocate, freed in one place. */
+typedef struct run_objects {
+  whirl_equilibrium *eq;
+  whirl_colloc *colloc, *colloc2;
+  whirl_hbm *hbm;
+  whirl_fold *fold;
+  whirl_hopf *hopf;
+  double *X, *D, *Z, *xs;
+  whirl_solution sol;
+  int have_sol;
+} run_objects;
+
+static void objects_free(run_objects *O) {
+  whirl_equilibrium_free(O->eq);
+  whirl_colloc_free(O->colloc);
+  whirl_colloc_free(O->colloc2);
+  whirl_hbm_free(O->hbm);
+  whirl_fold_free(O->fold);
+  whirl_hopf_free(O->hopf);
+  free(O->X);
+  free(O->D);
+  free(O->Z);
+  free(O->xs);
+  if (O->have_sol) whirl_solution_free(&O->sol);
+}
+
+static int locus(run_ctx *R, run_objects *O, branch_spec *b,
+                 const whirl_system *base, const double *x, const double *p) {
+  const whirl_solution *so = &O->sol;
+  int q = so->icp, other = -1;
+  for (size_t i = 0; i < R->nicp; i++)
+    if (R->icp[i] != q) {
+      other = R->icp[i];
+      break;
+    }
+  int has_q = 0;
+  for (size_t i = 0; i < R->nicp; i++) has_q |= R->icp[i] == q;
+  if (!has_q || other < 0) {
+    run_fail(R, WHIRL_RK_ICP, "ICP: a two-parameter continuation from the %s "
+             "at label %d needs '%s' (its parameter) and a second parameter",
+             so->ty, so->label, R->pnames[q]);
+    return -2;
+  }
+  char err[512];
+  b->q = q;
+  b->icp = other;
+  if (!strcmp(so->ty, "LP")) {
+    whirl_fold_options fo;
+    whirl_fold_options_default(&fo, (size_t)q);
+    O->fold = whirl_fold_alloc(base, &fo, err, sizeof err);
+    if (!O->fold) goto fail_alloc;
+    O->Z = malloc((whirl_fold_size(O->fold) + 1) * sizeof *O->Z);
+    if (!O->Z) return -1;
+    if (whirl_fold_init(O->fold, x, p, O->Z) != WHIRL_OK) {
+      run_say(R, "fold locus: %s", whirl_fold_errmsg(O->fold));
+      return -1;
+    }
+    b->fold = O->fold;
+    b->sys = whirl_fold_system(O->fold);
+  } else if (!strcmp(so->ty, "HB") && so->kind == WHIRL_SOL_EQ) {
+    O->hopf = whirl_hopf_alloc(base, (size_t)q, err, sizeof err);
+    if (!O->hopf) goto fail_alloc;
+    O->Z = malloc((whirl_hopf_size(O->hopf) + 1) * sizeof *O->Z);
+    if (!O->Z) return -1;
+    if (whirl_hopf_init(O->hopf, x, p, O->Z) != WHIRL_OK) {
+      run_say(R, "Hopf locus: %s", whirl_hopf_errmsg(O->hopf));
+      return -1;
+    }
+    b->hopf = O->hopf;
+    b->sys = whirl_hopf_system(O->hopf);
+  } else {
+    run_fail(R, WHIRL_RK_ISW, "ISW = 2 needs an LP (any problem) or an HB of "
+             "equilibria; label %d is %s%s (loci of %s are not available)",
+             so->label, so->ty, so->kind == WHIRL_SOL_EQ ? "" : " of periodic orbits",
+             so->ty);
+    return -2;
+  }
+  b->x0 = O->Z;
+  b->p0 = p;
+  return 0;
+fail_alloc:
+  run_say(R, "%s", err);
+  return -1;
+}
+
+static int run_continuation(run_ctx *R, run_objects *O) {
+  const whirl_run_settings *s = R->s;
+  const int restart = O->have_sol;
+  whirl_solution *so = &O->sol;
+  branch_spec b;
+  memset(&b, 0, sizeof b);
+  b.icp = R->icp[0];
+  b.q = -1;
+  b.ds_scale = 1.0;
+  char err[512];
+  const double *p0 = R->par;
+
+  if (s->ips == WHIRL_IPS_EQUILIBRIA) {
+    if (restart && so->kind != WHIRL_SOL_EQ) {
+      run_fail(R, WHIRL_RK_IRS, "IRS = %d is a periodic orbit; IPS = 1 needs "
+               "an equilibrium", so->label);
+      return -2;
+    }
+    O->eq = whirl_equilibrium_alloc(&R->prob);
+    if (!O->eq) return -1;
+    b.kind = WHIRL_SOL_EQ;
+    b.sys = whirl_equilibrium_system(O->eq);
+    b.nb = R->n;
+    b.x0 = restart ? so->x : R->u;
+    b.p0 = p0;
+  } else if (s->method == WHIRL_METHOD_COLLOC) {
+    whirl_colloc_options co;
+    whirl_colloc_options_default(&co);
+    co.ntst = (size_t)s->ntst;
+    co.ncol = (size_t)s->ncol;
+    co.forcing_param = R->model->forcing_param;
+    co.adapt_every = s->iad; /* IAD: a new mesh every IAD steps, as AUTO */
+    int pd = restart && s->isw == -1 && !strcmp(so->ty, "PD");
+    if (restart && so->kind == WHIRL_SOL_COLLOC && (pd || s->isw == -1)) {
+      co.ntst = (size_t)so->ntst; /* switching happens on the stored mesh */
+      co.ncol = (size_t)so->ncol;
+    }
+    O->colloc = whirl_colloc_alloc(&R->prob, &co, err, sizeof err);
+    if (!O->colloc) {
+      run_say(R, "collocation: %s", err);
+      return -1;
+    }
+    b.kind = WHIRL_SOL_COLLOC;
+    b.colloc = O->colloc;
+    b.sys = whirl_colloc_system(O->colloc);
+    b.nb = whirl_colloc_size(O->colloc);
+    b.ds_scale = sqrt((double)(co.ntst * co.ncol + 1));
+    O->X = calloc(b.nb + 1, sizeof *O->X);
+    O->D = calloc(b.nb + 1, sizeof *O->D);
+    if (!O->X || !O->D) return -1;
+    b.x0 = O->X;
+    b.p0 = p0;
+    if (!restart) {
+      const size_t m = 200;
+      double T;
+      O->xs = malloc(m * R->n * sizeof *O->xs);
+      if (!O->xs || start_samples(R, m, O->xs, &T)) return O->xs ? -2 : -1;
+      whirl_colloc_from_samples(O->colloc, O->xs, m, T, O->X);
+    } else if (so->kind == WHIRL_SOL_EQ) {
+      if (strcmp(so->ty, "HB") || !R->prob.autonomous) {
+        run_fail(R, WHIRL_RK_IRS, "IPS = 2 from an equilibrium label needs an "
+                 "HB of an autonomous model; label %d is %s", so->label, so->ty);
+        return -2;
+      }
+      double w;
+      if (whirl_colloc_hopf_start(O->colloc, so->x, p0, O->X, O->D, &w)) {
+        run_say(R, "no complex eigenvalue pair at label %d: "
+                  "not a Hopf point", so->label);
+        return -1;
+      }
+      fprintf(R->log, "Hopf start at label %d: omega = %.10g, period %.10g\n",
+              so->label, w, 2 * WHIRL_PI / w);
+      b.dir = O->D;
+    } else if (so->kind == WHIRL_SOL_COLLOC) {
+      if ((size_t)so->ntst == co.ntst && (size_t)so->ncol == co.ncol) {
+        whirl_colloc_set_mesh(O->colloc, so->mesh);
+        memcpy(O->X, so->x, b.nb * sizeof *O->X);
+        whirl_colloc_set_reference(O->colloc, O->X);
+      } else { /* another mesh: resample the stored orbit */
+        whirl_colloc_options c0 = co;
+        c0.ntst = (size_t)so->ntst;
+        c0.ncol = (size_t)so->ncol;
+        O->colloc2 = whirl_colloc_alloc(&R->prob, &c0, err, sizeof err);
+        if (!O->colloc2) return -1;
+        whirl_colloc_set_mesh(O->colloc2, so->mesh);
+        const size_t m = 400;
+        O->xs = malloc(m * R->n * sizeof *O->xs);
+        if (!O->xs) return -1;
+        for (size_t k = 0; k < m; k++)
+          whirl_colloc_eval(O->colloc2, so->x, (double)k / (double)m,
+                            O->xs + k * R->n);
+        whirl_colloc_from_samples(O->colloc, O->xs, m,
+                                  whirl_colloc_period(O->colloc2, so->x, so->par),
+                                  O->X);
+        whirl_colloc_free(O->colloc2);
+        O->colloc2 = NULL;
+      }
+      if (pd) {
+        co.ntst *= 2;
+        if (co.forcing_param >= 0) co.nu *= 2;
+        O->colloc2 = whirl_colloc_alloc(&R->prob, &co, err, sizeof err);
+        if (!O->colloc2) return -1;
+        double *X2 = calloc(whirl_colloc_size(O->colloc2) + 1, sizeof *X2);
+        double *D2 = calloc(whirl_colloc_size(O->colloc2) + 1, sizeof *D2);
+        if (!X2 || !D2) {
+          free(X2);
+          free(D2);
+          return -1;
+        }
+        if (whirl_colloc_pd_switch(O->colloc, O->X, p0, O->colloc2, X2, D2)) {
+          free(X2);
+          free(D2);
+          run_say(R, "period-doubling switch at label %d "
+                    "failed", so->label);
+          return -1;
+        }
+        free(O->X);
+        free(O->D);
+        O->X = X2;
+        O->D = D2;
+        whirl_colloc *t = O->colloc;
+        O->colloc = O->colloc2;
+        O->colloc2 = t;
+        b.colloc = O->colloc;
+        b.sys = whirl_colloc_system(O->colloc);
+        b.nb = whirl_colloc_size(O->colloc);
+        b.ds_scale = sqrt((double)(co.ntst * co.ncol + 1));
+        b.x0 = O->X;
+        b.dir = O->D;
+      }
+    } else {
+      run_fail(R, WHIRL_RK_IRS, "label %d is a harmonic-balance solution; "
+               "restart it with METHOD = hbm", so->label);
+      return -2;
+    }
+    if (!b.dir && !pd && s->iad > 0 && !restart)
+      whirl_colloc_adapt(O->colloc, O->X);
+  } else { /* harmonic balance */
+    whirl_hbm_options ho;
+    whirl_hbm_options_default(&ho);
+    ho.harmonics = (size_t)s->nhb;
+    ho.oversampling = (size_t)s->oversampling;
+    ho.forcing_param = R->model->forcing_param;
+    if (s->isp != 2) ho.no_spectrum = 1;
+    O->hbm = whirl_hbm_alloc(&R->prob, &ho, err, sizeof err);
+    if (!O->hbm) {
+      run_say(R, "harmonic balance: %s", err);
+      return -1;
+    }
+    b.kind = WHIRL_SOL_HBM;
+    b.hbm = O->hbm;
+    b.sys = whirl_hbm_system(O->hbm);
+    b.nb = whirl_hbm_size(O->hbm);
+    O->X = calloc(b.nb + 1, sizeof *O->X);
+    if (!O->X) return -1;
+    b.x0 = O->X;
+    b.p0 = p0;
+    if (!restart) {
+      const size_t m = 8 * (2 * (size_t)s->nhb + 1);
+      double T;
+      O->xs = malloc(m * R->n * sizeof *O->xs);
+      if (!O->xs || start_samples(R, m, O->xs, &T)) return O->xs ? -2 : -1;
+      whirl_hbm_from_samples(O->hbm, O->xs, m, T, O->X);
+      whirl_hbm_set_phase(O->hbm, O->X);
+    } else if (so->kind == WHIRL_SOL_HBM && so->nx == b.nb) {
+      memcpy(O->X, so->x, b.nb * sizeof *O->X);
+    } else {
+      run_fail(R, WHIRL_RK_IRS, "label %d is not a harmonic-balance solution "
+               "with NHB = %d (it is %s%s)", so->label, s->nhb,
+               so->kind == WHIRL_SOL_EQ ? "an equilibrium" : so->kind == WHIRL_SOL_COLLOC ?
+               "a collocation orbit" : "a harmonic-balance solution with another NHB",
+               "");
+      return -2;
+    }
+  }
+
+  /* switching and loci from the labelled point */
+  if (restart && s->isw == -1) {
+    if (!strcmp(so->ty, "BP")) {
+      if (!so->tan || so->icp != b.icp) {
+        run_fail(R, WHIRL_RK_ISW, "ISW = -1 at the BP of label %d needs its "
+                 "tangent and the same continuation parameter '%s'", so->label,
+                 R->pnames[so->icp]);
+        return -2;
+      }
+      static whirl_point bp;
+      memset(&bp, 0, sizeof bp);
+      bp.type = WHIRL_PT_BP;
+      bp.n = b.nb;
+      bp.npar = R->npar;
+      bp.x = b.x0;
+      bp.p = p0;
+      bp.t = so->tan;
+      bp.stable = -1;
+      bp.n_unstable = -1;
+      b.bp = &bp;
+    } else if (strcmp(so->ty, "PD") || b.kind != WHIRL_SOL_COLLOC) {
+      run_fail(R, WHIRL_RK_ISW, "ISW = -1 switches at a BP, or at a PD of "
+               "periodic orbits by collocation; label %d is %s", so->label,
+               so->ty);
+      return -2;
+    }
+  } else if (restart && s->isw == 2) {
+    int rc = locus(R, O, &b, b.sys, b.x0, p0);
+    if (rc) return rc;
+    b.ds_scale = 1.0;
+    if (b.kind == WHIRL_SOL_COLLOC) b.ds_scale = sqrt((double)(s->ntst * s->ncol + 1));
+  }
+  if (b.dir && s->ds < 0)
+    for (size_t i = 0; i <= b.nb; i++) O->D[i] = -O->D[i];
+  if (run_table_header(R, b.kind, b.icp, b.q)) return -1;
+  return run_branch(R, &b);
+}
+
+/* ---- the run as a library object (whirl/run.h) --------------------------- */
+
+whirl_run *whirl_run_alloc(const whirl_model_registry *models, const whirl_run_io *io) {
+  whirl_run *r = calloc(1, sizeof *r);
+  if (!r) return NULL;
+  r->registry = models;
+  if (io) r->io = *io;
+  return r;
+}
+
+void whirl_run_free(whirl_run *r) {
+  if (!r) return;
+  if (r->log) fclose(r->log);
+  if (r->table) fclose(r->table);
+  if (r->sols) fclose(r->sols);
+  run_unload_model(r);
+  whirl_runfile_free(r->rf);
+  for (size_t i = 0; i < r->nspecial; i++) {
+    free((void *)r->special[i].par);
+    free((void *)r->special[i].row);
+  }
+  free(r->special);
+  for (size_t i = 0; i < r->noverrides; i++) free(r->overrides[i]);
+  free(r->overrides);
+  free(r);
+}
+
+/* The output directory: OUT, or the run file's name with .out; plug-in
+ * paths are relative to the run file's directory. */
+static void set_paths(whirl_run *R, const char *file) {
+  const char *slash = strrchr(file, '/');
+  if (slash) snprintf(R->rundir, sizeof R->rundir, "%.*s", (int)(slash - file), file);
+  if (slash && !R->rundir[0]) snprintf(R->rundir, sizeof R->rundir, "/");
+  if (R->s->out[0]) {
+    snprintf(R->out, sizeof R->out, "%s", R->s->out);
+  } else {
+    const char *base = slash ? slash + 1 : file;
+    const char *dot = strrchr(base, '.');
+    int len = dot && dot != base ? (int)(dot - base) : (int)strlen(base);
+    snprintf(R->out, sizeof R->out, "%.*s.out", len, base);
+  }
+  if (whirl_runfile_given(R->rf, WHIRL_RK_OUT))
+    whirl_runfile_where(R->rf, WHIRL_RK_OUT, R->out_where, sizeof R->out_where);
+}
+
+int whirl_run_load(whirl_run *R, const char *file, const char *const *overrides,
+                   size_t noverrides) {
+  if (!R || !file) return WHIRL_EINVAL;
+  if (!(R->rf = whirl_runfile_alloc())) return 1;
+  snprintf(R->file, sizeof R->file, "%s", file);
+  int rc = whirl_runfile_read(R->rf, file);
+  R->overrides = calloc(noverrides ? noverrides : 1, sizeof *R->overrides);
+  if (!R->overrides) return 1;
+  for (size_t i = 0; rc == WHIRL_OK && i < noverrides; i++) {
+    R->overrides[R->noverrides++] = strdup(overrides[i]);
+    rc = whirl_runfile_override(R->rf, overrides[i]);
+  }
+  if (rc == WHIRL_OK) rc = whirl_runfile_check(R->rf);
+  if (rc != WHIRL_OK) {
+    run_say(R, "%s", whirl_runfile_errmsg(R->rf));
+    /* a run file that exists but cannot be read is an I/O error (1); a
+     * missing one, like any mistake in it, is bad input (2) */
+    FILE *probe = rc == WHIRL_EIO ? fopen(file, "r") : NULL;
+    if (probe) fclose(probe);
+    return rc == WHIRL_EIO && (probe || errno != ENOENT) ? 1 : 2;
+  }
+  R->s = whirl_runfile_settings(R->rf);
+  set_paths(R, file);
+  return run_load_model(R) || run_resolve(R) ? 2 : 0;
+}
+
+const char *whirl_run_output(const whirl_run *r) { return r->out; }
+const char *whirl_run_output_where(const whirl_run *r) { return r->out_where; }
+int whirl_run_failed(const whirl_run *r) { return r->failed; }
+size_t whirl_run_nspecial(const whirl_run *r) { return r->nspecial; }
+const whirl_run_special *whirl_run_special_point(const whirl_run *r, size_t i) {
+  return i < r->nspecial ? &r->special[i] : NULL;
+}
+const whirl_run_plot *whirl_run_plot_info(const whirl_run *r) {
+  whirl_run *w = (whirl_run *)r; /* a view of the fields, made on request */
+  w->plot.basins = r->s && r->s->ips == WHIRL_IPS_BASINS;
+  if (!w->plot.basins) {
+    w->plot.x = r->plot_x;
+    w->plot.y = r->plot_y;
+    w->plot.stab_col = r->ncols;
+    w->plot.x_name = r->plot_x_name;
+    w->plot.y_name = r->plot_y_name;
+  }
+  memcpy(w->plot.seen_stab, r->seen_stab, sizeof w->plot.seen_stab);
+  w->plot.seen_special = r->seen_special;
+  return &r->plot;
+}
+const char *whirl_run_model_name(const whirl_run *r) { return r->prob.name; }
+const char *whirl_run_file_name(const whirl_run *r) { return whirl_runfile_name(r->rf); }
+const char *whirl_run_errmsg(const whirl_run *r) { return r->errmsg; }
+
+/* The labelled start solution (S, IRS): its parameters under the run
+ * file's PAR, and its state for equilibria.  0, or -1 (message said). */
+static int restart_solution(whirl_run *R, run_objects *O) {
+  char msg[1024];
+  /* S is relative to the current directory, like the output directory */
+  if (run_solution_find(R, R->s->s, R->s->irs, R->s->irs_type, &O->sol, msg,
+                        sizeof msg)) {
+    run_fail(R, WHIRL_RK_IRS, "IRS: %s", msg);
+    return -1;
+  }
+  O->have_sol = 1;
+  /* the run file's PAR overrides the stored parameters (AUTO) */
+  for (size_t k = 0; k < R->npar; k++) R->par[k] = O->sol.par[k];
+  for (size_t i = 0; i < R->s->npar; i++)
+    R->par[run_par_index(R, &R->s->par[i].ref)] = R->s->par[i].value;
+  if (O->sol.kind == WHIRL_SOL_EQ) memcpy(R->u, O->sol.x, R->n * sizeof *R->u);
+  return 0;
+}
+
+static void write_log_head(whirl_run *R) {
+  fprintf(R->log, "whirl %s run %s\n", whirl_version(), R->file);
+  for (size_t i = 0; i < R->noverrides; i++)
+    fprintf(R->log, "override: %s\n", R->overrides[i]);
+  fprintf(R->log, "model: %s (%s), n = %zu, npar = %zu%s\n", R->prob.name,
+          R->model->description ? R->model->description : "no description",
+          R->n, R->npar, R->dl ? ", plug-in" : ", built-in");
+  if (whirl_runfile_ignored(R->rf)[0])
+    fprintf(R->log, "ignored AUTO constants: %s\n", whirl_runfile_ignored(R->rf));
+  fprintf(R->log, "parameters:");
+  for (size_t k = 0; k < R->npar; k++) fprintf(R->log, " %s = %.10g", R->pnames[k], R->par[k]);
+  fprintf(R->log, "\n");
+  if (R->sols)
+    fprintf(R->sols, "# whirl solutions: model %s, npar %zu\n", R->prob.name, R->npar);
+}
+
+/* Close the files of the run: 0, or 1 when one was not complete. */
+static int close_files(whirl_run *R) {
+  int bad = 0;
+  if (R->table) bad |= run_close(R, R->table, "branches.tsv");
+  if (R->sols) bad |= run_close(R, R->sols, "solutions");
+  if (R->log) bad |= run_close(R, R->log, "run.log");
+  R->table = R->sols = R->log = NULL;
+  return bad ? 1 : 0;
+}
+
+int whirl_run_execute(whirl_run *R) {
+  if (!R || !R->s) return WHIRL_EINVAL;
+  run_objects O;
+  memset(&O, 0, sizeof O);
+  int status = 2;
+  if ((R->s->irs > 0 || R->s->irs_type[0]) && restart_solution(R, &O)) goto out;
+  status = 1;
+  const int basins = R->s->ips == WHIRL_IPS_BASINS;
+  R->plot.basins = basins;
+  if (!(R->log = run_open(R, "run.log")) ||
+      (!basins && (!(R->table = run_open(R, "branches.tsv")) ||
+                   !(R->sols = run_open(R, "solutions")))))
+    goto out;
+  write_log_head(R);
+  const double t0 = run_now();
+  int rr = basins ? run_basins(R) : run_continuation(R, &O);
+  if (rr) {
+    status = rr == -2 ? 2 : 1;
+    goto out;
+  }
+  fprintf(R->log, "wall time %.3f s\n", run_now() - t0);
+  status = close_files(R);
+out:
+  if (status) { /* abandoned: the caller discards what was written */
+    if (R->log) fclose(R->log);
+    if (R->table) fclose(R->table);
+    if (R->sols) fclose(R->sols);
+    R->log = R->table = R->sols = NULL;
+  }
+  objects_free(&O);
+  return status;
+}
