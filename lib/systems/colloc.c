@@ -38,39 +38,33 @@ void whirl_colloc_options_default(whirl_colloc_options *o) {
 
 /* ------------------------------------------------------------ basis */
 
-/* Gauss–Legendre points and weights on [0, 1] by Newton's method on the
- * Legendre polynomial P_m (three-term recurrence), from the asymptotic
- * guesses cos(π(k + 3/4)/(m + 1/2)); converged to rounding (~1e-16). */
+/* The Legendre polynomial P_m(z) (into *pm, by the three-term recurrence)
+ * and its derivative P_m'(z). */
+static double legendre(size_t m, double z, double *pm) {
+  double p0 = 1.0, p1 = z;
+  for (size_t j = 2; j <= m; ++j) {
+    double p2 = ((2.0 * (double)j - 1.0) * z * p1 - ((double)j - 1.0) * p0) / (double)j;
+    p0 = p1;
+    p1 = p2;
+  }
+  *pm = p1;
+  return (double)m * (z * p1 - p0) / (z * z - 1.0);
+}
+
+/* Gauss–Legendre points and weights on [0, 1] by Newton's method on P_m,
+ * from the asymptotic guesses cos(π(k + 3/4)/(m + 1/2)); converged to
+ * rounding (~1e-16). */
 static void gauss_legendre(size_t m, double *s, double *w) {
   for (size_t k = 0; k < m; ++k) {
     double z = cos(WHIRL_PI * ((double)k + 0.75) / ((double)m + 0.5));
-    double dp = 1.0;
+    double dp = 1.0, pm;
     for (int it = 0; it < 100; ++it) {
-      double p0 = 1.0, p1 = z;
-      for (size_t j = 2; j <= m; ++j) {
-        double p2 =
-            ((2.0 * (double)j - 1.0) * z * p1 - ((double)j - 1.0) * p0) /
-            (double)j;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = (double)m * (z * p1 - p0) / (z * z - 1.0);
-      double dz = p1 / dp;
+      dp = legendre(m, z, &pm);
+      double dz = pm / dp;
       z -= dz;
       if (fabs(dz) <= 1e-17) break;
     }
-    {
-      /* derivative at the converged root, for the weight */
-      double p0 = 1.0, p1 = z;
-      for (size_t j = 2; j <= m; ++j) {
-        double p2 =
-            ((2.0 * (double)j - 1.0) * z * p1 - ((double)j - 1.0) * p0) /
-            (double)j;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = (double)m * (z * p1 - p0) / (z * z - 1.0);
-    }
+    dp = legendre(m, z, &pm); /* derivative at the converged root, for the weight */
     /* roots come in decreasing z: σ = (1 − z)/2 is increasing */
     s[k] = 0.5 * (1.0 - z);
     w[k] = 1.0 / ((1.0 - z * z) * dp * dp); /* 2/((1−z²)P'²) halved */
