@@ -487,186 +487,206 @@ fail_alloc:
   return -1;
 }
 
-static int run_continuation(run_ctx *R, run_objects *O) {
+/* The branch of equilibria: from the model's start (U) or a label. */
+static int start_equilibria(run_ctx *R, run_objects *O, branch_spec *b) {
+  const int restart = O->have_sol;
+  const whirl_solution *so = &O->sol;
+  const double *p0 = R->par;
+  if (restart && so->kind != WHIRL_SOL_EQ) {
+    run_fail(R, WHIRL_RK_IRS, "IRS = %d is a periodic orbit; IPS = 1 needs "
+             "an equilibrium", so->label);
+    return -2;
+  }
+  O->eq = whirl_equilibrium_alloc(&R->prob);
+  if (!O->eq) return -1;
+  b->kind = WHIRL_SOL_EQ;
+  b->sys = whirl_equilibrium_system(O->eq);
+  b->nb = R->n;
+  b->x0 = restart ? so->x : R->u;
+  b->p0 = p0;
+  return 0;
+}
+
+/* Periodic orbits by collocation: from the model's start orbit or a
+ * settled forced response, a Hopf point (HB label), or a periodic label
+ * (on its mesh, resampled to another, or doubled at a PD). */
+static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
   const whirl_run_settings *s = R->s;
   const int restart = O->have_sol;
   whirl_solution *so = &O->sol;
-  branch_spec b;
-  memset(&b, 0, sizeof b);
-  b.icp = R->icp[0];
-  b.q = -1;
-  b.ds_scale = 1.0;
-  char err[512];
   const double *p0 = R->par;
-
-  if (s->ips == WHIRL_IPS_EQUILIBRIA) {
-    if (restart && so->kind != WHIRL_SOL_EQ) {
-      run_fail(R, WHIRL_RK_IRS, "IRS = %d is a periodic orbit; IPS = 1 needs "
-               "an equilibrium", so->label);
+  char err[512];
+  whirl_colloc_options co;
+  whirl_colloc_options_default(&co);
+  co.ntst = (size_t)s->ntst;
+  co.ncol = (size_t)s->ncol;
+  co.forcing_param = R->model->forcing_param;
+  co.adapt_every = s->iad; /* IAD: a new mesh every IAD steps, as AUTO */
+  int pd = restart && s->isw == -1 && !strcmp(so->ty, "PD");
+  if (restart && so->kind == WHIRL_SOL_COLLOC && (pd || s->isw == -1)) {
+    co.ntst = (size_t)so->ntst; /* switching happens on the stored mesh */
+    co.ncol = (size_t)so->ncol;
+  }
+  O->colloc = whirl_colloc_alloc(&R->prob, &co, err, sizeof err);
+  if (!O->colloc) {
+    run_say(R, "collocation: %s", err);
+    return -1;
+  }
+  b->kind = WHIRL_SOL_COLLOC;
+  b->colloc = O->colloc;
+  b->sys = whirl_colloc_system(O->colloc);
+  b->nb = whirl_colloc_size(O->colloc);
+  b->ds_scale = sqrt((double)(co.ntst * co.ncol + 1));
+  O->X = calloc(b->nb + 1, sizeof *O->X);
+  O->D = calloc(b->nb + 1, sizeof *O->D);
+  if (!O->X || !O->D) return -1;
+  b->x0 = O->X;
+  b->p0 = p0;
+  if (!restart) {
+    const size_t m = 200;
+    double T;
+    O->xs = malloc(m * R->n * sizeof *O->xs);
+    if (!O->xs || start_samples(R, m, O->xs, &T)) return O->xs ? -2 : -1;
+    whirl_colloc_from_samples(O->colloc, O->xs, m, T, O->X);
+  } else if (so->kind == WHIRL_SOL_EQ) {
+    if (strcmp(so->ty, "HB") || !R->prob.autonomous) {
+      run_fail(R, WHIRL_RK_IRS, "IPS = 2 from an equilibrium label needs an "
+               "HB of an autonomous model; label %d is %s", so->label, so->ty);
       return -2;
     }
-    O->eq = whirl_equilibrium_alloc(&R->prob);
-    if (!O->eq) return -1;
-    b.kind = WHIRL_SOL_EQ;
-    b.sys = whirl_equilibrium_system(O->eq);
-    b.nb = R->n;
-    b.x0 = restart ? so->x : R->u;
-    b.p0 = p0;
-  } else if (s->method == WHIRL_METHOD_COLLOC) {
-    whirl_colloc_options co;
-    whirl_colloc_options_default(&co);
-    co.ntst = (size_t)s->ntst;
-    co.ncol = (size_t)s->ncol;
-    co.forcing_param = R->model->forcing_param;
-    co.adapt_every = s->iad; /* IAD: a new mesh every IAD steps, as AUTO */
-    int pd = restart && s->isw == -1 && !strcmp(so->ty, "PD");
-    if (restart && so->kind == WHIRL_SOL_COLLOC && (pd || s->isw == -1)) {
-      co.ntst = (size_t)so->ntst; /* switching happens on the stored mesh */
-      co.ncol = (size_t)so->ncol;
-    }
-    O->colloc = whirl_colloc_alloc(&R->prob, &co, err, sizeof err);
-    if (!O->colloc) {
-      run_say(R, "collocation: %s", err);
+    double w;
+    if (whirl_colloc_hopf_start(O->colloc, so->x, p0, O->X, O->D, &w)) {
+      run_say(R, "no complex eigenvalue pair at label %d: "
+                "not a Hopf point", so->label);
       return -1;
     }
-    b.kind = WHIRL_SOL_COLLOC;
-    b.colloc = O->colloc;
-    b.sys = whirl_colloc_system(O->colloc);
-    b.nb = whirl_colloc_size(O->colloc);
-    b.ds_scale = sqrt((double)(co.ntst * co.ncol + 1));
-    O->X = calloc(b.nb + 1, sizeof *O->X);
-    O->D = calloc(b.nb + 1, sizeof *O->D);
-    if (!O->X || !O->D) return -1;
-    b.x0 = O->X;
-    b.p0 = p0;
-    if (!restart) {
-      const size_t m = 200;
-      double T;
+    fprintf(R->log, "Hopf start at label %d: omega = %.10g, period %.10g\n",
+            so->label, w, 2 * WHIRL_PI / w);
+    b->dir = O->D;
+  } else if (so->kind == WHIRL_SOL_COLLOC) {
+    if ((size_t)so->ntst == co.ntst && (size_t)so->ncol == co.ncol) {
+      whirl_colloc_set_mesh(O->colloc, so->mesh);
+      memcpy(O->X, so->x, b->nb * sizeof *O->X);
+      whirl_colloc_set_reference(O->colloc, O->X);
+    } else { /* another mesh: resample the stored orbit */
+      whirl_colloc_options c0 = co;
+      c0.ntst = (size_t)so->ntst;
+      c0.ncol = (size_t)so->ncol;
+      O->colloc2 = whirl_colloc_alloc(&R->prob, &c0, err, sizeof err);
+      if (!O->colloc2) return -1;
+      whirl_colloc_set_mesh(O->colloc2, so->mesh);
+      const size_t m = 400;
       O->xs = malloc(m * R->n * sizeof *O->xs);
-      if (!O->xs || start_samples(R, m, O->xs, &T)) return O->xs ? -2 : -1;
-      whirl_colloc_from_samples(O->colloc, O->xs, m, T, O->X);
-    } else if (so->kind == WHIRL_SOL_EQ) {
-      if (strcmp(so->ty, "HB") || !R->prob.autonomous) {
-        run_fail(R, WHIRL_RK_IRS, "IPS = 2 from an equilibrium label needs an "
-                 "HB of an autonomous model; label %d is %s", so->label, so->ty);
-        return -2;
-      }
-      double w;
-      if (whirl_colloc_hopf_start(O->colloc, so->x, p0, O->X, O->D, &w)) {
-        run_say(R, "no complex eigenvalue pair at label %d: "
-                  "not a Hopf point", so->label);
+      if (!O->xs) return -1;
+      for (size_t k = 0; k < m; k++)
+        whirl_colloc_eval(O->colloc2, so->x, (double)k / (double)m,
+                          O->xs + k * R->n);
+      whirl_colloc_from_samples(O->colloc, O->xs, m,
+                                whirl_colloc_period(O->colloc2, so->x, so->par),
+                                O->X);
+      whirl_colloc_free(O->colloc2);
+      O->colloc2 = NULL;
+    }
+    if (pd) {
+      co.ntst *= 2;
+      if (co.forcing_param >= 0) co.nu *= 2;
+      O->colloc2 = whirl_colloc_alloc(&R->prob, &co, err, sizeof err);
+      if (!O->colloc2) return -1;
+      double *X2 = calloc(whirl_colloc_size(O->colloc2) + 1, sizeof *X2);
+      double *D2 = calloc(whirl_colloc_size(O->colloc2) + 1, sizeof *D2);
+      if (!X2 || !D2) {
+        free(X2);
+        free(D2);
         return -1;
       }
-      fprintf(R->log, "Hopf start at label %d: omega = %.10g, period %.10g\n",
-              so->label, w, 2 * WHIRL_PI / w);
-      b.dir = O->D;
-    } else if (so->kind == WHIRL_SOL_COLLOC) {
-      if ((size_t)so->ntst == co.ntst && (size_t)so->ncol == co.ncol) {
-        whirl_colloc_set_mesh(O->colloc, so->mesh);
-        memcpy(O->X, so->x, b.nb * sizeof *O->X);
-        whirl_colloc_set_reference(O->colloc, O->X);
-      } else { /* another mesh: resample the stored orbit */
-        whirl_colloc_options c0 = co;
-        c0.ntst = (size_t)so->ntst;
-        c0.ncol = (size_t)so->ncol;
-        O->colloc2 = whirl_colloc_alloc(&R->prob, &c0, err, sizeof err);
-        if (!O->colloc2) return -1;
-        whirl_colloc_set_mesh(O->colloc2, so->mesh);
-        const size_t m = 400;
-        O->xs = malloc(m * R->n * sizeof *O->xs);
-        if (!O->xs) return -1;
-        for (size_t k = 0; k < m; k++)
-          whirl_colloc_eval(O->colloc2, so->x, (double)k / (double)m,
-                            O->xs + k * R->n);
-        whirl_colloc_from_samples(O->colloc, O->xs, m,
-                                  whirl_colloc_period(O->colloc2, so->x, so->par),
-                                  O->X);
-        whirl_colloc_free(O->colloc2);
-        O->colloc2 = NULL;
+      if (whirl_colloc_pd_switch(O->colloc, O->X, p0, O->colloc2, X2, D2)) {
+        free(X2);
+        free(D2);
+        run_say(R, "period-doubling switch at label %d "
+                  "failed", so->label);
+        return -1;
       }
-      if (pd) {
-        co.ntst *= 2;
-        if (co.forcing_param >= 0) co.nu *= 2;
-        O->colloc2 = whirl_colloc_alloc(&R->prob, &co, err, sizeof err);
-        if (!O->colloc2) return -1;
-        double *X2 = calloc(whirl_colloc_size(O->colloc2) + 1, sizeof *X2);
-        double *D2 = calloc(whirl_colloc_size(O->colloc2) + 1, sizeof *D2);
-        if (!X2 || !D2) {
-          free(X2);
-          free(D2);
-          return -1;
-        }
-        if (whirl_colloc_pd_switch(O->colloc, O->X, p0, O->colloc2, X2, D2)) {
-          free(X2);
-          free(D2);
-          run_say(R, "period-doubling switch at label %d "
-                    "failed", so->label);
-          return -1;
-        }
-        free(O->X);
-        free(O->D);
-        O->X = X2;
-        O->D = D2;
-        whirl_colloc *t = O->colloc;
-        O->colloc = O->colloc2;
-        O->colloc2 = t;
-        b.colloc = O->colloc;
-        b.sys = whirl_colloc_system(O->colloc);
-        b.nb = whirl_colloc_size(O->colloc);
-        b.ds_scale = sqrt((double)(co.ntst * co.ncol + 1));
-        b.x0 = O->X;
-        b.dir = O->D;
-      }
-    } else {
-      run_fail(R, WHIRL_RK_IRS, "label %d is a harmonic-balance solution; "
-               "restart it with METHOD = hbm", so->label);
-      return -2;
+      free(O->X);
+      free(O->D);
+      O->X = X2;
+      O->D = D2;
+      whirl_colloc *t = O->colloc;
+      O->colloc = O->colloc2;
+      O->colloc2 = t;
+      b->colloc = O->colloc;
+      b->sys = whirl_colloc_system(O->colloc);
+      b->nb = whirl_colloc_size(O->colloc);
+      b->ds_scale = sqrt((double)(co.ntst * co.ncol + 1));
+      b->x0 = O->X;
+      b->dir = O->D;
     }
-    if (!b.dir && !pd && s->iad > 0 && !restart)
-      whirl_colloc_adapt(O->colloc, O->X);
-  } else { /* harmonic balance */
-    whirl_hbm_options ho;
-    whirl_hbm_options_default(&ho);
-    ho.harmonics = (size_t)s->nhb;
-    ho.oversampling = (size_t)s->oversampling;
-    ho.forcing_param = R->model->forcing_param;
-    if (s->isp != 2) ho.no_spectrum = 1;
-    O->hbm = whirl_hbm_alloc(&R->prob, &ho, err, sizeof err);
-    if (!O->hbm) {
-      run_say(R, "harmonic balance: %s", err);
-      return -1;
-    }
-    b.kind = WHIRL_SOL_HBM;
-    b.hbm = O->hbm;
-    b.sys = whirl_hbm_system(O->hbm);
-    b.nb = whirl_hbm_size(O->hbm);
-    O->X = calloc(b.nb + 1, sizeof *O->X);
-    if (!O->X) return -1;
-    b.x0 = O->X;
-    b.p0 = p0;
-    if (!restart) {
-      const size_t m = 8 * (2 * (size_t)s->nhb + 1);
-      double T;
-      O->xs = malloc(m * R->n * sizeof *O->xs);
-      if (!O->xs || start_samples(R, m, O->xs, &T)) return O->xs ? -2 : -1;
-      whirl_hbm_from_samples(O->hbm, O->xs, m, T, O->X);
-      whirl_hbm_set_phase(O->hbm, O->X);
-    } else if (so->kind == WHIRL_SOL_HBM && so->nx == b.nb) {
-      memcpy(O->X, so->x, b.nb * sizeof *O->X);
-    } else {
-      run_fail(R, WHIRL_RK_IRS, "label %d is not a harmonic-balance solution "
-               "with NHB = %d (it is %s%s)", so->label, s->nhb,
-               so->kind == WHIRL_SOL_EQ ? "an equilibrium" : so->kind == WHIRL_SOL_COLLOC ?
-               "a collocation orbit" : "a harmonic-balance solution with another NHB",
-               "");
-      return -2;
-    }
+  } else {
+    run_fail(R, WHIRL_RK_IRS, "label %d is a harmonic-balance solution; "
+             "restart it with METHOD = hbm", so->label);
+    return -2;
   }
+  if (!b->dir && !pd && s->iad > 0 && !restart)
+    whirl_colloc_adapt(O->colloc, O->X);
+  return 0;
+}
 
+/* Periodic orbits by harmonic balance: from the model's start orbit or a
+ * settled forced response, or a harmonic-balance label with the same NHB. */
+static int start_hbm(run_ctx *R, run_objects *O, branch_spec *b) {
+  const whirl_run_settings *s = R->s;
+  const int restart = O->have_sol;
+  whirl_solution *so = &O->sol;
+  const double *p0 = R->par;
+  char err[512];
+  whirl_hbm_options ho;
+  whirl_hbm_options_default(&ho);
+  ho.harmonics = (size_t)s->nhb;
+  ho.oversampling = (size_t)s->oversampling;
+  ho.forcing_param = R->model->forcing_param;
+  if (s->isp != 2) ho.no_spectrum = 1;
+  O->hbm = whirl_hbm_alloc(&R->prob, &ho, err, sizeof err);
+  if (!O->hbm) {
+    run_say(R, "harmonic balance: %s", err);
+    return -1;
+  }
+  b->kind = WHIRL_SOL_HBM;
+  b->hbm = O->hbm;
+  b->sys = whirl_hbm_system(O->hbm);
+  b->nb = whirl_hbm_size(O->hbm);
+  O->X = calloc(b->nb + 1, sizeof *O->X);
+  if (!O->X) return -1;
+  b->x0 = O->X;
+  b->p0 = p0;
+  if (!restart) {
+    const size_t m = 8 * (2 * (size_t)s->nhb + 1);
+    double T;
+    O->xs = malloc(m * R->n * sizeof *O->xs);
+    if (!O->xs || start_samples(R, m, O->xs, &T)) return O->xs ? -2 : -1;
+    whirl_hbm_from_samples(O->hbm, O->xs, m, T, O->X);
+    whirl_hbm_set_phase(O->hbm, O->X);
+  } else if (so->kind == WHIRL_SOL_HBM && so->nx == b->nb) {
+    memcpy(O->X, so->x, b->nb * sizeof *O->X);
+  } else {
+    run_fail(R, WHIRL_RK_IRS, "label %d is not a harmonic-balance solution "
+             "with NHB = %d (it is %s%s)", so->label, s->nhb,
+             so->kind == WHIRL_SOL_EQ ? "an equilibrium" : so->kind == WHIRL_SOL_COLLOC ?
+             "a collocation orbit" : "a harmonic-balance solution with another NHB",
+             "");
+    return -2;
+  }
+  return 0;
+}
+
+/* Branch switching at a BP (ISW = -1), and loci from a label (ISW = 2). */
+static int switch_or_locus(run_ctx *R, run_objects *O, branch_spec *b) {
+  const whirl_run_settings *s = R->s;
+  const int restart = O->have_sol;
+  whirl_solution *so = &O->sol;
+  const double *p0 = R->par;
   /* switching and loci from the labelled point */
   if (restart && s->isw == -1) {
     if (!strcmp(so->ty, "BP")) {
-      if (!so->tan || so->icp != b.icp) {
+      if (!so->tan || so->icp != b->icp) {
         run_fail(R, WHIRL_RK_ISW, "ISW = -1 at the BP of label %d needs its "
                  "tangent and the same continuation parameter '%s'", so->label,
                  R->pnames[so->icp]);
@@ -675,26 +695,43 @@ static int run_continuation(run_ctx *R, run_objects *O) {
       static whirl_point bp;
       memset(&bp, 0, sizeof bp);
       bp.type = WHIRL_PT_BP;
-      bp.n = b.nb;
+      bp.n = b->nb;
       bp.npar = R->npar;
-      bp.x = b.x0;
+      bp.x = b->x0;
       bp.p = p0;
       bp.t = so->tan;
       bp.stable = -1;
       bp.n_unstable = -1;
-      b.bp = &bp;
-    } else if (strcmp(so->ty, "PD") || b.kind != WHIRL_SOL_COLLOC) {
+      b->bp = &bp;
+    } else if (strcmp(so->ty, "PD") || b->kind != WHIRL_SOL_COLLOC) {
       run_fail(R, WHIRL_RK_ISW, "ISW = -1 switches at a BP, or at a PD of "
                "periodic orbits by collocation; label %d is %s", so->label,
                so->ty);
       return -2;
     }
   } else if (restart && s->isw == 2) {
-    int rc = locus(R, O, &b, b.sys, b.x0, p0);
+    int rc = locus(R, O, b, b->sys, b->x0, p0);
     if (rc) return rc;
-    b.ds_scale = 1.0;
-    if (b.kind == WHIRL_SOL_COLLOC) b.ds_scale = sqrt((double)(s->ntst * s->ncol + 1));
+    b->ds_scale = 1.0;
+    if (b->kind == WHIRL_SOL_COLLOC) b->ds_scale = sqrt((double)(s->ntst * s->ncol + 1));
   }
+  return 0;
+}
+
+/* The branch the run asks for: its system and start, then continued. */
+static int run_continuation(run_ctx *R, run_objects *O) {
+  const whirl_run_settings *s = R->s;
+  branch_spec b;
+  memset(&b, 0, sizeof b);
+  b.icp = R->icp[0];
+  b.q = -1;
+  b.ds_scale = 1.0;
+
+  int rc = s->ips == WHIRL_IPS_EQUILIBRIA      ? start_equilibria(R, O, &b)
+           : s->method == WHIRL_METHOD_COLLOC ? start_colloc(R, O, &b)
+                                              : start_hbm(R, O, &b);
+  if (!rc) rc = switch_or_locus(R, O, &b);
+  if (rc) return rc;
   if (b.dir && s->ds < 0)
     for (size_t i = 0; i <= b.nb; i++) O->D[i] = -O->D[i];
   if (run_table_header(R, b.kind, b.icp, b.q)) return -1;
