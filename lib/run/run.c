@@ -144,43 +144,46 @@ static double uz_quantity(size_t k, const double *x, const double *p, void *ctx)
   return u->state[-2 - w];
 }
 
-static int run_branch(run_ctx *R, branch_spec *b) {
+/* The continuation options of the run file (AUTO's constants) for branch
+ * b, with its user points and stops (UZR, UZSTOP) on any quantity: values
+ * of a parameter, of the period or of a state component.  0, or -2 (a
+ * name that is none of these, said). */
+static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *o,
+                          double *uz, int *uz_stop, uz_ctx *uc) {
   const whirl_run_settings *s = R->s;
-  whirl_cont_options o;
-  whirl_cont_options_default(&o);
-  o.icp = (size_t)b->icp;
-  o.ds = fmin(fmax(fabs(s->ds), s->dsmin), s->dsmax) * b->ds_scale; /* AUTO clips */
-  o.ds_min = s->dsmin * b->ds_scale;
-  o.ds_max = s->dsmax * b->ds_scale;
-  o.nmx = (size_t)s->nmx;
-  o.p_min = s->rl0;
-  o.p_max = s->rl1;
-  o.newton_tol = fmin(s->epsl, s->epsu);
-  o.newton_maxit = s->itnw;
-  o.detect_lp = s->ilp;
-  o.detect_bp = s->isp != 0;
-  o.detect_hb = s->isp != 0;
-  o.detect_pd = s->isp == 2;
-  if (b->kind != WHIRL_SOL_EQ && s->isp != 2) o.detect_hb = 0; /* TR needs Floquet */
-  if (b->sys->Jp && b->sys->n > 400) o.linsol = WHIRL_LINSOL_SPARSE;
+  whirl_cont_options_default(o);
+  o->icp = (size_t)b->icp;
+  o->ds = fmin(fmax(fabs(s->ds), s->dsmin), s->dsmax) * b->ds_scale; /* AUTO clips */
+  o->ds_min = s->dsmin * b->ds_scale;
+  o->ds_max = s->dsmax * b->ds_scale;
+  o->nmx = (size_t)s->nmx;
+  o->p_min = s->rl0;
+  o->p_max = s->rl1;
+  o->newton_tol = fmin(s->epsl, s->epsu);
+  o->newton_maxit = s->itnw;
+  o->detect_lp = s->ilp;
+  o->detect_bp = s->isp != 0;
+  o->detect_hb = s->isp != 0;
+  o->detect_pd = s->isp == 2;
+  if (b->kind != WHIRL_SOL_EQ && s->isp != 2) o->detect_hb = 0; /* TR needs Floquet */
+  if (b->sys->Jp && b->sys->n > 400) o->linsol = WHIRL_LINSOL_SPARSE;
   /* user points (UZR) and stops (UZSTOP): values of a parameter, of the
    * period (PERIOD, AUTO's PAR(11)) or of a state component (its MAX for
    * periodic orbits), all localised by the core through uz_quantity */
-  double uz[2 * WHIRL_RUN_MAXITEMS];
-  int uz_stop[2 * WHIRL_RUN_MAXITEMS];
-  uz_ctx uc = {R, b, {0}, NULL, NULL};
+  uc->R = R;
+  uc->b = b;
   size_t nuz = 0;
   for (size_t i = 0; i < s->nuzr + s->nuzstop; i++) {
     const int is_stop = i >= s->nuzr;
     const whirl_run_value *u = is_stop ? &s->uzstop[i - s->nuzr] : &s->uzr[i];
     int k = run_par_index(R, &u->ref), xi;
     if (k >= 0) {
-      uc.what[nuz] = k;
+      uc->what[nuz] = k;
     } else if (b->kind != WHIRL_SOL_EQ && (!strcasecmp(u->ref.name, "PERIOD") ||
                                      u->ref.index == 11)) {
-      uc.what[nuz] = -1;
+      uc->what[nuz] = -1;
     } else if ((xi = run_state_index(R, &u->ref)) >= 0 && !u->ref.index) {
-      uc.what[nuz] = -2 - xi;
+      uc->what[nuz] = -2 - xi;
     } else {
       run_fail(R, is_stop ? WHIRL_RK_UZSTOP : WHIRL_RK_UZR,
                "%s: '%s' is neither a parameter, PERIOD (periodic orbits) nor "
@@ -191,11 +194,117 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     uz[nuz] = u->value;
     uz_stop[nuz++] = is_stop;
   }
-  o.uz = uz;
-  o.uz_stop = uz_stop;
-  o.nuz = nuz;
-  o.uz_fun = uz_quantity;
-  o.uz_ctx = &uc;
+  o->uz = uz;
+  o->uz_stop = uz_stop;
+  o->nuz = nuz;
+  o->uz_fun = uz_quantity;
+  o->uz_ctx = uc;
+  return 0;
+}
+
+/* A labelled point: its block in the solutions file, and (special points)
+ * its line in the log. */
+static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
+                       const char *ty, int lab, double *pfull) {
+  const whirl_run_settings *s = R->s;
+  const int type = pt->type;
+  whirl_solution so;
+  memset(&so, 0, sizeof so);
+  so.label = lab;
+  so.br = R->branch;
+  so.pt = (int)pt->index;
+  snprintf(so.ty, sizeof so.ty, "%s", ty);
+  so.kind = b->kind;
+  so.icp = b->q >= 0 ? b->q : b->icp;
+  so.icp2 = b->q >= 0 ? b->icp : -1;
+  so.npar = R->npar;
+  so.nx = b->nb;
+  so.par = pfull;
+  so.x = (double *)pt->x;
+  so.tan = (b->fold || b->hopf) ? NULL : (double *)pt->t;
+  so.stable = pt->stable;
+  if (b->kind == WHIRL_SOL_COLLOC) {
+    so.ncol = s->ncol;
+    so.mesh = (double *)whirl_colloc_mesh(b->colloc);
+    so.ntst = (int)((b->nb - (R->prob.autonomous ? 1 : 0)) / R->n - 1) / s->ncol;
+  }
+  if (b->kind == WHIRL_SOL_HBM) so.nhb = s->nhb;
+  if (whirl_solution_write(R->sols, &so)) return -1;
+  if (type != WHIRL_PT_REGULAR && type != WHIRL_PT_EP) {
+    fprintf(R->log, "  %s  LAB %d  PT %zu  %s = %.10g", ty, lab, pt->index,
+            R->pnames[b->icp], pt->p[b->icp]);
+    if (b->q >= 0)
+      fprintf(R->log, "  %s = %.10g", R->pnames[b->q], pfull[b->q]);
+    if (type == WHIRL_PT_HB && pt->nspec)
+      for (size_t k = 0; k < pt->nspec; k++)
+        if (pt->spec_im[k] > 0) {
+          fprintf(R->log, "  omega = %.10g", pt->spec_im[k]);
+          break;
+        }
+    fputc('\n', R->log);
+  }
+  return 0;
+}
+
+/* How the branch ended: a failure keeps the points but fails the run
+ * (said, R->failed); a normal end is logged.  The branch's status. */
+static int branch_end(run_ctx *R, whirl_cont *c, int rc, int stop, size_t npts) {
+  const int reason = rc == WHIRL_DONE && !stop ? whirl_cont_stop_reason(c) : 0;
+  if (reason == WHIRL_STOP_NOCONV || reason == WHIRL_STOP_DOMAIN) {
+    /* the points so far are a result, the end is not: keep them, fail */
+    run_say(R, "%s: branch %d failed after point %zu: %s",
+              whirl_runfile_name(R->rf), R->branch, npts, whirl_cont_errmsg(c));
+    fprintf(R->log, "  failed: %s after %zu points\n", whirl_cont_errmsg(c), npts);
+    R->failed = 1;
+    rc = 0;
+  } else if (rc == WHIRL_DONE || stop) {
+    fprintf(R->log, "  ended: %s after %zu points\n",
+            stop ? "L2-NORM left [A0, A1]"
+                 : whirl_stop_reason_name(whirl_cont_stop_reason(c)),
+            npts);
+    rc = 0;
+  } else if (rc < 0) {
+    run_say(R, "%s: branch %d failed: %s",
+              whirl_runfile_name(R->rf), R->branch, whirl_cont_errmsg(c));
+    fprintf(R->log, "  failed: %s\n", whirl_cont_errmsg(c));
+    rc = -1;
+  }
+  return rc;
+}
+
+/* The branch's statistics in the log and its summary line. */
+static void branch_summary(run_ctx *R, const branch_spec *b, whirl_cont *c,
+                           const int *counts, size_t npts, double pmin, double pmax) {
+  const whirl_cont_stats *st = whirl_cont_get_stats(c);
+  fprintf(R->log, "  %zu steps, %zu rejected, %zu Newton iterations, %zu "
+          "Jacobians, %zu special points\n", st->steps, st->rejected,
+          st->newton_its, st->jac_evals, st->special);
+  if (st->spectrum_failed)
+    fprintf(R->log, "  stability unknown at %zu points: the spectrum could not "
+            "be computed there (STAB -1)\n", st->spectrum_failed);
+  {
+    char line[1024];
+    int len = snprintf(line, sizeof line, "branch %d: %zu points, %s in [%.8g, %.8g]",
+                       R->branch, npts, R->pnames[b->icp], pmin, pmax);
+    static const int order[] = {WHIRL_PT_LP, WHIRL_PT_BP, WHIRL_PT_HB,
+                                WHIRL_PT_PD, WHIRL_PT_TR, WHIRL_PT_UZ,
+                                WHIRL_PT_CP, WHIRL_PT_BT, WHIRL_PT_ZH,
+                                WHIRL_PT_MG, WHIRL_PT_IS};
+    for (size_t i = 0; i < sizeof order / sizeof order[0]; i++)
+      if (counts[order[i]] && len > 0 && (size_t)len < sizeof line)
+        len += snprintf(line + len, sizeof line - (size_t)len, " %d %s", counts[order[i]],
+                        whirl_point_type_name(order[i]));
+    run_summary(R, "%s", line);
+  }
+}
+
+static int run_branch(run_ctx *R, branch_spec *b) {
+  const whirl_run_settings *s = R->s;
+  whirl_cont_options o;
+  double uz[2 * WHIRL_RUN_MAXITEMS];
+  int uz_stop[2 * WHIRL_RUN_MAXITEMS];
+  uz_ctx uc = {R, b, {0}, NULL, NULL};
+  if (branch_options(R, b, &o, uz, uz_stop, &uc)) return -2;
   char err[512];
   whirl_cont *c = whirl_cont_alloc(b->sys, &o, err, sizeof err);
   if (!c) {
@@ -263,89 +372,14 @@ static int run_branch(run_ctx *R, branch_spec *b) {
       stop = 1;
       fprintf(R->log, "  L2-NORM = %g left [A0, A1]: branch ends\n", l2);
     }
-    if (labelled) {
-      whirl_solution so;
-      memset(&so, 0, sizeof so);
-      so.label = lab;
-      so.br = R->branch;
-      so.pt = (int)pt->index;
-      snprintf(so.ty, sizeof so.ty, "%s", ty);
-      so.kind = b->kind;
-      so.icp = b->q >= 0 ? b->q : b->icp;
-      so.icp2 = b->q >= 0 ? b->icp : -1;
-      so.npar = R->npar;
-      so.nx = b->nb;
-      so.par = pfull;
-      so.x = (double *)pt->x;
-      so.tan = (b->fold || b->hopf) ? NULL : (double *)pt->t;
-      so.stable = pt->stable;
-      if (b->kind == WHIRL_SOL_COLLOC) {
-        so.ncol = s->ncol;
-        so.mesh = (double *)whirl_colloc_mesh(b->colloc);
-        so.ntst = (int)((b->nb - (R->prob.autonomous ? 1 : 0)) / R->n - 1) / s->ncol;
-      }
-      if (b->kind == WHIRL_SOL_HBM) so.nhb = s->nhb;
-      if (whirl_solution_write(R->sols, &so)) {
-        rc = -1;
-        break;
-      }
-      if (type != WHIRL_PT_REGULAR && type != WHIRL_PT_EP) {
-        fprintf(R->log, "  %s  LAB %d  PT %zu  %s = %.10g", ty, lab, pt->index,
-                R->pnames[b->icp], pt->p[b->icp]);
-        if (b->q >= 0)
-          fprintf(R->log, "  %s = %.10g", R->pnames[b->q], pfull[b->q]);
-        if (type == WHIRL_PT_HB && pt->nspec)
-          for (size_t k = 0; k < pt->nspec; k++)
-            if (pt->spec_im[k] > 0) {
-              fprintf(R->log, "  omega = %.10g", pt->spec_im[k]);
-              break;
-            }
-        fputc('\n', R->log);
-      }
+    if (labelled && write_label(R, b, pt, ty, lab, pfull)) {
+      rc = -1;
+      break;
     }
     if (stop) break;
   }
-  const int reason = rc == WHIRL_DONE && !stop ? whirl_cont_stop_reason(c) : 0;
-  if (reason == WHIRL_STOP_NOCONV || reason == WHIRL_STOP_DOMAIN) {
-    /* the points so far are a result, the end is not: keep them, fail */
-    run_say(R, "%s: branch %d failed after point %zu: %s",
-              whirl_runfile_name(R->rf), R->branch, npts, whirl_cont_errmsg(c));
-    fprintf(R->log, "  failed: %s after %zu points\n", whirl_cont_errmsg(c), npts);
-    R->failed = 1;
-    rc = 0;
-  } else if (rc == WHIRL_DONE || stop) {
-    fprintf(R->log, "  ended: %s after %zu points\n",
-            stop ? "L2-NORM left [A0, A1]"
-                 : whirl_stop_reason_name(whirl_cont_stop_reason(c)),
-            npts);
-    rc = 0;
-  } else if (rc < 0) {
-    run_say(R, "%s: branch %d failed: %s",
-              whirl_runfile_name(R->rf), R->branch, whirl_cont_errmsg(c));
-    fprintf(R->log, "  failed: %s\n", whirl_cont_errmsg(c));
-    rc = -1;
-  }
-  const whirl_cont_stats *st = whirl_cont_get_stats(c);
-  fprintf(R->log, "  %zu steps, %zu rejected, %zu Newton iterations, %zu "
-          "Jacobians, %zu special points\n", st->steps, st->rejected,
-          st->newton_its, st->jac_evals, st->special);
-  if (st->spectrum_failed)
-    fprintf(R->log, "  stability unknown at %zu points: the spectrum could not "
-            "be computed there (STAB -1)\n", st->spectrum_failed);
-  {
-    char line[1024];
-    int len = snprintf(line, sizeof line, "branch %d: %zu points, %s in [%.8g, %.8g]",
-                       R->branch, npts, R->pnames[b->icp], pmin, pmax);
-    static const int order[] = {WHIRL_PT_LP, WHIRL_PT_BP, WHIRL_PT_HB,
-                                WHIRL_PT_PD, WHIRL_PT_TR, WHIRL_PT_UZ,
-                                WHIRL_PT_CP, WHIRL_PT_BT, WHIRL_PT_ZH,
-                                WHIRL_PT_MG, WHIRL_PT_IS};
-    for (size_t i = 0; i < sizeof order / sizeof order[0]; i++)
-      if (counts[order[i]] && len > 0 && (size_t)len < sizeof line)
-        len += snprintf(line + len, sizeof line - (size_t)len, " %d %s", counts[order[i]],
-                        whirl_point_type_name(order[i]));
-    run_summary(R, "%s", line);
-  }
+  rc = branch_end(R, c, rc, stop, npts);
+  branch_summary(R, b, c, counts, npts, pmin, pmax);
   whirl_cont_free(c);
   free(pfull);
   free(state);
