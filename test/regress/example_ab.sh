@@ -20,29 +20,14 @@ n=0
 fails=0
 ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
 
-# one staged install, made by make check before the tests run (an install
-# during the tests would relink the libraries under the tests running);
-# run alone, the script stages its own
-stage=${WHIRL_STAGE:-}
-if [ -z "$stage" ] || [ ! -d "$stage" ]; then
-  stage="$tmp/stage"
-  ${MAKE:-make} -s -C "$top_builddir" install DESTDIR="$stage" > "$tmp/install.log" 2>&1 || rm -rf "$stage"
-fi
+. "$top_srcdir/test/regress/stage.sh"
 [ -d "$stage" ]
 ok $? "make install DESTDIR=<tmp> stages the library"
-libdir=$(sed -n 's/^libdir=//p' "$top_builddir/whirl.pc")
-prefix=$(sed -n 's/^prefix=//p' "$top_builddir/whirl.pc")
-libdir=$(echo "$libdir" | sed "s|\${exec_prefix}|$prefix|; s|\${prefix}|$prefix|")
-pcdir="$stage$libdir/pkgconfig"
 [ -f "$pcdir/whirl.pc" ]
 ok $? "whirl.pc installed in $libdir/pkgconfig"
 
 cp "$top_srcdir/examples/ab/ab.c" "$top_srcdir/examples/ab/Makefile" "$tmp/"
-# /usr/local/include and /usr/local/lib count as system paths to pkgconf and
-# would be dropped before the sysroot is applied: keep them.
-PKG_CONFIG_ALLOW_SYSTEM_CFLAGS=1 PKG_CONFIG_ALLOW_SYSTEM_LIBS=1 \
-PKG_CONFIG_SYSROOT_DIR="$stage" PKG_CONFIG_LIBDIR="$pcdir" \
-  ${MAKE:-make} -s -C "$tmp" ab > "$tmp/build.log" 2>&1
+stage_make "$tmp" ab > "$tmp/build.log" 2>&1
 rc=$?
 ok $rc "examples/ab builds through pkg-config against the installed headers and library"
 [ $rc -eq 0 ] || sed 's/^/# /' "$tmp/build.log"

@@ -14,22 +14,11 @@ n=0
 fails=0
 ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
 
-stage=${WHIRL_STAGE:-}
-if [ -z "$stage" ] || [ ! -d "$stage" ]; then
-  stage="$tmp/stage"
-  ${MAKE:-make} -s -C "$top_builddir" install DESTDIR="$stage" > "$tmp/install.log" 2>&1 || rm -rf "$stage"
-fi
-prefix=$(sed -n 's/^prefix=//p' "$top_builddir/whirl.pc")
-libdir=$(sed -n 's/^libdir=//p' "$top_builddir/whirl.pc" | sed "s|\${exec_prefix}|$prefix|; s|\${prefix}|$prefix|")
-incdir="$stage$prefix/include"
-pcdir="$stage$libdir/pkgconfig"
-whirl="$stage$prefix/bin/whirl"
+. "$top_srcdir/test/regress/stage.sh"
 
 mkdir "$tmp/api" "$tmp/cmd"
 cp "$top_srcdir/examples/run-api/run_api.c" "$top_srcdir/examples/run-api/Makefile" "$tmp/api/"
-PKG_CONFIG_ALLOW_SYSTEM_CFLAGS=1 PKG_CONFIG_ALLOW_SYSTEM_LIBS=1 \
-PKG_CONFIG_SYSROOT_DIR="$stage" PKG_CONFIG_LIBDIR="$pcdir" \
-  ${MAKE:-make} -s -C "$tmp/api" run_api > "$tmp/build.log" 2>&1
+stage_make "$tmp/api" run_api > "$tmp/build.log" 2>&1
 rc=$?
 ok $rc "examples/run-api builds with pkg-config whirl against the staged install"
 [ $rc -eq 0 ] || sed 's/^/# /' "$tmp/build.log"

@@ -23,27 +23,14 @@ fails=0
 ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
 command -v gnuplot >/dev/null 2>&1 || { echo "1..0 # SKIP gnuplot not installed"; exit 0; }
 
-# one staged install, made by make check before the tests run (an install
-# during the tests would relink the libraries under the tests running);
-# run alone, the script stages its own
-stage=${WHIRL_STAGE:-}
-if [ -z "$stage" ] || [ ! -d "$stage" ]; then
-  stage="$tmp/stage"
-  ${MAKE:-make} -s -C "$top_builddir" install DESTDIR="$stage" > "$tmp/install.log" 2>&1 || rm -rf "$stage"
-fi
+. "$top_srcdir/test/regress/stage.sh"
 [ -d "$stage" ]
 ok $? "make install DESTDIR=<tmp> stages whirl"
-prefix=$(sed -n 's/^prefix=//p' "$top_builddir/whirl.pc")
-libdir=$(sed -n 's/^libdir=//p' "$top_builddir/whirl.pc" | sed "s|\${exec_prefix}|$prefix|; s|\${prefix}|$prefix|")
-pcdir="$stage$libdir/pkgconfig"
-whirl="$stage$prefix/bin/whirl"
 
 mkdir "$tmp/my"
 cp "$top_srcdir/examples/user-model/duffing.c" "$top_srcdir/examples/user-model/Makefile" \
    "$top_srcdir/examples/user-model/duffing.whirl" "$tmp/my/"
-PKG_CONFIG_ALLOW_SYSTEM_CFLAGS=1 PKG_CONFIG_ALLOW_SYSTEM_LIBS=1 \
-PKG_CONFIG_SYSROOT_DIR="$stage" PKG_CONFIG_LIBDIR="$pcdir" \
-  ${MAKE:-make} -s -C "$tmp/my" > "$tmp/build.log" 2>&1
+stage_make "$tmp/my" > "$tmp/build.log" 2>&1
 rc=$?
 ok $rc "the plug-in builds with the two-line Makefile through pkg-config"
 [ $rc -eq 0 ] || sed 's/^/# /' "$tmp/build.log"
