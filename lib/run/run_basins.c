@@ -1,4 +1,4 @@
-/* drivers/run_basins.c — `whirl run` with IPS = basins: basins of
+/* lib/run/run_basins.c — `whirl run` with IPS = basins: basins of
  * attraction of labelled stable solutions of any model, on a grid of start
  * states in two components (BASIN_AXES, BASIN_GRID; the others from U).
  * Each attractor is a labelled solution of an earlier run (S,

@@ -1,11 +1,11 @@
 /* lib/run/run_impl.h — a run of a run file (whirl/run.h): its state, shared
- * by the files of the run.
- * cmd_run.c orchestrates; run_model.c loads models and resolves names;
- * labelled solutions are whirl/solution.h's; run_table.c writes
- * the branch table and the picture; run_basins.c computes basins.
+ * by the files of the run: run.c builds and continues the branches (and is
+ * the API), run_model.c loads models and resolves names, run_table.c
+ * writes the branch table and keeps the labelled points, run_basins.c
+ * computes basins; labelled solutions are whirl/solution.h's.
  * SPDX-License-Identifier: BSD-3-Clause */
-#ifndef WHIRL_DRIVER_RUN_H
-#define WHIRL_DRIVER_RUN_H
+#ifndef WHIRL_RUN_IMPL_H
+#define WHIRL_RUN_IMPL_H
 
 #include <stdio.h>
 

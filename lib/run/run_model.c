@@ -1,4 +1,4 @@
-/* drivers/run_model.c — `whirl run`: load the run file's model (a built-in
+/* lib/run/run_model.c — `whirl run`: load the run file's model (a built-in
  * by name, or a plug-in shared object exporting whirl_model_def, checked for
  * its ABI before anything else is read) and resolve the names the run file
  * uses for parameters and state components.

@@ -1,14 +1,13 @@
-/* drivers/run_table.c — `whirl run` output: the branch table branches.tsv
- * (AUTO's b-file as TSV: BR PT TY LAB, then all parameters, PERIOD for
- * periodic orbits, L2-NORM, the state (MAX of each component for periodic
- * orbits: the maximum over the orbit, see colloc_max), and STAB: 1 stable, 0 unstable, -1 unknown) and
- * the picture diagram.png drawn from it by gnuplot.
+/* lib/run/run_table.c — the branch table of a run, branches.tsv (AUTO's
+ * b-file as TSV: BR PT TY LAB, then all parameters, PERIOD for periodic
+ * orbits, L2-NORM, the state (MAX of each component over the orbit for
+ * periodic orbits) and STAB: 1 stable, 0 unstable, -1 unknown), and the
+ * labelled points kept with their rows (whirl_run_special).
  *
- * L2-NORM follows AUTO: |x| for an equilibrium, sqrt(∫_0^1 |x(τ)|² dτ) for a
- * periodic orbit (Gauss–Legendre on every mesh interval for collocation,
- * 5 points: exact for the degree-2·NCOL integrand up to NCOL = 4, and to
- * the accuracy of the orbit beyond; a uniform trapezoidal rule, exact for
- * trigonometric polynomials, for harmonic balance).
+ * L2-NORM follows AUTO: |x| for an equilibrium, sqrt(∫_0^1 |x(τ)|² dτ) for
+ * a periodic orbit; MAX and L2-NORM of orbits come from the periodic-orbit
+ * interface (whirl/periodic.h), so the table does not choose between
+ * collocation and harmonic balance.
  * SPDX-License-Identifier: BSD-3-Clause */
 #define _POSIX_C_SOURCE 200809L /* open_memstream */
 #include <math.h>
