@@ -34,12 +34,12 @@
 
 
 void run_fail(run_ctx *R, whirl_run_key k, const char *fmt, ...) {
-  char where[4200], msg[2048];
+  char where[4200], msg[4600];
   va_list ap;
   va_start(ap, fmt);
-  vsnprintf(msg, sizeof msg, fmt, ap);
+  whirl_errmsg_vat(msg, sizeof msg, 0, whirl_runfile_where(R->rf, k, where, sizeof where), fmt, ap);
   va_end(ap);
-  run_say(R, "%s: %s", whirl_runfile_where(R->rf, k, where, sizeof where), msg);
+  run_say(R, "%s", msg);
 }
 
 void run_say(run_ctx *R, const char *fmt, ...) {

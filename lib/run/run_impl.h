@@ -19,7 +19,7 @@
 #include <whirl/hopf.h>
 #include <whirl/model.h>
 #include <whirl/periodic.h>
-#include <whirl/runfile.h>
+#include "runfile_impl.h"
 #include <whirl/solution.h>
 #include <whirl/run.h>
 

@@ -15,7 +15,7 @@
 #include <string.h>
 #include <strings.h>
 
-#include <whirl/runfile.h>
+#include "runfile_impl.h"
 
 /* ---- the key table ----------------------------------------------------- */
 
@@ -195,12 +195,10 @@ const char *whirl_runfile_where(const whirl_runfile *rf, whirl_run_key k,
 static int fail(whirl_runfile *rf, const char *where, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 static int fail(whirl_runfile *rf, const char *where, const char *fmt, ...) {
-  char msg[1024];
   va_list ap;
   va_start(ap, fmt);
-  vsnprintf(msg, sizeof msg, fmt, ap);
+  whirl_errmsg_vat(rf->err, sizeof rf->err, WHIRL_EINVAL, where, fmt, ap);
   va_end(ap);
-  snprintf(rf->err, sizeof rf->err, "%s: %s", where, msg);
   return WHIRL_EINVAL;
 }
 
@@ -1195,5 +1193,83 @@ int whirl_runfile_check(whirl_runfile *rf) {
                   "IPS = basins needs BASIN_ATTRACTORS (labels of stable "
                   "solutions) and S (the run that computed them)");
   }
+  return WHIRL_OK;
+}
+
+/* ---- the accessors (whirl/runfile.h) ------------------------------------ */
+
+int whirl_runfile_int(const whirl_runfile *rf, whirl_run_key k, int *v) {
+  whirl_run_settings *s = (whirl_run_settings *)&rf->s; /* read only */
+  const int *f = k == WHIRL_RK_IPS      ? &s->ips
+                 : k == WHIRL_RK_METHOD ? &s->method
+                 : k == WHIRL_RK_IRS    ? &s->irs
+                                        : int_field(s, k);
+  if (f == NULL) return WHIRL_EINVAL;
+  *v = *f;
+  return WHIRL_OK;
+}
+
+int whirl_runfile_real(const whirl_runfile *rf, whirl_run_key k, double *v) {
+  const double *f = real_field((whirl_run_settings *)&rf->s, k);
+  if (f == NULL) return WHIRL_EINVAL;
+  *v = *f;
+  return WHIRL_OK;
+}
+
+const char *whirl_runfile_string(const whirl_runfile *rf, whirl_run_key k) {
+  size_t len;
+  if (k == WHIRL_RK_IRS) return rf->s.irs_type;
+  return string_field((whirl_run_settings *)&rf->s, k, &len);
+}
+
+size_t whirl_runfile_count(const whirl_runfile *rf, whirl_run_key k) {
+  const whirl_run_settings *s = &rf->s;
+  switch (k) {
+    case WHIRL_RK_ICP: return s->nicp;
+    case WHIRL_RK_PAR: return s->npar;
+    case WHIRL_RK_U: return s->nu;
+    case WHIRL_RK_UZR: return s->nuzr;
+    case WHIRL_RK_UZSTOP: return s->nuzstop;
+    case WHIRL_RK_BASIN_AXES: return s->naxes;
+    case WHIRL_RK_BASIN_GRID: return 2;
+    case WHIRL_RK_BASIN_ATTRACTORS: return s->nattractors;
+    default: return 0;
+  }
+}
+
+/* The value items of PAR, U, UZR and UZSTOP; NULL for other keys. */
+static const whirl_run_value *value_list(const whirl_run_settings *s,
+                                         whirl_run_key k) {
+  switch (k) {
+    case WHIRL_RK_PAR: return s->par;
+    case WHIRL_RK_U: return s->u;
+    case WHIRL_RK_UZR: return s->uzr;
+    case WHIRL_RK_UZSTOP: return s->uzstop;
+    default: return NULL;
+  }
+}
+
+int whirl_runfile_item(const whirl_runfile *rf, whirl_run_key k, size_t i,
+                       whirl_run_value *out) {
+  const whirl_run_settings *s = &rf->s;
+  if (i >= whirl_runfile_count(rf, k) || k == WHIRL_RK_BASIN_AXES)
+    return WHIRL_EINVAL;
+  const whirl_run_value *list = value_list(s, k);
+  memset(out, 0, sizeof *out);
+  if (list != NULL)
+    *out = list[i];
+  else if (k == WHIRL_RK_ICP)
+    out->ref = s->icp[i];
+  else if (k == WHIRL_RK_BASIN_GRID)
+    out->value = s->grid[i];
+  else /* BASIN_ATTRACTORS */
+    out->value = s->attractors[i];
+  return WHIRL_OK;
+}
+
+int whirl_runfile_axis(const whirl_runfile *rf, size_t i,
+                       whirl_run_range *axis) {
+  if (i >= rf->s.naxes) return WHIRL_EINVAL;
+  *axis = rf->s.axes[i];
   return WHIRL_OK;
 }

@@ -65,15 +65,15 @@ typedef struct reader {
 
 static int bad(reader *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 static int bad(reader *r, const char *fmt, ...) {
-  char m[600];
+  char where[4200];
+  if (r->line > 0)
+    snprintf(where, sizeof where, "%s:%d", r->path, r->line);
+  else /* nothing read: no line to blame */
+    snprintf(where, sizeof where, "%s", r->path);
   va_list ap;
   va_start(ap, fmt);
-  vsnprintf(m, sizeof m, fmt, ap);
+  whirl_errmsg_vat(r->msg, r->len, -1, where, fmt, ap);
   va_end(ap);
-  if (r->line > 0)
-    snprintf(r->msg, r->len, "%s:%d: %s", r->path, r->line, m);
-  else /* nothing read: no line to blame */
-    snprintf(r->msg, r->len, "%s: %s", r->path, m);
   return -1;
 }
 

@@ -73,43 +73,6 @@ typedef struct whirl_run_range {
   double lo, hi;
 } whirl_run_range;
 
-typedef struct whirl_run_settings {
-  char model[WHIRL_RUN_MAXPATH];
-  char out[WHIRL_RUN_MAXPATH];  /* "" : default <stem>.out */
-  char s[WHIRL_RUN_MAXPATH];    /* restart directory ("" none) */
-  int ndim;                     /* 0: not given */
-  int ips;                      /* WHIRL_IPS_* (default 1) */
-  int method;                   /* WHIRL_METHOD_* (default colloc) */
-  whirl_run_ref icp[4];
-  size_t nicp;
-  whirl_run_value par[WHIRL_RUN_MAXITEMS];
-  size_t npar;
-  whirl_run_value u[WHIRL_RUN_MAXITEMS];
-  size_t nu;
-  int ilp, isp, isw;            /* defaults 1, 2, 1 */
-  int irs;                      /* label, or the count with irs_type */
-  char irs_type[3];             /* "" or a type name (IRS = HB2) */
-  int ntst, ncol, iad;          /* defaults 20, 4, 3 */
-  int nhb, oversampling;        /* defaults 8, 4 */
-  double ds, dsmin, dsmax;      /* defaults 0.01, 1e-5, 0.1; |DS| is
-                                   clipped to [DSMIN, DSMAX] as in AUTO */
-  int nmx, npr;                 /* defaults 200, 0 (no regular labels) */
-  double rl0, rl1, a0, a1;      /* defaults -1e30, 1e30, 0, 1e30 */
-  double epsl, epsu, epss;      /* defaults 1e-7, 1e-7, 1e-5 */
-  int itnw, jac;                /* defaults 8, 1 */
-  whirl_run_value uzr[WHIRL_RUN_MAXITEMS];
-  size_t nuzr;
-  whirl_run_value uzstop[WHIRL_RUN_MAXITEMS];
-  size_t nuzstop;
-  char plot[WHIRL_RUN_MAXNAME]; /* y axis of the picture: "" L2-NORM */
-  whirl_run_range axes[2];      /* basins: two state components and ranges */
-  size_t naxes;
-  int grid[2];                  /* basins: points per axis (default 41) */
-  int basin_periods;            /* basins: max forcing periods (500) */
-  int attractors[WHIRL_RUN_MAXITEMS]; /* basins: labels in S */
-  size_t nattractors;
-  double basin_tol;             /* basins: capture radius (1e-3) */
-} whirl_run_settings;
 
 typedef struct whirl_runfile whirl_runfile;
 
@@ -132,8 +95,33 @@ WHIRL_API int whirl_runfile_override(whirl_runfile *rf, const char *arg);
  * unless IPS = basins, ...).  Call after the overrides. */
 WHIRL_API int whirl_runfile_check(whirl_runfile *rf);
 
-WHIRL_API const whirl_run_settings *whirl_runfile_settings(
-    const whirl_runfile *rf);
+/* The value of a key, given or its default (doc/run-files.md).
+ * Integer keys — NDIM (0: not given), IPS, METHOD, ILP, ISP, ISW, IRS (the
+ * label, or the count with a type), NTST, NCOL, IAD, NHB, OVERSAMPLING,
+ * NMX, NPR, ITNW, JAC, BASIN_PERIODS — through _int; real keys — DS, DSMIN,
+ * DSMAX, RL0, RL1, A0, A1, EPSL, EPSU, EPSS, BASIN_TOL — through _real;
+ * WHIRL_EINVAL for a key of another type, *v untouched. */
+WHIRL_API int whirl_runfile_int(const whirl_runfile *rf, whirl_run_key k,
+                                int *v);
+WHIRL_API int whirl_runfile_real(const whirl_runfile *rf, whirl_run_key k,
+                                 double *v);
+/* Text keys — MODEL, OUT ("": the default <stem>.out), S ("": none), PLOT
+ * ("": L2-NORM) and IRS's type ("" or a type name, IRS = HB2) — owned by
+ * rf; NULL for a key of another type. */
+WHIRL_API const char *whirl_runfile_string(const whirl_runfile *rf,
+                                           whirl_run_key k);
+/* List keys — ICP, PAR, U, UZR, UZSTOP, BASIN_AXES, BASIN_GRID,
+ * BASIN_ATTRACTORS — the number of items (0 for a key of another type),
+ * and item i: ICP's parameter in ref (value 0); PAR's, U's, UZR's and
+ * UZSTOP's reference and value; BASIN_GRID's points per axis and
+ * BASIN_ATTRACTORS' labels in value (ref index 0, name "").  WHIRL_EINVAL
+ * when i is out of range or k is not a list key. */
+WHIRL_API size_t whirl_runfile_count(const whirl_runfile *rf, whirl_run_key k);
+WHIRL_API int whirl_runfile_item(const whirl_runfile *rf, whirl_run_key k,
+                                 size_t i, whirl_run_value *item);
+/* BASIN_AXES' item i: the state component and its range. */
+WHIRL_API int whirl_runfile_axis(const whirl_runfile *rf, size_t i,
+                                 whirl_run_range *axis);
 
 /* 1 if the key was given (file or command line). */
 WHIRL_API int whirl_runfile_given(const whirl_runfile *rf, whirl_run_key k);

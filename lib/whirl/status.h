@@ -6,6 +6,7 @@
 #define WHIRL_STATUS_H
 
 #include <stddef.h>
+#include <stdarg.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -64,6 +65,18 @@ WHIRL_API int whirl_errmsg_set(char *buf, size_t len, int code,
     WHIRL_PRINTF_LIKE(6, 7);
 #define WHIRL_ERRMSG(buf, len, code, ...) \
   whirl_errmsg_set((buf), (len), (code), __FILE__, __LINE__, __VA_ARGS__)
+
+/* Write "WHERE: message" to buf[len] and return code: the message of bad
+ * user input, located in the user's terms — "ab.whirl:7", "s.ab:12",
+ * "command line (--DS=0)", "rotor.rotor:3" — with no source origin.  WHERE
+ * NULL or "" gives the message alone.  Every parser of whirl's files
+ * reports through it (run files, labelled solutions, rotor files). */
+WHIRL_API int whirl_errmsg_at(char *buf, size_t len, int code,
+                              const char *where, const char *fmt, ...)
+    WHIRL_PRINTF_LIKE(5, 6);
+WHIRL_API int whirl_errmsg_vat(char *buf, size_t len, int code,
+                               const char *where, const char *fmt, va_list ap)
+    WHIRL_PRINTF_LIKE(5, 0);
 
 /* Version of the library, "MAJOR.MINOR.PATCH"; static storage. */
 WHIRL_API const char *whirl_version(void);

@@ -30,7 +30,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <whirl/runfile.h>
+#include "runfile_impl.h"
 
 #define NAME "fuzz.whirl"
 

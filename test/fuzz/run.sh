@@ -55,14 +55,13 @@ if ! "$CLANG" -fsanitize=fuzzer "$work/probe.c" -o "$work/probe" > /dev/null 2>&
   echo "SKIP: $CLANG cannot link -fsanitize=fuzzer (libFuzzer runtime missing)"; exit 77
 fi
 
-# Sources of each target.  Both readers are self-contained: they need the
-# headers only (whirl/status.h for the status codes, whirl/solution.h for the
-# solution struct), not lib/util/status.c (which needs the generated
-# config.h and provides nothing they call).
+# Sources of each target: the reader and the message formatters it reports
+# through (lib/util/errmsg.c), not lib/util/status.c (which needs the
+# generated config.h and provides nothing they call).
 sources() {
   case $1 in
-    runfile) echo "$here/fuzz_runfile.c $top/lib/run/runfile.c" ;;
-    solutions) echo "$here/fuzz_solutions.c $top/lib/run/solution.c" ;;
+    runfile) echo "$here/fuzz_runfile.c $top/lib/run/runfile.c $top/lib/util/errmsg.c" ;;
+    solutions) echo "$here/fuzz_solutions.c $top/lib/run/solution.c $top/lib/util/errmsg.c" ;;
   esac
 }
 corpus() {
@@ -79,7 +78,7 @@ fuzz() {
   san=-fsanitize=fuzzer,address,undefined
   # shellcheck disable=SC2046 # the list of sources
   if ! "$CLANG" -std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 $san \
-      -fno-sanitize-recover=undefined -I "$top/lib" \
+      -fno-sanitize-recover=undefined -I "$top/lib" -I "$top/lib/run" \
       $(sources "$name") -lm -o "$dir/fuzz_$name" > "$dir/build.log" 2>&1; then
     cat "$dir/build.log" >&2
     echo "fuzz_$name: build failed, exit 1"

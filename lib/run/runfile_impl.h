@@ -1,0 +1,51 @@
+/* lib/run/runfile_impl.h — private to lib/run: the parsed settings of a
+ * run file as one struct, for the run (run.c, run_model.c, run_basins.c)
+ * and the parser's fuzz target.  The public way in is the accessors of
+ * whirl/runfile.h.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_RUNFILE_IMPL_H
+#define WHIRL_RUNFILE_IMPL_H
+
+#include <whirl/runfile.h>
+
+typedef struct whirl_run_settings {
+  char model[WHIRL_RUN_MAXPATH];
+  char out[WHIRL_RUN_MAXPATH];  /* "" : default <stem>.out */
+  char s[WHIRL_RUN_MAXPATH];    /* restart directory ("" none) */
+  int ndim;                     /* 0: not given */
+  int ips;                      /* WHIRL_IPS_* (default 1) */
+  int method;                   /* WHIRL_METHOD_* (default colloc) */
+  whirl_run_ref icp[4];
+  size_t nicp;
+  whirl_run_value par[WHIRL_RUN_MAXITEMS];
+  size_t npar;
+  whirl_run_value u[WHIRL_RUN_MAXITEMS];
+  size_t nu;
+  int ilp, isp, isw;            /* defaults 1, 2, 1 */
+  int irs;                      /* label, or the count with irs_type */
+  char irs_type[3];             /* "" or a type name (IRS = HB2) */
+  int ntst, ncol, iad;          /* defaults 20, 4, 3 */
+  int nhb, oversampling;        /* defaults 8, 4 */
+  double ds, dsmin, dsmax;      /* defaults 0.01, 1e-5, 0.1; |DS| is
+                                   clipped to [DSMIN, DSMAX] as in AUTO */
+  int nmx, npr;                 /* defaults 200, 0 (no regular labels) */
+  double rl0, rl1, a0, a1;      /* defaults -1e30, 1e30, 0, 1e30 */
+  double epsl, epsu, epss;      /* defaults 1e-7, 1e-7, 1e-5 */
+  int itnw, jac;                /* defaults 8, 1 */
+  whirl_run_value uzr[WHIRL_RUN_MAXITEMS];
+  size_t nuzr;
+  whirl_run_value uzstop[WHIRL_RUN_MAXITEMS];
+  size_t nuzstop;
+  char plot[WHIRL_RUN_MAXNAME]; /* y axis of the picture: "" L2-NORM */
+  whirl_run_range axes[2];      /* basins: two state components and ranges */
+  size_t naxes;
+  int grid[2];                  /* basins: points per axis (default 41) */
+  int basin_periods;            /* basins: max forcing periods (500) */
+  int attractors[WHIRL_RUN_MAXITEMS]; /* basins: labels in S */
+  size_t nattractors;
+  double basin_tol;             /* basins: capture radius (1e-3) */
+} whirl_run_settings;
+
+const whirl_run_settings *whirl_runfile_settings(const whirl_runfile *rf);
+
+#endif

@@ -1,0 +1,101 @@
+/* test/unit/t_runfile.c — the run file's public accessors (whirl/runfile.h):
+ * every value comes back as the text below wrote it, defaults as
+ * doc/run-files.md states them, keys of another type are refused, and a
+ * message of bad input names the file and line.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <string.h>
+
+#include <whirl/whirl.h>
+
+#include "../tap.h"
+
+static const char text[] =
+    "# a run file\n"
+    "model = sfd\n"
+    "IPS = 2\n"
+    "ICP = [Omega, 11]\n"
+    "PAR = {lambda: 0.05, 3: 0.3}\n"
+    "UZR = {Omega: [0.5, 1.5]}\n"
+    "NTST = 30\n"
+    "DS = -0.02\n"
+    "IRS = HB2\n"
+    "plot = MAX x\n";
+
+static void check_scalars(const whirl_runfile *rf) {
+  int v = -1;
+  double x = 0;
+  ok(whirl_runfile_int(rf, WHIRL_RK_IPS, &v) == WHIRL_OK && v == 2, "IPS = 2");
+  ok(whirl_runfile_int(rf, WHIRL_RK_NTST, &v) == WHIRL_OK && v == 30, "NTST = 30");
+  ok(whirl_runfile_int(rf, WHIRL_RK_NCOL, &v) == WHIRL_OK && v == 4,
+     "NCOL defaults to 4");
+  ok(whirl_runfile_int(rf, WHIRL_RK_IRS, &v) == WHIRL_OK && v == 2,
+     "IRS = HB2: the count 2");
+  ok(strcmp(whirl_runfile_string(rf, WHIRL_RK_IRS), "HB") == 0,
+     "IRS = HB2: the type HB");
+  ok(whirl_runfile_real(rf, WHIRL_RK_DS, &x) == WHIRL_OK && x == -0.02,
+     "DS = -0.02");
+  ok(whirl_runfile_real(rf, WHIRL_RK_EPSS, &x) == WHIRL_OK && x == 1e-5,
+     "EPSS defaults to 1e-5");
+  ok(strcmp(whirl_runfile_string(rf, WHIRL_RK_MODEL), "sfd") == 0, "model");
+  ok(strcmp(whirl_runfile_string(rf, WHIRL_RK_PLOT), "MAX x") == 0, "plot");
+  ok(strcmp(whirl_runfile_string(rf, WHIRL_RK_OUT), "") == 0,
+     "OUT not given: empty");
+  v = 77;
+  ok(whirl_runfile_int(rf, WHIRL_RK_DS, &v) == WHIRL_EINVAL && v == 77,
+     "DS is not an integer key: refused, v untouched");
+  ok(whirl_runfile_real(rf, WHIRL_RK_MODEL, &x) == WHIRL_EINVAL,
+     "MODEL is not a real key");
+  ok(whirl_runfile_string(rf, WHIRL_RK_NTST) == NULL, "NTST is not text");
+}
+
+static void check_lists(const whirl_runfile *rf) {
+  whirl_run_value it;
+  ok(whirl_runfile_count(rf, WHIRL_RK_ICP) == 2, "ICP has 2 items");
+  ok(whirl_runfile_item(rf, WHIRL_RK_ICP, 0, &it) == WHIRL_OK &&
+         strcmp(it.ref.name, "Omega") == 0 && it.ref.index == 0,
+     "ICP[0] is Omega by name");
+  ok(whirl_runfile_item(rf, WHIRL_RK_ICP, 1, &it) == WHIRL_OK &&
+         it.ref.index == 11 && it.ref.name[0] == '\0',
+     "ICP[1] is parameter 11 by index");
+  ok(whirl_runfile_item(rf, WHIRL_RK_ICP, 2, &it) == WHIRL_EINVAL,
+     "ICP[2] out of range");
+  ok(whirl_runfile_count(rf, WHIRL_RK_PAR) == 2, "PAR has 2 items");
+  ok(whirl_runfile_item(rf, WHIRL_RK_PAR, 1, &it) == WHIRL_OK &&
+         it.ref.index == 3 && it.value == 0.3,
+     "PAR[1] is 3: 0.3");
+  ok(whirl_runfile_count(rf, WHIRL_RK_UZR) == 2 &&
+         whirl_runfile_item(rf, WHIRL_RK_UZR, 1, &it) == WHIRL_OK &&
+         it.value == 1.5 && strcmp(it.ref.name, "Omega") == 0,
+     "UZR: two values of Omega, the second 1.5");
+  ok(whirl_runfile_count(rf, WHIRL_RK_BASIN_GRID) == 2 &&
+         whirl_runfile_item(rf, WHIRL_RK_BASIN_GRID, 0, &it) == WHIRL_OK &&
+         it.value == 41,
+     "BASIN_GRID defaults to 41 points per axis");
+  ok(whirl_runfile_count(rf, WHIRL_RK_DS) == 0, "DS is not a list");
+  whirl_run_range ax;
+  ok(whirl_runfile_axis(rf, 0, &ax) == WHIRL_EINVAL, "no basin axes given");
+}
+
+static void check_error(void) {
+  whirl_runfile *rf = whirl_runfile_alloc();
+  const char bad[] = "model = sfd\nNTST = -3\n";
+  ok(whirl_runfile_parse(rf, "bad.whirl", bad, sizeof bad - 1) == WHIRL_EINVAL,
+     "NTST = -3 refused");
+  ok(strncmp(whirl_runfile_errmsg(rf), "bad.whirl:2: ", 13) == 0,
+     "the message starts with the file and line: %s", whirl_runfile_errmsg(rf));
+  ok(strstr(whirl_runfile_errmsg(rf), ".c:") == NULL,
+     "and names no source file");
+  whirl_runfile_free(rf);
+}
+
+int main(void) {
+  whirl_runfile *rf = whirl_runfile_alloc();
+  ok(rf != NULL, "alloc");
+  ok(whirl_runfile_parse(rf, "t.whirl", text, sizeof text - 1) == WHIRL_OK,
+     "parse: %s", whirl_runfile_errmsg(rf));
+  check_scalars(rf);
+  check_lists(rf);
+  whirl_runfile_free(rf);
+  check_error();
+  return done_testing();
+}
