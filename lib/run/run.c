@@ -598,26 +598,20 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
             so->label, w, 2 * WHIRL_PI / w);
     b->dir = O->D;
   } else if (so->kind == WHIRL_SOL_COLLOC) {
+    whirl_periodic dst = whirl_periodic_of_colloc(O->colloc);
     if ((size_t)so->ntst == co.ntst && (size_t)so->ncol == co.ncol) {
-      whirl_colloc_set_mesh(O->colloc, so->mesh);
       memcpy(O->X, so->x, b->nb * sizeof *O->X);
-      whirl_colloc_set_reference(O->colloc, O->X);
+      whirl_periodic_restore(&dst, so->mesh, O->X);
     } else { /* another mesh: resample the stored orbit */
       whirl_colloc_options c0 = co;
       c0.ntst = (size_t)so->ntst;
       c0.ncol = (size_t)so->ncol;
       O->colloc2 = whirl_colloc_alloc(&R->prob, &c0, err, sizeof err);
       if (!O->colloc2) return -1;
-      whirl_colloc_set_mesh(O->colloc2, so->mesh);
-      const size_t m = 400;
-      O->xs = malloc(m * R->n * sizeof *O->xs);
-      if (!O->xs) return -1;
-      for (size_t k = 0; k < m; k++)
-        whirl_colloc_eval(O->colloc2, so->x, (double)k / (double)m,
-                          O->xs + k * R->n);
-      whirl_colloc_from_samples(O->colloc, O->xs, m,
-                                whirl_colloc_period(O->colloc2, so->x, so->par),
-                                O->X);
+      whirl_periodic src = whirl_periodic_of_colloc(O->colloc2);
+      whirl_periodic_restore(&src, so->mesh, so->x);
+      if (whirl_periodic_convert(&src, so->x, so->par, &dst, 400, O->X))
+        return -1;
       whirl_colloc_free(O->colloc2);
       O->colloc2 = NULL;
     }

@@ -11,6 +11,7 @@
  * SPDX-License-Identifier: BSD-3-Clause */
 #define _POSIX_C_SOURCE 200809L /* open_memstream */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -61,8 +62,10 @@ int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q) {
   return ferror(f) ? -1 : 0;
 }
 
+/* A read-only view: the table measures orbits, it changes no object. */
 whirl_periodic run_periodic(whirl_solution_kind kind, const void *obj) {
-  return kind == WHIRL_SOL_COLLOC ? whirl_periodic_of_colloc(obj) : whirl_periodic_of_hbm(obj);
+  void *o = (void *)(uintptr_t)obj;
+  return kind == WHIRL_SOL_COLLOC ? whirl_periodic_of_colloc(o) : whirl_periodic_of_hbm(o);
 }
 
 int run_point_measures(const run_ctx *R, whirl_solution_kind kind, const void *obj,

@@ -405,6 +405,7 @@ const char *whirl_hbm_errmsg(const whirl_hbm *h) {
   return h ? h->errmsg : "whirl_hbm: NULL object";
 }
 size_t whirl_hbm_size(const whirl_hbm *h) { return h->size; }
+size_t whirl_hbm_dim(const whirl_hbm *h) { return h->n; }
 
 int whirl_hbm_from_samples(whirl_hbm *h, const double *x, size_t m, double T,
                            double *X) {

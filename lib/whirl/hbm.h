@@ -64,6 +64,7 @@ WHIRL_API void whirl_hbm_free(whirl_hbm *h); /* accepts NULL */
 
 WHIRL_API const whirl_system *whirl_hbm_system(const whirl_hbm *h);
 WHIRL_API size_t whirl_hbm_size(const whirl_hbm *h); /* n(2N+1) [+1] */
+WHIRL_API size_t whirl_hbm_dim(const whirl_hbm *h); /* n, the model's */
 
 /* The message of the last failure of a function given h, with its origin
  * "(hbm.c:N)"; each evaluation of the system's spectrum (the multipliers)

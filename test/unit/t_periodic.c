@@ -18,7 +18,13 @@
  *      3e-5, and a spurious fold pair appears at the 3:1 superharmonic
  *      near ω = 0.45).  The resonance peaks at ω ≈ 3.04 (> 3), so ω is
  *      traced from 0.3 to 4;
- *  (d) bad input to whirl_colloc_pd_switch.
+ *  (d) bad input to whirl_colloc_pd_switch;
+ *  (e) the interface of whirl/periodic.h on both discretisations of the
+ *      forced linear oscillator (Duffing with γ = 0), whose orbit
+ *      x = F(a cos ωt + b sin ωt) with a = (1 − ω²)/D, b = 2ζω/D,
+ *      D = (1 − ω²)² + (2ζω)², and multipliers of modulus e^{−ζT} are
+ *      closed forms: from harmonics, conversion both ways, save/restore of
+ *      the mesh, multipliers.
  * Run with the argument "quick" for a reduced cascade (first PD and the
  * switch only, coarser mesh) and a shorter Duffing trace (for valgrind).
  * SPDX-License-Identifier: BSD-3-Clause */
@@ -759,6 +765,94 @@ static void test_errors(void) {
   whirl_colloc_free(f2);
 }
 
+
+/* (e): the orbit of the forced linear oscillator at p, closed form. */
+static void linear_orbit(const double *p, double tau, double *u) {
+  const double w = p[0], z = p[1], F = p[3];
+  const double D = (1 - w * w) * (1 - w * w) + 4 * z * z * w * w;
+  const double a = F * (1 - w * w) / D, b = F * 2 * z * w / D, th = 2 * PI * tau;
+  u[0] = a * cos(th) + b * sin(th);
+  u[1] = w * (-a * sin(th) + b * cos(th));
+}
+
+/* Largest error of the orbit x of po against the closed form. */
+static double orbit_error(const whirl_periodic *po, const double *x,
+                          const double *p) {
+  double e = 0.0, u[2], v[2];
+  for (int j = 0; j < 50; j++) {
+    whirl_periodic_eval(po, x, j / 50.0, u);
+    linear_orbit(p, j / 50.0, v);
+    e = fmax(e, fmax(fabs(u[0] - v[0]), fabs(u[1] - v[1])));
+  }
+  return e;
+}
+
+static void check_multipliers(const char *what, const whirl_periodic *po,
+                              const double *x, const double *p) {
+  double re[4], im[4];
+  size_t m = 4;
+  const int rc = whirl_periodic_multipliers(po, x, p, re, im, &m);
+  const double want = exp(-p[1] * 2 * PI / p[0]);
+  double worst = 0.0;
+  for (size_t k = 0; k < m; k++) worst = fmax(worst, fabs(hypot(re[k], im[k]) - want));
+  ok(rc == WHIRL_OK && m == 2 && worst < 1e-7,
+     "%s: multipliers of modulus e^(-zeta T) = %.10f (error %.1e): %s", what, want,
+     worst, rc == WHIRL_OK ? "" : whirl_periodic_errmsg(po));
+}
+
+static void test_interface(void) {
+  const double p[4] = {1.3, 0.05, 0.0, 1.0};
+  const double w = p[0], z = p[1], D = (1 - w * w) * (1 - w * w) + 4 * z * z * w * w;
+  /* x and x' as harmonics: mean, then (cos, sin) of harmonic 1 */
+  const double c[6] = {0, 0, (1 - w * w) / D, w * 2 * z * w / D,
+                       2 * z * w / D, -w * (1 - w * w) / D};
+  whirl_hbm_options ho;
+  whirl_hbm_options_default(&ho);
+  ho.harmonics = 5, ho.forcing_param = 0;
+  whirl_colloc_options co;
+  whirl_colloc_options_default(&co);
+  co.ntst = 40, co.ncol = 4, co.forcing_param = 0;
+  char err[256];
+  whirl_hbm *h = whirl_hbm_alloc(&duffing, &ho, err, sizeof err);
+  whirl_colloc *cl = whirl_colloc_alloc(&duffing, &co, err, sizeof err);
+  whirl_periodic ph = whirl_periodic_of_hbm(h), pc = whirl_periodic_of_colloc(cl);
+  const size_t nh = whirl_periodic_size(&ph), nc = whirl_periodic_size(&pc);
+  double *xh = calloc(2 * nh, sizeof *xh), *xc = calloc(nc, sizeof *xc), *xh2 = xh + nh;
+  ok(whirl_periodic_dim(&ph) == 2 && whirl_periodic_dim(&pc) == 2, "dim 2 for both");
+  const double T = 2 * PI / w;
+  int rc = whirl_periodic_from_harmonics(&ph, c, 1, T, xh);
+  double e = orbit_error(&ph, xh, p);
+  ok(rc == WHIRL_OK && e < 1e-13, "hbm from harmonics: the closed form (error %.1e)", e);
+  rc = whirl_periodic_from_harmonics(&pc, c, 1, T, xc);
+  e = orbit_error(&pc, xc, p);
+  ok(rc == WHIRL_OK && e < 1e-7,
+     "colloc from harmonics: the closed form to interpolation (error %.1e)", e);
+  rc = whirl_periodic_convert(&pc, xc, p, &ph, 0, xh2);
+  e = orbit_error(&ph, xh2, p);
+  ok(rc == WHIRL_OK && e < 1e-7, "colloc -> hbm: the closed form (error %.1e)", e);
+  rc = whirl_periodic_convert(&ph, xh, p, &pc, 0, xc);
+  e = orbit_error(&pc, xc, p);
+  ok(rc == WHIRL_OK && e < 1e-7, "hbm -> colloc: the closed form (error %.1e)", e);
+  check_multipliers("hbm", &ph, xh, p);
+  check_multipliers("colloc", &pc, xc, p);
+  ok(whirl_periodic_naux(&ph) == 0 && whirl_periodic_naux(&pc) == 41,
+     "aux: none for hbm, the 41 mesh points for NTST 40");
+  double saved[41], other[41];
+  whirl_periodic_save(&pc, saved);
+  for (int k = 0; k <= 40; k++) other[k] = pow(k / 40.0, 1.5);
+  whirl_periodic_restore(&pc, other, xc);
+  const int moved = whirl_colloc_mesh(cl)[20] == other[20];
+  whirl_periodic_restore(&pc, saved, xc);
+  ok(moved && whirl_colloc_mesh(cl)[20] == saved[20] && saved[20] == 0.5,
+     "restore sets a saved mesh back");
+  other[7] = other[6];
+  ok(whirl_periodic_restore(&pc, other, xc) == WHIRL_EINVAL,
+     "restore refuses a mesh that is not increasing");
+  free(xh), free(xc);
+  whirl_hbm_free(h);
+  whirl_colloc_free(cl);
+}
+
 int main(int argc, char **argv) {
   const int quick = argc > 1 && strcmp(argv[1], "quick") == 0;
   double t0 = now();
@@ -772,5 +866,6 @@ int main(int argc, char **argv) {
   double t3 = now();
   printf("# (c) %.2f s\n", t3 - t2);
   test_errors();
+  test_interface();
   return done_testing();
 }
