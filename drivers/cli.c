@@ -1,6 +1,7 @@
 /* drivers/cli.c — option parsing with messages that say what and where,
  * for every whirl subcommand.
  * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime, fileno */
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>

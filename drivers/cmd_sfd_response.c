@@ -6,6 +6,7 @@
  * Figs. 4–5), and the gnuplot scripts that drew them.  Special points also go
  * to stdout as TSV.
  * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime, fileno */
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
