@@ -61,9 +61,9 @@ static int params_ok(const whirl_fe_nl *e) {
  * ε̇ = ė/c in 1/s its result times μRL³/c² is the force in N, and
  * d/dr = (1/c) d/dε. */
 
-static int sfd_short_pi(const whirl_fe_nl_params *p, const double r[2],
-                        const double v[2], double f[2], double Jr[4],
-                        double Jv[4]) {
+int whirl_fe_sfd_short_pi(const whirl_fe_nl_params *p, const double r[2],
+                          const double v[2], double f[2], double Jr[4],
+                          double Jv[4]) {
   const double c = p->clearance;
   const double k = p->viscosity * p->radius * pow(p->length, 3) / (c * c);
   double fn[2], Jn[8];
@@ -153,7 +153,7 @@ static int nl_force(const whirl_fe_nl *e, const double r[2], const double v[2],
   const whirl_fe_nl_params *p = &e->par;
   switch (e->kind) {
   case WHIRL_FE_SFD_SHORT_PI:
-    return sfd_short_pi(p, r, v, f, Jr, Jv);
+    return whirl_fe_sfd_short_pi(p, r, v, f, Jr, Jv);
   case WHIRL_FE_SFD_SHORT_2PI:
     return whirl_fe_sfd_short_2pi(p, r, v, f, Jr, Jv);
   case WHIRL_FE_SFD_LONG:
