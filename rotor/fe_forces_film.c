@@ -115,7 +115,7 @@ static int short_film(const whirl_fe_nl_params *p, const double r[2],
 }
 
 /* ------------------------------------------------------------------------
- * Short SFD, 2π film: H the full circle, w = v (Vance 1988 §4; San
+ * Short SFD, 2π film: H the full circle, w = v (Vance 1988; San
  * Andrés, Notes 13: F_r = 0, F_t = −πμRL³ ω ε/(c² s^{3/2}) on a circular
  * centred orbit). */
 int whirl_fe_sfd_short_2pi(const whirl_fe_nl_params *p, const double r[2],
@@ -125,7 +125,7 @@ int whirl_fe_sfd_short_2pi(const whirl_fe_nl_params *p, const double r[2],
 }
 
 /* ------------------------------------------------------------------------
- * Short plain journal bearing (Ocvirk; Childs 1993 §3; Vance 1988 §3):
+ * Short plain journal bearing (Ocvirk 1952; Childs 1993; Vance 1988):
  * the journal spins at Ω, the housing is fixed.  The Couette term
  * (U/2) ∂h/∂x with U = ΩR adds −(Ω/2) r·t̂(φ) to −∂h/∂t = v·n, so the
  * squeeze velocity is w = v − (Ω/2) ẑ×r = (v_y + Ω r_z/2, v_z − Ω r_y/2)

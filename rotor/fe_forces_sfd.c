@@ -15,10 +15,10 @@
 /* ------------------------------------------------------------------------
  * Long SFD, sealed ends, π film.  The long-bearing Reynolds equation
  * ∂_θ(h³ ∂_θ p) = −12 μ R² w·n (no axial flow) solved on θ ∈ (0, π) with
- * p = 0 at both ends (the π film of Vance 1988 §4 and San Andrés, Notes
- * 13, whose circular-orbit forces it reproduces) gives, integrating by
- * parts, the force f = −K_L [A ε̇ r̂ ... ] below, K_L = 12 μ R³ L / c³,
- * w = v, with w_r = r̂·v = ė and w_t = t̂·v = eγ̇:
+ * p = 0 at both ends (the π film of Vance 1988 and San Andrés, Notes
+ * 13, whose circular-orbit forces it reproduces) gives, after an
+ * integration by parts (f = RL ∫ ∂_θp (sin θ, −cos θ) dθ in (r̂, t̂)),
+ * with K_L = 12 μ R³ L / c³, w_r = r̂·v = ė and w_t = t̂·v = eγ̇:
  *   F_r = −K_L (A w_r + B w_t),  F_t = −K_L (B w_r + C w_t),
  *   A = (π/2 − 8/(π(2+ε²))) s^{-3/2},  B = 2ε/(s(2+ε²)),
  *   C = π/(√s (2+ε²)),  s = 1 − ε².
