@@ -2,8 +2,10 @@
  * (rotor/fe_forces*.c, whirl_fe_nl_force) against independent references:
  * the textbook closed forms on circular centred orbits (Vance 1988, San
  * Andrés), the paper's nondimensional force (rotor/sfd.c) times its
- * scaling, the short-bearing static eccentricity and attitude angle, a
- * brute-force quadrature of the short-bearing pressure, hand computations
+ * scaling, the short-bearing static eccentricity and attitude angle and
+ * its classical stiffness and damping coefficients, a brute-force
+ * quadrature of the short-bearing pressure, a finite-difference solution of
+ * the long-bearing Reynolds equation, hand computations
  * for the rub and the cubic spring, and central finite differences for
  * every analytic Jacobian.
  * SPDX-License-Identifier: BSD-3-Clause */
@@ -18,8 +20,8 @@
 
 #define PI 3.14159265358979323846
 
-/* A damper of the paper's Table 1 size: R 0.05 m? (any values do; these
- * are typical: R = 50 mm, L = 20 mm, c = 100 µm, μ = 0.03 Pa·s). */
+/* A typical damper (any values do): R = 50 mm, L = 20 mm, c = 100 µm,
+ * μ = 0.03 Pa·s (the paper's oil), ρ = 860 kg/m³. */
 static whirl_fe_nl film(whirl_fe_nl_kind kind) {
   whirl_fe_nl e;
   memset(&e, 0, sizeof e);
@@ -334,6 +336,40 @@ static void test_journal(void) {
   ok(good, "journal-short: static equilibrium under a load along -z: "
      "eccentricity = Ocvirk relation, attitude tan(phi) = pi sqrt(1-e^2)/(4e), "
      "journal ahead of the load in the direction of rotation");
+  /* the linearised stiffness and damping at equilibrium = the classical
+   * short-bearing (half-Sommerfeld) coefficients, f = −K x − C ẋ (San
+   * Andrés, Modern Lubrication Theory notes; Childs 1993; the closed forms
+   * of ROSS's fluid_flow module), in the frame X = y horizontal, Y = z up,
+   * the load W along −Y and the rotation from X to Y, so K = −Jr, C = −Jv */
+  good = 1;
+  for (int i = 0; i < 5; ++i) {
+    double r[2], f[2], Jr[4], Jv[4];
+    const double W = S[i] * U, v[2] = {0, 0};
+    journal_static(&e, W, Om, r);
+    whirl_fe_nl_force(&e, r, v, NULL, Om, f, Jr, Jv, NULL);
+    const double ep = hypot(r[0], r[1]) / c, e2 = ep * ep, s = 1 - e2;
+    const double h0 = 1.0 / pow(PI * PI * s + 16 * e2, 1.5);
+    const double a = W / c * h0, b = W / (c * Om) * h0, q = ep * sqrt(s);
+    const double K[4] = {/* XX, YX, XY, YY (column-major) */
+                         a * 4 * (PI * PI * (2 - e2) + 16 * e2),
+                         -a * PI * (PI * PI * s * (1 + 2 * e2) + 32 * e2 * (1 + e2)) / q,
+                         a * PI * (PI * PI * s * s - 16 * e2 * e2) / q,
+                         a * 4 * (PI * PI * (1 + 2 * e2) + 32 * e2 * (1 + e2) / s)};
+    const double C[4] = {b * 2 * PI * sqrt(s) * (PI * PI * (1 + 2 * e2) - 16 * e2) / ep,
+                         -b * 8 * (PI * PI * (1 + 2 * e2) - 16 * e2),
+                         -b * 8 * (PI * PI * (1 + 2 * e2) - 16 * e2),
+                         b * 2 * PI * (PI * PI * s * s + 48 * e2) / q};
+    for (int k = 0; k < 4; ++k)
+      if (fabs(-Jr[k] - K[k]) > 1e-9 * fabs(K[0]) ||
+          fabs(-Jv[k] - C[k]) > 1e-9 * fabs(C[0])) {
+        good = 0;
+        printf("# eps %.3f: K[%d] %.12g (%.12g), C[%d] %.12g (%.12g)\n", ep, k,
+               -Jr[k], K[k], k, -Jv[k], C[k]);
+      }
+  }
+  ok(good, "journal-short: Jr, Jv at equilibrium = the classical short-bearing "
+     "stiffness and damping coefficients (1e-9)");
+
 
   /* the Couette equivalence: with v = 0 the force is the π film of the
    * squeeze velocity ε(γ̇ − Ω/2): against the quadrature of w·n > 0 */
@@ -604,6 +640,36 @@ static void test_inertia(void) {
   jac_random(e, "sfd-inertia", 200, 0.9, 0.05, 200.0, 0.0, 1e-6);
 }
 
+/* ------------------------------------------------------------------------
+ * At the centre the films are linear dampers: f = −C0 v with
+ * C0 = (π/2) μRL³/c³ (π film, short and journal), π μRL³/c³ (2π film),
+ * (π/2 − 2/π) 12μR³L/c³ (the long π film's direction average). */
+static void test_centre(void) {
+  const struct {
+    whirl_fe_nl_kind kind;
+    double c0;
+  } k[] = {{WHIRL_FE_SFD_SHORT_PI, PI / 2}, {WHIRL_FE_SFD_SHORT_2PI, PI},
+           {WHIRL_FE_JOURNAL_SHORT, PI / 2}, {WHIRL_FE_SFD_LONG, -1}};
+  int good = 1;
+  for (int i = 0; i < 4; ++i) {
+    whirl_fe_nl e = film(k[i].kind);
+    const whirl_fe_nl_params *p = &e.par;
+    double C0 = k[i].c0 * p->viscosity * p->radius * pow(p->length, 3) / pow(p->clearance, 3);
+    if (k[i].c0 < 0)
+      C0 = (PI / 2 - 2 / PI) * 12 * p->viscosity * pow(p->radius, 3) * p->length /
+           pow(p->clearance, 3);
+    const double r[2] = {0, 0}, v[2] = {0.03, -0.02};
+    double f[2], Jv[4];
+    whirl_fe_nl_force(&e, r, v, NULL, 250.0, f, NULL, Jv, NULL);
+    if (fabs(f[0] + C0 * v[0]) > 1e-13 * C0 * 0.03 ||
+        fabs(f[1] + C0 * v[1]) > 1e-13 * C0 * 0.03 || fabs(Jv[0] + C0) > 1e-13 * C0 ||
+        fabs(Jv[3] + C0) > 1e-13 * C0 || fabs(Jv[1]) > 1e-13 * C0)
+      good = 0;
+  }
+  ok(good, "films at the centre: f = -C0 v, Jv = -C0 I (pi film, 2pi film, "
+     "journal, long-film average)");
+}
+
 int main(void) {
   test_cubic();
   test_short_pi();
@@ -611,6 +677,7 @@ int main(void) {
   test_long();
   test_inertia();
   test_journal();
+  test_centre();
   test_rub();
   test_errors();
   return done_testing();
