@@ -1,8 +1,12 @@
 /* rotor/fe_modes.c — damped natural frequencies, log decrements and whirl
  * directions of a finite-element rotor at a speed (whirl/rotor/fe_linear.h):
- * the quadratic eigenproblem in first-order form, by dense QZ (LAPACK
- * dggev on the pencil (A, B), so a singular M — massless DOFs — only adds
- * infinite eigenvalues, which are dropped) or by ARPACK (fe_arpack.c).
+ * the quadratic eigenproblem in first-order form, by dense QZ or by
+ * ARPACK (fe_arpack.c).  QZ (LAPACK dggevx with balancing) runs on the
+ * inverted pencil B z = λ A z, λ = 1/s: its errors are of the order of
+ * ε max|λ| = ε/min|s|, so the slow modes wanted come out to ~1e-12
+ * (on (A, B) they would carry errors of ε max|s|, the fastest FE mode,
+ * ~1e-8 relative on a 48-element shaft); a singular M (massless DOFs)
+ * gives λ = 0, a singular K (free rotor) infinite λ: both are dropped.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdio.h>
@@ -13,11 +17,15 @@
 
 #include "fe_impl.h"
 
-/* LAPACK: generalized eigenvalues and right eigenvectors of (A, B). */
-extern void dggev_(const char *jobvl, const char *jobvr, const int *n, double *a, const int *lda,
-                   double *b, const int *ldb, double *alphar, double *alphai, double *beta,
-                   double *vl, const int *ldvl, double *vr, const int *ldvr, double *work,
-                   const int *lwork, int *info, size_t l1, size_t l2);
+/* LAPACK: generalized eigenvalues and right eigenvectors of (A, B), with
+ * balancing (permutation and scaling of Ward 1981, BALANC = 'B'). */
+extern void dggevx_(const char *balanc, const char *jobvl, const char *jobvr, const char *sense,
+                    const int *n, double *a, const int *lda, double *b, const int *ldb,
+                    double *alphar, double *alphai, double *beta, double *vl, const int *ldvl,
+                    double *vr, const int *ldvr, int *ilo, int *ihi, double *lscale,
+                    double *rscale, double *abnrm, double *bbnrm, double *rconde, double *rcondv,
+                    double *work, const int *lwork, int *iwork, int *bwork, int *info, size_t l1,
+                    size_t l2, size_t l3, size_t l4);
 
 void whirl_fe_modes_options_default(whirl_fe_modes_options *o) {
   o->method = WHIRL_FE_EIG_AUTO;
@@ -68,49 +76,64 @@ int fe_damping(const whirl_fe_rotor *r, double Omega, whirl_fe_csc *D) {
   return fe_trip_to_csc(&t, D);
 }
 
-/* A, B of the first-order form, dense N×N column-major, N = 2 ndof. */
+static double max_abs(const whirl_fe_csc *A) {
+  double m = 0;
+  for (int q = 0; q < A->p[A->n]; ++q) m = fmax(m, fabs(A->x[q]));
+  return m;
+}
+
+/* A, B of the first-order form, dense N×N column-major, N = 2 ndof, with
+ * the second block v = s x/ω0, ω0 = (max|K| / max|M|)^½, so that both
+ * blocks of A are of one size:  A = [0 ω0 I; −K/ω0 −D],  B = [I 0; 0 M]. */
 static int pencil(const whirl_fe_rotor *r, double Omega, double *A, double *B) {
   const int n = r->ndof, N = 2 * n;
   whirl_fe_csc D;
   if (fe_damping(r, Omega, &D)) return WHIRL_ENOMEM;
+  const double km = max_abs(&r->K), mm = max_abs(&r->M);
+  const double w0 = km > 0 && mm > 0 ? sqrt(km / mm) : 1;
   memset(A, 0, (size_t)N * N * sizeof *A);
   memset(B, 0, (size_t)N * N * sizeof *B);
   for (int k = 0; k < n; ++k) {
-    A[k + (size_t)N * (n + k)] = 1;
+    A[k + (size_t)N * (n + k)] = w0;
     B[k + (size_t)N * k] = 1;
   }
   const whirl_fe_csc *S[3] = {&r->K, &D, &r->M};
+  const double f[3] = {1 / w0, 1, 1};
   for (int m = 0; m < 3; ++m)
     for (int c = 0; c < n; ++c)
       for (int q = S[m]->p[c]; q < S[m]->p[c + 1]; ++q) {
         const size_t row = (size_t)(n + S[m]->i[q]);
         if (m == 2) B[row + (size_t)N * (n + c)] += S[m]->x[q];
-        else A[row + (size_t)N * (c + (m == 1 ? n : 0))] -= S[m]->x[q];
+        else A[row + (size_t)N * (c + (m == 1 ? n : 0))] -= f[m] * S[m]->x[q];
       }
   fe_csc_free(&D);
   return WHIRL_OK;
 }
 
 /* The finite eigenvalues with Im s > 0 of the pencil, with their whirl. */
-static int collect(const whirl_fe_rotor *r, int N, const double *B, const double *ar,
-                   const double *ai, const double *be, const double *VR, fe_eigs *e) {
-  double nb = 0;
-  for (size_t k = 0; k < (size_t)N * N; ++k) nb += B[k] * B[k];
-  nb = sqrt(nb);
+static int collect(const whirl_fe_rotor *r, int N, const double *ar, const double *ai,
+                   const double *be, const double *VR, fe_eigs *e) {
+  double lmax = 0; /* the largest finite |λ| = 1/|s|min */
+  for (int j = 0; j < N; ++j)
+    if (be[j] != 0) lmax = fmax(lmax, hypot(ar[j], ai[j]) / fabs(be[j]));
   for (int j = 0; j < N; ++j) {
-    if (ai[j] == 0) continue;
-    const int j0 = ai[j] > 0 ? j : j - 1; /* the pair's real column */
-    if (!(fabs(be[j]) > 1e-13 * nb)) continue; /* infinite */
-    const double re = ar[j] / be[j], im = ai[j] / be[j];
+    if (ai[j] == 0 || be[j] == 0) continue; /* real, or s = 0 */
+    const int j0 = ai[j] > 0 ? j : j - 1;   /* the pair's real column */
+    const double a2 = ar[j] * ar[j] + ai[j] * ai[j];
+    if (!(sqrt(a2) / fabs(be[j]) > 1e-12 * lmax)) continue; /* s infinite */
+    const double re = be[j] * ar[j] / a2, im = -be[j] * ai[j] / a2; /* s = 1/λ */
     if (!(im > 0) || !isfinite(re) || !isfinite(im)) continue;
-    const double sg = j == j0 ? 1 : -1; /* s_j's vector: VR_j0 + sg i VR_j0+1 */
-    double *vi = malloc((size_t)r->ndof * sizeof *vi);
-    if (!vi) return WHIRL_ENOMEM;
-    for (int k = 0; k < r->ndof; ++k) vi[k] = sg * VR[k + (size_t)N * (j0 + 1)];
+    const double sg = j == j0 ? 1 : -1; /* λ_j's vector: VR_j0 + sg i VR_j0+1 */
+    double *vr = malloc(2 * (size_t)r->ndof * sizeof *vr), *vi = vr + r->ndof;
+    if (!vr) return WHIRL_ENOMEM;
+    for (int k = 0; k < r->ndof; ++k) {
+      vr[k] = VR[k + (size_t)N * j0];
+      vi[k] = sg * VR[k + (size_t)N * (j0 + 1)];
+    }
     e->re[e->n] = re;
     e->im[e->n] = im;
-    e->whirl[e->n++] = fe_whirl_of(r, VR + (size_t)N * j0, vi);
-    free(vi);
+    e->whirl[e->n++] = fe_whirl_of(r, vr, vi);
+    free(vr);
   }
   return WHIRL_OK;
 }
@@ -120,34 +143,42 @@ int fe_eig_dense(const whirl_fe_rotor *r, double Omega, fe_eigs *e, char *msg, s
   const size_t NN = (size_t)N * N;
   double *A = malloc(NN * sizeof *A), *B = malloc(NN * sizeof *B), *VR = malloc(NN * sizeof *VR);
   double *ar = malloc((size_t)N * sizeof *ar), *ai = malloc((size_t)N * sizeof *ai);
-  double *be = malloc((size_t)N * sizeof *be), *B0 = malloc(NN * sizeof *B0), *work = NULL;
+  double *be = malloc((size_t)N * sizeof *be), *work = NULL, *ls = NULL;
+  int *iw = NULL, bw = 0;
   int rc = WHIRL_ENOMEM, info = 0, lwork = -1;
-  if (!A || !B || !VR || !ar || !ai || !be || !B0 || fe_eigs_alloc(e, (size_t)N)) goto done;
+  if (!A || !B || !VR || !ar || !ai || !be || fe_eigs_alloc(e, (size_t)N)) goto done;
   if ((rc = pencil(r, Omega, A, B))) goto done;
-  memcpy(B0, B, NN * sizeof *B);
-  double wq = 0, dummy = 0;
-  dggev_("N", "V", &N, A, &N, B, &N, ar, ai, be, &dummy, &one, VR, &N, &wq, &lwork, &info, 1, 1);
-  lwork = info == 0 && wq >= 8 * N ? (int)wq : 8 * N + 16;
+  double wq = 0, dummy = 0, abn, bbn;
+  int ilo, ihi;
   rc = WHIRL_ENOMEM;
+  if (!(ls = malloc(2 * (size_t)N * sizeof *ls)) || !(iw = malloc(((size_t)N + 6) * sizeof *iw)))
+    goto done;
+#define GGEVX(wk, lw)                                                                         \
+  dggevx_("N", "N", "V", "N", &N, B, &N, A, &N, ar, ai, be, &dummy, &one, VR, &N, &ilo, &ihi,  \
+          ls, ls + N, &abn, &bbn, &dummy, &dummy, wk, lw, iw, &bw, &info, 1, 1, 1, 1)
+  GGEVX(&wq, &lwork);
+  lwork = info == 0 && wq >= 6 * N ? (int)wq : 6 * N + 16;
   if (!(work = malloc((size_t)lwork * sizeof *work))) goto done;
-  dggev_("N", "V", &N, A, &N, B, &N, ar, ai, be, &dummy, &one, VR, &N, work, &lwork, &info, 1, 1);
+  GGEVX(work, &lwork);
+#undef GGEVX
   if (info != 0) {
     rc = WHIRL_ELAPACK;
-    if (msg && len) snprintf(msg, len, "dggev failed (info %d) at speed %g rad/s", info, Omega);
+    if (msg && len) snprintf(msg, len, "dggevx failed (info %d) at speed %g rad/s", info, Omega);
     goto done;
   }
-  rc = collect(r, N, B0, ar, ai, be, VR, e);
+  rc = collect(r, N, ar, ai, be, VR, e);
 done:
   if (rc == WHIRL_ENOMEM && msg && len) snprintf(msg, len, "out of memory (%d DOFs dense)", r->ndof);
   if (rc) fe_eigs_free(e);
   free(A);
   free(B);
-  free(B0);
   free(VR);
   free(ar);
   free(ai);
   free(be);
   free(work);
+  free(ls);
+  free(iw);
   return rc;
 }
 
@@ -174,7 +205,7 @@ static int solve(const whirl_fe_rotor *r, double Omega, const whirl_fe_modes_opt
   for (size_t k = 0; k < e.n; ++k) {
     /* an undamped mode's real part is round-off (~1e-13 ω): shown as 0 */
     const double re = fabs(e.re[k]) <= 1e-10 * e.im[k] ? 0 : e.re[k];
-    m[k] = (whirl_fe_mode){e.im[k], re, -2 * WHIRL_PI * re / e.im[k], e.whirl[k]};
+    m[k] = (whirl_fe_mode){e.im[k], re, re == 0 ? 0 : -2 * WHIRL_PI * re / e.im[k], e.whirl[k]};
   }
   qsort(m, e.n, sizeof *m, by_omega);
   *out = m;
@@ -199,8 +230,8 @@ int whirl_fe_modes(const whirl_fe_rotor *r, double Omega, const whirl_fe_modes_o
   size_t n = 0, n2 = 0;
   int rc = solve(r, Omega, o, nmodes, &m, &n, msg, len);
   if (rc) return rc;
-  if (Omega == 0 && n > 0) { /* the whirl at a tiny speed */
-    rc = solve(r, 1e-9 * m[n - 1].omega, o, nmodes, &m2, &n2, msg, len);
+  if (Omega == 0 && n > 0) { /* the whirl as the rotor starts turning */
+    rc = solve(r, 1e-4 * m[0].omega, o, nmodes, &m2, &n2, msg, len);
     if (rc) {
       free(m);
       return rc;

@@ -7,8 +7,10 @@
  *
  * The eigenvalues s of  (M s² + (C + Ω G) s + K) x = 0  in first-order
  * form  A z = s B z,  A = [0 I; −K −(C+ΩG)],  B = [I 0; 0 M],  z = (x, s x):
- * a small rotor by dense QZ (LAPACK dggev, infinite eigenvalues of
- * massless DOFs dropped), a large one by ARPACK's implicitly restarted
+ * a small rotor by dense QZ (LAPACK dggevx, balanced, on the inverted
+ * pencil B z = λ A z, λ = 1/s, whose errors are relative to the largest |λ|,
+ * i.e. the slowest modes are the accurate ones; s = 0 and the infinite s of
+ * massless DOFs are dropped), a large one by ARPACK's implicitly restarted
  * Arnoldi on (A − σB)⁻¹B (shift-invert: the eigenvalues nearest the real
  * shift σ; one sparse LU of K + σ(C+ΩG) + σ²M per speed).  A mode is
  * s = −ζω ± iω_d: reported are ω_d > 0, the log decrement δ = −2π Re s/ω_d
@@ -49,8 +51,8 @@ typedef struct whirl_fe_mode {
 
 /* The nmodes modes of lowest ω_d > 0 at speed Omega (rad/s), ascending, in
  * modes[nmodes]; *nfound (≤ nmodes) how many there are.  At Omega = 0,
- * where an isotropic rotor's pairs are degenerate, the whirl is that at a
- * tiny speed (1e-9 of the largest frequency found).  WHIRL_OK, or an error
+ * where an isotropic rotor's pairs are degenerate, the whirl is the one
+ * each mode takes as the rotor starts turning: that at the speed 1e-4 ω_1.  WHIRL_OK, or an error
  * status with the reason in msg (o NULL: defaults). */
 WHIRL_API int whirl_fe_modes(const whirl_fe_rotor *r, double Omega,
                              const whirl_fe_modes_options *o, size_t nmodes,
