@@ -517,7 +517,14 @@ static void test_api(void) {
      "new parameters after reset: x1(1) = %.12g (exact %.12g)",
      whirl_ode_x(o)[1], xe[1]);
   ok(s3.steps > s2.steps, "statistics kept over the reset");
-  /* h_max and t_prev/x_prev */
+  whirl_ode_free(o);
+}
+
+/* step limits, t_prev/x_prev, max steps, dense output, new tolerances */
+static void test_api_limits(void) {
+  double L = 10.0, x0[2] = {2.0, 0.0}, xe[2];
+  whirl_ode *o = bdf_new(&lin, &L, 1e-10, 1e-13);
+  int rc = WHIRL_OK;
   whirl_ode_set_step_limits(o, 0.0, 0.0, 0.01);
   whirl_ode_reset(o, 0.0, x0);
   int hmax_ok = 1, prev_ok = 1;
@@ -545,6 +552,91 @@ static void test_api(void) {
   ok(whirl_ode_dense(o, 0.0, xe) == WHIRL_EINVAL,
      "no dense output before the first step");
   ok(whirl_ode_step(o, 0.0) == WHIRL_DONE, "step to t itself: WHIRL_DONE");
+  /* new tolerances half way (CVODE restarts from the current point) */
+  whirl_ode_set_tolerances(o, 1e-6, 1e-9);
+  rc = whirl_ode_evolve(o, 0.5);
+  whirl_ode_set_tolerances(o, 1e-11, 1e-14);
+  rc = rc ? rc : whirl_ode_evolve(o, 1.0);
+  lin_exact(1.0, L, xe);
+  ok(rc == WHIRL_OK && fabs(whirl_ode_x(o)[0] - xe[0]) < 1e-5 * xe[0],
+     "tolerances changed half way: x0(1) = %.10g (exact %.10g)",
+     whirl_ode_x(o)[0], xe[0]);
+  whirl_ode_free(o);
+}
+
+/* whirl_ode_sample on BDF's dense output against the closed form */
+typedef struct {
+  double L, maxerr;
+} sample_ctx;
+static int sample_check(size_t k, double t, const double *x, void *data) {
+  (void)k;
+  sample_ctx *c = data;
+  double xe[2];
+  lin_exact(t, c->L, xe);
+  c->maxerr = fmax(c->maxerr, fmax(fabs(x[0] - xe[0]), fabs(x[1] - xe[1])));
+  return 0;
+}
+
+static void test_sample(void) {
+  sample_ctx c = {1e6, 0.0};
+  const double x0[2] = {2.0, 0.0};
+  whirl_ode *o = bdf_new(&lin, &c.L, 1e-10, 1e-13);
+  whirl_ode_reset(o, 0.0, x0);
+  const int rc = whirl_ode_sample(o, 0.01, 300, sample_check, &c);
+  ok(rc == WHIRL_OK && whirl_ode_t(o) == 3.0 && c.maxerr < 1e-8,
+     "sampling 300 points by BDF: max err %.2e", c.maxerr);
+  whirl_ode_set_max_steps(o, 3);
+  whirl_ode_reset(o, 0.0, x0);
+  ok(whirl_ode_sample(o, 0.5, 4, sample_check, &c) == WHIRL_EMAXITER,
+     "sampling with 3 steps between samples: %s", whirl_ode_errmsg(o));
+  whirl_ode_free(o);
+}
+
+/* Jacobians that fail, a right-hand side with NaN, back to dense LU */
+static int jac_fatal(double t, const double *x, const double *p, double *J,
+                     void *data) {
+  (void)t, (void)x, (void)p, (void)J, (void)data;
+  return -3;
+}
+static int rhs_nan(double t, const double *x, const double *p, double *f,
+                   void *data) {
+  (void)t, (void)p, (void)data;
+  f[0] = x[0] < 0.5 ? 1.0 : NAN;
+  return 0;
+}
+
+static void test_failures(void) {
+  const double L = 1e6, x0[2] = {2.0, 0.0};
+  whirl_problem pr = lin;
+  pr.jac_x = jac_fatal;
+  whirl_ode *o = bdf_new(&pr, &L, 1e-8, 1e-12);
+  whirl_ode_reset(o, 0.0, x0);
+  int rc = whirl_ode_evolve(o, 1.0);
+  ok(rc == WHIRL_EUSER && strstr(whirl_ode_errmsg(o), "Jacobian returned -3"),
+     "a fatal jac_x: %s", whirl_ode_errmsg(o));
+  /* a sparse Jacobian replaces it; nnz 0 takes it away again */
+  static const int Jp[3] = {0, 2, 4}, Ji[4] = {0, 1, 0, 1};
+  ok(whirl_ode_set_sparse_jacobian(o, 4, Jp, Ji, lin_jac, NULL) == WHIRL_OK &&
+         whirl_ode_reset(o, 0.0, x0) == WHIRL_OK &&
+         whirl_ode_evolve(o, 1.0) == WHIRL_OK,
+     "the full 2x2 pattern with KLU instead (%s)", whirl_ode_errmsg(o));
+  double xe[2];
+  lin_exact(1.0, L, xe);
+  ok(fabs(whirl_ode_x(o)[0] - xe[0]) < 1e-6 * xe[0], "  x0(1) = %.10g",
+     whirl_ode_x(o)[0]);
+  ok(whirl_ode_set_sparse_jacobian(o, 0, NULL, NULL, NULL, NULL) == WHIRL_OK &&
+         whirl_ode_reset(o, 0.0, x0) == WHIRL_OK &&
+         whirl_ode_evolve(o, 1.0) == WHIRL_EUSER,
+     "nnz = 0: back to dense LU with the failing jac_x");
+  whirl_ode_free(o);
+  whirl_problem pn = {.name = "nan", .n = 1, .rhs = rhs_nan};
+  o = bdf_new(&pn, NULL, 1e-8, 1e-10);
+  const double y0 = 0.0;
+  whirl_ode_reset(o, 0.0, &y0);
+  rc = whirl_ode_evolve(o, 1.0);
+  ok(rc == WHIRL_ESTEP && whirl_ode_last_rhs_status(o) == WHIRL_EBADFUNC &&
+         strstr(whirl_ode_errmsg(o), "NaN"),
+     "rhs with NaN: %s", whirl_ode_errmsg(o));
   whirl_ode_free(o);
 }
 
@@ -557,5 +649,8 @@ int main(void) {
   test_chain();
   test_domain();
   test_api();
+  test_api_limits();
+  test_sample();
+  test_failures();
   return done_testing();
 }
