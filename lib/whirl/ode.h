@@ -29,16 +29,19 @@
  * guide), lib/ode/bdf.c.  Its linear systems (I − γ f_x) use CVODE's dense
  * LU with the model's jac_x (CVODE's difference quotients when NULL),
  * or KLU sparse LU with a Jacobian given by whirl_ode_set_sparse_jacobian.
- * Everything in this header works with both methods; the differences:
- * the error test is CVODE's weighted RMS norm of the local error with
- * weights 1/(rtol |x_i| + atol) instead of the max norm above, the dense
- * output is CVODE's interpolating polynomial of the current order
- * (CVodeGetDky), the minimum step defaults to none (CVODE stops when
- * t + h == t) and a failed step is retried as CVODE decides (its error and
- * convergence tests, at most 10 failures a step).  Callbacks keep their
- * meaning: > 0 or a non-finite value makes CVODE retry with a smaller step,
- * < 0 stops at once (WHIRL_EUSER); repeated recoverable failures end in
- * WHIRL_ESTEP with whirl_ode_last_rhs_status() as above.
+ * Everything in this header works with both methods (whirl_ode_monodromy
+ * always uses DOPRI5); the differences: the error test is CVODE's weighted
+ * RMS norm of the local error with weights 1/(rtol |x_i| + atol), looser
+ * than the max norm above (at the same rtol expect larger errors); the
+ * dense output is CVODE's interpolating polynomial of the current order
+ * (CVodeGetDky); the minimum step defaults to none; a failed step is
+ * retried as CVODE decides (at most 7 error-test and 10 Newton failures a
+ * step); new tolerances or a change of direction restart CVODE (at order
+ * 1) from the current point; messages end with CVODE's own.  Callbacks
+ * keep their meaning: > 0 or a non-finite value makes CVODE retry with a
+ * smaller step, < 0 stops at once (WHIRL_EUSER; last_rhs_status says what
+ * the model returned, e.g. WHIRL_EDOMAIN); repeated recoverable failures
+ * end in WHIRL_ESTEP with whirl_ode_last_rhs_status() as above.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_ODE_H
 #define WHIRL_ODE_H
