@@ -52,26 +52,7 @@ static const double D1 = -12715105075.0 / 11282082432.0,
 /* step-size control (DOPRI5 defaults) */
 static const double SAFE = 0.9, BETA = 0.04, FACMIN = 0.2, FACMAX = 10.0;
 
-struct whirl_ode {
-  whirl_problem prob; /* copy; data borrowed */
-  size_t n, npar;
-  double *p, *p_new; /* active parameters, pending ones (set_params) */
-  int p_pending;
-  double rtol, atol, h_init, h_min, h_max;
-  size_t max_steps;
-
-  int started;       /* reset was called */
-  int have_step;     /* a step was accepted since the reset: dense valid */
-  int have_f;        /* k[0] = f(t, x) (first same as last) */
-  int reject_last;   /* the last attempt was rejected */
-  double t, t_prev, h; /* h: |proposed next step|, 0 = automatic */
-  double facold;     /* error of the last accepted step (PI controller) */
-  double *x, *x_prev, *xs, *xnew, *k[7];
-  double *rc; /* dense output: ydiff, bspl, r4, r5 (4n) */
-  int last_rhs;
-  whirl_ode_stats st;
-  char errmsg[WHIRL_ERRMSG_SIZE];
-};
+/* struct whirl_ode: ode_impl.h (shared with the BDF back end, bdf.c) */
 
 /* ------------------------------------------------------------------------ */
 
@@ -95,8 +76,12 @@ static int eval(whirl_ode *o, double t, const double *y, double *f) {
   return r;
 }
 
+int whirl_ode_eval_(whirl_ode *o, double t, const double *y, double *f) {
+  return eval(o, t, y, f);
+}
+
 /* what the right-hand side said last, for messages */
-static void rhs_said(const whirl_ode *o, char *buf, size_t len) {
+void whirl_ode_rhs_said_(const whirl_ode *o, char *buf, size_t len) {
   if (o->last_rhs == WHIRL_EBADFUNC)
     snprintf(buf, len, "right-hand side returned NaN or Inf");
   else
@@ -149,6 +134,7 @@ whirl_ode *whirl_ode_alloc(const whirl_problem *prob, const double *p) {
 
 void whirl_ode_free(whirl_ode *o) {
   if (o == NULL) return;
+  whirl_bdf_free_(o->bdf);
   free(o->x); /* start of the state block */
   free(o->p);
   free(o);
@@ -237,6 +223,11 @@ int whirl_ode_reset(whirl_ode *o, double t0, const double *x0) {
   o->reject_last = 0;
   o->last_rhs = 0;
   o->errmsg[0] = '\0';
+  if (o->method == WHIRL_ODE_BDF) {
+    const int r = whirl_bdf_reset_(o);
+    if (r != WHIRL_OK) o->started = 0;
+    return r;
+  }
   return WHIRL_OK;
 }
 
@@ -290,7 +281,7 @@ static int first_rhs(whirl_ode *o) {
                       "right-hand side returned %d at t = %.17g", r, o->t);
   if (r > 0) {
     char what[64];
-    rhs_said(o, what, sizeof what);
+    whirl_ode_rhs_said_(o, what, sizeof what);
     return WHIRL_FAIL(o, WHIRL_ESTEP,
                       "no step possible from t = %.17g: %s there", o->t, what);
   }
@@ -384,6 +375,7 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
   if (!isfinite(t_end))
     return WHIRL_FAIL(o, WHIRL_EINVAL, "t_end %g is not finite", t_end);
   if (t_end == o->t) return WHIRL_DONE;
+  if (o->method == WHIRL_ODE_BDF) return whirl_bdf_step_(o, t_end);
 
   const double posneg = t_end > o->t ? 1.0 : -1.0;
   const double hmax = o->h_max > 0.0 ? o->h_max : INFINITY;
@@ -448,7 +440,7 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
     h = hs / 4.0;
     if (h < hmin) {
       char what[64];
-      if (why == NULL) rhs_said(o, what, sizeof what);
+      if (why == NULL) whirl_ode_rhs_said_(o, what, sizeof what);
       return WHIRL_FAIL(o, WHIRL_ESTEP,
                         "step size %.3g below minimum %.3g at t = %.17g: %s", h,
                         hmin, t, why != NULL ? why : what);
@@ -487,7 +479,10 @@ double whirl_ode_t_prev(const whirl_ode *o) { return o ? o->t_prev : NAN; }
 const double *whirl_ode_x_prev(const whirl_ode *o) {
   return o ? o->x_prev : NULL;
 }
-double whirl_ode_h(const whirl_ode *o) { return o ? o->h : NAN; }
+double whirl_ode_h(const whirl_ode *o) {
+  if (o == NULL) return NAN;
+  return o->method == WHIRL_ODE_BDF && o->started ? whirl_bdf_h_(o) : o->h;
+}
 
 void whirl_ode_get_stats(const whirl_ode *o, whirl_ode_stats *s) {
   if (s == NULL) return;
@@ -496,6 +491,16 @@ void whirl_ode_get_stats(const whirl_ode *o, whirl_ode_stats *s) {
     return;
   }
   *s = o->st;
+}
+
+void whirl_ode_get_implicit_stats(const whirl_ode *o,
+                                  whirl_ode_implicit_stats *s) {
+  if (s == NULL) return;
+  if (o == NULL) {
+    memset(s, 0, sizeof *s);
+    return;
+  }
+  *s = o->ist;
 }
 
 int whirl_ode_last_rhs_status(const whirl_ode *o) {
@@ -509,7 +514,8 @@ const char *whirl_ode_errmsg(const whirl_ode *o) {
 /* ------------------------------------------------------------------------
  * Dense output and events */
 
-/* x(t_prev + θ h) by CONTD5, no checks */
+/* x(t_prev + θ h) by CONTD5 (or CVODE's polynomial for BDF), no checks:
+ * t is in the last step */
 static void dense_eval(const whirl_ode *o, double t, double *out) {
   const size_t n = o->n;
   if (t == o->t) {
@@ -518,6 +524,10 @@ static void dense_eval(const whirl_ode *o, double t, double *out) {
   }
   if (t == o->t_prev) {
     memcpy(out, o->x_prev, n * sizeof *out);
+    return;
+  }
+  if (o->method == WHIRL_ODE_BDF) {
+    (void)whirl_bdf_dense_(o, t, out); /* inside the step: cannot fail */
     return;
   }
   const double th = (t - o->t_prev) / (o->t - o->t_prev), th1 = 1.0 - th;

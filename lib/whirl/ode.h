@@ -1,4 +1,4 @@
-/* whirl/ode.h — explicit Runge–Kutta integration of a model x' = f(t, x, p):
+/* whirl/ode.h — time integration of a model x' = f(t, x, p): explicit
  * Dormand–Prince 5(4) (Dormand & Prince 1980; Hairer, Nørsett & Wanner,
  * Solving ODEs I, §II.5 and §II.6) with local extrapolation, first-same-as-
  * last, PI step-size control, 4th-order dense output, event location on the
@@ -22,6 +22,26 @@
  * Implementation: lib/ode/dopri.c; variational equations:
  * lib/ode/variational.c.  No global state: integrators may run in parallel
  * threads (one object per thread).
+ *
+ * Stiff problems: whirl_ode_set_method(ode, WHIRL_ODE_BDF) switches the
+ * object to the variable-order (1..5) BDF formulas of SUNDIALS CVODE with
+ * Newton iteration (Hindmarsh et al., ACM TOMS 31 (2005) 363; CVODE user
+ * guide), lib/ode/bdf.c.  Its linear systems (I − γ f_x) use CVODE's dense
+ * LU with the model's jac_x (CVODE's difference quotients when NULL),
+ * or KLU sparse LU with a Jacobian given by whirl_ode_set_sparse_jacobian.
+ * Everything in this header works with both methods (whirl_ode_monodromy
+ * always uses DOPRI5); the differences: the error test is CVODE's weighted
+ * RMS norm of the local error with weights 1/(rtol |x_i| + atol), looser
+ * than the max norm above (at the same rtol expect larger errors); the
+ * dense output is CVODE's interpolating polynomial of the current order
+ * (CVodeGetDky); the minimum step defaults to none; a failed step is
+ * retried as CVODE decides (at most 7 error-test and 10 Newton failures a
+ * step); new tolerances or a change of direction restart CVODE (at order
+ * 1) from the current point; messages end with CVODE's own.  Callbacks
+ * keep their meaning: > 0 or a non-finite value makes CVODE retry with a
+ * smaller step, < 0 stops at once (WHIRL_EUSER; last_rhs_status says what
+ * the model returned, e.g. WHIRL_EDOMAIN); repeated recoverable failures
+ * end in WHIRL_ESTEP with whirl_ode_last_rhs_status() as above.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_ODE_H
 #define WHIRL_ODE_H
@@ -46,6 +66,39 @@ typedef struct whirl_ode_stats {
 WHIRL_API whirl_ode *whirl_ode_alloc(const whirl_problem *prob,
                                      const double *p);
 WHIRL_API void whirl_ode_free(whirl_ode *ode); /* accepts NULL */
+
+/* Integration methods.  DOPRI5 (the default) for non-stiff problems, BDF
+ * (CVODE) for stiff ones: a journal near the housing, fine finite-element
+ * meshes. */
+typedef enum whirl_ode_method {
+  WHIRL_ODE_DOPRI5 = 0, /* explicit Dormand–Prince 5(4) (lib/ode/dopri.c) */
+  WHIRL_ODE_BDF = 1     /* implicit BDF 1..5 by CVODE (lib/ode/bdf.c) */
+} whirl_ode_method;
+
+/* Choose the method (whirl_ode_method).  Settings, parameters and
+ * statistics are kept.  If the integrator has a state (after a reset) it
+ * restarts from it at once, as whirl_ode_reset(ode, t, x) would (pending
+ * parameters take effect).  WHIRL_EINVAL for an unknown method. */
+WHIRL_API int whirl_ode_set_method(whirl_ode *ode, int method);
+WHIRL_API int whirl_ode_get_method(const whirl_ode *ode); /* -1 for NULL */
+/* "dopri5", "bdf"; NULL for an unknown method. */
+WHIRL_API const char *whirl_ode_method_name(int method);
+/* The method named s ("dopri5" or "bdf"): WHIRL_OK and *method, or
+ * WHIRL_EINVAL. */
+WHIRL_API int whirl_ode_method_parse(const char *s, int *method);
+
+/* A sparse Jacobian f_x for BDF: the pattern in compressed columns, Jp[n+1]
+ * (Jp[0] = 0, non-decreasing, Jp[n] = nnz), Ji[nnz] the row indices of
+ * each column in increasing order, all in [0, n); copied.  fill(t, x, p,
+ * J, data) writes J[nnz], the values in that order (J[k] = df_Ji[k] /
+ * dx_j for Jp[j] <= k < Jp[j+1]), with the whirl_jac_fn statuses; data is
+ * passed to it (e.g. prob->data).  With a pattern BDF solves its linear
+ * systems by KLU; nnz = 0 with fill NULL goes back to dense LU.  Takes
+ * effect at the next reset (or set_method); the DOPRI5 method ignores it.
+ * WHIRL_EINVAL with a message for a bad pattern. */
+WHIRL_API int whirl_ode_set_sparse_jacobian(whirl_ode *ode, size_t nnz,
+                                            const int *Jp, const int *Ji,
+                                            whirl_jac_fn fill, void *data);
 
 /* rtol > 0 (and >= 100 DBL_EPSILON), atol > 0; WHIRL_EINVAL otherwise. */
 WHIRL_API int whirl_ode_set_tolerances(whirl_ode *ode, double rtol,
@@ -112,6 +165,22 @@ WHIRL_API int whirl_ode_find_event(const whirl_ode *ode, whirl_event_fn g,
                                    double *t_ev, double *x_ev);
 
 WHIRL_API void whirl_ode_get_stats(const whirl_ode *ode, whirl_ode_stats *s);
+/* The work of an implicit method (all 0 for DOPRI5), summed over resets
+ * as whirl_ode_stats.  A separate struct, so that whirl_ode_stats keeps its
+ * size (ABI).  BDF: steps are CVODE's, rejected the error-test and Newton
+ * failures, rhs_evals every call of the model's rhs (difference-quotient
+ * Jacobians included). */
+typedef struct whirl_ode_implicit_stats {
+  size_t jac_evals;    /* Jacobian evaluations (analytic, sparse, or by
+                          difference quotients) */
+  size_t lu_factors;   /* LU factorisations of I − γ f_x (CVODE's linear
+                          solver setups) */
+  size_t newton_iters; /* Newton iterations */
+  size_t newton_fails; /* Newton convergence failures */
+  size_t error_fails;  /* local error test failures */
+} whirl_ode_implicit_stats;
+WHIRL_API void whirl_ode_get_implicit_stats(const whirl_ode *ode,
+                                            whirl_ode_implicit_stats *s);
 WHIRL_API int whirl_ode_last_rhs_status(const whirl_ode *ode);
 WHIRL_API const char *whirl_ode_errmsg(const whirl_ode *ode);
 

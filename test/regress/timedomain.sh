@@ -3,7 +3,8 @@
 # bad input (clear message, exit 2, nothing written), `whirl sfd simulate`
 # at Omega = 8.7 (quasiperiodic, f2 against an independent estimate from the
 # Poincare points' rotation), a short sweep whose circular orbits agree with
-# eq. 15, and a small basin run whose counts add up.
+# eq. 15, a small basin run whose counts add up, and --method bdf near the
+# housing against DOPRI5.
 # SPDX-License-Identifier: BSD-3-Clause
 set -u
 WHIRL="${top_builddir:-.}/drivers/whirl"
@@ -99,6 +100,24 @@ grep -q "^small" "$tmp/b.out" && grep -q "^large" "$tmp/b.out"
 ok $? "small and large orbits both reported"
 [ -s "$out/basins.png" ]
 ok $? "basins.png written"
+
+# --method: BDF (CVODE) near the housing (F_E = 0.995, eps ~ 0.99, stiff)
+# against DOPRI5 at the same settings: the same final state
+check_bad simulate "method must be dopri5 or bdf" --omega 2 --method rk4
+for m in dopri5 bdf; do
+  "$WHIRL" sfd simulate --omega 1 --delta 0.5 --fe 0.995 --z0 0.99 --periods 20 --samples 16 \
+    --rtol 1e-9 --atol 1e-12 --method $m --no-plot --out "$tmp/stiff-$m" > /dev/null 2> "$tmp/stiff-$m.err"
+  ok $? "simulate --method $m near the housing runs"
+done
+grep -q "bdf: .* steps" "$tmp/stiff-bdf.err" && grep -q "Jacobians" "$tmp/stiff-bdf.err" &&
+  grep -q "method=bdf" "$tmp/stiff-bdf/history.tsv"
+ok $? "BDF's summary and history header name the method"
+tail -n 1 "$tmp/stiff-dopri5/history.tsv" > "$tmp/stiff-d.last"
+tail -n 1 "$tmp/stiff-bdf/history.tsv" > "$tmp/stiff-b.last"
+paste "$tmp/stiff-d.last" "$tmp/stiff-b.last" | awk -F'\t' '{ m = 0
+  for (i = 2; i <= 6; i++) { d = $i - $(i + 6); if (d < 0) d = -d; if (d > m) m = d }
+  exit !($1 == $7 && m < 1e-6 && $6 > 0.98) }'
+ok $? "BDF = DOPRI5 at the end to 1e-6: $(cut -f 6 "$tmp/stiff-b.last") vs $(cut -f 6 "$tmp/stiff-d.last")"
 
 echo "1..$n"
 [ "$fails" -eq 0 ]
