@@ -40,8 +40,12 @@ static void cont_options(whirl_cont_options *co, double lo, double hi,
   co->icp = WHIRL_FE_P_OMEGA;
   co->p_min = lo;
   co->p_max = hi;
-  co->ds = o->ds > 0 ? o->ds : (hi - lo) / 200;
-  co->ds_max = o->ds_max > 0 ? o->ds_max : (hi - lo) / 20;
+  /* arclength in units of the speed range: Ω enters with the weight
+   * 1/(hi − lo), the unknowns (displacements over the length scale) with 1 */
+  double w = 1.0 / (hi - lo);
+  co->p_weight = w;
+  co->ds = w * (o->ds > 0 ? o->ds : (hi - lo) / 200);
+  co->ds_max = w * (o->ds_max > 0 ? o->ds_max : (hi - lo) / 50);
   co->ds_min = co->ds * 1e-6;
   co->nmx = o->nmx;
   co->newton_tol = 1e-9;
@@ -81,11 +85,11 @@ static int follow(whirl_fe_hbm *h, const whirl_cont_options *co,
   p[WHIRL_FE_P_VISCOSITY] = o->viscosity;
   whirl_cont *c = (x0 && q) ? whirl_cont_alloc(whirl_fe_hbm_system(h), co, err,
                                                errlen) : NULL;
+  /* the first step returns the corrected start point (EP) */
   int rc = c ? whirl_cont_start(c, x0, p, +1) : WHIRL_ENOMEM;
   if (rc && c)
     WHIRL_ERRMSG(err, errlen, rc, "start at Omega = %g rad/s: %s", lo,
                  whirl_cont_errmsg(c));
-  if (!rc) rc = report(h, whirl_cont_point(c), o->node, q, fn, ctx);
   while (!rc && (rc = whirl_cont_step(c)) == WHIRL_OK)
     rc = report(h, whirl_cont_point(c), o->node, q, fn, ctx);
   if (rc == WHIRL_DONE) rc = WHIRL_OK;

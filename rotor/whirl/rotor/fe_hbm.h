@@ -130,7 +130,9 @@ typedef struct whirl_fe_response_options {
   double speed_min, speed_max; /* rad/s (0 0: the rotor's speed range) */
   double unbalance, clearance, viscosity; /* scales (default 1) */
   int node;                  /* amplitude at this node (default 0) */
-  double ds, ds_max;         /* in rad/s (0: range/200, range/20) */
+  double ds, ds_max;         /* steps, rad/s of speed (0: range/200,
+                                range/50); the arclength weighs Ω by
+                                1/range and the unknowns by 1 */
   size_t nmx;                /* steps (default 2000) */
 } whirl_fe_response_options;
 
