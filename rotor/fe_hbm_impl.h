@@ -1,0 +1,134 @@
+/* rotor/fe_hbm_impl.h — internals of the harmonic balance of
+ * finite-element rotors (rotor/fe_hbm*.c): the alternating frequency–time
+ * evaluation of the nonlinear elements (fe_hbm_aft.c), the linear part per
+ * harmonic, condensed onto the nonlinear DOFs or not (fe_hbm_lin.c), the
+ * system (fe_hbm.c) and Hill's stability (fe_hbm_hill.c).
+ *
+ * Layout of a vector of Fourier coefficients over b DOFs ("harmonic
+ * major"): L = 2H + 1 blocks of b, block 0 the mean c, block 2k − 1 the
+ * cosine a_k, block 2k the sine b_k of harmonic k of the response
+ * frequency ω = Ω/ν:  q(t) = c + Σ_k a_k cos kωt + b_k sin kωt.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_ROTOR_FE_HBM_IMPL_H
+#define WHIRL_ROTOR_FE_HBM_IMPL_H
+
+#include <complex.h>
+#include <fftw3.h>
+#include <stddef.h>
+
+#include <whirl/linsol.h>
+#include <whirl/problem.h>
+#include <whirl/rotor/fe.h>
+#include <whirl/rotor/fe_hbm.h>
+#include <whirl/system.h>
+
+/* ------------------------------------------------------------------ AFT */
+
+/* The nonlinear DOFs (y, z of each element's node and pedestal, each once,
+ * in increasing DOF order) and the forces on them by AFT. */
+typedef struct fe_aft {
+  int H, N;           /* harmonics, time samples per period (N > 2H) */
+  int m;              /* nonlinear DOFs */
+  int *dof;           /* dof[m]: their indices in the rotor */
+  int nnl;            /* elements */
+  whirl_fe_nl *el;    /* own copies (clearance and viscosity scaled) */
+  double *clear0, *visc0; /* the rotor's values */
+  int (*epos)[4];     /* per element: positions in dof[] of node y, z,
+                         pedestal y, z (−1: ground) */
+  /* FFTW: displacement, velocity, acceleration coefficients → samples
+   * (3m series), forces → coefficients (m), Jacobian samples → their
+   * coefficients (12 nnl: Jr, Jv, Ja, 4 entries each) */
+  fftw_plan p_q, p_f, p_j;
+  double complex *cq, *cf, *cj; /* (N/2 + 1) per series */
+  double *tq, *tf, *tj;         /* N per series */
+} fe_aft;
+
+int fe_aft_init(fe_aft *a, const whirl_fe_rotor *r, int H, int N, char *err,
+                size_t errlen);
+void fe_aft_free(fe_aft *a);
+
+/* Set the scales of clearance and viscosity of the film elements. */
+void fe_aft_set_scales(fe_aft *a, double clearance, double viscosity);
+
+/* What fe_aft_eval computes besides the force coefficients. */
+enum {
+  FE_AFT_FORCE = 0,   /* the force coefficients only */
+  FE_AFT_JAC = 1,     /* and J = ∂f/∂q (the HBM Jacobian of the forces) */
+  FE_AFT_HILL = 2     /* and the three multiplication operators of
+                         ∂f/∂r, ∂f/∂v, ∂f/∂a (Hill's method) */
+};
+
+/* Force coefficients f[m L] on the nonlinear DOFs at their displacement
+ * coefficients q[m L] (SI, layout above), response frequency w, speed
+ * Omega.  mode FE_AFT_JAC: J[(mL)²] column-major, J[i + mL j] = ∂f_i/∂q_j.
+ * FE_AFT_HILL: J[3 (mL)²], the Galerkin operators of multiplication by
+ * ∂f/∂r, ∂f/∂v, ∂f/∂a one after the other.  Returns 0, 1 (recoverable:
+ * an element reported contact, WHIRL_EDOMAIN) or < 0. */
+int fe_aft_eval(fe_aft *a, const double *q, double w, double Omega, double *f,
+                double *J, int mode);
+
+/* -------------------------------------------------------- linear part */
+
+/* Per harmonic k = 0..H, the complex b×b dynamic stiffness Z_k (condensed:
+ * the Schur complement of D_k onto the nonlinear DOFs; else D_k itself),
+ * its derivative in Ω, and the forces g per unit unbalance (harmonic ν) and
+ * the static load (harmonic 0) reduced the same way, with derivatives. */
+typedef struct fe_lin {
+  const whirl_fe_rotor *r;
+  int condensed, H, nu, b, ndof, ni;   /* ni: interior DOFs (condensed) */
+  int m;
+  const int *nldof;                    /* m nonlinear DOFs (of fe_aft) */
+  int *pos;                            /* b-position of each nonlinear DOF */
+  double Omega;                        /* cached speed */
+  int valid;
+  double complex *Z, *dZ;              /* (H+1) b² column-major */
+  double complex *gu, *dgu;            /* b (harmonic ν) */
+  double *g0;                          /* b (harmonic 0) */
+  /* condensed only: union pattern of K, M, C, G; interior sub-pattern */
+  int nnz, *Up, *Ui;
+  double *Kx, *Mx, *Cx, *Gx;           /* the four on the union pattern */
+  int *inv;                            /* DOF → interior index or −1 − nl */
+  int *Lp, *Li, *Lmap;                 /* interior pattern, map into union */
+  double *Lx, *Lz;
+  void *symbolic;
+  double complex *Xk;                  /* (H+1) ni·m: D_ll⁻¹ D_ln */
+  double complex *yk;                  /* (H+1) ni: D_ll⁻¹ F_l */
+  double complex *w1, *w2, *w3;        /* work ndof·m */
+  double *br, *bz, *xr, *xz;           /* work ni */
+  char err[256];
+} fe_lin;
+
+int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed, int H,
+                int nu, const fe_aft *a);
+void fe_lin_free(fe_lin *l);
+/* Z, dZ, g at speed Omega (cached); WHIRL_OK or an error, message in err */
+int fe_lin_update(fe_lin *l, double Omega);
+/* All ndof coefficients q[ndof L] from the b-block vector x[b L] (SI),
+ * unb the unbalance scale. */
+int fe_lin_recover(fe_lin *l, double Omega, double unb, const double *x,
+                   double *q);
+
+/* ----------------------------------------------------------- the object */
+
+struct whirl_fe_hbm {
+  const whirl_fe_rotor *r;
+  whirl_fe_hbm_options o;
+  int H, L, N, b, n;
+  fe_aft aft;
+  fe_lin lin;
+  double Ls, Fs;           /* length and force scales */
+  whirl_system sys;
+  double *q, *f, *fp, *fm, *Jnl; /* work: SI coefficients, forces, m L;
+                                    (m L)² (3 (m L)² for Hill) */
+  double *qfull;           /* ndof L, for the spectrum */
+  double *xsi;             /* b L: the unknowns in metres */
+  char errmsg[512];
+};
+
+/* Hill's method on the full system (fe_hbm_hill.c). */
+int fe_hbm_spectrum(const double *X, const double *p, const double *J,
+                    double *re, double *im, size_t *m, void *data);
+int fe_hill_exponents(whirl_fe_hbm *h, const double *qfull, const double *p,
+                      double *re, double *im, size_t *m);
+
+#endif

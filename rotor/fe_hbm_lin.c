@@ -1,0 +1,394 @@
+/* rotor/fe_hbm_lin.c — the linear part of the harmonic balance of a
+ * finite-element rotor, per harmonic k of ω = Ω/ν:
+ *   D_k = K − (kω)² M + i kω (C + Ω G),
+ * condensed exactly onto the nonlinear DOFs n by the Schur complement
+ *   Z_k = D_nn − D_nl D_ll⁻¹ D_ln = Vᵀ D_k W,  g_k = F_n − D_nl D_ll⁻¹ F_l
+ *       = Vᵀ F_k,   W = [−D_ll⁻¹ D_ln; I],  V = [−D_ll⁻ᵀ D_nlᵀ; I]
+ * (one complex sparse LU of the interior block D_ll per harmonic and speed,
+ * UMFPACK's zi interface, Davis, ACM TOMS 30 (2004) 196; m solves with D_ll
+ * and m with its transpose), and the derivatives in Ω without another
+ * factorisation: since Vᵀ D = [0 Z] and D W = [0; Z],
+ *   ∂Z/∂Ω = Vᵀ (∂D/∂Ω) W,   ∂g/∂Ω = Vᵀ (∂F/∂Ω − (∂D/∂Ω) [D_ll⁻¹ F_l; 0]).
+ * Uncondensed, Z_k = D_k and g_k = F_k themselves (dense).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <umfpack.h>
+
+#include "fe_hbm_impl.h"
+
+/* ------------------------------------------------------------ patterns */
+
+/* The union pattern of K, M, C, G and the four on it. */
+static int union_pattern(fe_lin *l) {
+  const whirl_fe_csc *A[4] = {&l->r->K, &l->r->M, &l->r->C, &l->r->G};
+  int n = l->ndof, cap = 0;
+  for (int s = 0; s < 4; ++s) cap += A[s]->p[n];
+  l->Up = malloc((size_t)(n + 1) * sizeof *l->Up);
+  l->Ui = malloc((size_t)(cap ? cap : 1) * sizeof *l->Ui);
+  int *mark = malloc((size_t)n * sizeof *mark);
+  if (!l->Up || !l->Ui || !mark) { free(mark); return WHIRL_ENOMEM; }
+  for (int i = 0; i < n; ++i) mark[i] = -1;
+  int nz = 0;
+  l->Up[0] = 0;
+  for (int c = 0; c < n; ++c) {
+    int start = nz;
+    for (int s = 0; s < 4; ++s)
+      for (int q = A[s]->p[c]; q < A[s]->p[c + 1]; ++q)
+        if (mark[A[s]->i[q]] != c) {
+          mark[A[s]->i[q]] = c;
+          int i = A[s]->i[q], t = nz++;
+          while (t > start && l->Ui[t - 1] > i) { l->Ui[t] = l->Ui[t - 1]; --t; }
+          l->Ui[t] = i;
+        }
+    l->Up[c + 1] = nz;
+  }
+  free(mark);
+  l->nnz = nz;
+  double **X[4] = {&l->Kx, &l->Mx, &l->Cx, &l->Gx};
+  for (int s = 0; s < 4; ++s) {
+    *X[s] = calloc((size_t)(nz ? nz : 1), sizeof **X[s]);
+    if (!*X[s]) return WHIRL_ENOMEM;
+    for (int c = 0; c < n; ++c) {
+      int u = l->Up[c];
+      for (int q = A[s]->p[c]; q < A[s]->p[c + 1]; ++q) {
+        while (l->Ui[u] != A[s]->i[q]) ++u;
+        (*X[s])[u] += A[s]->x[q];
+      }
+    }
+  }
+  return WHIRL_OK;
+}
+
+/* The interior pattern (nonlinear rows and columns removed), its map into
+ * the union pattern, and the symbolic analysis. */
+static int interior_pattern(fe_lin *l) {
+  int n = l->ndof, ni = 0;
+  l->inv = malloc((size_t)n * sizeof *l->inv);
+  if (!l->inv) return WHIRL_ENOMEM;
+  for (int d = 0, j = 0; d < n; ++d) {
+    if (j < l->m && l->nldof[j] == d) l->inv[d] = -1 - j++;
+    else l->inv[d] = ni++;
+  }
+  l->ni = ni;
+  l->Lp = malloc((size_t)(ni + 1) * sizeof *l->Lp);
+  l->Li = malloc((size_t)(l->nnz ? l->nnz : 1) * sizeof *l->Li);
+  l->Lmap = malloc((size_t)(l->nnz ? l->nnz : 1) * sizeof *l->Lmap);
+  l->Lx = malloc((size_t)(l->nnz ? l->nnz : 1) * sizeof *l->Lx);
+  l->Lz = malloc((size_t)(l->nnz ? l->nnz : 1) * sizeof *l->Lz);
+  if (!l->Lp || !l->Li || !l->Lmap || !l->Lx || !l->Lz) return WHIRL_ENOMEM;
+  int nz = 0;
+  l->Lp[0] = 0;
+  for (int c = 0; c < n; ++c) {
+    if (l->inv[c] < 0) continue;
+    for (int q = l->Up[c]; q < l->Up[c + 1]; ++q)
+      if (l->inv[l->Ui[q]] >= 0) {
+        l->Li[nz] = l->inv[l->Ui[q]];
+        l->Lmap[nz++] = q;
+      }
+    l->Lp[l->inv[c] + 1] = nz;
+  }
+  if (ni == 0) return WHIRL_OK;
+  int st = umfpack_zi_symbolic(ni, ni, l->Lp, l->Li, NULL, NULL, &l->symbolic,
+                               NULL, NULL);
+  if (st != UMFPACK_OK) {
+    snprintf(l->err, sizeof l->err,
+             "UMFPACK symbolic analysis of the interior block: status %d", st);
+    return WHIRL_ESPARSE;
+  }
+  return WHIRL_OK;
+}
+
+int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed, int H,
+                int nu, const fe_aft *a) {
+  memset(l, 0, sizeof *l);
+  l->r = r;
+  l->condensed = condensed;
+  l->H = H;
+  l->nu = nu;
+  l->ndof = r->ndof;
+  l->m = a->m;
+  l->nldof = a->dof;
+  l->b = condensed ? a->m : r->ndof;
+  size_t b = (size_t)l->b, n = (size_t)r->ndof, m = (size_t)a->m;
+  l->pos = malloc(m * sizeof *l->pos);
+  l->Z = malloc((size_t)(H + 1) * b * b * sizeof *l->Z);
+  l->dZ = malloc((size_t)(H + 1) * b * b * sizeof *l->dZ);
+  l->gu = malloc(b * sizeof *l->gu);
+  l->dgu = malloc(b * sizeof *l->dgu);
+  l->g0 = malloc(b * sizeof *l->g0);
+  if (!l->pos || !l->Z || !l->dZ || !l->gu || !l->dgu || !l->g0)
+    return WHIRL_ENOMEM;
+  for (int j = 0; j < a->m; ++j) l->pos[j] = condensed ? j : a->dof[j];
+  int rc = union_pattern(l);
+  if (rc || !condensed) return rc;
+  if ((rc = interior_pattern(l))) return rc;
+  size_t ni = (size_t)l->ni ? (size_t)l->ni : 1;
+  l->Xk = calloc((size_t)(H + 1) * ni * m, sizeof *l->Xk);
+  l->yk = calloc((size_t)(H + 1) * ni, sizeof *l->yk);
+  l->w1 = malloc(n * m * sizeof *l->w1);
+  l->w2 = malloc(n * m * sizeof *l->w2);
+  l->w3 = malloc(n * sizeof *l->w3);
+  l->br = malloc(4 * ni * sizeof *l->br);
+  if (!l->Xk || !l->yk || !l->w1 || !l->w2 || !l->w3 || !l->br)
+    return WHIRL_ENOMEM;
+  l->bz = l->br + ni;
+  l->xr = l->bz + ni;
+  l->xz = l->xr + ni;
+  return WHIRL_OK;
+}
+
+void fe_lin_free(fe_lin *l) {
+  if (l->symbolic) umfpack_zi_free_symbolic(&l->symbolic);
+  void *p[] = {l->pos, l->Z, l->dZ, l->gu, l->dgu, l->g0, l->Up, l->Ui,
+               l->Kx, l->Mx, l->Cx, l->Gx, l->inv, l->Lp, l->Li, l->Lmap,
+               l->Lx, l->Lz, l->Xk, l->yk, l->w1, l->w2, l->w3, l->br};
+  for (size_t i = 0; i < sizeof p / sizeof *p; ++i) free(p[i]);
+  memset(l, 0, sizeof *l);
+}
+
+/* ------------------------------------------------------------- helpers */
+
+/* Value of D_k (d = 0) or ∂D_k/∂Ω (d = 1) at union entry q. */
+static double complex dval(const fe_lin *l, int q, int k, double Omega, int d) {
+  double w = k * Omega / l->nu, dw = (double)k / l->nu;
+  if (d == 0)
+    return l->Kx[q] - w * w * l->Mx[q] + I * w * (l->Cx[q] + Omega * l->Gx[q]);
+  return -2.0 * w * dw * l->Mx[q] +
+         I * (dw * l->Cx[q] + (dw * Omega + w) * l->Gx[q]);
+}
+
+/* y[ndof] = D x (d = 0) or ∂D/∂Ω x (d = 1), x[ndof]. */
+static void matvec(const fe_lin *l, int k, double Omega, int d,
+                   const double complex *x, double complex *y) {
+  memset(y, 0, (size_t)l->ndof * sizeof *y);
+  for (int c = 0; c < l->ndof; ++c)
+    if (x[c] != 0)
+      for (int q = l->Up[c]; q < l->Up[c + 1]; ++q)
+        y[l->Ui[q]] += dval(l, q, k, Omega, d) * x[c];
+}
+
+static double complex vdot(const double complex *v, const double complex *x,
+                           int n) {
+  double complex s = 0;
+  for (int i = 0; i < n; ++i) s += v[i] * x[i];
+  return s;
+}
+
+/* x = D_ll⁻¹ b (sys UMFPACK_A) or D_ll⁻ᵀ b (UMFPACK_Aat), b given in br/bz,
+ * the result in xr/xz. */
+static int lsolve(fe_lin *l, void *numeric, int sys) {
+  int st = umfpack_zi_solve(sys, l->Lp, l->Li, l->Lx, l->Lz, l->xr, l->xz,
+                            l->br, l->bz, numeric, NULL, NULL);
+  if (st != UMFPACK_OK && st != UMFPACK_WARNING_singular_matrix) {
+    snprintf(l->err, sizeof l->err, "UMFPACK solve: status %d", st);
+    return WHIRL_ESPARSE;
+  }
+  return WHIRL_OK;
+}
+
+/* Full-length column u[ndof] = [−x; e_j] from the interior solution. */
+static void basis_column(const fe_lin *l, int j, double complex *u,
+                         double complex *xint) {
+  for (int d = 0; d < l->ndof; ++d) {
+    int s = l->inv[d];
+    if (s >= 0) {
+      xint[s] = l->xr[s] + I * l->xz[s];
+      u[d] = -xint[s];
+    } else {
+      u[d] = (-1 - s == j) ? 1.0 : 0.0;
+    }
+  }
+}
+
+/* ------------------------------------------------------ condensed update */
+
+/* W (w1) and V (w2) of harmonic k with D_ll factorised in numeric. */
+static int bases(fe_lin *l, int k, double Omega, void *numeric) {
+  int n = l->ndof, m = l->m, ni = l->ni;
+  double complex *Xk = l->Xk + (size_t)k * ni * m;
+  for (int j = 0; j < m; ++j) {
+    int dj = l->nldof[j], rc;
+    /* right: D_ll x = D_l,dj (column dj of D, interior rows) */
+    memset(l->br, 0, 2 * (size_t)ni * sizeof *l->br);
+    for (int q = l->Up[dj]; q < l->Up[dj + 1]; ++q)
+      if (l->inv[l->Ui[q]] >= 0) {
+        double complex v = dval(l, q, k, Omega, 0);
+        l->br[l->inv[l->Ui[q]]] = creal(v);
+        l->bz[l->inv[l->Ui[q]]] = cimag(v);
+      }
+    if (ni && (rc = lsolve(l, numeric, UMFPACK_A))) return rc;
+    basis_column(l, j, l->w1 + (size_t)j * n, Xk + (size_t)j * ni);
+    /* left: D_llᵀ x = (row dj of D, interior columns)ᵀ */
+    memset(l->br, 0, 2 * (size_t)ni * sizeof *l->br);
+    for (int c = 0; c < n; ++c)
+      if (l->inv[c] >= 0)
+        for (int q = l->Up[c]; q < l->Up[c + 1]; ++q)
+          if (l->Ui[q] == dj) {
+            double complex v = dval(l, q, k, Omega, 0);
+            l->br[l->inv[c]] = creal(v);
+            l->bz[l->inv[c]] = cimag(v);
+          }
+    if (ni && (rc = lsolve(l, numeric, UMFPACK_Aat))) return rc;
+    basis_column(l, j, l->w2 + (size_t)j * n, l->w3);
+  }
+  return WHIRL_OK;
+}
+
+/* Z_k = (D W) on the nonlinear rows, ∂Z_k = Vᵀ ∂D W. */
+static void condensed_z(fe_lin *l, int k, double Omega) {
+  int n = l->ndof, m = l->m;
+  double complex *Z = l->Z + (size_t)k * m * m, *dZ = l->dZ + (size_t)k * m * m;
+  for (int j = 0; j < m; ++j) {
+    matvec(l, k, Omega, 0, l->w1 + (size_t)j * n, l->w3);
+    for (int i = 0; i < m; ++i) Z[i + m * j] = l->w3[l->nldof[i]];
+    matvec(l, k, Omega, 1, l->w1 + (size_t)j * n, l->w3);
+    for (int i = 0; i < m; ++i)
+      dZ[i + m * j] = vdot(l->w2 + (size_t)i * n, l->w3, n);
+  }
+}
+
+/* The reduced load of harmonic k: F (static k = 0, unit unbalance k = ν),
+ * its particular interior solution y_k and g = Vᵀ F, ∂g = Vᵀ(∂F − ∂D ỹ). */
+static int condensed_load(fe_lin *l, int k, double Omega, void *numeric) {
+  int n = l->ndof, m = l->m, ni = l->ni, rc;
+  const whirl_fe_rotor *r = l->r;
+  double complex *F = malloc((size_t)n * sizeof *F);
+  if (!F) return WHIRL_ENOMEM;
+  for (int d = 0; d < n; ++d)
+    F[d] = k == 0 ? r->f0[d]
+                  : Omega * Omega * (r->unb_c[d] - I * r->unb_s[d]);
+  for (int d = 0; d < n; ++d)
+    if (l->inv[d] >= 0) {
+      l->br[l->inv[d]] = creal(F[d]);
+      l->bz[l->inv[d]] = cimag(F[d]);
+    }
+  if (ni && (rc = lsolve(l, numeric, UMFPACK_A))) { free(F); return rc; }
+  double complex *y = l->yk + (size_t)k * ni;
+  for (int d = 0; d < n; ++d) {
+    int s = l->inv[d];
+    if (s >= 0) y[s] = l->xr[s] + I * l->xz[s];
+    l->w3[d] = s >= 0 ? y[s] : 0.0;
+  }
+  for (int i = 0; i < m; ++i) {
+    double complex g = vdot(l->w2 + (size_t)i * n, F, n);
+    if (k == 0) l->g0[i] = creal(g);
+    else l->gu[i] = g;
+  }
+  if (k != 0) {
+    matvec(l, k, Omega, 1, l->w3, F); /* F := ∂D ỹ */
+    for (int d = 0; d < n; ++d)
+      F[d] = 2.0 * Omega * (r->unb_c[d] - I * r->unb_s[d]) - F[d];
+    for (int i = 0; i < m; ++i) l->dgu[i] = vdot(l->w2 + (size_t)i * n, F, n);
+  }
+  free(F);
+  return WHIRL_OK;
+}
+
+static int condensed_update(fe_lin *l, double Omega) {
+  for (int k = 0; k <= l->H; ++k) {
+    void *numeric = NULL;
+    if (l->ni) {
+      for (int q = 0; q < l->Lp[l->ni]; ++q) {
+        double complex v = dval(l, l->Lmap[q], k, Omega, 0);
+        l->Lx[q] = creal(v);
+        l->Lz[q] = cimag(v);
+      }
+      int st = umfpack_zi_numeric(l->Lp, l->Li, l->Lx, l->Lz, l->symbolic,
+                                  &numeric, NULL, NULL);
+      if (st != UMFPACK_OK) {
+        if (numeric) umfpack_zi_free_numeric(&numeric);
+        snprintf(l->err, sizeof l->err,
+                 "the rotor with its nonlinear DOFs held is singular at "
+                 "harmonic %d, Omega = %g rad/s (UMFPACK status %d)", k,
+                 Omega, st);
+        return st == UMFPACK_WARNING_singular_matrix ? WHIRL_ESINGULAR
+                                                     : WHIRL_ESPARSE;
+      }
+    }
+    int rc = bases(l, k, Omega, numeric);
+    if (!rc) condensed_z(l, k, Omega);
+    if (!rc && (k == 0 || k == l->nu)) rc = condensed_load(l, k, Omega, numeric);
+    if (numeric) umfpack_zi_free_numeric(&numeric);
+    if (rc) return rc;
+  }
+  return WHIRL_OK;
+}
+
+/* ---------------------------------------------------- uncondensed update */
+
+/* Z_k = D_k, ∂Z_k = ∂D_k dense; g_u = F per unit unbalance, g_0 = f0. */
+static int full_update(fe_lin *l, double Omega) {
+  int n = l->ndof;
+  const whirl_fe_rotor *r = l->r;
+  for (int k = 0; k <= l->H; ++k) {
+    double complex *Z = l->Z + (size_t)k * n * n, *dZ = l->dZ + (size_t)k * n * n;
+    memset(Z, 0, (size_t)n * n * sizeof *Z);
+    memset(dZ, 0, (size_t)n * n * sizeof *dZ);
+    for (int c = 0; c < n; ++c)
+      for (int q = l->Up[c]; q < l->Up[c + 1]; ++q) {
+        Z[l->Ui[q] + (size_t)n * c] = dval(l, q, k, Omega, 0);
+        dZ[l->Ui[q] + (size_t)n * c] = dval(l, q, k, Omega, 1);
+      }
+  }
+  for (int d = 0; d < n; ++d) {
+    l->g0[d] = r->f0[d];
+    l->gu[d] = Omega * Omega * (r->unb_c[d] - I * r->unb_s[d]);
+    l->dgu[d] = 2.0 * Omega * (r->unb_c[d] - I * r->unb_s[d]);
+  }
+  return WHIRL_OK;
+}
+
+int fe_lin_update(fe_lin *l, double Omega) {
+  if (l->valid && Omega == l->Omega) return WHIRL_OK;
+  l->valid = 0;
+  l->err[0] = 0;
+  int rc = l->condensed ? condensed_update(l, Omega) : full_update(l, Omega);
+  if (rc) return rc;
+  l->Omega = Omega;
+  l->valid = 1;
+  return WHIRL_OK;
+}
+
+/* q_l,k = s y_k − X_k q_n,k per harmonic, the load scale s = 1 for the
+ * static part and `unb` for the unbalance; real form of the complex
+ * amplitudes Q = a − i b. */
+int fe_lin_recover(fe_lin *l, double Omega, double unb, const double *x,
+                   double *q) {
+  int rc = fe_lin_update(l, Omega);
+  if (rc) return rc;
+  int n = l->ndof, m = l->m, ni = l->ni, b = l->b, L = 2 * l->H + 1;
+  if (!l->condensed) {
+    memcpy(q, x, (size_t)n * L * sizeof *q);
+    return WHIRL_OK;
+  }
+  for (int k = 0; k <= l->H; ++k) {
+    const double complex *Xk = l->Xk + (size_t)k * ni * m;
+    const double complex *y = l->yk + (size_t)k * ni;
+    double sk = k == 0 ? 1.0 : (k == l->nu ? unb : 0.0);
+    for (int d = 0; d < n; ++d) {
+      int s = l->inv[d];
+      double complex Q;
+      if (s < 0) {
+        int j = -1 - s;
+        Q = k == 0 ? x[j] : x[b * (2 * k - 1) + j] - I * x[b * 2 * k + j];
+      } else {
+        Q = (k == 0 || k == l->nu) ? sk * y[s] : 0.0;
+        for (int j = 0; j < m; ++j) {
+          double complex qn = k == 0 ? x[j]
+                                     : x[b * (2 * k - 1) + j] - I * x[b * 2 * k + j];
+          Q -= Xk[s + (size_t)ni * j] * qn;
+        }
+      }
+      if (k == 0) {
+        q[d] = creal(Q);
+      } else {
+        q[n * (2 * k - 1) + d] = creal(Q);
+        q[n * 2 * k + d] = -cimag(Q);
+      }
+    }
+  }
+  return WHIRL_OK;
+}

@@ -1,0 +1,535 @@
+/* test/unit/t_fe_hbm.c — harmonic balance of finite-element rotors
+ * (rotor/fe_hbm*.c, whirl/rotor/fe_hbm.h) against independent references:
+ * the AFT coefficients of a cubic spring against cos³θ = (3 cos θ +
+ * cos 3θ)/4 and of an SFD on a circular orbit against its rotational
+ * symmetry; a linear rotor (k3 = 0) against a dense complex solve of
+ * (D_k + k1 PPᵀ) q = F written here; the condensed HBM against the
+ * uncondensed HBM on all DOFs (the issue's acceptance, 1e-10); every
+ * analytic Jacobian and dF/dp against central differences; Hill's
+ * stability against the monodromy matrix of the full time-domain system
+ * (variational equations integrated by whirl/floquet.h, the model written
+ * here); the folds of a continuation against Hill's multiplier +1.
+ * The rotor is built by hand (test/fe_chain.h).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <complex.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/cont.h>
+#include <whirl/floquet.h>
+#include <whirl/rotor/fe_hbm.h>
+
+#include "../fe_chain.h"
+#include "../tap.h"
+
+#define PI 3.14159265358979323846
+
+static whirl_fe_hbm *make(const whirl_fe_rotor *r, int H, int uncondensed,
+                          double Ls, double Fs, int stability) {
+  whirl_fe_hbm_options o;
+  whirl_fe_hbm_options_default(&o);
+  o.harmonics = (size_t)H;
+  o.uncondensed = uncondensed;
+  o.length_scale = Ls;
+  o.force_scale = Fs;
+  o.stability = stability;
+  char err[256] = "";
+  whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o, err, sizeof err);
+  if (!h) printf("# alloc: %s\n", err);
+  return h;
+}
+
+/* ---------------------------------------------------------------- AFT */
+
+/* With K = 0 and Ω = 0 the uncondensed residual is −f_nl exactly. */
+static void test_aft_cubic(void) {
+  fe_chain_opts co;
+  fe_chain_defaults(&co, 2);
+  co.kb = co.ks = co.EI = 0;
+  co.nnl = 1;
+  co.nl[0] = fe_chain_cubic(1, 2e5, 3e11);
+  whirl_fe_rotor *r = fe_chain_build(&co);
+  whirl_fe_hbm *h = make(r, 3, 1, 1.0, 1.0, 0);
+  size_t n = whirl_fe_hbm_size(h);
+  double *X = calloc(n, sizeof *X), *F = calloc(n, sizeof *F), p[4];
+  whirl_fe_hbm_params(0.0, p);
+  int nd = r->ndof, y = 4;            /* y of node 1 */
+  double A = 1e-3;
+  X[nd * 1 + y] = A;                   /* a_1 */
+  int rc = whirl_system_eval(whirl_fe_hbm_system(h), X, p, F);
+  ok(rc == 0, "AFT cubic: evaluated (%d)", rc);
+  double k1 = 2e5, k3 = 3e11;
+  is_rel(-F[nd * 1 + y], -(k1 * A + 0.75 * k3 * A * A * A), 1e-12,
+         "cubic: a_1 of the force = -(k1 A + 3/4 k3 A^3)");
+  is_rel(-F[nd * 5 + y], -0.25 * k3 * A * A * A, 1e-12,
+         "cubic: a_3 of the force = -k3 A^3 / 4");
+  double rest = 0;
+  for (size_t i = 0; i < n; ++i)
+    if (i != (size_t)(nd + y) && i != (size_t)(5 * nd + y)) rest = fmax(rest, fabs(F[i]));
+  ok(rest < 1e-12 * k3 * A * A * A, "cubic: every other coefficient 0 (%g)", rest);
+  free(X); free(F);
+  whirl_fe_hbm_free(h);
+  fe_chain_free(r);
+}
+
+/* A circular centred orbit y = e cos θ, z = e sin θ at ω: the force turns
+ * with the journal, f(θ) = R(θ) f(0), so its first harmonic is
+ * a_y = b_z = f_r, b_y = −a_z = −f_t with (f_r, f_t) the force at θ = 0,
+ * r = (e, 0), v = (0, e ω); nothing in the other harmonics. */
+static void test_aft_sfd_circular(void) {
+  fe_chain_opts co;
+  fe_chain_defaults(&co, 2);
+  co.kb = co.ks = co.EI = 0;
+  co.beta = co.cb = 0;
+  co.disk_node = -1;
+  co.nnl = 1;
+  co.nl[0] = fe_chain_sfd(1, -1);
+  whirl_fe_rotor *r = fe_chain_build(&co);
+  for (int c = 0; c < r->M.p[r->ndof]; ++c) r->M.x[c] = 0; /* D_k = 0 */
+  whirl_fe_hbm *h = make(r, 4, 1, 1.0, 1.0, 0);
+  size_t n = whirl_fe_hbm_size(h);
+  double *X = calloc(n, sizeof *X), *F = calloc(n, sizeof *F), p[4];
+  double Om = 300.0, e = 0.4 * co.nl[0].par.clearance;
+  whirl_fe_hbm_params(Om, p);
+  int nd = r->ndof, y = 4, z = 5;
+  X[nd * 1 + y] = e;
+  X[nd * 2 + z] = e;
+  int rc = whirl_system_eval(whirl_fe_hbm_system(h), X, p, F);
+  double rr[2] = {e, 0}, vv[2] = {0, e * Om}, aa[2] = {0, 0}, f[2];
+  rc |= whirl_fe_nl_force(&r->nl[0], rr, vv, aa, Om, f, NULL, NULL, NULL);
+  ok(rc == 0, "SFD circular: evaluated");
+  double sc = fabs(f[0]) + fabs(f[1]);
+  is_rel(-F[nd + y], f[0], 1e-9, "SFD circular: a_y = f_r");
+  is_rel(-F[2 * nd + z], f[0], 1e-9, "SFD circular: b_z = f_r");
+  is_rel(-F[2 * nd + y], -f[1], 1e-9, "SFD circular: b_y = -f_t");
+  is_rel(-F[nd + z], f[1], 1e-9, "SFD circular: a_z = f_t");
+  double rest = 0;
+  for (int k = 0; k < 9; ++k)
+    if (k != 1 && k != 2) rest = fmax(rest, fmax(fabs(F[k * nd + y]), fabs(F[k * nd + z])));
+  ok(rest < 1e-9 * sc, "SFD circular: no other harmonic (%g of %g)", rest, sc);
+  free(X); free(F);
+  whirl_fe_hbm_free(h);
+  fe_chain_free(r);
+}
+
+/* ------------------------------------------------------------- models */
+
+/* 5 nodes (20 DOF, 22 with the pedestal): a cubic spring at node 0 and an
+ * SFD at node 4 (to ground or on the pedestal), gravity. */
+static whirl_fe_rotor *model5(int pedestal, double k3) {
+  fe_chain_opts co;
+  fe_chain_defaults(&co, 5);
+  co.pedestal = pedestal;
+  co.gravity = 9.81;
+  co.ks = 3e6;
+  co.nnl = 2;
+  co.nl[0] = fe_chain_cubic(0, 0.0, k3);
+  co.nl[1] = fe_chain_sfd(4, pedestal ? 0 : -1);
+  return fe_chain_build(&co);
+}
+
+static double maxabs(const double *x, size_t n) {
+  double m = 0;
+  for (size_t i = 0; i < n; ++i) m = fmax(m, fabs(x[i]));
+  return m;
+}
+
+static void test_jacobians(int pedestal, int uncondensed) {
+  whirl_fe_rotor *r = model5(pedestal, 1e13);
+  whirl_fe_hbm *h = make(r, 3, uncondensed, 0, 0, 0);
+  const whirl_system *s = whirl_fe_hbm_system(h);
+  double *X = calloc(s->n, sizeof *X), p[4], err = 1;
+  whirl_fe_hbm_params(250.0, p);
+  p[1] = 1.3; p[2] = 1.1; p[3] = 0.9;
+  for (size_t i = 0; i < s->n; ++i) X[i] = tap_urand(-0.08, 0.08);
+  int rc = whirl_system_check_jacobian(s, X, p, &err);
+  ok(rc == 0 && err < 2e-6, "%s%s: Jacobian and dF/dp against differences "
+     "(%.2e)", uncondensed ? "uncondensed" : "condensed",
+     pedestal ? ", pedestal" : "", err);
+  free(X);
+  whirl_fe_hbm_free(h);
+  fe_chain_free(r);
+}
+
+/* ---------------------------------------------- linear: a dense solve */
+
+/* x = A⁻¹ b, A n×n complex column-major (destroyed), partial pivoting. */
+static void csolve(int n, double complex *A, double complex *b) {
+  for (int k = 0; k < n; ++k) {
+    int piv = k;
+    for (int i = k + 1; i < n; ++i)
+      if (cabs(A[i + n * k]) > cabs(A[piv + n * k])) piv = i;
+    for (int j = 0; j < n; ++j) {
+      double complex t = A[k + n * j]; A[k + n * j] = A[piv + n * j]; A[piv + n * j] = t;
+    }
+    double complex t = b[k]; b[k] = b[piv]; b[piv] = t;
+    for (int i = k + 1; i < n; ++i) {
+      double complex l = A[i + n * k] / A[k + n * k];
+      for (int j = k; j < n; ++j) A[i + n * j] -= l * A[k + n * j];
+      b[i] -= l * b[k];
+    }
+  }
+  for (int k = n - 1; k >= 0; --k) {
+    for (int j = k + 1; j < n; ++j) b[k] -= A[k + n * j] * b[j];
+    b[k] /= A[k + n * k];
+  }
+}
+
+static void dense_add(double complex *D, int n, const whirl_fe_csc *A,
+                      double complex s) {
+  for (int c = 0; c < n; ++c)
+    for (int q = A->p[c]; q < A->p[c + 1]; ++q) D[A->i[q] + n * c] += s * A->x[q];
+}
+
+/* The SFD replaced by a linear cubic spring (k3 = 0) at node 4 too. */
+static void test_linear(void) {
+  fe_chain_opts co;
+  fe_chain_defaults(&co, 5);
+  co.gravity = 9.81;
+  co.nnl = 2;
+  double k1 = 3e6;
+  co.nl[0] = fe_chain_cubic(0, k1, 0.0);
+  co.nl[1] = fe_chain_cubic(4, k1, 0.0);
+  whirl_fe_rotor *r = fe_chain_build(&co);
+  whirl_fe_hbm *h = make(r, 2, 0, 1e-4, 0, 0);
+  const whirl_system *s = whirl_fe_hbm_system(h);
+  double *X = calloc(s->n, sizeof *X), p[4], Om = 180.0;
+  whirl_fe_hbm_params(Om, p);
+  int its = 0, rc = whirl_newton(s, X, p, 1e-13, 10, &its);
+  int n = r->ndof, L = 5;
+  double *q = calloc((size_t)n * L, sizeof *q);
+  rc |= whirl_fe_hbm_recover(h, X, p, q);
+  ok(rc == 0 && its <= 3, "linear: Newton converged in %d iterations", its);
+  double complex *D = calloc((size_t)n * n, sizeof *D), *b = calloc((size_t)n, sizeof *b);
+  double err = 0, sc = 0;
+  for (int k = 0; k <= 1; ++k) {
+    memset(D, 0, (size_t)n * n * sizeof *D);
+    double w = k * Om;
+    dense_add(D, n, &r->K, 1.0);
+    dense_add(D, n, &r->M, -w * w);
+    dense_add(D, n, &r->C, I * w);
+    dense_add(D, n, &r->G, I * w * Om);
+    for (int c = 0; c < 2; ++c) { D[c + n * c] += k1; D[16 + c + n * (16 + c)] += k1; }
+    for (int d = 0; d < n; ++d)
+      b[d] = k == 0 ? r->f0[d] : Om * Om * (r->unb_c[d] - I * r->unb_s[d]);
+    csolve(n, D, b);
+    for (int d = 0; d < n; ++d) {
+      double complex Q = k == 0 ? q[d] : q[n + d] - I * q[2 * n + d];
+      err = fmax(err, cabs(Q - b[d]));
+      sc = fmax(sc, cabs(b[d]));
+    }
+  }
+  ok(err < 1e-10 * sc, "linear: condensed HBM and recovery = (D_k + k1 PP^T)^-1 F "
+     "(%.2e of %.2e)", err, sc);
+  ok(maxabs(q + 3 * n, 2 * (size_t)n) < 1e-14 * sc, "linear: harmonic 2 is 0");
+  free(D); free(b); free(q); free(X);
+  whirl_fe_hbm_free(h);
+  fe_chain_free(r);
+}
+
+/* ------------------------------- condensed = uncondensed (acceptance) */
+
+static void test_condensed_vs_full(int pedestal, double Om, double unb) {
+  whirl_fe_rotor *r = model5(pedestal, 1e13);
+  int H = 5, n = r->ndof, L = 2 * H + 1;
+  whirl_fe_hbm *hc = make(r, H, 0, 0, 0, 0), *hf = make(r, H, 1, 0, 0, 0);
+  const whirl_system *sc = whirl_fe_hbm_system(hc), *sf = whirl_fe_hbm_system(hf);
+  double *Xc = calloc(sc->n, sizeof *Xc), *Xf = calloc(sf->n, sizeof *Xf), p[4];
+  whirl_fe_hbm_params(Om, p);
+  p[WHIRL_FE_P_UNBALANCE] = unb;
+  int ic = 0, jf = 0;
+  int rc = whirl_newton(sc, Xc, p, 1e-13, 40, &ic);
+  rc |= whirl_newton(sf, Xf, p, 1e-13, 40, &jf);
+  double *qc = calloc((size_t)n * L, sizeof *qc), *qf = calloc((size_t)n * L, sizeof *qf);
+  rc |= whirl_fe_hbm_recover(hc, Xc, p, qc);
+  rc |= whirl_fe_hbm_recover(hf, Xf, p, qf);
+  double d = 0, s = maxabs(qf, (size_t)n * L);
+  for (int i = 0; i < n * L; ++i) d = fmax(d, fabs(qc[i] - qf[i]));
+  ok(rc == 0, "condensed (%zu unknowns, %d its) and uncondensed (%zu, %d its) "
+     "converged at %g rad/s%s", sc->n, ic, sf->n, jf, Om,
+     pedestal ? ", pedestal" : "");
+  ok(d <= 1e-10 * s, "condensed = uncondensed on all %d DOF x %d coefficients: "
+     "%.2e of %.2e", n, L, d, s);
+  double a1 = whirl_fe_hbm_amplitude(hc, qc, 4), c = r->nl[1].par.clearance;
+  ok(a1 > 0.3 * c && a1 < c, "SFD journal amplitude %.3g of the clearance: "
+     "nonlinear", a1 / c);
+  free(qc); free(qf); free(Xc); free(Xf);
+  whirl_fe_hbm_free(hc);
+  whirl_fe_hbm_free(hf);
+  fe_chain_free(r);
+}
+
+/* ------------------------------------ the time-domain model (reference) */
+
+/* x = (q, v): q' = v, M v' = f0 + s Ω² (u_c cos Ωt + u_s sin Ωt) + Σ Pᵀ f_e
+ * − (C + Ω G) v − K q, with M⁻¹ dense. */
+typedef struct tmodel {
+  const whirl_fe_rotor *r;
+  double *Minv; /* n×n */
+  double *w;    /* 3n work */
+} tmodel;
+
+static void spmv_add(const whirl_fe_csc *A, const double *x, double s,
+                     double *y) {
+  for (int c = 0; c < A->n; ++c)
+    for (int q = A->p[c]; q < A->p[c + 1]; ++q) y[A->i[q]] += s * A->x[q] * x[c];
+}
+
+static int elem(const whirl_fe_rotor *r, int e, const double *x, double Om,
+                double f[2], double Jr[4], double Jv[4], int d[4]) {
+  const whirl_fe_nl *el = &r->nl[e];
+  int n = r->ndof;
+  double rr[2], vv[2], aa[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    d[k] = 4 * el->node + k;
+    d[2 + k] = el->pedestal >= 0 ? 4 * r->nnode + 2 * el->pedestal + k : -1;
+    rr[k] = x[d[k]] - el->offset[k] - (d[2 + k] >= 0 ? x[d[2 + k]] : 0);
+    vv[k] = x[n + d[k]] - (d[2 + k] >= 0 ? x[n + d[2 + k]] : 0);
+  }
+  return whirl_fe_nl_force(el, rr, vv, aa, Om, f, Jr, Jv, NULL) ? 1 : 0;
+}
+
+static int t_rhs(double t, const double *x, const double *p, double *f,
+                 void *data) {
+  tmodel *tm = data;
+  const whirl_fe_rotor *r = tm->r;
+  int n = r->ndof;
+  double Om = p[0], *b = tm->w;
+  for (int d = 0; d < n; ++d)
+    b[d] = r->f0[d] + p[1] * Om * Om * (r->unb_c[d] * cos(Om * t) +
+                                         r->unb_s[d] * sin(Om * t));
+  spmv_add(&r->K, x, -1.0, b);
+  spmv_add(&r->C, x + n, -1.0, b);
+  spmv_add(&r->G, x + n, -Om, b);
+  for (int e = 0; e < r->nnl; ++e) {
+    double fe[2];
+    int d[4];
+    if (elem(r, e, x, Om, fe, NULL, NULL, d)) return 1;
+    for (int k = 0; k < 2; ++k) {
+      b[d[k]] += fe[k];
+      if (d[2 + k] >= 0) b[d[2 + k]] -= fe[k];
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    f[i] = x[n + i];
+    double s = 0;
+    for (int j = 0; j < n; ++j) s += tm->Minv[i + n * j] * b[j];
+    f[n + i] = s;
+  }
+  return 0;
+}
+
+/* J = [0 I; M⁻¹(−K + Pᵀ Jr P)  M⁻¹(−(C + ΩG) + Pᵀ Jv P)] */
+static int t_jac(double t, const double *x, const double *p, double *J,
+                 void *data) {
+  (void)t;
+  tmodel *tm = data;
+  const whirl_fe_rotor *r = tm->r;
+  int n = r->ndof, n2 = 2 * n;
+  double *B = calloc((size_t)n * n2, sizeof *B); /* the force's Jacobian */
+  const whirl_fe_csc *A[3] = {&r->K, &r->C, &r->G};
+  double s[3] = {-1.0, -1.0, -p[0]};
+  for (int a = 0; a < 3; ++a)
+    for (int c = 0; c < n; ++c)
+      for (int q = A[a]->p[c]; q < A[a]->p[c + 1]; ++q)
+        B[A[a]->i[q] + n * (c + (a ? n : 0))] += s[a] * A[a]->x[q];
+  for (int e = 0; e < r->nnl; ++e) {
+    double fe[2], Jr[4], Jv[4];
+    int d[4];
+    if (elem(r, e, x, p[0], fe, Jr, Jv, d)) { free(B); return 1; }
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        if (d[i] < 0 || d[j] < 0) continue;
+        double sg = ((i < 2) == (j < 2)) ? 1.0 : -1.0;
+        B[d[i] + n * d[j]] += sg * Jr[(i & 1) + 2 * (j & 1)];
+        B[d[i] + n * (n + d[j])] += sg * Jv[(i & 1) + 2 * (j & 1)];
+      }
+  }
+  memset(J, 0, (size_t)n2 * n2 * sizeof *J);
+  for (int i = 0; i < n; ++i) J[i + n2 * (n + i)] = 1.0;
+  for (int c = 0; c < n2; ++c)
+    for (int i = 0; i < n; ++i) {
+      double v = 0;
+      for (int k = 0; k < n; ++k) v += tm->Minv[i + n * k] * B[k + n * c];
+      J[n + i + n2 * c] = v;
+    }
+  free(B);
+  return 0;
+}
+
+static void minv(const whirl_fe_rotor *r, double *Mi) {
+  int n = r->ndof;
+  double complex *A = malloc((size_t)n * n * sizeof *A), *b = malloc((size_t)n * sizeof *b);
+  for (int j = 0; j < n; ++j) {
+    memset(A, 0, (size_t)n * n * sizeof *A);
+    dense_add(A, n, &r->M, 1.0);
+    for (int i = 0; i < n; ++i) b[i] = i == j;
+    csolve(n, A, b);
+    for (int i = 0; i < n; ++i) Mi[i + n * j] = creal(b[i]);
+  }
+  free(A); free(b);
+}
+
+/* The monodromy multipliers of the orbit q (coefficients of every DOF) by
+ * the variational equations over one period. */
+static int monodromy(const whirl_fe_rotor *r, const double *q, int H,
+                     const double *p, double *re, double *im) {
+  int n = r->ndof;
+  tmodel tm = {r, malloc((size_t)n * n * sizeof(double)), malloc(3 * (size_t)n * sizeof(double))};
+  minv(r, tm.Minv);
+  whirl_problem prob = {"fe-time", 2 * (size_t)n, 4, t_rhs, t_jac, NULL, 0,
+                        NULL, NULL, &tm};
+  double *x0 = calloc(2 * (size_t)n, sizeof *x0), Om = p[0];
+  for (int d = 0; d < n; ++d) {
+    x0[d] = q[d];
+    for (int k = 1; k <= H; ++k) {
+      x0[d] += q[n * (2 * k - 1) + d];
+      x0[n + d] += k * Om * q[n * 2 * k + d];
+    }
+  }
+  size_t m = 2 * (size_t)n;
+  char err[256] = "";
+  int rc = whirl_floquet_multipliers(&prob, p, 0.0, x0, 2 * PI / Om, 0, 1e-11,
+                                     1e-14, re, im, &m, NULL, NULL, err,
+                                     sizeof err);
+  if (rc) printf("# floquet: %s\n", err);
+  free(x0); free(tm.Minv); free(tm.w);
+  return rc;
+}
+
+/* ------------------------------------ continuation, Hill and monodromy */
+
+/* 3 nodes (12 DOF), a hardening cubic spring at node 0: a Duffing-like
+ * resonance with two folds. */
+static whirl_fe_rotor *duffing3(void) {
+  fe_chain_opts co;
+  fe_chain_defaults(&co, 3);
+  co.kb = 1e6;
+  co.ks = 1e6;
+  co.cb = 150;
+  co.beta = 1e-5;
+  co.me = 1e-3;
+  co.nnl = 1;
+  co.nl[0] = fe_chain_cubic(0, 0.0, 1e14);
+  return fe_chain_build(&co);
+}
+
+typedef struct collect {
+  int n, nlp, ntr, changes, last_stable;
+  double lp[4];
+  double *Xlp[4];
+  double *Xs, *Xu;   /* a stable and an unstable point */
+  double Os, Ou;
+  double *Xt, Ot;    /* an unstable point of small amplitude */
+  size_t nx;
+} collect;
+
+static int on_point(const whirl_fe_response_point *pt, void *ctx) {
+  collect *c = ctx;
+  ++c->n;
+  if (c->n > 1 && pt->stable >= 0 && c->last_stable >= 0 &&
+      pt->stable != c->last_stable)
+    ++c->changes;
+  if (pt->stable >= 0) c->last_stable = pt->stable;
+  if (pt->type == WHIRL_PT_TR) ++c->ntr;
+  if (pt->type == WHIRL_PT_LP && c->nlp < 4) {
+    c->lp[c->nlp] = pt->Omega;
+    c->Xlp[c->nlp] = malloc(pt->n * sizeof(double));
+    memcpy(c->Xlp[c->nlp++], pt->X, pt->n * sizeof(double));
+  }
+  double **dst = pt->stable == 1 ? &c->Xs : (pt->stable == 0 ? &c->Xu : NULL);
+  if (dst && !*dst && pt->amplitude > 2.5e-4 && pt->amplitude < 3.5e-4 &&
+      pt->type == WHIRL_PT_REGULAR) {
+    *dst = malloc(pt->n * sizeof(double));
+    memcpy(*dst, pt->X, pt->n * sizeof(double));
+    *(pt->stable ? &c->Os : &c->Ou) = pt->Omega;
+  }
+  if (pt->stable == 0 && !c->Xt && pt->amplitude < 1e-4 &&
+      pt->type == WHIRL_PT_REGULAR) {
+    c->Xt = malloc(pt->n * sizeof(double));
+    memcpy(c->Xt, pt->X, pt->n * sizeof(double));
+    c->Ot = pt->Omega;
+  }
+  c->nx = pt->n;
+  return 0;
+}
+
+static void hill_vs_monodromy(whirl_fe_hbm *h, const whirl_fe_rotor *r,
+                              const double *X, double Om, int H,
+                              const char *what) {
+  int n = r->ndof;
+  double p[4], *q = calloc((size_t)n * (2 * H + 1), sizeof *q);
+  double re[64], im[64], mr[64], mi[64];
+  size_t m = 64;
+  whirl_fe_hbm_params(Om, p);
+  int rc = whirl_fe_hbm_hill(h, X, p, re, im, &m);
+  rc |= whirl_fe_hbm_recover(h, X, p, q);
+  rc |= monodromy(r, q, H, p, mr, mi);
+  double T = 2 * PI / Om, hmax = exp(re[0] * T), mmax = hypot(mr[0], mi[0]);
+  ok(rc == 0 && m == 2 * (size_t)n, "%s: Hill kept %zu exponents", what, m);
+  is_abs(hmax, mmax, 2e-4 * fmax(1.0, mmax),
+         "%s at %.2f rad/s: largest multiplier, Hill %.6f vs monodromy %.6f",
+         what, Om, hmax, mmax);
+  ok((hmax < 1) == (mmax < 1), "%s: Hill and monodromy agree on stability", what);
+  free(q);
+}
+
+static void test_response(void) {
+  whirl_fe_rotor *r = duffing3();
+  whirl_fe_response_options o;
+  whirl_fe_response_options_default(&o);
+  o.hbm.harmonics = 5;
+  o.speed_min = 150;
+  o.speed_max = 400;
+  o.node = 0;
+  collect c;
+  memset(&c, 0, sizeof c);
+  c.last_stable = -1;
+  char err[256] = "";
+  int rc = whirl_fe_response(r, &o, on_point, &c, err, sizeof err);
+  ok(rc == 0, "response: continuation 150..400 rad/s (%d points) %s", c.n, err);
+  ok(c.nlp == 2, "response: two folds (LP) of the hardening resonance: %d at "
+     "%.1f, %.1f rad/s", c.nlp, c.lp[0], c.lp[1]);
+  /* the core labels a TR where the complex multiplier nearest the unit
+   * circle crosses it; on the way back another pair is nearer, so only the
+   * first crossing is certain to be labelled */
+  ok(c.ntr >= 1, "response: a torus point (TR) past the resonance, %d",
+     c.ntr);
+  ok(c.changes == 4, "response: stability changes at the two LP and the two "
+     "TR (%d)", c.changes);
+  whirl_fe_hbm *h = make(r, 5, 0, 0, 0, 1);
+  for (int k = 0; k < c.nlp; ++k) { /* a fold: a Floquet multiplier +1 */
+    double p[4], re[64], im[64], best = INFINITY;
+    size_t m = 64;
+    whirl_fe_hbm_params(c.lp[k], p);
+    const whirl_system *s = whirl_fe_hbm_system(h);
+    rc = s->spectrum(c.Xlp[k], p, NULL, re, im, &m, s->data);
+    for (size_t i = 0; i < m; ++i) best = fmin(best, hypot(re[i] - 1, im[i]));
+    ok(rc == 0 && best < 1e-3, "fold %d: Hill multiplier at +1 (|mu - 1| = %.1e)",
+       k + 1, best);
+    free(c.Xlp[k]);
+  }
+  if (c.Xs) hill_vs_monodromy(h, r, c.Xs, c.Os, 5, "stable orbit");
+  else ok(0, "a stable orbit was found");
+  if (c.Xu) hill_vs_monodromy(h, r, c.Xu, c.Ou, 5, "unstable orbit");
+  else ok(0, "an unstable orbit was found");
+  if (c.Xt) hill_vs_monodromy(h, r, c.Xt, c.Ot, 5, "small unstable orbit");
+  free(c.Xs); free(c.Xu); free(c.Xt);
+  whirl_fe_hbm_free(h);
+  fe_chain_free(r);
+}
+
+int main(void) {
+  test_aft_cubic();
+  test_aft_sfd_circular();
+  test_jacobians(0, 0);
+  test_jacobians(1, 0);
+  test_jacobians(1, 1);
+  test_linear();
+  test_condensed_vs_full(0, 150.0, 12.0);
+  test_condensed_vs_full(1, 320.0, 4.0);
+  test_response();
+  return done_testing();
+}
