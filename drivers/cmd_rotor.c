@@ -287,7 +287,10 @@ static const struct {
     {"modes", cmd_rotor_modes,
      "damped natural frequencies, log decrements and whirl at one speed"},
     {"campbell", cmd_rotor_campbell,
-     "Campbell diagram and critical speeds over a speed range (TSV, PNG)"}};
+     "Campbell diagram and critical speeds over a speed range (TSV, PNG)"},
+    {"response", cmd_rotor_response,
+     "periodic unbalance response with the nonlinear elements: harmonic balance "
+     "in speed, folds, stability (TSV, PNG)"}};
 #define NROTOR (sizeof rotor_commands / sizeof rotor_commands[0])
 
 void cli_rotor_help(FILE *f, const char *prefix, size_t col) {
@@ -302,7 +305,7 @@ int cmd_rotor(int argc, char **argv) {
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     FILE *f = argc < 2 ? stderr : stdout;
     fprintf(f, "usage: whirl rotor <command> FILE [options]\n\n"
-               "Linear analyses of a finite-element rotor file (doc/rotor-file.md).\n"
+               "Analyses of a finite-element rotor file (doc/rotor-file.md).\n"
                "commands:\n");
     cli_rotor_help(f, "", 20);
     fprintf(f, "\n  whirl rotor <command> --help   options of a command\n");

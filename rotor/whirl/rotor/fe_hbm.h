@@ -116,6 +116,15 @@ WHIRL_API int whirl_fe_hbm_recover(whirl_fe_hbm *h, const double *X,
 WHIRL_API double whirl_fe_hbm_amplitude(const whirl_fe_hbm *h,
                                         const double *q, int node);
 
+/* A start away from rest: X[size] the forward circular orbits y + iz =
+ * eps c e^{i(ωt + phase)} of relative eccentricity eps (0 ≤ eps < 1) at
+ * every film element (c its clearance), every other unknown 0 — for
+ * branches the response from rest does not reach (an isola), seeded from a
+ * rigid-rotor solution or a guess and corrected by Newton.  Synchronous
+ * responses only (ν = 1); WHIRL_EINVAL otherwise. */
+WHIRL_API int whirl_fe_hbm_seed_circular(const whirl_fe_hbm *h, double eps,
+                                         double phase, double *X);
+
 /* Hill's Floquet exponents of the solution X at p: the 2 ndof kept
  * eigenvalues re[], im[] (*m: capacity in, count out), sorted by
  * decreasing real part.  Stable when all re < 0. */
@@ -134,6 +143,14 @@ typedef struct whirl_fe_response_options {
                                 range/50); the arclength weighs Ω by
                                 1/range and the unknowns by 1 */
   size_t nmx;                /* steps (default 2000) */
+  /* A seeded branch: when seed_eps > 0 the branch starts at Ω =
+   * seed_omega from whirl_fe_hbm_seed_circular(seed_eps, seed_phase)
+   * corrected by Newton (the phase giving the smallest residual of 16 when
+   * seed_phase is NaN) and is followed towards larger speeds
+   * (direction +1, default) or smaller (−1); it ends at the speed range or
+   * when it closes on itself (an isola inside the range). */
+  double seed_omega, seed_eps, seed_phase;
+  int direction;
 } whirl_fe_response_options;
 
 WHIRL_API void whirl_fe_response_options_default(whirl_fe_response_options *o);
