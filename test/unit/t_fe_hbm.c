@@ -19,6 +19,7 @@
 
 #include <whirl/cont.h>
 #include <whirl/floquet.h>
+#include <whirl/fold.h>
 #include <whirl/rotor/fe_hbm.h>
 
 #include "../fe_chain.h"
@@ -476,6 +477,62 @@ static void hill_vs_monodromy(whirl_fe_hbm *h, const whirl_fe_rotor *r,
   free(q);
 }
 
+/* The fold locus in speed × unbalance through the fold system: from the
+ * first LP (Ω1 at unbalance 1) down in unbalance, round the cusp where the
+ * two folds meet, and back up to unbalance 1, where it must arrive at the
+ * second LP Ω2 of the speed continuation. */
+static void test_fold_locus(const whirl_fe_rotor *r, const double *X,
+                            double Om1, double Om2) {
+  whirl_fe_hbm *h = make(r, 5, 0, 0, 0, 0);
+  const whirl_system *s = whirl_fe_hbm_system(h);
+  whirl_fold_options fo;
+  whirl_fold_options_default(&fo, WHIRL_FE_P_OMEGA);
+  char err[256] = "";
+  whirl_fold *f = whirl_fold_alloc(s, &fo, err, sizeof err);
+  double p[4], *Z = calloc(s->n + 1, sizeof *Z);
+  whirl_fe_hbm_params(Om1, p);
+  int rc = f ? whirl_fold_init(f, X, p, Z) : -1;
+  ok(rc == 0, "fold locus: started at the first LP %s", err);
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = WHIRL_FE_P_UNBALANCE;
+  co.ds = 0.01;
+  co.ds_max = 1.0;
+  co.nmx = 400;
+  co.p_min = 0.001;
+  co.p_max = 1.5;
+  co.newton_tol = 1e-9;
+  double uz = 1.0;
+  int uz_stop = 1;
+  co.uz = &uz;
+  co.nuz = 1;
+  co.uz_stop = &uz_stop;
+  whirl_cont *c = rc ? NULL : whirl_cont_alloc(whirl_fold_system(f), &co, err, sizeof err);
+  rc = c ? whirl_cont_start(c, Z, p, -1) : -1;
+  double umin = 2, Om_end = 0, u_end = 0;
+  int steps = 0;
+  while (!rc && (rc = whirl_cont_step(c)) == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(c);
+    umin = fmin(umin, pt->p[WHIRL_FE_P_UNBALANCE]);
+    Om_end = pt->x[s->n];
+    u_end = pt->p[WHIRL_FE_P_UNBALANCE];
+    ++steps;
+    if (getenv("FOLD_TRACE")) printf("# %g %g %d\n", Om_end, u_end, pt->type);
+  }
+  ok(rc == WHIRL_DONE && c && whirl_cont_stop_reason(c) == WHIRL_STOP_UZ,
+     "fold locus: round the cusp (unbalance down to %.3f) and back to 1 in "
+     "%d steps", umin, steps);
+  ok(umin < 0.9 && umin > 0.002, "fold locus: the folds meet at unbalance %.3f",
+     umin);
+  is_rel(u_end, 1.0, 1e-9, "fold locus: ends at unbalance 1");
+  is_rel(Om_end, Om2, 1e-6, "fold locus: at the second LP of the speed "
+         "continuation, %.6f vs %.6f rad/s", Om_end, Om2);
+  whirl_cont_free(c);
+  whirl_fold_free(f);
+  free(Z);
+  whirl_fe_hbm_free(h);
+}
+
 static void test_response(void) {
   whirl_fe_rotor *r = duffing3();
   whirl_fe_response_options o;
@@ -499,6 +556,7 @@ static void test_response(void) {
      c.ntr);
   ok(c.changes == 4, "response: stability changes at the two LP and the two "
      "TR (%d)", c.changes);
+  if (c.nlp == 2) test_fold_locus(r, c.Xlp[0], c.lp[0], c.lp[1]);
   whirl_fe_hbm *h = make(r, 5, 0, 0, 0, 1);
   for (int k = 0; k < c.nlp; ++k) { /* a fold: a Floquet multiplier +1 */
     double p[4], re[64], im[64], best = INFINITY;
