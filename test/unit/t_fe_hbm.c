@@ -262,6 +262,43 @@ static void test_condensed_vs_full(int pedestal, double Om, double unb) {
   fe_chain_free(r);
 }
 
+/* ν = 2 (response frequency Ω/2, H = 10) holds the synchronous orbit in
+ * its even harmonics: harmonic 2k must equal harmonic k of ν = 1, H = 5
+ * (the same 32 samples per shaft period), the odd ones 0. */
+static void test_subharmonic_index(void) {
+  whirl_fe_rotor *r = model5(0, 1e13);
+  whirl_fe_hbm_options o;
+  whirl_fe_hbm_options_default(&o);
+  o.harmonics = 5;
+  whirl_fe_hbm *h1 = whirl_fe_hbm_alloc(r, &o, NULL, 0);
+  o.harmonics = 10;
+  o.nu = 2;
+  whirl_fe_hbm *h2 = whirl_fe_hbm_alloc(r, &o, NULL, 0);
+  const whirl_system *s1 = whirl_fe_hbm_system(h1), *s2 = whirl_fe_hbm_system(h2);
+  double *X1 = calloc(s1->n, sizeof *X1), *X2 = calloc(s2->n, sizeof *X2), p[4];
+  whirl_fe_hbm_params(150.0, p);
+  p[WHIRL_FE_P_UNBALANCE] = 12.0;
+  int i1 = 0, i2 = 0, m = 0;
+  int rc = whirl_newton(s1, X1, p, 1e-13, 40, &i1) | whirl_newton(s2, X2, p, 1e-13, 40, &i2);
+  whirl_fe_hbm_nl_dofs(h1, &m);
+  double d = 0, odd = 0, sc = maxabs(X1, s1->n);
+  for (int j = 0; j < m; ++j) {
+    d = fmax(d, fabs(X1[j] - X2[j]));
+    for (int k = 1; k <= 5; ++k)
+      for (int c = 0; c < 2; ++c)
+        d = fmax(d, fabs(X1[m * (2 * k - 1 + c) + j] - X2[m * (4 * k - 1 + c) + j]));
+    for (int k = 1; k <= 10; k += 2)
+      odd = fmax(odd, fmax(fabs(X2[m * (2 * k - 1) + j]), fabs(X2[m * 2 * k + j])));
+  }
+  ok(rc == 0, "nu = 2: both converged (%d, %d iterations)", i1, i2);
+  ok(d < 1e-11 * sc && odd < 1e-11 * sc, "nu = 2: even harmonics = nu = 1 "
+     "(%.1e), odd harmonics 0 (%.1e), of %.2e", d, odd, sc);
+  free(X1); free(X2);
+  whirl_fe_hbm_free(h1);
+  whirl_fe_hbm_free(h2);
+  fe_chain_free(r);
+}
+
 /* ------------------------------------ the time-domain model (reference) */
 
 /* x = (q, v): q' = v, M v' = f0 + s Ω² (u_c cos Ωt + u_s sin Ωt) + Σ Pᵀ f_e
@@ -579,6 +616,41 @@ static void test_response(void) {
   fe_chain_free(r);
 }
 
+/* Bad options are refused with a message; contact is recoverable. */
+static void test_errors(void) {
+  whirl_fe_rotor *r = model5(0, 1e13);
+  whirl_fe_hbm_options o;
+  whirl_fe_hbm_options_default(&o);
+  char err[256] = "";
+  o.nu = 6;
+  ok(!whirl_fe_hbm_alloc(r, &o, err, sizeof err) && strstr(err, "nu"),
+     "nu > harmonics refused: %s", err);
+  whirl_fe_hbm_options_default(&o);
+  o.nsamples = 10;
+  ok(!whirl_fe_hbm_alloc(r, &o, err, sizeof err) && strstr(err, "nsamples"),
+     "nsamples <= 2H refused: %s", err);
+  whirl_fe_hbm_options_default(&o);
+  int nnl = r->nnl;
+  r->nnl = 0;
+  ok(!whirl_fe_hbm_alloc(r, &o, err, sizeof err), "no nonlinear element "
+     "refused: %s", err);
+  r->nnl = nnl;
+  whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o, NULL, 0);
+  const whirl_system *s = whirl_fe_hbm_system(h);
+  double *X = calloc(s->n, sizeof *X), *F = calloc(s->n, sizeof *F), p[4];
+  int m = 0;
+  const int *dof = whirl_fe_hbm_nl_dofs(h, &m);
+  ok(m == 4 && dof[0] == 0 && dof[1] == 1 && dof[2] == 16 && dof[3] == 17,
+     "nonlinear DOFs: y, z of nodes 0 and 4");
+  whirl_fe_hbm_params(100.0, p);
+  X[2 * m + 2] = 1.2; /* the SFD journal's y beyond its clearance (Ls = c) */
+  int rc = s->F(X, p, F, s->data);
+  ok(rc > 0, "journal beyond the clearance: recoverable (%d)", rc);
+  free(X); free(F);
+  whirl_fe_hbm_free(h);
+  fe_chain_free(r);
+}
+
 int main(void) {
   test_aft_cubic();
   test_aft_sfd_circular();
@@ -588,6 +660,8 @@ int main(void) {
   test_linear();
   test_condensed_vs_full(0, 150.0, 12.0);
   test_condensed_vs_full(1, 320.0, 4.0);
+  test_subharmonic_index();
+  test_errors();
   test_response();
   return done_testing();
 }
