@@ -54,16 +54,16 @@ static int params_ok(const whirl_fe_nl *e) {
 }
 
 /* ------------------------------------------------------------------------
- * Short SFD, π film: paper eq. 8 (Vance 1988 §4; San Andrés, Notes 13),
+ * Short SFD, π film: paper eq. 8 (Vance 1988; San Andrés, Notes 13),
  *   F_r = −(μRL³/c²) [A ε̇ + B εγ̇],  F_t = −(μRL³/c²) [B ε̇ + C εγ̇],
  * the film taken over the half θ ∈ (0, π) ahead of the line of centres.
  * rotor/sfd.c computes −2λ[...] in ε, ε' units; with λ = 1/2 and the rates
  * ε̇ = ė/c in 1/s its result times μRL³/c² is the force in N, and
  * d/dr = (1/c) d/dε. */
 
-static int sfd_short_pi(const whirl_fe_nl_params *p, const double r[2],
-                        const double v[2], double f[2], double Jr[4],
-                        double Jv[4]) {
+int whirl_fe_sfd_short_pi(const whirl_fe_nl_params *p, const double r[2],
+                          const double v[2], double f[2], double Jr[4],
+                          double Jv[4]) {
   const double c = p->clearance;
   const double k = p->viscosity * p->radius * pow(p->length, 3) / (c * c);
   double fn[2], Jn[8];
@@ -96,7 +96,7 @@ static void cubic(const whirl_fe_nl_params *p, const double r[2], double f[2],
 }
 
 /* ------------------------------------------------------------------------
- * Radial rub (Childs 1993 §8; Muszynska 2005 §6.3), not smoothed.  With
+ * Radial rub (Childs 1993; Muszynska 2005), not smoothed.  With
  * ρ = |r|, r̂ = r/ρ, t̂ = (−r̂_z, r̂_y) (the direction of +Ω rotation) and
  * the penetration δ = ρ − c > 0, the normal force N = k_contact δ and the
  * Coulomb friction μ_f N oppose the penetration and the sliding of the
@@ -153,7 +153,7 @@ static int nl_force(const whirl_fe_nl *e, const double r[2], const double v[2],
   const whirl_fe_nl_params *p = &e->par;
   switch (e->kind) {
   case WHIRL_FE_SFD_SHORT_PI:
-    return sfd_short_pi(p, r, v, f, Jr, Jv);
+    return whirl_fe_sfd_short_pi(p, r, v, f, Jr, Jv);
   case WHIRL_FE_SFD_SHORT_2PI:
     return whirl_fe_sfd_short_2pi(p, r, v, f, Jr, Jv);
   case WHIRL_FE_SFD_LONG:

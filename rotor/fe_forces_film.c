@@ -73,9 +73,9 @@ static void film_integrals(double e, double t1, int full, film_int *I) {
   I->sss = (B[6] - A[6]) * s1 * s1;          /* s^{-2} */
 }
 
-/* Q M Qᵀ for a symmetric local M = [[a, b], [b, d]], Q = [r̂ t̂]. */
-static void to_fixed(double ry, double rz, double a, double b, double d,
-                     double sc, double J[4]) {
+/* Q M Qᵀ for a symmetric local M (fe_forces_impl.h). */
+void whirl_fe_to_fixed(double ry, double rz, double a, double b, double d,
+                       double sc, double J[4]) {
   const double ty = -rz, tz = ry;
   J[0] = sc * (a * ry * ry + 2.0 * b * ry * ty + d * ty * ty);
   J[1] = sc * (a * ry * rz + b * (ry * tz + ty * rz) + d * ty * tz);
@@ -104,17 +104,18 @@ static int short_film(const whirl_fe_nl_params *p, const double r[2],
   const double ft = -K * (I.cs * wr + I.ss * wt);
   f[0] = fr * ry - ft * rz;
   f[1] = fr * rz + ft * ry;
-  if (Jw != NULL) to_fixed(ry, rz, I.cc, I.cs, I.ss, half_zero ? -0.5 * K : -K, Jw);
+  if (Jw != NULL)
+    whirl_fe_to_fixed(ry, rz, I.cc, I.cs, I.ss, half_zero ? -0.5 * K : -K, Jw);
   if (Jr != NULL) {
     const double a = wr * I.ccc + wt * I.ccs, b = wr * I.ccs + wt * I.css;
     const double d = wr * I.css + wt * I.sss;
-    to_fixed(ry, rz, a, b, d, -3.0 * K / c, Jr);
+    whirl_fe_to_fixed(ry, rz, a, b, d, -3.0 * K / c, Jr);
   }
   return WHIRL_OK;
 }
 
 /* ------------------------------------------------------------------------
- * Short SFD, 2π film: H the full circle, w = v (Vance 1988 §4; San
+ * Short SFD, 2π film: H the full circle, w = v (Vance 1988; San
  * Andrés, Notes 13: F_r = 0, F_t = −πμRL³ ω ε/(c² s^{3/2}) on a circular
  * centred orbit). */
 int whirl_fe_sfd_short_2pi(const whirl_fe_nl_params *p, const double r[2],
@@ -124,7 +125,7 @@ int whirl_fe_sfd_short_2pi(const whirl_fe_nl_params *p, const double r[2],
 }
 
 /* ------------------------------------------------------------------------
- * Short plain journal bearing (Ocvirk; Childs 1993 §3; Vance 1988 §3):
+ * Short plain journal bearing (Ocvirk 1952; Childs 1993; Vance 1988):
  * the journal spins at Ω, the housing is fixed.  The Couette term
  * (U/2) ∂h/∂x with U = ΩR adds −(Ω/2) r·t̂(φ) to −∂h/∂t = v·n, so the
  * squeeze velocity is w = v − (Ω/2) ẑ×r = (v_y + Ω r_z/2, v_z − Ω r_y/2)
@@ -150,20 +151,4 @@ int whirl_fe_journal_short(const whirl_fe_nl_params *p, const double r[2],
   if (Jv != NULL)
     for (int i = 0; i < 4; ++i) Jv[i] = Jw[i];
   return WHIRL_OK;
-}
-
-/* ------------------------------------------------------------------------
- * Not yet: the long SFD and the SFD with fluid inertia. */
-int whirl_fe_sfd_long(const whirl_fe_nl_params *p, const double r[2],
-                      const double v[2], double f[2], double Jr[4],
-                      double Jv[4]) {
-  (void)p, (void)r, (void)v, (void)f, (void)Jr, (void)Jv;
-  return WHIRL_EINVAL;
-}
-
-int whirl_fe_sfd_inertia(const whirl_fe_nl_params *p, const double r[2],
-                         const double v[2], const double a[2], double f[2],
-                         double Jr[4], double Jv[4], double Ja[4]) {
-  (void)p, (void)r, (void)v, (void)a, (void)f, (void)Jr, (void)Jv, (void)Ja;
-  return WHIRL_EINVAL;
 }

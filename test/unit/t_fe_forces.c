@@ -2,8 +2,10 @@
  * (rotor/fe_forces*.c, whirl_fe_nl_force) against independent references:
  * the textbook closed forms on circular centred orbits (Vance 1988, San
  * Andrés), the paper's nondimensional force (rotor/sfd.c) times its
- * scaling, the short-bearing static eccentricity and attitude angle, a
- * brute-force quadrature of the short-bearing pressure, hand computations
+ * scaling, the short-bearing static eccentricity and attitude angle and
+ * its classical stiffness and damping coefficients, a brute-force
+ * quadrature of the short-bearing pressure, a finite-difference solution of
+ * the long-bearing Reynolds equation, hand computations
  * for the rub and the cubic spring, and central finite differences for
  * every analytic Jacobian.
  * SPDX-License-Identifier: BSD-3-Clause */
@@ -18,8 +20,8 @@
 
 #define PI 3.14159265358979323846
 
-/* A damper of the paper's Table 1 size: R 0.05 m? (any values do; these
- * are typical: R = 50 mm, L = 20 mm, c = 100 µm, μ = 0.03 Pa·s). */
+/* A typical damper (any values do): R = 50 mm, L = 20 mm, c = 100 µm,
+ * μ = 0.03 Pa·s (the paper's oil), ρ = 860 kg/m³. */
 static whirl_fe_nl film(whirl_fe_nl_kind kind) {
   whirl_fe_nl e;
   memset(&e, 0, sizeof e);
@@ -334,6 +336,40 @@ static void test_journal(void) {
   ok(good, "journal-short: static equilibrium under a load along -z: "
      "eccentricity = Ocvirk relation, attitude tan(phi) = pi sqrt(1-e^2)/(4e), "
      "journal ahead of the load in the direction of rotation");
+  /* the linearised stiffness and damping at equilibrium = the classical
+   * short-bearing (half-Sommerfeld) coefficients, f = −K x − C ẋ (San
+   * Andrés, Modern Lubrication Theory notes; Childs 1993; the closed forms
+   * of ROSS's fluid_flow module), in the frame X = y horizontal, Y = z up,
+   * the load W along −Y and the rotation from X to Y, so K = −Jr, C = −Jv */
+  good = 1;
+  for (int i = 0; i < 5; ++i) {
+    double r[2], f[2], Jr[4], Jv[4];
+    const double W = S[i] * U, v[2] = {0, 0};
+    journal_static(&e, W, Om, r);
+    whirl_fe_nl_force(&e, r, v, NULL, Om, f, Jr, Jv, NULL);
+    const double ep = hypot(r[0], r[1]) / c, e2 = ep * ep, s = 1 - e2;
+    const double h0 = 1.0 / pow(PI * PI * s + 16 * e2, 1.5);
+    const double a = W / c * h0, b = W / (c * Om) * h0, q = ep * sqrt(s);
+    const double K[4] = {/* XX, YX, XY, YY (column-major) */
+                         a * 4 * (PI * PI * (2 - e2) + 16 * e2),
+                         -a * PI * (PI * PI * s * (1 + 2 * e2) + 32 * e2 * (1 + e2)) / q,
+                         a * PI * (PI * PI * s * s - 16 * e2 * e2) / q,
+                         a * 4 * (PI * PI * (1 + 2 * e2) + 32 * e2 * (1 + e2) / s)};
+    const double C[4] = {b * 2 * PI * sqrt(s) * (PI * PI * (1 + 2 * e2) - 16 * e2) / ep,
+                         -b * 8 * (PI * PI * (1 + 2 * e2) - 16 * e2),
+                         -b * 8 * (PI * PI * (1 + 2 * e2) - 16 * e2),
+                         b * 2 * PI * (PI * PI * s * s + 48 * e2) / q};
+    for (int k = 0; k < 4; ++k)
+      if (fabs(-Jr[k] - K[k]) > 1e-9 * fabs(K[0]) ||
+          fabs(-Jv[k] - C[k]) > 1e-9 * fabs(C[0])) {
+        good = 0;
+        printf("# eps %.3f: K[%d] %.12g (%.12g), C[%d] %.12g (%.12g)\n", ep, k,
+               -Jr[k], K[k], k, -Jv[k], C[k]);
+      }
+  }
+  ok(good, "journal-short: Jr, Jv at equilibrium = the classical short-bearing "
+     "stiffness and damping coefficients (1e-9)");
+
 
   /* the Couette equivalence: with v = 0 the force is the π film of the
    * squeeze velocity ε(γ̇ − Ω/2): against the quadrature of w·n > 0 */
@@ -407,6 +443,7 @@ static void test_rub(void) {
  * Domain and argument errors. */
 static void test_errors(void) {
   const whirl_fe_nl_kind kinds[] = {WHIRL_FE_SFD_SHORT_PI, WHIRL_FE_SFD_SHORT_2PI,
+                                    WHIRL_FE_SFD_LONG, WHIRL_FE_SFD_INERTIA,
                                     WHIRL_FE_JOURNAL_SHORT};
   const double a[2] = {0, 0};
   for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; ++i) {
@@ -441,11 +478,206 @@ static void test_errors(void) {
      "unknown kind is WHIRL_EINVAL");
 }
 
+/* ------------------------------------------------------------------------
+ * Long SFD, sealed ends, π film. */
+
+/* the long-bearing Reynolds equation ∂θ(D³ ∂θ p̃) = −(w_r cos θ + w_t sin θ)
+ * on θ ∈ (0, π), p̃(0) = p̃(π) = 0, by second-order finite differences
+ * (Thomas algorithm), and its force f = −RL ∫ p n with p = (12μR²/c³) p̃,
+ * in the local basis (r̂, t̂) */
+static void long_fd(const whirl_fe_nl *e, double eps, double wr, double wt,
+                    double F[2]) {
+  enum { N = 20000 };
+  static double lo[N], di[N], up[N], rhs[N], p[N + 1];
+  const double h = PI / N;
+  for (int i = 1; i < N; ++i) {
+    const double th = i * h, Dm = 1 - eps * cos(th - 0.5 * h),
+                 Dp = 1 - eps * cos(th + 0.5 * h);
+    lo[i] = Dm * Dm * Dm;
+    up[i] = Dp * Dp * Dp;
+    di[i] = -(lo[i] + up[i]);
+    rhs[i] = -(wr * cos(th) + wt * sin(th)) * h * h;
+  }
+  for (int i = 2; i < N; ++i) { /* forward elimination */
+    const double m = lo[i] / di[i - 1];
+    di[i] -= m * up[i - 1];
+    rhs[i] -= m * rhs[i - 1];
+  }
+  p[0] = p[N] = 0.0;
+  for (int i = N - 1; i >= 1; --i) p[i] = (rhs[i] - up[i] * p[i + 1]) / di[i];
+  double sc = 0, ss = 0;
+  for (int i = 1; i < N; ++i) {
+    sc += p[i] * cos(i * h) * h;
+    ss += p[i] * sin(i * h) * h;
+  }
+  const whirl_fe_nl_params *q = &e->par;
+  const double k = -q->radius * q->length * 12.0 * q->viscosity * q->radius *
+                   q->radius / pow(q->clearance, 3);
+  F[0] = k * sc;
+  F[1] = k * ss;
+}
+
+static void test_long(void) {
+  whirl_fe_nl e = film(WHIRL_FE_SFD_LONG);
+  const double c = e.par.clearance;
+  const double KL = e.par.viscosity * pow(e.par.radius, 3) * e.par.length / (c * c);
+  /* circular centred orbit (Vance 1988; San Andrés, Notes 13):
+   *   F_r = −24 μR³L ε²ω/(c²(2+ε²)(1−ε²)), F_t = −12π μR³L εω/(c²(2+ε²)√(1−ε²)) */
+  int good = 1;
+  const double eps[] = {0.1, 0.5, 0.8, 0.95};
+  for (size_t i = 0; i < 4; ++i) {
+    const double w = 120.0, s = 1.0 - eps[i] * eps[i], q = 2 + eps[i] * eps[i];
+    double r[2], v[2], f[2], fr, ft;
+    orbit(eps[i] * c, w, 1.0 + i, r, v);
+    whirl_fe_nl_force(&e, r, v, NULL, 0.0, f, NULL, NULL, NULL);
+    polar(r, f, &fr, &ft);
+    const double wr = -24 * KL * eps[i] * eps[i] * w / (q * s);
+    const double wt = -12 * PI * KL * eps[i] * w / (q * sqrt(s));
+    if (fabs(fr - wr) > 1e-12 * fabs(wr) || fabs(ft - wt) > 1e-12 * fabs(wt)) good = 0;
+  }
+  ok(good, "sfd-long: circular centred orbit = Vance's pi-film closed forms (1e-12)");
+  /* = finite differences of the long-bearing Reynolds equation, with
+   * squeeze (ė ≠ 0) */
+  double worst = 0.0;
+  for (int k = 0; k < 6; ++k) {
+    const double g = tap_urand(0, 2 * PI), ep = tap_urand(0.05, 0.8);
+    const double r[2] = {c * ep * cos(g), c * ep * sin(g)};
+    const double v[2] = {tap_urand(-0.05, 0.05), tap_urand(-0.05, 0.05)};
+    double f[2], fr, ft, F[2];
+    whirl_fe_nl_force(&e, r, v, NULL, 0.0, f, NULL, NULL, NULL);
+    polar(r, f, &fr, &ft);
+    const double ry = cos(g), rz = sin(g);
+    long_fd(&e, ep, ry * v[0] + rz * v[1], -rz * v[0] + ry * v[1], F);
+    worst = fmax(worst, hypot(fr - F[0], ft - F[1]) / hypot(F[0], F[1]));
+  }
+  ok(worst < 1e-6, "sfd-long: = finite-difference solution of the long-bearing "
+     "Reynolds equation on the pi film at random states (%.2g)", worst);
+  jac_random(e, "sfd-long", 200, 0.9, 0.05, 0.0, 0.0, 1e-6);
+}
+
+/* ------------------------------------------------------------------------
+ * Short SFD, π film, fluid inertia. */
+static void test_inertia(void) {
+  whirl_fe_nl e = film(WHIRL_FE_SFD_INERTIA), e0 = film(WHIRL_FE_SFD_SHORT_PI);
+  const double c = e.par.clearance;
+  const double kI = e.par.density * e.par.radius * pow(e.par.length, 3) / 12.0;
+  /* ρ = 0: the short π film */
+  {
+    whirl_fe_nl z = e;
+    z.par.density = 0.0;
+    double worst = 0.0;
+    for (int k = 0; k < 20; ++k) {
+      const double r[2] = {tap_urand(-0.6, 0.6) * c, tap_urand(-0.6, 0.6) * c};
+      const double v[2] = {tap_urand(-0.05, 0.05), tap_urand(-0.05, 0.05)};
+      const double a[2] = {tap_urand(-50, 50), tap_urand(-50, 50)};
+      double f[2], f0[2];
+      whirl_fe_nl_force(&z, r, v, a, 0, f, NULL, NULL, NULL);
+      whirl_fe_nl_force(&e0, r, v, a, 0, f0, NULL, NULL, NULL);
+      worst = fmax(worst, hypot(f[0] - f0[0], f[1] - f0[1]) / hypot(f0[0], f0[1]));
+    }
+    ok(worst == 0.0, "sfd-inertia: density 0 is the short pi film (%.2g)", worst);
+  }
+  /* at the centre: the added mass of half the film, πρRL³/(24c) */
+  {
+    const double r[2] = {0, 0}, v[2] = {0.02, -0.01}, a[2] = {30, -70};
+    double f[2], f0[2], Ja[4];
+    whirl_fe_nl_force(&e, r, v, a, 0, f, NULL, NULL, Ja);
+    whirl_fe_nl_force(&e0, r, v, a, 0, f0, NULL, NULL, NULL);
+    const double M = PI * e.par.density * e.par.radius * pow(e.par.length, 3) / (24 * c);
+    ok(fabs(f[0] - f0[0] + M * a[0]) < 1e-12 * M * 70 &&
+           fabs(f[1] - f0[1] + M * a[1]) < 1e-12 * M * 70 &&
+           fabs(Ja[0] + M) < 1e-12 * M && fabs(Ja[3] + M) < 1e-12 * M &&
+           fabs(Ja[1]) < 1e-12 * M,
+       "sfd-inertia: at the centre f - f_visc = -pi rho R L^3/(24c) a, Ja = -M I");
+  }
+  /* circular centred orbit r = e r̂(ωt): a = −ω² r, v = eω t̂; the inertia
+   * forces by hand (doc/rotor-forces.md §4), β = (1 − √s)/ε:
+   *   F_r = −kI ω² ε (π/√s) [2β² − 1/(1+√s)],
+   *   F_t = −6 kI ω² (atanh ε − ε)/ε,  kI = ρRL³/12 */
+  int good = 1;
+  const double eps[] = {0.1, 0.4, 0.7, 0.9, 0.97};
+  for (size_t i = 0; i < 5; ++i) {
+    const double w = 400.0, ep = eps[i], s = 1 - ep * ep, rs = sqrt(s);
+    const double be = (1 - rs) / ep;
+    double r[2], v[2], f[2], f0[2], fr, ft;
+    orbit(ep * c, w, 0.5 + i, r, v);
+    const double a[2] = {-w * w * r[0], -w * w * r[1]};
+    whirl_fe_nl_force(&e, r, v, a, 0, f, NULL, NULL, NULL);
+    whirl_fe_nl_force(&e0, r, v, a, 0, f0, NULL, NULL, NULL);
+    const double d[2] = {f[0] - f0[0], f[1] - f0[1]};
+    polar(r, d, &fr, &ft);
+    const double wr = -kI * w * w * ep * PI / rs * (2 * be * be - 1 / (1 + rs));
+    const double wt = -6 * kI * w * w * (atanh(ep) - ep) / ep;
+    printf("# eps %g: inertia F_r %.15g (%.15g), F_t %.15g (%.15g)\n", ep, fr,
+           wr, ft, wt);
+    if (fabs(fr - wr) > 1e-11 * fabs(wr) || fabs(ft - wt) > 1e-11 * fabs(wt)) good = 0;
+  }
+  ok(good, "sfd-inertia: circular centred orbit inertia forces = closed forms (1e-11)");
+  /* random states against a brute-force quadrature of the inertia term */
+  double worst = 0.0;
+  for (int k = 0; k < 6; ++k) {
+    const double g = tap_urand(0, 2 * PI), ep = tap_urand(0.05, 0.9);
+    const double r[2] = {c * ep * cos(g), c * ep * sin(g)};
+    const double v[2] = {tap_urand(-0.05, 0.05), tap_urand(-0.05, 0.05)};
+    const double a[2] = {tap_urand(-50, 50), tap_urand(-50, 50)};
+    double f[2], f0[2], sy = 0, sz = 0;
+    whirl_fe_nl_force(&e, r, v, a, 0, f, NULL, NULL, NULL);
+    whirl_fe_nl_force(&e0, r, v, a, 0, f0, NULL, NULL, NULL);
+    const int N = 200000;
+    for (int j = 0; j <= N; ++j) { /* Simpson over φ ∈ (γ, γ + π) */
+      const double ph = g + PI * j / N, ny = cos(ph), nz = sin(ph);
+      const double h = c - r[0] * ny - r[1] * nz, G = v[0] * ny + v[1] * nz;
+      const double wq = (j == 0 || j == N) ? 1.0 / 3 : (j % 2 ? 4.0 / 3 : 2.0 / 3);
+      const double P = (a[0] * ny + a[1] * nz) / h + 2 * G * G / (h * h);
+      sy += wq * P * ny;
+      sz += wq * P * nz;
+    }
+    const double qy = -kI * sy * PI / N, qz = -kI * sz * PI / N;
+    worst = fmax(worst, hypot(f[0] - f0[0] - qy, f[1] - f0[1] - qz) / hypot(qy, qz));
+  }
+  ok(worst < 1e-10, "sfd-inertia: inertia part = Simpson quadrature at random "
+     "states (%.2g)", worst);
+  jac_random(e, "sfd-inertia", 200, 0.9, 0.05, 200.0, 0.0, 1e-6);
+}
+
+/* ------------------------------------------------------------------------
+ * At the centre the films are linear dampers: f = −C0 v with
+ * C0 = (π/2) μRL³/c³ (π film, short and journal), π μRL³/c³ (2π film),
+ * (π/2 − 2/π) 12μR³L/c³ (the long π film's direction average). */
+static void test_centre(void) {
+  const struct {
+    whirl_fe_nl_kind kind;
+    double c0;
+  } k[] = {{WHIRL_FE_SFD_SHORT_PI, PI / 2}, {WHIRL_FE_SFD_SHORT_2PI, PI},
+           {WHIRL_FE_JOURNAL_SHORT, PI / 2}, {WHIRL_FE_SFD_LONG, -1}};
+  int good = 1;
+  for (int i = 0; i < 4; ++i) {
+    whirl_fe_nl e = film(k[i].kind);
+    const whirl_fe_nl_params *p = &e.par;
+    double C0 = k[i].c0 * p->viscosity * p->radius * pow(p->length, 3) / pow(p->clearance, 3);
+    if (k[i].c0 < 0)
+      C0 = (PI / 2 - 2 / PI) * 12 * p->viscosity * pow(p->radius, 3) * p->length /
+           pow(p->clearance, 3);
+    const double r[2] = {0, 0}, v[2] = {0.03, -0.02};
+    double f[2], Jv[4];
+    whirl_fe_nl_force(&e, r, v, NULL, 250.0, f, NULL, Jv, NULL);
+    if (fabs(f[0] + C0 * v[0]) > 1e-13 * C0 * 0.03 ||
+        fabs(f[1] + C0 * v[1]) > 1e-13 * C0 * 0.03 || fabs(Jv[0] + C0) > 1e-13 * C0 ||
+        fabs(Jv[3] + C0) > 1e-13 * C0 || fabs(Jv[1]) > 1e-13 * C0)
+      good = 0;
+  }
+  ok(good, "films at the centre: f = -C0 v, Jv = -C0 I (pi film, 2pi film, "
+     "journal, long-film average)");
+}
+
 int main(void) {
   test_cubic();
   test_short_pi();
   test_short_2pi();
+  test_long();
+  test_inertia();
   test_journal();
+  test_centre();
   test_rub();
   test_errors();
   return done_testing();
