@@ -131,14 +131,33 @@ static whirl_fe_rotor *model5(int pedestal, double k3) {
   return fe_chain_build(&co);
 }
 
+static const char *kname(whirl_fe_nl_kind k) {
+  switch (k) {
+  case WHIRL_FE_SFD_SHORT_PI: return "short pi SFD";
+  case WHIRL_FE_SFD_SHORT_2PI: return "short 2pi SFD";
+  case WHIRL_FE_SFD_LONG: return "long SFD";
+  case WHIRL_FE_SFD_INERTIA: return "SFD with fluid inertia";
+  default: return "?";
+  }
+}
+
+/* the same with the SFD of another kind (fluid inertia: ρ = 860 kg/m³) */
+static whirl_fe_rotor *model5_kind(int pedestal, whirl_fe_nl_kind kind) {
+  whirl_fe_rotor *r = model5(pedestal, 1e13);
+  r->nl[1].kind = kind;
+  r->nl[1].par.density = 860.0;
+  return r;
+}
+
 static double maxabs(const double *x, size_t n) {
   double m = 0;
   for (size_t i = 0; i < n; ++i) m = fmax(m, fabs(x[i]));
   return m;
 }
 
-static void test_jacobians(int pedestal, int uncondensed) {
-  whirl_fe_rotor *r = model5(pedestal, 1e13);
+static void test_jacobians(int pedestal, int uncondensed,
+                           whirl_fe_nl_kind kind) {
+  whirl_fe_rotor *r = model5_kind(pedestal, kind);
   whirl_fe_hbm *h = make(r, 3, uncondensed, 0, 0, 0);
   const whirl_system *s = whirl_fe_hbm_system(h);
   double *X = calloc(s->n, sizeof *X), p[4], err = 1;
@@ -146,9 +165,9 @@ static void test_jacobians(int pedestal, int uncondensed) {
   p[1] = 1.3; p[2] = 1.1; p[3] = 0.9;
   for (size_t i = 0; i < s->n; ++i) X[i] = tap_urand(-0.08, 0.08);
   int rc = whirl_system_check_jacobian(s, X, p, &err);
-  ok(rc == 0 && err < 2e-6, "%s%s: Jacobian and dF/dp against differences "
-     "(%.2e)", uncondensed ? "uncondensed" : "condensed",
-     pedestal ? ", pedestal" : "", err);
+  ok(rc == 0 && err < 2e-6, "%s%s, %s: Jacobian and dF/dp against "
+     "differences (%.2e)", uncondensed ? "uncondensed" : "condensed",
+     pedestal ? ", pedestal" : "", kname(kind), err);
   free(X);
   whirl_fe_hbm_free(h);
   fe_chain_free(r);
@@ -232,8 +251,9 @@ static void test_linear(void) {
 
 /* ------------------------------- condensed = uncondensed (acceptance) */
 
-static void test_condensed_vs_full(int pedestal, double Om, double unb) {
-  whirl_fe_rotor *r = model5(pedestal, 1e13);
+static void test_condensed_vs_full(int pedestal, double Om, double unb,
+                                   whirl_fe_nl_kind kind) {
+  whirl_fe_rotor *r = model5_kind(pedestal, kind);
   int H = 5, n = r->ndof, L = 2 * H + 1;
   whirl_fe_hbm *hc = make(r, H, 0, 0, 0, 0), *hf = make(r, H, 1, 0, 0, 0);
   const whirl_system *sc = whirl_fe_hbm_system(hc), *sf = whirl_fe_hbm_system(hf);
@@ -248,9 +268,9 @@ static void test_condensed_vs_full(int pedestal, double Om, double unb) {
   rc |= whirl_fe_hbm_recover(hf, Xf, p, qf);
   double d = 0, s = maxabs(qf, (size_t)n * L);
   for (int i = 0; i < n * L; ++i) d = fmax(d, fabs(qc[i] - qf[i]));
-  ok(rc == 0, "condensed (%zu unknowns, %d its) and uncondensed (%zu, %d its) "
-     "converged at %g rad/s%s", sc->n, ic, sf->n, jf, Om,
-     pedestal ? ", pedestal" : "");
+  ok(rc == 0, "%s: condensed (%zu unknowns, %d its) and uncondensed (%zu, "
+     "%d its) converged at %g rad/s%s", kname(kind), sc->n,
+     ic, sf->n, jf, Om, pedestal ? ", pedestal" : "");
   ok(d <= 1e-10 * s, "condensed = uncondensed on all %d DOF x %d coefficients: "
      "%.2e of %.2e", n, L, d, s);
   double a1 = whirl_fe_hbm_amplitude(hc, qc, 4), c = r->nl[1].par.clearance;
@@ -654,12 +674,18 @@ static void test_errors(void) {
 int main(void) {
   test_aft_cubic();
   test_aft_sfd_circular();
-  test_jacobians(0, 0);
-  test_jacobians(1, 0);
-  test_jacobians(1, 1);
+  test_jacobians(0, 0, WHIRL_FE_SFD_SHORT_PI);
+  test_jacobians(1, 0, WHIRL_FE_SFD_SHORT_PI);
+  test_jacobians(1, 1, WHIRL_FE_SFD_SHORT_PI);
+  test_jacobians(1, 0, WHIRL_FE_SFD_INERTIA);
+  test_jacobians(0, 1, WHIRL_FE_SFD_INERTIA);
+  test_jacobians(0, 0, WHIRL_FE_SFD_LONG);
+  test_jacobians(0, 0, WHIRL_FE_SFD_SHORT_2PI);
   test_linear();
-  test_condensed_vs_full(0, 150.0, 12.0);
-  test_condensed_vs_full(1, 320.0, 4.0);
+  test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_PI);
+  test_condensed_vs_full(1, 320.0, 4.0, WHIRL_FE_SFD_SHORT_PI);
+  test_condensed_vs_full(1, 320.0, 4.0, WHIRL_FE_SFD_INERTIA);
+  test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_2PI);
   test_subharmonic_index();
   test_errors();
   test_response();
