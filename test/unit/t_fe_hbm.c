@@ -484,7 +484,7 @@ typedef struct collect {
   size_t nx;
 } collect;
 
-static int on_point(const whirl_fe_response_point *pt, void *ctx) {
+static int on_point(const whirl_fe_hbm_response_point *pt, void *ctx) {
   collect *c = ctx;
   ++c->n;
   if (c->n > 1 && pt->stable >= 0 && c->last_stable >= 0 &&
@@ -592,8 +592,8 @@ static void test_fold_locus(const whirl_fe_rotor *r, const double *X,
 
 static void test_response(void) {
   whirl_fe_rotor *r = duffing3();
-  whirl_fe_response_options o;
-  whirl_fe_response_options_default(&o);
+  whirl_fe_hbm_response_options o;
+  whirl_fe_hbm_response_options_default(&o);
   o.hbm.harmonics = 5;
   o.speed_min = 150;
   o.speed_max = 400;
@@ -602,7 +602,7 @@ static void test_response(void) {
   memset(&c, 0, sizeof c);
   c.last_stable = -1;
   char err[256] = "";
-  int rc = whirl_fe_response(r, &o, on_point, &c, err, sizeof err);
+  int rc = whirl_fe_hbm_response(r, &o, on_point, &c, err, sizeof err);
   ok(rc == 0, "response: continuation 150..400 rad/s (%d points) %s", c.n, err);
   ok(c.nlp == 2, "response: two folds (LP) of the hardening resonance: %d at "
      "%.1f, %.1f rad/s", c.nlp, c.lp[0], c.lp[1]);
