@@ -86,5 +86,16 @@ sed 1d cb/critical.tsv | while IFS="$(printf '\t')" read -r mode rpm rads hz whi
 done
 ok $? "each critical speed: mode's frequency = speed (1e-8), same whirl"
 
+# the complete examples of doc/rotor-file.md read and solve
+awk '/^```/ { if (on) { on = 0 } else { on = 1; k++ }; next }
+     on { print > ("doc" k ".rotor") }' "$top_srcdir/doc/rotor-file.md"
+for f in doc1.rotor doc2.rotor; do
+  "$WHIRL" rotor modes "$f" --speed 3000 > d.tsv 2> err.txt && [ "$(wc -l < d.tsv)" -eq 7 ]
+  ok $? "doc/rotor-file.md example $f: six modes at 3000 rpm"
+done
+grep -v '^#' "$top_srcdir/examples/rotor/friswell-5.9.1.rotor" | grep . > ex1.txt
+cmp -s doc1.rotor ex1.txt
+ok $? "doc/rotor-file.md's first example is examples/rotor/friswell-5.9.1.rotor (without comments)"
+
 echo "1..$n"
 [ $fails -eq 0 ]

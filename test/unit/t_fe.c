@@ -19,6 +19,7 @@
  *      48-element damped, cross-coupled rotor;
  *  (e) the nonlinear kinds' names round trip; a file's errors name the line.
  * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* mkstemp, fdopen */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
