@@ -103,5 +103,8 @@ int cmd_sfd_basins(int argc, char **argv);
 int cmd_sfd_onset(int argc, char **argv);
 int cmd_sfd_merge(int argc, char **argv);
 int cmd_sfd_region(int argc, char **argv);
+/* whirl rotor modes|campbell (cmd_rotor.c); the help items of its commands */
+int cmd_rotor(int argc, char **argv);
+void cli_rotor_help(FILE *f, const char *prefix, size_t col);
 
 #endif

@@ -53,6 +53,7 @@ static void usage(FILE *f) {
                 "equilibria, periodic orbits, loci, branch switching, basins "
                 "(doc/run-files.md)", 17);
   list_sfd(f, "sfd ", 17);
+  cli_rotor_help(f, "rotor ", 17);
   fprintf(f,
           "\n"
           "  whirl <command> --help   options of a command\n"
@@ -83,6 +84,7 @@ int main(int argc, char **argv) {
     return 0;
   }
   if (!strcmp(argv[1], "run")) return cmd_run(argc - 1, argv + 1);
+  if (!strcmp(argv[1], "rotor")) return cmd_rotor(argc - 1, argv + 1);
   if (!strcmp(argv[1], "sfd")) {
     if (argc < 3) {
       sfd_usage(stderr);

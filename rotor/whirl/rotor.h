@@ -6,7 +6,9 @@
  * periodic responses and the nonsynchronous branch; sfd_region.h: the isola
  * merge curve and region of Fig. 18) and the Jeffcott rotor on the same
  * dampers (whirl_rotor_jeffcott), registered for `whirl run` by
- * whirl_rotor_register_models.
+ * whirl_rotor_register_models; finite-element rotors read from a rotor file
+ * (fe.h) and their linear analyses (fe_linear.h: modes, Campbell diagram,
+ * critical speeds, unbalance response).
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_ROTOR_H
 #define WHIRL_ROTOR_H
@@ -16,6 +18,8 @@
 #include <whirl/rotor/sfd_dynamics.h>
 #include <whirl/rotor/sfd_periodic.h>
 #include <whirl/rotor/sfd_region.h>
+#include <whirl/rotor/fe.h>
+#include <whirl/rotor/fe_linear.h>
 
 #ifdef __cplusplus
 extern "C" {
