@@ -1,7 +1,7 @@
 /* drivers/cmd_rotor_response.c — `whirl rotor response FILE`: the periodic
  * unbalance response of a finite-element rotor with its nonlinear
  * elements, by harmonic balance condensed onto their DOFs and followed in
- * speed (whirl_fe_response, doc/fe-hbm.md): from rest across the speed
+ * speed (whirl_fe_hbm_response, doc/fe-hbm.md): from rest across the speed
  * range, and from each --seed (an isola the response from rest does not
  * reach) in both directions.  stdout: the special points (LP, BP, PD, TR)
  * as TSV; the output directory: branches.tsv, special.tsv and
@@ -30,7 +30,7 @@ typedef struct resp_table {
   double lo, hi;
 } resp_table;
 
-static int collect(const whirl_fe_response_point *p, void *ctx) {
+static int collect(const whirl_fe_hbm_response_point *p, void *ctx) {
   resp_table *t = ctx;
   if (t->n == t->cap) {
     size_t cap = t->cap ? 2 * t->cap : 256;
@@ -193,8 +193,8 @@ static int parse_args(int argc, char **argv, resp_args *a) {
 }
 
 static int check_args(const char *CMD, resp_args *a, const whirl_fe_rotor *r, double f,
-                      whirl_fe_response_options *o) {
-  whirl_fe_response_options_default(o);
+                      whirl_fe_hbm_response_options *o) {
+  whirl_fe_hbm_response_options_default(o);
   if (a->harmonics) o->hbm.harmonics = a->harmonics;
   if (a->nmx) o->nmx = a->nmx;
   o->speed_min = isnan(a->from) ? r->speed_min : a->from * f;
@@ -225,20 +225,20 @@ static int check_args(const char *CMD, resp_args *a, const whirl_fe_rotor *r, do
 
 /* The branch from rest, then each seeded branch in both directions. */
 static int compute(const char *CMD, const resp_args *a, double f, const whirl_fe_rotor *r,
-                   whirl_fe_response_options *o, resp_table *t) {
+                   whirl_fe_hbm_response_options *o, resp_table *t) {
   char msg[600] = "";
   t->lo = o->speed_min, t->hi = o->speed_max, t->branch = 1;
   cli_progress_init(&t->prog, "rotor response", a->quiet);
-  int rc = whirl_fe_response(r, o, collect, t, msg, sizeof msg);
+  int rc = whirl_fe_hbm_response(r, o, collect, t, msg, sizeof msg);
   for (size_t s = 0; !rc && s < a->nseed; s++) {
     if (parse_seed(CMD, a->seed[s], f, &o->seed_omega, &o->seed_eps)) return 2;
     t->branch = 2 + (int)s;
     const size_t from = t->n;
     o->direction = -1;
-    rc = whirl_fe_response(r, o, collect, t, msg, sizeof msg);
+    rc = whirl_fe_hbm_response(r, o, collect, t, msg, sizeof msg);
     reverse_half(t, from);
     o->direction = +1;
-    if (!rc) rc = whirl_fe_response(r, o, collect, t, msg, sizeof msg);
+    if (!rc) rc = whirl_fe_hbm_response(r, o, collect, t, msg, sizeof msg);
   }
   cli_progress_end(&t->prog);
   if (rc) {
@@ -263,7 +263,7 @@ int cmd_rotor_response(int argc, char **argv) {
   }
   whirl_fe_rotor *r = rotor_load(a.file);
   if (!r) return 2;
-  whirl_fe_response_options o;
+  whirl_fe_hbm_response_options o;
   resp_table t = {0};
   rc = check_args(CMD, &a, r, f, &o);
   if (!rc) rc = cli_outdir_check(CMD, NULL, a.dir);

@@ -214,7 +214,7 @@ static int check_options(const whirl_fe_rotor *r, const whirl_fe_hbm_options *o,
     for (*N = 32; *N < 6 * H + 1; *N *= 2) {}
   if (*N <= 2 * H)
     return WHIRL_ERRMSG(err, errlen, WHIRL_EINVAL,
-                        "nsamples %d: need more than 2 harmonics = %d", *N,
+                        "nsamples %d: need more than 2 H = %d", *N,
                         2 * H);
   return WHIRL_OK;
 }

@@ -173,6 +173,7 @@ int fe_hbm_spectrum(const double *X, const double *p, const double *J,
                     double *re, double *im, size_t *m, void *data) {
   (void)J;
   whirl_fe_hbm *h = data;
+  if (!(p[WHIRL_FE_P_OMEGA] > 0)) return WHIRL_ESINGULAR; /* T infinite: unknown */
   int rc = whirl_fe_hbm_hill(h, X, p, re, im, m);
   if (rc) return rc;
   double T = 2.0 * WHIRL_PI * h->o.nu / p[WHIRL_FE_P_OMEGA];

@@ -19,6 +19,7 @@
 
 #include <whirl/cont.h>
 #include <whirl/floquet.h>
+#include <whirl/fold.h>
 #include <whirl/rotor/fe_hbm.h>
 
 #include "../fe_chain.h"
@@ -130,14 +131,33 @@ static whirl_fe_rotor *model5(int pedestal, double k3) {
   return fe_chain_build(&co);
 }
 
+static const char *kname(whirl_fe_nl_kind k) {
+  switch (k) {
+  case WHIRL_FE_SFD_SHORT_PI: return "short pi SFD";
+  case WHIRL_FE_SFD_SHORT_2PI: return "short 2pi SFD";
+  case WHIRL_FE_SFD_LONG: return "long SFD";
+  case WHIRL_FE_SFD_INERTIA: return "SFD with fluid inertia";
+  default: return "?";
+  }
+}
+
+/* the same with the SFD of another kind (fluid inertia: ρ = 860 kg/m³) */
+static whirl_fe_rotor *model5_kind(int pedestal, whirl_fe_nl_kind kind) {
+  whirl_fe_rotor *r = model5(pedestal, 1e13);
+  r->nl[1].kind = kind;
+  r->nl[1].par.density = 860.0;
+  return r;
+}
+
 static double maxabs(const double *x, size_t n) {
   double m = 0;
   for (size_t i = 0; i < n; ++i) m = fmax(m, fabs(x[i]));
   return m;
 }
 
-static void test_jacobians(int pedestal, int uncondensed) {
-  whirl_fe_rotor *r = model5(pedestal, 1e13);
+static void test_jacobians(int pedestal, int uncondensed,
+                           whirl_fe_nl_kind kind) {
+  whirl_fe_rotor *r = model5_kind(pedestal, kind);
   whirl_fe_hbm *h = make(r, 3, uncondensed, 0, 0, 0);
   const whirl_system *s = whirl_fe_hbm_system(h);
   double *X = calloc(s->n, sizeof *X), p[4], err = 1;
@@ -145,9 +165,9 @@ static void test_jacobians(int pedestal, int uncondensed) {
   p[1] = 1.3; p[2] = 1.1; p[3] = 0.9;
   for (size_t i = 0; i < s->n; ++i) X[i] = tap_urand(-0.08, 0.08);
   int rc = whirl_system_check_jacobian(s, X, p, &err);
-  ok(rc == 0 && err < 2e-6, "%s%s: Jacobian and dF/dp against differences "
-     "(%.2e)", uncondensed ? "uncondensed" : "condensed",
-     pedestal ? ", pedestal" : "", err);
+  ok(rc == 0 && err < 2e-6, "%s%s, %s: Jacobian and dF/dp against "
+     "differences (%.2e)", uncondensed ? "uncondensed" : "condensed",
+     pedestal ? ", pedestal" : "", kname(kind), err);
   free(X);
   whirl_fe_hbm_free(h);
   fe_chain_free(r);
@@ -231,8 +251,9 @@ static void test_linear(void) {
 
 /* ------------------------------- condensed = uncondensed (acceptance) */
 
-static void test_condensed_vs_full(int pedestal, double Om, double unb) {
-  whirl_fe_rotor *r = model5(pedestal, 1e13);
+static void test_condensed_vs_full(int pedestal, double Om, double unb,
+                                   whirl_fe_nl_kind kind) {
+  whirl_fe_rotor *r = model5_kind(pedestal, kind);
   int H = 5, n = r->ndof, L = 2 * H + 1;
   whirl_fe_hbm *hc = make(r, H, 0, 0, 0, 0), *hf = make(r, H, 1, 0, 0, 0);
   const whirl_system *sc = whirl_fe_hbm_system(hc), *sf = whirl_fe_hbm_system(hf);
@@ -247,9 +268,9 @@ static void test_condensed_vs_full(int pedestal, double Om, double unb) {
   rc |= whirl_fe_hbm_recover(hf, Xf, p, qf);
   double d = 0, s = maxabs(qf, (size_t)n * L);
   for (int i = 0; i < n * L; ++i) d = fmax(d, fabs(qc[i] - qf[i]));
-  ok(rc == 0, "condensed (%zu unknowns, %d its) and uncondensed (%zu, %d its) "
-     "converged at %g rad/s%s", sc->n, ic, sf->n, jf, Om,
-     pedestal ? ", pedestal" : "");
+  ok(rc == 0, "%s: condensed (%zu unknowns, %d its) and uncondensed (%zu, "
+     "%d its) converged at %g rad/s%s", kname(kind), sc->n,
+     ic, sf->n, jf, Om, pedestal ? ", pedestal" : "");
   ok(d <= 1e-10 * s, "condensed = uncondensed on all %d DOF x %d coefficients: "
      "%.2e of %.2e", n, L, d, s);
   double a1 = whirl_fe_hbm_amplitude(hc, qc, 4), c = r->nl[1].par.clearance;
@@ -258,6 +279,43 @@ static void test_condensed_vs_full(int pedestal, double Om, double unb) {
   free(qc); free(qf); free(Xc); free(Xf);
   whirl_fe_hbm_free(hc);
   whirl_fe_hbm_free(hf);
+  fe_chain_free(r);
+}
+
+/* ν = 2 (response frequency Ω/2, H = 10) holds the synchronous orbit in
+ * its even harmonics: harmonic 2k must equal harmonic k of ν = 1, H = 5
+ * (the same 32 samples per shaft period), the odd ones 0. */
+static void test_subharmonic_index(void) {
+  whirl_fe_rotor *r = model5(0, 1e13);
+  whirl_fe_hbm_options o;
+  whirl_fe_hbm_options_default(&o);
+  o.harmonics = 5;
+  whirl_fe_hbm *h1 = whirl_fe_hbm_alloc(r, &o, NULL, 0);
+  o.harmonics = 10;
+  o.nu = 2;
+  whirl_fe_hbm *h2 = whirl_fe_hbm_alloc(r, &o, NULL, 0);
+  const whirl_system *s1 = whirl_fe_hbm_system(h1), *s2 = whirl_fe_hbm_system(h2);
+  double *X1 = calloc(s1->n, sizeof *X1), *X2 = calloc(s2->n, sizeof *X2), p[4];
+  whirl_fe_hbm_params(150.0, p);
+  p[WHIRL_FE_P_UNBALANCE] = 12.0;
+  int i1 = 0, i2 = 0, m = 0;
+  int rc = whirl_newton(s1, X1, p, 1e-13, 40, &i1) | whirl_newton(s2, X2, p, 1e-13, 40, &i2);
+  whirl_fe_hbm_nl_dofs(h1, &m);
+  double d = 0, odd = 0, sc = maxabs(X1, s1->n);
+  for (int j = 0; j < m; ++j) {
+    d = fmax(d, fabs(X1[j] - X2[j]));
+    for (int k = 1; k <= 5; ++k)
+      for (int c = 0; c < 2; ++c)
+        d = fmax(d, fabs(X1[m * (2 * k - 1 + c) + j] - X2[m * (4 * k - 1 + c) + j]));
+    for (int k = 1; k <= 10; k += 2)
+      odd = fmax(odd, fmax(fabs(X2[m * (2 * k - 1) + j]), fabs(X2[m * 2 * k + j])));
+  }
+  ok(rc == 0, "nu = 2: both converged (%d, %d iterations)", i1, i2);
+  ok(d < 1e-11 * sc && odd < 1e-11 * sc, "nu = 2: even harmonics = nu = 1 "
+     "(%.1e), odd harmonics 0 (%.1e), of %.2e", d, odd, sc);
+  free(X1); free(X2);
+  whirl_fe_hbm_free(h1);
+  whirl_fe_hbm_free(h2);
   fe_chain_free(r);
 }
 
@@ -426,7 +484,7 @@ typedef struct collect {
   size_t nx;
 } collect;
 
-static int on_point(const whirl_fe_response_point *pt, void *ctx) {
+static int on_point(const whirl_fe_hbm_response_point *pt, void *ctx) {
   collect *c = ctx;
   ++c->n;
   if (c->n > 1 && pt->stable >= 0 && c->last_stable >= 0 &&
@@ -476,10 +534,66 @@ static void hill_vs_monodromy(whirl_fe_hbm *h, const whirl_fe_rotor *r,
   free(q);
 }
 
+/* The fold locus in speed × unbalance through the fold system: from the
+ * first LP (Ω1 at unbalance 1) down in unbalance, round the cusp where the
+ * two folds meet, and back up to unbalance 1, where it must arrive at the
+ * second LP Ω2 of the speed continuation. */
+static void test_fold_locus(const whirl_fe_rotor *r, const double *X,
+                            double Om1, double Om2) {
+  whirl_fe_hbm *h = make(r, 5, 0, 0, 0, 0);
+  const whirl_system *s = whirl_fe_hbm_system(h);
+  whirl_fold_options fo;
+  whirl_fold_options_default(&fo, WHIRL_FE_P_OMEGA);
+  char err[256] = "";
+  whirl_fold *f = whirl_fold_alloc(s, &fo, err, sizeof err);
+  double p[4], *Z = calloc(s->n + 1, sizeof *Z);
+  whirl_fe_hbm_params(Om1, p);
+  int rc = f ? whirl_fold_init(f, X, p, Z) : -1;
+  ok(rc == 0, "fold locus: started at the first LP %s", err);
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = WHIRL_FE_P_UNBALANCE;
+  co.ds = 0.01;
+  co.ds_max = 1.0;
+  co.nmx = 400;
+  co.p_min = 0.001;
+  co.p_max = 1.5;
+  co.newton_tol = 1e-9;
+  double uz = 1.0;
+  int uz_stop = 1;
+  co.uz = &uz;
+  co.nuz = 1;
+  co.uz_stop = &uz_stop;
+  whirl_cont *c = rc ? NULL : whirl_cont_alloc(whirl_fold_system(f), &co, err, sizeof err);
+  rc = c ? whirl_cont_start(c, Z, p, -1) : -1;
+  double umin = 2, Om_end = 0, u_end = 0;
+  int steps = 0;
+  while (!rc && (rc = whirl_cont_step(c)) == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(c);
+    umin = fmin(umin, pt->p[WHIRL_FE_P_UNBALANCE]);
+    Om_end = pt->x[s->n];
+    u_end = pt->p[WHIRL_FE_P_UNBALANCE];
+    ++steps;
+    if (getenv("FOLD_TRACE")) printf("# %g %g %d\n", Om_end, u_end, pt->type);
+  }
+  ok(rc == WHIRL_DONE && c && whirl_cont_stop_reason(c) == WHIRL_STOP_UZ,
+     "fold locus: round the cusp (unbalance down to %.3f) and back to 1 in "
+     "%d steps", umin, steps);
+  ok(umin < 0.9 && umin > 0.002, "fold locus: the folds meet at unbalance %.3f",
+     umin);
+  is_rel(u_end, 1.0, 1e-9, "fold locus: ends at unbalance 1");
+  is_rel(Om_end, Om2, 1e-6, "fold locus: at the second LP of the speed "
+         "continuation, %.6f vs %.6f rad/s", Om_end, Om2);
+  whirl_cont_free(c);
+  whirl_fold_free(f);
+  free(Z);
+  whirl_fe_hbm_free(h);
+}
+
 static void test_response(void) {
   whirl_fe_rotor *r = duffing3();
-  whirl_fe_response_options o;
-  whirl_fe_response_options_default(&o);
+  whirl_fe_hbm_response_options o;
+  whirl_fe_hbm_response_options_default(&o);
   o.hbm.harmonics = 5;
   o.speed_min = 150;
   o.speed_max = 400;
@@ -488,7 +602,7 @@ static void test_response(void) {
   memset(&c, 0, sizeof c);
   c.last_stable = -1;
   char err[256] = "";
-  int rc = whirl_fe_response(r, &o, on_point, &c, err, sizeof err);
+  int rc = whirl_fe_hbm_response(r, &o, on_point, &c, err, sizeof err);
   ok(rc == 0, "response: continuation 150..400 rad/s (%d points) %s", c.n, err);
   ok(c.nlp == 2, "response: two folds (LP) of the hardening resonance: %d at "
      "%.1f, %.1f rad/s", c.nlp, c.lp[0], c.lp[1]);
@@ -499,6 +613,7 @@ static void test_response(void) {
      c.ntr);
   ok(c.changes == 4, "response: stability changes at the two LP and the two "
      "TR (%d)", c.changes);
+  if (c.nlp == 2) test_fold_locus(r, c.Xlp[0], c.lp[0], c.lp[1]);
   whirl_fe_hbm *h = make(r, 5, 0, 0, 0, 1);
   for (int k = 0; k < c.nlp; ++k) { /* a fold: a Floquet multiplier +1 */
     double p[4], re[64], im[64], best = INFINITY;
@@ -521,15 +636,58 @@ static void test_response(void) {
   fe_chain_free(r);
 }
 
+/* Bad options are refused with a message; contact is recoverable. */
+static void test_errors(void) {
+  whirl_fe_rotor *r = model5(0, 1e13);
+  whirl_fe_hbm_options o;
+  whirl_fe_hbm_options_default(&o);
+  char err[256] = "";
+  o.nu = 6;
+  ok(!whirl_fe_hbm_alloc(r, &o, err, sizeof err) && strstr(err, "nu"),
+     "nu > harmonics refused: %s", err);
+  whirl_fe_hbm_options_default(&o);
+  o.nsamples = 10;
+  ok(!whirl_fe_hbm_alloc(r, &o, err, sizeof err) && strstr(err, "nsamples"),
+     "nsamples <= 2H refused: %s", err);
+  whirl_fe_hbm_options_default(&o);
+  int nnl = r->nnl;
+  r->nnl = 0;
+  ok(!whirl_fe_hbm_alloc(r, &o, err, sizeof err), "no nonlinear element "
+     "refused: %s", err);
+  r->nnl = nnl;
+  whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o, NULL, 0);
+  const whirl_system *s = whirl_fe_hbm_system(h);
+  double *X = calloc(s->n, sizeof *X), *F = calloc(s->n, sizeof *F), p[4];
+  int m = 0;
+  const int *dof = whirl_fe_hbm_nl_dofs(h, &m);
+  ok(m == 4 && dof[0] == 0 && dof[1] == 1 && dof[2] == 16 && dof[3] == 17,
+     "nonlinear DOFs: y, z of nodes 0 and 4");
+  whirl_fe_hbm_params(100.0, p);
+  X[2 * m + 2] = 1.2; /* the SFD journal's y beyond its clearance (Ls = c) */
+  int rc = s->F(X, p, F, s->data);
+  ok(rc > 0, "journal beyond the clearance: recoverable (%d)", rc);
+  free(X); free(F);
+  whirl_fe_hbm_free(h);
+  fe_chain_free(r);
+}
+
 int main(void) {
   test_aft_cubic();
   test_aft_sfd_circular();
-  test_jacobians(0, 0);
-  test_jacobians(1, 0);
-  test_jacobians(1, 1);
+  test_jacobians(0, 0, WHIRL_FE_SFD_SHORT_PI);
+  test_jacobians(1, 0, WHIRL_FE_SFD_SHORT_PI);
+  test_jacobians(1, 1, WHIRL_FE_SFD_SHORT_PI);
+  test_jacobians(1, 0, WHIRL_FE_SFD_INERTIA);
+  test_jacobians(0, 1, WHIRL_FE_SFD_INERTIA);
+  test_jacobians(0, 0, WHIRL_FE_SFD_LONG);
+  test_jacobians(0, 0, WHIRL_FE_SFD_SHORT_2PI);
   test_linear();
-  test_condensed_vs_full(0, 150.0, 12.0);
-  test_condensed_vs_full(1, 320.0, 4.0);
+  test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_PI);
+  test_condensed_vs_full(1, 320.0, 4.0, WHIRL_FE_SFD_SHORT_PI);
+  test_condensed_vs_full(1, 320.0, 4.0, WHIRL_FE_SFD_INERTIA);
+  test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_2PI);
+  test_subharmonic_index();
+  test_errors();
   test_response();
   return done_testing();
 }

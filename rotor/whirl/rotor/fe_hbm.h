@@ -134,7 +134,7 @@ WHIRL_API int whirl_fe_hbm_hill(whirl_fe_hbm *h, const double *X,
 
 /* ------------------------------------------------- speed response */
 
-typedef struct whirl_fe_response_options {
+typedef struct whirl_fe_hbm_response_options {
   whirl_fe_hbm_options hbm;
   double speed_min, speed_max; /* rad/s (0 0: the rotor's speed range) */
   double unbalance, clearance, viscosity; /* scales (default 1) */
@@ -151,11 +151,12 @@ typedef struct whirl_fe_response_options {
    * when it closes on itself (an isola inside the range). */
   double seed_omega, seed_eps, seed_phase;
   int direction;
-} whirl_fe_response_options;
+} whirl_fe_hbm_response_options;
 
-WHIRL_API void whirl_fe_response_options_default(whirl_fe_response_options *o);
+WHIRL_API void
+whirl_fe_hbm_response_options_default(whirl_fe_hbm_response_options *o);
 
-typedef struct whirl_fe_response_point {
+typedef struct whirl_fe_hbm_response_point {
   size_t index;          /* point number along the branch */
   int type;              /* whirl_point_type (LP, BP, PD, TR, EP, ...) */
   int label;
@@ -164,21 +165,21 @@ typedef struct whirl_fe_response_point {
   int stable;            /* 1, 0, −1 unknown */
   const double *X;       /* the unknowns, n of them */
   size_t n;
-} whirl_fe_response_point;
+} whirl_fe_hbm_response_point;
 
 /* Called at every point; a non-zero return ends the branch (and is
  * returned). */
-typedef int (*whirl_fe_response_fn)(const whirl_fe_response_point *pt,
-                                    void *ctx);
+typedef int (*whirl_fe_hbm_response_fn)(
+    const whirl_fe_hbm_response_point *pt, void *ctx);
 
 /* Continue the periodic response in speed from speed_min to speed_max
  * (start from X = 0 corrected by Newton), calling fn at each point.
  * Returns WHIRL_OK, the callback's value, or an error (message in
  * errbuf). */
-WHIRL_API int whirl_fe_response(const whirl_fe_rotor *r,
-                                const whirl_fe_response_options *o,
-                                whirl_fe_response_fn fn, void *ctx,
-                                char *errbuf, size_t errlen);
+WHIRL_API int whirl_fe_hbm_response(const whirl_fe_rotor *r,
+                                    const whirl_fe_hbm_response_options *o,
+                                    whirl_fe_hbm_response_fn fn, void *ctx,
+                                    char *errbuf, size_t errlen);
 
 #ifdef __cplusplus
 }

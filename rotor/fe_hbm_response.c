@@ -1,4 +1,4 @@
-/* rotor/fe_response.c — the periodic speed response of a finite-element
+/* rotor/fe_hbm_response.c — the periodic speed response of a finite-element
  * rotor: the condensed harmonic-balance system (fe_hbm.c) followed in Ω by
  * the generic continuation core (whirl/cont.h), with its folds LP, branch
  * points BP and, from Hill's multipliers, period doublings PD and tori TR;
@@ -10,7 +10,7 @@
 
 #include "fe_hbm_impl.h"
 
-void whirl_fe_response_options_default(whirl_fe_response_options *o) {
+void whirl_fe_hbm_response_options_default(whirl_fe_hbm_response_options *o) {
   memset(o, 0, sizeof *o);
   whirl_fe_hbm_options_default(&o->hbm);
   o->unbalance = o->clearance = o->viscosity = 1.0;
@@ -20,7 +20,7 @@ void whirl_fe_response_options_default(whirl_fe_response_options *o) {
 }
 
 static int speed_range(const whirl_fe_rotor *r,
-                       const whirl_fe_response_options *o, double *lo,
+                       const whirl_fe_hbm_response_options *o, double *lo,
                        double *hi, char *err, size_t errlen) {
   *lo = o->speed_min;
   *hi = o->speed_max;
@@ -37,7 +37,7 @@ static int speed_range(const whirl_fe_rotor *r,
 }
 
 static void cont_options(whirl_cont_options *co, double lo, double hi,
-                         const whirl_fe_response_options *o) {
+                         const whirl_fe_hbm_response_options *o) {
   whirl_cont_options_default(co);
   co->icp = WHIRL_FE_P_OMEGA;
   co->p_min = lo;
@@ -58,8 +58,8 @@ static void cont_options(whirl_cont_options *co, double lo, double hi,
 
 /* Report one point of the branch. */
 static int report(whirl_fe_hbm *h, const whirl_point *pt, int node,
-                  double *q, whirl_fe_response_fn fn, void *ctx) {
-  whirl_fe_response_point rp;
+                  double *q, whirl_fe_hbm_response_fn fn, void *ctx) {
+  whirl_fe_hbm_response_point rp;
   int rc = whirl_fe_hbm_recover(h, pt->x, pt->p, q);
   if (rc) return rc;
   rp.index = pt->index;
@@ -86,7 +86,7 @@ static double seed_residual(whirl_fe_hbm *h, double eps, double ph,
 
 /* The start x0: rest, or the seed of the options (its phase the best of
  * 16 when not given). */
-static int start_point(whirl_fe_hbm *h, const whirl_fe_response_options *o,
+static int start_point(whirl_fe_hbm *h, const whirl_fe_hbm_response_options *o,
                        const double *p, double *x0, char *err,
                        size_t errlen) {
   const size_t n = whirl_fe_hbm_size(h);
@@ -109,8 +109,8 @@ static int start_point(whirl_fe_hbm *h, const whirl_fe_response_options *o,
 }
 
 static int follow(whirl_fe_hbm *h, const whirl_cont_options *co,
-                  const whirl_fe_response_options *o, double lo,
-                  whirl_fe_response_fn fn, void *ctx, char *err,
+                  const whirl_fe_hbm_response_options *o, double lo,
+                  whirl_fe_hbm_response_fn fn, void *ctx, char *err,
                   size_t errlen) {
   size_t n = whirl_fe_hbm_size(h);
   double *x0 = calloc(n, sizeof *x0);
@@ -139,12 +139,12 @@ static int follow(whirl_fe_hbm *h, const whirl_cont_options *co,
   return rc;
 }
 
-int whirl_fe_response(const whirl_fe_rotor *r,
-                      const whirl_fe_response_options *o,
-                      whirl_fe_response_fn fn, void *ctx, char *errbuf,
+int whirl_fe_hbm_response(const whirl_fe_rotor *r,
+                      const whirl_fe_hbm_response_options *o,
+                      whirl_fe_hbm_response_fn fn, void *ctx, char *errbuf,
                       size_t errlen) {
-  whirl_fe_response_options def;
-  if (!o) { whirl_fe_response_options_default(&def); o = &def; }
+  whirl_fe_hbm_response_options def;
+  if (!o) { whirl_fe_hbm_response_options_default(&def); o = &def; }
   double lo, hi;
   int rc = speed_range(r, o, &lo, &hi, errbuf, errlen);
   if (rc) return rc;
