@@ -68,7 +68,7 @@ static int method_of(const char *cmd, const char *m, whirl_fe_modes_options *o) 
 
 #define OPT_METHOD(m)                                                          \
   {"--method", CLI_STRING, &(m), "M",                                          \
-   "eigensolver: auto (dense QZ up to 400 DOFs, else ARPACK), dense, arpack",  \
+   "eigensolver: auto (dense QZ up to 150 DOFs, else ARPACK), dense, arpack",  \
    NULL}
 
 /* ------------------------------------------------------------- modes */

@@ -106,6 +106,13 @@ extra "duplicate shaft element" 6 "between nodes 1 and 2 is defined twice (first
   'shaft from=1 to=2 length=1 od=0.05 material=steel'
 extra "duplicate bearing" 6 "a bearing at node 4 is already defined (line 5)" 'bearing node=4 kyy=1'
 extra "duplicate key" 6 "key 'mass' given twice" 'disk node=1 mass=1 mass=2'
+extra "disk given both ways" 6 "disk: give either mass= \[ip= it=\] or width= od= \[id=\] material=" \
+  'disk node=1 mass=3 width=0.07 od=0.2 material=steel'
+extra "elements= not to - from" 6 "elements=3 but from=4 to=6 makes 2 elements" \
+  'shaft from=4 to=6 elements=3 length=1 od=0.05 material=steel'
+extra "pedestal without mass" 6 "pedestal: mass must be > 0" 'pedestal P mass=0 kyy=1e6'
+extra "a second element of one kind at a node" 7 "cubic at node 1 is already defined (line 6)" 'cubic node=1 k1=1 k3=1
+cubic node=1 k1=2 k3=2'
 extra "bad gravity direction" 6 "direction must be" 'gravity g=9.81 direction=down'
 extra "speed range reversed" 6 "to=5 must be greater than from=10" 'speed from=10 to=5 unit=rpm'
 extra "bad speed unit" 6 "unit must be rpm, rad/s or hz" 'speed from=0 to=5 unit=rps'

@@ -367,6 +367,7 @@ static void test_structure(void) {
   whirl_fe_rotor_free(r);
 }
 
+#ifdef WHIRL_HAVE_ARPACK
 static void test_arpack(void) {
   char text[1024], msg[512];
   snprintf(text, sizeof text,
@@ -413,6 +414,7 @@ static void test_free(void) {
   }
   whirl_fe_rotor_free(r);
 }
+#endif
 
 /* ---- (e) names, errors ---------------------------------------------------------------- */
 
