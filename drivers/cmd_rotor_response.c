@@ -156,7 +156,7 @@ static const cli_doc response_doc = {
 "exit status: 0, 1 a failed continuation or output, 2 bad options or rotor file.\n"};
 
 typedef struct resp_args {
-  const char *file, *unit, *dir, *seed[8];
+  const char *file, *unit, *dir, *seed[8], *stability;
   double from, to, unb, clr, visc;
   size_t harmonics, nmx, nseed;
   int node, noplot, quiet;
@@ -178,6 +178,10 @@ static int parse_args(int argc, char **argv, resp_args *a) {
        "also the branch through the circular orbits of relative eccentricity E at the "
        "film elements at speed W (in --unit); may be repeated",
        ""},
+      {"--stability", CLI_STRING, &a->stability, "S",
+       "Hill's stability: auto (dense up to 1200 unknowns of the Hill matrix, else "
+       "sparse), dense, sparse, or off",
+       NULL},
       {"--nmx", CLI_SIZE, &a->nmx, "N", "continuation steps per branch", NULL},
       {"-o", CLI_STRING, &a->dir, "DIR", "output directory (also --out)", NULL},
       CLI_OPTS_OUT(a->dir, a->noplot, a->quiet)};
@@ -196,6 +200,14 @@ static int check_args(const char *CMD, resp_args *a, const whirl_fe_rotor *r, do
                       whirl_fe_hbm_response_options *o) {
   whirl_fe_hbm_response_options_default(o);
   if (a->harmonics) o->hbm.harmonics = a->harmonics;
+  static const char *const stab[] = {"off", "dense", "sparse", "auto"};
+  int k = 0;
+  while (k < 4 && strcmp(a->stability, stab[k])) k++;
+  if (k == 4) {
+    cli_error(CMD, "--stability must be auto, dense, sparse or off (got '%s')", a->stability);
+    return 2;
+  }
+  o->hbm.stability = k == 3 ? -1 : k;
   if (a->nmx) o->nmx = a->nmx;
   o->speed_min = isnan(a->from) ? r->speed_min : a->from * f;
   o->speed_max = isnan(a->to) ? r->speed_max : a->to * f;
@@ -251,7 +263,7 @@ static int compute(const char *CMD, const resp_args *a, double f, const whirl_fe
 
 int cmd_rotor_response(int argc, char **argv) {
   const char *CMD = "rotor response";
-  resp_args a = {.unit = "rpm", .dir = "rotor-response", .from = NAN, .to = NAN,
+  resp_args a = {.unit = "rpm", .dir = "rotor-response", .stability = "auto", .from = NAN, .to = NAN,
                  .unb = 1, .clr = 1, .visc = 1, .node = -1};
   int rc = parse_args(argc, argv, &a);
   if (rc) return rc == 1 ? 0 : 2;
