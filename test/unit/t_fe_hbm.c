@@ -11,16 +11,19 @@
  * here); the folds of a continuation against Hill's multiplier +1.
  * The rotor is built by hand (test/fe_chain.h).
  * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* mkstemp, fdopen */
 #include <complex.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <whirl/cont.h>
 #include <whirl/floquet.h>
 #include <whirl/fold.h>
 #include <whirl/rotor/fe_hbm.h>
+#include <whirl/rotor/fe_linear.h>
 
 #include "../fe_chain.h"
 #include "../tap.h"
@@ -636,6 +639,97 @@ static void test_response(void) {
   fe_chain_free(r);
 }
 
+/* --------------------------------------- a rotor file (reader, Timoshenko) */
+
+static const char rotor_text[] =
+    "title two-disk rotor on a squeeze-film damper and a pedestal\n"
+    "material steel E=211e9 G=81.2e9 rho=7810\n"
+    "shaft from=0 to=4 length=0.8 od=0.06 id=0.02 material=steel\n"
+    "shaft from=4 to=6 length=0.3 od=0.04 material=steel\n"
+    "disk node=2 mass=12.5 ip=0.12 it=0.07\n"
+    "disk node=5 width=0.05 od=0.25 id=0.04 material=steel\n"
+    "pedestal housing mass=30 kyy=5e7 kzz=5e7 cyy=2e3 czz=2e3\n"
+    "bearing node=0 kyy=2e7 kzz=1.8e7 kyz=1e5 kzy=-1e5 cyy=500 czz=500\n"
+    "bearing node=6 kyy=1e7 kzz=1e7 pedestal=housing\n"
+    "%s\n"
+    "unbalance node=2 me=2e-4 phase-deg=0\n"
+    "unbalance node=5 me=1e-4 phase-deg=90\n"
+    "%s\n"
+    "speed from=0 to=12000 unit=rpm\n";
+
+static whirl_fe_rotor *rotor_file(const char *nl, const char *gravity) {
+  char text[2048], path[64], msg[512] = "";
+  snprintf(text, sizeof text, rotor_text, nl, gravity);
+  snprintf(path, sizeof path, "t_fe_hbm.XXXXXX");
+  int fd = mkstemp(path);
+  if (fd < 0) return NULL;
+  FILE *f = fdopen(fd, "w");
+  fputs(text, f);
+  fclose(f);
+  whirl_fe_rotor *r = whirl_fe_rotor_read(path, msg, sizeof msg, NULL);
+  unlink(path);
+  if (!r) printf("# %s\n", msg);
+  return r;
+}
+
+/* A null element (cubic, k1 = k3 = 0): the condensed HBM's harmonic 1 of
+ * every DOF = the linear unbalance response (fe-model's direct sparse
+ * solve of the real 2 ndof form, whirl_fe_unbalance_response). */
+static void test_file_linear(void) {
+  whirl_fe_rotor *r = rotor_file("cubic node=6 k1=0 k3=0 pedestal=housing", "");
+  ok(r != NULL, "rotor file read (%d DOF)", r ? r->ndof : 0);
+  if (!r) return;
+  whirl_fe_hbm *h = make(r, 3, 0, 1e-4, 0, 0);
+  const whirl_system *s = whirl_fe_hbm_system(h);
+  int n = r->ndof, its = 0;
+  double *X = calloc(s->n, sizeof *X), *q = calloc((size_t)n * 7, sizeof *q);
+  double *qr = malloc((size_t)n * sizeof *qr), *qi = malloc((size_t)n * sizeof *qi);
+  double p[4], Om = 700.0, d = 0, sc = 0;
+  whirl_fe_hbm_params(Om, p);
+  int rc = whirl_newton(s, X, p, 1e-13, 10, &its);
+  rc |= whirl_fe_hbm_recover(h, X, p, q);
+  rc |= whirl_fe_unbalance_response(r, Om, qr, qi, NULL, 0);
+  for (int i = 0; i < n; ++i) {
+    d = fmax(d, hypot(q[n + i] - qr[i], -q[2 * n + i] - qi[i]));
+    sc = fmax(sc, hypot(qr[i], qi[i]));
+  }
+  ok(rc == 0 && d < 1e-10 * sc, "file rotor, null element: HBM = linear "
+     "unbalance response on all %d DOF (%.1e of %.1e)", n, d, sc);
+  free(X); free(q); free(qr); free(qi);
+  whirl_fe_hbm_free(h);
+  whirl_fe_rotor_free(r);
+}
+
+/* The file's SFD on the pedestal, with gravity: condensed = uncondensed. */
+static void test_file_sfd(void) {
+  whirl_fe_rotor *r = rotor_file(
+      "sfd-short-pi node=6 radius=0.04 length=0.012 clearance=1.5e-4 "
+      "viscosity=0.02 pedestal=housing offset-z=-3e-5",
+      "gravity g=9.81 direction=-z");
+  if (!r) { ok(0, "rotor file with an SFD read"); return; }
+  int H = 4, n = r->ndof, L = 2 * H + 1;
+  whirl_fe_hbm *hc = make(r, H, 0, 0, 0, 0), *hf = make(r, H, 1, 0, 0, 0);
+  const whirl_system *sc = whirl_fe_hbm_system(hc), *sf = whirl_fe_hbm_system(hf);
+  double *Xc = calloc(sc->n, sizeof *Xc), *Xf = calloc(sf->n, sizeof *Xf), p[4];
+  double *qc = calloc((size_t)n * L, sizeof *qc), *qf = calloc((size_t)n * L, sizeof *qf);
+  whirl_fe_hbm_params(600.0, p);
+  p[WHIRL_FE_P_UNBALANCE] = 5.0;
+  int i1 = 0, i2 = 0;
+  int rc = whirl_newton(sc, Xc, p, 1e-13, 40, &i1) | whirl_newton(sf, Xf, p, 1e-13, 40, &i2);
+  rc |= whirl_fe_hbm_recover(hc, Xc, p, qc) | whirl_fe_hbm_recover(hf, Xf, p, qf);
+  double d = 0, s = maxabs(qf, (size_t)n * L);
+  for (int i = 0; i < n * L; ++i) d = fmax(d, fabs(qc[i] - qf[i]));
+  double e = whirl_fe_hbm_amplitude(hc, qc, 6);
+  if (rc) printf("# rc %d its %d %d\n", rc, i1, i2);
+  ok(rc == 0 && i1 >= 3 && d <= 1e-10 * s, "file rotor, SFD on the pedestal: "
+     "condensed (%zu, %d its) = uncondensed (%zu) to %.1e of %.1e (journal "
+     "at %.3g m)", sc->n, i1, sf->n, d, s, e);
+  free(Xc); free(Xf); free(qc); free(qf);
+  whirl_fe_hbm_free(hc);
+  whirl_fe_hbm_free(hf);
+  whirl_fe_rotor_free(r);
+}
+
 /* Bad options are refused with a message; contact is recoverable. */
 static void test_errors(void) {
   whirl_fe_rotor *r = model5(0, 1e13);
@@ -688,6 +782,8 @@ int main(void) {
   test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_2PI);
   test_subharmonic_index();
   test_errors();
+  test_file_linear();
+  test_file_sfd();
   test_response();
   return done_testing();
 }
