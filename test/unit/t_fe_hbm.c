@@ -593,6 +593,35 @@ static void test_fold_locus(const whirl_fe_rotor *r, const double *X,
   whirl_fe_hbm_free(h);
 }
 
+/* The sparse Hill method (ARPACK) against the dense one: every exponent
+ * it returns is one of the dense exponents, and the rightmost agree. */
+static void hill_sparse_vs_dense(const whirl_fe_rotor *r, const double *X,
+                                 double Om, const char *what) {
+  whirl_fe_hbm *hd = make(r, 5, 0, 0, 0, 1), *hs = make(r, 5, 0, 0, 0, 2);
+  double p[4], dre[64], dim[64], sre[64], sim[64], w = Om, worst = 0;
+  size_t md = 64, ms = 64;
+  whirl_fe_hbm_params(Om, p);
+  int rc = whirl_fe_hbm_hill(hd, X, p, dre, dim, &md);
+  int rs = whirl_fe_hbm_hill(hs, X, p, sre, sim, &ms);
+  if (rs == WHIRL_EINVAL && strstr(whirl_fe_hbm_errmsg(hs), "without ARPACK")) {
+    ok(1, "# SKIP %s: built without ARPACK", what);
+  } else {
+    for (size_t i = 0; i < ms; ++i) {
+      double best = INFINITY;
+      for (size_t j = 0; j < md; ++j)
+        best = fmin(best, hypot(sre[i] - dre[j], sim[i] - dim[j]));
+      worst = fmax(worst, best);
+    }
+    ok(rc == 0 && rs == 0 && ms >= 4 && worst < 1e-8 * w,
+       "%s: the %zu sparse Hill exponents (ARPACK) are dense ones (%.1e)",
+       what, ms, worst / w);
+    is_abs(sre[0], dre[0], 1e-8 * w, "%s: rightmost exponent, sparse %.6g vs "
+           "dense %.6g", what, sre[0], dre[0]);
+  }
+  whirl_fe_hbm_free(hd);
+  whirl_fe_hbm_free(hs);
+}
+
 static void test_response(void) {
   whirl_fe_rotor *r = duffing3();
   whirl_fe_hbm_response_options o;
@@ -634,6 +663,9 @@ static void test_response(void) {
   if (c.Xu) hill_vs_monodromy(h, r, c.Xu, c.Ou, 5, "unstable orbit");
   else ok(0, "an unstable orbit was found");
   if (c.Xt) hill_vs_monodromy(h, r, c.Xt, c.Ot, 5, "small unstable orbit");
+  if (c.Xs) hill_sparse_vs_dense(r, c.Xs, c.Os, "stable orbit");
+  if (c.Xu) hill_sparse_vs_dense(r, c.Xu, c.Ou, "unstable orbit");
+  if (c.Xt) hill_sparse_vs_dense(r, c.Xt, c.Ot, "small unstable orbit");
   free(c.Xs); free(c.Xu); free(c.Xt);
   whirl_fe_hbm_free(h);
   fe_chain_free(r);
