@@ -537,60 +537,104 @@ static void hill_vs_monodromy(whirl_fe_hbm *h, const whirl_fe_rotor *r,
   free(q);
 }
 
-/* The fold locus in speed × unbalance through the fold system: from the
- * first LP (Ω1 at unbalance 1) down in unbalance, round the cusp where the
- * two folds meet, and back up to unbalance 1, where it must arrive at the
+/* A fold locus through the fold system: from the first LP (Ω1, p at the
+ * LP) in the parameter icp (direction dir), round the cusp where the two
+ * folds meet, and back to the start's value, where it must arrive at the
  * second LP Ω2 of the speed continuation. */
-static void test_fold_locus(const whirl_fe_rotor *r, const double *X,
-                            double Om1, double Om2) {
-  whirl_fe_hbm *h = make(r, 5, 0, 0, 0, 0);
+static void test_fold_locus(const whirl_fe_rotor *r, int H, const double *X,
+                            const double *p0, double Om2, size_t icp, int dir,
+                            const char *name) {
+  whirl_fe_hbm *h = make(r, H, 0, 0, 0, 0);
   const whirl_system *s = whirl_fe_hbm_system(h);
   whirl_fold_options fo;
   whirl_fold_options_default(&fo, WHIRL_FE_P_OMEGA);
   char err[256] = "";
   whirl_fold *f = whirl_fold_alloc(s, &fo, err, sizeof err);
   double p[4], *Z = calloc(s->n + 1, sizeof *Z);
-  whirl_fe_hbm_params(Om1, p);
+  memcpy(p, p0, sizeof p);
   int rc = f ? whirl_fold_init(f, X, p, Z) : -1;
-  ok(rc == 0, "fold locus: started at the first LP %s", err);
+  ok(rc == 0, "fold locus in speed x %s: started at the first LP %s", name, err);
   whirl_cont_options co;
   whirl_cont_options_default(&co);
-  co.icp = WHIRL_FE_P_UNBALANCE;
-  co.ds = 0.01;
+  co.icp = icp;
+  co.ds = 0.01 * p0[icp];
   co.ds_max = 1.0;
   co.nmx = 400;
-  co.p_min = 0.001;
-  co.p_max = 1.5;
+  co.p_min = 0.001 * p0[icp];
+  co.p_max = 100 * p0[icp];
   co.newton_tol = 1e-9;
-  double uz = 1.0;
+  double uz = p0[icp];
   int uz_stop = 1;
   co.uz = &uz;
   co.nuz = 1;
   co.uz_stop = &uz_stop;
   whirl_cont *c = rc ? NULL : whirl_cont_alloc(whirl_fold_system(f), &co, err, sizeof err);
-  rc = c ? whirl_cont_start(c, Z, p, -1) : -1;
-  double umin = 2, Om_end = 0, u_end = 0;
+  rc = c ? whirl_cont_start(c, Z, p, dir) : -1;
+  double ext = p0[icp], Om_end = 0, v_end = 0;
   int steps = 0;
   while (!rc && (rc = whirl_cont_step(c)) == WHIRL_OK) {
     const whirl_point *pt = whirl_cont_point(c);
-    umin = fmin(umin, pt->p[WHIRL_FE_P_UNBALANCE]);
+    double v = pt->p[icp];
+    ext = dir < 0 ? fmin(ext, v) : fmax(ext, v);
     Om_end = pt->x[s->n];
-    u_end = pt->p[WHIRL_FE_P_UNBALANCE];
+    v_end = v;
     ++steps;
-    if (getenv("FOLD_TRACE")) printf("# %g %g %d\n", Om_end, u_end, pt->type);
   }
   ok(rc == WHIRL_DONE && c && whirl_cont_stop_reason(c) == WHIRL_STOP_UZ,
-     "fold locus: round the cusp (unbalance down to %.3f) and back to 1 in "
-     "%d steps", umin, steps);
-  ok(umin < 0.9 && umin > 0.002, "fold locus: the folds meet at unbalance %.3f",
-     umin);
-  is_rel(u_end, 1.0, 1e-9, "fold locus: ends at unbalance 1");
+     "fold locus in speed x %s: round the cusp (%s to %.4g) and back in %d "
+     "steps", name, name, ext, steps);
+  ok(fabs(ext / p0[icp] - 1) > 1e-3, "fold locus: the folds meet at %s %.4g",
+     name, ext);
+  is_rel(v_end, p0[icp], 1e-9, "fold locus: ends at the start's %s", name);
   is_rel(Om_end, Om2, 1e-6, "fold locus: at the second LP of the speed "
          "continuation, %.6f vs %.6f rad/s", Om_end, Om2);
   whirl_cont_free(c);
   whirl_fold_free(f);
   free(Z);
   whirl_fe_hbm_free(h);
+}
+
+/* Folds of an SFD-supported mode at 10× the unbalance: the speed response
+ * and its fold locus in speed × clearance. */
+static int on_lp(const whirl_fe_hbm_response_point *pt, void *ctx) {
+  collect *c = ctx;
+  if (pt->type == WHIRL_PT_LP && c->nlp < 4) {
+    c->lp[c->nlp] = pt->Omega;
+    c->Xlp[c->nlp] = malloc(pt->n * sizeof(double));
+    memcpy(c->Xlp[c->nlp++], pt->X, pt->n * sizeof(double));
+  }
+  return 0;
+}
+
+static void test_sfd_clearance_locus(void) {
+  fe_chain_opts co;
+  fe_chain_defaults(&co, 5);
+  co.nnl = 1;
+  co.nl[0] = fe_chain_sfd(4, -1);
+  whirl_fe_rotor *r = fe_chain_build(&co);
+  whirl_fe_hbm_response_options o;
+  whirl_fe_hbm_response_options_default(&o);
+  o.hbm.harmonics = 5;
+  o.hbm.stability = 0;
+  o.speed_min = 150;
+  o.speed_max = 350;
+  o.node = 4;
+  o.unbalance = 10;
+  collect c;
+  memset(&c, 0, sizeof c);
+  char err[256] = "";
+  int rc = whirl_fe_hbm_response(r, &o, on_lp, &c, err, sizeof err);
+  ok(rc == 0 && c.nlp == 2, "SFD rotor at 10x unbalance: two folds at %.3f, "
+     "%.3f rad/s %s", c.lp[0], c.lp[1], err);
+  if (c.nlp == 2) {
+    double p[4];
+    whirl_fe_hbm_params(c.lp[0], p);
+    p[WHIRL_FE_P_UNBALANCE] = 10;
+    test_fold_locus(r, 5, c.Xlp[0], p, c.lp[1], WHIRL_FE_P_CLEARANCE, +1,
+                    "clearance");
+  }
+  for (int k = 0; k < c.nlp; ++k) free(c.Xlp[k]);
+  fe_chain_free(r);
 }
 
 /* The sparse Hill method (ARPACK) against the dense one: every exponent
@@ -645,7 +689,12 @@ static void test_response(void) {
      c.ntr);
   ok(c.changes == 4, "response: stability changes at the two LP and the two "
      "TR (%d)", c.changes);
-  if (c.nlp == 2) test_fold_locus(r, c.Xlp[0], c.lp[0], c.lp[1]);
+  if (c.nlp == 2) {
+    double p[4];
+    whirl_fe_hbm_params(c.lp[0], p);
+    test_fold_locus(r, 5, c.Xlp[0], p, c.lp[1], WHIRL_FE_P_UNBALANCE, -1,
+                    "unbalance");
+  }
   whirl_fe_hbm *h = make(r, 5, 0, 0, 0, 1);
   for (int k = 0; k < c.nlp; ++k) { /* a fold: a Floquet multiplier +1 */
     double p[4], re[64], im[64], best = INFINITY;
@@ -817,5 +866,6 @@ int main(void) {
   test_file_linear();
   test_file_sfd();
   test_response();
+  test_sfd_clearance_locus();
   return done_testing();
 }
