@@ -168,6 +168,8 @@ int whirl_fe_hbm_hill(whirl_fe_hbm *h, const double *X, const double *p,
                       double *re, double *im, size_t *m) {
   int rc = whirl_fe_hbm_recover(h, X, p, h->qfull);
   if (rc) return rc;
+  if (h->hill == 2)
+    return fe_hill_sparse(h, h->qfull, p, h->o.hill_nev, re, im, m);
   return fe_hill_exponents(h, h->qfull, p, re, im, m);
 }
 

@@ -11,16 +11,19 @@
  * here); the folds of a continuation against Hill's multiplier +1.
  * The rotor is built by hand (test/fe_chain.h).
  * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* mkstemp, fdopen */
 #include <complex.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <whirl/cont.h>
 #include <whirl/floquet.h>
 #include <whirl/fold.h>
 #include <whirl/rotor/fe_hbm.h>
+#include <whirl/rotor/fe_linear.h>
 
 #include "../fe_chain.h"
 #include "../tap.h"
@@ -534,60 +537,133 @@ static void hill_vs_monodromy(whirl_fe_hbm *h, const whirl_fe_rotor *r,
   free(q);
 }
 
-/* The fold locus in speed × unbalance through the fold system: from the
- * first LP (Ω1 at unbalance 1) down in unbalance, round the cusp where the
- * two folds meet, and back up to unbalance 1, where it must arrive at the
+/* A fold locus through the fold system: from the first LP (Ω1, p at the
+ * LP) in the parameter icp (direction dir), round the cusp where the two
+ * folds meet, and back to the start's value, where it must arrive at the
  * second LP Ω2 of the speed continuation. */
-static void test_fold_locus(const whirl_fe_rotor *r, const double *X,
-                            double Om1, double Om2) {
-  whirl_fe_hbm *h = make(r, 5, 0, 0, 0, 0);
+static void test_fold_locus(const whirl_fe_rotor *r, int H, const double *X,
+                            const double *p0, double Om2, size_t icp, int dir,
+                            const char *name) {
+  whirl_fe_hbm *h = make(r, H, 0, 0, 0, 0);
   const whirl_system *s = whirl_fe_hbm_system(h);
   whirl_fold_options fo;
   whirl_fold_options_default(&fo, WHIRL_FE_P_OMEGA);
   char err[256] = "";
   whirl_fold *f = whirl_fold_alloc(s, &fo, err, sizeof err);
   double p[4], *Z = calloc(s->n + 1, sizeof *Z);
-  whirl_fe_hbm_params(Om1, p);
+  memcpy(p, p0, sizeof p);
   int rc = f ? whirl_fold_init(f, X, p, Z) : -1;
-  ok(rc == 0, "fold locus: started at the first LP %s", err);
+  ok(rc == 0, "fold locus in speed x %s: started at the first LP %s", name, err);
   whirl_cont_options co;
   whirl_cont_options_default(&co);
-  co.icp = WHIRL_FE_P_UNBALANCE;
-  co.ds = 0.01;
+  co.icp = icp;
+  co.ds = 0.01 * p0[icp];
   co.ds_max = 1.0;
   co.nmx = 400;
-  co.p_min = 0.001;
-  co.p_max = 1.5;
+  co.p_min = 0.001 * p0[icp];
+  co.p_max = 100 * p0[icp];
   co.newton_tol = 1e-9;
-  double uz = 1.0;
+  double uz = p0[icp];
   int uz_stop = 1;
   co.uz = &uz;
   co.nuz = 1;
   co.uz_stop = &uz_stop;
   whirl_cont *c = rc ? NULL : whirl_cont_alloc(whirl_fold_system(f), &co, err, sizeof err);
-  rc = c ? whirl_cont_start(c, Z, p, -1) : -1;
-  double umin = 2, Om_end = 0, u_end = 0;
+  rc = c ? whirl_cont_start(c, Z, p, dir) : -1;
+  double ext = p0[icp], Om_end = 0, v_end = 0;
   int steps = 0;
   while (!rc && (rc = whirl_cont_step(c)) == WHIRL_OK) {
     const whirl_point *pt = whirl_cont_point(c);
-    umin = fmin(umin, pt->p[WHIRL_FE_P_UNBALANCE]);
+    double v = pt->p[icp];
+    ext = dir < 0 ? fmin(ext, v) : fmax(ext, v);
     Om_end = pt->x[s->n];
-    u_end = pt->p[WHIRL_FE_P_UNBALANCE];
+    v_end = v;
     ++steps;
-    if (getenv("FOLD_TRACE")) printf("# %g %g %d\n", Om_end, u_end, pt->type);
   }
   ok(rc == WHIRL_DONE && c && whirl_cont_stop_reason(c) == WHIRL_STOP_UZ,
-     "fold locus: round the cusp (unbalance down to %.3f) and back to 1 in "
-     "%d steps", umin, steps);
-  ok(umin < 0.9 && umin > 0.002, "fold locus: the folds meet at unbalance %.3f",
-     umin);
-  is_rel(u_end, 1.0, 1e-9, "fold locus: ends at unbalance 1");
+     "fold locus in speed x %s: round the cusp (%s to %.4g) and back in %d "
+     "steps", name, name, ext, steps);
+  ok(fabs(ext / p0[icp] - 1) > 1e-3, "fold locus: the folds meet at %s %.4g",
+     name, ext);
+  is_rel(v_end, p0[icp], 1e-9, "fold locus: ends at the start's %s", name);
   is_rel(Om_end, Om2, 1e-6, "fold locus: at the second LP of the speed "
          "continuation, %.6f vs %.6f rad/s", Om_end, Om2);
   whirl_cont_free(c);
   whirl_fold_free(f);
   free(Z);
   whirl_fe_hbm_free(h);
+}
+
+/* Folds of an SFD-supported mode at 10× the unbalance: the speed response
+ * and its fold locus in speed × clearance. */
+static int on_lp(const whirl_fe_hbm_response_point *pt, void *ctx) {
+  collect *c = ctx;
+  if (pt->type == WHIRL_PT_LP && c->nlp < 4) {
+    c->lp[c->nlp] = pt->Omega;
+    c->Xlp[c->nlp] = malloc(pt->n * sizeof(double));
+    memcpy(c->Xlp[c->nlp++], pt->X, pt->n * sizeof(double));
+  }
+  return 0;
+}
+
+static void test_sfd_clearance_locus(void) {
+  fe_chain_opts co;
+  fe_chain_defaults(&co, 5);
+  co.nnl = 1;
+  co.nl[0] = fe_chain_sfd(4, -1);
+  whirl_fe_rotor *r = fe_chain_build(&co);
+  whirl_fe_hbm_response_options o;
+  whirl_fe_hbm_response_options_default(&o);
+  o.hbm.harmonics = 5;
+  o.hbm.stability = 0;
+  o.speed_min = 150;
+  o.speed_max = 350;
+  o.node = 4;
+  o.unbalance = 10;
+  collect c;
+  memset(&c, 0, sizeof c);
+  char err[256] = "";
+  int rc = whirl_fe_hbm_response(r, &o, on_lp, &c, err, sizeof err);
+  ok(rc == 0 && c.nlp == 2, "SFD rotor at 10x unbalance: two folds at %.3f, "
+     "%.3f rad/s %s", c.lp[0], c.lp[1], err);
+  if (c.nlp == 2) {
+    double p[4];
+    whirl_fe_hbm_params(c.lp[0], p);
+    p[WHIRL_FE_P_UNBALANCE] = 10;
+    test_fold_locus(r, 5, c.Xlp[0], p, c.lp[1], WHIRL_FE_P_CLEARANCE, +1,
+                    "clearance");
+  }
+  for (int k = 0; k < c.nlp; ++k) free(c.Xlp[k]);
+  fe_chain_free(r);
+}
+
+/* The sparse Hill method (ARPACK) against the dense one: every exponent
+ * it returns is one of the dense exponents, and the rightmost agree. */
+static void hill_sparse_vs_dense(const whirl_fe_rotor *r, const double *X,
+                                 double Om, const char *what) {
+  whirl_fe_hbm *hd = make(r, 5, 0, 0, 0, 1), *hs = make(r, 5, 0, 0, 0, 2);
+  double p[4], dre[64], dim[64], sre[64], sim[64], w = Om, worst = 0;
+  size_t md = 64, ms = 64;
+  whirl_fe_hbm_params(Om, p);
+  int rc = whirl_fe_hbm_hill(hd, X, p, dre, dim, &md);
+  int rs = whirl_fe_hbm_hill(hs, X, p, sre, sim, &ms);
+  if (rs == WHIRL_EINVAL && strstr(whirl_fe_hbm_errmsg(hs), "without ARPACK")) {
+    ok(1, "# SKIP %s: built without ARPACK", what);
+  } else {
+    for (size_t i = 0; i < ms; ++i) {
+      double best = INFINITY;
+      for (size_t j = 0; j < md; ++j)
+        best = fmin(best, hypot(sre[i] - dre[j], sim[i] - dim[j]));
+      worst = fmax(worst, best);
+    }
+    ok(rc == 0 && rs == 0 && ms >= 4 && worst < 1e-8 * w,
+       "%s: the %zu sparse Hill exponents (ARPACK) are dense ones (%.1e)",
+       what, ms, worst / w);
+    is_abs(sre[0], dre[0], 1e-8 * w, "%s: rightmost exponent, sparse %.6g vs "
+           "dense %.6g", what, sre[0], dre[0]);
+  }
+  whirl_fe_hbm_free(hd);
+  whirl_fe_hbm_free(hs);
 }
 
 static void test_response(void) {
@@ -613,7 +689,12 @@ static void test_response(void) {
      c.ntr);
   ok(c.changes == 4, "response: stability changes at the two LP and the two "
      "TR (%d)", c.changes);
-  if (c.nlp == 2) test_fold_locus(r, c.Xlp[0], c.lp[0], c.lp[1]);
+  if (c.nlp == 2) {
+    double p[4];
+    whirl_fe_hbm_params(c.lp[0], p);
+    test_fold_locus(r, 5, c.Xlp[0], p, c.lp[1], WHIRL_FE_P_UNBALANCE, -1,
+                    "unbalance");
+  }
   whirl_fe_hbm *h = make(r, 5, 0, 0, 0, 1);
   for (int k = 0; k < c.nlp; ++k) { /* a fold: a Floquet multiplier +1 */
     double p[4], re[64], im[64], best = INFINITY;
@@ -631,9 +712,103 @@ static void test_response(void) {
   if (c.Xu) hill_vs_monodromy(h, r, c.Xu, c.Ou, 5, "unstable orbit");
   else ok(0, "an unstable orbit was found");
   if (c.Xt) hill_vs_monodromy(h, r, c.Xt, c.Ot, 5, "small unstable orbit");
+  if (c.Xs) hill_sparse_vs_dense(r, c.Xs, c.Os, "stable orbit");
+  if (c.Xu) hill_sparse_vs_dense(r, c.Xu, c.Ou, "unstable orbit");
+  if (c.Xt) hill_sparse_vs_dense(r, c.Xt, c.Ot, "small unstable orbit");
   free(c.Xs); free(c.Xu); free(c.Xt);
   whirl_fe_hbm_free(h);
   fe_chain_free(r);
+}
+
+/* --------------------------------------- a rotor file (reader, Timoshenko) */
+
+static const char rotor_text[] =
+    "title two-disk rotor on a squeeze-film damper and a pedestal\n"
+    "material steel E=211e9 G=81.2e9 rho=7810\n"
+    "shaft from=0 to=4 length=0.8 od=0.06 id=0.02 material=steel\n"
+    "shaft from=4 to=6 length=0.3 od=0.04 material=steel\n"
+    "disk node=2 mass=12.5 ip=0.12 it=0.07\n"
+    "disk node=5 width=0.05 od=0.25 id=0.04 material=steel\n"
+    "pedestal housing mass=30 kyy=5e7 kzz=5e7 cyy=2e3 czz=2e3\n"
+    "bearing node=0 kyy=2e7 kzz=1.8e7 kyz=1e5 kzy=-1e5 cyy=500 czz=500\n"
+    "bearing node=6 kyy=1e7 kzz=1e7 pedestal=housing\n"
+    "%s\n"
+    "unbalance node=2 me=2e-4 phase-deg=0\n"
+    "unbalance node=5 me=1e-4 phase-deg=90\n"
+    "%s\n"
+    "speed from=0 to=12000 unit=rpm\n";
+
+static whirl_fe_rotor *rotor_file(const char *nl, const char *gravity) {
+  char text[2048], path[64], msg[512] = "";
+  snprintf(text, sizeof text, rotor_text, nl, gravity);
+  snprintf(path, sizeof path, "t_fe_hbm.XXXXXX");
+  int fd = mkstemp(path);
+  if (fd < 0) return NULL;
+  FILE *f = fdopen(fd, "w");
+  fputs(text, f);
+  fclose(f);
+  whirl_fe_rotor *r = whirl_fe_rotor_read(path, msg, sizeof msg, NULL);
+  unlink(path);
+  if (!r) printf("# %s\n", msg);
+  return r;
+}
+
+/* A null element (cubic, k1 = k3 = 0): the condensed HBM's harmonic 1 of
+ * every DOF = the linear unbalance response (fe-model's direct sparse
+ * solve of the real 2 ndof form, whirl_fe_unbalance_response). */
+static void test_file_linear(void) {
+  whirl_fe_rotor *r = rotor_file("cubic node=6 k1=0 k3=0 pedestal=housing", "");
+  ok(r != NULL, "rotor file read (%d DOF)", r ? r->ndof : 0);
+  if (!r) return;
+  whirl_fe_hbm *h = make(r, 3, 0, 1e-4, 0, 0);
+  const whirl_system *s = whirl_fe_hbm_system(h);
+  int n = r->ndof, its = 0;
+  double *X = calloc(s->n, sizeof *X), *q = calloc((size_t)n * 7, sizeof *q);
+  double *qr = malloc((size_t)n * sizeof *qr), *qi = malloc((size_t)n * sizeof *qi);
+  double p[4], Om = 700.0, d = 0, sc = 0;
+  whirl_fe_hbm_params(Om, p);
+  int rc = whirl_newton(s, X, p, 1e-13, 10, &its);
+  rc |= whirl_fe_hbm_recover(h, X, p, q);
+  rc |= whirl_fe_unbalance_response(r, Om, qr, qi, NULL, 0);
+  for (int i = 0; i < n; ++i) {
+    d = fmax(d, hypot(q[n + i] - qr[i], -q[2 * n + i] - qi[i]));
+    sc = fmax(sc, hypot(qr[i], qi[i]));
+  }
+  ok(rc == 0 && d < 1e-10 * sc, "file rotor, null element: HBM = linear "
+     "unbalance response on all %d DOF (%.1e of %.1e)", n, d, sc);
+  free(X); free(q); free(qr); free(qi);
+  whirl_fe_hbm_free(h);
+  whirl_fe_rotor_free(r);
+}
+
+/* The file's SFD on the pedestal, with gravity: condensed = uncondensed. */
+static void test_file_sfd(void) {
+  whirl_fe_rotor *r = rotor_file(
+      "sfd-short-pi node=6 radius=0.04 length=0.012 clearance=1.5e-4 "
+      "viscosity=0.02 pedestal=housing offset-z=-3e-5",
+      "gravity g=9.81 direction=-z");
+  if (!r) { ok(0, "rotor file with an SFD read"); return; }
+  int H = 4, n = r->ndof, L = 2 * H + 1;
+  whirl_fe_hbm *hc = make(r, H, 0, 0, 0, 0), *hf = make(r, H, 1, 0, 0, 0);
+  const whirl_system *sc = whirl_fe_hbm_system(hc), *sf = whirl_fe_hbm_system(hf);
+  double *Xc = calloc(sc->n, sizeof *Xc), *Xf = calloc(sf->n, sizeof *Xf), p[4];
+  double *qc = calloc((size_t)n * L, sizeof *qc), *qf = calloc((size_t)n * L, sizeof *qf);
+  whirl_fe_hbm_params(600.0, p);
+  p[WHIRL_FE_P_UNBALANCE] = 5.0;
+  int i1 = 0, i2 = 0;
+  int rc = whirl_newton(sc, Xc, p, 1e-13, 40, &i1) | whirl_newton(sf, Xf, p, 1e-13, 40, &i2);
+  rc |= whirl_fe_hbm_recover(hc, Xc, p, qc) | whirl_fe_hbm_recover(hf, Xf, p, qf);
+  double d = 0, s = maxabs(qf, (size_t)n * L);
+  for (int i = 0; i < n * L; ++i) d = fmax(d, fabs(qc[i] - qf[i]));
+  double e = whirl_fe_hbm_amplitude(hc, qc, 6);
+  if (rc) printf("# rc %d its %d %d\n", rc, i1, i2);
+  ok(rc == 0 && i1 >= 3 && d <= 1e-10 * s, "file rotor, SFD on the pedestal: "
+     "condensed (%zu, %d its) = uncondensed (%zu) to %.1e of %.1e (journal "
+     "at %.3g m)", sc->n, i1, sf->n, d, s, e);
+  free(Xc); free(Xf); free(qc); free(qf);
+  whirl_fe_hbm_free(hc);
+  whirl_fe_hbm_free(hf);
+  whirl_fe_rotor_free(r);
 }
 
 /* Bad options are refused with a message; contact is recoverable. */
@@ -688,6 +863,9 @@ int main(void) {
   test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_2PI);
   test_subharmonic_index();
   test_errors();
+  test_file_linear();
+  test_file_sfd();
   test_response();
+  test_sfd_clearance_locus();
   return done_testing();
 }

@@ -44,7 +44,9 @@
  * linearised to first order and solved densely (LAPACK dgeev); of the
  * 2 ndof L eigenvalues the 2 ndof with the smallest |Im λ| are the Floquet
  * exponents (Lazarus & Thomas, C. R. Mécanique 338 (2010) 510; Peletan et
- * al., Nonlinear Dyn. 2013), reported as multipliers exp(λ 2π/ω).
+ * al., Nonlinear Dyn. 2013), reported as multipliers exp(λ 2π/ω).  For
+ * large models the sparse pencil by ARPACK's shift-invert Arnoldi gives the
+ * exponents nearest the imaginary axis around 0 (the critical ones).
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_ROTOR_FE_HBM_H
 #define WHIRL_ROTOR_FE_HBM_H
@@ -78,9 +80,15 @@ typedef struct whirl_fe_hbm_options {
                            clearance, else 1e-3) */
   double force_scale;   /* N: F = residual / force_scale (0: length_scale
                            × the largest diagonal entry of K) */
-  int stability;        /* 1: Hill's multipliers as the system's spectrum
-                           (dense, 2 ndof (2H+1) eigenvalues per point);
-                           0: none; −1 (default): when 2 ndof (2H+1) ≤ 1200 */
+  int stability;        /* Hill's multipliers as the system's spectrum:
+                           1 dense (all 2 ndof exponents; 2 ndof (2H+1)
+                           eigenvalues per point), 2 sparse (ARPACK: the
+                           exponents in |Im λ| ≤ ω/2 among the hill_nev
+                           nearest the imaginary axis at 0), 0 none;
+                           −1 (default): dense when 2 ndof (2H+1) ≤ 1200,
+                           else sparse when built with ARPACK, else none */
+  size_t hill_nev;      /* eigenvalues sought by the sparse Hill method
+                           (default 24) */
 } whirl_fe_hbm_options;
 
 WHIRL_API void whirl_fe_hbm_options_default(whirl_fe_hbm_options *o);
@@ -125,8 +133,10 @@ WHIRL_API double whirl_fe_hbm_amplitude(const whirl_fe_hbm *h,
 WHIRL_API int whirl_fe_hbm_seed_circular(const whirl_fe_hbm *h, double eps,
                                          double phase, double *X);
 
-/* Hill's Floquet exponents of the solution X at p: the 2 ndof kept
- * eigenvalues re[], im[] (*m: capacity in, count out), sorted by
+/* Hill's Floquet exponents of the solution X at p, by the method of
+ * options.stability (dense when 0): dense, the 2 ndof kept eigenvalues;
+ * sparse, those of the hill_nev nearest a small shift σ = 10⁻³ ω in the
+ * strip |Im λ| ≤ ω/2.  re[], im[] (*m: capacity in, count out), sorted by
  * decreasing real part.  Stable when all re < 0. */
 WHIRL_API int whirl_fe_hbm_hill(whirl_fe_hbm *h, const double *X,
                                 const double *p, double *re, double *im,
