@@ -191,6 +191,45 @@ WHIRL_API int whirl_fe_hbm_response(const whirl_fe_rotor *r,
                                     whirl_fe_hbm_response_fn fn, void *ctx,
                                     char *errbuf, size_t errlen);
 
+/* ------------------------------------------------- fold loci */
+
+typedef struct whirl_fe_locus_options {
+  whirl_fe_hbm_options hbm;  /* as for the response the fold came from
+                                (stability is not used: default 0) */
+  int param;                 /* the second parameter: WHIRL_FE_P_UNBALANCE
+                                (default), _CLEARANCE or _VISCOSITY */
+  double pmin, pmax;         /* its range (default 0, 10) */
+  double ds, ds_max;         /* steps in the arclength of (x, Ω/omega_scale,
+                                param) (0: 0.01, 0.05) */
+  size_t nmx;                /* steps (default 500) */
+  double omega_scale;        /* rad/s (0: the fold's speed) */
+} whirl_fe_locus_options;
+
+WHIRL_API void whirl_fe_locus_options_default(whirl_fe_locus_options *o);
+
+typedef struct whirl_fe_locus_point {
+  size_t index;
+  int type;        /* whirl_point_type: EP, LP (of the locus), CP, IS, MG */
+  double Omega;    /* rad/s */
+  double value;    /* the second parameter */
+  const double *X; /* the unknowns of the fold system: the orbit's, then Ω */
+  size_t n;        /* the orbit's unknowns */
+} whirl_fe_locus_point;
+
+typedef int (*whirl_fe_locus_fn)(const whirl_fe_locus_point *pt, void *ctx);
+
+/* Follow the fold through the response's fold (X, p) — a point of type LP
+ * of whirl_fe_hbm_response, X its unknowns with the same hbm options — in
+ * (Ω, param) towards larger (direction +1) or smaller param, within
+ * [pmin, pmax] and the rotor's speed range, until it closes on itself.
+ * Calls fn at every point (a non-zero return ends the locus).  WHIRL_OK, or
+ * an error with its message in err. */
+WHIRL_API int whirl_fe_hbm_fold_locus(const whirl_fe_rotor *r,
+                                      const whirl_fe_locus_options *o,
+                                      const double *X, const double *p,
+                                      int direction, whirl_fe_locus_fn fn,
+                                      void *ctx, char *err, size_t errlen);
+
 #ifdef __cplusplus
 }
 #endif
