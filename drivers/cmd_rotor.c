@@ -362,6 +362,8 @@ static const struct {
     {"unbalance", cmd_rotor_unbalance,
      "linear unbalance response of a node over a speed range (the nonlinear elements "
      "left out)"},
+    {"loci", cmd_rotor_loci,
+     "fold loci in the speed and the unbalance, clearance or viscosity (TSV, PNG)"},
     {"response", cmd_rotor_response,
      "periodic unbalance response with the nonlinear elements: harmonic balance "
      "in speed, folds, stability (TSV, PNG)"}};

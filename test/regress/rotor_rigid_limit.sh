@@ -11,6 +11,8 @@
 #    between the folds, the isola's lower half unstable);
 #  - the difference shrinks tenfold per decade of shaft stiffness
 #    (E x 10^3, 10^4, 10^5 of steel's: it is m Omega^2 / k_shaft);
+#  - the fold loci in speed x unbalance (whirl rotor loci) merge the
+#    isola where the rigid rotor's merge condition does (whirl sfd merge);
 #  - 1 and 3 harmonics agree (the orbits are circular: one harmonic is
 #    exact for the pi film), and 3 harmonics report no TR or PD (the
 #    stiff shaft's unresolved modes once made 22).
@@ -85,6 +87,22 @@ d12=$(worst e12 lp.rigid) d13=$(worst e13 lp.rigid)
 echo "# worst relative difference to the rigid rotor: E 211e12 $d12, 211e13 $d13, 211e14 $d14"
 ok "$(awk -v a="$d12" -v b="$d13" -v c="$d14" 'BEGIN { exit !(a > 5 * b && b > 5 * c) }'; echo $?)" \
   "the difference shrinks about tenfold per decade of stiffness ($d12, $d13, $d14)"
+
+# the fold loci in speed x unbalance: the isola merges with the main
+# branch (MG) where the rigid rotor's merge condition G = G_eps = G_Omega = 0
+# of eq. 15 says (whirl sfd merge: delta and Omega)
+"$WHIRL" sfd merge --lambda 0.0503 --quiet > merge.tsv 2> merge.err
+ok $? "whirl sfd merge --lambda 0.0503"
+"$WHIRL" rotor loci "$ex" --param unbalance --range 0.05:3 --harmonics 1 -o loci.d --quiet > loci.tsv 2> loci.err
+ok $? "whirl rotor loci --param unbalance: $(head -c 200 loci.err)"
+res=$(awk -F '\t' 'NR == FNR { if (FNR == 2) { d = $3; w = $4 } next }
+  $1 == "MG" && !done { done = 1; dd = 0.3 * $6 / d - 1; dw = $5 / w - 1
+    printf "%.3g %.3g %.10g %.10g", (dd < 0 ? -dd : dd), (dw < 0 ? -dw : dw), 0.3 * $6, $5 }
+  END { if (!done) print "1 1 none none" }' merge.tsv loci.tsv)
+set -- $res
+echo "# merge point: FE delta $3 at Omega $4; rigid $(awk -F '\t' 'NR == 2 { print $3, $4 }' merge.tsv)"
+ok "$(awk -v a="$1" -v b="$2" 'BEGIN { exit !(a < 1e-5 && b < 1e-4) }'; echo $?)" \
+  "the loci's merge point is the rigid rotor's: delta to $1, Omega to $2"
 
 echo "1..$n"
 [ "$fails" -eq 0 ]
