@@ -362,6 +362,8 @@ static const struct {
     {"unbalance", cmd_rotor_unbalance,
      "linear unbalance response of a node over a speed range (the nonlinear elements "
      "left out)"},
+    {"export", cmd_rotor_export,
+     "the assembled M, C, G, K as Matrix Market files (for matrices lines)"},
     {"loci", cmd_rotor_loci,
      "fold loci in the speed and the unbalance, clearance or viscosity (TSV, PNG)"},
     {"response", cmd_rotor_response,

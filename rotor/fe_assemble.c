@@ -167,6 +167,10 @@ static int assemble(whirl_fe_rotor *r, const fe_desc *d) {
   fe_trip_init(&s.K, r->ndof);
   for (size_t k = 0; k < d->nel; ++k) add_element(&s, d, &d->el[k]);
   add_supports(&s, d, r->nnode);
+  fe_trip *dst[4] = {&s.M, &s.C, &s.G, &s.K};
+  for (int k = 0; d->imp && k < 4; ++k) /* the `matrices` line's */
+    for (size_t t = 0; t < d->imp[k].nt; ++t)
+      fe_trip_add(dst[k], d->imp[k].i[t], d->imp[k].j[t], d->imp[k].x[t]);
   int rc = fe_trip_to_csc(&s.M, &r->M);
   rc |= fe_trip_to_csc(&s.C, &r->C);
   rc |= fe_trip_to_csc(&s.G, &r->G);

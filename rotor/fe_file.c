@@ -45,12 +45,12 @@ typedef struct ctx {
 
 static int fail_at(ctx *c, int line, const char *fmt, ...) WHIRL_PRINTF_LIKE(3, 4);
 static int fail_at(ctx *c, int line, const char *fmt, ...) {
-  char what[400];
+  char where[600];
+  snprintf(where, sizeof where, "%s:%d", c->d->file, line);
   va_list ap;
   va_start(ap, fmt);
-  vsnprintf(what, sizeof what, fmt, ap);
+  whirl_errmsg_vat(c->msg, c->len, WHIRL_EINVAL, where, fmt, ap);
   va_end(ap);
-  if (c->msg && c->len) snprintf(c->msg, c->len, "%s:%d: %s", c->d->file, line, what);
   return WHIRL_EINVAL;
 }
 #define FAIL(c, ...) fail_at((c), (c)->line, __VA_ARGS__)
@@ -397,6 +397,42 @@ static int st_speed(ctx *c, char **tok, int ntok) {
   return 0;
 }
 
+/* nodes count=N: the nodes of a rotor whose linear part comes from
+ * matrices (no shaft line needed). */
+static int st_nodes(ctx *c, char **tok, int ntok) {
+  fe_desc *d = c->d;
+  double n = 0;
+  kv t[] = {{"count", K_REQ | K_NODE, &n, NULL, 0}};
+  int rc = once(c, "nodes", &d->nodes_line);
+  if (rc || (rc = parse_keys(c, "nodes", tok, ntok, t, NT(t)))) return rc;
+  if (n < 1 || n > 1e6) return FAIL(c, "nodes: count=%g must be between 1 and 1000000", n);
+  d->nodes_count = (int)n;
+  return 0;
+}
+
+/* matrices M=FILE C=FILE G=FILE K=FILE: Matrix Market files added to the
+ * assembled matrices (fe_matrix.c), paths relative to the rotor file. */
+static int st_matrices(ctx *c, char **tok, int ntok) {
+  fe_desc *d = c->d;
+  static const char names[] = "MCGK";
+  int rc = once(c, "matrices", &d->mtx_line);
+  for (int k = 0; !rc && k < ntok; k++) {
+    const char *eq = strchr(tok[k], '=');
+    const char *w = eq && eq - tok[k] == 1 ? strchr(names, tok[k][0]) : NULL;
+    if (!w || !eq[1]) return FAIL(c, "matrices: '%s' is not M=FILE, C=FILE, G=FILE or K=FILE", tok[k]);
+    char *dst = d->mtx[w - names];
+    if (dst[0]) return FAIL(c, "matrices: %c given twice", tok[k][0]);
+    char dir[sizeof d->file];
+    const char *slash = strrchr(d->file, '/');
+    const int dirlen = eq[1] == '/' || !slash ? 0 : (int)(slash - d->file + 1);
+    snprintf(dir, sizeof dir, "%.*s", dirlen, d->file);
+    if (snprintf(dst, sizeof d->mtx[0], "%s%s", dir, eq + 1) >= (int)sizeof d->mtx[0])
+      return FAIL(c, "matrices: the path of %c is too long", tok[k][0]);
+  }
+  if (!rc && !d->mtx[0][0] && !d->mtx[3][0]) return FAIL(c, "matrices: give at least M= or K=");
+  return rc;
+}
+
 static int st_reference(ctx *c, char **tok, int ntok) {
   fe_desc *d = c->d;
   double om = 0, f = 1;
@@ -438,6 +474,8 @@ static int statement(ctx *c, char *s) {
   if (!strcmp(kw, "gravity")) return st_gravity(c, tok + 1, ntok - 1);
   if (!strcmp(kw, "speed")) return st_speed(c, tok + 1, ntok - 1);
   if (!strcmp(kw, "reference")) return st_reference(c, tok + 1, ntok - 1);
+  if (!strcmp(kw, "nodes")) return st_nodes(c, tok + 1, ntok - 1);
+  if (!strcmp(kw, "matrices")) return st_matrices(c, tok + 1, ntok - 1);
   return FAIL(c, "unknown keyword '%s'", kw);
 }
 
@@ -507,14 +545,40 @@ static int check_nodes(ctx *c) {
   return rc;
 }
 
+/* The matrices of the `matrices` line into d->imp, 4 nnode square each;
+ * *mass gets M's trace over the translations (the rotor has mass). */
+static int read_matrices(ctx *c, double *mass) {
+  fe_desc *d = c->d;
+  d->imp = calloc(4, sizeof *d->imp);
+  if (!d->imp) return WHIRL_ENOMEM;
+  for (int k = 0; k < 4; k++) {
+    fe_trip_init(&d->imp[k], 4 * d->nnode);
+    char why[1200];
+    if (d->mtx[k][0] && fe_matrix_read(d->mtx[k], 4 * d->nnode, &d->imp[k], why, sizeof why))
+      return fail_at(c, d->mtx_line, "matrices: %c: %s", "MCGK"[k], why);
+  }
+  for (size_t t = 0; t < d->imp[0].nt; t++)
+    if (d->imp[0].i[t] == d->imp[0].j[t] && d->imp[0].i[t] % 4 < 2) *mass += d->imp[0].x[t] / 2;
+  return 0;
+}
+
 static int check_whole(ctx *c) {
   fe_desc *d = c->d;
   const int end = d->nlines > 0 ? d->nlines : 1;
-  if (d->nel == 0) return fail_at(c, end, "no shaft: a rotor needs at least one shaft line");
+  if (d->nel == 0 && !d->nodes_count)
+    return fail_at(c, end, "no shaft: a rotor needs at least one shaft line (or nodes and matrices)");
+  if (d->nodes_count && !d->mtx_line)
+    return fail_at(c, d->nodes_line, "nodes: the matrices line is missing");
+  if (d->mtx_line && !d->nodes_count && d->nel == 0)
+    return fail_at(c, d->mtx_line, "matrices: give the number of nodes (nodes count=N)");
   d->nnode = 0;
   for (size_t k = 0; k < d->nel; ++k)
     if (d->el[k].node + 2 > d->nnode) d->nnode = d->el[k].node + 2;
-  if ((size_t)d->nnode - 1 != d->nel) {
+  if (d->nodes_count && d->nel && d->nodes_count != d->nnode)
+    return fail_at(c, d->nodes_line, "nodes: count=%d, but the shaft has %d nodes",
+                   d->nodes_count, d->nnode);
+  if (d->nodes_count) d->nnode = d->nodes_count;
+  if (d->nel && (size_t)d->nnode - 1 != d->nel) {
     for (int n = 0; n + 1 < d->nnode; ++n) {
       size_t k = 0;
       while (k < d->nel && d->el[k].node != n) ++k;
@@ -530,7 +594,8 @@ static int check_whole(ctx *c) {
   }
   for (size_t k = 0; k < d->ndisk; ++k) mass += d->disk[k].m;
   for (size_t k = 0; k < d->nped; ++k) mass += d->ped[k].mass;
-  if (!(mass > 0)) return fail_at(c, end, "the rotor has no mass (every density and disk mass is 0)");
+  if (d->mtx_line && (rc = read_matrices(c, &mass))) return rc;
+  if (!(mass > 0)) return fail_at(c, end, "the rotor has no mass (every density, disk mass and imported M is 0)");
   return 0;
 }
 
@@ -552,6 +617,13 @@ int fe_parse(const char *path, fe_desc *d, char *msg, size_t len) {
 }
 
 void fe_desc_free(fe_desc *d) {
+  for (int k = 0; d->imp && k < 4; k++) {
+    free(d->imp[k].i);
+    free(d->imp[k].j);
+    free(d->imp[k].x);
+  }
+  free(d->imp);
+  d->imp = NULL;
   free(d->mat);
   free(d->el);
   free(d->disk);

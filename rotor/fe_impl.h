@@ -85,13 +85,23 @@ typedef struct fe_desc {
   int gravity_line, speed_line, reference_line, title_line;
   double speed_min, speed_max, omega_ref;
   char title[256];
-  int nnode; /* after fe_parse: shaft nodes */
+  int nnode; /* after fe_parse: shaft nodes (and `nodes count`) */
+  int nodes_count, nodes_line;
+  /* `matrices`: M, C, G, K from Matrix Market files (fe_matrix.c), paths
+   * relative to the rotor file's directory; read by fe_parse */
+  char mtx[4][1024];
+  int mtx_line;
+  struct fe_trip *imp; /* 4 triplet lists, or NULL */
 } fe_desc;
 
 /* Read PATH into d (zeroed first).  0, or WHIRL_EINVAL / WHIRL_EIO /
  * WHIRL_ENOMEM with "PATH:LINE: ..." in msg. */
 int fe_parse(const char *path, fe_desc *d, char *msg, size_t len);
 void fe_desc_free(fe_desc *d);
+
+/* ---- Matrix Market files (fe_matrix.c) ---------------------------------- */
+struct fe_trip;
+int fe_matrix_read(const char *path, int n, struct fe_trip *T, char *msg, size_t len);
 
 /* ---- triplets (i, j, x) summed into compressed columns ---------------- */
 typedef struct fe_trip {

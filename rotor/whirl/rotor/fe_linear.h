@@ -21,6 +21,7 @@
 #define WHIRL_ROTOR_FE_LINEAR_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include <whirl/rotor/fe.h>
 
 #ifdef __cplusplus
@@ -93,6 +94,13 @@ WHIRL_API int whirl_fe_critical_speeds(const whirl_fe_rotor *r,
  * ndof each.  Sparse LU (whirl/linsol.h) of the real 2ndof form. */
 WHIRL_API int whirl_fe_unbalance_response(const whirl_fe_rotor *r, double Omega,
                                           double *q_re, double *q_im,
+                                          char *msg, size_t len);
+
+/* Write the rotor's M, C, G or K (which: 'M', 'C', 'G', 'K') to f as a
+ * Matrix Market coordinate file (CHOLMOD's cholmod_write_sparse): the
+ * form a rotor file's `matrices` line reads back (doc/rotor-file.md).
+ * WHIRL_OK, WHIRL_EINVAL or WHIRL_EIO, the reason in msg. */
+WHIRL_API int whirl_fe_rotor_write_matrix(const whirl_fe_rotor *r, char which, FILE *f,
                                           char *msg, size_t len);
 
 #ifdef __cplusplus
