@@ -146,6 +146,31 @@ static int run_report(locus_run *L, int icp, int second, double wlo, double whi,
   return fn ? fn(&lp, ctx) : 0;
 }
 
+/* Follow the fold system fo of the scaled condensed HBM from (X, p) in
+ * the parameter icp (o's range), reporting `second` as value2 (−1: none);
+ * what names the curve in messages.  The body of both public functions. */
+static int follow_fold(const whirl_fe_rotor *r, const whirl_fe_locus_options *o,
+                       const whirl_fold_options *fo, int icp, int second, const double *X,
+                       const double *p, int direction, whirl_fe_locus_fn fn, void *ctx,
+                       const char *what, char *err, size_t errlen) {
+  whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o->hbm, err, errlen);
+  if (!h) return WHIRL_EINVAL;
+  double wlo = r->speed_min, whi = r->speed_max;
+  if (!(whi > wlo)) wlo = 0, whi = HUGE_VAL;
+  scaled s = {whirl_fe_hbm_system(h), o->omega_scale > 0 ? o->omega_scale : p[WHIRL_FE_P_OMEGA],
+              {0}};
+  locus_run L = {NULL, &s, NULL, NULL, NULL};
+  int rc = run_start(&L, o, fo, icp, X, p, direction, err, errlen);
+  while (!rc && (rc = whirl_cont_step(L.c)) == WHIRL_OK)
+    rc = run_report(&L, icp, second, wlo, whi, fn, ctx);
+  if (rc == WHIRL_DONE) rc = WHIRL_OK;
+  else if (rc < 0 && L.c && whirl_cont_errmsg(L.c)[0])
+    WHIRL_ERRMSG(err, errlen, rc, "%s: %s", what, whirl_cont_errmsg(L.c));
+  run_free(&L);
+  whirl_fe_hbm_free(h);
+  return rc;
+}
+
 int whirl_fe_hbm_fold_locus(const whirl_fe_rotor *r, const whirl_fe_locus_options *o,
                             const double *X, const double *p, int direction,
                             whirl_fe_locus_fn fn, void *ctx, char *err, size_t errlen) {
@@ -154,24 +179,10 @@ int whirl_fe_hbm_fold_locus(const whirl_fe_rotor *r, const whirl_fe_locus_option
     return WHIRL_ERRMSG(err, errlen, WHIRL_EINVAL,
                         "fold locus: need a second parameter (unbalance, clearance or "
                         "viscosity), pmin < pmax and a fold at a speed > 0");
-  whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o->hbm, err, errlen);
-  if (!h) return WHIRL_EINVAL;
-  double wlo = r->speed_min, whi = r->speed_max;
-  if (!(whi > wlo)) wlo = 0, whi = HUGE_VAL;
-  scaled s = {whirl_fe_hbm_system(h), o->omega_scale > 0 ? o->omega_scale : p[WHIRL_FE_P_OMEGA],
-              {0}};
-  locus_run L = {NULL, &s, NULL, NULL, NULL};
   whirl_fold_options fo;
   whirl_fold_options_default(&fo, WHIRL_FE_P_OMEGA);
-  int rc = run_start(&L, o, &fo, o->param, X, p, direction, err, errlen);
-  while (!rc && (rc = whirl_cont_step(L.c)) == WHIRL_OK)
-    rc = run_report(&L, o->param, -1, wlo, whi, fn, ctx);
-  if (rc == WHIRL_DONE) rc = WHIRL_OK;
-  else if (rc < 0 && L.c && whirl_cont_errmsg(L.c)[0])
-    WHIRL_ERRMSG(err, errlen, rc, "fold locus: %s", whirl_cont_errmsg(L.c));
-  run_free(&L);
-  whirl_fe_hbm_free(h);
-  return rc;
+  return follow_fold(r, o, &fo, o->param, -1, X, p, direction, fn, ctx, "fold locus", err,
+                     errlen);
 }
 
 int whirl_fe_hbm_merge_curve(const whirl_fe_rotor *r, const whirl_fe_locus_options *o,
@@ -183,13 +194,6 @@ int whirl_fe_hbm_merge_curve(const whirl_fe_rotor *r, const whirl_fe_locus_optio
     return WHIRL_ERRMSG(err, errlen, WHIRL_EINVAL,
                         "merge curve: need two different parameters among unbalance, "
                         "clearance and viscosity, and a merge point at a speed > 0");
-  whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o->hbm, err, errlen);
-  if (!h) return WHIRL_EINVAL;
-  double wlo = r->speed_min, whi = r->speed_max;
-  if (!(whi > wlo)) wlo = 0, whi = HUGE_VAL;
-  scaled s = {whirl_fe_hbm_system(h), o->omega_scale > 0 ? o->omega_scale : p[WHIRL_FE_P_OMEGA],
-              {0}};
-  locus_run L = {NULL, &s, NULL, NULL, NULL};
   /* the merge (isola-centre) condition w^T F_q = 0 as an extra equation,
    * the speed and o->param free, followed in `along` (whirl/fold.h) */
   whirl_fold_options fo;
@@ -200,13 +204,6 @@ int whirl_fe_hbm_merge_curve(const whirl_fe_rotor *r, const whirl_fe_locus_optio
   fo.cond = WHIRL_FOLD_COND_MG;
   whirl_fe_locus_options oa = *o;
   oa.pmin = o->pmin2, oa.pmax = o->pmax2;
-  int rc = run_start(&L, &oa, &fo, along, X, p, direction, err, errlen);
-  while (!rc && (rc = whirl_cont_step(L.c)) == WHIRL_OK)
-    rc = run_report(&L, along, o->param, wlo, whi, fn, ctx);
-  if (rc == WHIRL_DONE) rc = WHIRL_OK;
-  else if (rc < 0 && L.c && whirl_cont_errmsg(L.c)[0])
-    WHIRL_ERRMSG(err, errlen, rc, "merge curve: %s", whirl_cont_errmsg(L.c));
-  run_free(&L);
-  whirl_fe_hbm_free(h);
-  return rc;
+  return follow_fold(r, &oa, &fo, along, o->param, X, p, direction, fn, ctx, "merge curve",
+                     err, errlen);
 }

@@ -8,16 +8,8 @@
 #     and no temporary directory (*.tmp.*) behind.
 # A positive control first checks that the base file works.
 # SPDX-License-Identifier: BSD-3-Clause
-set -u
-top_builddir=${top_builddir:-.}
-WHIRL="$top_builddir/drivers/whirl"
-case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-roterr.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-n=0
-fails=0
-ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
+name=roterr
+. "${top_srcdir:-.}/test/regress/tap.sh"
 
 base='material steel E=211e9 G=81.2e9 rho=7810
 shaft from=0 to=4 length=1 od=0.05 material=steel
@@ -138,5 +130,4 @@ rc=$?
 [ $rc -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && grep -q '^whirl rotor: missing.rotor: cannot open' err.txt && [ ! -s out.txt ]
 ok $? "a missing rotor file: exit 2, one message"
 
-echo "1..$n"
-[ $fails -eq 0 ]
+tap_end

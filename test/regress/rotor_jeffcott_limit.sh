@@ -10,19 +10,9 @@
 #  - the four folds of the response equal the Jeffcott model's to 1e-8
 #    relative (both 4 harmonics).
 # SPDX-License-Identifier: BSD-3-Clause
-set -u
-top_builddir=${top_builddir:-.}
-top_srcdir=${top_srcdir:-.}
-WHIRL="$top_builddir/drivers/whirl"
-case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
-case $top_srcdir in /*) ;; *) top_srcdir="$(pwd)/$top_srcdir" ;; esac
+name=jefflim
+. "${top_srcdir:-.}/test/regress/tap.sh"
 ex="$top_srcdir/examples/rotor/jeffcott-limit.rotor"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-jefflim.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-n=0
-fails=0
-ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
 
 # linear: m_d y'' + k_s (y - y_j) = 0, 2 m_j y_j'' + 2 k_r y_j - k_s (y - y_j) = 0
 grep -v "^bearing node=1 \|^sfd" "$ex" > linear.rotor
@@ -47,5 +37,4 @@ echo "# folds, FE rotor:       $(tr '\n' ' ' < lp.fe)"
 worst=$(paste lp.fe lp.jeffcott | awk '{ d = ($1 - $2) / $2; if (d < 0) d = -d; if (d > w) w = d } END { if (NR != 4) print 1; else printf "%.3g", w }')
 ok "$(awk -v d="$worst" 'BEGIN { exit !(d < 1e-8) }'; echo $?)" "four folds equal the Jeffcott model's to 1e-8 (worst $worst)"
 
-echo "1..$n"
-[ "$fails" -eq 0 ]
+tap_end

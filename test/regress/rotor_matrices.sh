@@ -8,19 +8,9 @@
 # two SFDs added by lines give the same folds; bad matrices lines are
 # FILE:LINE, exit 2.
 # SPDX-License-Identifier: BSD-3-Clause
-set -u
-top_builddir=${top_builddir:-.}
-top_srcdir=${top_srcdir:-.}
-WHIRL="$top_builddir/drivers/whirl"
-case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
-case $top_srcdir in /*) ;; *) top_srcdir="$(pwd)/$top_srcdir" ;; esac
+name=rotmtx
+. "${top_srcdir:-.}/test/regress/tap.sh"
 ex="$top_srcdir/examples/rotor"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-rotmtx.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-n=0
-fails=0
-ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
 
 "$WHIRL" rotor export "$ex/friswell-5.9.1.rotor" -o fr --quiet 2> err.txt
 ok $? "whirl rotor export friswell-5.9.1.rotor: $(head -c 200 err.txt)"
@@ -61,5 +51,4 @@ bad "stiffness without mass" "$(printf 'nodes count=7\nmatrices K=K.mtx')" 2 "ha
 bad "nodes without matrices" "nodes count=3" 1 "the matrices line is missing"
 bad "a key of matrices" "$(printf 'nodes count=7\nmatrices X=K.mtx')" 2 "is not M=FILE"
 
-echo "1..$n"
-[ "$fails" -eq 0 ]
+tap_end

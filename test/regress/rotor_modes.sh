@@ -11,19 +11,9 @@
 # circular orbits with the phases of a single resonance; the complete
 # examples of doc/rotor-file.md read and solve.
 # SPDX-License-Identifier: BSD-3-Clause
-set -u
-top_builddir=${top_builddir:-.}
-top_srcdir=${top_srcdir:-.}
-WHIRL="$top_builddir/drivers/whirl"
-case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
-case $top_srcdir in /*) ;; *) top_srcdir="$(pwd)/$top_srcdir" ;; esac
+name=rotmodes
+. "${top_srcdir:-.}/test/regress/tap.sh"
 ex="$top_srcdir/examples/rotor/friswell-5.9.1.rotor"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-rotmodes.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-n=0
-fails=0
-ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
 
 # TSV column COL of rows 2..7 rounded to 2 decimals is the list WANT
 rounded() {
@@ -128,5 +118,4 @@ grep -v '^#' "$top_srcdir/examples/rotor/friswell-5.9.1.rotor" | grep . > ex1.tx
 cmp -s doc1.rotor ex1.txt
 ok $? "doc/rotor-file.md's first example is examples/rotor/friswell-5.9.1.rotor (without comments)"
 
-echo "1..$n"
-[ $fails -eq 0 ]
+tap_end

@@ -14,19 +14,9 @@
 # Kyx Cxy) / (Cxx + Cyy), nu^2 = ((Kxx - K_eq)(Kyy - K_eq) - Kxy Kyx) /
 # (Cxx Cyy - Cxy Cyx)), solved for Omega by bisection here.
 # SPDX-License-Identifier: BSD-3-Clause
-set -u
-top_builddir=${top_builddir:-.}
-top_srcdir=${top_srcdir:-.}
-WHIRL="$top_builddir/drivers/whirl"
-case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
-case $top_srcdir in /*) ;; *) top_srcdir="$(pwd)/$top_srcdir" ;; esac
+name=oilwhirl
+. "${top_srcdir:-.}/test/regress/tap.sh"
 ex="$top_srcdir/examples/rotor/oil-whirl.rotor"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-oilwhirl.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-n=0
-fails=0
-ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
 
 want=$(awk 'BEGIN {
   PI = 3.14159265358979323846
@@ -68,5 +58,4 @@ awk -F '\t' 'NF > 5 && $2 == 1 { if ($1 == "TR") seen = 1; else if ($1 != "EP" &
   END { exit bad || !seen }' ow/branches.tsv
 ok $? "stable below the threshold, unstable above"
 
-echo "1..$n"
-[ "$fails" -eq 0 ]
+tap_end

@@ -19,19 +19,9 @@
 #    exact for the pi film), and 3 harmonics report no TR or PD (the
 #    stiff shaft's unresolved modes once made 22).
 # SPDX-License-Identifier: BSD-3-Clause
-set -u
-top_builddir=${top_builddir:-.}
-top_srcdir=${top_srcdir:-.}
-WHIRL="$top_builddir/drivers/whirl"
-case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
-case $top_srcdir in /*) ;; *) top_srcdir="$(pwd)/$top_srcdir" ;; esac
+name=rigidlim
+. "${top_srcdir:-.}/test/regress/tap.sh"
 ex="$top_srcdir/examples/rotor/rigid-limit.rotor"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-rigidlim.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-n=0
-fails=0
-ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
 
 # the rigid rotor: its three folds, and a stable point of the isola
 "$WHIRL" sfd response --out rigid --quiet > /dev/null 2>&1
@@ -124,5 +114,4 @@ echo "# merge curve: $npts points against whirl sfd merge, worst relative delta 
 ok "$(awk -v w="$worst" -v k="$npts" 'BEGIN { exit !(k >= 5 && w < 1e-5) }'; echo $?)" \
   "the merge curve in (clearance, unbalance) is the rigid rotor's delta(lambda) to 1e-5 ($npts points, $worst)"
 
-echo "1..$n"
-[ "$fails" -eq 0 ]
+tap_end
