@@ -105,6 +105,8 @@ int cmd_sfd_merge(int argc, char **argv);
 int cmd_sfd_region(int argc, char **argv);
 /* whirl rotor modes|campbell (cmd_rotor.c); the help items of its commands */
 int cmd_rotor(int argc, char **argv);
+int cmd_rotor_response(int argc, char **argv); /* cmd_rotor_response.c */
+int cmd_rotor_loci(int argc, char **argv);     /* cmd_rotor_loci.c */
 void cli_rotor_help(FILE *f, const char *prefix, size_t col);
 
 #endif

@@ -68,7 +68,7 @@ static int method_of(const char *cmd, const char *m, whirl_fe_modes_options *o) 
 
 #define OPT_METHOD(m)                                                          \
   {"--method", CLI_STRING, &(m), "M",                                          \
-   "eigensolver: auto (dense QZ up to 400 DOFs, else ARPACK), dense, arpack",  \
+   "eigensolver: auto (dense QZ up to 150 DOFs, else ARPACK), dense, arpack",  \
    NULL}
 
 /* ------------------------------------------------------------- modes */
@@ -277,6 +277,77 @@ int cmd_rotor_campbell(int argc, char **argv) {
   return rc;
 }
 
+/* --------------------------------------------------------- unbalance */
+
+static const cli_doc unbalance_doc = {
+"usage: whirl rotor unbalance FILE --node K [options]\n"
+"\n"
+"The linear steady response of node K to the rotor's unbalances over a\n"
+"speed range (the nonlinear elements left out): y(t) = y_amp cos(Wt +\n"
+"y_phase), likewise z; the orbit's semi-axes and its whirl.\n"
+"\n"
+"options:\n",
+"stdout: TSV 'speed_rpm speed_rad_s y_amp y_phase_deg z_amp z_phase_deg\n"
+"major minor whirl' (amplitudes in m).\n"
+"exit status: 0, 1 a failed solve (an undamped resonance), 2 bad options or\n"
+"rotor file.\n"};
+
+/* One row: Q = (Y, Z) at the node; y + iz = r+ e^{iΩt} + r− e^{−iΩt} with
+ * r+ = |Y + iZ|/2, r− = |Y − iZ|/2: major r+ + r−, minor |r+ − r−|. */
+static void unbalance_row(double Om, double yr, double yi, double zr, double zi) {
+  const double rp = hypot(yr - zi, yi + zr) / 2, rm = hypot(yr + zi, yi - zr) / 2;
+  printf("%.10g\t%.10g\t%.10g\t%.8g\t%.10g\t%.8g\t%.10g\t%.10g\t%s\n", Om / RPM, Om, hypot(yr, yi),
+         atan2(yi, yr) * 180 / WHIRL_PI, hypot(zr, zi), atan2(zi, zr) * 180 / WHIRL_PI, rp + rm,
+         fabs(rp - rm), rp >= rm ? "forward" : "backward");
+}
+
+static int has_unbalance(const whirl_fe_rotor *r) {
+  for (int k = 0; k < r->ndof; ++k)
+    if (r->unb_c[k] != 0 || r->unb_s[k] != 0) return 1;
+  return 0;
+}
+
+int cmd_rotor_unbalance(int argc, char **argv);
+int cmd_rotor_unbalance(int argc, char **argv) {
+  const char *CMD = "rotor unbalance", *file, *unit = "rpm", *spec = NULL;
+  int node = -1;
+  const cli_opt opts[] = {
+      {"--node", CLI_INT, &node, "K", "the node whose response is shown", "required"},
+      {"--speeds", CLI_STRING, &spec, "A:B:N", "N speeds from A to B, in --unit",
+       "the file's speed range, 101 speeds"},
+      {"--unit", CLI_STRING, &unit, "U", "unit of --speeds: rpm, rad/s or hz", NULL}};
+  int rc = parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &unbalance_doc, &file);
+  if (rc) return rc == 1 ? 0 : 2;
+  const double f = unit_factor(CMD, unit);
+  if (f < 0) return 2;
+  whirl_fe_rotor *r = load(file);
+  if (!r) return 2;
+  size_t ns = 0;
+  double *sp = NULL, *q = NULL;
+  rc = 2;
+  if (node < 0 || node >= r->nnode) cli_error(CMD, "--node must be a shaft node, 0..%d", r->nnode - 1);
+  else if (!has_unbalance(r)) cli_error("rotor", "%s: the rotor has no unbalance", file);
+  else if ((sp = speed_grid(CMD, spec, f, r, &ns)) && !(q = malloc(2 * (size_t)r->ndof * sizeof *q)))
+    cli_error(CMD, "out of memory");
+  if (q) {
+    rc = 0;
+    printf("speed_rpm\tspeed_rad_s\ty_amp\ty_phase_deg\tz_amp\tz_phase_deg\tmajor\tminor\twhirl\n");
+    char msg[512];
+    for (size_t k = 0; k < ns && !rc; ++k) {
+      double *qr = q, *qi = q + r->ndof;
+      if (whirl_fe_unbalance_response(r, sp[k], qr, qi, msg, sizeof msg)) {
+        cli_error(CMD, "%s", msg);
+        rc = 1;
+      } else
+        unbalance_row(sp[k], qr[4 * node], qi[4 * node], qr[4 * node + 1], qi[4 * node + 1]);
+    }
+  }
+  free(q);
+  free(sp);
+  whirl_fe_rotor_free(r);
+  return rc;
+}
+
 /* ---------------------------------------------------------- dispatch */
 
 static const struct {
@@ -287,7 +358,15 @@ static const struct {
     {"modes", cmd_rotor_modes,
      "damped natural frequencies, log decrements and whirl at one speed"},
     {"campbell", cmd_rotor_campbell,
-     "Campbell diagram and critical speeds over a speed range (TSV, PNG)"}};
+     "Campbell diagram and critical speeds over a speed range (TSV, PNG)"},
+    {"unbalance", cmd_rotor_unbalance,
+     "linear unbalance response of a node over a speed range (the nonlinear elements "
+     "left out)"},
+    {"loci", cmd_rotor_loci,
+     "fold loci in the speed and the unbalance, clearance or viscosity (TSV, PNG)"},
+    {"response", cmd_rotor_response,
+     "periodic unbalance response with the nonlinear elements: harmonic balance "
+     "in speed, folds, stability (TSV, PNG)"}};
 #define NROTOR (sizeof rotor_commands / sizeof rotor_commands[0])
 
 void cli_rotor_help(FILE *f, const char *prefix, size_t col) {
@@ -302,7 +381,7 @@ int cmd_rotor(int argc, char **argv) {
   if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
     FILE *f = argc < 2 ? stderr : stdout;
     fprintf(f, "usage: whirl rotor <command> FILE [options]\n\n"
-               "Linear analyses of a finite-element rotor file (doc/rotor-file.md).\n"
+               "Analyses of a finite-element rotor file (doc/rotor-file.md).\n"
                "commands:\n");
     cli_rotor_help(f, "", 20);
     fprintf(f, "\n  whirl rotor <command> --help   options of a command\n");

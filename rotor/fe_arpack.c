@@ -162,12 +162,17 @@ static int arnoldi(op *o, work *w, double tol, int *nconv, char *msg, size_t len
 
 /* The Ritz pairs ν, z of OP as s = σ + 1/ν with Im s > 0 and their whirl. */
 static int ritz(const whirl_fe_rotor *r, const work *w, double sigma, int nconv, fe_eigs *e) {
+  const double szero = FE_SZERO * fe_omega0(r);
   double *vi = malloc((size_t)r->ndof * sizeof *vi);
   if (!vi) return WHIRL_ENOMEM;
   for (int j = 0; j < nconv; ++j) {
     if (!(w->di[j] > 0) || j + 1 > w->nev) continue; /* the first of a pair */
     const double a = w->dr[j], b = w->di[j], n2 = a * a + b * b;
     double re = sigma + a / n2, im = -b / n2, sg = 1; /* vector z_j + i z_j+1 */
+    if (hypot(re, im) < szero) { /* a rigid-body mode */
+      j++;
+      continue;
+    }
     if (im < 0) {
       im = -im;
       sg = -1;
@@ -195,7 +200,16 @@ int fe_eig_arpack(const whirl_fe_rotor *r, double Omega, double shift, double to
   op o;
   work w;
   memset(&w, 0, sizeof w);
+  /* shift 0: just left of 0, where K + σD + σ²M is regular also for a
+   * free rotor (K singular, or nearly so by round-off, which would spoil
+   * the LU) and the rigid-body modes come out clean, to be dropped */
+  if (shift == 0) shift = -1e-4 * fe_omega0(r);
   int nconv = 0, rc = op_init(&o, r, Omega, shift, msg, len);
+  if (rc == WHIRL_ESINGULAR) { /* K singular (a free rotor): just off 0 */
+    op_free(&o);
+    shift -= 1e-2 * fe_omega0(r);
+    rc = op_init(&o, r, Omega, shift, msg, len);
+  }
   if (!rc) rc = work_alloc(&w, N, (int)nev);
   if (!rc) rc = fe_eigs_alloc(e, nev + 1);
   if (rc == WHIRL_ENOMEM && msg && len) snprintf(msg, len, "out of memory");

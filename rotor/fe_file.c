@@ -150,6 +150,14 @@ static int st_material(ctx *c, char *name, char **tok, int ntok) {
             {"rho", K_REQ | K_NONNEG, &m.rho, NULL, 0}};
   int rc = parse_keys(c, "material", tok, ntok, t, NT(t));
   if (rc) return rc;
+  /* Cowper's shear coefficient needs Poisson's ratio ν = E/(2G) − 1 of an
+   * isotropic solid, −1 < ν ≤ 1/2: G > 10 E (ν → −1) makes it vanish,
+   * the shear deformation grow without bound */
+  const double nu = m.E / (2 * m.G) - 1;
+  if (!(nu > -0.95 && nu <= 0.5))
+    return FAIL(c, "material '%s': E = %g and G = %g give Poisson's ratio %g, outside "
+                "(-0.95, 0.5] (for a rigid shaft scale both: G = E/2.6)",
+                name, m.E, m.G, nu);
   if (PUSH(d->mat, d->nmat, d->cmat)) return WHIRL_ENOMEM;
   d->mat[d->nmat++] = m;
   return 0;

@@ -3,6 +3,8 @@
  * derivatives and the optional Hill spectrum, on the linear part of
  * fe_hbm_lin.c (condensed or not) and the AFT forces of fe_hbm_aft.c.
  * SPDX-License-Identifier: BSD-3-Clause */
+#include "config.h"
+
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -15,6 +17,7 @@ void whirl_fe_hbm_options_default(whirl_fe_hbm_options *o) {
   o->harmonics = 5;
   o->nu = 1;
   o->stability = -1;
+  o->hill_nev = 24;
 }
 
 void whirl_fe_hbm_params(double Omega, double *p) {
@@ -203,6 +206,11 @@ static int check_options(const whirl_fe_rotor *r, const whirl_fe_hbm_options *o,
     return WHIRL_ERRMSG(err, errlen, WHIRL_EINVAL,
                         "the rotor needs nonlinear elements and ndof = "
                         "4 nnode + 2 npedestal");
+  if (o->stability < -1 || o->stability > 2 ||
+      (o->stability == 2 && o->hill_nev < 1))
+    return WHIRL_ERRMSG(err, errlen, WHIRL_EINVAL,
+                        "stability %d, hill_nev %zu: need -1, 0, 1 or 2, and "
+                        "hill_nev >= 1 for 2", o->stability, o->hill_nev);
   if (o->harmonics < 1 || o->harmonics > 256 || o->nu < 1 ||
       o->nu > o->harmonics)
     return WHIRL_ERRMSG(err, errlen, WHIRL_EINVAL,
@@ -214,7 +222,7 @@ static int check_options(const whirl_fe_rotor *r, const whirl_fe_hbm_options *o,
     for (*N = 32; *N < 6 * H + 1; *N *= 2) {}
   if (*N <= 2 * H)
     return WHIRL_ERRMSG(err, errlen, WHIRL_EINVAL,
-                        "nsamples %d: need more than 2 harmonics = %d", *N,
+                        "nsamples %d: need more than 2 H = %d", *N,
                         2 * H);
   return WHIRL_OK;
 }
@@ -233,8 +241,17 @@ static void fill_system(whirl_fe_hbm *h) {
   s->p_names = pnames;
   s->data = h;
   size_t hill = 2 * (size_t)h->r->ndof * (size_t)h->L;
-  if (h->o.stability > 0 || (h->o.stability < 0 && hill <= 1200)) {
-    s->nspec = 2 * (size_t)h->r->ndof;
+  h->hill = h->o.stability;
+  if (h->hill < 0) {
+#ifdef WHIRL_HAVE_ARPACK
+    h->hill = hill <= 1200 ? 1 : 2;
+#else
+    h->hill = hill <= 1200 ? 1 : 0;
+#endif
+  }
+  if (h->hill == 2 && hill < h->o.hill_nev + 4) h->hill = 1;
+  if (h->hill > 0) {
+    s->nspec = h->hill == 1 ? 2 * (size_t)h->r->ndof : h->o.hill_nev;
     s->spectrum = fe_hbm_spectrum;
     s->spectrum_kind = WHIRL_SPEC_MULTIPLIERS;
   }

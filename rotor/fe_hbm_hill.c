@@ -10,11 +10,11 @@
  *   λ² A2 + λ A1 + A0 = 0,  A2 = M_H,  A1 = C_H + 2 M_H ∇,
  *   A0 = K_H + C_H ∇ + M_H ∇²  (the Jacobian of the uncondensed HBM),
  * solved as the first-order companion [0 I; −A2⁻¹A0 −A2⁻¹A1] by LAPACK
- * dgeev.  Each Floquet exponent appears 2H + 1 times, shifted by i k ω;
- * the 2 ndof eigenvalues of smallest |Im λ| are kept (Lazarus & Thomas,
- * C. R. Mécanique 338 (2010) 510; Peletan, Baguet, Torkhani & Jacquet-
- * Richardet, Nonlinear Dyn. 71 (2013) 315), and the multipliers are
- * exp(λ 2π/ω).
+ * dgeev.  Each Floquet exponent appears 2H + 1 times, shifted by i k ω
+ * (Lazarus & Thomas, C. R. Mécanique 338 (2010) 510; Peletan, Baguet,
+ * Torkhani & Jacquet-Richardet, Nonlinear Dyn. 71 (2013) 315); the members
+ * in the strip |Im λ| ≤ ω/2 are kept (select_exponents), and the
+ * multipliers are exp(λ 2π/ω).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdlib.h>
@@ -117,20 +117,23 @@ static int companion(const whirl_fe_hbm *h, const double *A, double *Q,
   return rc;
 }
 
-/* Keep the 2 ndof eigenvalues of smallest |Im|, sorted by decreasing Re. */
+/* The Floquet exponents among the Hill eigenvalues: each family
+ * λ + i k ω has one member in the strip |Im| ≤ ω/2, the one the truncated
+ * series represents best; the others (|k| > 0) are aliases, accurate only
+ * while |k| is well below H.  Keep the strip's members, at most `keep`,
+ * by decreasing Re.  A mode far above H ω (a stiff shaft's bending) has no
+ * member in the strip: it is not resolved by the truncation, and is
+ * reported as a multiplier 0 (re = −∞), the fill that keeps the count at
+ * `keep`.  (Taking the `keep` eigenvalues of smallest |Im| instead, as
+ * Lazarus & Thomas 2010 do, fills the place of such modes with aliases of
+ * the resolved ones at |k| ≈ H, whose real parts are wrong: spurious
+ * TR points on a stiff rotor.) */
 static void select_exponents(const double *wr, const double *wi, size_t n2,
-                             size_t keep, double *re, double *im) {
-  char *used = calloc(n2, 1);
-  for (size_t s = 0; s < keep; ++s) {
-    size_t best = 0;
-    double bv = INFINITY;
-    for (size_t i = 0; i < n2; ++i)
-      if (!(used && used[i]) && fabs(wi[i]) < bv) { bv = fabs(wi[i]); best = i; }
-    if (used) used[best] = 1;
-    re[s] = wr[best];
-    im[s] = wi[best];
-  }
-  free(used);
+                             size_t keep, double w, double *re, double *im) {
+  size_t s = 0;
+  for (size_t i = 0; i < n2 && s < keep; ++i)
+    if (fabs(wi[i]) <= 0.5 * w * (1 + 1e-9)) re[s] = wr[i], im[s] = wi[i], s++;
+  for (; s < keep; ++s) re[s] = -HUGE_VAL, im[s] = 0.0;
   for (size_t i = 1; i < keep; ++i) /* insertion sort by decreasing Re */
     for (size_t j = i; j > 0 && re[j] > re[j - 1]; --j) {
       double t = re[j]; re[j] = re[j - 1]; re[j - 1] = t;
@@ -151,7 +154,7 @@ int fe_hill_exponents(whirl_fe_hbm *h, const double *qfull, const double *p,
   if (!rc) rc = companion(h, A, Q, p[WHIRL_FE_P_OMEGA] / h->o.nu);
   if (!rc) rc = whirl_eig_compute(e, Q, wr, wr + n2);
   if (!rc) {
-    select_exponents(wr, wr + n2, n2, keep, re, im);
+    select_exponents(wr, wr + n2, n2, keep, p[WHIRL_FE_P_OMEGA] / h->o.nu, re, im);
     *m = keep;
   }
   whirl_eig_free(e);
@@ -165,6 +168,8 @@ int whirl_fe_hbm_hill(whirl_fe_hbm *h, const double *X, const double *p,
                       double *re, double *im, size_t *m) {
   int rc = whirl_fe_hbm_recover(h, X, p, h->qfull);
   if (rc) return rc;
+  if (h->hill == 2)
+    return fe_hill_sparse(h, h->qfull, p, h->o.hill_nev, re, im, m);
   return fe_hill_exponents(h, h->qfull, p, re, im, m);
 }
 
@@ -173,6 +178,7 @@ int fe_hbm_spectrum(const double *X, const double *p, const double *J,
                     double *re, double *im, size_t *m, void *data) {
   (void)J;
   whirl_fe_hbm *h = data;
+  if (!(p[WHIRL_FE_P_OMEGA] > 0)) return WHIRL_ESINGULAR; /* T infinite: unknown */
   int rc = whirl_fe_hbm_hill(h, X, p, re, im, m);
   if (rc) return rc;
   double T = 2.0 * WHIRL_PI * h->o.nu / p[WHIRL_FE_P_OMEGA];

@@ -117,6 +117,7 @@ struct whirl_fe_hbm {
   fe_aft aft;
   fe_lin lin;
   double Ls, Fs;           /* length and force scales */
+  int hill;                /* 0 none, 1 dense, 2 sparse (ARPACK) */
   whirl_system sys;
   double *q, *f, *fp, *fm, *Jnl; /* work: SI coefficients, forces, m L;
                                     (m L)² (3 (m L)² for Hill) */
@@ -130,5 +131,9 @@ int fe_hbm_spectrum(const double *X, const double *p, const double *J,
                     double *re, double *im, size_t *m, void *data);
 int fe_hill_exponents(whirl_fe_hbm *h, const double *qfull, const double *p,
                       double *re, double *im, size_t *m);
+/* The same by ARPACK on the sparse Hill pencil (fe_hbm_hill_sparse.c): the
+ * exponents in the strip |Im| ≤ ω/2 among the nev nearest a small shift. */
+int fe_hill_sparse(whirl_fe_hbm *h, const double *qfull, const double *p,
+                   size_t nev, double *re, double *im, size_t *m);
 
 #endif

@@ -124,6 +124,10 @@ typedef struct fe_eigs {
 } fe_eigs;
 int fe_eigs_alloc(fe_eigs *e, size_t n);
 void fe_eigs_free(fe_eigs *e);
+/* (max|K| / max|M|)^½, the frequency scale of the discretisation */
+double fe_omega0(const whirl_fe_rotor *r);
+/* |s| < FE_SZERO ω0 is a rigid-body (zero) eigenvalue, dropped */
+#define FE_SZERO 1e-6
 /* The whirl of the mode x = (vr + i vi)[0..ndof) (fe_modes.c). */
 int fe_whirl_of(const whirl_fe_rotor *r, const double *vr, const double *vi);
 /* D = C + Ω G as one matrix (pattern union) */

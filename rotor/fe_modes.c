@@ -29,7 +29,7 @@ extern void dggevx_(const char *balanc, const char *jobvl, const char *jobvr, co
 
 void whirl_fe_modes_options_default(whirl_fe_modes_options *o) {
   o->method = WHIRL_FE_EIG_AUTO;
-  o->dense_max = 400;
+  o->dense_max = 150;
   o->shift = 0;
   o->tol = 0;
 }
@@ -82,6 +82,11 @@ static double max_abs(const whirl_fe_csc *A) {
   return m;
 }
 
+double fe_omega0(const whirl_fe_rotor *r) {
+  const double km = max_abs(&r->K), mm = max_abs(&r->M);
+  return km > 0 && mm > 0 ? sqrt(km / mm) : 1;
+}
+
 /* A, B of the first-order form, dense N×N column-major, N = 2 ndof, with
  * the second block v = s x/ω0, ω0 = (max|K| / max|M|)^½, so that both
  * blocks of A are of one size:  A = [0 ω0 I; −K/ω0 −D],  B = [I 0; 0 M]. */
@@ -89,8 +94,7 @@ static int pencil(const whirl_fe_rotor *r, double Omega, double *A, double *B) {
   const int n = r->ndof, N = 2 * n;
   whirl_fe_csc D;
   if (fe_damping(r, Omega, &D)) return WHIRL_ENOMEM;
-  const double km = max_abs(&r->K), mm = max_abs(&r->M);
-  const double w0 = km > 0 && mm > 0 ? sqrt(km / mm) : 1;
+  const double w0 = fe_omega0(r);
   memset(A, 0, (size_t)N * N * sizeof *A);
   memset(B, 0, (size_t)N * N * sizeof *B);
   for (int k = 0; k < n; ++k) {
@@ -113,14 +117,20 @@ static int pencil(const whirl_fe_rotor *r, double Omega, double *A, double *B) {
 /* The finite eigenvalues with Im s > 0 of the pencil, with their whirl. */
 static int collect(const whirl_fe_rotor *r, int N, const double *ar, const double *ai,
                    const double *be, const double *VR, fe_eigs *e) {
-  double lmax = 0; /* the largest finite |λ| = 1/|s|min */
-  for (int j = 0; j < N; ++j)
-    if (be[j] != 0) lmax = fmax(lmax, hypot(ar[j], ai[j]) / fabs(be[j]));
+  /* |s| below szero is a rigid-body mode (s = 0, defective: its
+   * round-off is of the order √ε ω0); lmax the largest |λ| = 1/|s| of the
+   * others, and |λ| ≤ 1e-12 lmax an infinite s (a massless DOF) */
+  const double szero = FE_SZERO * fe_omega0(r);
+  double lmax = 0;
+  for (int j = 0; j < N; ++j) {
+    const double l = be[j] != 0 ? hypot(ar[j], ai[j]) / fabs(be[j]) : INFINITY;
+    if (l * szero < 1) lmax = fmax(lmax, l);
+  }
   for (int j = 0; j < N; ++j) {
     if (ai[j] == 0 || be[j] == 0) continue; /* real, or s = 0 */
     const int j0 = ai[j] > 0 ? j : j - 1;   /* the pair's real column */
-    const double a2 = ar[j] * ar[j] + ai[j] * ai[j];
-    if (!(sqrt(a2) / fabs(be[j]) > 1e-12 * lmax)) continue; /* s infinite */
+    const double a2 = ar[j] * ar[j] + ai[j] * ai[j], l = sqrt(a2) / fabs(be[j]);
+    if (!(l > 1e-12 * lmax) || !(l * szero < 1)) continue; /* s infinite or 0 */
     const double re = be[j] * ar[j] / a2, im = -be[j] * ai[j] / a2; /* s = 1/λ */
     if (!(im > 0) || !isfinite(re) || !isfinite(im)) continue;
     const double sg = j == j0 ? 1 : -1; /* λ_j's vector: VR_j0 + sg i VR_j0+1 */
@@ -154,7 +164,7 @@ int fe_eig_dense(const whirl_fe_rotor *r, double Omega, fe_eigs *e, char *msg, s
   if (!(ls = malloc(2 * (size_t)N * sizeof *ls)) || !(iw = malloc(((size_t)N + 6) * sizeof *iw)))
     goto done;
 #define GGEVX(wk, lw)                                                                         \
-  dggevx_("N", "N", "V", "N", &N, B, &N, A, &N, ar, ai, be, &dummy, &one, VR, &N, &ilo, &ihi,  \
+  dggevx_("B", "N", "V", "N", &N, B, &N, A, &N, ar, ai, be, &dummy, &one, VR, &N, &ilo, &ihi,  \
           ls, ls + N, &abn, &bbn, &dummy, &dummy, wk, lw, iw, &bw, &info, 1, 1, 1, 1)
   GGEVX(&wq, &lwork);
   lwork = info == 0 && wq >= 6 * N ? (int)wq : 6 * N + 16;
@@ -194,7 +204,7 @@ static int solve(const whirl_fe_rotor *r, double Omega, const whirl_fe_modes_opt
   fe_eigs e;
   int dense = o->method == WHIRL_FE_EIG_DENSE || (o->method == WHIRL_FE_EIG_AUTO && r->ndof <= o->dense_max);
   int rc = dense ? fe_eig_dense(r, Omega, &e, msg, len)
-                 : fe_eig_arpack(r, Omega, o->shift, o->tol, 2 * nmodes + 6, &e, msg, len);
+                 : fe_eig_arpack(r, Omega, o->shift, o->tol, 2 * nmodes + 14, &e, msg, len);
   if (rc) return rc;
   whirl_fe_mode *m = malloc((e.n + 1) * sizeof *m);
   if (!m) {
@@ -231,7 +241,7 @@ int whirl_fe_modes(const whirl_fe_rotor *r, double Omega, const whirl_fe_modes_o
   int rc = solve(r, Omega, o, nmodes, &m, &n, msg, len);
   if (rc) return rc;
   if (Omega == 0 && n > 0) { /* the whirl as the rotor starts turning */
-    rc = solve(r, 1e-4 * m[0].omega, o, nmodes, &m2, &n2, msg, len);
+    rc = solve(r, 1e-3 * m[0].omega, o, nmodes, &m2, &n2, msg, len);
     if (rc) {
       free(m);
       return rc;

@@ -20,6 +20,7 @@
 #include <whirl/rotor/sfd_region.h>
 #include <whirl/rotor/fe.h>
 #include <whirl/rotor/fe_linear.h>
+#include <whirl/rotor/fe_hbm.h>
 
 #ifdef __cplusplus
 extern "C" {

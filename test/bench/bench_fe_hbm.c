@@ -7,6 +7,8 @@
  *   step   one Newton step at that speed: F, the dense analytic Jacobian,
  *          LU and solve (ms)
  *   solve  the Newton solve from X = 0 (ms, iterations)
+ *   hill   the stability of that orbit by the sparse Hill method (ARPACK,
+ *          24 eigenvalues nearest 0; ms, exponents kept in the strip)
  * and the same solve on the uncondensed dense HBM (all DOF × harmonics as
  * unknowns) at about 330 DOF, with the speed-up.  One TSV row per case.
  * Not a test: run `make bench`.  Usage: bench_fe_hbm [max_dof]
@@ -43,8 +45,9 @@ static whirl_fe_rotor *chain(int ndof) {
 
 typedef struct result {
   size_t n;
-  double t_cond, t_step, t_solve;
+  double t_cond, t_step, t_solve, t_hill;
   int its, rc;
+  size_t nexp;
 } result;
 
 /* One Newton step by hand: F, Fx, LU, solve. */
@@ -64,7 +67,7 @@ static int newton_step(const whirl_system *s, double *X, const double *p) {
 }
 
 static result run(const whirl_fe_rotor *r, int uncondensed, double Om) {
-  result res = {0, 0, 0, 0, 0, 0};
+  result res = {0, 0, 0, 0, 0, 0, 0, 0};
   whirl_fe_hbm_options o;
   whirl_fe_hbm_options_default(&o);
   o.harmonics = 5;
@@ -91,6 +94,19 @@ static result run(const whirl_fe_rotor *r, int uncondensed, double Om) {
   double t4 = now();
   res.rc |= whirl_newton(s, X, p, 1e-10, 30, &res.its);
   res.t_solve = 1e3 * (now() - t4);
+  if (!uncondensed && !res.rc) { /* stability: the sparse Hill method */
+    double re[64], im[64];
+    size_t m = 64;
+    whirl_fe_hbm_options_default(&o);
+    o.harmonics = 5;
+    o.stability = 2;
+    whirl_fe_hbm *hs = whirl_fe_hbm_alloc(r, &o, NULL, 0);
+    double t5 = now();
+    int rc = hs ? whirl_fe_hbm_hill(hs, X, p, re, im, &m) : -1;
+    res.t_hill = rc ? -1 : 1e3 * (now() - t5);
+    res.nexp = rc ? 0 : m;
+    whirl_fe_hbm_free(hs);
+  }
   free(X);
   free(F);
   whirl_fe_hbm_free(h);
@@ -102,21 +118,23 @@ int main(int argc, char **argv) {
   const int sizes[] = {100, 300, 1000, 3000};
   double Om = 300.0;
   printf("# bench_fe_hbm: chain rotor, two short SFDs, H = 5, Omega = %g rad/s\n", Om);
-  printf("case\tndof\tunknowns\tcond_ms\tstep_ms\tsolve_ms\tits\n");
+  printf("case\tndof\tunknowns\tcond_ms\tstep_ms\tsolve_ms\tits\thill_ms\texponents\n");
   for (size_t i = 0; i < sizeof sizes / sizeof *sizes; ++i) {
     if (sizes[i] > maxdof) break;
     whirl_fe_rotor *r = chain(sizes[i]);
     result c = run(r, 0, Om);
-    printf("condensed\t%d\t%zu\t%.2f\t%.2f\t%.2f\t%d%s\n", r->ndof, c.n,
-           c.t_cond, c.t_step, c.t_solve, c.its, c.rc ? "\tFAILED" : "");
+    printf("condensed\t%d\t%zu\t%.2f\t%.2f\t%.2f\t%d\t%.1f\t%zu%s\n", r->ndof,
+           c.n, c.t_cond, c.t_step, c.t_solve, c.its, c.t_hill, c.nexp,
+           c.rc ? "\tFAILED" : "");
     fe_chain_free(r);
   }
   whirl_fe_rotor *r = chain(332);
   result c = run(r, 0, Om), f = run(r, 1, Om);
-  printf("condensed\t%d\t%zu\t%.2f\t%.2f\t%.2f\t%d%s\n", r->ndof, c.n, c.t_cond,
-         c.t_step, c.t_solve, c.its, c.rc ? "\tFAILED" : "");
-  printf("uncondensed\t%d\t%zu\t-\t%.2f\t%.2f\t%d%s\n", r->ndof, f.n, f.t_step,
-         f.t_solve, f.its, f.rc ? "\tFAILED" : "");
+  printf("condensed\t%d\t%zu\t%.2f\t%.2f\t%.2f\t%d\t%.1f\t%zu%s\n", r->ndof,
+         c.n, c.t_cond, c.t_step, c.t_solve, c.its, c.t_hill, c.nexp,
+         c.rc ? "\tFAILED" : "");
+  printf("uncondensed\t%d\t%zu\t-\t%.2f\t%.2f\t%d\t-\t-%s\n", r->ndof, f.n,
+         f.t_step, f.t_solve, f.its, f.rc ? "\tFAILED" : "");
   printf("# speed-up of the Newton solve at %d DOF: %.0fx\n", r->ndof,
          f.t_solve / c.t_solve);
   fe_chain_free(r);

@@ -88,6 +88,8 @@ extra "node out of range" 6 "disk: node 9 is not on the shaft (nodes 0..4)" 'dis
 extra "bearing off the shaft" 6 "bearing: node 5 is not on the shaft" 'bearing node=5 kyy=1'
 extra "nonlinear element on a missing node" 6 "sfd-short-pi: node 7 is not on the shaft" \
   'sfd-short-pi node=7 radius=0.05 length=0.02 clearance=1e-4 viscosity=0.01'
+extra "material with G > 10 E (Poisson's ratio -1)" 6 "Poisson's ratio -1, outside" \
+  'material glass E=1e12 G=1e25 rho=1'
 extra "unknown material" 6 "unknown material 'brass'" 'shaft from=4 to=5 length=1 od=0.05 material=brass'
 extra "film element with zero clearance" 6 "clearance must be > 0" \
   'sfd-short-pi node=1 radius=0.05 length=0.02 clearance=0 viscosity=0.01'
@@ -106,6 +108,13 @@ extra "duplicate shaft element" 6 "between nodes 1 and 2 is defined twice (first
   'shaft from=1 to=2 length=1 od=0.05 material=steel'
 extra "duplicate bearing" 6 "a bearing at node 4 is already defined (line 5)" 'bearing node=4 kyy=1'
 extra "duplicate key" 6 "key 'mass' given twice" 'disk node=1 mass=1 mass=2'
+extra "disk given both ways" 6 "disk: give either mass= \[ip= it=\] or width= od= \[id=\] material=" \
+  'disk node=1 mass=3 width=0.07 od=0.2 material=steel'
+extra "elements= not to - from" 6 "elements=3 but from=4 to=6 makes 2 elements" \
+  'shaft from=4 to=6 elements=3 length=1 od=0.05 material=steel'
+extra "pedestal without mass" 6 "pedestal: mass must be > 0" 'pedestal P mass=0 kyy=1e6'
+extra "a second element of one kind at a node" 7 "cubic at node 1 is already defined (line 6)" 'cubic node=1 k1=1 k3=1
+cubic node=1 k1=2 k3=2'
 extra "bad gravity direction" 6 "direction must be" 'gravity g=9.81 direction=down'
 extra "speed range reversed" 6 "to=5 must be greater than from=10" 'speed from=10 to=5 unit=rpm'
 extra "bad speed unit" 6 "unit must be rpm, rad/s or hz" 'speed from=0 to=5 unit=rps'

@@ -16,9 +16,13 @@
  *      equation for sin(nπx/L)) at the rate h⁴ as the elements double;
  *  (d) structure: M, K symmetric, G skew, rigid translation of M = mass,
  *      f0 of gravity sums to the weight; dense QZ and ARPACK agree on a
- *      48-element damped, cross-coupled rotor;
+ *      48-element damped, cross-coupled rotor; a free rotor (K singular):
+ *      no rigid-body modes, the Euler-Bernoulli free-free frequency;
  *  (e) the nonlinear kinds' names round trip; a file's errors name the line.
  * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* mkstemp, fdopen */
+#include "config.h"                /* WHIRL_HAVE_ARPACK */
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -363,6 +367,7 @@ static void test_structure(void) {
   whirl_fe_rotor_free(r);
 }
 
+#ifdef WHIRL_HAVE_ARPACK
 static void test_arpack(void) {
   char text[1024], msg[512];
   snprintf(text, sizeof text,
@@ -386,6 +391,30 @@ static void test_arpack(void) {
   }
   whirl_fe_rotor_free(r);
 }
+
+/* A free rotor (no supports: K singular, four rigid-body modes at s = 0):
+ * both methods drop the zero eigenvalues and find the first free-free
+ * bending mode, (4.730040745/L)² √(EI/ρA) for a slender shaft (Euler-
+ * Bernoulli; shear and rotary inertia lower it by ~(r/L)², here 1e-4). */
+static void test_free(void) {
+  char msg[512];
+  whirl_fe_rotor *r = rotor_of("material steel E=211e9 G=81.2e9 rho=7810\n"
+                               "shaft from=0 to=40 length=2 od=0.02 material=steel\n",
+                               msg, sizeof msg);
+  if (!ok(r != NULL, "free rotor reads")) return;
+  const double A = PI * 1e-4, I = PI * 1.6e-7 / 64, b = 4.730040745 / 2;
+  const double w1 = b * b * sqrt(211e9 * I / (7810 * A));
+  whirl_fe_mode d[4], a[4];
+  size_t nd = modes_at(r, 0, WHIRL_FE_EIG_DENSE, 4, d), na = modes_at(r, 0, WHIRL_FE_EIG_ARPACK, 4, a);
+  ok(nd == 4 && na == 4, "free rotor: 4 modes by each method (rigid-body modes dropped)");
+  if (nd == 4 && na == 4) {
+    is_rel(d[0].omega, w1, 1e-3, "free rotor: first bending mode (dense) = Euler-Bernoulli free-free");
+    is_rel(d[1].omega, w1, 1e-3, "free rotor: its pair");
+    for (int k = 0; k < 4; ++k) is_rel(a[k].omega, d[k].omega, 1e-9, "free rotor: ARPACK = dense, mode %d", k + 1);
+  }
+  whirl_fe_rotor_free(r);
+}
+#endif
 
 /* ---- (e) names, errors ---------------------------------------------------------------- */
 
@@ -433,7 +462,12 @@ int main(void) {
   test_jeffcott_unbalance();
   test_simply_supported();
   test_structure();
+#ifdef WHIRL_HAVE_ARPACK
   test_arpack();
+  test_free();
+#else
+  ok(1, "# SKIP built without ARPACK: no dense-ARPACK comparison, no free rotor");
+#endif
   test_names();
   return done_testing();
 }

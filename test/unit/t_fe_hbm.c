@@ -11,15 +11,19 @@
  * here); the folds of a continuation against Hill's multiplier +1.
  * The rotor is built by hand (test/fe_chain.h).
  * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* mkstemp, fdopen */
 #include <complex.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <whirl/cont.h>
 #include <whirl/floquet.h>
+#include <whirl/fold.h>
 #include <whirl/rotor/fe_hbm.h>
+#include <whirl/rotor/fe_linear.h>
 
 #include "../fe_chain.h"
 #include "../tap.h"
@@ -130,14 +134,33 @@ static whirl_fe_rotor *model5(int pedestal, double k3) {
   return fe_chain_build(&co);
 }
 
+static const char *kname(whirl_fe_nl_kind k) {
+  switch (k) {
+  case WHIRL_FE_SFD_SHORT_PI: return "short pi SFD";
+  case WHIRL_FE_SFD_SHORT_2PI: return "short 2pi SFD";
+  case WHIRL_FE_SFD_LONG: return "long SFD";
+  case WHIRL_FE_SFD_INERTIA: return "SFD with fluid inertia";
+  default: return "?";
+  }
+}
+
+/* the same with the SFD of another kind (fluid inertia: ρ = 860 kg/m³) */
+static whirl_fe_rotor *model5_kind(int pedestal, whirl_fe_nl_kind kind) {
+  whirl_fe_rotor *r = model5(pedestal, 1e13);
+  r->nl[1].kind = kind;
+  r->nl[1].par.density = 860.0;
+  return r;
+}
+
 static double maxabs(const double *x, size_t n) {
   double m = 0;
   for (size_t i = 0; i < n; ++i) m = fmax(m, fabs(x[i]));
   return m;
 }
 
-static void test_jacobians(int pedestal, int uncondensed) {
-  whirl_fe_rotor *r = model5(pedestal, 1e13);
+static void test_jacobians(int pedestal, int uncondensed,
+                           whirl_fe_nl_kind kind) {
+  whirl_fe_rotor *r = model5_kind(pedestal, kind);
   whirl_fe_hbm *h = make(r, 3, uncondensed, 0, 0, 0);
   const whirl_system *s = whirl_fe_hbm_system(h);
   double *X = calloc(s->n, sizeof *X), p[4], err = 1;
@@ -145,9 +168,9 @@ static void test_jacobians(int pedestal, int uncondensed) {
   p[1] = 1.3; p[2] = 1.1; p[3] = 0.9;
   for (size_t i = 0; i < s->n; ++i) X[i] = tap_urand(-0.08, 0.08);
   int rc = whirl_system_check_jacobian(s, X, p, &err);
-  ok(rc == 0 && err < 2e-6, "%s%s: Jacobian and dF/dp against differences "
-     "(%.2e)", uncondensed ? "uncondensed" : "condensed",
-     pedestal ? ", pedestal" : "", err);
+  ok(rc == 0 && err < 2e-6, "%s%s, %s: Jacobian and dF/dp against "
+     "differences (%.2e)", uncondensed ? "uncondensed" : "condensed",
+     pedestal ? ", pedestal" : "", kname(kind), err);
   free(X);
   whirl_fe_hbm_free(h);
   fe_chain_free(r);
@@ -231,8 +254,9 @@ static void test_linear(void) {
 
 /* ------------------------------- condensed = uncondensed (acceptance) */
 
-static void test_condensed_vs_full(int pedestal, double Om, double unb) {
-  whirl_fe_rotor *r = model5(pedestal, 1e13);
+static void test_condensed_vs_full(int pedestal, double Om, double unb,
+                                   whirl_fe_nl_kind kind) {
+  whirl_fe_rotor *r = model5_kind(pedestal, kind);
   int H = 5, n = r->ndof, L = 2 * H + 1;
   whirl_fe_hbm *hc = make(r, H, 0, 0, 0, 0), *hf = make(r, H, 1, 0, 0, 0);
   const whirl_system *sc = whirl_fe_hbm_system(hc), *sf = whirl_fe_hbm_system(hf);
@@ -247,9 +271,9 @@ static void test_condensed_vs_full(int pedestal, double Om, double unb) {
   rc |= whirl_fe_hbm_recover(hf, Xf, p, qf);
   double d = 0, s = maxabs(qf, (size_t)n * L);
   for (int i = 0; i < n * L; ++i) d = fmax(d, fabs(qc[i] - qf[i]));
-  ok(rc == 0, "condensed (%zu unknowns, %d its) and uncondensed (%zu, %d its) "
-     "converged at %g rad/s%s", sc->n, ic, sf->n, jf, Om,
-     pedestal ? ", pedestal" : "");
+  ok(rc == 0, "%s: condensed (%zu unknowns, %d its) and uncondensed (%zu, "
+     "%d its) converged at %g rad/s%s", kname(kind), sc->n,
+     ic, sf->n, jf, Om, pedestal ? ", pedestal" : "");
   ok(d <= 1e-10 * s, "condensed = uncondensed on all %d DOF x %d coefficients: "
      "%.2e of %.2e", n, L, d, s);
   double a1 = whirl_fe_hbm_amplitude(hc, qc, 4), c = r->nl[1].par.clearance;
@@ -258,6 +282,43 @@ static void test_condensed_vs_full(int pedestal, double Om, double unb) {
   free(qc); free(qf); free(Xc); free(Xf);
   whirl_fe_hbm_free(hc);
   whirl_fe_hbm_free(hf);
+  fe_chain_free(r);
+}
+
+/* ν = 2 (response frequency Ω/2, H = 10) holds the synchronous orbit in
+ * its even harmonics: harmonic 2k must equal harmonic k of ν = 1, H = 5
+ * (the same 32 samples per shaft period), the odd ones 0. */
+static void test_subharmonic_index(void) {
+  whirl_fe_rotor *r = model5(0, 1e13);
+  whirl_fe_hbm_options o;
+  whirl_fe_hbm_options_default(&o);
+  o.harmonics = 5;
+  whirl_fe_hbm *h1 = whirl_fe_hbm_alloc(r, &o, NULL, 0);
+  o.harmonics = 10;
+  o.nu = 2;
+  whirl_fe_hbm *h2 = whirl_fe_hbm_alloc(r, &o, NULL, 0);
+  const whirl_system *s1 = whirl_fe_hbm_system(h1), *s2 = whirl_fe_hbm_system(h2);
+  double *X1 = calloc(s1->n, sizeof *X1), *X2 = calloc(s2->n, sizeof *X2), p[4];
+  whirl_fe_hbm_params(150.0, p);
+  p[WHIRL_FE_P_UNBALANCE] = 12.0;
+  int i1 = 0, i2 = 0, m = 0;
+  int rc = whirl_newton(s1, X1, p, 1e-13, 40, &i1) | whirl_newton(s2, X2, p, 1e-13, 40, &i2);
+  whirl_fe_hbm_nl_dofs(h1, &m);
+  double d = 0, odd = 0, sc = maxabs(X1, s1->n);
+  for (int j = 0; j < m; ++j) {
+    d = fmax(d, fabs(X1[j] - X2[j]));
+    for (int k = 1; k <= 5; ++k)
+      for (int c = 0; c < 2; ++c)
+        d = fmax(d, fabs(X1[m * (2 * k - 1 + c) + j] - X2[m * (4 * k - 1 + c) + j]));
+    for (int k = 1; k <= 10; k += 2)
+      odd = fmax(odd, fmax(fabs(X2[m * (2 * k - 1) + j]), fabs(X2[m * 2 * k + j])));
+  }
+  ok(rc == 0, "nu = 2: both converged (%d, %d iterations)", i1, i2);
+  ok(d < 1e-11 * sc && odd < 1e-11 * sc, "nu = 2: even harmonics = nu = 1 "
+     "(%.1e), odd harmonics 0 (%.1e), of %.2e", d, odd, sc);
+  free(X1); free(X2);
+  whirl_fe_hbm_free(h1);
+  whirl_fe_hbm_free(h2);
   fe_chain_free(r);
 }
 
@@ -426,7 +487,7 @@ typedef struct collect {
   size_t nx;
 } collect;
 
-static int on_point(const whirl_fe_response_point *pt, void *ctx) {
+static int on_point(const whirl_fe_hbm_response_point *pt, void *ctx) {
   collect *c = ctx;
   ++c->n;
   if (c->n > 1 && pt->stable >= 0 && c->last_stable >= 0 &&
@@ -476,10 +537,139 @@ static void hill_vs_monodromy(whirl_fe_hbm *h, const whirl_fe_rotor *r,
   free(q);
 }
 
+/* A fold locus through the fold system: from the first LP (Ω1, p at the
+ * LP) in the parameter icp (direction dir), round the cusp where the two
+ * folds meet, and back to the start's value, where it must arrive at the
+ * second LP Ω2 of the speed continuation. */
+static void test_fold_locus(const whirl_fe_rotor *r, int H, const double *X,
+                            const double *p0, double Om2, size_t icp, int dir,
+                            const char *name) {
+  whirl_fe_hbm *h = make(r, H, 0, 0, 0, 0);
+  const whirl_system *s = whirl_fe_hbm_system(h);
+  whirl_fold_options fo;
+  whirl_fold_options_default(&fo, WHIRL_FE_P_OMEGA);
+  char err[256] = "";
+  whirl_fold *f = whirl_fold_alloc(s, &fo, err, sizeof err);
+  double p[4], *Z = calloc(s->n + 1, sizeof *Z);
+  memcpy(p, p0, sizeof p);
+  int rc = f ? whirl_fold_init(f, X, p, Z) : -1;
+  ok(rc == 0, "fold locus in speed x %s: started at the first LP %s", name, err);
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = icp;
+  co.ds = 0.01 * p0[icp];
+  co.ds_max = 1.0;
+  co.nmx = 400;
+  co.p_min = 0.001 * p0[icp];
+  co.p_max = 100 * p0[icp];
+  co.newton_tol = 1e-9;
+  double uz = p0[icp];
+  int uz_stop = 1;
+  co.uz = &uz;
+  co.nuz = 1;
+  co.uz_stop = &uz_stop;
+  whirl_cont *c = rc ? NULL : whirl_cont_alloc(whirl_fold_system(f), &co, err, sizeof err);
+  rc = c ? whirl_cont_start(c, Z, p, dir) : -1;
+  double ext = p0[icp], Om_end = 0, v_end = 0;
+  int steps = 0;
+  while (!rc && (rc = whirl_cont_step(c)) == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(c);
+    double v = pt->p[icp];
+    ext = dir < 0 ? fmin(ext, v) : fmax(ext, v);
+    Om_end = pt->x[s->n];
+    v_end = v;
+    ++steps;
+  }
+  ok(rc == WHIRL_DONE && c && whirl_cont_stop_reason(c) == WHIRL_STOP_UZ,
+     "fold locus in speed x %s: round the cusp (%s to %.4g) and back in %d "
+     "steps", name, name, ext, steps);
+  ok(fabs(ext / p0[icp] - 1) > 1e-3, "fold locus: the folds meet at %s %.4g",
+     name, ext);
+  is_rel(v_end, p0[icp], 1e-9, "fold locus: ends at the start's %s", name);
+  is_rel(Om_end, Om2, 1e-6, "fold locus: at the second LP of the speed "
+         "continuation, %.6f vs %.6f rad/s", Om_end, Om2);
+  whirl_cont_free(c);
+  whirl_fold_free(f);
+  free(Z);
+  whirl_fe_hbm_free(h);
+}
+
+/* Folds of an SFD-supported mode at 10× the unbalance: the speed response
+ * and its fold locus in speed × clearance. */
+static int on_lp(const whirl_fe_hbm_response_point *pt, void *ctx) {
+  collect *c = ctx;
+  if (pt->type == WHIRL_PT_LP && c->nlp < 4) {
+    c->lp[c->nlp] = pt->Omega;
+    c->Xlp[c->nlp] = malloc(pt->n * sizeof(double));
+    memcpy(c->Xlp[c->nlp++], pt->X, pt->n * sizeof(double));
+  }
+  return 0;
+}
+
+static void test_sfd_clearance_locus(void) {
+  fe_chain_opts co;
+  fe_chain_defaults(&co, 5);
+  co.nnl = 1;
+  co.nl[0] = fe_chain_sfd(4, -1);
+  whirl_fe_rotor *r = fe_chain_build(&co);
+  whirl_fe_hbm_response_options o;
+  whirl_fe_hbm_response_options_default(&o);
+  o.hbm.harmonics = 5;
+  o.hbm.stability = 0;
+  o.speed_min = 150;
+  o.speed_max = 350;
+  o.node = 4;
+  o.unbalance = 10;
+  collect c;
+  memset(&c, 0, sizeof c);
+  char err[256] = "";
+  int rc = whirl_fe_hbm_response(r, &o, on_lp, &c, err, sizeof err);
+  ok(rc == 0 && c.nlp == 2, "SFD rotor at 10x unbalance: two folds at %.3f, "
+     "%.3f rad/s %s", c.lp[0], c.lp[1], err);
+  if (c.nlp == 2) {
+    double p[4];
+    whirl_fe_hbm_params(c.lp[0], p);
+    p[WHIRL_FE_P_UNBALANCE] = 10;
+    test_fold_locus(r, 5, c.Xlp[0], p, c.lp[1], WHIRL_FE_P_CLEARANCE, +1,
+                    "clearance");
+  }
+  for (int k = 0; k < c.nlp; ++k) free(c.Xlp[k]);
+  fe_chain_free(r);
+}
+
+/* The sparse Hill method (ARPACK) against the dense one: every exponent
+ * it returns is one of the dense exponents, and the rightmost agree. */
+static void hill_sparse_vs_dense(const whirl_fe_rotor *r, const double *X,
+                                 double Om, const char *what) {
+  whirl_fe_hbm *hd = make(r, 5, 0, 0, 0, 1), *hs = make(r, 5, 0, 0, 0, 2);
+  double p[4], dre[64], dim[64], sre[64], sim[64], w = Om, worst = 0;
+  size_t md = 64, ms = 64;
+  whirl_fe_hbm_params(Om, p);
+  int rc = whirl_fe_hbm_hill(hd, X, p, dre, dim, &md);
+  int rs = whirl_fe_hbm_hill(hs, X, p, sre, sim, &ms);
+  if (rs == WHIRL_EINVAL && strstr(whirl_fe_hbm_errmsg(hs), "without ARPACK")) {
+    ok(1, "# SKIP %s: built without ARPACK", what);
+  } else {
+    for (size_t i = 0; i < ms; ++i) {
+      double best = INFINITY;
+      for (size_t j = 0; j < md; ++j)
+        best = fmin(best, hypot(sre[i] - dre[j], sim[i] - dim[j]));
+      worst = fmax(worst, best);
+    }
+    ok(rc == 0 && rs == 0 && ms >= 4 && worst < 1e-8 * w,
+       "%s: the %zu sparse Hill exponents (ARPACK) are dense ones (%.1e)",
+       what, ms, worst / w);
+    is_abs(sre[0], dre[0], 1e-8 * w, "%s: rightmost exponent, sparse %.6g vs "
+           "dense %.6g", what, sre[0], dre[0]);
+  }
+  whirl_fe_hbm_free(hd);
+  whirl_fe_hbm_free(hs);
+}
+
 static void test_response(void) {
   whirl_fe_rotor *r = duffing3();
-  whirl_fe_response_options o;
-  whirl_fe_response_options_default(&o);
+  whirl_fe_hbm_response_options o;
+  whirl_fe_hbm_response_options_default(&o);
   o.hbm.harmonics = 5;
   o.speed_min = 150;
   o.speed_max = 400;
@@ -488,7 +678,7 @@ static void test_response(void) {
   memset(&c, 0, sizeof c);
   c.last_stable = -1;
   char err[256] = "";
-  int rc = whirl_fe_response(r, &o, on_point, &c, err, sizeof err);
+  int rc = whirl_fe_hbm_response(r, &o, on_point, &c, err, sizeof err);
   ok(rc == 0, "response: continuation 150..400 rad/s (%d points) %s", c.n, err);
   ok(c.nlp == 2, "response: two folds (LP) of the hardening resonance: %d at "
      "%.1f, %.1f rad/s", c.nlp, c.lp[0], c.lp[1]);
@@ -499,6 +689,12 @@ static void test_response(void) {
      c.ntr);
   ok(c.changes == 4, "response: stability changes at the two LP and the two "
      "TR (%d)", c.changes);
+  if (c.nlp == 2) {
+    double p[4];
+    whirl_fe_hbm_params(c.lp[0], p);
+    test_fold_locus(r, 5, c.Xlp[0], p, c.lp[1], WHIRL_FE_P_UNBALANCE, -1,
+                    "unbalance");
+  }
   whirl_fe_hbm *h = make(r, 5, 0, 0, 0, 1);
   for (int k = 0; k < c.nlp; ++k) { /* a fold: a Floquet multiplier +1 */
     double p[4], re[64], im[64], best = INFINITY;
@@ -516,7 +712,136 @@ static void test_response(void) {
   if (c.Xu) hill_vs_monodromy(h, r, c.Xu, c.Ou, 5, "unstable orbit");
   else ok(0, "an unstable orbit was found");
   if (c.Xt) hill_vs_monodromy(h, r, c.Xt, c.Ot, 5, "small unstable orbit");
+  if (c.Xs) hill_sparse_vs_dense(r, c.Xs, c.Os, "stable orbit");
+  if (c.Xu) hill_sparse_vs_dense(r, c.Xu, c.Ou, "unstable orbit");
+  if (c.Xt) hill_sparse_vs_dense(r, c.Xt, c.Ot, "small unstable orbit");
   free(c.Xs); free(c.Xu); free(c.Xt);
+  whirl_fe_hbm_free(h);
+  fe_chain_free(r);
+}
+
+/* --------------------------------------- a rotor file (reader, Timoshenko) */
+
+static const char rotor_text[] =
+    "title two-disk rotor on a squeeze-film damper and a pedestal\n"
+    "material steel E=211e9 G=81.2e9 rho=7810\n"
+    "shaft from=0 to=4 length=0.8 od=0.06 id=0.02 material=steel\n"
+    "shaft from=4 to=6 length=0.3 od=0.04 material=steel\n"
+    "disk node=2 mass=12.5 ip=0.12 it=0.07\n"
+    "disk node=5 width=0.05 od=0.25 id=0.04 material=steel\n"
+    "pedestal housing mass=30 kyy=5e7 kzz=5e7 cyy=2e3 czz=2e3\n"
+    "bearing node=0 kyy=2e7 kzz=1.8e7 kyz=1e5 kzy=-1e5 cyy=500 czz=500\n"
+    "bearing node=6 kyy=1e7 kzz=1e7 pedestal=housing\n"
+    "%s\n"
+    "unbalance node=2 me=2e-4 phase-deg=0\n"
+    "unbalance node=5 me=1e-4 phase-deg=90\n"
+    "%s\n"
+    "speed from=0 to=12000 unit=rpm\n";
+
+static whirl_fe_rotor *rotor_file(const char *nl, const char *gravity) {
+  char text[2048], path[64], msg[512] = "";
+  snprintf(text, sizeof text, rotor_text, nl, gravity);
+  snprintf(path, sizeof path, "t_fe_hbm.XXXXXX");
+  int fd = mkstemp(path);
+  if (fd < 0) return NULL;
+  FILE *f = fdopen(fd, "w");
+  fputs(text, f);
+  fclose(f);
+  whirl_fe_rotor *r = whirl_fe_rotor_read(path, msg, sizeof msg, NULL);
+  unlink(path);
+  if (!r) printf("# %s\n", msg);
+  return r;
+}
+
+/* A null element (cubic, k1 = k3 = 0): the condensed HBM's harmonic 1 of
+ * every DOF = the linear unbalance response (fe-model's direct sparse
+ * solve of the real 2 ndof form, whirl_fe_unbalance_response). */
+static void test_file_linear(void) {
+  whirl_fe_rotor *r = rotor_file("cubic node=6 k1=0 k3=0 pedestal=housing", "");
+  ok(r != NULL, "rotor file read (%d DOF)", r ? r->ndof : 0);
+  if (!r) return;
+  whirl_fe_hbm *h = make(r, 3, 0, 1e-4, 0, 0);
+  const whirl_system *s = whirl_fe_hbm_system(h);
+  int n = r->ndof, its = 0;
+  double *X = calloc(s->n, sizeof *X), *q = calloc((size_t)n * 7, sizeof *q);
+  double *qr = malloc((size_t)n * sizeof *qr), *qi = malloc((size_t)n * sizeof *qi);
+  double p[4], Om = 700.0, d = 0, sc = 0;
+  whirl_fe_hbm_params(Om, p);
+  int rc = whirl_newton(s, X, p, 1e-13, 10, &its);
+  rc |= whirl_fe_hbm_recover(h, X, p, q);
+  rc |= whirl_fe_unbalance_response(r, Om, qr, qi, NULL, 0);
+  for (int i = 0; i < n; ++i) {
+    d = fmax(d, hypot(q[n + i] - qr[i], -q[2 * n + i] - qi[i]));
+    sc = fmax(sc, hypot(qr[i], qi[i]));
+  }
+  ok(rc == 0 && d < 1e-10 * sc, "file rotor, null element: HBM = linear "
+     "unbalance response on all %d DOF (%.1e of %.1e)", n, d, sc);
+  free(X); free(q); free(qr); free(qi);
+  whirl_fe_hbm_free(h);
+  whirl_fe_rotor_free(r);
+}
+
+/* The file's SFD on the pedestal, with gravity: condensed = uncondensed. */
+static void test_file_sfd(void) {
+  whirl_fe_rotor *r = rotor_file(
+      "sfd-short-pi node=6 radius=0.04 length=0.012 clearance=1.5e-4 "
+      "viscosity=0.02 pedestal=housing offset-z=-3e-5",
+      "gravity g=9.81 direction=-z");
+  if (!r) { ok(0, "rotor file with an SFD read"); return; }
+  int H = 4, n = r->ndof, L = 2 * H + 1;
+  whirl_fe_hbm *hc = make(r, H, 0, 0, 0, 0), *hf = make(r, H, 1, 0, 0, 0);
+  const whirl_system *sc = whirl_fe_hbm_system(hc), *sf = whirl_fe_hbm_system(hf);
+  double *Xc = calloc(sc->n, sizeof *Xc), *Xf = calloc(sf->n, sizeof *Xf), p[4];
+  double *qc = calloc((size_t)n * L, sizeof *qc), *qf = calloc((size_t)n * L, sizeof *qf);
+  whirl_fe_hbm_params(600.0, p);
+  p[WHIRL_FE_P_UNBALANCE] = 5.0;
+  int i1 = 0, i2 = 0;
+  int rc = whirl_newton(sc, Xc, p, 1e-13, 40, &i1) | whirl_newton(sf, Xf, p, 1e-13, 40, &i2);
+  rc |= whirl_fe_hbm_recover(hc, Xc, p, qc) | whirl_fe_hbm_recover(hf, Xf, p, qf);
+  double d = 0, s = maxabs(qf, (size_t)n * L);
+  for (int i = 0; i < n * L; ++i) d = fmax(d, fabs(qc[i] - qf[i]));
+  double e = whirl_fe_hbm_amplitude(hc, qc, 6);
+  if (rc) printf("# rc %d its %d %d\n", rc, i1, i2);
+  ok(rc == 0 && i1 >= 3 && d <= 1e-10 * s, "file rotor, SFD on the pedestal: "
+     "condensed (%zu, %d its) = uncondensed (%zu) to %.1e of %.1e (journal "
+     "at %.3g m)", sc->n, i1, sf->n, d, s, e);
+  free(Xc); free(Xf); free(qc); free(qf);
+  whirl_fe_hbm_free(hc);
+  whirl_fe_hbm_free(hf);
+  whirl_fe_rotor_free(r);
+}
+
+/* Bad options are refused with a message; contact is recoverable. */
+static void test_errors(void) {
+  whirl_fe_rotor *r = model5(0, 1e13);
+  whirl_fe_hbm_options o;
+  whirl_fe_hbm_options_default(&o);
+  char err[256] = "";
+  o.nu = 6;
+  ok(!whirl_fe_hbm_alloc(r, &o, err, sizeof err) && strstr(err, "nu"),
+     "nu > harmonics refused: %s", err);
+  whirl_fe_hbm_options_default(&o);
+  o.nsamples = 10;
+  ok(!whirl_fe_hbm_alloc(r, &o, err, sizeof err) && strstr(err, "nsamples"),
+     "nsamples <= 2H refused: %s", err);
+  whirl_fe_hbm_options_default(&o);
+  int nnl = r->nnl;
+  r->nnl = 0;
+  ok(!whirl_fe_hbm_alloc(r, &o, err, sizeof err), "no nonlinear element "
+     "refused: %s", err);
+  r->nnl = nnl;
+  whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o, NULL, 0);
+  const whirl_system *s = whirl_fe_hbm_system(h);
+  double *X = calloc(s->n, sizeof *X), *F = calloc(s->n, sizeof *F), p[4];
+  int m = 0;
+  const int *dof = whirl_fe_hbm_nl_dofs(h, &m);
+  ok(m == 4 && dof[0] == 0 && dof[1] == 1 && dof[2] == 16 && dof[3] == 17,
+     "nonlinear DOFs: y, z of nodes 0 and 4");
+  whirl_fe_hbm_params(100.0, p);
+  X[2 * m + 2] = 1.2; /* the SFD journal's y beyond its clearance (Ls = c) */
+  int rc = s->F(X, p, F, s->data);
+  ok(rc > 0, "journal beyond the clearance: recoverable (%d)", rc);
+  free(X); free(F);
   whirl_fe_hbm_free(h);
   fe_chain_free(r);
 }
@@ -524,12 +849,23 @@ static void test_response(void) {
 int main(void) {
   test_aft_cubic();
   test_aft_sfd_circular();
-  test_jacobians(0, 0);
-  test_jacobians(1, 0);
-  test_jacobians(1, 1);
+  test_jacobians(0, 0, WHIRL_FE_SFD_SHORT_PI);
+  test_jacobians(1, 0, WHIRL_FE_SFD_SHORT_PI);
+  test_jacobians(1, 1, WHIRL_FE_SFD_SHORT_PI);
+  test_jacobians(1, 0, WHIRL_FE_SFD_INERTIA);
+  test_jacobians(0, 1, WHIRL_FE_SFD_INERTIA);
+  test_jacobians(0, 0, WHIRL_FE_SFD_LONG);
+  test_jacobians(0, 0, WHIRL_FE_SFD_SHORT_2PI);
   test_linear();
-  test_condensed_vs_full(0, 150.0, 12.0);
-  test_condensed_vs_full(1, 320.0, 4.0);
+  test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_PI);
+  test_condensed_vs_full(1, 320.0, 4.0, WHIRL_FE_SFD_SHORT_PI);
+  test_condensed_vs_full(1, 320.0, 4.0, WHIRL_FE_SFD_INERTIA);
+  test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_2PI);
+  test_subharmonic_index();
+  test_errors();
+  test_file_linear();
+  test_file_sfd();
   test_response();
+  test_sfd_clearance_locus();
   return done_testing();
 }

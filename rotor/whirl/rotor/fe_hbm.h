@@ -44,7 +44,9 @@
  * linearised to first order and solved densely (LAPACK dgeev); of the
  * 2 ndof L eigenvalues the 2 ndof with the smallest |Im λ| are the Floquet
  * exponents (Lazarus & Thomas, C. R. Mécanique 338 (2010) 510; Peletan et
- * al., Nonlinear Dyn. 2013), reported as multipliers exp(λ 2π/ω).
+ * al., Nonlinear Dyn. 2013), reported as multipliers exp(λ 2π/ω).  For
+ * large models the sparse pencil by ARPACK's shift-invert Arnoldi gives the
+ * exponents nearest the imaginary axis around 0 (the critical ones).
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_ROTOR_FE_HBM_H
 #define WHIRL_ROTOR_FE_HBM_H
@@ -78,9 +80,15 @@ typedef struct whirl_fe_hbm_options {
                            clearance, else 1e-3) */
   double force_scale;   /* N: F = residual / force_scale (0: length_scale
                            × the largest diagonal entry of K) */
-  int stability;        /* 1: Hill's multipliers as the system's spectrum
-                           (dense, 2 ndof (2H+1) eigenvalues per point);
-                           0: none; −1 (default): when 2 ndof (2H+1) ≤ 1200 */
+  int stability;        /* Hill's multipliers as the system's spectrum:
+                           1 dense (all 2 ndof exponents; 2 ndof (2H+1)
+                           eigenvalues per point), 2 sparse (ARPACK: the
+                           exponents in |Im λ| ≤ ω/2 among the hill_nev
+                           nearest the imaginary axis at 0), 0 none;
+                           −1 (default): dense when 2 ndof (2H+1) ≤ 1200,
+                           else sparse when built with ARPACK, else none */
+  size_t hill_nev;      /* eigenvalues sought by the sparse Hill method
+                           (default 24) */
 } whirl_fe_hbm_options;
 
 WHIRL_API void whirl_fe_hbm_options_default(whirl_fe_hbm_options *o);
@@ -116,8 +124,19 @@ WHIRL_API int whirl_fe_hbm_recover(whirl_fe_hbm *h, const double *X,
 WHIRL_API double whirl_fe_hbm_amplitude(const whirl_fe_hbm *h,
                                         const double *q, int node);
 
-/* Hill's Floquet exponents of the solution X at p: the 2 ndof kept
- * eigenvalues re[], im[] (*m: capacity in, count out), sorted by
+/* A start away from rest: X[size] the forward circular orbits y + iz =
+ * eps c e^{i(ωt + phase)} of relative eccentricity eps (0 ≤ eps < 1) at
+ * every film element (c its clearance), every other unknown 0 — for
+ * branches the response from rest does not reach (an isola), seeded from a
+ * rigid-rotor solution or a guess and corrected by Newton.  Synchronous
+ * responses only (ν = 1); WHIRL_EINVAL otherwise. */
+WHIRL_API int whirl_fe_hbm_seed_circular(const whirl_fe_hbm *h, double eps,
+                                         double phase, double *X);
+
+/* Hill's Floquet exponents of the solution X at p, by the method of
+ * options.stability (dense when 0): dense, the 2 ndof kept eigenvalues;
+ * sparse, those of the hill_nev nearest a small shift σ = 10⁻³ ω in the
+ * strip |Im λ| ≤ ω/2.  re[], im[] (*m: capacity in, count out), sorted by
  * decreasing real part.  Stable when all re < 0. */
 WHIRL_API int whirl_fe_hbm_hill(whirl_fe_hbm *h, const double *X,
                                 const double *p, double *re, double *im,
@@ -125,7 +144,7 @@ WHIRL_API int whirl_fe_hbm_hill(whirl_fe_hbm *h, const double *X,
 
 /* ------------------------------------------------- speed response */
 
-typedef struct whirl_fe_response_options {
+typedef struct whirl_fe_hbm_response_options {
   whirl_fe_hbm_options hbm;
   double speed_min, speed_max; /* rad/s (0 0: the rotor's speed range) */
   double unbalance, clearance, viscosity; /* scales (default 1) */
@@ -134,11 +153,20 @@ typedef struct whirl_fe_response_options {
                                 range/50); the arclength weighs Ω by
                                 1/range and the unknowns by 1 */
   size_t nmx;                /* steps (default 2000) */
-} whirl_fe_response_options;
+  /* A seeded branch: when seed_eps > 0 the branch starts at Ω =
+   * seed_omega from whirl_fe_hbm_seed_circular(seed_eps, seed_phase)
+   * corrected by Newton (the phase giving the smallest residual of 16 when
+   * seed_phase is NaN) and is followed towards larger speeds
+   * (direction +1, default) or smaller (−1); it ends at the speed range or
+   * when it closes on itself (an isola inside the range). */
+  double seed_omega, seed_eps, seed_phase;
+  int direction;
+} whirl_fe_hbm_response_options;
 
-WHIRL_API void whirl_fe_response_options_default(whirl_fe_response_options *o);
+WHIRL_API void
+whirl_fe_hbm_response_options_default(whirl_fe_hbm_response_options *o);
 
-typedef struct whirl_fe_response_point {
+typedef struct whirl_fe_hbm_response_point {
   size_t index;          /* point number along the branch */
   int type;              /* whirl_point_type (LP, BP, PD, TR, EP, ...) */
   int label;
@@ -147,21 +175,60 @@ typedef struct whirl_fe_response_point {
   int stable;            /* 1, 0, −1 unknown */
   const double *X;       /* the unknowns, n of them */
   size_t n;
-} whirl_fe_response_point;
+} whirl_fe_hbm_response_point;
 
 /* Called at every point; a non-zero return ends the branch (and is
  * returned). */
-typedef int (*whirl_fe_response_fn)(const whirl_fe_response_point *pt,
-                                    void *ctx);
+typedef int (*whirl_fe_hbm_response_fn)(
+    const whirl_fe_hbm_response_point *pt, void *ctx);
 
 /* Continue the periodic response in speed from speed_min to speed_max
  * (start from X = 0 corrected by Newton), calling fn at each point.
  * Returns WHIRL_OK, the callback's value, or an error (message in
  * errbuf). */
-WHIRL_API int whirl_fe_response(const whirl_fe_rotor *r,
-                                const whirl_fe_response_options *o,
-                                whirl_fe_response_fn fn, void *ctx,
-                                char *errbuf, size_t errlen);
+WHIRL_API int whirl_fe_hbm_response(const whirl_fe_rotor *r,
+                                    const whirl_fe_hbm_response_options *o,
+                                    whirl_fe_hbm_response_fn fn, void *ctx,
+                                    char *errbuf, size_t errlen);
+
+/* ------------------------------------------------- fold loci */
+
+typedef struct whirl_fe_locus_options {
+  whirl_fe_hbm_options hbm;  /* as for the response the fold came from
+                                (stability is not used: default 0) */
+  int param;                 /* the second parameter: WHIRL_FE_P_UNBALANCE
+                                (default), _CLEARANCE or _VISCOSITY */
+  double pmin, pmax;         /* its range (default 0, 10) */
+  double ds, ds_max;         /* steps in the arclength of (x, Ω/omega_scale,
+                                param) (0: 0.01, 0.05) */
+  size_t nmx;                /* steps (default 500) */
+  double omega_scale;        /* rad/s (0: the fold's speed) */
+} whirl_fe_locus_options;
+
+WHIRL_API void whirl_fe_locus_options_default(whirl_fe_locus_options *o);
+
+typedef struct whirl_fe_locus_point {
+  size_t index;
+  int type;        /* whirl_point_type: EP, LP (of the locus), CP, IS, MG */
+  double Omega;    /* rad/s */
+  double value;    /* the second parameter */
+  const double *X; /* the unknowns of the fold system: the orbit's, then Ω */
+  size_t n;        /* the orbit's unknowns */
+} whirl_fe_locus_point;
+
+typedef int (*whirl_fe_locus_fn)(const whirl_fe_locus_point *pt, void *ctx);
+
+/* Follow the fold through the response's fold (X, p) — a point of type LP
+ * of whirl_fe_hbm_response, X its unknowns with the same hbm options — in
+ * (Ω, param) towards larger (direction +1) or smaller param, within
+ * [pmin, pmax] and the rotor's speed range, until it closes on itself.
+ * Calls fn at every point (a non-zero return ends the locus).  WHIRL_OK, or
+ * an error with its message in err. */
+WHIRL_API int whirl_fe_hbm_fold_locus(const whirl_fe_rotor *r,
+                                      const whirl_fe_locus_options *o,
+                                      const double *X, const double *p,
+                                      int direction, whirl_fe_locus_fn fn,
+                                      void *ctx, char *err, size_t errlen);
 
 #ifdef __cplusplus
 }

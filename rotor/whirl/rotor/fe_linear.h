@@ -35,8 +35,9 @@ typedef enum whirl_fe_eig_method {
 
 typedef struct whirl_fe_modes_options {
   whirl_fe_eig_method method;
-  int dense_max; /* AUTO: dense QZ up to this many DOFs (default 400) */
-  double shift;  /* ARPACK: real shift σ, 1/s (default 0: the slowest modes) */
+  int dense_max; /* AUTO: dense QZ up to this many DOFs (default 150) */
+  double shift;  /* ARPACK: real shift σ, 1/s (default 0: the slowest modes,
+                    with σ = −1e-4 (max|K|/max|M|)^½ just left of 0) */
   double tol;    /* ARPACK: relative tolerance of the Ritz values (0: machine) */
 } whirl_fe_modes_options;
 

@@ -1,4 +1,4 @@
-/* rotor/fe_response.c — the periodic speed response of a finite-element
+/* rotor/fe_hbm_response.c — the periodic speed response of a finite-element
  * rotor: the condensed harmonic-balance system (fe_hbm.c) followed in Ω by
  * the generic continuation core (whirl/cont.h), with its folds LP, branch
  * points BP and, from Hill's multipliers, period doublings PD and tori TR;
@@ -10,15 +10,17 @@
 
 #include "fe_hbm_impl.h"
 
-void whirl_fe_response_options_default(whirl_fe_response_options *o) {
+void whirl_fe_hbm_response_options_default(whirl_fe_hbm_response_options *o) {
   memset(o, 0, sizeof *o);
   whirl_fe_hbm_options_default(&o->hbm);
   o->unbalance = o->clearance = o->viscosity = 1.0;
   o->nmx = 2000;
+  o->seed_phase = NAN;
+  o->direction = +1;
 }
 
 static int speed_range(const whirl_fe_rotor *r,
-                       const whirl_fe_response_options *o, double *lo,
+                       const whirl_fe_hbm_response_options *o, double *lo,
                        double *hi, char *err, size_t errlen) {
   *lo = o->speed_min;
   *hi = o->speed_max;
@@ -35,7 +37,7 @@ static int speed_range(const whirl_fe_rotor *r,
 }
 
 static void cont_options(whirl_cont_options *co, double lo, double hi,
-                         const whirl_fe_response_options *o) {
+                         const whirl_fe_hbm_response_options *o) {
   whirl_cont_options_default(co);
   co->icp = WHIRL_FE_P_OMEGA;
   co->p_min = lo;
@@ -51,13 +53,13 @@ static void cont_options(whirl_cont_options *co, double lo, double hi,
   co->newton_tol = 1e-9;
   co->detect_hb = 1;
   co->detect_pd = 1;
-  co->detect_loop = 0;
+  co->detect_loop = o->seed_eps > 0; /* an isola closes on itself */
 }
 
 /* Report one point of the branch. */
 static int report(whirl_fe_hbm *h, const whirl_point *pt, int node,
-                  double *q, whirl_fe_response_fn fn, void *ctx) {
-  whirl_fe_response_point rp;
+                  double *q, whirl_fe_hbm_response_fn fn, void *ctx) {
+  whirl_fe_hbm_response_point rp;
   int rc = whirl_fe_hbm_recover(h, pt->x, pt->p, q);
   if (rc) return rc;
   rp.index = pt->index;
@@ -71,24 +73,60 @@ static int report(whirl_fe_hbm *h, const whirl_point *pt, int node,
   return fn ? fn(&rp, ctx) : 0;
 }
 
+/* |F|² of the seed of phase ph at p. */
+static double seed_residual(whirl_fe_hbm *h, double eps, double ph,
+                            const double *p, double *x, double *f) {
+  const whirl_system *S = whirl_fe_hbm_system(h);
+  if (whirl_fe_hbm_seed_circular(h, eps, ph, x) || S->F(x, p, f, S->data))
+    return HUGE_VAL;
+  double s = 0;
+  for (size_t i = 0; i < S->n; i++) s += f[i] * f[i];
+  return isfinite(s) ? s : HUGE_VAL;
+}
+
+/* The start x0: rest, or the seed of the options (its phase the best of
+ * 16 when not given). */
+static int start_point(whirl_fe_hbm *h, const whirl_fe_hbm_response_options *o,
+                       const double *p, double *x0, char *err,
+                       size_t errlen) {
+  const size_t n = whirl_fe_hbm_size(h);
+  if (!(o->seed_eps > 0)) return WHIRL_OK;
+  double ph = o->seed_phase;
+  if (isnan(ph)) {
+    double *f = malloc(n * sizeof *f), best = HUGE_VAL;
+    if (!f) return WHIRL_ENOMEM;
+    for (int k = 0; k < 16; k++) {
+      const double t = 2 * WHIRL_PI * k / 16, v = seed_residual(h, o->seed_eps, t, p, x0, f);
+      if (v < best) best = v, ph = t;
+    }
+    free(f);
+    if (isnan(ph))
+      return WHIRL_ERRMSG(err, errlen, WHIRL_EDOMAIN,
+                          "seed eps = %g at Omega = %g rad/s: no phase with "
+                          "a finite residual", o->seed_eps, o->seed_omega);
+  }
+  return whirl_fe_hbm_seed_circular(h, o->seed_eps, ph, x0);
+}
+
 static int follow(whirl_fe_hbm *h, const whirl_cont_options *co,
-                  const whirl_fe_response_options *o, double lo,
-                  whirl_fe_response_fn fn, void *ctx, char *err,
+                  const whirl_fe_hbm_response_options *o, double lo,
+                  whirl_fe_hbm_response_fn fn, void *ctx, char *err,
                   size_t errlen) {
   size_t n = whirl_fe_hbm_size(h);
   double *x0 = calloc(n, sizeof *x0);
   double *q = malloc((size_t)h->r->ndof * h->L * sizeof *q);
   double p[WHIRL_FE_NPAR];
-  whirl_fe_hbm_params(lo, p);
+  const double om0 = o->seed_eps > 0 ? o->seed_omega : lo;
+  whirl_fe_hbm_params(om0, p);
   p[WHIRL_FE_P_UNBALANCE] = o->unbalance;
   p[WHIRL_FE_P_CLEARANCE] = o->clearance;
   p[WHIRL_FE_P_VISCOSITY] = o->viscosity;
-  whirl_cont *c = (x0 && q) ? whirl_cont_alloc(whirl_fe_hbm_system(h), co, err,
-                                               errlen) : NULL;
+  int rc = x0 && q ? start_point(h, o, p, x0, err, errlen) : WHIRL_ENOMEM;
+  whirl_cont *c = !rc ? whirl_cont_alloc(whirl_fe_hbm_system(h), co, err, errlen) : NULL;
   /* the first step returns the corrected start point (EP) */
-  int rc = c ? whirl_cont_start(c, x0, p, +1) : WHIRL_ENOMEM;
+  if (!rc) rc = c ? whirl_cont_start(c, x0, p, o->direction < 0 ? -1 : +1) : WHIRL_ENOMEM;
   if (rc && c)
-    WHIRL_ERRMSG(err, errlen, rc, "start at Omega = %g rad/s: %s", lo,
+    WHIRL_ERRMSG(err, errlen, rc, "start at Omega = %g rad/s: %s", om0,
                  whirl_cont_errmsg(c));
   while (!rc && (rc = whirl_cont_step(c)) == WHIRL_OK)
     rc = report(h, whirl_cont_point(c), o->node, q, fn, ctx);
@@ -101,15 +139,20 @@ static int follow(whirl_fe_hbm *h, const whirl_cont_options *co,
   return rc;
 }
 
-int whirl_fe_response(const whirl_fe_rotor *r,
-                      const whirl_fe_response_options *o,
-                      whirl_fe_response_fn fn, void *ctx, char *errbuf,
+int whirl_fe_hbm_response(const whirl_fe_rotor *r,
+                      const whirl_fe_hbm_response_options *o,
+                      whirl_fe_hbm_response_fn fn, void *ctx, char *errbuf,
                       size_t errlen) {
-  whirl_fe_response_options def;
-  if (!o) { whirl_fe_response_options_default(&def); o = &def; }
+  whirl_fe_hbm_response_options def;
+  if (!o) { whirl_fe_hbm_response_options_default(&def); o = &def; }
   double lo, hi;
   int rc = speed_range(r, o, &lo, &hi, errbuf, errlen);
   if (rc) return rc;
+  if (o->seed_eps > 0 && !(o->seed_eps < 1 && o->seed_omega >= lo && o->seed_omega <= hi))
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
+                        "seed: need 0 < eps = %g < 1 and Omega = %g rad/s in "
+                        "the speed range [%g, %g]", o->seed_eps,
+                        o->seed_omega, lo, hi);
   whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o->hbm, errbuf, errlen);
   if (!h) return WHIRL_EINVAL;
   whirl_cont_options co;

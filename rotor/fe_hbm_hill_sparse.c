@@ -1,0 +1,256 @@
+/* rotor/fe_hbm_hill_sparse.c — Hill's method for large finite-element
+ * rotors: the Floquet exponents nearest a small real shift σ of the sparse
+ * Hill pencil, by ARPACK's shift-invert Arnoldi (Lehoucq, Sorensen & Yang,
+ * ARPACK Users' Guide, 1998, §3.2, §4.3), instead of the dense QR of
+ * fe_hbm_hill.c.
+ *
+ * The quadratic problem (λ² A2 + λ A1 + A0) u = 0 of fe_hbm_hill.c is the
+ * pencil L y = λ B y, L = [0 I; −A0 −A1], B = [I 0; 0 A2], y = (u, λu).
+ * OP = (L − σB)⁻¹ B (mode 1, which = "LM") has the eigenvalues
+ * θ = 1/(λ − σ), and (L − σB) y = b is one sparse solve of order ndof·L:
+ *   P y1 = −b2 − (A1 + σ A2) b1,  y2 = b1 + σ y1,  P = A0 + σ A1 + σ² A2
+ * (UMFPACK through whirl/linsol.h, once per orbit).  A0, A1, A2 keep the
+ * sparsity of K, C + ΩG, M per harmonic, the derivative ∇ coupling a_k with
+ * b_k, and a dense (m L)² block of the nonlinear elements.
+ *
+ * Of the nev eigenvalues nearest σ, those in the strip |Im λ| ≤ ω/2 are
+ * one copy each of the exponents of the modes nearest the imaginary axis
+ * around 0 (the copies λ + i k ω, k ≠ 0, lie outside the strip): the
+ * lightly damped modes that decide stability.  Strongly damped exponents,
+ * far from σ, are not computed; nor is an exponent with Re λ ≳ ω/2 unless
+ * nev reaches it.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include "config.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fe_hbm_impl.h"
+#include "fe_impl.h"
+
+#ifndef WHIRL_HAVE_ARPACK
+int fe_hill_sparse(whirl_fe_hbm *h, const double *qfull, const double *p,
+                   size_t nev, double *re, double *im, size_t *m) {
+  (void)qfull, (void)p, (void)nev, (void)re, (void)im, (void)m;
+  WHIRL_ERRMSG(h->errmsg, sizeof h->errmsg, WHIRL_EINVAL,
+               "whirl was built without ARPACK: no sparse Hill method");
+  return WHIRL_EINVAL;
+}
+#else
+
+extern void dnaupd_(int *ido, const char *bmat, const int *n, const char *which,
+                    const int *nev, const double *tol, double *resid,
+                    const int *ncv, double *v, const int *ldv, int *iparam,
+                    int *ipntr, double *workd, double *workl,
+                    const int *lworkl, int *info, size_t lbmat, size_t lwhich);
+extern void dneupd_(const int *rvec, const char *howmny, int *select,
+                    double *dr, double *di, double *z, const int *ldz,
+                    const double *sigmar, const double *sigmai, double *workev,
+                    const char *bmat, const int *n, const char *which,
+                    const int *nev, const double *tol, double *resid,
+                    const int *ncv, double *v, const int *ldv, int *iparam,
+                    int *ipntr, double *workd, double *workl,
+                    const int *lworkl, int *info, size_t lhowmny,
+                    size_t lbmat, size_t lwhich);
+
+typedef struct hill_op {
+  int NH;
+  double sigma;
+  whirl_fe_csc A2, A1s;  /* M_H and A1 + σ A2 */
+  whirl_linsol *ls;      /* P = A0 + σ A1 + σ² A2 */
+  double *t;             /* NH */
+} hill_op;
+
+/* t += s · A ∇ (column a_k ← −kω b_k, b_k ← kω a_k) */
+static void add_nabla(fe_trip *t, const whirl_fe_csc *A, double s, int nd,
+                      double w) {
+  for (int c = 0; c < A->n; ++c) {
+    int blk = c / nd;
+    if (blk == 0) continue;
+    int k = (blk + 1) / 2, to = (blk & 1) ? c + nd : c - nd;
+    double f = (blk & 1) ? k * w : -k * w;
+    for (int q = A->p[c]; q < A->p[c + 1]; ++q)
+      fe_trip_add(t, A->i[q], to, s * f * A->x[q]);
+  }
+}
+
+/* t += s · A ∇² (column of harmonic k times −(kω)²) */
+static void add_nabla2(fe_trip *t, const whirl_fe_csc *A, double s, int nd,
+                       double w) {
+  for (int c = 0; c < A->n; ++c) {
+    int k = (c / nd + 1) / 2;
+    for (int q = A->p[c]; q < A->p[c + 1]; ++q)
+      fe_trip_add(t, A->i[q], c, -s * (k * w) * (k * w) * A->x[q]);
+  }
+}
+
+/* M_H, C_H, K_H (which = 0, 1, 2) as compressed columns. */
+static int operator_csc(const whirl_fe_hbm *h, int which, double Omega,
+                        whirl_fe_csc *A) {
+  int nd = h->r->ndof, m = h->aft.m, L = h->L;
+  size_t ml = (size_t)m * L, ml2 = ml * ml;
+  const double *J = h->Jnl + ml2 * (which == 0 ? 2 : which == 1 ? 1 : 0);
+  fe_trip t;
+  fe_trip_init(&t, nd * L);
+  for (int blk = 0; blk < L; ++blk) {
+    int o = blk * nd;
+    if (which == 0) fe_trip_add_csc(&t, &h->r->M, 1.0, o, o);
+    if (which == 1) {
+      fe_trip_add_csc(&t, &h->r->C, 1.0, o, o);
+      fe_trip_add_csc(&t, &h->r->G, Omega, o, o);
+    }
+    if (which == 2) fe_trip_add_csc(&t, &h->r->K, 1.0, o, o);
+  }
+  for (size_t c = 0; c < ml; ++c)
+    for (size_t r = 0; r < ml; ++r)
+      if (J[r + ml * c] != 0)
+        fe_trip_add(&t, (int)(r / m) * nd + h->aft.dof[r % m],
+                    (int)(c / m) * nd + h->aft.dof[c % m], -J[r + ml * c]);
+  return fe_trip_to_csc(&t, A);
+}
+
+static void op_free(hill_op *o) {
+  fe_csc_free(&o->A2);
+  fe_csc_free(&o->A1s);
+  whirl_linsol_free(o->ls);
+  free(o->t);
+}
+
+static int op_init(hill_op *o, const whirl_fe_hbm *h, double Omega,
+                   double sigma) {
+  int nd = h->r->ndof;
+  double w = Omega / h->o.nu;
+  whirl_fe_csc CH, KH;
+  memset(o, 0, sizeof *o);
+  memset(&CH, 0, sizeof CH);
+  memset(&KH, 0, sizeof KH);
+  o->NH = nd * h->L;
+  o->sigma = sigma;
+  int rc = operator_csc(h, 0, Omega, &o->A2);
+  if (!rc) rc = operator_csc(h, 1, Omega, &CH);
+  if (!rc) rc = operator_csc(h, 2, Omega, &KH);
+  fe_trip t, u;
+  fe_trip_init(&t, o->NH);
+  fe_trip_init(&u, o->NH);
+  if (!rc) { /* P = K_H + C_H∇ + M_H∇² + σ(C_H + 2 M_H∇) + σ² M_H */
+    fe_trip_add_csc(&t, &KH, 1.0, 0, 0);
+    add_nabla(&t, &CH, 1.0, nd, w);
+    add_nabla2(&t, &o->A2, 1.0, nd, w);
+    fe_trip_add_csc(&t, &CH, sigma, 0, 0);
+    add_nabla(&t, &o->A2, 2 * sigma, nd, w);
+    fe_trip_add_csc(&t, &o->A2, sigma * sigma, 0, 0);
+    fe_trip_add_csc(&u, &CH, 1.0, 0, 0); /* A1 + σ A2 */
+    add_nabla(&u, &o->A2, 2.0, nd, w);
+    fe_trip_add_csc(&u, &o->A2, sigma, 0, 0);
+  }
+  whirl_fe_csc P;
+  memset(&P, 0, sizeof P);
+  int r1 = fe_trip_to_csc(&t, &P), r2 = fe_trip_to_csc(&u, &o->A1s);
+  if (!rc) rc = r1 ? r1 : r2;
+  o->t = malloc((size_t)o->NH * sizeof *o->t);
+  if (!rc && !o->t) rc = WHIRL_ENOMEM;
+  if (!rc) o->ls = whirl_linsol_alloc_sparse((size_t)o->NH, P.p, P.i);
+  if (!rc) rc = o->ls ? whirl_linsol_factor(o->ls, P.x) : WHIRL_ENOMEM;
+  fe_csc_free(&P);
+  fe_csc_free(&CH);
+  fe_csc_free(&KH);
+  return rc;
+}
+
+/* y = (L − σB)⁻¹ B x */
+static int op_apply(hill_op *o, const double *x, double *y) {
+  int n = o->NH;
+  const double *x1 = x, *x2 = x + n;
+  double *y1 = y, *y2 = y + n;
+  memset(o->t, 0, (size_t)n * sizeof *o->t);
+  fe_csc_gemv(&o->A2, 1.0, x2, o->t); /* b2 = A2 x2, b1 = x1 */
+  for (int k = 0; k < n; ++k) y1[k] = -o->t[k];
+  fe_csc_gemv(&o->A1s, -1.0, x1, y1);
+  int rc = whirl_linsol_solve(o->ls, y1, 1, 0);
+  for (int k = 0; k < n; ++k) y2[k] = x1[k] + o->sigma * y1[k];
+  return rc;
+}
+
+/* dnaupd's reverse communication, then the Ritz values (no vectors). */
+static int arnoldi(hill_op *o, int nev, double *dr, double *di, int *nconv) {
+  int N = 2 * o->NH, ncv = 2 * nev + 1 > 20 ? 2 * nev + 1 : 20;
+  if (ncv > N) ncv = N;
+  int lworkl = 3 * ncv * ncv + 6 * ncv, ido = 0, info = 0;
+  int iparam[11] = {0}, ipntr[14] = {0};
+  double tol = 1e-12, *resid = calloc((size_t)N, sizeof *resid);
+  double *v = malloc((size_t)N * ncv * sizeof *v);
+  double *workd = malloc(3 * (size_t)N * sizeof *workd);
+  double *workl = malloc((size_t)lworkl * sizeof *workl);
+  double *workev = malloc(3 * (size_t)ncv * sizeof *workev);
+  double *z = malloc((size_t)N * (nev + 1) * sizeof *z); /* not referenced */
+  int *select = malloc((size_t)ncv * sizeof *select), rc = WHIRL_OK;
+  if (!resid || !v || !workd || !workl || !workev || !select || !z)
+    rc = WHIRL_ENOMEM;
+  iparam[0] = 1;    /* exact shifts */
+  iparam[2] = 1000; /* restarts */
+  iparam[6] = 1;    /* mode 1 on OP */
+  while (!rc) {
+    dnaupd_(&ido, "I", &N, "LM", &nev, &tol, resid, &ncv, v, &N, iparam,
+            ipntr, workd, workl, &lworkl, &info, 1, 2);
+    if (ido != -1 && ido != 1) break;
+    rc = op_apply(o, workd + ipntr[0] - 1, workd + ipntr[1] - 1);
+  }
+  if (!rc && (info < 0 || (info == 1 && iparam[4] == 0)))
+    rc = info == 1 ? WHIRL_EMAXITER : WHIRL_ELAPACK;
+  if (!rc) {
+    const int rvec = 0;
+    const double sr = 0, si = 0;
+    dneupd_(&rvec, "A", select, dr, di, z, &N, &sr, &si, workev, "I", &N,
+            "LM", &nev, &tol, resid, &ncv, v, &N, iparam, ipntr, workd, workl,
+            &lworkl, &info, 1, 1, 2);
+    if (info != 0) rc = WHIRL_ELAPACK;
+    *nconv = iparam[4];
+  }
+  free(resid); free(v); free(workd); free(workl); free(workev); free(select);
+  free(z);
+  return rc;
+}
+
+int fe_hill_sparse(whirl_fe_hbm *h, const double *qfull, const double *p,
+                   size_t nev, double *re, double *im, size_t *m) {
+  int nd = h->r->ndof, nm = h->aft.m, L = h->L;
+  double Omega = p[WHIRL_FE_P_OMEGA], w = Omega / h->o.nu;
+  if ((size_t)(2 * nd * L) < nev + 4 || *m < nev) return WHIRL_EINVAL;
+  for (int blk = 0; blk < L; ++blk)
+    for (int j = 0; j < nm; ++j) h->q[blk * nm + j] = qfull[blk * nd + h->aft.dof[j]];
+  fe_aft_set_scales(&h->aft, p[WHIRL_FE_P_CLEARANCE], p[WHIRL_FE_P_VISCOSITY]);
+  int rc = fe_aft_eval(&h->aft, h->q, w, Omega, h->f, h->Jnl, FE_AFT_HILL);
+  if (rc) return rc;
+  hill_op o;
+  double sigma = 1e-3 * w; /* just right of 0: P is singular at a fold */
+  double *dr = malloc(2 * (nev + 1) * sizeof *dr);
+  if (!dr) return WHIRL_ENOMEM;
+  int nconv = 0;
+  rc = op_init(&o, h, Omega, sigma);
+  if (!rc) rc = arnoldi(&o, (int)nev, dr, dr + nev + 1, &nconv);
+  op_free(&o);
+  size_t k = 0;
+  for (int j = 0; !rc && j < nconv && j < (int)nev; ++j) {
+    double a = dr[j], b = dr[nev + 1 + j], n2 = a * a + b * b;
+    double lr = sigma + a / n2, li = -b / n2;
+    if (fabs(li) > 0.5 * w * (1 + 1e-9)) continue; /* a copy off the strip */
+    re[k] = lr;
+    im[k++] = li;
+  }
+  free(dr);
+  if (rc) {
+    WHIRL_ERRMSG(h->errmsg, sizeof h->errmsg, rc, "sparse Hill (ARPACK): %s",
+                 whirl_strerror(rc));
+    return rc;
+  }
+  for (size_t i = 1; i < k; ++i) /* by decreasing real part */
+    for (size_t j = i; j > 0 && re[j] > re[j - 1]; --j) {
+      double t = re[j]; re[j] = re[j - 1]; re[j - 1] = t;
+      t = im[j]; im[j] = im[j - 1]; im[j - 1] = t;
+    }
+  *m = k;
+  return WHIRL_OK;
+}
+#endif
