@@ -364,6 +364,8 @@ static const struct {
      "left out)"},
     {"loci", cmd_rotor_loci,
      "fold loci in the speed and the unbalance, clearance or viscosity (TSV, PNG)"},
+    {"simulate", cmd_rotor_simulate,
+     "time response at one speed by BDF or DOPRI5: time history and orbit (TSV, PNG)"},
     {"response", cmd_rotor_response,
      "periodic unbalance response with the nonlinear elements: harmonic balance "
      "in speed, folds, stability (TSV, PNG)"}};
