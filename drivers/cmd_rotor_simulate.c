@@ -21,9 +21,10 @@ static const cli_doc doc = {
 "\n"
 "Time response of the rotor of FILE (doc/rotor-file.md) at the shaft speed S\n"
 "with its unbalance, static loads and nonlinear elements: the equations of\n"
-"whirl/rotor/fe.h in first-order form, integrated by BDF (SUNDIALS CVODE,\n"
-"dense analytic Jacobian; the default) or Dormand-Prince 5(4) (--method\n"
-"dopri5, fine for coarse meshes only: the shaft's high modes limit its step).\n"
+"whirl/rotor/fe.h in first-order form, integrated by BDF (SUNDIALS CVODE with\n"
+"the mass matrix on the left and sparse KLU; the default) or Dormand-Prince\n"
+"5(4) (--method dopri5, for coarse meshes: the shaft's high modes limit its\n"
+"step).  Undamped high modes of the shaft cost both methods many steps.\n"
 "The start: the shaft translated by (--y0, --z0) (every node), at rest, t = 0.\n"
 "\n"
 "options:\n",

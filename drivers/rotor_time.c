@@ -15,6 +15,11 @@ whirl_ode *rotor_time_ode(const char *cmd, whirl_fe_ode *m, const double *p,
     return NULL;
   }
   (void)whirl_ode_set_method(ode, method); /* known, no state yet */
+  if (method == WHIRL_ODE_BDF && whirl_fe_ode_use_mass(m, ode) != WHIRL_OK) {
+    cli_error(cmd, "%s", whirl_fe_ode_errmsg(m));
+    whirl_ode_free(ode);
+    return NULL;
+  }
   if (whirl_ode_set_tolerances(ode, rtol, atol) != WHIRL_OK) {
     cli_error(cmd, "bad tolerances: --rtol %g (>= 100 machine epsilon), --atol %g (> 0)",
               rtol, atol);

@@ -10,7 +10,8 @@
 #include "rotor_cli.h"
 
 /* An integrator of m at p (whirl_fe_hbm_params layout) with the method
- * (WHIRL_ODE_BDF: the model's dense Jacobian) and tolerances; NULL with a
+ * (WHIRL_ODE_BDF: the mass matrix on the left, KLU; whirl_fe_ode_use_mass)
+ * and tolerances; NULL with a
  * message when out of memory or the tolerances are bad. */
 whirl_ode *rotor_time_ode(const char *cmd, whirl_fe_ode *m, const double *p,
                           int method, double rtol, double atol);

@@ -138,7 +138,7 @@ void whirl_fe_ode_free(whirl_fe_ode *m) {
   free(m->dof); free(m->epos); free(m->el); free(m->W); free(m->R);
   free(m->a); free(m->JaS); free(m->JrS); free(m->JvS); free(m->X);
   free(m->y); free(m->MiK); free(m->MiC); free(m->MiG); free(m->Jd);
-  free(m->Jp); free(m->Ji);
+  free(m->Jp); free(m->Ji); free(m->Gp); free(m->Gi); free(m->Gw);
   free(m);
 }
 

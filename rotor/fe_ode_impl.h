@@ -25,6 +25,9 @@ struct whirl_fe_ode {
   double *Jd;         /* sparse fill: the dense Jacobian, n×n */
   int *Jp, *Ji;       /* sparse pattern */
   size_t nnz;
+  int *Gp, *Gi;       /* the mass-matrix form's G pattern (fe_ode_mass.c) */
+  size_t gnnz;
+  double *Gw;         /* its column work vector, 2nd */
   char err[256];
 };
 

@@ -57,6 +57,15 @@ WHIRL_API const whirl_problem *whirl_fe_ode_problem(const whirl_fe_ode *m);
  * Worth it only when M⁻¹ is sparse (a lumped, diagonal mass). */
 WHIRL_API int whirl_fe_ode_use_sparse(whirl_fe_ode *m, whirl_ode *ode);
 
+/* BDF with the mass matrix on the left (whirl_ode_set_mass_matrix): sets
+ * on ode the sparse G = diag(I, M) f_x (the assembled K, C, G and the
+ * element Jacobians, no M⁻¹) and B = diag(I, M); CVODE's Newton systems
+ * (B − γ G) δ = B r are then banded and solved by KLU in O(ndof).  The way
+ * to integrate fine meshes.  Exact Newton without fluid inertia; with it
+ * the added mass is left out of B (a modified Newton iteration; the
+ * solution is the same).  WHIRL_OK or an error with the message. */
+WHIRL_API int whirl_fe_ode_use_mass(whirl_fe_ode *m, whirl_ode *ode);
+
 /* The last failure's message ("" if none). */
 WHIRL_API const char *whirl_fe_ode_errmsg(const whirl_fe_ode *m);
 
