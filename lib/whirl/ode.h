@@ -28,7 +28,9 @@
  * Newton iteration (Hindmarsh et al., ACM TOMS 31 (2005) 363; CVODE user
  * guide), lib/ode/bdf.c.  Its linear systems (I − γ f_x) use CVODE's dense
  * LU with the model's jac_x (CVODE's difference quotients when NULL),
- * or KLU sparse LU with a Jacobian given by whirl_ode_set_sparse_jacobian.
+ * or KLU sparse LU with a Jacobian given by whirl_ode_set_sparse_jacobian
+ * (with a mass matrix on the left, whirl_ode_set_mass_matrix, for models
+ * whose f_x = B⁻¹ g_x is dense but g_x sparse).
  * Everything in this header works with both methods (whirl_ode_monodromy
  * always uses DOPRI5); the differences: the error test is CVODE's weighted
  * RMS norm of the local error with weights 1/(rtol |x_i| + atol), looser
