@@ -23,7 +23,7 @@
 #include "rotor_time.h"
 
 #define CMD "rotor basins"
-#define MAXATT 8
+#define MAXATT 8 /* ≤ the colours of write_gp */
 #define H 5
 
 static const cli_doc doc = {
@@ -216,18 +216,30 @@ static void write_tables(FILE *fa, FILE *fb, const orbit *o, int no, const grid 
   }
 }
 
-static void write_gp(FILE *f, const whirl_fe_rotor *r, const bas_args *a, double Om, int no) {
+/* colours of the classes −2 .. 8 (failed, outside, unsettled, orbits) */
+static const unsigned colour[11] = {0x000000, 0xb0b0b0, 0xffffff, 0x1f4e9c, 0xc0392b, 0x2d8f3c,
+                                    0xe08e0b, 0x8e44ad, 0x16a085, 0x7f8c8d, 0xd35400};
+
+static void write_gp(FILE *f, const whirl_fe_rotor *r, const bas_args *a, double Om,
+                     const orbit *o, int no) {
   char t[600], q[640];
   cli_gp_preamble(f, CMD, "basins", 900, 800, "Sans,12");
   snprintf(t, sizeof t, "basins at %.6g rad/s: %s", Om, r->title && *r->title ? r->title : a->file);
   fprintf(f, "set title %s noenhanced\nset size ratio -1\nset datafile separator '\\t'\n"
-             "set xlabel 'y0 (mm)'\nset ylabel 'z0 (mm)'\n"
-             "set palette defined (-2 'black', -1 'grey', 0 'white', 1 '#1f4e9c', 2 '#c0392b', "
-             "3 '#2d8f3c', 4 '#e08e0b', 5 '#8e44ad', 6 '#16a085', 7 '#7f8c8d', 8 '#d35400')\n"
-             "set cbrange [-2:%d]\nset cbtics 1\nset cblabel 'class (attractors.tsv; 0 unsettled, "
-             "-1 outside)'\n"
-             "plot 'basins.tsv' using (1e3*$1):(1e3*$2):3 with image notitle\n",
-             cli_gp_quote(t, q, sizeof q), no > 1 ? no : 1);
+             "set xlabel 'y0 (mm)'\nset ylabel 'z0 (mm)'\nset key outside right top vertical\nset autoscale fix\n",
+          cli_gp_quote(t, q, sizeof q));
+  /* a palette of steps: class c is the band [c − 1/2, c + 1/2] */
+  fprintf(f, "set cbrange [-2.5:%g]\nunset colorbox\nset palette defined (", no + 0.5);
+  for (int c = -2; c <= no; ++c)
+    fprintf(f, "%s%g '#%06x', %g '#%06x'", c > -2 ? ", " : "", c - 0.5, colour[c + 2], c + 0.5,
+            colour[c + 2]);
+  fprintf(f, ")\nplot 'basins.tsv' using (1e3*$1):(1e3*$2):3 with image notitle");
+  for (int k = 0; k < no; ++k)
+    fprintf(f, ", \\\n  1/0 with boxes fs solid lc rgb '#%06x' title 'orbit %d, %.3g mm'",
+            colour[k + 3], k + 1, 1e3 * o[k].amp);
+  fprintf(f, ", \\\n  1/0 with boxes fs solid lc rgb '#%06x' title 'outside', \\\n"
+             "  1/0 with boxes fs solid border lc rgb '#000000' fc rgb '#ffffff' title 'unsettled'\n",
+          colour[1]);
 }
 
 static int write_out(const bas_args *a, const whirl_fe_rotor *r, double Om, const orbit *o,
@@ -244,7 +256,7 @@ static int write_out(const bas_args *a, const whirl_fe_rotor *r, double Om, cons
     bad = out_commit(&fb) || bad;
   }
   if (!bad && !a->noplot && !(bad = out_open(&fg, &od, "basins.gp")))
-    write_gp(fg.fp, r, a, Om, no), bad = out_commit(&fg);
+    write_gp(fg.fp, r, a, Om, o, no), bad = out_commit(&fg);
   static const char *const pics[] = {"basins", NULL};
   return cli_outdir_finish(&od, bad, a->noplot ? NULL : pics);
 }
@@ -270,7 +282,7 @@ static int parse_args(int argc, char **argv, bas_args *a) {
 
 static int check_args(const bas_args *a) {
   const char *why = !(a->speed > 0) ? "--speed is required and must be > 0"
-                    : a->grid < 2 || a->grid > 1000 ? "need 2 <= --grid <= 1000"
+                    : a->grid < 3 || a->grid > 1000 ? "need 3 <= --grid <= 1000"
                     : a->periods < 4 ? "need --periods >= 4"
                     : !(a->tol > 0 && a->tol < 1) ? "need 0 < --tol < 1"
                     : !(isnan(a->range) || a->range > 0) ? "need --range > 0" : NULL;

@@ -32,7 +32,7 @@ bad() {
   ok $r "$* -> exit 2, '$prefix...'"
 }
 bad "whirl rotor basins: --speed is required" "$ex"
-bad "whirl rotor basins: need 2 <= --grid" "$ex" --speed 690 --grid 1
+bad "whirl rotor basins: need 3 <= --grid" "$ex" --speed 690 --grid 2
 bad "whirl rotor basins: need 0 < --tol" "$ex" --speed 690 --tol 2
 bad "whirl rotor basins: --node 9 is not a node" "$ex" --speed 690 --node 9
 bad "whirl rotor basins: the rotor has no nonlinear element" \
