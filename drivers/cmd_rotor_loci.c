@@ -33,8 +33,17 @@ static int keep_fold(const whirl_fe_hbm_response_point *pt, void *ctx) {
   return 0;
 }
 
+/* The merge points MG found on the loci: the base unknowns, the speed and
+ * the locus parameter there. */
+typedef struct merge_list {
+  double *X;
+  double Omega[16], value[16];
+  size_t n, count;
+} merge_list;
+
 typedef struct locus_out {
-  FILE *all;      /* loci.tsv, being written */
+  FILE *all;      /* loci.tsv or merge.tsv, being written */
+  merge_list mg;
   char *special;  /* the special rows, for stdout */
   size_t len, cap;
   int locus;
@@ -54,13 +63,27 @@ static int add_special(locus_out *o, const char *row) {
   return 0;
 }
 
+static int keep_merge(merge_list *m, const whirl_fe_locus_point *pt) {
+  if (m->count == 16) return 0;
+  double *X = realloc(m->X, (m->count + 1) * pt->n * sizeof *X);
+  if (!X) return WHIRL_ENOMEM;
+  m->X = X, m->n = pt->n;
+  memcpy(X + m->count * pt->n, pt->X, pt->n * sizeof *X);
+  m->Omega[m->count] = pt->Omega, m->value[m->count] = pt->value;
+  m->count++;
+  return 0;
+}
+
 static int on_point(const whirl_fe_locus_point *pt, void *ctx) {
   locus_out *o = ctx;
   char row[256];
-  snprintf(row, sizeof row, "%s\t%d\t%.12g\t%.12g\t%.12g\t%.12g\n",
-           pt->type ? whirl_point_type_name(pt->type) : "", o->locus, pt->Omega,
-           pt->Omega / ROTOR_RPM, o->wref > 0 ? pt->Omega / o->wref : NAN, pt->value);
+  int k = snprintf(row, sizeof row, "%s\t%d\t%.12g\t%.12g\t%.12g\t%.12g",
+                   pt->type ? whirl_point_type_name(pt->type) : "", o->locus, pt->Omega,
+                   pt->Omega / ROTOR_RPM, o->wref > 0 ? pt->Omega / o->wref : NAN, pt->value);
+  if (!isnan(pt->value2)) snprintf(row + k, sizeof row - (size_t)k, "\t%.12g\n", pt->value2);
+  else snprintf(row + k, sizeof row - (size_t)k, "\n");
   fputs(row, o->all);
+  if (pt->type == WHIRL_PT_MG && isnan(pt->value2) && keep_merge(&o->mg, pt)) return WHIRL_ENOMEM;
   return pt->type && pt->type != WHIRL_PT_EP ? add_special(o, row) : 0;
 }
 
@@ -80,11 +103,12 @@ static const cli_doc loci_doc = {
 "options:\n",
 "stdout: TSV 'type locus Omega_rad_s speed_rpm Omega_nd P' of the loci's\n"
 "special points.  files in DIR: loci.tsv (every point, a blank line between\n"
-"loci), loci.png.\n"
+"loci), loci.png; with --merge-along Q, merge.tsv 'type curve Omega_rad_s\n"
+"speed_rpm Omega_nd Q P': the merge curves.\n"
 "exit status: 0, 1 a failed continuation or output, 2 bad options or rotor file.\n"};
 
 typedef struct loci_args {
-  const char *file, *unit, *dir, *param, *range, *seed;
+  const char *file, *unit, *dir, *param, *range, *seed, *along, *range2;
   size_t harmonics;
   int noplot, quiet;
 } loci_args;
@@ -152,6 +176,38 @@ bad_seed:
   return 2;
 }
 
+/* The merge curves through the loci's MG points, both ways, into f. */
+static int merge_curves(const char *CMD, const loci_args *a, const whirl_fe_rotor *r, int param,
+                        int along, double lo2, double hi2, FILE *f, locus_out *out) {
+  whirl_fe_locus_options o;
+  whirl_fe_locus_options_default(&o);
+  if (a->harmonics) o.hbm.harmonics = a->harmonics;
+  o.param = param, o.pmin2 = lo2, o.pmax2 = hi2;
+  char msg[600] = "";
+  int rc = 0;
+  fprintf(f, "type\tcurve\tOmega_rad_s\tspeed_rpm\tOmega_nd\t%s\t%s\n", param_names[along],
+          param_names[param]);
+  for (size_t k = 0; !rc && k < out->mg.count; k++)
+    for (int d = -1; !rc && d <= 1; d += 2) {
+      double p[WHIRL_FE_NPAR];
+      whirl_fe_hbm_params(out->mg.Omega[k], p);
+      p[param] = out->mg.value[k];
+      out->locus = (int)(2 * k + (d > 0)) + 1;
+      if (out->locus > 1) fputc('\n', f);
+      rc = whirl_fe_hbm_merge_curve(r, &o, along, out->mg.X + k * out->mg.n, p, d, on_point,
+                                    out, msg, sizeof msg);
+    }
+  if (rc) {
+    cli_strip_locations(msg);
+    cli_error(CMD, "%s", msg[0] ? msg : whirl_strerror(rc));
+    return 1;
+  }
+  if (!a->quiet)
+    fprintf(stderr, "whirl rotor loci: %zu merge point%s followed in %s\n", out->mg.count,
+            out->mg.count == 1 ? "" : "s", param_names[along]);
+  return 0;
+}
+
 static int parse_range(const char *CMD, const char *s, double *lo, double *hi) {
   const char *c = s ? strchr(s, ':') : NULL;
   char a[64];
@@ -166,7 +222,8 @@ static int parse_range(const char *CMD, const char *s, double *lo, double *hi) {
 
 int cmd_rotor_loci(int argc, char **argv) {
   const char *CMD = "rotor loci";
-  loci_args a = {.unit = "rpm", .dir = "rotor-loci", .param = NULL, .range = "0:10"};
+  loci_args a = {.unit = "rpm", .dir = "rotor-loci", .param = NULL, .range = "0:10",
+                 .range2 = "0.2:5"};
   const cli_opt opts[] = {
       {"--param", CLI_STRING, &a.param, "P", "second parameter: unbalance, clearance or viscosity",
        "required"},
@@ -174,6 +231,11 @@ int cmd_rotor_loci(int argc, char **argv) {
       {"--harmonics", CLI_SIZE, &a.harmonics, "H", "harmonics of the balance", "5"},
       {"--seed", CLI_STRING, &a.seed, "W:E", "also the folds of the branch seeded as in "
        "whirl rotor response", ""},
+      {"--merge-along", CLI_STRING, &a.along, "Q",
+       "also the merge curves through the loci's merge points MG, followed in Q "
+       "(unbalance, clearance or viscosity): where isolas exist in the (Q, P) plane",
+       ""},
+      {"--range2", CLI_STRING, &a.range2, "A:B", "range of Q", NULL},
       {"--unit", CLI_STRING, &a.unit, "U", "unit of --seed's speed: rpm, rad/s or hz", NULL},
       {"-o", CLI_STRING, &a.dir, "DIR", "output directory (also --out)", NULL},
       CLI_OPTS_OUT(a.dir, a.noplot, a.quiet)};
@@ -190,6 +252,16 @@ int cmd_rotor_loci(int argc, char **argv) {
     return 2;
   }
   if (f < 0 || parse_range(CMD, a.range, &lo, &hi)) return 2;
+  int along = 0;
+  double lo2 = 0, hi2 = 0;
+  for (int k = 1; a.along && k < WHIRL_FE_NPAR; k++)
+    if (!strcmp(a.along, param_names[k])) along = k;
+  if (a.along && (!along || along == param)) {
+    cli_error(CMD, "--merge-along must be unbalance, clearance or viscosity, not --param "
+              "(got '%s')", a.along);
+    return 2;
+  }
+  if (along && parse_range(CMD, a.range2, &lo2, &hi2)) return 2;
   whirl_fe_rotor *r = rotor_load(a.file);
   if (!r) return 2;
   locus_out out = {.wref = r->omega_ref};
@@ -206,6 +278,13 @@ int cmd_rotor_loci(int argc, char **argv) {
       if (rc) out_abort(&t);
       bad = rc ? rc : out_commit(&t);
     }
+    out_file m;
+    if (!bad && along && !(bad = out_open(&m, &od, "merge.tsv"))) {
+      out.all = m.fp;
+      rc = merge_curves(CMD, &a, r, param, along, lo2, hi2, m.fp, &out);
+      if (rc) out_abort(&m);
+      bad = rc ? rc : out_commit(&m);
+    }
     if (!bad && !a.noplot && !(bad = out_open(&g, &od, "loci.gp")))
       write_gp(g.fp, r, a.file, param_names[param]), bad = out_commit(&g);
     static const char *const pics[] = {"loci", NULL};
@@ -217,6 +296,7 @@ int cmd_rotor_loci(int argc, char **argv) {
     if (out.special) fputs(out.special, stdout);
   }
   free(out.special);
+  free(out.mg.X);
   whirl_fe_rotor_free(r);
   return rc;
 }

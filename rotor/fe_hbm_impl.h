@@ -91,6 +91,8 @@ typedef struct fe_lin {
   int *Lp, *Li, *Lmap;                 /* interior pattern, map into union */
   double *Lx, *Lz;
   void *symbolic;
+  double control[20]; /* UMFPACK_CONTROL (20, checked in fe_hbm_lin.c):
+                         no iterative refinement */
   double complex *Xk;                  /* (H+1) ni·m: D_ll⁻¹ D_ln */
   double complex *yk;                  /* (H+1) ni: D_ll⁻¹ F_l */
   double complex *w1, *w2, *w3;        /* work ndof·m */

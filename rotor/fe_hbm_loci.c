@@ -24,6 +24,8 @@ void whirl_fe_locus_options_default(whirl_fe_locus_options *o) {
   o->pmin = 0.0;
   o->pmax = 10.0;
   o->nmx = 500;
+  o->pmin2 = 0.0;
+  o->pmax2 = 10.0;
 }
 
 /* The base system with p[0] the speed over omega_scale. */
@@ -68,9 +70,10 @@ static whirl_system scaled_system(scaled *s) {
   return S;
 }
 
-static void locus_cont_options(whirl_cont_options *co, const whirl_fe_locus_options *o) {
+static void locus_cont_options(whirl_cont_options *co, const whirl_fe_locus_options *o,
+                               int icp) {
   whirl_cont_options_default(co);
-  co->icp = (size_t)o->param;
+  co->icp = (size_t)icp;
   co->p_min = o->pmin;
   co->p_max = o->pmax;
   co->ds = o->ds > 0 ? o->ds : 0.01;
@@ -97,13 +100,13 @@ static void run_free(locus_run *L) {
   free(L->pf);
 }
 
-/* The fold system on the scaled base, started at the fold (X, p). */
-static int run_start(locus_run *L, const whirl_fe_locus_options *o, const double *X,
+/* The fold system fo on the scaled base, started at the fold (X, p),
+ * followed in the parameter icp. */
+static int run_start(locus_run *L, const whirl_fe_locus_options *o,
+                     const whirl_fold_options *fo, int icp, const double *X,
                      const double *p, int direction, char *err, size_t errlen) {
-  whirl_fold_options fo;
-  whirl_fold_options_default(&fo, WHIRL_FE_P_OMEGA);
   const whirl_system S = scaled_system(L->s);
-  L->f = whirl_fold_alloc(&S, &fo, err, errlen);
+  L->f = whirl_fold_alloc(&S, fo, err, errlen);
   if (!L->f) return WHIRL_EINVAL;
   const size_t nz = whirl_fold_size(L->f);
   L->Z = malloc(nz * sizeof *L->Z);
@@ -113,11 +116,15 @@ static int run_start(locus_run *L, const whirl_fe_locus_options *o, const double
   memcpy(ps, p, sizeof ps);
   ps[WHIRL_FE_P_OMEGA] = p[WHIRL_FE_P_OMEGA] / L->s->ws;
   int rc = whirl_fold_init(L->f, X, ps, L->Z);
+  if (!rc && fo->cond) { /* the codimension-two point itself first */
+    int its = 0;
+    rc = whirl_newton(whirl_fold_system(L->f), L->Z, ps, 1e-11, 30, &its);
+  }
   if (rc)
     return WHIRL_ERRMSG(err, errlen, rc, "fold locus: start at Omega = %g rad/s: %s",
                         p[WHIRL_FE_P_OMEGA], whirl_fold_errmsg(L->f));
   whirl_cont_options co;
-  locus_cont_options(&co, o);
+  locus_cont_options(&co, o, icp);
   L->c = whirl_cont_alloc(whirl_fold_system(L->f), &co, err, errlen);
   if (!L->c) return WHIRL_ENOMEM;
   rc = whirl_cont_start(L->c, L->Z, ps, direction < 0 ? -1 : +1);
@@ -128,12 +135,13 @@ static int run_start(locus_run *L, const whirl_fe_locus_options *o, const double
 }
 
 /* One point of the locus to the caller: Ω back in rad/s. */
-static int run_report(locus_run *L, const whirl_fe_locus_options *o, double wlo, double whi,
+static int run_report(locus_run *L, int icp, int second, double wlo, double whi,
                       whirl_fe_locus_fn fn, void *ctx) {
   const whirl_point *pt = whirl_cont_point(L->c);
   whirl_fold_params(L->f, pt->x, pt->p, L->pf);
   whirl_fe_locus_point lp = {pt->index, pt->type, L->pf[WHIRL_FE_P_OMEGA] * L->s->ws,
-                             L->pf[o->param], pt->x, L->s->base->n};
+                             L->pf[icp], second > 0 ? L->pf[second] : NAN, pt->x,
+                             L->s->base->n};
   if (!(lp.Omega >= wlo && lp.Omega <= whi)) return WHIRL_DONE; /* left the range */
   return fn ? fn(&lp, ctx) : 0;
 }
@@ -153,11 +161,51 @@ int whirl_fe_hbm_fold_locus(const whirl_fe_rotor *r, const whirl_fe_locus_option
   scaled s = {whirl_fe_hbm_system(h), o->omega_scale > 0 ? o->omega_scale : p[WHIRL_FE_P_OMEGA],
               {0}};
   locus_run L = {NULL, &s, NULL, NULL, NULL};
-  int rc = run_start(&L, o, X, p, direction, err, errlen);
-  while (!rc && (rc = whirl_cont_step(L.c)) == WHIRL_OK) rc = run_report(&L, o, wlo, whi, fn, ctx);
+  whirl_fold_options fo;
+  whirl_fold_options_default(&fo, WHIRL_FE_P_OMEGA);
+  int rc = run_start(&L, o, &fo, o->param, X, p, direction, err, errlen);
+  while (!rc && (rc = whirl_cont_step(L.c)) == WHIRL_OK)
+    rc = run_report(&L, o->param, -1, wlo, whi, fn, ctx);
   if (rc == WHIRL_DONE) rc = WHIRL_OK;
   else if (rc < 0 && L.c && whirl_cont_errmsg(L.c)[0])
     WHIRL_ERRMSG(err, errlen, rc, "fold locus: %s", whirl_cont_errmsg(L.c));
+  run_free(&L);
+  whirl_fe_hbm_free(h);
+  return rc;
+}
+
+int whirl_fe_hbm_merge_curve(const whirl_fe_rotor *r, const whirl_fe_locus_options *o,
+                             int along, const double *X, const double *p,
+                             int direction, whirl_fe_locus_fn fn, void *ctx,
+                             char *err, size_t errlen) {
+  if (!r || !o || !X || !p || o->param < 1 || o->param >= WHIRL_FE_NPAR || along < 1 ||
+      along >= WHIRL_FE_NPAR || along == o->param || !(p[WHIRL_FE_P_OMEGA] > 0))
+    return WHIRL_ERRMSG(err, errlen, WHIRL_EINVAL,
+                        "merge curve: need two different parameters among unbalance, "
+                        "clearance and viscosity, and a merge point at a speed > 0");
+  whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o->hbm, err, errlen);
+  if (!h) return WHIRL_EINVAL;
+  double wlo = r->speed_min, whi = r->speed_max;
+  if (!(whi > wlo)) wlo = 0, whi = HUGE_VAL;
+  scaled s = {whirl_fe_hbm_system(h), o->omega_scale > 0 ? o->omega_scale : p[WHIRL_FE_P_OMEGA],
+              {0}};
+  locus_run L = {NULL, &s, NULL, NULL, NULL};
+  /* the merge (isola-centre) condition w^T F_q = 0 as an extra equation,
+   * the speed and o->param free, followed in `along` (whirl/fold.h) */
+  whirl_fold_options fo;
+  whirl_fold_options_default(&fo, WHIRL_FE_P_OMEGA);
+  fo.nfree = 2;
+  fo.free[0] = WHIRL_FE_P_OMEGA;
+  fo.free[1] = (size_t)o->param;
+  fo.cond = WHIRL_FOLD_COND_MG;
+  whirl_fe_locus_options oa = *o;
+  oa.pmin = o->pmin2, oa.pmax = o->pmax2;
+  int rc = run_start(&L, &oa, &fo, along, X, p, direction, err, errlen);
+  while (!rc && (rc = whirl_cont_step(L.c)) == WHIRL_OK)
+    rc = run_report(&L, along, o->param, wlo, whi, fn, ctx);
+  if (rc == WHIRL_DONE) rc = WHIRL_OK;
+  else if (rc < 0 && L.c && whirl_cont_errmsg(L.c)[0])
+    WHIRL_ERRMSG(err, errlen, rc, "merge curve: %s", whirl_cont_errmsg(L.c));
   run_free(&L);
   whirl_fe_hbm_free(h);
   return rc;

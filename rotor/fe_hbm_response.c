@@ -108,6 +108,43 @@ static int start_point(whirl_fe_hbm *h, const whirl_fe_hbm_response_options *o,
   return whirl_fe_hbm_seed_circular(h, o->seed_eps, ph, x0);
 }
 
+static double norm2(const double *f, size_t n) {
+  double s = 0;
+  for (size_t i = 0; i < n; i++) s += f[i] * f[i];
+  return isfinite(s) ? s : HUGE_VAL;
+}
+
+/* Damped Newton on F(x, p) = 0 from x (in place): the full step is halved
+ * while the trial leaves the model's domain (a journal at its clearance)
+ * or does not reduce |F|, so that a start far from the solution — a
+ * journal bearing's static equilibrium at low speed, ε → 1, from the
+ * centred journal — stays inside the clearances (Deuflhard, Newton
+ * Methods for Nonlinear Problems, 2004, §3.1: the residual-based damping).
+ * WHIRL_OK when |F| ≤ tol; the corrector of the continuation then polishes
+ * it. */
+static int settle(const whirl_system *S, double *x, const double *p) {
+  const size_t n = S->n;
+  double *f = malloc((3 * n + n * n) * sizeof *f), *xt = f + n, *ft = xt + n, *J = ft + n;
+  whirl_linsol *ls = whirl_linsol_alloc_dense(n);
+  int rc = f && ls ? S->F(x, p, f, S->data) : WHIRL_ENOMEM;
+  double r = rc ? HUGE_VAL : norm2(f, n);
+  for (int it = 0; !rc && it < 200 && r > 1e-20; it++) {
+    rc = S->Fx(x, p, J, S->data);
+    if (!rc) rc = whirl_linsol_factor(ls, J);
+    if (!rc) rc = whirl_linsol_solve(ls, f, 1, 0);
+    double t = 1.0, rt = HUGE_VAL;
+    for (; !rc && t > 1e-8; t *= 0.5) {
+      for (size_t i = 0; i < n; i++) xt[i] = x[i] - t * f[i];
+      if (S->F(xt, p, ft, S->data) == 0 && (rt = norm2(ft, n)) < r) break;
+    }
+    if (rc || !(t > 1e-8)) { rc = rc ? rc : WHIRL_ENOCONV; break; }
+    memcpy(x, xt, n * sizeof *x), memcpy(f, ft, n * sizeof *f), r = rt;
+  }
+  whirl_linsol_free(ls);
+  free(f);
+  return rc ? rc : (r <= 1e-20 ? WHIRL_OK : WHIRL_ENOCONV);
+}
+
 static int follow(whirl_fe_hbm *h, const whirl_cont_options *co,
                   const whirl_fe_hbm_response_options *o, double lo,
                   whirl_fe_hbm_response_fn fn, void *ctx, char *err,
@@ -124,6 +161,8 @@ static int follow(whirl_fe_hbm *h, const whirl_cont_options *co,
   int rc = x0 && q ? start_point(h, o, p, x0, err, errlen) : WHIRL_ENOMEM;
   whirl_cont *c = !rc ? whirl_cont_alloc(whirl_fe_hbm_system(h), co, err, errlen) : NULL;
   /* the first step returns the corrected start point (EP) */
+  /* a damped Newton first when the plain one of the start would fail */
+  if (!rc && c) settle(whirl_fe_hbm_system(h), x0, p); /* failure: the core's Newton tells */
   if (!rc) rc = c ? whirl_cont_start(c, x0, p, o->direction < 0 ? -1 : +1) : WHIRL_ENOMEM;
   if (rc && c)
     WHIRL_ERRMSG(err, errlen, rc, "start at Omega = %g rad/s: %s", om0,

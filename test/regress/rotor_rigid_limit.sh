@@ -13,6 +13,8 @@
 #    (E x 10^3, 10^4, 10^5 of steel's: it is m Omega^2 / k_shaft);
 #  - the fold loci in speed x unbalance (whirl rotor loci) merge the
 #    isola where the rigid rotor's merge condition does (whirl sfd merge);
+#  - the merge curve in (clearance, unbalance), the boundary of the isolas'
+#    region (Fig. 18), is the rigid rotor's merge curve delta(lambda);
 #  - 1 and 3 harmonics agree (the orbits are circular: one harmonic is
 #    exact for the pi film), and 3 harmonics report no TR or PD (the
 #    stiff shaft's unresolved modes once made 22).
@@ -103,6 +105,24 @@ set -- $res
 echo "# merge point: FE delta $3 at Omega $4; rigid $(awk -F '\t' 'NR == 2 { print $3, $4 }' merge.tsv)"
 ok "$(awk -v a="$1" -v b="$2" 'BEGIN { exit !(a < 1e-5 && b < 1e-4) }'; echo $?)" \
   "the loci's merge point is the rigid rotor's: delta to $1, Omega to $2"
+
+# the merge curve in (clearance, unbalance): a clearance scale s is the
+# rigid rotor's lambda / s^3 and delta / s, so its points lie on the rigid
+# rotor's merge curve delta(lambda) of whirl sfd merge
+"$WHIRL" rotor loci "$ex" --param unbalance --range 0.05:3 --harmonics 1 \
+  --merge-along clearance --range2 0.5:2 -o merge.d --quiet > /dev/null 2> merge2.err
+ok $? "whirl rotor loci --merge-along clearance: $(head -c 200 merge2.err)"
+worst=0 npts=0
+for row in $(awk -F '\t' 'NF > 6 && $1 == "" && (NR % 15) == 0 { print $6 ":" $7 }' merge.d/merge.tsv); do
+  s=${row%%:*} u=${row##*:}
+  lam=$(awk -v s="$s" 'BEGIN { printf "%.15g", 0.0503 / s ^ 3 }')
+  d=$("$WHIRL" sfd merge --lambda "$lam" --quiet | awk -F '\t' 'NR == 2 { print $3 }')
+  worst=$(awk -v s="$s" -v u="$u" -v d="$d" -v w="$worst" 'BEGIN { e = 0.3 * u / s / d - 1; if (e < 0) e = -e; printf "%.3g", (e > w ? e : w) }')
+  npts=$((npts + 1))
+done
+echo "# merge curve: $npts points against whirl sfd merge, worst relative delta $worst"
+ok "$(awk -v w="$worst" -v k="$npts" 'BEGIN { exit !(k >= 5 && w < 1e-5) }'; echo $?)" \
+  "the merge curve in (clearance, unbalance) is the rigid rotor's delta(lambda) to 1e-5 ($npts points, $worst)"
 
 echo "1..$n"
 [ "$fails" -eq 0 ]

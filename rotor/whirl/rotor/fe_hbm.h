@@ -192,6 +192,7 @@ WHIRL_API int whirl_fe_hbm_response(const whirl_fe_rotor *r,
                                     char *errbuf, size_t errlen);
 
 /* ------------------------------------------------- fold loci */
+/* (whirl_fe_hbm_fold_locus, whirl_fe_hbm_merge_curve) */
 
 typedef struct whirl_fe_locus_options {
   whirl_fe_hbm_options hbm;  /* as for the response the fold came from
@@ -203,6 +204,8 @@ typedef struct whirl_fe_locus_options {
                                 param) (0: 0.01, 0.05) */
   size_t nmx;                /* steps (default 500) */
   double omega_scale;        /* rad/s (0: the fold's speed) */
+  double pmin2, pmax2;       /* merge curves: the range of the parameter
+                                they are followed in (default 0, 10) */
 } whirl_fe_locus_options;
 
 WHIRL_API void whirl_fe_locus_options_default(whirl_fe_locus_options *o);
@@ -211,7 +214,8 @@ typedef struct whirl_fe_locus_point {
   size_t index;
   int type;        /* whirl_point_type: EP, LP (of the locus), CP, IS, MG */
   double Omega;    /* rad/s */
-  double value;    /* the second parameter */
+  double value;    /* the parameter followed */
+  double value2;   /* merge curves: the free parameter (NaN on loci) */
   const double *X; /* the unknowns of the fold system: the orbit's, then Ω */
   size_t n;        /* the orbit's unknowns */
 } whirl_fe_locus_point;
@@ -229,6 +233,20 @@ WHIRL_API int whirl_fe_hbm_fold_locus(const whirl_fe_rotor *r,
                                       const double *X, const double *p,
                                       int direction, whirl_fe_locus_fn fn,
                                       void *ctx, char *err, size_t errlen);
+
+/* The merge curve through a merge point MG of a fold locus (X: the
+ * base's unknowns there, p with its speed and o->param): the points where
+ * an isolated branch joins another (or is born, IS), with the speed and
+ * o->param free, followed in the parameter `along` (another of unbalance,
+ * clearance, viscosity) over [pmin2, pmax2] — the boundary of the region
+ * of isolas in the plane (along, o->param), Fig. 18 of the paper for a
+ * rotor of any shape.  value is `along`, value2 o->param. */
+WHIRL_API int whirl_fe_hbm_merge_curve(const whirl_fe_rotor *r,
+                                       const whirl_fe_locus_options *o,
+                                       int along, const double *X,
+                                       const double *p, int direction,
+                                       whirl_fe_locus_fn fn, void *ctx,
+                                       char *err, size_t errlen);
 
 #ifdef __cplusplus
 }
