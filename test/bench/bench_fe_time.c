@@ -7,9 +7,10 @@
  *          time, revolutions, steps, rhs and Jacobian evaluations, LU
  *          factorisations, and the change over the last revolution (above
  *          `settle`: not settled yet, the time a lower bound);
- *   hbm    one condensed HBM solve at that speed (H = 5, Newton from the
- *          previous speed's solution, the first from X = 0 at the lowest
- *          speed): wall time, iterations;
+ *   hbm    one condensed HBM solve at that speed (H = 5): Newton from the
+ *          nearest point of the response from rest (whirl_fe_hbm_response,
+ *          untimed) on its first crossing of the speed, as a continuation
+ *          step would: wall time, iterations;
  * and the ratios bdf/hbm and (per revolution) rev/hbm, the issue's target
  * being HBM ≥ 100× faster per speed;
  * the journal amplitudes of both (they agree when BDF settled).
@@ -80,6 +81,33 @@ static tres integrate(const whirl_fe_rotor *r, double Om, int node, size_t maxp,
   return t;
 }
 
+/* the response's points (speed, unknowns) */
+typedef struct trace { double *om, *X; size_t n, cap, nx; } trace;
+
+static int collect(const whirl_fe_hbm_response_point *pt, void *ctx) {
+  trace *t = ctx;
+  if (t->n == t->cap) {
+    t->cap = t->cap ? 2 * t->cap : 512;
+    t->om = realloc(t->om, t->cap * sizeof *t->om);
+    t->X = realloc(t->X, t->cap * t->nx * sizeof *t->X);
+    if (!t->om || !t->X) return WHIRL_ENOMEM;
+  }
+  t->om[t->n] = pt->Omega;
+  memcpy(t->X + t->n++ * t->nx, pt->X, t->nx * sizeof *t->X);
+  return 0;
+}
+
+/* X = the point nearest Om on the response's first crossing of Om */
+static int start_point(const trace *t, double Om, double *X) {
+  for (size_t i = 0; i + 1 < t->n; ++i)
+    if ((t->om[i] - Om) * (t->om[i + 1] - Om) <= 0) {
+      const size_t j = Om - t->om[i] < t->om[i + 1] - Om ? i : i + 1;
+      memcpy(X, t->X + j * t->nx, t->nx * sizeof *X);
+      return 0;
+    }
+  return -1;
+}
+
 static double hbm_solve(whirl_fe_hbm *h, const whirl_fe_rotor *r, double *X, double Om,
                         int node, int *its, int *rc, double *amp) {
   double p[WHIRL_FE_NPAR], *q = malloc((size_t)r->ndof * 11 * sizeof *q);
@@ -110,14 +138,24 @@ int main(int argc, char **argv) {
   const int node = r->nl[0].node;
   double *X = calloc(whirl_fe_hbm_size(h), sizeof *X);
   const double rpm[] = {2000, 4000, 6000};
+  whirl_fe_hbm_response_options ro;
+  whirl_fe_hbm_response_options_default(&ro);
+  ro.hbm = o;
+  ro.node = node;
+  ro.speed_min = 200 * WHIRL_PI / 30;
+  ro.speed_max = 6500 * WHIRL_PI / 30;
+  trace tr = {NULL, NULL, 0, 0, whirl_fe_hbm_size(h)};
+  if (whirl_fe_hbm_response(r, &ro, collect, &tr, msg, sizeof msg) != WHIRL_OK)
+    fprintf(stderr, "bench_fe_time: the response: %s\n", msg);
   printf("# %s: %d DOF, BDF rtol 1e-8 atol 1e-12 from rest to a change < %g per revolution\n",
          path, r->ndof, settle);
   printf("rpm\tbdf_s\trevs\tsteps\trhs\tjac\tlu\tchange\tbdf_amp_m\thbm_s\tits\thbm_amp_m\tratio\tratio_per_rev\n");
   for (size_t k = 0; k < sizeof rpm / sizeof rpm[0]; ++k) {
     const double Om = rpm[k] * WHIRL_PI / 30;
     int its = 0, hrc = 0;
-    double hamp;
-    const double hs = hbm_solve(h, r, X, Om, node, &its, &hrc, &hamp);
+    double hamp = NAN;
+    hrc = start_point(&tr, Om, X);
+    const double hs = hrc ? NAN : hbm_solve(h, r, X, Om, node, &its, &hrc, &hamp);
     tres t = integrate(r, Om, node, maxp, settle);
     printf("%.0f\t%.3f\t%zu\t%zu\t%zu\t%zu\t%zu\t%.2e\t%.6e\t%.4f\t%d\t%.6e\t%.0f\t%.0f%s\n",
            rpm[k], t.secs, t.periods, t.steps, t.rhs, t.jac, t.lu, t.change, t.amp, hs, its,
@@ -125,7 +163,7 @@ int main(int argc, char **argv) {
            t.rc || hrc ? "\t(failed)" : "");
     fflush(stdout);
   }
-  free(X);
+  free(X), free(tr.om), free(tr.X);
   whirl_fe_hbm_free(h);
   whirl_fe_rotor_free(r);
   return 0;
