@@ -108,6 +108,8 @@ int cmd_rotor(int argc, char **argv);
 int cmd_rotor_response(int argc, char **argv); /* cmd_rotor_response.c */
 int cmd_rotor_loci(int argc, char **argv);     /* cmd_rotor_loci.c */
 int cmd_rotor_export(int argc, char **argv);   /* cmd_rotor_export.c */
+int cmd_rotor_simulate(int argc, char **argv); /* cmd_rotor_simulate.c */
+int cmd_rotor_basins(int argc, char **argv);   /* cmd_rotor_basins.c */
 void cli_rotor_help(FILE *f, const char *prefix, size_t col);
 
 #endif

@@ -366,6 +366,10 @@ static const struct {
      "the assembled M, C, G, K as Matrix Market files (for matrices lines)"},
     {"loci", cmd_rotor_loci,
      "fold loci in the speed and the unbalance, clearance or viscosity (TSV, PNG)"},
+    {"simulate", cmd_rotor_simulate,
+     "time response at one speed by BDF or DOPRI5: time history and orbit (TSV, PNG)"},
+    {"basins", cmd_rotor_basins,
+     "basins of attraction at one speed over initial displacements (TSV, PNG)"},
     {"response", cmd_rotor_response,
      "periodic unbalance response with the nonlinear elements: harmonic balance "
      "in speed, folds, stability (TSV, PNG)"}};

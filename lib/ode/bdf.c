@@ -6,7 +6,11 @@
  * Newton iteration on I − γ f_x, solved by CVODE's dense LU (the model's
  * jac_x, or CVODE's difference quotients) or by KLU sparse LU (Davis &
  * Palamadai Natarajan, ACM TOMS 37 (2010) 36) with the pattern of
- * whirl_ode_set_sparse_jacobian.  CVODE runs in one-step mode with a stop
+ * whirl_ode_set_sparse_jacobian; with a mass matrix B
+ * (whirl_ode_set_mass_matrix) the Newton systems are B (I − γ f_x) δ = B r,
+ * i.e. (B − γ G) δ = B r with the fill's G = B f_x: CVODE's linear-system
+ * function builds B − γ G, and a wrapper around KLU multiplies the
+ * right-hand side by B.  CVODE runs in one-step mode with a stop
  * time at t_end, so whirl_ode_step keeps its meaning; its dense output is
  * CVodeGetDky.  CVODE's messages go to the object's errmsg, never stderr.
  * SPDX-License-Identifier: BSD-3-Clause */
@@ -41,6 +45,9 @@ struct whirl_bdf {
   whirl_jac_fn fill;
   void *fill_data;
   int jac_status;        /* the Jacobian callback's last status */
+  size_t mnnz;           /* mass matrix B (0: none), in J's pattern at */
+  int *Mp, *Mi, *Mpos;   /* Mpos[k] (built with the linear solver) */
+  double *Mx, *G;        /* B's values; the fill's last values G = B f_x */
   long nst, netf, nncf, nje, nsetups, nni, nnf; /* CVODE's counters */
   double rtol, atol, h_min, h_max; /* the settings CVODE has */
   char msg[WHIRL_ERRMSG_SIZE]; /* CVODE's last error message */
@@ -130,8 +137,128 @@ void whirl_bdf_free_(struct whirl_bdf *b) {
   N_VDestroy(b->dky);
   free(b->Jp);
   free(b->Ji);
+  free(b->Mp); free(b->Mi); free(b->Mx); free(b->Mpos); free(b->G);
   SUNContext_Free(&b->ctx);
   free(b);
+}
+
+/* ------------------------------------------------------------------------
+ * A mass matrix B: the iteration matrix B − γ G (CVODE's linear-system
+ * function; G reused while CVODE says the Jacobian is still good), solved by
+ * KLU on B times the right-hand side. */
+
+static int mass_linsys(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix A,
+                       sunbooleantype jok, sunbooleantype *jcur,
+                       sunrealtype gamma, void *ud, N_Vector t1, N_Vector t2,
+                       N_Vector t3) {
+  (void)fy, (void)t1, (void)t2, (void)t3;
+  whirl_ode *o = ud;
+  struct whirl_bdf *b = o->bdf;
+  if ((size_t)SUNSparseMatrix_NNZ(A) < b->nnz &&
+      SUNSparseMatrix_Reallocate(A, (sunindextype)b->nnz) != 0)
+    return -1;
+  memcpy(SUNSparseMatrix_IndexPointers(A), b->Jp, (o->n + 1) * sizeof *b->Jp);
+  memcpy(SUNSparseMatrix_IndexValues(A), b->Ji, b->nnz * sizeof *b->Ji);
+  *jcur = SUNFALSE;
+  if (!jok) {
+    int r = b->fill(t, N_VGetArrayPointer(y), o->p, b->G, b->fill_data);
+    *jcur = SUNTRUE;
+    if ((r = jac_status(b, r, b->G, b->nnz)) != 0) return r;
+  }
+  double *v = SUNSparseMatrix_Data(A);
+  for (size_t k = 0; k < b->nnz; ++k) v[k] = -gamma * b->G[k];
+  for (size_t k = 0; k < b->mnnz; ++k) v[b->Mpos[k]] += b->Mx[k];
+  return 0;
+}
+
+typedef struct mass_ls {
+  SUNLinearSolver klu;
+  N_Vector tmp;
+  const struct whirl_bdf *b;
+  size_t n;
+} mass_ls;
+
+#define MLS(S) ((mass_ls *)(S)->content)
+
+static SUNLinearSolver_Type mls_type(SUNLinearSolver S) {
+  (void)S;
+  return SUNLINEARSOLVER_DIRECT;
+}
+static SUNLinearSolver_ID mls_id(SUNLinearSolver S) {
+  (void)S;
+  return SUNLINEARSOLVER_CUSTOM;
+}
+static int mls_init(SUNLinearSolver S) { return SUNLinSolInitialize(MLS(S)->klu); }
+static int mls_setup(SUNLinearSolver S, SUNMatrix A) { return SUNLinSolSetup(MLS(S)->klu, A); }
+static sunindextype mls_lastflag(SUNLinearSolver S) { return SUNLinSolLastFlag(MLS(S)->klu); }
+
+/* x = (B − γG)⁻¹ B r */
+static int mls_solve(SUNLinearSolver S, SUNMatrix A, N_Vector x, N_Vector r,
+                     sunrealtype tol) {
+  const mass_ls *c = MLS(S);
+  const struct whirl_bdf *b = c->b;
+  const double *rv = N_VGetArrayPointer(r);
+  double *w = N_VGetArrayPointer(c->tmp);
+  memset(w, 0, c->n * sizeof *w);
+  for (size_t j = 0; j < c->n; ++j)
+    for (int k = b->Mp[j]; k < b->Mp[j + 1]; ++k) w[b->Mi[k]] += b->Mx[k] * rv[j];
+  return SUNLinSolSolve(c->klu, A, x, c->tmp, tol);
+}
+
+static int mls_free(SUNLinearSolver S) {
+  if (S == NULL) return 0;
+  if (S->content != NULL) {
+    SUNLinSolFree(MLS(S)->klu);
+    N_VDestroy(MLS(S)->tmp);
+    free(S->content);
+    S->content = NULL;
+  }
+  SUNLinSolFreeEmpty(S);
+  return 0;
+}
+
+static SUNLinearSolver mass_solver(struct whirl_bdf *b, SUNMatrix A, size_t n) {
+  SUNLinearSolver S = SUNLinSolNewEmpty(b->ctx);
+  mass_ls *c = S ? calloc(1, sizeof *c) : NULL;
+  if (c == NULL) {
+    SUNLinSolFreeEmpty(S);
+    return NULL;
+  }
+  S->content = c;
+  S->ops->gettype = mls_type;
+  S->ops->getid = mls_id;
+  S->ops->initialize = mls_init;
+  S->ops->setup = mls_setup;
+  S->ops->solve = mls_solve;
+  S->ops->lastflag = mls_lastflag;
+  S->ops->free = mls_free;
+  c->b = b;
+  c->n = n;
+  c->klu = SUNLinSol_KLU(b->y, A, b->ctx);
+  c->tmp = N_VClone(b->y);
+  if (c->klu == NULL || c->tmp == NULL) {
+    mls_free(S);
+    return NULL;
+  }
+  return S;
+}
+
+/* Mpos: where each entry of B sits in J's pattern; −1 when B's pattern is
+ * not inside J's. */
+static int mass_positions(struct whirl_bdf *b, size_t n) {
+  free(b->Mpos);
+  free(b->G);
+  b->Mpos = malloc((b->mnnz + 1) * sizeof *b->Mpos);
+  b->G = malloc((b->nnz + 1) * sizeof *b->G);
+  if (b->Mpos == NULL || b->G == NULL) return WHIRL_ENOMEM;
+  for (size_t j = 0; j < n; ++j)
+    for (int k = b->Mp[j]; k < b->Mp[j + 1]; ++k) {
+      b->Mpos[k] = -1;
+      for (sunindextype q = b->Jp[j]; q < b->Jp[j + 1]; ++q)
+        if (b->Ji[q] == b->Mi[k]) b->Mpos[k] = (int)q;
+      if (b->Mpos[k] < 0) return WHIRL_EINVAL;
+    }
+  return WHIRL_OK;
 }
 
 /* A new matrix and linear solver for CVODE: KLU with the sparse pattern,
@@ -141,7 +268,14 @@ static int new_linear_solver(whirl_ode *o) {
   const sunindextype n = (sunindextype)o->n;
   SUNMatrix A;
   SUNLinearSolver LS;
-  if (b->nnz > 0) {
+  if (b->mnnz > 0) {
+    const int r = b->nnz > 0 ? mass_positions(b, o->n) : WHIRL_EINVAL;
+    if (r != WHIRL_OK)
+      return ODE_FAIL(o, r, r == WHIRL_ENOMEM ? "out of memory" :
+                      "BDF: the mass matrix needs a sparse Jacobian whose pattern holds its own");
+    A = SUNSparseMatrix(n, n, (sunindextype)b->nnz, CSC_MAT, b->ctx);
+    LS = A ? mass_solver(b, A, o->n) : NULL;
+  } else if (b->nnz > 0) {
     A = SUNSparseMatrix(n, n, (sunindextype)b->nnz, CSC_MAT, b->ctx);
     LS = A ? SUNLinSol_KLU(b->y, A, b->ctx) : NULL;
   } else {
@@ -160,7 +294,8 @@ static int new_linear_solver(whirl_ode *o) {
   CVLsJacFn jac = b->nnz > 0 ? jac_sparse_cb
                   : o->prob.jac_x != NULL ? jac_dense_cb
                                          : NULL;
-  if (CVodeSetJacFn(b->cv, jac) != CVLS_SUCCESS)
+  if (b->mnnz > 0 ? CVodeSetLinSysFn(b->cv, mass_linsys) != CVLS_SUCCESS
+                  : CVodeSetJacFn(b->cv, jac) != CVLS_SUCCESS)
     return ODE_FAIL(o, WHIRL_EINVAL, "BDF: %s", b->msg);
   b->ls_dirty = 0;
   return WHIRL_OK;
@@ -384,6 +519,35 @@ int whirl_ode_set_sparse_jacobian(whirl_ode *o, size_t nnz, const int *Jp,
   b->nnz = nnz;
   b->fill = fill;
   b->fill_data = data;
+  b->ls_dirty = 1;
+  return WHIRL_OK;
+}
+
+int whirl_ode_set_mass_matrix(whirl_ode *o, size_t nnz, const int *Mp,
+                              const int *Mi, const double *Mx) {
+  if (o == NULL) return WHIRL_EINVAL;
+  const size_t n = o->n;
+  const char *why = nnz > 0 ? bad_pattern(n, nnz, Mp, Mi) : NULL;
+  if (why == NULL && nnz > 0 && Mx == NULL) why = "need the values Mx[nnz]";
+  for (size_t k = 0; why == NULL && k < nnz; ++k)
+    if (!isfinite(Mx[k])) why = "a value is not finite";
+  if (why != NULL) return ODE_FAIL(o, WHIRL_EINVAL, "mass matrix: %s", why);
+  int r = bdf_get(o);
+  if (r != WHIRL_OK) return r;
+  struct whirl_bdf *b = o->bdf;
+  int *p = nnz ? malloc((n + 1) * sizeof *p) : NULL, *i = nnz ? malloc(nnz * sizeof *i) : NULL;
+  double *x = nnz ? malloc(nnz * sizeof *x) : NULL;
+  if (nnz > 0 && (p == NULL || i == NULL || x == NULL)) {
+    free(p); free(i); free(x);
+    return ODE_FAIL(o, WHIRL_ENOMEM, "out of memory");
+  }
+  if (nnz > 0) {
+    memcpy(p, Mp, (n + 1) * sizeof *p);
+    memcpy(i, Mi, nnz * sizeof *i);
+    memcpy(x, Mx, nnz * sizeof *x);
+  }
+  free(b->Mp); free(b->Mi); free(b->Mx);
+  b->Mp = p, b->Mi = i, b->Mx = x, b->mnnz = nnz;
   b->ls_dirty = 1;
   return WHIRL_OK;
 }

@@ -28,7 +28,9 @@
  * Newton iteration (Hindmarsh et al., ACM TOMS 31 (2005) 363; CVODE user
  * guide), lib/ode/bdf.c.  Its linear systems (I − γ f_x) use CVODE's dense
  * LU with the model's jac_x (CVODE's difference quotients when NULL),
- * or KLU sparse LU with a Jacobian given by whirl_ode_set_sparse_jacobian.
+ * or KLU sparse LU with a Jacobian given by whirl_ode_set_sparse_jacobian
+ * (with a mass matrix on the left, whirl_ode_set_mass_matrix, for models
+ * whose f_x = B⁻¹ g_x is dense but g_x sparse).
  * Everything in this header works with both methods (whirl_ode_monodromy
  * always uses DOPRI5); the differences: the error test is CVODE's weighted
  * RMS norm of the local error with weights 1/(rtol |x_i| + atol), looser
@@ -99,6 +101,20 @@ WHIRL_API int whirl_ode_method_parse(const char *s, int *method);
 WHIRL_API int whirl_ode_set_sparse_jacobian(whirl_ode *ode, size_t nnz,
                                             const int *Jp, const int *Ji,
                                             whirl_jac_fn fill, void *data);
+
+/* A constant mass matrix B for BDF with a sparse Jacobian, for models
+ * B x' = g(t, x) whose rhs returns x' = B⁻¹ g (e.g. structures with a
+ * consistent mass, where f_x = B⁻¹ g_x is dense but g_x is sparse): the
+ * pattern Mp[n+1], Mi[nnz] (inside the sparse Jacobian's pattern) and the
+ * values Mx[nnz], copied; the sparse Jacobian's fill then returns
+ * G = B f_x (= g_x), not f_x.  BDF solves its Newton systems as
+ * (B − γ G) δ = B r by KLU, the same iterates as (I − γ f_x) δ = r.
+ * nnz = 0 removes it.  Takes effect at the next reset; DOPRI5 ignores it.
+ * WHIRL_EINVAL for a bad pattern (or, at the reset, one not inside the
+ * Jacobian's). */
+WHIRL_API int whirl_ode_set_mass_matrix(whirl_ode *ode, size_t nnz,
+                                        const int *Mp, const int *Mi,
+                                        const double *Mx);
 
 /* rtol > 0 (and >= 100 DBL_EPSILON), atol > 0; WHIRL_EINVAL otherwise. */
 WHIRL_API int whirl_ode_set_tolerances(whirl_ode *ode, double rtol,
