@@ -8,19 +8,9 @@
 # the same start settles on the orbit of the class basins gives (its
 # amplitude equals that orbit's to 1e-6).
 # SPDX-License-Identifier: BSD-3-Clause
-set -u
-top_builddir=${top_builddir:-.}
-top_srcdir=${top_srcdir:-.}
-WHIRL="$top_builddir/drivers/whirl"
-case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
-case $top_srcdir in /*) ;; *) top_srcdir="$(pwd)/$top_srcdir" ;; esac
+name=rotbas
+. "${top_srcdir:-.}/test/regress/tap.sh"
 ex="$top_srcdir/examples/rotor/sfd-rigid.rotor"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-rotbas.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-n=0
-fails=0
-ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
 
 bad() {
   prefix=$1; shift
@@ -63,5 +53,4 @@ for start in "0 0" "0 -9.5e-05"; do
   ok $? "start ($1, $2): class $k, and simulate from there settles on that orbit"
 done
 
-echo "1..$n"
-[ $fails -eq 0 ]
+tap_end

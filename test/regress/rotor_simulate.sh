@@ -8,19 +8,9 @@
 # announced size and both pictures.  The orbit against harmonic balance is
 # test/unit/t_fe_time_hbm.
 # SPDX-License-Identifier: BSD-3-Clause
-set -u
-top_builddir=${top_builddir:-.}
-top_srcdir=${top_srcdir:-.}
-WHIRL="$top_builddir/drivers/whirl"
-case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
-case $top_srcdir in /*) ;; *) top_srcdir="$(pwd)/$top_srcdir" ;; esac
+name=rotsim
+. "${top_srcdir:-.}/test/regress/tap.sh"
 ex="$top_srcdir/examples/rotor/sfd-rigid.rotor"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-rotsim.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-n=0
-fails=0
-ok() { n=$((n + 1)); if [ "$1" -eq 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
 
 # bad: ARGS... must exit 2 with a message starting with PREFIX, writing nothing
 bad() {
@@ -58,5 +48,4 @@ rows=$(wc -l < bdf/time.tsv)
 [ "$rows" -eq $((40 * 64 + 2)) ] && [ -s bdf/time.png ] && [ -s bdf/orbit.png ]
 ok $? "time.tsv has a header and 40 x 64 + 1 samples ($rows lines), time.png, orbit.png"
 
-echo "1..$n"
-[ $fails -eq 0 ]
+tap_end
