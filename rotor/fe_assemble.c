@@ -68,7 +68,8 @@ typedef struct asm_ctx {
   fe_trip M, C, G, K;
 } asm_ctx;
 
-/* The element between nodes a and a+1 into M, G, K. */
+/* The element between nodes a and a+1 into M, G, K, and its proportional
+ * damping α M_e + β K_e into C. */
 static void add_element(asm_ctx *s, const fe_desc *d, const fe_element *e) {
   const fe_material *m = &d->mat[e->material];
   double K[16], M[16], Mr[16];
@@ -84,6 +85,11 @@ static void add_element(asm_ctx *s, const fe_desc *d, const fe_element *e) {
       fe_trip_add(&s->M, g2[i], g2[j], s2[i] * s2[j] * M[q]);
       fe_trip_add(&s->K, g1[i], g1[j], K[q]);
       fe_trip_add(&s->K, g2[i], g2[j], s2[i] * s2[j] * K[q]);
+      const double cq = d->damp_alpha * M[q] + d->damp_beta * K[q];
+      if (cq != 0) { /* proportional damping of the element (`damping`) */
+        fe_trip_add(&s->C, g1[i], g1[j], cq);
+        fe_trip_add(&s->C, g2[i], g2[j], s2[i] * s2[j] * cq);
+      }
       /* δθy ρIpΩ θz' − δθz ρIpΩ θy' in plane terms: G12 = ρIp R̃, G21 = −ρIp R̃ */
       fe_trip_add(&s->G, g1[i], g2[j], 2 * Mr[q] * s2[j]);
       fe_trip_add(&s->G, g2[i], g1[j], -2 * Mr[q] * s2[i]);

@@ -397,6 +397,19 @@ static int st_speed(ctx *c, char **tok, int ntok) {
   return 0;
 }
 
+/* damping alpha=A beta=B: proportional (Rayleigh) damping of the shaft
+ * elements, C_e = α M_e + β K_e, non-rotating. */
+static int st_damping(ctx *c, char **tok, int ntok) {
+  fe_desc *d = c->d;
+  kv t[] = {{"alpha", K_NONNEG, &d->damp_alpha, NULL, 0},
+            {"beta", K_NONNEG, &d->damp_beta, NULL, 0}};
+  int rc = once(c, "damping", &d->damping_line);
+  if (rc || (rc = parse_keys(c, "damping", tok, ntok, t, NT(t)))) return rc;
+  if (!(d->damp_alpha > 0) && !(d->damp_beta > 0))
+    return FAIL(c, "damping: give alpha= (1/s) or beta= (s), or both");
+  return 0;
+}
+
 /* nodes count=N: the nodes of a rotor whose linear part comes from
  * matrices (no shaft line needed). */
 static int st_nodes(ctx *c, char **tok, int ntok) {
@@ -475,6 +488,7 @@ static int statement(ctx *c, char *s) {
   if (!strcmp(kw, "speed")) return st_speed(c, tok + 1, ntok - 1);
   if (!strcmp(kw, "reference")) return st_reference(c, tok + 1, ntok - 1);
   if (!strcmp(kw, "nodes")) return st_nodes(c, tok + 1, ntok - 1);
+  if (!strcmp(kw, "damping")) return st_damping(c, tok + 1, ntok - 1);
   if (!strcmp(kw, "matrices")) return st_matrices(c, tok + 1, ntok - 1);
   return FAIL(c, "unknown keyword '%s'", kw);
 }

@@ -85,6 +85,9 @@ typedef struct fe_desc {
   int gravity_line, speed_line, reference_line, title_line;
   double speed_min, speed_max, omega_ref;
   char title[256];
+  double damp_alpha, damp_beta; /* `damping`: C_e = α M_e + β K_e of the
+                                   shaft elements */
+  int damping_line;
   int nnode; /* after fe_parse: shaft nodes (and `nodes count`) */
   int nodes_count, nodes_line;
   /* `matrices`: M, C, G, K from Matrix Market files (fe_matrix.c), paths

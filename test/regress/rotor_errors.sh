@@ -82,6 +82,8 @@ extra "nonlinear element on a missing node" 6 "sfd-short-pi: node 7 is not on th
   'sfd-short-pi node=7 radius=0.05 length=0.02 clearance=1e-4 viscosity=0.01'
 extra "material with G > 10 E (Poisson's ratio -1)" 6 "Poisson's ratio -1, outside" \
   'material glass E=1e12 G=1e25 rho=1'
+extra "damping without a coefficient" 6 "damping: give alpha=" 'damping'
+extra "negative damping" 6 "beta must be >= 0" 'damping beta=-1e-5'
 extra "unknown material" 6 "unknown material 'brass'" 'shaft from=4 to=5 length=1 od=0.05 material=brass'
 extra "film element with zero clearance" 6 "clearance must be > 0" \
   'sfd-short-pi node=1 radius=0.05 length=0.02 clearance=0 viscosity=0.01'

@@ -118,4 +118,16 @@ grep -v '^#' "$top_srcdir/examples/rotor/friswell-5.9.1.rotor" | grep . > ex1.tx
 cmp -s doc1.rotor ex1.txt
 ok $? "doc/rotor-file.md's first example is examples/rotor/friswell-5.9.1.rotor (without comments)"
 
+# proportional damping (a `damping` line): with alpha alone on a rotor whose
+# mass is all in its shaft elements, C = alpha M exactly, so every mode of
+# the undamped rotor at rest keeps its shape and gets zeta = alpha/(2 w):
+# w_d = w sqrt(1 - zeta^2), log dec = 2 pi zeta / sqrt(1 - zeta^2)
+grep -v '^disk' "$ex" > shaft.rotor
+{ cat shaft.rotor; echo "damping alpha=20"; } > shaft-damped.rotor
+"$WHIRL" rotor modes shaft.rotor --speed 0 > u.tsv && "$WHIRL" rotor modes shaft-damped.rotor --speed 0 > d.tsv
+paste u.tsv d.tsv | awk -F '\t' 'NR > 1 { w = $2; z = 20 / (2 * w); wd = w * sqrt(1 - z * z); ld = 2 * 3.14159265358979 * z / sqrt(1 - z * z)
+  if (((($7 - wd) / wd) ^ 2) > 1e-16 || ((($9 - ld) / ld) ^ 2) > 1e-10) { bad = 1; print "#   mode " $1 ": " $7 " " $9 ", want " wd " " ld } }
+  END { exit bad || NR < 7 }'
+ok $? "damping alpha=20: zeta = alpha/(2 omega) in every mode (w_d to 1e-8, log dec to 1e-5 of its 6 digits)"
+
 tap_end
