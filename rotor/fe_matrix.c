@@ -10,6 +10,7 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include <cholmod.h>
 
@@ -21,6 +22,11 @@
  * triangles of a symmetric (or skew-symmetric) file.  0, or −1 with the
  * reason in msg. */
 int fe_matrix_read(const char *path, int n, fe_trip *T, char *msg, size_t len) {
+  struct stat st;
+  if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) { /* a device or FIFO never ends */
+    snprintf(msg, len, "'%s' is not a regular file", path);
+    return -1;
+  }
   FILE *f = fopen(path, "r");
   if (!f) {
     snprintf(msg, len, "cannot open '%s': %s", path, strerror(errno));

@@ -8,6 +8,8 @@
 #   runfile     the run-file parser (fuzz_runfile.c, lib/run/runfile.c)
 #   solutions   the reader of solutions files, what restarts read
 #               (fuzz_solutions.c, lib/run/solution.c)
+#   rotorfile   the reader of rotor files (fuzz_rotorfile.c, rotor/fe_file.c
+#               with the Matrix Market reader, CHOLMOD)
 # (default: all).  Each target prints one line
 #   fuzz_NAME: RUNS runs requested, exit RC, N s wall
 # Environment: CLANG (default clang), FUZZ_JOBS (parallel workers, default 1),
@@ -25,7 +27,7 @@
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
-all="runfile solutions"
+all="runfile solutions rotorfile"
 usage() { echo "usage: $0 [RUNS] [TARGET ...]   (targets: $all)" >&2; exit 2; }
 runs=1000000
 case ${1:-} in
@@ -62,6 +64,7 @@ sources() {
   case $1 in
     runfile) echo "$here/fuzz_runfile.c $top/lib/run/runfile.c $top/lib/util/errmsg.c" ;;
     solutions) echo "$here/fuzz_solutions.c $top/lib/run/solution.c $top/lib/util/errmsg.c" ;;
+    rotorfile) echo "$here/fuzz_rotorfile.c $top/rotor/fe_file.c $top/rotor/fe_sparse.c $top/rotor/fe_matrix.c $top/lib/run/runfile.c $top/lib/util/errmsg.c -lcholmod" ;;
   esac
 }
 corpus() {
@@ -78,7 +81,7 @@ fuzz() {
   san=-fsanitize=fuzzer,address,undefined
   # shellcheck disable=SC2046 # the list of sources
   if ! "$CLANG" -std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 $san \
-      -fno-sanitize-recover=undefined -I "$top/lib" -I "$top/lib/run" \
+      -fno-sanitize-recover=undefined -I "$top/lib" -I "$top/lib/run" -I "$top/rotor" -I /usr/include/suitesparse \
       $(sources "$name") -lm -o "$dir/fuzz_$name" > "$dir/build.log" 2>&1; then
     cat "$dir/build.log" >&2
     echo "fuzz_$name: build failed, exit 1"

@@ -47,6 +47,7 @@ cp fr/M.mtx fr/K.mtx .
 bad "a matrix of the wrong size" "$(printf 'nodes count=5\nmatrices M=M.mtx K=K.mtx')" 2 "M: 'M.mtx' is 28 x 28: the rotor has 20 DOFs"
 bad "a missing matrix file" "$(printf 'nodes count=7\nmatrices M=nothere.mtx K=K.mtx')" 2 "cannot open 'nothere.mtx'"
 bad "not Matrix Market" "$(printf 'nodes count=7\nmatrices M=case.rotor K=K.mtx')" 2 "is not a Matrix Market"
+bad "a device, not a file" "$(printf 'nodes count=7\nmatrices M=/dev/zero K=K.mtx')" 2 "'/dev/zero' is not a regular file"
 bad "stiffness without mass" "$(printf 'nodes count=7\nmatrices K=K.mtx')" 2 "has no mass"
 bad "nodes without matrices" "nodes count=3" 1 "the matrices line is missing"
 bad "a key of matrices" "$(printf 'nodes count=7\nmatrices X=K.mtx')" 2 "is not M=FILE"
