@@ -13,46 +13,9 @@
 #include <whirl/runfile.h>
 #include <whirl/rotor.h>
 
-#include "cli.h"
+#include "rotor_cli.h"
 
-#define RPM (WHIRL_PI / 30) /* rad/s per rev/min */
-
-/* The unit of --speed and --speeds: its factor to rad/s, or -1. */
-static double unit_factor(const char *cmd, const char *u) {
-  if (!strcmp(u, "rpm")) return RPM;
-  if (!strcmp(u, "rad/s")) return 1;
-  if (!strcmp(u, "hz")) return 2 * WHIRL_PI;
-  cli_error(cmd, "--unit must be rpm, rad/s or hz (got '%s')", u);
-  return -1;
-}
-
-/* argv[1] is the rotor file unless it is an option (--help): then *file is
- * NULL and cli_parse sees everything.  0 go on, 1 help shown, 2 bad. */
-static int parse(const char *cmd, int argc, char **argv, const cli_opt *o, size_t no,
-                 const cli_doc *doc, const char **file) {
-  *file = NULL;
-  if (argc >= 2 && argv[1][0] != '-') {
-    *file = argv[1];
-    argv[1] = argv[0];
-    int r = cli_parse(cmd, argc - 1, argv + 1, o, no, doc);
-    argv[1] = (char *)*file;
-    return r;
-  }
-  int r = cli_parse(cmd, argc, argv, o, no, doc);
-  if (r == 0) {
-    cli_error(cmd, "the rotor file is missing (see whirl %s --help)", cmd);
-    return 2;
-  }
-  return r;
-}
-
-static whirl_fe_rotor *load(const char *file) {
-  char msg[600];
-  int st = 0;
-  whirl_fe_rotor *r = whirl_fe_rotor_read(file, msg, sizeof msg, &st);
-  if (!r) cli_error("rotor", "%s", msg);
-  return r;
-}
+#define RPM ROTOR_RPM
 
 static int method_of(const char *cmd, const char *m, whirl_fe_modes_options *o) {
   whirl_fe_modes_options_default(o);
@@ -93,16 +56,16 @@ int cmd_rotor_modes(int argc, char **argv) {
       {"--unit", CLI_STRING, &unit, "U", "unit of --speed: rpm, rad/s or hz", NULL},
       {"--modes", CLI_SIZE, &nmodes, "N", "how many modes", NULL},
       OPT_METHOD(method)};
-  int rc = parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &modes_doc, &file);
+  int rc = rotor_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &modes_doc, &file);
   if (rc) return rc == 1 ? 0 : 2;
   whirl_fe_modes_options mo;
-  const double f = unit_factor(CMD, unit);
+  const double f = rotor_unit_factor(CMD, unit);
   if (f < 0 || method_of(CMD, method, &mo)) return 2;
   if (nmodes < 1 || nmodes > 100000 || !(speed >= 0)) {
     cli_error(CMD, "need --modes >= 1 and --speed >= 0");
     return 2;
   }
-  whirl_fe_rotor *r = load(file);
+  whirl_fe_rotor *r = rotor_load(file);
   if (!r) return 2;
   whirl_fe_mode *m = malloc(nmodes * sizeof *m);
   size_t nf = 0;
@@ -238,16 +201,16 @@ int cmd_rotor_campbell(int argc, char **argv) {
       OPT_METHOD(method),
       {"-o", CLI_STRING, &dir, "DIR", "output directory (also --out)", NULL},
       CLI_OPTS_OUT(dir, noplot, quiet)};
-  int rc = parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &campbell_doc, &file);
+  int rc = rotor_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &campbell_doc, &file);
   if (rc) return rc == 1 ? 0 : 2;
   whirl_fe_modes_options mo;
-  const double f = unit_factor(CMD, unit);
+  const double f = rotor_unit_factor(CMD, unit);
   if (f < 0 || method_of(CMD, method, &mo)) return 2;
   if (nmodes < 1 || nmodes > 1000) {
     cli_error(CMD, "need 1 <= --modes <= 1000");
     return 2;
   }
-  whirl_fe_rotor *r = load(file);
+  whirl_fe_rotor *r = rotor_load(file);
   if (!r) return 2;
   size_t ns = 0, nc = 0;
   double *sp = speed_grid(CMD, spec, f, r, &ns);
@@ -316,11 +279,11 @@ int cmd_rotor_unbalance(int argc, char **argv) {
       {"--speeds", CLI_STRING, &spec, "A:B:N", "N speeds from A to B, in --unit",
        "the file's speed range, 101 speeds"},
       {"--unit", CLI_STRING, &unit, "U", "unit of --speeds: rpm, rad/s or hz", NULL}};
-  int rc = parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &unbalance_doc, &file);
+  int rc = rotor_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &unbalance_doc, &file);
   if (rc) return rc == 1 ? 0 : 2;
-  const double f = unit_factor(CMD, unit);
+  const double f = rotor_unit_factor(CMD, unit);
   if (f < 0) return 2;
-  whirl_fe_rotor *r = load(file);
+  whirl_fe_rotor *r = rotor_load(file);
   if (!r) return 2;
   size_t ns = 0;
   double *sp = NULL, *q = NULL;
