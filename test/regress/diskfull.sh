@@ -32,6 +32,8 @@ cd "$tmp" || exit 1
 PAGE=4096
 
 cp "${top_srcdir:-$OLDPWD}/test/regress/sfd-small.whirl" small.whirl || exit 1
+cp "${top_srcdir:-$OLDPWD}/examples/rotor/friswell-5.9.1.rotor" \
+   "${top_srcdir:-$OLDPWD}/examples/rotor/rigid-limit.rotor" . || exit 1
 
 # pages the files of DIR take on tmpfs (each file a whole number of pages)
 pages_of() {
@@ -137,6 +139,9 @@ check_command "sfd sweep" "$WHIRL" sfd sweep --from 1 --to 1.4 --step 0.1 --out 
 check_command "sfd region" "$WHIRL" sfd region --out @OUT@ --quiet
 check_command "sfd simulate" "$WHIRL" sfd simulate --omega 3 --periods 8 --samples 16 --out @OUT@ --quiet
 check_command "whirl run" "$WHIRL" run small.whirl --OUT=@OUT@ --quiet
+check_command "rotor campbell" "$WHIRL" rotor campbell friswell-5.9.1.rotor --speeds 0:4000:5 -o @OUT@ --quiet
+check_command "rotor response" "$WHIRL" rotor response rigid-limit.rotor --harmonics 1 --stability off --to 2000 --unit rad/s -o @OUT@ --quiet
+check_command "rotor export" "$WHIRL" rotor export friswell-5.9.1.rotor -o @OUT@ --quiet
 
 echo "1..$n"
 [ $fails -eq 0 ]
