@@ -511,7 +511,7 @@ static int to_ref(const item *it, whirl_run_ref *r, const char **msg) {
       return -1;
     }
   }
-  snprintf(r->name, sizeof r->name, "%s", s);
+  memcpy(r->name, s, strlen(s) + 1); /* shorter than the buffer: checked above */
   return 0;
 }
 
