@@ -13,6 +13,7 @@
 #include <whirl/spectrum.h>
 #include <whirl/section.h>
 #include <whirl/basins.h>
+#include <whirl/deflate.h>
 #include <whirl/floquet.h>
 #include <whirl/hbm.h>
 #include <whirl/colloc.h>

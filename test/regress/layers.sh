@@ -30,7 +30,7 @@ layer_of_header() {
     problem.h|system.h|cont.h|branch.h) echo core ;;
     ode.h|floquet.h) echo ode ;;
     equilibrium.h|hbm.h|colloc.h|fold.h|hopf.h|periodic.h) echo systems ;;
-    spectrum.h|section.h|basins.h) echo analysis ;;
+    spectrum.h|section.h|basins.h|deflate.h) echo analysis ;;
     runfile.h|model.h|run.h|solution.h) echo run ;;
     whirl.h) echo whirl ;;
     *) echo "" ;;
