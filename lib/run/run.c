@@ -91,22 +91,6 @@ double run_now(void) {
 
 /* ---- one branch --------------------------------------------------------- */
 
-typedef struct branch_spec {
-  whirl_solution_kind kind;           /* base kind */
-  whirl_colloc *colloc;    /* base objects (borrowed) */
-  whirl_hbm *hbm;
-  whirl_fold *fold;        /* locus layers (borrowed), or NULL */
-  whirl_hopf *hopf;
-  const whirl_system *sys; /* the system continued */
-  size_t nb;               /* unknowns of the base system */
-  int icp;                 /* core's continuation parameter */
-  int q;                   /* loci: the point's own parameter, else -1 */
-  double ds_scale;         /* arclength scale of the unknowns (colloc) */
-  /* start: Newton from (x0, p0); or along dir from exact (x0, p0); or a
-   * BP switch from `bp` */
-  const double *x0, *p0, *dir;
-  const whirl_point *bp;
-} branch_spec;
 
 static void base_of(const branch_spec *b, const double *Z, const double *p,
                     double *pfull) {
@@ -298,7 +282,7 @@ static void branch_summary(run_ctx *R, const branch_spec *b, whirl_cont *c,
   }
 }
 
-static int run_branch(run_ctx *R, branch_spec *b) {
+int run_branch(run_ctx *R, branch_spec *b) {
   const whirl_run_settings *s = R->s;
   whirl_cont_options o;
   double uz[2 * WHIRL_RUN_MAXITEMS];
@@ -311,7 +295,7 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     run_say(R, "%s", err);
     return -1;
   }
-  int dir = s->ds < 0 ? -1 : 1, rc;
+  int dir = b->dir_sign ? b->dir_sign : s->ds < 0 ? -1 : 1, rc;
   double *pfull = malloc(R->npar * sizeof *pfull);
   double *state = malloc(R->n * sizeof *state);
   if (!pfull || !state) {
@@ -363,6 +347,10 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     const void *obj = b->kind == WHIRL_SOL_COLLOC ? (const void *)b->colloc
                       : b->kind == WHIRL_SOL_HBM  ? (const void *)b->hbm
                                             : NULL;
+    if (b->trace && run_trace_add(b->trace, pt->x, pt->p[b->icp], type, R->branch)) {
+      rc = -1;
+      break;
+    }
     if (run_table_row(R, b->kind, obj, R->branch, pt->index, ty, lab, pt->x,
                       pfull, pt->stable, &l2, &period, state)) {
       rc = -1;
@@ -378,6 +366,8 @@ static int run_branch(run_ctx *R, branch_spec *b) {
     }
     if (stop) break;
   }
+  if (b->trace && rc == WHIRL_DONE && whirl_cont_stop_reason(c) == WHIRL_STOP_LOOP)
+    b->trace->closed = 1;
   rc = branch_end(R, c, rc, stop, npts);
   branch_summary(R, b, c, counts, npts, pmin, pmax);
   whirl_cont_free(c);
@@ -763,7 +753,17 @@ static int run_continuation(run_ctx *R, run_objects *O) {
   if (b.dir && s->ds < 0)
     for (size_t i = 0; i <= b.nb; i++) O->D[i] = -O->D[i];
   if (run_table_header(R, b.kind, b.icp, b.q)) return -1;
-  return run_branch(R, &b);
+  if (!s->ndiscover) return run_branch(R, &b);
+  /* discovery: the start branch is recorded, then searched around */
+  run_trace start;
+  memset(&start, 0, sizeof start);
+  start.n = b.nb;
+  b.trace = &start;
+  rc = run_branch(R, &b);
+  b.trace = NULL;
+  if (!rc) rc = run_discover(R, &b, &start);
+  run_trace_free(&start);
+  return rc;
 }
 
 /* ---- the run as a library object (whirl/run.h) --------------------------- */

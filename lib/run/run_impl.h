@@ -106,6 +106,48 @@ int run_keep_special(run_ctx *R, int br, size_t pt, const char *ty, int lab,
                      const double *p, double period, double l2, const double *state,
                      const char *row);
 
+/* ---- branches (run.c) ---------------------------------------------------- */
+
+/* The points of a traced branch, kept for discovery (run_discover.c). */
+typedef struct run_trace {
+  size_t n;             /* unknowns of a point */
+  size_t npts, cap;
+  double *x;            /* npts × n */
+  double *q;            /* npts: the continuation parameter */
+  int *type;            /* npts: whirl_point_type */
+  int br;               /* the BR of its first point */
+  int closed;           /* the branch closed on itself */
+} run_trace;
+int run_trace_add(run_trace *t, const double *x, double q, int type, int br);
+void run_trace_free(run_trace *t);
+
+typedef struct branch_spec {
+  whirl_solution_kind kind;           /* base kind */
+  whirl_colloc *colloc;    /* base objects (borrowed) */
+  whirl_hbm *hbm;
+  whirl_fold *fold;        /* locus layers (borrowed), or NULL */
+  whirl_hopf *hopf;
+  const whirl_system *sys; /* the system continued */
+  size_t nb;               /* unknowns of the base system */
+  int icp;                 /* core's continuation parameter */
+  int q;                   /* loci: the point's own parameter, else -1 */
+  double ds_scale;         /* arclength scale of the unknowns (colloc) */
+  /* start: Newton from (x0, p0); or along dir from exact (x0, p0); or a
+   * BP switch from `bp` */
+  const double *x0, *p0, *dir;
+  const whirl_point *bp;
+  int dir_sign;            /* +1 / -1: direction of the parameter at the
+                              start; 0: the sign of DS */
+  run_trace *trace;        /* record the points here (or NULL) */
+} branch_spec;
+
+/* Continue branch b: its rows, labels, log and summary.  0, -1, -2. */
+int run_branch(run_ctx *R, branch_spec *b);
+
+/* run_discover.c: branches not connected to the start branch t0 of b0
+ * (DISCOVER, doc/discovery.md).  0, -1 (failed, said), -2 (bad input). */
+int run_discover(run_ctx *R, const branch_spec *b0, run_trace *t0);
+
 /* run_basins.c */
 int run_basins(run_ctx *R);
 

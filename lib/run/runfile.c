@@ -21,7 +21,7 @@
 
 typedef enum {
   K_STRING, K_INT, K_REAL, K_IPS, K_METHOD, K_REFLIST, K_VALDICT, K_UZDICT,
-  K_IRS, K_RANGES, K_GRID, K_INTLIST, K_IGNORED
+  K_IRS, K_RANGES, K_GRID, K_INTLIST, K_REALLIST, K_IGNORED
 } key_kind;
 
 typedef struct key_def {
@@ -74,6 +74,11 @@ static const key_def keys[] = {
     {WHIRL_RK_BASIN_ATTRACTORS, "BASIN_ATTRACTORS", "attractors", NULL,
      K_INTLIST},
     {WHIRL_RK_BASIN_TOL, "BASIN_TOL", "basin_tol", NULL, K_REAL},
+    {WHIRL_RK_DISCOVER, "DISCOVER", "discover_at", NULL, K_REALLIST},
+    {WHIRL_RK_DISCOVER_BOX, "DISCOVER_BOX", "discover_box", NULL, K_RANGES},
+    {WHIRL_RK_DISCOVER_STARTS, "DISCOVER_STARTS", "discover_starts", NULL, K_INT},
+    {WHIRL_RK_DISCOVER_SEED, "DISCOVER_SEED", "discover_seed", NULL, K_INT},
+    {WHIRL_RK_DISCOVER_SETTLE, "DISCOVER_SETTLE", "discover_settle", NULL, K_REAL},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -149,6 +154,9 @@ static void set_defaults(whirl_run_settings *s) {
   s->grid[0] = s->grid[1] = 41;
   s->basin_periods = 500;
   s->basin_tol = 1e-3;
+  s->discover_starts = 40;
+  s->discover_seed = 1;
+  s->discover_settle = 100.0;
 }
 
 whirl_runfile *whirl_runfile_alloc(void) {
@@ -525,6 +533,7 @@ static const char *check_real(whirl_run_key k, double x) {
     case WHIRL_RK_EPSU:
     case WHIRL_RK_EPSS:
     case WHIRL_RK_BASIN_TOL: return x <= 0.0 ? "must be > 0" : NULL;
+    case WHIRL_RK_DISCOVER_SETTLE: return x < 0.0 ? "must be >= 0 (0: no time integration)" : NULL;
     case WHIRL_RK_A0: return x < 0.0 ? "must be >= 0 (a norm)" : NULL;
     case WHIRL_RK_A1: return x <= 0.0 ? "must be > 0 (a norm)" : NULL;
     default: return NULL;
@@ -558,6 +567,9 @@ static const char *check_int(whirl_run_key k, int x) {
                                 "model's Jacobian)"
                               : NULL;
     case WHIRL_RK_BASIN_PERIODS: return x < 1 ? "must be >= 1" : NULL;
+    case WHIRL_RK_DISCOVER_STARTS:
+      return x < 1 || x > 1000000 ? "must be in [1, 1000000] (the starts tried at each sample value)" : NULL;
+    case WHIRL_RK_DISCOVER_SEED: return x < 0 ? "must be >= 0" : NULL;
     default: return NULL;
   }
 }
@@ -578,6 +590,8 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_ITNW: return &s->itnw;
     case WHIRL_RK_JAC: return &s->jac;
     case WHIRL_RK_BASIN_PERIODS: return &s->basin_periods;
+    case WHIRL_RK_DISCOVER_STARTS: return &s->discover_starts;
+    case WHIRL_RK_DISCOVER_SEED: return &s->discover_seed;
     default: return NULL;
   }
 }
@@ -595,6 +609,7 @@ static double *real_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_EPSU: return &s->epsu;
     case WHIRL_RK_EPSS: return &s->epss;
     case WHIRL_RK_BASIN_TOL: return &s->basin_tol;
+    case WHIRL_RK_DISCOVER_SETTLE: return &s->discover_settle;
     default: return NULL;
   }
 }
@@ -781,15 +796,20 @@ static int set_irs(whirl_runfile *rf, const key_def *d, const char *where) {
               "and count such as HB1)", kn, show(t, ITEMLEN, shown, sizeof shown));
 }
 
-/* BASIN_AXES: one or two {component: [min, max]}. */
+/* BASIN_AXES: one or two {component: [min, max]}; DISCOVER_BOX: any
+ * number of them. */
 static int set_ranges(whirl_runfile *rf, const key_def *d, const char *where) {
   whirl_run_settings *s = &rf->s;
   const pvalue *v = &rf->v;
   const char *kn = d->name, *msg = NULL;
   char shown[64];
-  if (v->kind != V_DICT || v->ngroups < 1 || v->ngroups > 2)
-    return fail(rf, where, "%s: expected {component: [min, max], "
-                "component: [min, max]}", kn);
+  const int box = d->key == WHIRL_RK_DISCOVER_BOX;
+  const size_t maxg = box ? WHIRL_RUN_MAXITEMS : 2;
+  whirl_run_range *out = box ? s->box : s->axes;
+  if (v->kind != V_DICT || v->ngroups < 1 || v->ngroups > maxg)
+    return fail(rf, where, box ? "%s: expected {component: [min, max], ...}"
+                               : "%s: expected {component: [min, max], "
+                                 "component: [min, max]}", kn);
   for (size_t g = 0; g < v->ngroups; g++) {
     size_t first = MAXITEMS, count = 0;
     for (size_t i = 0; i < v->n; i++)
@@ -798,8 +818,8 @@ static int set_ranges(whirl_runfile *rf, const key_def *d, const char *where) {
         count++;
       }
     if (count != 2)
-      return fail(rf, where, "%s: each axis needs [min, max]", kn);
-    whirl_run_range *r = &s->axes[g];
+      return fail(rf, where, "%s: each %s needs [min, max]", kn, box ? "component" : "axis");
+    whirl_run_range *r = &out[g];
     item key = v->it[first];
     snprintf(key.text, sizeof key.text, "%s", v->it[first].key);
     key.quoted = 0;
@@ -810,9 +830,31 @@ static int set_ranges(whirl_runfile *rf, const key_def *d, const char *where) {
         to_double(v->it[first + 1].text, &r->hi))
       return fail(rf, where, "%s: a range bound is not a finite number", kn);
     if (!(r->lo < r->hi))
-      return fail(rf, where, "%s: range [%g, %g] is empty", kn, r->lo, r->hi);
+      return fail(rf, where, "%s: range [%g, %g] of '%s' is empty or inverted "
+                  "(min must be below max)", kn, r->lo, r->hi,
+                  show(key.text, ITEMLEN, shown, sizeof shown));
   }
-  s->naxes = v->ngroups;
+  if (box)
+    s->nbox = v->ngroups;
+  else
+    s->naxes = v->ngroups;
+  return WHIRL_OK;
+}
+
+/* DISCOVER: a list of finite numbers (sample values). */
+static int set_reallist(whirl_runfile *rf, const key_def *d, const char *where) {
+  whirl_run_settings *s = &rf->s;
+  const pvalue *v = &rf->v;
+  char shown[64];
+  if (v->kind == V_DICT || v->n == 0)
+    return fail(rf, where, "%s: expected a list of values [a, b, ...]", d->name);
+  if (v->n > WHIRL_RUN_MAXITEMS)
+    return fail(rf, where, "%s: more than %d values", d->name, WHIRL_RUN_MAXITEMS);
+  for (size_t i = 0; i < v->n; i++)
+    if (v->it[i].quoted || to_double(v->it[i].text, &s->discover[i]))
+      return fail(rf, where, "%s: '%s' is not a finite number", d->name,
+                  show(v->it[i].text, ITEMLEN, shown, sizeof shown));
+  s->ndiscover = v->n;
   return WHIRL_OK;
 }
 
@@ -904,6 +946,7 @@ static int set_value(whirl_runfile *rf, const key_def *d, const char *where,
     case K_RANGES: return set_ranges(rf, d, where);
     case K_GRID: return set_grid(rf, d, where);
     case K_INTLIST: return set_intlist(rf, d, where);
+    case K_REALLIST: return set_reallist(rf, d, where);
     case K_IGNORED:
     case K_STRING:
       return WHIRL_OK;
@@ -1184,6 +1227,30 @@ int whirl_runfile_check(whirl_runfile *rf) {
     return fail(rf, where_of(rf, WHIRL_RK_ICP, w, sizeof w),
                 "ISW = 2 (two-parameter continuation) needs two parameters "
                 "in ICP");
+  if (s->ndiscover || s->nbox || rf->line[WHIRL_RK_DISCOVER_STARTS] ||
+      rf->line[WHIRL_RK_DISCOVER_SEED] || rf->line[WHIRL_RK_DISCOVER_SETTLE]) {
+    const whirl_run_key k = rf->line[WHIRL_RK_DISCOVER] ? WHIRL_RK_DISCOVER
+                            : rf->line[WHIRL_RK_DISCOVER_BOX] ? WHIRL_RK_DISCOVER_BOX
+                            : rf->line[WHIRL_RK_DISCOVER_STARTS] ? WHIRL_RK_DISCOVER_STARTS
+                            : rf->line[WHIRL_RK_DISCOVER_SEED] ? WHIRL_RK_DISCOVER_SEED
+                                                                : WHIRL_RK_DISCOVER_SETTLE;
+    if (!s->ndiscover)
+      return fail(rf, where_of(rf, k, w, sizeof w), "discovery needs DISCOVER = "
+                  "[values of the continuation parameter to search at]");
+    if (s->ips == WHIRL_IPS_BASINS || s->isw != 1)
+      return fail(rf, where_of(rf, k, w, sizeof w), "DISCOVER searches for "
+                  "branches of equilibria (IPS = 1) or periodic orbits (IPS = 2) "
+                  "with ISW = 1");
+    if (s->ips == WHIRL_IPS_PERIODIC && s->method == WHIRL_METHOD_COLLOC)
+      return fail(rf, where_of(rf, k, w, sizeof w), "DISCOVER of periodic orbits "
+                  "needs METHOD = hbm (collocation is not supported by the "
+                  "discovery yet)");
+    for (size_t i = 0; i < s->ndiscover; i++)
+      if (!(s->discover[i] >= s->rl0 && s->discover[i] <= s->rl1))
+        return fail(rf, where_of(rf, WHIRL_RK_DISCOVER, w, sizeof w),
+                    "DISCOVER: %g is outside [RL0, RL1] = [%g, %g]",
+                    s->discover[i], s->rl0, s->rl1);
+  }
   if (s->ips == WHIRL_IPS_BASINS) {
     if (s->naxes != 2)
       return fail(rf, where_of(rf, rf->line[WHIRL_RK_BASIN_AXES] ? WHIRL_RK_BASIN_AXES : WHIRL_RK_IPS, w, sizeof w),
@@ -1233,6 +1300,8 @@ size_t whirl_runfile_count(const whirl_runfile *rf, whirl_run_key k) {
     case WHIRL_RK_BASIN_AXES: return s->naxes;
     case WHIRL_RK_BASIN_GRID: return 2;
     case WHIRL_RK_BASIN_ATTRACTORS: return s->nattractors;
+    case WHIRL_RK_DISCOVER: return s->ndiscover;
+    case WHIRL_RK_DISCOVER_BOX: return s->nbox;
     default: return 0;
   }
 }
@@ -1252,7 +1321,8 @@ static const whirl_run_value *value_list(const whirl_run_settings *s,
 int whirl_runfile_item(const whirl_runfile *rf, whirl_run_key k, size_t i,
                        whirl_run_value *out) {
   const whirl_run_settings *s = &rf->s;
-  if (i >= whirl_runfile_count(rf, k) || k == WHIRL_RK_BASIN_AXES)
+  if (i >= whirl_runfile_count(rf, k) || k == WHIRL_RK_BASIN_AXES ||
+      k == WHIRL_RK_DISCOVER_BOX)
     return WHIRL_EINVAL;
   const whirl_run_value *list = value_list(s, k);
   memset(out, 0, sizeof *out);
@@ -1262,6 +1332,8 @@ int whirl_runfile_item(const whirl_runfile *rf, whirl_run_key k, size_t i,
     out->ref = s->icp[i];
   else if (k == WHIRL_RK_BASIN_GRID)
     out->value = s->grid[i];
+  else if (k == WHIRL_RK_DISCOVER)
+    out->value = s->discover[i];
   else /* BASIN_ATTRACTORS */
     out->value = s->attractors[i];
   return WHIRL_OK;
@@ -1271,5 +1343,11 @@ int whirl_runfile_axis(const whirl_runfile *rf, size_t i,
                        whirl_run_range *axis) {
   if (i >= rf->s.naxes) return WHIRL_EINVAL;
   *axis = rf->s.axes[i];
+  return WHIRL_OK;
+}
+
+int whirl_runfile_box(const whirl_runfile *rf, size_t i, whirl_run_range *range) {
+  if (i >= rf->s.nbox) return WHIRL_EINVAL;
+  *range = rf->s.box[i];
   return WHIRL_OK;
 }

@@ -44,6 +44,14 @@ typedef struct whirl_run_settings {
   int attractors[WHIRL_RUN_MAXITEMS]; /* basins: labels in S */
   size_t nattractors;
   double basin_tol;             /* basins: capture radius (1e-3) */
+  double discover[WHIRL_RUN_MAXITEMS]; /* discovery: sample values of ICP(1) */
+  size_t ndiscover;             /* 0: no discovery */
+  whirl_run_range box[WHIRL_RUN_MAXITEMS]; /* discovery: box of random starts */
+  size_t nbox;
+  int discover_starts;          /* starts per sample value (40) */
+  int discover_seed;            /* seed of the random starts (1) */
+  double discover_settle;       /* time integration of a start: forcing
+                                   periods, or time units (100) */
 } whirl_run_settings;
 
 const whirl_run_settings *whirl_runfile_settings(const whirl_runfile *rf);

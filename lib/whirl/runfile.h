@@ -42,6 +42,8 @@ typedef enum whirl_run_key {
   WHIRL_RK_ITNW, WHIRL_RK_JAC, WHIRL_RK_UZR, WHIRL_RK_UZSTOP, WHIRL_RK_OUT,
   WHIRL_RK_PLOT, WHIRL_RK_BASIN_AXES, WHIRL_RK_BASIN_GRID,
   WHIRL_RK_BASIN_PERIODS, WHIRL_RK_BASIN_ATTRACTORS, WHIRL_RK_BASIN_TOL,
+  WHIRL_RK_DISCOVER, WHIRL_RK_DISCOVER_BOX, WHIRL_RK_DISCOVER_STARTS,
+  WHIRL_RK_DISCOVER_SEED, WHIRL_RK_DISCOVER_SETTLE,
   WHIRL_RK_IGNORED, /* AUTO keys whirl accepts and ignores (ITMX, NWTN, ...) */
   WHIRL_RK_COUNT
 } whirl_run_key;
@@ -122,6 +124,9 @@ WHIRL_API int whirl_runfile_item(const whirl_runfile *rf, whirl_run_key k,
 /* BASIN_AXES' item i: the state component and its range. */
 WHIRL_API int whirl_runfile_axis(const whirl_runfile *rf, size_t i,
                                  whirl_run_range *axis);
+/* DISCOVER_BOX's item i (whirl_runfile_count gives their number). */
+WHIRL_API int whirl_runfile_box(const whirl_runfile *rf, size_t i,
+                                whirl_run_range *range);
 
 /* 1 if the key was given (file or command line). */
 WHIRL_API int whirl_runfile_given(const whirl_runfile *rf, whirl_run_key k);

@@ -1,0 +1,567 @@
+/* lib/run/run_discover.c — branches nobody gave a start for (DISCOVER,
+ * doc/discovery.md): after the start branch is traced,
+ *
+ *  1. at every sample value s of the continuation parameter, deflated
+ *     Newton (whirl/deflate.h; Farrell, Birkisson & Funke 2015) from a
+ *     budget of starts — the model's start (equilibria) or the linear
+ *     response (harmonic balance: Newton from the zero orbit), scaled copies
+ *     of the solutions already known at s, end states of time integration
+ *     from random initial states (the stable attractors), and random states
+ *     in a box — deflated against every solution of every traced branch at
+ *     s (the branch's crossings of s, polished by Newton);
+ *  2. through a second parameter (ICP's second entry): from every fold of a
+ *     traced branch, the fold locus is continued in it, through isola
+ *     births and merges, back to its value; a fold found there that lies on
+ *     no traced branch seeds one;
+ *  3. every new solution seeds a branch traced in both directions (once:
+ *     a branch that closes on itself is traced whole by the first), whose
+ *     crossings are deflated from then on; the report counts the branches
+ *     and the isolated ones (every branch found here is disconnected from
+ *     the start branch, else its solutions would have been deflated).
+ *
+ * Random starts come from one generator seeded by DISCOVER_SEED and the
+ * sample's index, so a run is reproducible and independent of threads.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/deflate.h>
+#include <whirl/ode.h>
+
+#include "run_impl.h"
+
+/* ---- traces ---------------------------------------------------------------- */
+
+int run_trace_add(run_trace *t, const double *x, double q, int type, int br) {
+  if (t->npts == 0) t->br = br;
+  if (t->npts == t->cap) {
+    size_t cap = t->cap ? 2 * t->cap : 256;
+    double *nx = realloc(t->x, cap * t->n * sizeof *nx);
+    if (!nx) return -1;
+    t->x = nx;
+    double *nq = realloc(t->q, cap * sizeof *nq);
+    if (!nq) return -1;
+    t->q = nq;
+    int *nt = realloc(t->type, cap * sizeof *nt);
+    if (!nt) return -1;
+    t->type = nt;
+    t->cap = cap;
+  }
+  memcpy(t->x + t->npts * t->n, x, t->n * sizeof *x);
+  t->q[t->npts] = q;
+  t->type[t->npts++] = type;
+  return 0;
+}
+
+void run_trace_free(run_trace *t) {
+  free(t->x);
+  free(t->q);
+  free(t->type);
+  memset(t, 0, sizeof *t);
+}
+
+/* ---- the search ------------------------------------------------------------- */
+
+enum { FROM_START, FROM_SCALED, FROM_SETTLED, FROM_RANDOM, FROM_FOLD, NFROM };
+static const char *const from_name[NFROM] = {
+    "the model's start", "a scaled known solution", "a settled time integration",
+    "a random start", "a fold locus through the second parameter"};
+
+typedef struct disc {
+  run_ctx *R;
+  const branch_spec *b0;
+  size_t n, nb, L;       /* model dimension, unknowns, block per component */
+  double *lo, *hi;       /* the box, per model component */
+  double *w;             /* weights of the unknowns */
+  whirl_deflate *d;
+  run_trace *traces;     /* traces[0] is the start branch (borrowed) */
+  int *curve;            /* the curve (branch found) each trace belongs to */
+  size_t ntraces, cap, ncurves, nclosed;
+  uint64_t rng;
+  double *p, *x, *xs, *c;
+  size_t starts, found[NFROM];
+} disc;
+
+/* splitmix64 (Steele, Lea & Flood 2014): a uniform number in [0, 1). */
+static double urand(disc *D) {
+  uint64_t z = (D->rng += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return (double)(z >> 11) * 0x1.0p-53;
+}
+
+static size_t comp_of(const disc *D, size_t j) {
+  return D->L > 1 ? (j / D->L < D->n ? j / D->L : D->n - 1) : j;
+}
+
+/* The box of random starts: DISCOVER_BOX, else ±1.5 × the largest value
+ * of the component on the start branch (±1 where it is 0). */
+static int set_box(disc *D, const run_trace *t0) {
+  run_ctx *R = D->R;
+  for (size_t i = 0; i < D->n; i++) D->hi[i] = 0.0;
+  for (size_t k = 0; k < t0->npts; k++)
+    for (size_t j = 0; j < D->nb; j++) {
+      const size_t i = comp_of(D, j);
+      if (D->L > 1 && j >= D->n * D->L) continue; /* the frequency */
+      D->hi[i] = fmax(D->hi[i], fabs(t0->x[k * t0->n + j]));
+    }
+  for (size_t i = 0; i < D->n; i++) {
+    const double a = D->hi[i] > 0 ? 1.5 * D->hi[i] : 1.0;
+    D->lo[i] = -a;
+    D->hi[i] = a;
+  }
+  for (size_t g = 0; g < R->s->nbox; g++) {
+    const int i = run_state_index(R, &R->s->box[g].ref);
+    if (i < 0) {
+      run_fail(R, WHIRL_RK_DISCOVER_BOX, "DISCOVER_BOX: '%s' is not a state "
+               "component of model '%s'", R->s->box[g].ref.index ? "(index)"
+               : R->s->box[g].ref.name, R->prob.name);
+      return -2;
+    }
+    D->lo[i] = R->s->box[g].lo;
+    D->hi[i] = R->s->box[g].hi;
+  }
+  return 0;
+}
+
+static int disc_init(disc *D, run_ctx *R, const branch_spec *b0, run_trace *t0) {
+  memset(D, 0, sizeof *D);
+  D->R = R;
+  D->b0 = b0;
+  D->n = R->n;
+  D->nb = b0->nb;
+  D->L = b0->kind == WHIRL_SOL_HBM ? 2 * (size_t)R->s->nhb + 1 : 1;
+  const size_t m = 8 * (2 * (size_t)R->s->nhb + 1);
+  D->lo = malloc(D->n * sizeof *D->lo);
+  D->hi = malloc(D->n * sizeof *D->hi);
+  D->w = malloc(D->nb * sizeof *D->w);
+  D->p = malloc(R->npar * sizeof *D->p);
+  D->x = malloc((D->nb + 1) * sizeof *D->x);
+  D->xs = malloc(m * D->n * sizeof *D->xs);
+  D->c = calloc(3 * D->n, sizeof *D->c);
+  D->cap = 16;
+  D->traces = calloc(D->cap, sizeof *D->traces);
+  D->curve = calloc(D->cap, sizeof *D->curve);
+  if (!D->lo || !D->hi || !D->w || !D->p || !D->x || !D->xs || !D->c ||
+      !D->traces || !D->curve)
+    return -1;
+  D->traces[0] = *t0; /* borrowed: not freed here */
+  D->ntraces = 1;
+  int rc = set_box(D, t0);
+  if (rc) return rc;
+  for (size_t j = 0; j < D->nb; j++) {
+    const size_t i = comp_of(D, j);
+    D->w[j] = 2.0 / (D->hi[i] - D->lo[i]);
+  }
+  whirl_deflate_options o;
+  whirl_deflate_options_default(&o);
+  o.weight = D->w;
+  o.tol = fmin(R->s->epsl, R->s->epsu) * 1e-3;
+  o.max_step = 1.0;         /* at most a box half-width per step */
+  o.max_distance = 20.0;
+  o.min_distance = 1e-6;
+  char err[512];
+  D->d = whirl_deflate_alloc(b0->sys, &o, err, sizeof err);
+  if (!D->d) {
+    run_say(R, "discovery: %s", err);
+    return -1;
+  }
+  return 0;
+}
+
+static void disc_free(disc *D) {
+  for (size_t t = 1; t < D->ntraces; t++) run_trace_free(&D->traces[t]);
+  free(D->traces);
+  free(D->curve);
+  whirl_deflate_free(D->d);
+  free(D->lo);
+  free(D->hi);
+  free(D->w);
+  free(D->p);
+  free(D->x);
+  free(D->xs);
+  free(D->c);
+}
+
+static void params_at(disc *D, double s) {
+  memcpy(D->p, D->R->par, D->R->npar * sizeof *D->p);
+  D->p[D->b0->icp] = s;
+}
+
+/* The known solutions at s: every crossing of s by a traced branch,
+ * interpolated between its two points and polished by Newton. */
+static int known_at(disc *D, double s) {
+  whirl_deflate_clear(D->d);
+  double *x = D->x;
+  for (size_t t = 0; t < D->ntraces; t++) {
+    const run_trace *T = &D->traces[t];
+    for (size_t k = 0; k + 1 < T->npts; k++) {
+      const double qa = T->q[k], qb = T->q[k + 1];
+      if (!((qa - s) * (qb - s) <= 0.0) || qa == qb) continue;
+      const double th = (s - qa) / (qb - qa);
+      for (size_t j = 0; j < D->nb; j++)
+        x[j] = (1 - th) * T->x[k * T->n + j] + th * T->x[(k + 1) * T->n + j];
+      double *xi = D->xs; /* the interpolant, kept if Newton fails (a fold) */
+      memcpy(xi, x, D->nb * sizeof *x);
+      if (whirl_deflate_polish(D->d, x, D->p, NULL) != WHIRL_OK) memcpy(x, xi, D->nb * sizeof *x);
+      if (whirl_deflate_nearest(D->d, x, NULL) < 1e-6) continue;
+      if (whirl_deflate_add(D->d, x)) return -1;
+    }
+  }
+  return 0;
+}
+
+/* Time integration from x0 (model state): the end state after `settle`
+ * (forcing periods, or time units), or for a periodic problem its next
+ * period as the discretised orbit.  0, 1 (the integration failed). */
+static int settled(disc *D, const double *x0, double *out) {
+  run_ctx *R = D->R;
+  const int forced = R->model->forcing_param >= 0;
+  const double T = forced ? 2.0 * WHIRL_PI / D->p[R->model->forcing_param] : 1.0;
+  const double t1 = R->s->discover_settle * T;
+  whirl_ode *ode = whirl_ode_alloc(&R->prob, D->p);
+  if (!ode) return 1;
+  int rc = whirl_ode_set_tolerances(ode, 1e-8, 1e-10);
+  if (!rc) rc = whirl_ode_set_max_steps(ode, 2000000);
+  if (!rc) rc = whirl_ode_reset(ode, 0.0, x0);
+  if (!rc) rc = whirl_ode_evolve(ode, t1);
+  if (!rc && D->b0->kind == WHIRL_SOL_EQ) {
+    memcpy(out, whirl_ode_x(ode), D->n * sizeof *out);
+  } else if (!rc) {
+    const size_t m = 8 * (2 * (size_t)R->s->nhb + 1);
+    for (size_t k = 0; !rc && k < m; k++) {
+      rc = whirl_ode_evolve(ode, t1 + T * (double)k / (double)m);
+      if (!rc) memcpy(D->xs + k * D->n, whirl_ode_x(ode), D->n * sizeof *D->xs);
+    }
+    whirl_periodic po = whirl_periodic_of_hbm(D->b0->hbm);
+    if (!rc) rc = whirl_periodic_from_samples(&po, D->xs, m, T, out);
+  }
+  whirl_ode_free(ode);
+  return rc ? 1 : 0;
+}
+
+/* A scale of the box for one random start, log-uniform in [1/4, 4]
+ * (DISCOVER_BOX given: 1): an isolated branch may lie far from the size of
+ * the start branch, which sets the default box. */
+static double box_zoom(disc *D) {
+  return D->R->s->nbox ? 1.0 : exp(log(4.0) * (2.0 * urand(D) - 1.0));
+}
+
+/* A random orbit (or state) in the box: a uniform mean and, for periodic
+ * problems, a first harmonic of uniform amplitude up to half the box. */
+static int random_start(disc *D, double *out) {
+  const size_t n = D->n;
+  const double zoom = box_zoom(D);
+  for (size_t i = 0; i < n; i++) {
+    const double mid = 0.5 * (D->lo[i] + D->hi[i]), half = 0.5 * zoom * (D->hi[i] - D->lo[i]);
+    const double lo = mid - half, hi = mid + half;
+    D->c[i] = lo + (hi - lo) * urand(D);
+    D->c[n + i] = 0.5 * (hi - lo) * (urand(D) - 0.5);
+    D->c[2 * n + i] = 0.5 * (hi - lo) * (urand(D) - 0.5);
+  }
+  if (D->b0->kind == WHIRL_SOL_EQ) {
+    memcpy(out, D->c, n * sizeof *out);
+    return 0;
+  }
+  const int fp = D->R->model->forcing_param;
+  whirl_periodic po = whirl_periodic_of_hbm(D->b0->hbm);
+  return whirl_periodic_from_harmonics(&po, D->c, 1, 2.0 * WHIRL_PI / D->p[fp], out) ? 1 : 0;
+}
+
+/* A known orbit at a random phase and a random amplitude (log-uniform in
+ * [1/4, 4]): a start whose components are consistent with each other (a
+ * velocity the derivative of its displacement), unlike a random orbit. */
+static int shifted_start(disc *D, size_t nknown, double *x) {
+  size_t pick = (size_t)(urand(D) * (double)nknown);
+  if (pick >= nknown) pick = nknown - 1;
+  const double *r = whirl_deflate_root(D->d, pick);
+  const double a = exp(log(4.0) * (2.0 * urand(D) - 1.0)), phi = 2.0 * WHIRL_PI * urand(D);
+  const size_t N = (D->L - 1) / 2;
+  memcpy(x, r, D->nb * sizeof *x);
+  for (size_t i = 0; i < D->n; i++) {
+    double *blk = x + i * D->L;
+    blk[0] *= a;
+    for (size_t k = 1; k <= N; k++) {
+      const double c = cos((double)k * phi), sn = sin((double)k * phi);
+      const double ak = blk[2 * k - 1], bk = blk[2 * k];
+      blk[2 * k - 1] = a * (ak * c + bk * sn);
+      blk[2 * k] = a * (bk * c - ak * sn);
+    }
+  }
+  return 0;
+}
+
+/* The k-th start at the current sample: the model's start (or the zero
+ * orbit: Newton's first step from it is the linear response), three scaled
+ * copies of each known solution, settled integrations (a quarter of the
+ * budget when DISCOVER_SETTLE > 0), then random states.  0 with the start in
+ * x and its kind, 1 when this start is not usable (skipped). */
+static int start_k(disc *D, size_t k, size_t nknown, double *x, int *from) {
+  static const double scale[3] = {0.5, 1.5, -1.0};
+  const int budget = D->R->s->discover_starts;
+  const size_t nsettle = D->R->s->discover_settle > 0 ? (size_t)(budget + 3) / 4 : 0;
+  if (k == 0) {
+    *from = FROM_START;
+    if (D->b0->kind == WHIRL_SOL_EQ)
+      memcpy(x, D->R->u, D->n * sizeof *x);
+    else
+      memset(x, 0, D->nb * sizeof *x);
+    return 0;
+  }
+  k--;
+  if (k < 3 * nknown) {
+    *from = FROM_SCALED;
+    const double *r = whirl_deflate_root(D->d, k / 3);
+    for (size_t j = 0; j < D->nb; j++) x[j] = scale[k % 3] * r[j];
+    if (D->nb > D->n * D->L) x[D->nb - 1] = r[D->nb - 1]; /* a frequency */
+    return 0;
+  }
+  k -= 3 * nknown;
+  if (k < nsettle) {
+    *from = FROM_SETTLED;
+    double *x0 = D->c; /* a random initial state in the box */
+    const double zoom = box_zoom(D);
+    for (size_t i = 0; i < D->n; i++)
+      x0[i] = 0.5 * (D->lo[i] + D->hi[i]) + zoom * (D->hi[i] - D->lo[i]) * (urand(D) - 0.5);
+    double *st = malloc(D->n * sizeof *st);
+    if (!st) return 1;
+    memcpy(st, x0, D->n * sizeof *st);
+    int rc = settled(D, st, x);
+    free(st);
+    return rc;
+  }
+  *from = FROM_RANDOM;
+  if (D->L > 1 && nknown && urand(D) < 0.5) return shifted_start(D, nknown, x);
+  return random_start(D, x);
+}
+
+/* Room for two more traces. */
+static int grow(disc *D) {
+  if (D->ntraces + 2 <= D->cap) return 0;
+  const size_t cap = 2 * D->cap;
+  run_trace *nt = realloc(D->traces, cap * sizeof *nt);
+  if (!nt) return -1;
+  D->traces = nt;
+  int *nc = realloc(D->curve, cap * sizeof *nc);
+  if (!nc) return -1;
+  D->curve = nc;
+  D->cap = cap;
+  return 0;
+}
+
+/* A new branch from the solution seed at D->p: both directions (one when
+ * it closes), from Newton at seed, or along ±dir[nb + 1] from it exactly
+ * (a fold).  0, or the failure of run_branch. */
+static int trace_curve(disc *D, const double *seed, const double *dir, int from) {
+  run_ctx *R = D->R;
+  branch_spec b = *D->b0;
+  double *neg = NULL;
+  if (dir && !(neg = malloc((D->nb + 1) * sizeof *neg))) return -1;
+  for (size_t j = 0; dir && j <= D->nb; j++) neg[j] = -dir[j];
+  b.x0 = seed;
+  b.p0 = D->p;
+  b.bp = NULL;
+  const int first = R->branch + 1;
+  int rc = 0, closed = 0;
+  fprintf(R->log, "discovery: a new solution at %s = %.10g from %s\n",
+          R->pnames[b.icp], D->p[b.icp], from_name[from]);
+  for (int sign = 1; sign >= -1 && !closed && !rc; sign -= 2) {
+    if (grow(D)) {
+      rc = -1;
+      break;
+    }
+    run_trace *t = &D->traces[D->ntraces];
+    memset(t, 0, sizeof *t);
+    t->n = D->nb;
+    D->curve[D->ntraces++] = (int)D->ncurves + 1;
+    b.trace = t;
+    b.dir_sign = sign;
+    b.dir = dir ? (sign > 0 ? dir : neg) : NULL;
+    rc = run_branch(R, &b);
+    closed = t->closed;
+  }
+  free(neg);
+  if (rc) return rc;
+  D->ncurves++;
+  D->nclosed += closed != 0;
+  D->found[from]++;
+  if (closed)
+    run_summary(R, "  branch %d is isolated: a closed branch (an isola), found at "
+                "%s = %.8g from %s", first, R->pnames[b.icp], D->p[b.icp], from_name[from]);
+  else
+    run_summary(R, "  branches %d and %d are one isolated branch (not connected to "
+                "the start), found at %s = %.8g from %s", first, R->branch,
+                R->pnames[b.icp], D->p[b.icp], from_name[from]);
+  return 0;
+}
+
+/* Route 1: deflated Newton at sample value number si. */
+static int search_sample(disc *D, size_t si, double *x) {
+  run_ctx *R = D->R;
+  const double s = R->s->discover[si];
+  params_at(D, s);
+  D->rng = (uint64_t)R->s->discover_seed * 0x9E3779B97F4A7C15ull + si + 1;
+  if (known_at(D, s)) return -1;
+  const size_t nknown = whirl_deflate_count(D->d);
+  const size_t budget = (size_t)R->s->discover_starts;
+  size_t before = D->ncurves, failed[3] = {0, 0, 0}; /* unusable, no convergence, domain */
+  for (size_t k = 0; k < budget; k++) {
+    int from = FROM_RANDOM;
+    if (R->io.progress) R->io.progress(si * budget + k, R->s->ndiscover * budget, R->io.ctx);
+    if (start_k(D, k, nknown, x, &from)) {
+      failed[0]++;
+      continue;
+    }
+    D->starts++;
+    int rc = whirl_deflate_solve(D->d, x, D->p, NULL);
+    if (rc == WHIRL_ENOCONV || rc == WHIRL_EDOMAIN) {
+      failed[rc == WHIRL_ENOCONV ? 1 : 2]++;
+      continue;
+    }
+    if (rc != WHIRL_OK) {
+      run_say(R, "discovery at %s = %g: %s", R->pnames[D->b0->icp], s,
+              whirl_deflate_errmsg(D->d));
+      return -1;
+    }
+    rc = trace_curve(D, x, NULL, from);
+    if (rc) return rc;
+    params_at(D, s); /* run_branch leaves it alone; the sample stays */
+    if (known_at(D, s)) return -1;
+  }
+  fprintf(R->log, "discovery at %s = %.10g: %zu solutions known before, %zu "
+          "new branches; of %zu starts %zu unusable (integration failed), %zu "
+          "without a new solution, %zu left the domain\n", R->pnames[D->b0->icp], s,
+          nknown, D->ncurves - before, budget, failed[0], failed[1], failed[2]);
+  return 0;
+}
+
+/* Is the fold (x, q) one of the LPs already on a traced branch? */
+static int known_fold(const disc *D, const double *x, double q) {
+  for (size_t t = 0; t < D->ntraces; t++) {
+    const run_trace *T = &D->traces[t];
+    for (size_t k = 0; k < T->npts; k++) {
+      if (T->type[k] != WHIRL_PT_LP || fabs(T->q[k] - q) > 1e-6 * (1 + fabs(q))) continue;
+      double e = 0.0;
+      for (size_t j = 0; j < D->nb; j++) e = fmax(e, D->w[j] * fabs(T->x[k * T->n + j] - x[j]));
+      if (e < 1e-4) return 1;
+    }
+  }
+  return 0;
+}
+
+/* One direction of the fold locus of the LP (x, p) in the second
+ * parameter: every return to its value (a UZ point) that is a fold on no
+ * traced branch seeds one.  0, -1. */
+static int fold_pass(disc *D, whirl_fold *f, const double *Z0, const double *p0,
+                     int sign, double *v, double *dir) {
+  run_ctx *R = D->R;
+  const int p2 = R->icp[1], q = D->b0->icp;
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.icp = (size_t)p2;
+  o.ds = fmin(fmax(fabs(R->s->ds), R->s->dsmin), R->s->dsmax);
+  o.ds_min = R->s->dsmin;
+  o.ds_max = R->s->dsmax;
+  o.nmx = (size_t)R->s->nmx;
+  o.newton_tol = fmin(R->s->epsl, R->s->epsu);
+  o.newton_maxit = R->s->itnw;
+  o.detect_bp = o.detect_hb = o.detect_pd = 0;
+  const double uz = R->par[p2];
+  o.uz = &uz;
+  o.nuz = 1;
+  char err[512];
+  whirl_cont *c = whirl_cont_alloc(whirl_fold_system(f), &o, err, sizeof err);
+  if (!c) return -1;
+  int rc = whirl_cont_start(c, Z0, p0, sign), returns = 0;
+  while (rc == WHIRL_OK && (rc = whirl_cont_step(c)) == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(c);
+    if (pt->type != WHIRL_PT_UZ) continue;
+    returns++;
+    whirl_fold_params(f, pt->x, pt->p, D->p);
+    D->p[p2] = uz;
+    if (known_fold(D, pt->x, D->p[q])) continue;
+    fprintf(R->log, "discovery: the fold locus in %s returns to %s = %.10g at "
+            "a new fold, %s = %.10g\n", R->pnames[p2], R->pnames[p2], uz,
+            R->pnames[q], D->p[q]);
+    if (whirl_fold_vectors(f, pt->x, pt->p, v, NULL, NULL, NULL) != WHIRL_OK) continue;
+    memcpy(dir, v, D->nb * sizeof *dir);
+    dir[D->nb] = 0.0;
+    memcpy(D->x, pt->x, D->nb * sizeof *D->x);
+    int r = trace_curve(D, D->x, dir, FROM_FOLD);
+    if (r) {
+      whirl_cont_free(c);
+      return r;
+    }
+  }
+  fprintf(R->log, "  fold locus (%s): %zu points, %d returns to %s = %g, %s\n",
+          sign > 0 ? "up" : "down", whirl_cont_get_stats(c)->steps, returns,
+          R->pnames[p2], uz, rc == WHIRL_DONE ? whirl_stop_reason_name(whirl_cont_stop_reason(c))
+                                              : whirl_cont_errmsg(c));
+  whirl_cont_free(c);
+  return 0;
+}
+
+/* Route 2: the fold loci of every LP of every traced branch (those of
+ * branches found on the way too), in ICP's second parameter. */
+static int fold_route(disc *D) {
+  run_ctx *R = D->R;
+  if (R->nicp < 2 || R->icp[1] < 0 || R->icp[1] == D->b0->icp) return 0;
+  whirl_fold_options fo;
+  whirl_fold_options_default(&fo, (size_t)D->b0->icp);
+  char err[512];
+  whirl_fold *f = whirl_fold_alloc(D->b0->sys, &fo, err, sizeof err);
+  const size_t nz = D->nb + 1;
+  double *Z = malloc((nz + 1) * sizeof *Z), *pz = malloc(R->npar * sizeof *pz);
+  double *v = malloc(D->nb * sizeof *v), *dir = malloc(nz * sizeof *dir);
+  int rc = f && Z && pz && v && dir ? 0 : -1;
+  for (size_t t = 0; !rc && t < D->ntraces; t++)
+    for (size_t k = 0; !rc && k < D->traces[t].npts; k++) {
+      const run_trace *T = &D->traces[t];
+      if (T->type[k] != WHIRL_PT_LP) continue;
+      memcpy(pz, R->par, R->npar * sizeof *pz);
+      pz[D->b0->icp] = T->q[k];
+      memcpy(D->x, T->x + k * T->n, D->nb * sizeof *D->x);
+      if (whirl_fold_init(f, D->x, pz, Z) != WHIRL_OK) continue;
+      fprintf(R->log, "discovery: fold locus in %s from the LP at %s = %.10g "
+              "(BR %d)\n", R->pnames[R->icp[1]], R->pnames[D->b0->icp], T->q[k], T->br);
+      double *Zs = malloc((nz + 1) * sizeof *Zs);
+      if (!Zs) rc = -1;
+      for (int sign = 1; !rc && sign >= -1; sign -= 2) {
+        memcpy(Zs, Z, nz * sizeof *Zs);
+        rc = fold_pass(D, f, Zs, pz, sign, v, dir);
+      }
+      free(Zs);
+    }
+  whirl_fold_free(f);
+  free(Z);
+  free(pz);
+  free(v);
+  free(dir);
+  return rc;
+}
+
+int run_discover(run_ctx *R, const branch_spec *b0, run_trace *t0) {
+  disc D;
+  const double t_start = run_now();
+  int rc = disc_init(&D, R, b0, t0);
+  double *x = rc ? NULL : malloc((D.nb + 1) * sizeof *x);
+  if (!rc && !x) rc = -1;
+  for (size_t si = 0; !rc && si < R->s->ndiscover; si++) rc = search_sample(&D, si, x);
+  if (!rc) rc = fold_route(&D);
+  if (!rc) {
+    const whirl_deflate_stats *st = whirl_deflate_get_stats(D.d);
+    run_summary(R, "discovery: %zu branch%s, %zu of them isolated (closed or not "
+                "connected to the start), %zu closed", D.ncurves + 1,
+                D.ncurves ? "es" : "", D.ncurves, D.nclosed);
+    fprintf(R->log, "discovery: %zu branches, %zu isolated, %zu closed; %zu starts "
+            "at %zu sample values, %zu deflated Newton iterations, %zu "
+            "factorisations, %.3f s\n", D.ncurves + 1, D.ncurves, D.nclosed, D.starts,
+            R->s->ndiscover, st->iterations, st->factorizations, run_now() - t_start);
+  }
+  free(x);
+  disc_free(&D);
+  return rc;
+}
