@@ -22,25 +22,24 @@
 # And main.whirl, the branch traced from low frequency, has no fold and
 # stays below the isola: the isola is not reached from the start branch.
 # SPDX-License-Identifier: BSD-3-Clause
+# shellcheck disable=SC2046,SC2086 # set -- $(...): numbers split into words on purpose
+# shellcheck disable=SC2034 # name is read by tap.sh
 name=irc
 top_builddir=${top_builddir:-.}
 case $top_builddir in /*) ;; *) top_builddir="$(pwd)/$top_builddir" ;; esac  # stage.sh, after tap.sh's cd
 . "${top_srcdir:-.}/test/regress/tap.sh"
 CC=${CC:-cc}
-# shellcheck disable=SC2086 # CC may carry flags
-set -- $CC
+set -- $CC  # CC may carry flags
 command -v "$1" > /dev/null 2>&1 || { echo "1..0 # SKIP no C compiler ($CC)"; exit 77; }
 ex="$top_srcdir/examples/isolated-resonance"
 diag() { sed 's/^/# /' "$@"; }
 
 # ---- the plug-in (in-tree headers) and the integrator (staged library) -----
 cp "$ex/irc.c" "$ex/settle.c" "$ex/irc.whirl" "$ex/main.whirl" . || exit 1
-# shellcheck disable=SC2086
 $CC -std=c11 -shared -fPIC ${CFLAGS:-} -I"$top_srcdir/lib" -o irc.so irc.c ${LDFLAGS:-} -lm > cc.log 2>&1
 rc=$?
 ok $rc "irc.so (examples/isolated-resonance/irc.c) builds as a plug-in"
 . "$top_srcdir/test/regress/stage.sh"
-# shellcheck disable=SC2086
 $CC -std=c11 ${CFLAGS:-} -I"$incdir" -o settle settle.c irc.c ${LDFLAGS:-} \
   -L"$stage$libdir" -lwhirl -lm >> cc.log 2>&1
 rc2=$?
@@ -134,13 +133,14 @@ awk -v wL="$wL" -v aL="$aL" -v wR="$wR" -v aR="$aR" '
     printf "# NHB 1 LP: W = %s (closed form %.12g, error %.1e), MAX x %s (error %.1e)\n", $2, $2 < 1.055 ? wL : wR, e1, $4, e2
     if (e1 > 1e-8 || e2 > 1e-6) bad = 1; n++ } END { exit bad || n != 2 }' lp1
 ok $? "NHB = 1: the isola's two folds at the closed form's W (1e-8) and amplitude (1e-6)"
+rows h1.out UZ > uz1
 bad=0 k=0
 while read -r lab W F A S; do
   k=$((k + 1))
   hit=1
   for a in $(cf amp 0.055 "$W"); do near "$A" "$a" 1e-8 && hit=0; done
   [ $hit -eq 0 ] || { bad=1; echo "# UZ $lab W = $W: MAX x $A is none of $(cf amp 0.055 "$W")"; }
-done < "$(rows h1.out UZ > uz1; echo uz1)"
+done < uz1
 [ $bad -eq 0 ] && [ $k -eq 6 ]
 ok $? "NHB = 1: the $k user points (W = 1.05, 1.06, 1.07) have the closed form's amplitudes (1e-8)"
 
@@ -174,6 +174,7 @@ set -- $is12 $mg12
 ok $? "NHB = 12: birth and merging a little below the closed form (within 3% and 1%)"
 
 # ---- time integration ------------------------------------------------------
+rows irc.out UZ > uz12
 bad=0 ns=0 nu=0
 while read -r lab W F A S; do
   set -- $(state0 irc.out "$lab")
@@ -189,7 +190,7 @@ while read -r lab W F A S; do
     echo "# UZ $lab W = $W unstable: MAX x $A; DOPRI5 after 2000 T: max $3"
     near "$3" "$A" 1e-2 && bad=1
   fi
-done < "$(rows irc.out UZ > uz12; echo uz12)"
+done < uz12
 [ $bad -eq 0 ] && [ $ns -ge 3 ] && [ $nu -ge 3 ]
 ok $? "DOPRI5 from each HBM user point: the $ns stable ones stay (1e-6), the $nu unstable ones leave"
 lab=$(awk '$2 == 1.06 && $5 == 1 { print $1; exit }' uz12)
