@@ -82,6 +82,7 @@ typedef struct disc {
   uint64_t rng;
   double *p, *x, *xs, *c;
   size_t starts, found[NFROM];
+  double t_trace, t_loci;  /* seconds spent tracing new branches, on loci */
 } disc;
 
 /* splitmix64 (Steele, Lea & Flood 2014): a uniform number in [0, 1). */
@@ -365,6 +366,7 @@ static int trace_curve(disc *D, const double *seed, const double *dir, int from)
   b.p0 = D->p;
   b.bp = NULL;
   const int first = R->branch + 1;
+  const double t0 = run_now();
   int rc = 0, closed = 0;
   fprintf(R->log, "discovery: a new solution at %s = %.10g from %s\n",
           R->pnames[b.icp], D->p[b.icp], from_name[from]);
@@ -384,6 +386,7 @@ static int trace_curve(disc *D, const double *seed, const double *dir, int from)
     closed = t->closed;
   }
   free(neg);
+  D->t_trace += run_now() - t0;
   if (rc) return rc;
   D->ncurves++;
   D->nclosed += closed != 0;
@@ -550,7 +553,9 @@ int run_discover(run_ctx *R, const branch_spec *b0, run_trace *t0) {
   double *x = rc ? NULL : malloc((D.nb + 1) * sizeof *x);
   if (!rc && !x) rc = -1;
   for (size_t si = 0; !rc && si < R->s->ndiscover; si++) rc = search_sample(&D, si, x);
+  const double t_loci = run_now(), traced = D.t_trace;
   if (!rc) rc = fold_route(&D);
+  D.t_loci = run_now() - t_loci - (D.t_trace - traced);
   if (!rc) {
     const whirl_deflate_stats *st = whirl_deflate_get_stats(D.d);
     run_summary(R, "discovery: %zu branch%s, %zu of them isolated (closed or not "
@@ -558,8 +563,11 @@ int run_discover(run_ctx *R, const branch_spec *b0, run_trace *t0) {
                 D.ncurves ? "es" : "", D.ncurves, D.nclosed);
     fprintf(R->log, "discovery: %zu branches, %zu isolated, %zu closed; %zu starts "
             "at %zu sample values, %zu deflated Newton iterations, %zu "
-            "factorisations, %.3f s\n", D.ncurves + 1, D.ncurves, D.nclosed, D.starts,
-            R->s->ndiscover, st->iterations, st->factorizations, run_now() - t_start);
+            "factorisations, %.3f s: %.3f s searching, %.3f s on fold loci, "
+            "%.3f s tracing the new branches\n", D.ncurves + 1, D.ncurves, D.nclosed,
+            D.starts, R->s->ndiscover, st->iterations, st->factorizations,
+            run_now() - t_start, run_now() - t_start - D.t_loci - D.t_trace, D.t_loci,
+            D.t_trace);
   }
   free(x);
   disc_free(&D);

@@ -35,7 +35,7 @@ ex="$top_srcdir/examples/isolated-resonance"
 diag() { sed 's/^/# /' "$@"; }
 
 # ---- the plug-in (in-tree headers) and the integrator (staged library) -----
-cp "$ex/irc.c" "$ex/settle.c" "$ex/irc.whirl" "$ex/main.whirl" . || exit 1
+cp "$ex/irc.c" "$ex/settle.c" "$ex/irc.whirl" "$ex/main.whirl" "$ex/discover.whirl" . || exit 1
 $CC -std=c11 -shared -fPIC ${CFLAGS:-} -I"$top_srcdir/lib" -o irc.so irc.c ${LDFLAGS:-} -lm > cc.log 2>&1
 rc=$?
 ok $rc "irc.so (examples/isolated-resonance/irc.c) builds as a plug-in"
@@ -230,4 +230,14 @@ set -- $(settle 2000 0 0 Omega=1.06)
 echo "# from rest at W = 1.06: DOPRI5 max x $3 after 2000 T; main branch MAX x $A"
 near "$3" "${A:-0}" 1e-6
 ok $? "from rest (W = 1.06) the integration settles on the main branch, not on the isola"
+
+# ---- the isola found by the discovery step (discover.whirl: no start on it)
+"$WHIRL" run discover.whirl > disc.txt 2> run.err || diag run.err
+grep -q "^discovery: 2 branches, 1 of them isolated (closed or not connected to the start), 1 closed" disc.txt
+ok $? "discover.whirl: the main branch and one closed isola: $(grep '^discovery' disc.txt)"
+awk -F'\t' '$1 == 2 && $3 == "LP" { print $5 }' discover.out/branches.tsv | sort -g > disc.lp
+awk -F'\t' '$3 == "LP" { print $5 }' irc.out/branches.tsv | sort -g > hand.lp
+[ "$(wc -l < disc.lp)" -eq 2 ] && [ "$(wc -l < hand.lp)" -eq 2 ] &&
+  paste disc.lp hand.lp | awk '{ d = $1 - $2; if (d < -1e-8 || d > 1e-8) bad = 1 } END { exit bad }'
+ok $? "the discovered isola's folds $(tr '\n' ' ' < disc.lp)= those from the hand-made start $(tr '\n' ' ' < hand.lp)"
 tap_end
