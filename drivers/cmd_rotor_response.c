@@ -8,7 +8,9 @@
  * response.png (amplitude at a node against speed, stable solid, unstable
  * dashed, folds marked), as one transaction.
  * SPDX-License-Identifier: BSD-3-Clause */
+#include <limits.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,14 +26,23 @@ typedef struct resp_point {
 typedef struct resp_table {
   resp_point *pt;
   size_t n, cap;
-  int branch;
-  int reverse_from; /* points of the current half-branch start here */
+  int branch, half;
+  size_t reverse_from; /* points of the current half-branch start here */
   cli_progress prog;
   double lo, hi;
 } resp_table;
 
+static void reverse_half(resp_table *t, size_t from);
+
 static int collect(const whirl_fe_hbm_response_point *p, void *ctx) {
   resp_table *t = ctx;
+  if (p->branch > 0 && (p->branch != t->branch || p->half != t->half)) {
+    /* discovery: a found branch's half towards smaller speeds is turned
+     * round before its other half follows */
+    if (t->half == -1 && p->half == +1 && p->branch == t->branch) reverse_half(t, t->reverse_from);
+    if (p->half == -1) t->reverse_from = t->n;
+    t->branch = p->branch, t->half = p->half;
+  }
   if (t->n == t->cap) {
     size_t cap = t->cap ? 2 * t->cap : 256;
     resp_point *np = realloc(t->pt, cap * sizeof *np);
@@ -156,9 +167,10 @@ static const cli_doc response_doc = {
 "exit status: 0, 1 a failed continuation or output, 2 bad options or rotor file.\n"};
 
 typedef struct resp_args {
-  const char *file, *unit, *dir, *seed[8], *stability;
+  const char *file, *unit, *dir, *seed[8], *stability, *discover;
   double from, to, unb, clr, visc;
-  size_t harmonics, nmx, nseed;
+  size_t harmonics, nmx, nseed, starts;
+  int dseed;
   int node, noplot, quiet;
 } resp_args;
 
@@ -178,6 +190,12 @@ static int parse_args(int argc, char **argv, resp_args *a) {
        "also the branch through the circular orbits of relative eccentricity E at the "
        "film elements at speed W (in --unit); may be repeated",
        ""},
+      {"--discover", CLI_STRING, &a->discover, "W1,W2,...",
+       "also every branch found at these speeds (in --unit) by deflated Newton, "
+       "deflated against the branches traced (doc/discovery.md)",
+       ""},
+      {"--discover-starts", CLI_SIZE, &a->starts, "N", "starts per discovery speed", NULL},
+      {"--discover-seed", CLI_INT, &a->dseed, "S", "seed of the random starts", NULL},
       {"--stability", CLI_STRING, &a->stability, "S",
        "Hill's stability: auto (dense up to 1200 unknowns of the Hill matrix, else "
        "sparse), dense, sparse, or off",
@@ -235,13 +253,52 @@ static int check_args(const char *CMD, resp_args *a, const whirl_fe_rotor *r, do
   return 0;
 }
 
+/* --discover W1,W2,...: at most 64 speeds, converted to rad/s. */
+static int parse_speeds(const char *cmd, const char *s, double f, double *w, size_t *n) {
+  char buf[2048];
+  *n = 0;
+  if (strlen(s) >= sizeof buf) goto bad;
+  memcpy(buf, s, strlen(s) + 1);
+  for (char *tok = strtok(buf, ","); tok; tok = strtok(NULL, ",")) {
+    if (*n == 64 || whirl_run_number(tok, &w[*n]) || !(w[*n] >= 0)) goto bad;
+    w[(*n)++] *= f;
+  }
+  if (*n) return 0;
+bad:
+  cli_error(cmd, "--discover wants up to 64 speeds >= 0 separated by commas, in "
+            "--unit (got '%s')", s);
+  return -1;
+}
+
+/* The branch from rest and the branches discovery finds (--discover). */
+static int discover(const char *CMD, const resp_args *a, double f, const whirl_fe_rotor *r,
+                    whirl_fe_hbm_response_options *o, resp_table *t, char *msg, size_t len) {
+  double speeds[64];
+  whirl_fe_discover_options d;
+  whirl_fe_discover_report rep;
+  whirl_fe_discover_options_default(&d);
+  if (parse_speeds(CMD, a->discover, f, speeds, &d.nspeeds)) return WHIRL_EINVAL;
+  d.speeds = speeds;
+  if (a->starts != SIZE_MAX) d.starts = a->starts;
+  if (a->dseed != INT_MIN) d.seed = (unsigned long)a->dseed;
+  int rc = whirl_fe_hbm_discover(r, o, &d, collect, t, &rep, msg, len);
+  if (!rc && !a->quiet)
+    fprintf(stderr, "whirl rotor response: discovery: %zu branch%s, %zu of them isolated "
+            "(not connected to the branch from rest); %zu starts, %zu deflated Newton "
+            "iterations, %.3f s searching\n", rep.branches, rep.branches == 1 ? "" : "es",
+            rep.isolated, rep.starts, rep.iterations, rep.search_seconds);
+  return rc;
+}
+
 /* The branch from rest, then each seeded branch in both directions. */
 static int compute(const char *CMD, const resp_args *a, double f, const whirl_fe_rotor *r,
                    whirl_fe_hbm_response_options *o, resp_table *t) {
   char msg[600] = "";
   t->lo = o->speed_min, t->hi = o->speed_max, t->branch = 1;
   cli_progress_init(&t->prog, "rotor response", a->quiet);
-  int rc = whirl_fe_hbm_response(r, o, collect, t, msg, sizeof msg);
+  int rc = a->discover ? discover(CMD, a, f, r, o, t, msg, sizeof msg)
+                       : whirl_fe_hbm_response(r, o, collect, t, msg, sizeof msg);
+  if (rc == WHIRL_EINVAL && a->discover && !msg[0]) return 2;
   for (size_t s = 0; !rc && s < a->nseed; s++) {
     if (parse_seed(CMD, a->seed[s], f, &o->seed_omega, &o->seed_eps)) return 2;
     t->branch = 2 + (int)s;
@@ -264,7 +321,7 @@ static int compute(const char *CMD, const resp_args *a, double f, const whirl_fe
 int cmd_rotor_response(int argc, char **argv) {
   const char *CMD = "rotor response";
   resp_args a = {.unit = "rpm", .dir = "rotor-response", .stability = "auto", .from = NAN, .to = NAN,
-                 .unb = 1, .clr = 1, .visc = 1, .node = -1};
+                 .unb = 1, .clr = 1, .visc = 1, .node = -1, .dseed = INT_MIN, .starts = SIZE_MAX};
   int rc = parse_args(argc, argv, &a);
   if (rc) return rc == 1 ? 0 : 2;
   const double f = rotor_unit_factor(CMD, a.unit);
@@ -272,6 +329,24 @@ int cmd_rotor_response(int argc, char **argv) {
   for (size_t s = 0; s < a.nseed; s++) {
     double w, e;
     if (parse_seed(CMD, a.seed[s], f, &w, &e)) return 2;
+  }
+  if (a.discover) {
+    double w[64];
+    size_t nw;
+    if (parse_speeds(CMD, a.discover, f, w, &nw)) return 2;
+    if (a.nseed) {
+      cli_error(CMD, "--discover starts from rest and finds the isolas itself: give it "
+                "without --seed");
+      return 2;
+    }
+  }
+  if ((a.starts != SIZE_MAX || a.dseed != INT_MIN) && !a.discover) {
+    cli_error(CMD, "--discover-starts and --discover-seed need --discover SPEEDS");
+    return 2;
+  }
+  if (a.starts == 0 || (a.dseed != INT_MIN && a.dseed < 0)) {
+    cli_error(CMD, "--discover-starts must be >= 1 and --discover-seed >= 0");
+    return 2;
   }
   whirl_fe_rotor *r = rotor_load(a.file);
   if (!r) return 2;

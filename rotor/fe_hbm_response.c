@@ -53,13 +53,14 @@ static void cont_options(whirl_cont_options *co, double lo, double hi,
   co->newton_tol = 1e-9;
   co->detect_hb = 1;
   co->detect_pd = 1;
-  co->detect_loop = o->seed_eps > 0; /* an isola closes on itself */
+  co->detect_loop = o->seed_eps > 0 || o->seed_x; /* an isola closes on itself */
 }
 
 /* Report one point of the branch. */
 static int report(whirl_fe_hbm *h, const whirl_point *pt, int node,
                   double *q, whirl_fe_hbm_response_fn fn, void *ctx) {
   whirl_fe_hbm_response_point rp;
+  memset(&rp, 0, sizeof rp);
   int rc = whirl_fe_hbm_recover(h, pt->x, pt->p, q);
   if (rc) return rc;
   rp.index = pt->index;
@@ -90,6 +91,10 @@ static int start_point(whirl_fe_hbm *h, const whirl_fe_hbm_response_options *o,
                        const double *p, double *x0, char *err,
                        size_t errlen) {
   const size_t n = whirl_fe_hbm_size(h);
+  if (o->seed_x) {
+    memcpy(x0, o->seed_x, n * sizeof *x0);
+    return WHIRL_OK;
+  }
   if (!(o->seed_eps > 0)) return WHIRL_OK;
   double ph = o->seed_phase;
   if (isnan(ph)) {
@@ -153,7 +158,7 @@ static int follow(whirl_fe_hbm *h, const whirl_cont_options *co,
   double *x0 = calloc(n, sizeof *x0);
   double *q = malloc((size_t)h->r->ndof * h->L * sizeof *q);
   double p[WHIRL_FE_NPAR];
-  const double om0 = o->seed_eps > 0 ? o->seed_omega : lo;
+  const double om0 = o->seed_eps > 0 || o->seed_x ? o->seed_omega : lo;
   whirl_fe_hbm_params(om0, p);
   p[WHIRL_FE_P_UNBALANCE] = o->unbalance;
   p[WHIRL_FE_P_CLEARANCE] = o->clearance;
@@ -192,6 +197,9 @@ int whirl_fe_hbm_response(const whirl_fe_rotor *r,
                         "seed: need 0 < eps = %g < 1 and Omega = %g rad/s in "
                         "the speed range [%g, %g]", o->seed_eps,
                         o->seed_omega, lo, hi);
+  if (o->seed_x && !(o->seed_omega >= lo && o->seed_omega <= hi))
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "seed: Omega = %g rad/s "
+                        "outside the speed range [%g, %g]", o->seed_omega, lo, hi);
   whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o->hbm, errbuf, errlen);
   if (!h) return WHIRL_EINVAL;
   whirl_cont_options co;

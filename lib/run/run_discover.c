@@ -298,7 +298,10 @@ static int shifted_start(disc *D, size_t nknown, double *x) {
 /* The k-th start at the current sample: the model's start (or the zero
  * orbit: Newton's first step from it is the linear response), three scaled
  * copies of each known solution, settled integrations (a quarter of the
- * budget when DISCOVER_SETTLE > 0), then random states.  0 with the start in
+ * budget when DISCOVER_SETTLE > 0), then random states — for orbits four in
+ * five of them a known orbit at a random phase and amplitude (on the
+ * Jeffcott rotor's isola 30 of 30 seeds find it with 40 starts, against 25
+ * of 30 with half of them; doc/discovery.md).  0 with the start in
  * x and its kind, 1 when this start is not usable (skipped). */
 static int start_k(disc *D, size_t k, size_t nknown, double *x, int *from) {
   static const double scale[3] = {0.5, 1.5, -1.0};
@@ -335,7 +338,7 @@ static int start_k(disc *D, size_t k, size_t nknown, double *x, int *from) {
     return rc;
   }
   *from = FROM_RANDOM;
-  if (D->L > 1 && nknown && urand(D) < 0.5) return shifted_start(D, nknown, x);
+  if (D->L > 1 && nknown && urand(D) < 0.8) return shifted_start(D, nknown, x);
   return random_start(D, x);
 }
 

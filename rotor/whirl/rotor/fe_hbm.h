@@ -161,6 +161,9 @@ typedef struct whirl_fe_hbm_response_options {
    * when it closes on itself (an isola inside the range). */
   double seed_omega, seed_eps, seed_phase;
   int direction;
+  /* Or a start X[whirl_fe_hbm_size] at seed_omega (a solution found by
+   * discovery), used instead of the circular seed when not NULL. */
+  const double *seed_x;
 } whirl_fe_hbm_response_options;
 
 WHIRL_API void
@@ -175,6 +178,11 @@ typedef struct whirl_fe_hbm_response_point {
   int stable;            /* 1, 0, −1 unknown */
   const double *X;       /* the unknowns, n of them */
   size_t n;
+  int branch;            /* whirl_fe_hbm_discover: 1 the branch from rest,
+                            2, 3, ... those found; 0 otherwise */
+  int half;              /* whirl_fe_hbm_discover: −1 the half traced
+                            towards smaller speeds from where it was found,
+                            +1 the other; 0 the branch from rest */
 } whirl_fe_hbm_response_point;
 
 /* Called at every point; a non-zero return ends the branch (and is
@@ -189,6 +197,45 @@ typedef int (*whirl_fe_hbm_response_fn)(
 WHIRL_API int whirl_fe_hbm_response(const whirl_fe_rotor *r,
                                     const whirl_fe_hbm_response_options *o,
                                     whirl_fe_hbm_response_fn fn, void *ctx,
+                                    char *errbuf, size_t errlen);
+
+/* ------------------------------------------------- discovery */
+
+/* Branches the response from rest does not reach (isolas), found without
+ * a start on them (doc/discovery.md §FE rotors): after the branch from
+ * rest, at each speed of `speeds`, deflated Newton (whirl/deflate.h) on the
+ * condensed system from `starts` starts — the linear response (Newton from
+ * X = 0), scaled copies of the solutions known there, circular orbits of
+ * random eccentricity in (0.05, 0.95) and phase at every film element, and
+ * known orbits at a random phase and amplitude — deflated against every
+ * crossing of that speed by every branch traced so far.  Each new solution
+ * seeds a branch traced towards smaller, then larger speeds. */
+typedef struct whirl_fe_discover_options {
+  const double *speeds;  /* rad/s, inside the speed range */
+  size_t nspeeds;
+  size_t starts;         /* per speed (default 40) */
+  unsigned long seed;    /* of the random starts (default 1) */
+} whirl_fe_discover_options;
+
+WHIRL_API void whirl_fe_discover_options_default(whirl_fe_discover_options *d);
+
+typedef struct whirl_fe_discover_report {
+  size_t branches;        /* traced, the one from rest included */
+  size_t isolated;        /* found by discovery (not connected to it) */
+  size_t starts;          /* starts tried */
+  size_t iterations;      /* deflated Newton iterations */
+  double search_seconds;  /* wall time of the search (not the tracing) */
+} whirl_fe_discover_report;
+
+/* The response (o as for whirl_fe_hbm_response, without a seed), then the
+ * discovery; fn is called for every point of every branch, with its branch
+ * and half.  WHIRL_OK (report filled, may be NULL), the callback's value,
+ * or an error with the message in errbuf. */
+WHIRL_API int whirl_fe_hbm_discover(const whirl_fe_rotor *r,
+                                    const whirl_fe_hbm_response_options *o,
+                                    const whirl_fe_discover_options *d,
+                                    whirl_fe_hbm_response_fn fn, void *ctx,
+                                    whirl_fe_discover_report *report,
                                     char *errbuf, size_t errlen);
 
 /* ------------------------------------------------- fold loci */
