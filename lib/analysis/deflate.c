@@ -74,7 +74,9 @@ whirl_deflate *whirl_deflate_alloc(const whirl_system *sys,
   if (!d) goto nomem;
   d->sys = sys;
   d->o = *o;
-  d->sparse = sys->Jp && sys->Ji && sys->Fx_sparse && n > 400;
+  /* sparse (UMFPACK) when the pattern is large, or sparse enough to pay */
+  d->sparse = sys->Jp && sys->Ji && sys->Fx_sparse &&
+              (n > 400 || (n > 64 && 4 * sys->nnz < n * n));
   d->ls = d->sparse ? whirl_linsol_alloc_sparse(n, sys->Jp, sys->Ji)
                     : whirl_linsol_alloc_dense(n);
   d->J = malloc((d->sparse ? sys->nnz : n * n) * sizeof *d->J);

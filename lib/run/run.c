@@ -347,7 +347,7 @@ int run_branch(run_ctx *R, branch_spec *b) {
     const void *obj = b->kind == WHIRL_SOL_COLLOC ? (const void *)b->colloc
                       : b->kind == WHIRL_SOL_HBM  ? (const void *)b->hbm
                                             : NULL;
-    if (b->trace && run_trace_add(b->trace, pt->x, pt->p[b->icp], type, R->branch)) {
+    if (b->trace && run_trace_add(b->trace, pt->x, pt->p, b->icp, type, R->branch)) {
       rc = -1;
       break;
     }
@@ -745,6 +745,11 @@ static int run_continuation(run_ctx *R, run_objects *O) {
   b.q = -1;
   b.ds_scale = 1.0;
 
+  if (s->ndiscover && s->ips != WHIRL_IPS_EQUILIBRIA && R->model->forcing_param < 0) {
+    run_fail(R, WHIRL_RK_DISCOVER, "DISCOVER finds periodic orbits of forced models; "
+             "model '%s' is autonomous (its equilibria: IPS = 1)", R->prob.name);
+    return -2;
+  }
   int rc = s->ips == WHIRL_IPS_EQUILIBRIA      ? start_equilibria(R, O, &b)
            : s->method == WHIRL_METHOD_COLLOC ? start_colloc(R, O, &b)
                                               : start_hbm(R, O, &b);
@@ -753,17 +758,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
   if (b.dir && s->ds < 0)
     for (size_t i = 0; i <= b.nb; i++) O->D[i] = -O->D[i];
   if (run_table_header(R, b.kind, b.icp, b.q)) return -1;
-  if (!s->ndiscover) return run_branch(R, &b);
-  /* discovery: the start branch is recorded, then searched around */
-  run_trace start;
-  memset(&start, 0, sizeof start);
-  start.n = b.nb;
-  b.trace = &start;
-  rc = run_branch(R, &b);
-  b.trace = NULL;
-  if (!rc) rc = run_discover(R, &b, &start);
-  run_trace_free(&start);
-  return rc;
+  return s->ndiscover ? run_discover(R, &b) : run_branch(R, &b);
 }
 
 /* ---- the run as a library object (whirl/run.h) --------------------------- */

@@ -1,14 +1,11 @@
 /* lib/run/run_discover.c — branches nobody gave a start for (DISCOVER,
- * doc/discovery.md): after the start branch is traced,
+ * doc/discovery.md): the start branch is traced, then
  *
  *  1. at every sample value s of the continuation parameter, deflated
  *     Newton (whirl/deflate.h; Farrell, Birkisson & Funke 2015) from a
- *     budget of starts — the model's start (equilibria) or the linear
- *     response (harmonic balance: Newton from the zero orbit), scaled copies
- *     of the solutions already known at s, end states of time integration
- *     from random initial states (the stable attractors), and random states
- *     in a box — deflated against every solution of every traced branch at
- *     s (the branch's crossings of s, polished by Newton);
+ *     budget of starts (run_discover_starts.c), deflated against every
+ *     solution of every traced branch at s (the branch's crossings of s,
+ *     polished by Newton);
  *  2. through a second parameter (ICP's second entry): from every fold of a
  *     traced branch, the fold locus is continued in it, through isola
  *     births and merges, back to its value; a fold found there that lies on
@@ -23,18 +20,18 @@
  * sample's index, so a run is reproducible and independent of threads.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include <whirl/deflate.h>
-#include <whirl/ode.h>
+#include "run_discover_impl.h"
 
-#include "run_impl.h"
+static const char *const from_name[NFROM] = {
+    "the model's start", "a scaled known solution", "a settled time integration",
+    "a random start", "a fold locus through the second parameter"};
 
 /* ---- traces ---------------------------------------------------------------- */
 
-int run_trace_add(run_trace *t, const double *x, double q, int type, int br) {
+int run_trace_add(run_trace *t, const double *x, const double *p, int icp, int type, int br) {
   if (t->npts == 0) t->br = br;
   if (t->npts == t->cap) {
     size_t cap = t->cap ? 2 * t->cap : 256;
@@ -49,8 +46,13 @@ int run_trace_add(run_trace *t, const double *x, double q, int type, int br) {
     t->type = nt;
     t->cap = cap;
   }
-  memcpy(t->x + t->npts * t->n, x, t->n * sizeof *x);
-  t->q[t->npts] = q;
+  double *dst = t->x + t->npts * t->n;
+  if (t->convert) {
+    if (t->convert(x, p, dst, t->convert_ctx)) return -1;
+  } else {
+    memcpy(dst, x, t->n * sizeof *x);
+  }
+  t->q[t->npts] = p[icp];
   t->type[t->npts++] = type;
   return 0;
 }
@@ -64,38 +66,16 @@ void run_trace_free(run_trace *t) {
 
 /* ---- the search ------------------------------------------------------------- */
 
-enum { FROM_START, FROM_SCALED, FROM_SETTLED, FROM_RANDOM, FROM_FOLD, NFROM };
-static const char *const from_name[NFROM] = {
-    "the model's start", "a scaled known solution", "a settled time integration",
-    "a random start", "a fold locus through the second parameter"};
-
-typedef struct disc {
-  run_ctx *R;
-  const branch_spec *b0;
-  size_t n, nb, L;       /* model dimension, unknowns, block per component */
-  double *lo, *hi;       /* the box, per model component */
-  double *w;             /* weights of the unknowns */
-  whirl_deflate *d;
-  run_trace *traces;     /* traces[0] is the start branch (borrowed) */
-  int *curve;            /* the curve (branch found) each trace belongs to */
-  size_t ntraces, cap, ncurves, nclosed;
-  uint64_t rng;
-  double *p, *x, *xs, *c;
-  size_t starts, found[NFROM];
-  double t_trace, t_loci;  /* seconds spent tracing new branches, on loci */
-} disc;
-
-/* splitmix64 (Steele, Lea & Flood 2014): a uniform number in [0, 1). */
-static double urand(disc *D) {
-  uint64_t z = (D->rng += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return (double)(z >> 11) * 0x1.0p-53;
+/* Collocation: a point of the branch (its current mesh) onto the search
+ * mesh, and back. */
+static int to_search(const double *x, const double *p, double *out, void *ctx) {
+  disc *D = ctx;
+  whirl_periodic src = whirl_periodic_of_colloc(D->b0->colloc);
+  return whirl_periodic_convert(&src, x, p, &D->po, 0, out) ? -1 : 0;
 }
-
-static size_t comp_of(const disc *D, size_t j) {
-  return D->L > 1 ? (j / D->L < D->n ? j / D->L : D->n - 1) : j;
+static int to_branch(disc *D, const double *x, double *out) {
+  whirl_periodic dst = whirl_periodic_of_colloc(D->b0->colloc);
+  return whirl_periodic_convert(&D->po, x, D->p, &dst, 0, out) ? -1 : 0;
 }
 
 /* The box of random starts: DISCOVER_BOX, else ±1.5 × the largest value
@@ -105,8 +85,7 @@ static int set_box(disc *D, const run_trace *t0) {
   for (size_t i = 0; i < D->n; i++) D->hi[i] = 0.0;
   for (size_t k = 0; k < t0->npts; k++)
     for (size_t j = 0; j < D->nb; j++) {
-      const size_t i = comp_of(D, j);
-      if (D->L > 1 && j >= D->n * D->L) continue; /* the frequency */
+      const size_t i = disc_component(D, j);
       D->hi[i] = fmax(D->hi[i], fabs(t0->x[k * t0->n + j]));
     }
   for (size_t i = 0; i < D->n; i++) {
@@ -128,34 +107,97 @@ static int set_box(disc *D, const run_trace *t0) {
   return 0;
 }
 
-static int disc_init(disc *D, run_ctx *R, const branch_spec *b0, run_trace *t0) {
+/* The search system: the branch's own, or for collocation a fixed
+ * uniform mesh of the same size. */
+static int search_system(disc *D) {
+  run_ctx *R = D->R;
+  const branch_spec *b0 = D->b0;
+  D->periodic = b0->kind != WHIRL_SOL_EQ;
+  if (b0->kind == WHIRL_SOL_HBM) {
+    D->S = b0->sys;
+    D->po = whirl_periodic_of_hbm(b0->hbm);
+    D->m = 8 * (2 * (size_t)R->s->nhb + 1);
+  } else if (b0->kind == WHIRL_SOL_COLLOC) {
+    whirl_colloc_options co;
+    whirl_colloc_options_default(&co);
+    co.ntst = (size_t)R->s->ntst;
+    co.ncol = (size_t)R->s->ncol;
+    co.forcing_param = R->model->forcing_param;
+    char err[512];
+    D->sc = whirl_colloc_alloc(&R->prob, &co, err, sizeof err);
+    if (!D->sc) {
+      run_say(R, "discovery: collocation: %s", err);
+      return -1;
+    }
+    D->S = whirl_colloc_system(D->sc);
+    D->po = whirl_periodic_of_colloc(D->sc);
+    D->m = 4 * (co.ntst * co.ncol + 1);
+  } else {
+    D->S = b0->sys;
+    D->m = 1;
+  }
+  D->nb = D->S->n;
+  return 0;
+}
+
+static int disc_init(disc *D, run_ctx *R, const branch_spec *b0) {
   memset(D, 0, sizeof *D);
   D->R = R;
   D->b0 = b0;
   D->n = R->n;
-  D->nb = b0->nb;
-  D->L = b0->kind == WHIRL_SOL_HBM ? 2 * (size_t)R->s->nhb + 1 : 1;
-  const size_t m = 8 * (2 * (size_t)R->s->nhb + 1);
+  if (search_system(D)) return -1; /* (autonomous orbits: refused by run.c) */
   D->lo = malloc(D->n * sizeof *D->lo);
   D->hi = malloc(D->n * sizeof *D->hi);
   D->w = malloc(D->nb * sizeof *D->w);
   D->p = malloc(R->npar * sizeof *D->p);
   D->x = malloc((D->nb + 1) * sizeof *D->x);
-  D->xs = malloc(m * D->n * sizeof *D->xs);
+  D->cv = malloc((b0->nb + 1) * sizeof *D->cv);
+  D->cv2 = malloc((b0->nb + 1) * sizeof *D->cv2);
+  D->xs = malloc((D->m * D->n > D->nb ? D->m * D->n : D->nb) * sizeof *D->xs);
   D->c = calloc(3 * D->n, sizeof *D->c);
   D->cap = 16;
   D->traces = calloc(D->cap, sizeof *D->traces);
   D->curve = calloc(D->cap, sizeof *D->curve);
-  if (!D->lo || !D->hi || !D->w || !D->p || !D->x || !D->xs || !D->c ||
-      !D->traces || !D->curve)
+  if (!D->lo || !D->hi || !D->w || !D->p || !D->x || !D->xs || !D->c || !D->cv ||
+      !D->cv2 || !D->traces || !D->curve)
     return -1;
-  D->traces[0] = *t0; /* borrowed: not freed here */
-  D->ntraces = 1;
-  int rc = set_box(D, t0);
+  return 0;
+}
+
+/* A new trace, in the search's unknowns. */
+static run_trace *new_trace(disc *D) {
+  if (D->ntraces == D->cap) {
+    const size_t cap = 2 * D->cap;
+    run_trace *nt = realloc(D->traces, cap * sizeof *nt);
+    if (!nt) return NULL;
+    D->traces = nt;
+    int *nc = realloc(D->curve, cap * sizeof *nc);
+    if (!nc) return NULL;
+    D->curve = nc;
+    D->cap = cap;
+  }
+  run_trace *t = &D->traces[D->ntraces];
+  memset(t, 0, sizeof *t);
+  t->n = D->nb;
+  if (D->sc) {
+    t->convert = to_search;
+    t->convert_ctx = D;
+  }
+  D->curve[D->ntraces++] = (int)D->ncurves + 1;
+  return t;
+}
+
+/* After the start branch: the box, the weights and the deflation. */
+static int setup_search(disc *D) {
+  run_ctx *R = D->R;
+  int rc = set_box(D, &D->traces[0]);
   if (rc) return rc;
+  /* collocation: node values, so an orbit's norm grows like the root of
+   * the number of nodes; scaled back to one node's */
+  const double per = D->sc ? 1.0 / sqrt((double)(R->s->ntst * R->s->ncol + 1)) : 1.0;
   for (size_t j = 0; j < D->nb; j++) {
-    const size_t i = comp_of(D, j);
-    D->w[j] = 2.0 / (D->hi[i] - D->lo[i]);
+    const size_t i = disc_component(D, j);
+    D->w[j] = per * 2.0 / (D->hi[i] - D->lo[i]);
   }
   whirl_deflate_options o;
   whirl_deflate_options_default(&o);
@@ -165,7 +207,7 @@ static int disc_init(disc *D, run_ctx *R, const branch_spec *b0, run_trace *t0) 
   o.max_distance = 20.0;
   o.min_distance = 1e-6;
   char err[512];
-  D->d = whirl_deflate_alloc(b0->sys, &o, err, sizeof err);
+  D->d = whirl_deflate_alloc(D->S, &o, err, sizeof err);
   if (!D->d) {
     run_say(R, "discovery: %s", err);
     return -1;
@@ -174,10 +216,11 @@ static int disc_init(disc *D, run_ctx *R, const branch_spec *b0, run_trace *t0) 
 }
 
 static void disc_free(disc *D) {
-  for (size_t t = 1; t < D->ntraces; t++) run_trace_free(&D->traces[t]);
+  for (size_t t = 0; t < D->ntraces; t++) run_trace_free(&D->traces[t]);
   free(D->traces);
   free(D->curve);
   whirl_deflate_free(D->d);
+  whirl_colloc_free(D->sc);
   free(D->lo);
   free(D->hi);
   free(D->w);
@@ -185,6 +228,8 @@ static void disc_free(disc *D) {
   free(D->x);
   free(D->xs);
   free(D->c);
+  free(D->cv);
+  free(D->cv2);
 }
 
 static void params_at(disc *D, double s) {
@@ -215,156 +260,25 @@ static int known_at(disc *D, double s) {
   return 0;
 }
 
-/* Time integration from x0 (model state): the end state after `settle`
- * (forcing periods, or time units), or for a periodic problem its next
- * period as the discretised orbit.  0, 1 (the integration failed). */
-static int settled(disc *D, const double *x0, double *out) {
-  run_ctx *R = D->R;
-  const int forced = R->model->forcing_param >= 0;
-  const double T = forced ? 2.0 * WHIRL_PI / D->p[R->model->forcing_param] : 1.0;
-  const double t1 = R->s->discover_settle * T;
-  whirl_ode *ode = whirl_ode_alloc(&R->prob, D->p);
-  if (!ode) return 1;
-  int rc = whirl_ode_set_tolerances(ode, 1e-8, 1e-10);
-  if (!rc) rc = whirl_ode_set_max_steps(ode, 2000000);
-  if (!rc) rc = whirl_ode_reset(ode, 0.0, x0);
-  if (!rc) rc = whirl_ode_evolve(ode, t1);
-  if (!rc && D->b0->kind == WHIRL_SOL_EQ) {
-    memcpy(out, whirl_ode_x(ode), D->n * sizeof *out);
-  } else if (!rc) {
-    const size_t m = 8 * (2 * (size_t)R->s->nhb + 1);
-    for (size_t k = 0; !rc && k < m; k++) {
-      rc = whirl_ode_evolve(ode, t1 + T * (double)k / (double)m);
-      if (!rc) memcpy(D->xs + k * D->n, whirl_ode_x(ode), D->n * sizeof *D->xs);
-    }
-    whirl_periodic po = whirl_periodic_of_hbm(D->b0->hbm);
-    if (!rc) rc = whirl_periodic_from_samples(&po, D->xs, m, T, out);
-  }
-  whirl_ode_free(ode);
-  return rc ? 1 : 0;
-}
-
-/* A scale of the box for one random start, log-uniform in [1/4, 4]
- * (DISCOVER_BOX given: 1): an isolated branch may lie far from the size of
- * the start branch, which sets the default box. */
-static double box_zoom(disc *D) {
-  return D->R->s->nbox ? 1.0 : exp(log(4.0) * (2.0 * urand(D) - 1.0));
-}
-
-/* A random orbit (or state) in the box: a uniform mean and, for periodic
- * problems, a first harmonic of uniform amplitude up to half the box. */
-static int random_start(disc *D, double *out) {
-  const size_t n = D->n;
-  const double zoom = box_zoom(D);
-  for (size_t i = 0; i < n; i++) {
-    const double mid = 0.5 * (D->lo[i] + D->hi[i]), half = 0.5 * zoom * (D->hi[i] - D->lo[i]);
-    const double lo = mid - half, hi = mid + half;
-    D->c[i] = lo + (hi - lo) * urand(D);
-    D->c[n + i] = 0.5 * (hi - lo) * (urand(D) - 0.5);
-    D->c[2 * n + i] = 0.5 * (hi - lo) * (urand(D) - 0.5);
-  }
-  if (D->b0->kind == WHIRL_SOL_EQ) {
-    memcpy(out, D->c, n * sizeof *out);
-    return 0;
-  }
-  const int fp = D->R->model->forcing_param;
-  whirl_periodic po = whirl_periodic_of_hbm(D->b0->hbm);
-  return whirl_periodic_from_harmonics(&po, D->c, 1, 2.0 * WHIRL_PI / D->p[fp], out) ? 1 : 0;
-}
-
-/* A known orbit at a random phase and a random amplitude (log-uniform in
- * [1/4, 4]): a start whose components are consistent with each other (a
- * velocity the derivative of its displacement), unlike a random orbit. */
-static int shifted_start(disc *D, size_t nknown, double *x) {
-  size_t pick = (size_t)(urand(D) * (double)nknown);
-  if (pick >= nknown) pick = nknown - 1;
-  const double *r = whirl_deflate_root(D->d, pick);
-  const double a = exp(log(4.0) * (2.0 * urand(D) - 1.0)), phi = 2.0 * WHIRL_PI * urand(D);
-  const size_t N = (D->L - 1) / 2;
-  memcpy(x, r, D->nb * sizeof *x);
-  for (size_t i = 0; i < D->n; i++) {
-    double *blk = x + i * D->L;
-    blk[0] *= a;
-    for (size_t k = 1; k <= N; k++) {
-      const double c = cos((double)k * phi), sn = sin((double)k * phi);
-      const double ak = blk[2 * k - 1], bk = blk[2 * k];
-      blk[2 * k - 1] = a * (ak * c + bk * sn);
-      blk[2 * k] = a * (bk * c - ak * sn);
-    }
-  }
-  return 0;
-}
-
-/* The k-th start at the current sample: the model's start (or the zero
- * orbit: Newton's first step from it is the linear response), three scaled
- * copies of each known solution, settled integrations (a quarter of the
- * budget when DISCOVER_SETTLE > 0), then random states — for orbits four in
- * five of them a known orbit at a random phase and amplitude (on the
- * Jeffcott rotor's isola 30 of 30 seeds find it with 40 starts, against 25
- * of 30 with half of them; doc/discovery.md).  0 with the start in
- * x and its kind, 1 when this start is not usable (skipped). */
-static int start_k(disc *D, size_t k, size_t nknown, double *x, int *from) {
-  static const double scale[3] = {0.5, 1.5, -1.0};
-  const int budget = D->R->s->discover_starts;
-  const size_t nsettle = D->R->s->discover_settle > 0 ? (size_t)(budget + 3) / 4 : 0;
-  if (k == 0) {
-    *from = FROM_START;
-    if (D->b0->kind == WHIRL_SOL_EQ)
-      memcpy(x, D->R->u, D->n * sizeof *x);
-    else
-      memset(x, 0, D->nb * sizeof *x);
-    return 0;
-  }
-  k--;
-  if (k < 3 * nknown) {
-    *from = FROM_SCALED;
-    const double *r = whirl_deflate_root(D->d, k / 3);
-    for (size_t j = 0; j < D->nb; j++) x[j] = scale[k % 3] * r[j];
-    if (D->nb > D->n * D->L) x[D->nb - 1] = r[D->nb - 1]; /* a frequency */
-    return 0;
-  }
-  k -= 3 * nknown;
-  if (k < nsettle) {
-    *from = FROM_SETTLED;
-    double *x0 = D->c; /* a random initial state in the box */
-    const double zoom = box_zoom(D);
-    for (size_t i = 0; i < D->n; i++)
-      x0[i] = 0.5 * (D->lo[i] + D->hi[i]) + zoom * (D->hi[i] - D->lo[i]) * (urand(D) - 0.5);
-    double *st = malloc(D->n * sizeof *st);
-    if (!st) return 1;
-    memcpy(st, x0, D->n * sizeof *st);
-    int rc = settled(D, st, x);
-    free(st);
-    return rc;
-  }
-  *from = FROM_RANDOM;
-  if (D->L > 1 && nknown && urand(D) < 0.8) return shifted_start(D, nknown, x);
-  return random_start(D, x);
-}
-
-/* Room for two more traces. */
-static int grow(disc *D) {
-  if (D->ntraces + 2 <= D->cap) return 0;
-  const size_t cap = 2 * D->cap;
-  run_trace *nt = realloc(D->traces, cap * sizeof *nt);
-  if (!nt) return -1;
-  D->traces = nt;
-  int *nc = realloc(D->curve, cap * sizeof *nc);
-  if (!nc) return -1;
-  D->curve = nc;
-  D->cap = cap;
-  return 0;
-}
-
 /* A new branch from the solution seed at D->p: both directions (one when
  * it closes), from Newton at seed, or along ±dir[nb + 1] from it exactly
  * (a fold).  0, or the failure of run_branch. */
 static int trace_curve(disc *D, const double *seed, const double *dir, int from) {
   run_ctx *R = D->R;
   branch_spec b = *D->b0;
+  const size_t nb = b.nb;
   double *neg = NULL;
-  if (dir && !(neg = malloc((D->nb + 1) * sizeof *neg))) return -1;
-  for (size_t j = 0; dir && j <= D->nb; j++) neg[j] = -dir[j];
+  if (D->sc) { /* onto the branch's mesh: the seed, and a direction (linear) */
+    if (to_branch(D, seed, D->cv)) return -1;
+    seed = D->cv;
+    if (dir) {
+      if (to_branch(D, dir, D->cv2)) return -1;
+      D->cv2[nb] = dir[D->nb];
+      dir = D->cv2;
+    }
+  }
+  if (dir && !(neg = malloc((nb + 1) * sizeof *neg))) return -1;
+  for (size_t j = 0; dir && j <= nb; j++) neg[j] = -dir[j];
   b.x0 = seed;
   b.p0 = D->p;
   b.bp = NULL;
@@ -374,19 +288,16 @@ static int trace_curve(disc *D, const double *seed, const double *dir, int from)
   fprintf(R->log, "discovery: a new solution at %s = %.10g from %s\n",
           R->pnames[b.icp], D->p[b.icp], from_name[from]);
   for (int sign = 1; sign >= -1 && !closed && !rc; sign -= 2) {
-    if (grow(D)) {
+    run_trace *t = new_trace(D);
+    if (!t) {
       rc = -1;
       break;
     }
-    run_trace *t = &D->traces[D->ntraces];
-    memset(t, 0, sizeof *t);
-    t->n = D->nb;
-    D->curve[D->ntraces++] = (int)D->ncurves + 1;
     b.trace = t;
     b.dir_sign = sign;
     b.dir = dir ? (sign > 0 ? dir : neg) : NULL;
     rc = run_branch(R, &b);
-    closed = t->closed;
+    closed = D->traces[D->ntraces - 1].closed;
   }
   free(neg);
   D->t_trace += run_now() - t0;
@@ -417,7 +328,7 @@ static int search_sample(disc *D, size_t si, double *x) {
   for (size_t k = 0; k < budget; k++) {
     int from = FROM_RANDOM;
     if (R->io.progress) R->io.progress(si * budget + k, R->s->ndiscover * budget, R->io.ctx);
-    if (start_k(D, k, nknown, x, &from)) {
+    if (disc_start(D, k, nknown, x, &from)) {
       failed[0]++;
       continue;
     }
@@ -515,10 +426,15 @@ static int fold_pass(disc *D, whirl_fold *f, const double *Z0, const double *p0,
 static int fold_route(disc *D) {
   run_ctx *R = D->R;
   if (R->nicp < 2 || R->icp[1] < 0 || R->icp[1] == D->b0->icp) return 0;
+  if (D->sc) { /* the fold system of collocation is dense: far too slow */
+    fprintf(R->log, "discovery: fold loci of collocation orbits are not followed "
+            "(METHOD = hbm follows them)\n");
+    return 0;
+  }
   whirl_fold_options fo;
   whirl_fold_options_default(&fo, (size_t)D->b0->icp);
   char err[512];
-  whirl_fold *f = whirl_fold_alloc(D->b0->sys, &fo, err, sizeof err);
+  whirl_fold *f = whirl_fold_alloc(D->S, &fo, err, sizeof err);
   const size_t nz = D->nb + 1;
   double *Z = malloc((nz + 1) * sizeof *Z), *pz = malloc(R->npar * sizeof *pz);
   double *v = malloc(D->nb * sizeof *v), *dir = malloc(nz * sizeof *dir);
@@ -549,10 +465,14 @@ static int fold_route(disc *D) {
   return rc;
 }
 
-int run_discover(run_ctx *R, const branch_spec *b0, run_trace *t0) {
+int run_discover(run_ctx *R, const branch_spec *b0) {
   disc D;
+  int rc = disc_init(&D, R, b0);
+  branch_spec b = *b0;
+  if (!rc && !(b.trace = new_trace(&D))) rc = -1;
+  if (!rc) rc = run_branch(R, &b); /* the start branch */
   const double t_start = run_now();
-  int rc = disc_init(&D, R, b0, t0);
+  if (!rc) rc = setup_search(&D);
   double *x = rc ? NULL : malloc((D.nb + 1) * sizeof *x);
   if (!rc && !x) rc = -1;
   for (size_t si = 0; !rc && si < R->s->ndiscover; si++) rc = search_sample(&D, si, x);

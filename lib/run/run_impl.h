@@ -117,8 +117,13 @@ typedef struct run_trace {
   int *type;            /* npts: whirl_point_type */
   int br;               /* the BR of its first point */
   int closed;           /* the branch closed on itself */
+  /* optional: store the point x at parameters p as out[n] (another
+   * discretisation), 0 or -1 */
+  int (*convert)(const double *x, const double *p, double *out, void *ctx);
+  void *convert_ctx;
 } run_trace;
-int run_trace_add(run_trace *t, const double *x, double q, int type, int br);
+/* Keep the point (x, p): p[icp] is the continuation parameter. */
+int run_trace_add(run_trace *t, const double *x, const double *p, int icp, int type, int br);
 void run_trace_free(run_trace *t);
 
 typedef struct branch_spec {
@@ -144,9 +149,9 @@ typedef struct branch_spec {
 /* Continue branch b: its rows, labels, log and summary.  0, -1, -2. */
 int run_branch(run_ctx *R, branch_spec *b);
 
-/* run_discover.c: branches not connected to the start branch t0 of b0
- * (DISCOVER, doc/discovery.md).  0, -1 (failed, said), -2 (bad input). */
-int run_discover(run_ctx *R, const branch_spec *b0, run_trace *t0);
+/* run_discover.c: the start branch b0, then the branches not connected to
+ * it (DISCOVER, doc/discovery.md).  0, -1 (failed, said), -2 (bad input). */
+int run_discover(run_ctx *R, const branch_spec *b0);
 
 /* run_basins.c */
 int run_basins(run_ctx *R);

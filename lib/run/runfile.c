@@ -1241,10 +1241,6 @@ int whirl_runfile_check(whirl_runfile *rf) {
       return fail(rf, where_of(rf, k, w, sizeof w), "DISCOVER searches for "
                   "branches of equilibria (IPS = 1) or periodic orbits (IPS = 2) "
                   "with ISW = 1");
-    if (s->ips == WHIRL_IPS_PERIODIC && s->method == WHIRL_METHOD_COLLOC)
-      return fail(rf, where_of(rf, k, w, sizeof w), "DISCOVER of periodic orbits "
-                  "needs METHOD = hbm (collocation is not supported by the "
-                  "discovery yet)");
     for (size_t i = 0; i < s->ndiscover; i++)
       if (!(s->discover[i] >= s->rl0 && s->discover[i] <= s->rl1))
         return fail(rf, where_of(rf, WHIRL_RK_DISCOVER, w, sizeof w),

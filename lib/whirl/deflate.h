@@ -15,7 +15,8 @@
  *     τ = 1 / (1 − ∇(log M) · δ),
  *
  * so one factorisation of F_x per iteration suffices, dense (LAPACK) or
- * sparse (UMFPACK, when the system has a pattern and n > 400).  The norm is
+ * sparse (UMFPACK, when the system has a pattern and n > 400, or n > 64
+ * with under a quarter of the entries nonzero).  The norm is
  * weighted, ‖v‖_W² = Σ (w_i v_i)², so that unknowns of different scales
  * (a displacement and a velocity, harmonic coefficients) count alike.
  *

@@ -12,7 +12,7 @@
 #  - without DISCOVER the same run finds one branch (the test can fail);
 #  - the same seed gives the same files, another seed the same branches;
 #  - bad input: an empty or inverted box, a budget of 0, a sample value
-#    outside [RL0, RL1], collocation, no sample values: one message with the
+#    outside [RL0, RL1], orbits of an autonomous model, no sample values: one message with the
 #    file and line, exit 2, no output directory.
 # SPDX-License-Identifier: BSD-3-Clause
 name=discsfd
@@ -97,7 +97,7 @@ bad nan 'DISCOVER = [nan]' "not a finite number"
 sed -e 's/^IPS .*/IPS = 2/' -e '/^DISCOVER/d' sfd-rotating.whirl > colloc.whirl
 echo 'DISCOVER = [5]' >> colloc.whirl
 "$WHIRL" run colloc.whirl --quiet > colloc.txt 2> colloc.err
-ok $(( $? != 2 )) "collocation refused, exit 2: $(cat colloc.err)"
-grep -q "METHOD = hbm" colloc.err
-ok $? "collocation: the message names the way out"
+ok $(( $? != 2 )) "periodic orbits of an autonomous model refused, exit 2: $(cat colloc.err)"
+grep -q "forced models" colloc.err
+ok $? "an autonomous model's orbits: the message says why"
 tap_end

@@ -20,7 +20,9 @@
 #       perturbed start returns; at F = 0.045, below the closed form's onset,
 #       the HBM isola is still there and the integration confirms it.
 # And main.whirl, the branch traced from low frequency, has no fold and
-# stays below the isola: the isola is not reached from the start branch.
+# stays below the isola: the isola is not reached from the start branch;
+# discover.whirl finds it without a start (harmonic balance and
+# collocation), with the folds of the hand-started isola.
 # SPDX-License-Identifier: BSD-3-Clause
 # shellcheck disable=SC2046,SC2086 # set -- $(...): numbers split into words on purpose
 # shellcheck disable=SC2034 # name is read by tap.sh
@@ -240,4 +242,14 @@ awk -F'\t' '$3 == "LP" { print $5 }' irc.out/branches.tsv | sort -g > hand.lp
 [ "$(wc -l < disc.lp)" -eq 2 ] && [ "$(wc -l < hand.lp)" -eq 2 ] &&
   paste disc.lp hand.lp | awk '{ d = $1 - $2; if (d < -1e-8 || d > 1e-8) bad = 1 } END { exit bad }'
 ok $? "the discovered isola's folds $(tr '\n' ' ' < disc.lp)= those from the hand-made start $(tr '\n' ' ' < hand.lp)"
+# the same discovery by collocation (its own search mesh, deflation against
+# orbits mapped onto it): the isola again, its folds those of harmonic
+# balance to 1e-7 (two discretisations of the same orbits)
+"$WHIRL" run discover.whirl --METHOD=colloc --NTST=40 --OUT=dc.out > dc.txt 2> run.err || diag run.err
+grep -q "^discovery: 2 branches, 1 of them isolated (closed or not connected to the start), 1 closed" dc.txt
+ok $? "discovery by collocation: the main branch and one closed isola"
+awk -F'\t' '$1 == 2 && $3 == "LP" { print $5 }' dc.out/branches.tsv | sort -g > dc.lp
+[ "$(wc -l < dc.lp)" -eq 2 ] &&
+  paste dc.lp disc.lp | awk '{ d = $1 - $2; if (d < -1e-7 || d > 1e-7) bad = 1 } END { exit bad }'
+ok $? "its folds $(tr '\n' ' ' < dc.lp)= harmonic balance's to 1e-7"
 tap_end
