@@ -11,7 +11,6 @@
  * SPDX-License-Identifier: BSD-3-Clause */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -52,13 +51,7 @@ static double now(void) {
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* splitmix64 (Steele, Lea & Flood 2014): uniform in [0, 1). */
-static double urand(fe_disc *D) {
-  uint64_t z = (D->rng += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-}
+static double urand(fe_disc *D) { return whirl_random_uniform(&D->rng); }
 
 /* Every point reported: kept in the current trace, then passed on. */
 static int keep(const whirl_fe_hbm_response_point *pt, void *ctx) {
@@ -94,23 +87,12 @@ static int new_trace(fe_disc *D) {
   return WHIRL_OK;
 }
 
-/* The solutions known at speed s: the crossings of s by every trace,
- * interpolated and polished (kept as interpolated when Newton fails). */
-static int known_at(fe_disc *D, double s, double *x, double *xi) {
+/* The solutions known at speed s: the crossings of s by every trace. */
+static int known_at(fe_disc *D, double s) {
   whirl_deflate_clear(D->d);
   for (size_t t = 0; t < D->ntr; t++) {
-    const fe_trace *T = &D->tr[t];
-    for (size_t k = 0; k + 1 < T->npts; k++) {
-      const double a = T->om[k], b = T->om[k + 1];
-      if (!((a - s) * (b - s) <= 0.0) || a == b) continue;
-      const double th = (s - a) / (b - a);
-      for (size_t j = 0; j < D->n; j++)
-        xi[j] = x[j] = (1 - th) * T->x[k * D->n + j] + th * T->x[(k + 1) * D->n + j];
-      if (whirl_deflate_polish(D->d, x, D->p, NULL) != WHIRL_OK) memcpy(x, xi, D->n * sizeof *x);
-      if (whirl_deflate_nearest(D->d, x, NULL) < 1e-6) continue;
-      int rc = whirl_deflate_add(D->d, x);
-      if (rc) return rc;
-    }
+    int rc = whirl_deflate_add_crossings(D->d, D->tr[t].om, D->tr[t].x, D->tr[t].npts, s, D->p);
+    if (rc) return rc;
   }
   return WHIRL_OK;
 }
@@ -178,14 +160,14 @@ static int trace_from(fe_disc *D, const whirl_fe_hbm_response_options *o, double
  * branch traced at once (and deflated from then on). */
 static int search_speed(fe_disc *D, const whirl_fe_hbm_response_options *o,
                         const whirl_fe_discover_options *d, size_t si, double *x,
-                        double *w, whirl_fe_discover_report *rep, char *err, size_t len) {
+                        whirl_fe_discover_report *rep, char *err, size_t len) {
   const double s = d->speeds[si];
   whirl_fe_hbm_params(s, D->p);
   D->p[WHIRL_FE_P_UNBALANCE] = o->unbalance;
   D->p[WHIRL_FE_P_CLEARANCE] = o->clearance;
   D->p[WHIRL_FE_P_VISCOSITY] = o->viscosity;
   D->rng = (uint64_t)d->seed * 0x9E3779B97F4A7C15ull + si + 1;
-  int rc = known_at(D, s, x, w);
+  int rc = known_at(D, s);
   const size_t nknown = whirl_deflate_count(D->d);
   for (size_t k = 0; !rc && k < d->starts; k++) {
     if (start_k(D, k, nknown, x)) continue;
@@ -198,7 +180,7 @@ static int search_speed(fe_disc *D, const whirl_fe_hbm_response_options *o,
       return WHIRL_ERRMSG(err, len, r, "discovery at Omega = %g rad/s: %s", s,
                           whirl_deflate_errmsg(D->d));
     rc = trace_from(D, o, s, x, err, len);
-    if (!rc) rc = known_at(D, s, x, w);
+    if (!rc) rc = known_at(D, s);
   }
   return rc;
 }
@@ -243,11 +225,11 @@ int whirl_fe_hbm_discover(const whirl_fe_rotor *r, const whirl_fe_hbm_response_o
   dop.max_step = 1.0; /* a clearance per step */
   dop.max_distance = 20.0;
   D.d = whirl_deflate_alloc(D.S, &dop, err, len);
-  double *x = malloc(D.n * sizeof *x), *w = malloc(D.n * sizeof *w);
-  rc = D.d && x && w ? new_trace(&D) : WHIRL_ENOMEM;
+  double *x = malloc(D.n * sizeof *x);
+  rc = D.d && x ? new_trace(&D) : WHIRL_ENOMEM;
   if (!rc) rc = whirl_fe_hbm_response(r, o, keep, &D, err, len);
   for (size_t si = 0; !rc && si < d->nspeeds; si++)
-    rc = search_speed(&D, o, d, si, x, w, &rep, err, len);
+    rc = search_speed(&D, o, d, si, x, &rep, err, len);
   rep.branches = (size_t)D.branch;
   rep.isolated = (size_t)D.branch - 1;
   rep.iterations = D.d ? whirl_deflate_get_stats(D.d)->iterations : 0;
@@ -258,7 +240,6 @@ int whirl_fe_hbm_discover(const whirl_fe_rotor *r, const whirl_fe_hbm_response_o
   }
   free(D.tr);
   free(x);
-  free(w);
   whirl_deflate_free(D.d);
   whirl_fe_hbm_free(D.h);
   return rc;

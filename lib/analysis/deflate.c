@@ -27,7 +27,7 @@ struct whirl_deflate {
   size_t nroots, cap;
   whirl_linsol *ls;
   int sparse;
-  double *J, *f, *d, *xt, *work, *x0;
+  double *J, *f, *d, *xt, *work, *x0, *xc, *xi;
   whirl_deflate_stats st;
   char err[512];
 };
@@ -85,8 +85,11 @@ whirl_deflate *whirl_deflate_alloc(const whirl_system *sys,
   d->d = malloc(n * sizeof *d->d);
   d->xt = malloc(n * sizeof *d->xt);
   d->x0 = malloc(n * sizeof *d->x0);
+  d->xc = malloc(n * sizeof *d->xc);
+  d->xi = malloc(n * sizeof *d->xi);
   d->work = malloc((2 * n + sys->nnz) * sizeof *d->work);
-  if (!d->ls || !d->J || !d->w || !d->f || !d->d || !d->xt || !d->x0 || !d->work)
+  if (!d->ls || !d->J || !d->w || !d->f || !d->d || !d->xt || !d->x0 || !d->xc || !d->xi ||
+      !d->work)
     goto nomem;
   for (size_t i = 0; i < n; i++) d->w[i] = o->weight ? o->weight[i] : 1.0;
   d->o.weight = d->w;
@@ -107,6 +110,8 @@ void whirl_deflate_free(whirl_deflate *d) {
   free(d->d);
   free(d->xt);
   free(d->x0);
+  free(d->xc);
+  free(d->xi);
   free(d->work);
   free(d);
 }
@@ -264,4 +269,29 @@ int whirl_deflate_solve(whirl_deflate *d, double *x, const double *p, int *its) 
 
 int whirl_deflate_polish(whirl_deflate *d, double *x, const double *p, int *its) {
   return iterate(d, x, p, its, 0);
+}
+
+int whirl_deflate_add_crossings(whirl_deflate *d, const double *q, const double *x,
+                                size_t npts, double s, const double *p) {
+  const size_t n = d->sys->n;
+  for (size_t k = 0; k + 1 < npts; k++) {
+    const double a = q[k], b = q[k + 1];
+    if (!((a - s) * (b - s) <= 0.0) || a == b) continue;
+    const double th = (s - a) / (b - a);
+    for (size_t j = 0; j < n; j++)
+      d->xi[j] = d->xc[j] = (1 - th) * x[k * n + j] + th * x[(k + 1) * n + j];
+    if (iterate(d, d->xc, p, NULL, 0) != WHIRL_OK) memcpy(d->xc, d->xi, n * sizeof *d->xc);
+    if (whirl_deflate_nearest(d, d->xc, NULL) < d->o.min_distance) continue;
+    int rc = whirl_deflate_add(d, d->xc);
+    if (rc) return rc;
+  }
+  return WHIRL_OK;
+}
+
+double whirl_random_uniform(uint64_t *s) {
+  uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return (double)(z >> 11) * 0x1.0p-53;
 }

@@ -237,25 +237,12 @@ static void params_at(disc *D, double s) {
   D->p[D->b0->icp] = s;
 }
 
-/* The known solutions at s: every crossing of s by a traced branch,
- * interpolated between its two points and polished by Newton. */
+/* The known solutions at s: every crossing of s by a traced branch. */
 static int known_at(disc *D, double s) {
   whirl_deflate_clear(D->d);
-  double *x = D->x;
   for (size_t t = 0; t < D->ntraces; t++) {
     const run_trace *T = &D->traces[t];
-    for (size_t k = 0; k + 1 < T->npts; k++) {
-      const double qa = T->q[k], qb = T->q[k + 1];
-      if (!((qa - s) * (qb - s) <= 0.0) || qa == qb) continue;
-      const double th = (s - qa) / (qb - qa);
-      for (size_t j = 0; j < D->nb; j++)
-        x[j] = (1 - th) * T->x[k * T->n + j] + th * T->x[(k + 1) * T->n + j];
-      double *xi = D->xs; /* the interpolant, kept if Newton fails (a fold) */
-      memcpy(xi, x, D->nb * sizeof *x);
-      if (whirl_deflate_polish(D->d, x, D->p, NULL) != WHIRL_OK) memcpy(x, xi, D->nb * sizeof *x);
-      if (whirl_deflate_nearest(D->d, x, NULL) < 1e-6) continue;
-      if (whirl_deflate_add(D->d, x)) return -1;
-    }
+    if (whirl_deflate_add_crossings(D->d, T->q, T->x, T->npts, s, D->p)) return -1;
   }
   return 0;
 }

@@ -13,14 +13,7 @@
 
 #include "run_discover_impl.h"
 
-/* splitmix64 (Steele, Lea & Flood 2014): a uniform number in [0, 1). */
-double disc_urand(disc *D) {
-  uint64_t z = (D->rng += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return (double)(z >> 11) * 0x1.0p-53;
-}
+double disc_urand(disc *D) { return whirl_random_uniform(&D->rng); }
 
 size_t disc_component(const disc *D, size_t j) {
   if (D->b0->kind == WHIRL_SOL_EQ) return j;

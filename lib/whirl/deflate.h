@@ -32,6 +32,7 @@
 #define WHIRL_DEFLATE_H
 
 #include <stddef.h>
+#include <stdint.h>
 #include <whirl/system.h>
 
 #ifdef __cplusplus
@@ -78,6 +79,17 @@ WHIRL_API const double *whirl_deflate_root(const whirl_deflate *d, size_t i);
 WHIRL_API double whirl_deflate_nearest(const whirl_deflate *d, const double *x,
                                        size_t *which);
 
+/* Add the solutions at the parameter value s through which a traced
+ * branch passes: for every pair of consecutive points (q[k], x[k]),
+ * (q[k+1], x[k+1]) of the branch (npts points, x[k * n + j] with n the
+ * system's size) that brackets s, their linear interpolant polished by
+ * Newton at p (p holding s), or kept as interpolated where Newton fails
+ * (next to a fold); one within min_distance of a known solution is not
+ * added again.  WHIRL_OK or WHIRL_ENOMEM. */
+WHIRL_API int whirl_deflate_add_crossings(whirl_deflate *d, const double *q,
+                                          const double *x, size_t npts,
+                                          double s, const double *p);
+
 /* Deflated Newton from x (in/out) at parameters p.  WHIRL_OK: x is a
  * solution at least min_distance from every known one (not added: the
  * caller decides); WHIRL_ENOCONV: no new solution from this start (no
@@ -100,6 +112,11 @@ typedef struct whirl_deflate_stats {
 WHIRL_API const whirl_deflate_stats *whirl_deflate_get_stats(const whirl_deflate *d);
 
 WHIRL_API const char *whirl_deflate_errmsg(const whirl_deflate *d);
+
+/* A uniform number in [0, 1) from the generator state *s (splitmix64,
+ * Steele, Lea & Flood 2014): the random starts of discovery, reproducible
+ * from a seed (*s = seed) on every platform. */
+WHIRL_API double whirl_random_uniform(uint64_t *s);
 
 #ifdef __cplusplus
 }

@@ -9,7 +9,11 @@
  *      x_i = c_i, both roots, equal to the dense solve;
  *  (e) without deflation the same start returns the same root (so (a)
  *      and (c) can fail), a domain error is reported as such, bad options
- *      are refused.
+ *      are refused;
+ *  (f) the crossings of a traced branch: the unit circle x² + p² = 1
+ *      sampled at 40 points is crossed twice at p = 0.5, at ±√0.75;
+ *  (g) the random generator is splitmix64: seed 0 gives 0xe220a8397b1dcdaf
+ *      first (the reference output of Vigna's splitmix64.c).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdlib.h>
@@ -220,7 +224,39 @@ static void test_bad(void) {
      "a negative weight refused: %s", err);
 }
 
+static int circ_F(const double *x, const double *p, double *f, void *data) {
+  (void)data;
+  f[0] = x[0] * x[0] + p[0] * p[0] - 1.0;
+  return 0;
+}
+
+static void test_crossings(void) {
+  whirl_system s = {.name = "unit circle", .n = 1, .npar = 1, .F = circ_F};
+  whirl_deflate *d = whirl_deflate_alloc(&s, NULL, NULL, 0);
+  double q[40], x[40];
+  for (int k = 0; k < 40; k++) { /* once round, from the top */
+    const double t = 2 * WHIRL_PI * k / 39.0;
+    q[k] = sin(t);
+    x[k] = cos(t);
+  }
+  const double p = 0.5;
+  ok(whirl_deflate_add_crossings(d, q, x, 40, 0.5, &p) == WHIRL_OK, "crossings added");
+  const double *r0 = whirl_deflate_root(d, 0), *r1 = whirl_deflate_root(d, 1);
+  ok(whirl_deflate_count(d) == 2 && r0 && r1 &&
+         fabs(fabs(r0[0]) - sqrt(0.75)) < 1e-14 && fabs(r0[0] + r1[0]) < 1e-14,
+     "the circle crosses p = 0.5 twice, at +-sqrt(0.75), polished (%zu)",
+     whirl_deflate_count(d));
+  whirl_deflate_add_crossings(d, q, x, 40, 0.5, &p);
+  ok(whirl_deflate_count(d) == 2, "added again: no duplicates");
+  whirl_deflate_free(d);
+  uint64_t st = 0;
+  const double u = whirl_random_uniform(&st);
+  ok(u == (double)(0xe220a8397b1dcdafull >> 11) * 0x1.0p-53,
+     "splitmix64's reference first output from seed 0");
+}
+
 int main(void) {
+  test_crossings();
   test_circle();
   test_step_formula();
   test_quartic();
