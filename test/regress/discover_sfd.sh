@@ -11,6 +11,12 @@
 #  - lambda = 0.25, delta = 0.2: one branch, no isola below Omega = 20;
 #  - without DISCOVER the same run finds one branch (the test can fail);
 #  - the same seed gives the same files, another seed the same branches;
+#  - the paper's own computation (fixed frame, harmonic balance, 8
+#    harmonics, 10x oversampling: sfd-fixed-hbm.whirl) finds the isola the
+#    paper could only reach from a hand-made start: its fold at eq. 15's
+#    7.0881196289 to 1e-8, its upper half stable and lower half unstable at
+#    Omega = 10 (paper Fig. 3b), and 300 periods of time integration (whirl
+#    sfd simulate, DOPRI5) from the orbit found end on it to 1e-8;
 #  - bad input: an empty or inverted box, a budget of 0, a sample value
 #    outside [RL0, RL1], orbits of an autonomous model, no sample values: one message with the
 #    file and line, exit 2, no output directory.
@@ -73,6 +79,30 @@ ok $? "lambda 0.25, delta 0.2: one branch, no isola below Omega = 20"
 "$WHIRL" sfd response --lambda 0.25 --delta 0.2 --out d2eq > d2eq.out 2>&1
 grep -q "^whirl sfd response: 1 branch" d2eq.out
 ok $? "eq. 15 agrees: one branch ($(head -n 1 d2eq.out | cut -c1-60))"
+
+cp "$ex/sfd-fixed-hbm.whirl" .
+"$WHIRL" run sfd-fixed-hbm.whirl > fx.txt 2> fx.err
+ok $? "fixed frame, harmonic balance: $(head -c 200 fx.err)"
+grep -q "^discovery: 2 branches, 1 of them isolated" fx.txt
+ok $? "fixed frame: the main branch and the isola: $(grep '^discovery' fx.txt)"
+lps sfd-fixed-hbm.out > fx.lp
+close fx.lp t1.want 1e-8
+ok $? "fixed frame: the three LPs at eq. 15's values to 1e-8: $(tr '\n' ' ' < fx.lp)"
+# at Omega = 10 on the isola (where it was found, and its UZ point): MAX y, STAB
+awk -F '\t' '$1 > 1 && ($2 == 0 || $3 == "UZ") { print $12, $16 }' sfd-fixed-hbm.out/branches.tsv | sort -gu > fx.ep
+awk 'NR == 1 { lo = $2 } NR == 2 { hi = $2 } END { exit !(NR == 2 && lo == 0 && hi == 1) }' fx.ep
+ok $? "fixed frame, Omega = 10: the isola's lower orbit unstable, its upper stable (paper Fig. 3b): $(tr '\n' ' ' < fx.ep)"
+# the stable orbit's state at t = 0 from its harmonics (4 components of 17)
+lab=$(awk -F '\t' '$1 > 1 && $2 == 0 && $16 == 1 { print $4; exit }' sfd-fixed-hbm.out/branches.tsv)
+st=$(awk -v lab="$lab" '$1 == "LAB" && $2 == lab { f = 1 } f && $1 == "X" {
+  for (i = 0; i < 4; i++) { s = $(2 + 17 * i); for (k = 1; k <= 8; k++) s += $(2 + 17 * i + 2 * k - 1); printf "%.15g ", s }
+  exit }' sfd-fixed-hbm.out/solutions)
+# shellcheck disable=SC2086
+set -- $st
+"$WHIRL" sfd simulate --omega 10 --y0 "${1:-0}" --z0 "${2:-0}" --vy0 "${3:-0}" --vz0 "${4:-0}" --periods 300 --out sim > sim.txt 2>&1
+tail -n 1 sim/poincare.tsv | awk -v a="${1:-0}" -v b="${2:-0}" -v c="${3:-0}" -v d="${4:-0}" '{
+  e = ($3 - a) ^ 2 + ($4 - b) ^ 2 + (($5 - c) / 10) ^ 2 + (($6 - d) / 10) ^ 2; exit !(sqrt(e) < 1e-8) }'
+ok $? "time integration (300 periods) from the isola's stable orbit stays on it to 1e-8: $(tail -n 1 sim/poincare.tsv | cut -f3-6)"
 
 bad() { # bad NAME 'LINE' PATTERN
   sed '/^DISCOVER/d' sfd-rotating.whirl > "$1.whirl"
