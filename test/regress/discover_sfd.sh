@@ -92,6 +92,18 @@ ok $? "fixed frame: the three LPs at eq. 15's values to 1e-8: $(tr '\n' ' ' < fx
 awk -F '\t' '$1 > 1 && ($2 == 0 || $3 == "UZ") { print $12, $16 }' sfd-fixed-hbm.out/branches.tsv | sort -gu > fx.ep
 awk 'NR == 1 { lo = $2 } NR == 2 { hi = $2 } END { exit !(NR == 2 && lo == 0 && hi == 1) }' fx.ep
 ok $? "fixed frame, Omega = 10: the isola's lower orbit unstable, its upper stable (paper Fig. 3b): $(tr '\n' ' ' < fx.ep)"
+# the paper's regions (§5.1, §5.3): at its basin speeds 1.715, 1.78 and
+# 1.838 (region B) three orbits, two stable; at 8.5327 (region D) three,
+# two stable (the main branch's and the isola's upper half); at 3 (region
+# C) one, stable.  Crossings of each speed by the traced branches.
+for w in 1.715:3:2 1.78:3:2 1.838:3:2 8.5327:3:2 3:1:1; do
+  IFS=: read -r om want wstab <<EOW
+$w
+EOW
+  got=$(awk -F '\t' -v w="$om" 'NR > 1 && $1 == b && ($5 - w) * (p - w) <= 0 && $5 != p { n++; if ($16 == 1) st++ }
+    NR > 1 { b = $1; p = $5 } END { printf "%d:%d", n, st }' sfd-fixed-hbm.out/branches.tsv)
+  ok $(( $(test "$got" = "$want:$wstab"; echo $?) )) "paper's region at Omega = $om: $want orbits, $wstab stable (got $got)"
+done
 # the stable orbit's state at t = 0 from its harmonics (4 components of 17)
 lab=$(awk -F '\t' '$1 > 1 && $2 == 0 && $16 == 1 { print $4; exit }' sfd-fixed-hbm.out/branches.tsv)
 st=$(awk -v lab="$lab" '$1 == "LAB" && $2 == lab { f = 1 } f && $1 == "X" {
