@@ -14,8 +14,14 @@
 
 #include <whirl/rotor.h>
 
+#include "config.h"
+#ifdef WHIRL_HAVE_MPI
+#include <mpi.h>
+#endif
+
 #include "cli.h"
 #include "run_cmd.h"
+#include "run_study.h"
 
 static void usage(FILE *f) {
   fprintf(f,
@@ -27,7 +33,13 @@ static void usage(FILE *f) {
           "attraction (IPS = basins).  Any key can be overridden on the\n"
           "command line, e.g. --DS=0.01 --ICP=[B] --out=dir.\n"
           "Output directory (default FILE's name with .out): branches.tsv,\n"
-          "solutions, run.log, diagram.png.  The format: doc/run-files.md.\n");
+          "solutions, run.log, diagram.png.  The format: doc/run-files.md.\n"
+          "\n"
+          "A parameter study (STUDY = {name: [values], ...}, doc/parameter-studies.md)\n"
+          "writes study.tsv, one row a point; it resumes from OUT.checkpoint when\n"
+          "started again, runs on MPI under mpirun (built --with-mpi), and in parts:\n"
+          "  --chunk=I/N        the I-th of N parts, into OUT.chunk-I-of-N/\n"
+          "  --merge-chunks=N   join the N parts into OUT/study.tsv\n");
 }
 
 /* "--NMX 5": an override written with a blank for '=' would take its value
@@ -69,11 +81,37 @@ static void io_progress(size_t done, size_t total, void *ctx) {
 
 /* The files and names of the command line: argv[i] "--KEY=value" are the
  * overrides, one other argument is the run file.  0, or the exit status. */
+/* --chunk=I/N, --merge-chunks=N: 1 if argv[i] is one (parsed into so, or
+ * a message and *bad = 2). */
+static int study_option(const char *a, study_opts *so, size_t *merge, int *bad) {
+  char tail;
+  if (!strncmp(a, "--chunk=", 8)) {
+    if (sscanf(a + 8, "%zu/%zu%c", &so->chunk, &so->chunks, &tail) != 2 || so->chunks == 0) {
+      fprintf(stderr, "whirl run: %s: write --chunk=I/N, the I-th of N parts (1 <= I <= N)\n", a);
+      *bad = 2;
+    }
+    return 1;
+  }
+  if (!strncmp(a, "--merge-chunks=", 15)) {
+    if (sscanf(a + 15, "%zu%c", merge, &tail) != 1 || *merge == 0) {
+      fprintf(stderr, "whirl run: %s: write --merge-chunks=N, N >= 1\n", a);
+      *bad = 2;
+    }
+    return 1;
+  }
+  return 0;
+}
+
 static int parse_args(int argc, char **argv, const char **file, int *quiet,
-                      const char **ov, size_t *nov) {
+                      const char **ov, size_t *nov, study_opts *so, size_t *merge) {
   *file = NULL;
   *nov = 0;
   for (int i = 1; i < argc; i++) {
+    int bad = 0;
+    if (study_option(argv[i], so, merge, &bad)) {
+      if (bad) return bad;
+      continue;
+    }
     if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
       usage(stdout);
       return -1;
@@ -119,17 +157,66 @@ static int finish_output(run_io_ctx *c, const whirl_run *r) {
   return pic_failed;
 }
 
+/* A study: its points through run_study.c; 0, 1 or 2. */
+static int run_study_of(whirl_run *r, study_opts *so, size_t merge, int rank, int nranks) {
+  if (merge && so->chunks) {
+    cli_error("run", "--chunk and --merge-chunks: one or the other");
+    return 2;
+  }
+  if (merge) {
+    so->chunks = merge;
+    return rank == 0 ? run_study_merge(r, so) : 0;
+  }
+  return run_study_command(r, so, rank, nranks);
+}
+
+/* The rank and the number of processes: MPI when built with it (and
+ * started by mpirun), else 0 of 1. */
+static void processes(int *argc, char ***argv, int *rank, int *nranks) {
+  *rank = 0;
+  *nranks = 1;
+#ifdef WHIRL_HAVE_MPI
+  int init = 0;
+  MPI_Initialized(&init);
+  if (!init) MPI_Init(argc, argv);
+  MPI_Comm_rank(MPI_COMM_WORLD, rank);
+  MPI_Comm_size(MPI_COMM_WORLD, nranks);
+#else
+  (void)argc;
+  (void)argv;
+#endif
+}
+
+static void processes_end(void) {
+#ifdef WHIRL_HAVE_MPI
+  MPI_Finalize();
+#endif
+}
+
+static int cmd_run_ranked(int argc, char **argv, int rank, int nranks);
+
 int cmd_run(int argc, char **argv) {
+  int rank, nranks;
+  processes(&argc, &argv, &rank, &nranks);
+  int status = cmd_run_ranked(argc, argv, rank, nranks);
+  processes_end();
+  return status;
+}
+
+static int cmd_run_ranked(int argc, char **argv, int rank, int nranks) {
   const char *file, **ov = calloc((size_t)argc + 1, sizeof *ov);
-  size_t nov;
+  size_t nov, merge = 0;
   run_io_ctx c;
+  study_opts so;
   memset(&c, 0, sizeof c);
+  memset(&so, 0, sizeof so);
   if (!ov) return 1;
-  int status = parse_args(argc, argv, &file, &c.quiet, ov, &nov);
+  int status = parse_args(argc, argv, &file, &c.quiet, ov, &nov, &so, &merge);
   if (status) {
     free(ov);
     return status < 0 ? 0 : status;
   }
+  if (rank != 0) c.quiet = 1;
   char msg[512];
   whirl_model_registry *models = whirl_model_registry_alloc();
   if (!models || whirl_rotor_register_models(models, msg, sizeof msg) != WHIRL_OK) {
@@ -143,6 +230,16 @@ int cmd_run(int argc, char **argv) {
   const whirl_run_io io = {io_message, io_summary, io_open, io_close, io_progress, &c};
   whirl_run *r = whirl_run_alloc(models, &io);
   status = r ? whirl_run_load(r, file, ov, nov) : 1;
+  so.file = file, so.ov = ov, so.nov = nov, so.quiet = c.quiet;
+  if (status == 0 && whirl_run_study_size(r) > 0) {
+    status = run_study_of(r, &so, merge, rank, nranks);
+    goto done;
+  }
+  if (status == 0 && (so.chunks || merge)) {
+    cli_error("run", "--chunk and --merge-chunks are for parameter studies (STUDY)");
+    status = 2;
+  }
+  if (status == 0 && rank != 0) goto done; /* one process runs anything else */
   const char *where = r ? whirl_run_output_where(r) : "";
   /* the output directory: checked now, staged before the run writes */
   if (status == 0) status = cli_outdir_check("run", where, whirl_run_output(r));
@@ -154,6 +251,7 @@ int cmd_run(int argc, char **argv) {
     else status = finish_output(&c, r);
     if (status == 0 && whirl_run_failed(r)) status = 1; /* kept, said */
   }
+done:
   whirl_run_free(r);
   whirl_model_registry_free(models);
   free(ov);

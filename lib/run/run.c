@@ -758,7 +758,10 @@ static int run_continuation(run_ctx *R, run_objects *O) {
   if (b.dir && s->ds < 0)
     for (size_t i = 0; i <= b.nb; i++) O->D[i] = -O->D[i];
   if (run_table_header(R, b.kind, b.icp, b.q)) return -1;
-  return s->ndiscover ? run_discover(R, &b) : run_branch(R, &b);
+  if (s->ndiscover) return run_discover(R, &b);
+  rc = run_branch(R, &b);
+  R->curves = (size_t)R->branch;
+  return rc;
 }
 
 /* ---- the run as a library object (whirl/run.h) --------------------------- */
@@ -829,7 +832,7 @@ int whirl_run_load(whirl_run *R, const char *file, const char *const *overrides,
   }
   R->s = whirl_runfile_settings(R->rf);
   set_paths(R, file);
-  return run_load_model(R) || run_resolve(R) ? 2 : 0;
+  return run_load_model(R) || run_resolve(R) || run_study_resolve(R) ? 2 : 0;
 }
 
 const char *whirl_run_output(const whirl_run *r) { return r->out; }
@@ -910,14 +913,15 @@ int whirl_run_execute(whirl_run *R) {
   if ((R->s->irs > 0 || R->s->irs_type[0]) && restart_solution(R, &O)) goto out;
   status = 1;
   const int basins = R->s->ips == WHIRL_IPS_BASINS;
+  const int study = whirl_run_study_size(R) > 0;
   R->plot.basins = basins;
   if (!(R->log = run_open(R, "run.log")) ||
-      (!basins && (!(R->table = run_open(R, "branches.tsv")) ||
-                   !(R->sols = run_open(R, "solutions")))))
+      (!basins && !study && (!(R->table = run_open(R, "branches.tsv")) ||
+                             !(R->sols = run_open(R, "solutions")))))
     goto out;
   write_log_head(R);
   const double t0 = run_now();
-  int rr = basins ? run_basins(R) : run_continuation(R, &O);
+  int rr = study ? run_study(R) : basins ? run_basins(R) : run_continuation(R, &O);
   if (rr) {
     status = rr == -2 ? 2 : 1;
     goto out;

@@ -467,6 +467,9 @@ int run_discover(run_ctx *R, const branch_spec *b0) {
   if (!rc) rc = fold_route(&D);
   D.t_loci = run_now() - t_loci - (D.t_trace - traced);
   if (!rc) {
+    R->curves = D.ncurves + 1;
+    R->isolated = D.ncurves;
+    R->closed = D.nclosed;
     const whirl_deflate_stats *st = whirl_deflate_get_stats(D.d);
     run_summary(R, "discovery: %zu branch%s, %zu of them isolated (closed or not "
                 "connected to the start), %zu closed", D.ncurves + 1,

@@ -62,6 +62,13 @@ struct whirl_run {
   size_t nspecial, capspecial;
   whirl_run_plot plot;
   char errmsg[4600];
+  /* branches found (discovery counts the curves, else the branches run) */
+  size_t curves, isolated, closed;
+  /* parameter study (run_study.c): the grid's axes */
+  int in_study;            /* a point of a study: STUDY is not run */
+  size_t study_naxes, study_npoints;
+  int study_par[WHIRL_RUN_MAXITEMS];
+  size_t study_first[WHIRL_RUN_MAXITEMS], study_nval[WHIRL_RUN_MAXITEMS];
 };
 typedef struct whirl_run run_ctx;
 
@@ -152,6 +159,10 @@ int run_branch(run_ctx *R, branch_spec *b);
 /* run_discover.c: the start branch b0, then the branches not connected to
  * it (DISCOVER, doc/discovery.md).  0, -1 (failed, said), -2 (bad input). */
 int run_discover(run_ctx *R, const branch_spec *b0);
+
+/* run_study.c: the grid of STUDY (at load), the serial study (execute) */
+int run_study_resolve(run_ctx *R);
+int run_study(run_ctx *R);
 
 /* run_basins.c */
 int run_basins(run_ctx *R);

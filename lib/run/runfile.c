@@ -79,6 +79,7 @@ static const key_def keys[] = {
     {WHIRL_RK_DISCOVER_STARTS, "DISCOVER_STARTS", "discover_starts", NULL, K_INT},
     {WHIRL_RK_DISCOVER_SEED, "DISCOVER_SEED", "discover_seed", NULL, K_INT},
     {WHIRL_RK_DISCOVER_SETTLE, "DISCOVER_SETTLE", "discover_settle", NULL, K_REAL},
+    {WHIRL_RK_STUDY, "STUDY", "parameter_study", NULL, K_UZDICT},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -731,10 +732,12 @@ static int set_values(whirl_runfile *rf, const key_def *d, const char *where) {
   whirl_run_value *dst = d->key == WHIRL_RK_PAR ? s->par
                          : d->key == WHIRL_RK_U ? s->u
                          : d->key == WHIRL_RK_UZR ? s->uzr
+                         : d->key == WHIRL_RK_STUDY ? s->study
                                                   : s->uzstop;
   size_t *cnt = d->key == WHIRL_RK_PAR ? &s->npar
                 : d->key == WHIRL_RK_U ? &s->nu
                 : d->key == WHIRL_RK_UZR ? &s->nuzr
+                : d->key == WHIRL_RK_STUDY ? &s->nstudy
                                          : &s->nuzstop;
   if (v->kind != V_DICT && d->kind == K_UZDICT)
     return fail(rf, where, "%s: expected a dictionary {parameter: "
@@ -1247,6 +1250,10 @@ int whirl_runfile_check(whirl_runfile *rf) {
                     "DISCOVER: %g is outside [RL0, RL1] = [%g, %g]",
                     s->discover[i], s->rl0, s->rl1);
   }
+  if (s->nstudy && s->ips == WHIRL_IPS_BASINS)
+    return fail(rf, where_of(rf, WHIRL_RK_STUDY, w, sizeof w), "STUDY of basins "
+                "is not available yet: a study runs continuations (IPS = 1, 2) "
+                "and their discovery");
   if (s->ips == WHIRL_IPS_BASINS) {
     if (s->naxes != 2)
       return fail(rf, where_of(rf, rf->line[WHIRL_RK_BASIN_AXES] ? WHIRL_RK_BASIN_AXES : WHIRL_RK_IPS, w, sizeof w),
@@ -1297,6 +1304,7 @@ size_t whirl_runfile_count(const whirl_runfile *rf, whirl_run_key k) {
     case WHIRL_RK_BASIN_GRID: return 2;
     case WHIRL_RK_BASIN_ATTRACTORS: return s->nattractors;
     case WHIRL_RK_DISCOVER: return s->ndiscover;
+    case WHIRL_RK_STUDY: return s->nstudy;
     case WHIRL_RK_DISCOVER_BOX: return s->nbox;
     default: return 0;
   }
@@ -1310,6 +1318,7 @@ static const whirl_run_value *value_list(const whirl_run_settings *s,
     case WHIRL_RK_U: return s->u;
     case WHIRL_RK_UZR: return s->uzr;
     case WHIRL_RK_UZSTOP: return s->uzstop;
+    case WHIRL_RK_STUDY: return s->study;
     default: return NULL;
   }
 }

@@ -52,6 +52,9 @@ typedef struct whirl_run_settings {
   int discover_seed;            /* seed of the random starts (1) */
   double discover_settle;       /* time integration of a start: forcing
                                    periods, or time units (100) */
+  whirl_run_value study[WHIRL_RUN_MAXITEMS]; /* parameter study: {name:
+                                   [values]}, a grid (first name slowest) */
+  size_t nstudy;
 } whirl_run_settings;
 
 const whirl_run_settings *whirl_runfile_settings(const whirl_runfile *rf);

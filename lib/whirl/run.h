@@ -104,6 +104,22 @@ WHIRL_API const whirl_run_plot *whirl_run_plot_info(const whirl_run *r);
 WHIRL_API const char *whirl_run_model_name(const whirl_run *r);
 WHIRL_API const char *whirl_run_file_name(const whirl_run *r);
 
+/* ---- parameter studies (STUDY, doc/parameter-studies.md) ----
+ * A run file with STUDY = {name: [values], ...} runs its analysis at every
+ * point of the grid; whirl_run_execute writes study.tsv (a header, then a
+ * row a point) and run.log.  A caller that distributes the points itself
+ * (processes, a checkpoint) asks for the rows one by one: each depends on
+ * its point alone, so rows computed anywhere are the same bytes. */
+/* The number of points (0: not a study). */
+WHIRL_API size_t whirl_run_study_size(const whirl_run *r);
+/* The header line of study.tsv (no newline) into buf[len]: WHIRL_OK, or
+ * WHIRL_EINVAL (not a study, too long). */
+WHIRL_API int whirl_run_study_header(const whirl_run *r, char *buf, size_t len);
+/* Compute point i and write its row (no newline): WHIRL_OK also when the
+ * point's run failed (its status column says so), WHIRL_EINVAL for i out
+ * of range or a row longer than len. */
+WHIRL_API int whirl_run_study_row(whirl_run *r, size_t i, char *buf, size_t len);
+
 /* The first error message (a run file's FILE:LINE: ...), "" if none. */
 WHIRL_API const char *whirl_run_errmsg(const whirl_run *r);
 
