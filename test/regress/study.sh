@@ -1,0 +1,108 @@
+#!/bin/sh
+# test/regress/study.sh — parameter studies (STUDY, doc/parameter-studies.md):
+# the isola count of discovery over a (lambda, delta) grid of the SFD rotor
+# (Fig. 18 by brute force, small), checked point by point against the
+# number of branches eq. 15 gives (whirl sfd response, another route), and
+#  - chunks 1/3, 2/3, 3/3 joined by --merge-chunks=3: the single run's file;
+#  - a run killed (SIGTERM) mid-way and started again: the same file, and
+#    while killed no output directory, only OUT.checkpoint;
+#  - the checkpoint of another run (the run file changed): exit 2, the
+#    checkpoint kept, nothing written;
+#  - MPI (when built --with-mpi and mpirun exists): 2 and 4 ranks give the
+#    serial file;
+#  - bad input: a grid without points, an unknown parameter, the
+#    continuation parameter as an axis, a chunk out of range, a missing
+#    chunk: one message, exit 2.
+# SPDX-License-Identifier: BSD-3-Clause
+name=study
+. "${top_srcdir:-.}/test/regress/tap.sh"
+cb=$top_builddir
+case $cb in /*) ;; *) cb="$(cd "$OLDPWD" 2>/dev/null && cd "$top_builddir" && pwd)" ;; esac
+
+sed -e '/^ICP/s/.*/ICP    = [Omega]/' -e '/^DISCOVER /s/.*/DISCOVER        = [5, 10, 19]/' \
+  "$top_srcdir/examples/discover/sfd-rotating.whirl" > grid.whirl
+echo 'STUDY = {lambda: [0.05, 0.25], delta: [0.2, 0.3, 0.42, 0.6]}' >> grid.whirl
+"$WHIRL" run grid.whirl --quiet 2> grid.err
+ok $? "whirl run grid.whirl (8 points): $(head -c 200 grid.err)"
+cp grid.out/study.tsv serial.tsv
+ok $(( $(wc -l < serial.tsv) != 9 )) "study.tsv: a header and 8 rows"
+head -n 1 serial.tsv | grep -q "^point	lambda	delta	status	branches	isolated	closed	LP	BP	HB	PD	TR	UZ$"
+ok $? "the header names the columns"
+# eq. 15's branch count at every point
+bad=0
+tail -n +2 serial.tsv | while IFS='	' read -r pt l d st br iso rest; do
+  want=$("$WHIRL" sfd response --lambda "$l" --delta "$d" --out "eq$pt" --no-plot 2>/dev/null |
+    awk -F '\t' '$1 == "EP" { b[$2] = 1 } END { print length(b) }')
+  [ "$st" = ok ] && [ "$br" = "$want" ] && [ "$iso" = $((want - 1)) ] || { echo "# point $pt ($l, $d): $br branches, eq. 15 $want"; echo bad >> bad.txt; }
+done
+ok $([ -s bad.txt ] && echo 1 || echo 0) "every point's branches and isolas equal eq. 15's ($(awk -F '\t' 'NR > 1 { printf "%s,%s:%s ", $2, $3, $6 }' serial.tsv))"
+
+for i in 1 2 3; do "$WHIRL" run grid.whirl --chunk=$i/3 --quiet; done
+"$WHIRL" run grid.whirl --merge-chunks=3 --quiet --OUT=grid.out 2> merge.err
+ok $? "--merge-chunks=3: $(head -c 200 merge.err)"
+cmp -s serial.tsv grid.out/study.tsv
+ok $? "chunks 1/3, 2/3, 3/3 merged: the single run's study.tsv"
+
+# killed mid-way, then started again
+rm -rf grid.out grid.out.checkpoint
+"$WHIRL" run grid.whirl --quiet > /dev/null 2>&1 &
+pid=$!
+k=0
+while [ "$k" -lt 300 ] && [ "$(cat grid.out.checkpoint 2> /dev/null | wc -l)" -lt 3 ]; do sleep 0.05; k=$((k + 1)); done
+kill -TERM $pid 2> /dev/null
+wait $pid 2> /dev/null
+rows=$(($(wc -l < grid.out.checkpoint) - 1))
+ok $(( rows < 1 || rows >= 8 )) "killed after $rows of 8 points"
+[ ! -e grid.out ]
+ok $? "while killed: no output directory (the partial state is only the checkpoint)"
+cp grid.out.checkpoint ckpt.saved
+cp grid.whirl other.whirl
+echo '# another run' >> grid.whirl
+"$WHIRL" run grid.whirl --quiet > other.txt 2> other.err
+rc=$?
+ok $(( rc != 2 )) "the checkpoint of another run (the file changed): exit 2 ($rc)"
+grep -q "checkpoint of another run" other.err && cmp -s ckpt.saved grid.out.checkpoint && [ ! -e grid.out ]
+ok $? "one message, the checkpoint kept, nothing written: $(cat other.err)"
+cp other.whirl grid.whirl
+"$WHIRL" run grid.whirl > resume.txt 2> resume.err
+ok $? "started again: $(cat resume.txt)"
+cmp -s serial.tsv grid.out/study.tsv && [ ! -e grid.out.checkpoint ]
+ok $? "the resumed run's study.tsv is the single run's, the checkpoint removed"
+grep -q "from the checkpoint" resume.txt && ! grep -q " 0 from the checkpoint" resume.txt
+ok $? "it took the finished rows from the checkpoint"
+
+if grep -q "define WHIRL_HAVE_MPI 1" "$cb/config.h" 2> /dev/null && command -v mpirun > /dev/null; then
+  for np in 2 4; do
+    mpirun --allow-run-as-root --oversubscribe -n $np "$WHIRL" run grid.whirl --quiet --OUT=mpi$np > mpi$np.txt 2>&1
+    cmp -s serial.tsv mpi$np/study.tsv
+    ok $? "mpirun -n $np: the serial study.tsv ($(head -c 200 mpi$np.txt))"
+  done
+else
+  echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
+  echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
+fi
+
+bad_input() { # NAME PATTERN [ARGS...], the study line last in NAME.whirl
+  nm=$1 pat=$2
+  shift 2
+  "$WHIRL" run "$nm.whirl" --quiet "$@" > "$nm.txt" 2> "$nm.err"
+  rc=$?
+  ok $(( rc != 2 )) "$nm: exit 2 ($rc)"
+  grep -q "$pat" "$nm.err" && [ "$(wc -l < "$nm.err")" -eq 1 ] && [ ! -e "$nm.out" ]
+  ok $? "$nm: one message, nothing written: $(cat "$nm.err")"
+}
+sed '/^STUDY/d' grid.whirl > base.whirl
+{ cat base.whirl; echo 'STUDY = {lambda: []}'; } > empty.whirl
+bad_input empty "STUDY"
+{ cat base.whirl; echo 'STUDY = {nope: [1, 2]}'; } > unknown.whirl
+bad_input unknown "'nope' is not a parameter"
+{ cat base.whirl; echo 'STUDY = {Omega: [1, 2]}'; } > icp.whirl
+bad_input icp "continuation parameter"
+cp grid.whirl chunk.whirl
+bad_input chunk "need 1 <= I <= N" --chunk=4/3
+cp grid.whirl chunk0.whirl
+bad_input chunk0 "need 1 <= I <= N" --chunk=0/3
+cp grid.whirl missing.whirl
+"$WHIRL" run missing.whirl --chunk=1/2 --quiet
+bad_input missing "missing.out.chunk-2-of-2/study.tsv" --merge-chunks=2
+tap_end
