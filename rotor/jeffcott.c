@@ -156,6 +156,8 @@ static const char *const jeffcott_p_names[J_NPAR] = {"Omega", "lambda", "delta",
  * bound on the disc amplitude (doc/jeffcott-model.md §6). */
 static const double jeffcott_par0[J_NPAR] = {1.0, 0.0503, 0.3, 0.05, 0.5, 10.0};
 static const double jeffcott_u0[J_N] = {0, 0, 0, 0, 0, 0, 0, 0};
+/* displacements in clearances, velocities in clearances per 1/ω_n */
+static const double jeffcott_scale[J_N] = {1, 1, 1, 1, 1, 1, 1, 1};
 
 static const whirl_model jeffcott_model = {
     .abi = WHIRL_MODEL_ABI,
@@ -174,6 +176,7 @@ static const whirl_model jeffcott_model = {
     .stpnt = NULL,
     .period0 = 0.0,
     .forcing_param = J_OMEGA,
+    .scale = jeffcott_scale,
     .description = "Jeffcott rotor (disc on a flexible shaft) on two short "
                    "pi-film squeeze-film dampers, fixed frame, forced"};
 

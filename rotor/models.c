@@ -9,6 +9,9 @@
 #include <whirl/rotor.h>
 
 static const double sfd_u0[4] = {0.0, 0.0, 0.0, 0.0};
+/* the clearance (displacements are in clearances), and a clearance per
+ * 1/ω_n for the velocities */
+static const double sfd_scale[4] = {1.0, 1.0, 1.0, 1.0};
 
 static int sfd_stpnt(double tau, double *u, double *par, void *data) {
   (void)tau;
@@ -28,13 +31,13 @@ int whirl_rotor_register_models(whirl_model_registry *reg, char *msg, size_t len
   whirl_sfd_default_params(par0);
   const whirl_model fixed = {
       .abi = WHIRL_MODEL_ABI, .problem = *whirl_sfd_fixed(), .par0 = par0,
-      .u0 = sfd_u0, .stpnt = sfd_stpnt, .forcing_param = WHIRL_SFD_OMEGA,
+      .u0 = sfd_u0, .stpnt = sfd_stpnt, .forcing_param = WHIRL_SFD_OMEGA, .scale = sfd_scale,
       .description = "rigid rotor on two short squeeze-film dampers, fixed "
                      "frame (unbalance forcing at Omega)",
       .check_params = sfd_check};
   const whirl_model rotating = {
       .abi = WHIRL_MODEL_ABI, .problem = *whirl_sfd_rotating(), .par0 = par0,
-      .u0 = sfd_u0, .stpnt = sfd_stpnt, .forcing_param = -1,
+      .u0 = sfd_u0, .stpnt = sfd_stpnt, .forcing_param = -1, .scale = sfd_scale,
       .description = "rigid rotor on two short squeeze-film dampers, rotating "
                      "frame (circular orbits are equilibria)",
       .check_params = sfd_check};

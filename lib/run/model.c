@@ -151,6 +151,12 @@ int whirl_model_check(const whirl_model *m, char *msg, size_t len) {
     snprintf(msg, len, "state dimension n = %zu is not in [1, 100000]", p->n);
     return WHIRL_EINVAL;
   }
+  for (size_t i = 0; m->scale && i < p->n; i++)
+    if (!(m->scale[i] > 0) || !isfinite(m->scale[i])) {
+      snprintf(msg, len, "scale[%zu] = %g: the state's scales must be positive "
+               "and finite", i, m->scale[i]);
+      return WHIRL_EINVAL;
+    }
   if (p->npar == 0 || p->npar > 1000) {
     snprintf(msg, len, "number of parameters npar = %zu is not in [1, 1000]",
              p->npar);

@@ -78,8 +78,9 @@ static int to_branch(disc *D, const double *x, double *out) {
   return whirl_periodic_convert(&D->po, x, D->p, &dst, 0, out) ? -1 : 0;
 }
 
-/* The box of random starts: DISCOVER_BOX, else ±1.5 × the largest value
- * of the component on the start branch (±1 where it is 0). */
+/* The box of random starts: DISCOVER_BOX, else ±the model's scale of the
+ * component, else ±1.5 × its largest value on the start branch (±1 where
+ * it is 0). */
 static int set_box(disc *D, const run_trace *t0) {
   run_ctx *R = D->R;
   for (size_t i = 0; i < D->n; i++) D->hi[i] = 0.0;
@@ -88,8 +89,9 @@ static int set_box(disc *D, const run_trace *t0) {
       const size_t i = disc_component(D, j);
       D->hi[i] = fmax(D->hi[i], fabs(t0->x[k * t0->n + j]));
     }
+  const double *scale = R->model->scale;
   for (size_t i = 0; i < D->n; i++) {
-    const double a = D->hi[i] > 0 ? 1.5 * D->hi[i] : 1.0;
+    const double a = scale ? scale[i] : D->hi[i] > 0 ? 1.5 * D->hi[i] : 1.0;
     D->lo[i] = -a;
     D->hi[i] = a;
   }

@@ -37,7 +37,7 @@
 extern "C" {
 #endif
 
-#define WHIRL_MODEL_ABI 2
+#define WHIRL_MODEL_ABI 3
 #define WHIRL_MODEL_SYMBOL "whirl_model_def"
 
 typedef struct whirl_model {
@@ -62,6 +62,11 @@ typedef struct whirl_model {
    * (physical ranges)?  0, or nonzero with a one-line reason in msg[len].
    * whirl run refuses a run whose parameters fail before computing. */
   int (*check_params)(const double *p, char *msg, size_t len);
+  /* Optional (ABI 3): n typical magnitudes of the state components — a
+   * displacement's clearance, a velocity at the operating speed — used as
+   * the default box ±scale of discovery's random starts (DISCOVER,
+   * doc/discovery.md); NULL: the box comes from the start branch. */
+  const double *scale;
 } whirl_model;
 
 /* Check a model description: abi, sizes, required callbacks, parameter
