@@ -878,6 +878,15 @@ static void test_fe_domain(void) {
   ok(whirl_rotor_register_models(reg, msg, sizeof msg) == WHIRL_EINVAL &&
          strstr(msg, "registered already"),
      "a name is registered once: %s", msg);
+  /* the state's scales (ABI 3): the clearance for the rotor models, and a
+   * scale that is not positive is refused */
+  ok(sfd->scale && sfd->scale[0] == 1.0 && whirl_model_check(sfd, msg, sizeof msg) == WHIRL_OK,
+     "model 'sfd' has its scales (the clearance)");
+  whirl_model bad = *sfd;
+  const double zero[4] = {1.0, 0.0, 1.0, 1.0};
+  bad.scale = zero;
+  ok(whirl_model_check(&bad, msg, sizeof msg) == WHIRL_EINVAL && strstr(msg, "scale[1]"),
+     "a zero scale is refused: %s", msg);
   whirl_model_registry_free(reg);
 }
 
