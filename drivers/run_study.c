@@ -12,10 +12,10 @@
  *    contiguous parts into OUT.chunk-I-of-N/, and --merge-chunks=N joins
  *    them into OUT/study.tsv, the bytes one run writes;
  *  - MPI (built with --with-mpi, run under mpirun): rank 0 hands the points
- *    out one at a time to the other ranks as they finish (dynamic load
- *    balancing: a point's cost varies a hundredfold) and writes the rows in
- *    the order of the points, so the file is the same for any number of
- *    ranks and threads.
+ *    out to the other ranks as they finish (dynamic load balancing: a
+ *    point's cost varies a hundredfold), computes points itself between
+ *    their messages, and writes the rows in the order of the points, so the
+ *    file is the same for any number of ranks and threads.
  * SPDX-License-Identifier: BSD-3-Clause */
 #define _POSIX_C_SOURCE 200809L /* fsync, fileno */
 #include <errno.h>
@@ -145,37 +145,69 @@ static int compute_serial(study *S) {
 #ifdef WHIRL_HAVE_MPI
 enum { TAG_WORK = 1, TAG_ROW = 2, TAG_STOP = 3 };
 
-/* Rank 0: the next unfinished point to each rank that asks (its request
- * carries the row it finished), until none is left. */
+/* The next unfinished point of the study from *next, or -1. */
+static unsigned long long next_point(const study *S, size_t *next) {
+  while (*next < S->hi && S->rows[*next - S->lo]) (*next)++;
+  return *next < S->hi ? (unsigned long long)(*next)++ : (unsigned long long)-1;
+}
+
+/* Rank rk's next message: the point w, or — when there is none and it
+ * holds no other — the stop.  held[rk] counts its points in hand. */
+static void hand_out(unsigned long long w, int rk, int *held, size_t *busy) {
+  if (w != (unsigned long long)-1) {
+    MPI_Send(&w, 1, MPI_UNSIGNED_LONG_LONG, rk, TAG_WORK, MPI_COMM_WORLD);
+    held[rk]++;
+    (*busy)++;
+  } else if (held[rk] == 0) {
+    MPI_Send(&w, 1, MPI_UNSIGNED_LONG_LONG, rk, TAG_STOP, MPI_COMM_WORLD);
+    held[rk] = -1; /* stopped */
+  }
+}
+
+/* Rank 0: every other rank holds two points at a time (one computing, one
+ * queued, so that it never waits for rank 0); a finished row brings it the
+ * next unfinished point, and the stop once it holds none and none is left.
+ * Between messages rank 0 computes points itself.  Rows go into the
+ * checkpoint as they come; the file is written in the points' order
+ * afterwards. */
 static int master(study *S, int nranks) {
   size_t next = S->lo, done = S->resumed, busy = 0;
   char row[ROWLEN + 32];
-  int bad = 0;
-  for (int rk = 1; rk < nranks; rk++) {
-    while (next < S->hi && S->rows[next - S->lo]) next++;
-    unsigned long long w = next < S->hi ? next++ : (unsigned long long)-1;
-    MPI_Send(&w, 1, MPI_UNSIGNED_LONG_LONG, rk, w == (unsigned long long)-1 ? TAG_STOP : TAG_WORK,
-             MPI_COMM_WORLD);
-    if (w != (unsigned long long)-1) busy++;
-  }
-  while (busy > 0) {
+  int bad = 0, *held = calloc((size_t)nranks, sizeof *held);
+  if (!held) return 1;
+  for (int k = 0; k < 2; k++)
+    for (int rk = 1; rk < nranks; rk++)
+      if (held[rk] >= 0) hand_out(next_point(S, &next), rk, held, &busy);
+  for (;;) {
+    int pending = 0;
     MPI_Status st;
-    MPI_Recv(row, (int)sizeof row, MPI_CHAR, MPI_ANY_SOURCE, TAG_ROW, MPI_COMM_WORLD, &st);
-    busy--;
-    size_t i = (size_t)strtoull(row, NULL, 10);
-    if (!bad && row[0] != '!' && i >= S->lo && i < S->hi) bad = keep(S, i, row);
-    else if (row[0] == '!') bad = 1;
+    if (busy) MPI_Iprobe(MPI_ANY_SOURCE, TAG_ROW, MPI_COMM_WORLD, &pending, &st);
+    if (pending || (busy && (bad || next >= S->hi))) {
+      MPI_Recv(row, (int)sizeof row, MPI_CHAR, MPI_ANY_SOURCE, TAG_ROW, MPI_COMM_WORLD, &st);
+      busy--;
+      held[st.MPI_SOURCE]--;
+      size_t i = (size_t)strtoull(row, NULL, 10);
+      if (row[0] == '!') bad = 1;
+      else if (!bad && i >= S->lo && i < S->hi) bad = keep(S, i, row);
+      cli_progress_show(&S->prog, ++done, S->hi - S->lo);
+      hand_out(bad ? (unsigned long long)-1 : next_point(S, &next), st.MPI_SOURCE, held, &busy);
+      continue;
+    }
+    if (bad || next >= S->hi) break;
+    unsigned long long w = next_point(S, &next);
+    if (w == (unsigned long long)-1) continue;
+    if (whirl_run_study_row(S->r, (size_t)w, row, sizeof row) || keep(S, (size_t)w, row)) bad = 1;
     cli_progress_show(&S->prog, ++done, S->hi - S->lo);
-    while (next < S->hi && S->rows[next - S->lo]) next++;
-    unsigned long long w = !bad && next < S->hi ? next++ : (unsigned long long)-1;
-    MPI_Send(&w, 1, MPI_UNSIGNED_LONG_LONG, st.MPI_SOURCE,
-             w == (unsigned long long)-1 ? TAG_STOP : TAG_WORK, MPI_COMM_WORLD);
-    if (w != (unsigned long long)-1) busy++;
   }
+  for (int rk = 1; rk < nranks; rk++) /* those never stopped (no work at all) */
+    if (held[rk] == 0) hand_out((unsigned long long)-1, rk, held, &busy);
+  free(held);
   return bad;
 }
 
-/* Other ranks: compute the points rank 0 sends, return their rows. */
+/* Other ranks: compute the points rank 0 sends, return their rows, until
+ * told to stop (a rank holds up to two points; the stop comes after
+ * both). */
 static void worker(study *S) {
   char row[ROWLEN];
   for (;;) {
