@@ -106,8 +106,8 @@ static int resume(study *S) {
  * kill is dropped), written beside and renamed over it.  0 or 1. */
 static int checkpoint_open(study *S) {
   char tmp[4400];
-  snprintf(tmp, sizeof tmp, "%s.tmp", S->ckpt);
-  FILE *f = fopen(tmp, "w");
+  snprintf(tmp, sizeof tmp, "%s.tmp.%ld", S->ckpt, (long)getpid());
+  FILE *f = fopen(tmp, "wx"); /* never over a file that is there */
   if (!f) {
     cli_error("run", "cannot write %s: %s", tmp, strerror(errno));
     return 1;
