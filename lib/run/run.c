@@ -809,6 +809,18 @@ static void set_paths(whirl_run *R, const char *file) {
     whirl_runfile_where(R->rf, WHIRL_RK_OUT, R->out_where, sizeof R->out_where);
 }
 
+/* AUTO's c.ab.2 after c.ab.1 with the same output: the run would replace
+ * the solutions it restarts from (S).  1 (said) when OUT is S. */
+static int replaces_restart(whirl_run *R) {
+  struct stat a, b;
+  if (!R->s->s[0] || stat(R->s->s, &a) != 0 || stat(R->out, &b) != 0) return 0;
+  if (a.st_dev != b.st_dev || a.st_ino != b.st_ino) return 0;
+  run_fail(R, whirl_runfile_given(R->rf, WHIRL_RK_OUT) ? WHIRL_RK_OUT : WHIRL_RK_S,
+           "OUT '%s' is S, the run this one restarts from: its output would "
+           "replace the solutions it starts from; give another OUT", R->out);
+  return 1;
+}
+
 int whirl_run_load(whirl_run *R, const char *file, const char *const *overrides,
                    size_t noverrides) {
   if (!R || !file) return WHIRL_EINVAL;
@@ -832,6 +844,7 @@ int whirl_run_load(whirl_run *R, const char *file, const char *const *overrides,
   }
   R->s = whirl_runfile_settings(R->rf);
   set_paths(R, file);
+  if (replaces_restart(R)) return 2;
   return run_load_model(R) || run_resolve(R) || run_study_resolve(R) ? 2 : 0;
 }
 

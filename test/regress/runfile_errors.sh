@@ -364,6 +364,21 @@ c 2 "override with an unknown model" "^whirl run: command line \(--model=nosuch\
 c 2 "override NDIM mismatch" "^whirl run: command line \(--NDIM=3\): NDIM = 3, but" "$B" --NDIM=3
 c 2 "override DSMAX below the default DSMIN" "^whirl run: command line \(--DSMAX=1e-6\): DSMIN = 1e-05 exceeds DSMAX = 1e-06$" "$B" --DSMAX=1e-6
 
+# a restart whose OUT is its own S (AUTO's c.ab.2 after c.ab.1 into the same
+# directory) would replace the solutions it starts from: refused, S untouched
+printf 'model = sfd-rotating\nICP = [Omega]\nPAR = {Omega: 0.5}\nU = {u: 0.1}\nNMX = 30\nDS = 0.05\nDSMAX = 0.2\nOUT = same.out\n' > first.whirl
+"$WHIRL" run first.whirl --quiet > /dev/null 2>&1
+ok $? "control: a run into same.out"
+cp same.out/solutions same.saved
+printf 'model = sfd-rotating\nICP = [Omega]\nS = same.out\nIRS = 2\nNMX = 5\nOUT = same.out\n' > again.whirl
+"$WHIRL" run again.whirl --quiet > "$tmp/stdout" 2> "$tmp/stderr"
+rc=$?
+ok $(( rc != 2 )) "OUT = S: exit 2 ($rc)"
+grep -q "^whirl run: again.whirl:6: OUT 'same.out' is S, the run this one restarts from" "$tmp/stderr" &&
+  cmp -s same.saved same.out/solutions
+ok $? "OUT = S: one message at OUT's line, S's solutions untouched: $(cat "$tmp/stderr")"
+rm -rf same.out same.saved first.whirl again.whirl
+
 rm -f case.whirl
 echo "1..$n"
 [ "$fails" -eq 0 ]
