@@ -231,12 +231,12 @@ static int cmd_run_ranked(int argc, char **argv, int rank, int nranks) {
   whirl_run *r = whirl_run_alloc(models, &io);
   status = r ? whirl_run_load(r, file, ov, nov) : 1;
   so.file = file, so.ov = ov, so.nov = nov, so.quiet = c.quiet;
-  if (status == 0 && whirl_run_study_size(r) > 0) {
+  if (status == 0 && whirl_run_rows(r) > 0) { /* a study, or basins */
     status = run_study_of(r, &so, merge, rank, nranks);
     goto done;
   }
   if (status == 0 && (so.chunks || merge)) {
-    cli_error("run", "--chunk and --merge-chunks are for parameter studies (STUDY)");
+    cli_error("run", "--chunk and --merge-chunks are for parameter studies (STUDY) and basins");
     status = 2;
   }
   if (status == 0 && rank != 0) goto done; /* one process runs anything else */

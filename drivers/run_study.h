@@ -1,5 +1,5 @@
 /* drivers/run_study.h — `whirl run` of a parameter study (run_study.c):
- * checkpoint and resume, chunks for job arrays, MPI.
+ * and of basins: checkpoint and resume, chunks for job arrays, MPI.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_DRIVER_RUN_STUDY_H
 #define WHIRL_DRIVER_RUN_STUDY_H
@@ -16,7 +16,7 @@ typedef struct study_opts {
   int quiet;
 } study_opts;
 
-/* The study of r (whirl_run_study_size > 0), this process being rank of
+/* The table of r (whirl_run_rows > 0: a study or basins), this process being rank of
  * nranks (1: alone).  The exit status (0, 1, 2), said on failure; ranks
  * other than 0 return 0. */
 int run_study_command(whirl_run *r, const study_opts *o, int rank, int nranks);

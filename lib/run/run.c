@@ -779,6 +779,7 @@ void whirl_run_free(whirl_run *r) {
   if (r->log) fclose(r->log);
   if (r->table) fclose(r->table);
   if (r->sols) fclose(r->sols);
+  run_basins_job_free(r->bjob);
   run_unload_model(r);
   whirl_runfile_free(r->rf);
   for (size_t i = 0; i < r->nspecial; i++) {
@@ -926,7 +927,7 @@ int whirl_run_execute(whirl_run *R) {
   if ((R->s->irs > 0 || R->s->irs_type[0]) && restart_solution(R, &O)) goto out;
   status = 1;
   const int basins = R->s->ips == WHIRL_IPS_BASINS;
-  const int study = whirl_run_study_size(R) > 0;
+  const int study = R->study_npoints > 0 && !R->in_study;
   R->plot.basins = basins;
   if (!(R->log = run_open(R, "run.log")) ||
       (!basins && !study && (!(R->table = run_open(R, "branches.tsv")) ||

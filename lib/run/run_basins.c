@@ -78,146 +78,233 @@ static int section_state(run_ctx *R, const whirl_solution *so, double *x) {
   return 0;
 }
 
-int run_basins(run_ctx *R) {
+/* Everything the classification of grid points needs, made once. */
+struct run_basins_job {
+  size_t na, np, g0, g1;
+  int ax[2];
+  target *tg;
+  whirl_attractor *att;
+  char (*names)[32];
+  double *x0;              /* np start states */
+  whirl_basins_options o;
+};
+
+void run_basins_job_free(run_basins_job *J) {
+  if (!J) return;
+  for (size_t a = 0; J->tg && a < J->na; a++) free(J->tg[a].x);
+  free(J->tg);
+  free(J->att);
+  free(J->names);
+  free(J->x0);
+  free(J);
+}
+
+/* The attractors (labelled stable solutions of S, all at one parameter
+ * set), the run's parameters taken from them, the grid of start states and
+ * the options.  0, -1, -2 (bad input, said). */
+static int attractors(run_ctx *R, run_basins_job *J) {
   const whirl_run_settings *s = R->s;
-  const size_t n = R->n, na = s->nattractors;
-  const int fp = R->model->forcing_param;
-  int rc = -1;
-  int ax[2] = {run_state_index(R, &s->axes[0].ref), run_state_index(R, &s->axes[1].ref)};
-  if (ax[0] == ax[1]) {
-    run_fail(R, WHIRL_RK_BASIN_AXES, "BASIN_AXES: the two axes are the same "
-             "component '%s'", R->xnames[ax[0]]);
-    return -2;
-  }
-  const size_t g0 = (size_t)s->grid[0], g1 = (size_t)s->grid[1], np = g0 * g1;
-  target *tg = calloc(na, sizeof *tg);
-  whirl_attractor *att = calloc(na, sizeof *att);
-  double *x0 = malloc(np * n * sizeof *x0);
-  int *which = malloc(np * sizeof *which);
-  unsigned *periods = malloc(np * sizeof *periods);
-  char (*names)[32] = calloc(na, sizeof *names);
-  if (!tg || !att || !x0 || !which || !periods || !names) goto done;
-  for (size_t a = 0; a < na; a++) {
+  const size_t n = R->n;
+  for (size_t a = 0; a < J->na; a++) {
     whirl_solution so;
     char msg[1024];
     if (run_solution_find(R, s->s, s->attractors[a], "", &so, msg, sizeof msg)) {
       run_fail(R, WHIRL_RK_BASIN_ATTRACTORS, "BASIN_ATTRACTORS: %s", msg);
-      rc = -2;
-      goto done;
+      return -2;
     }
-    if (so.stable != 1) {
+    int rc = so.stable != 1 ? -2 : 0;
+    if (rc)
       run_fail(R, WHIRL_RK_BASIN_ATTRACTORS, "BASIN_ATTRACTORS: label %d is "
                "not a stable solution (STAB = %d)", so.label, so.stable);
-      whirl_solution_free(&so);
-      rc = -2;
-      goto done;
-    }
-    if (a == 0) {
+    if (!rc && a == 0) {
       memcpy(R->par, so.par, R->npar * sizeof *R->par);
       for (size_t i = 0; i < s->npar; i++)
         R->par[run_par_index(R, &s->par[i].ref)] = s->par[i].value;
     }
-    for (size_t k = 0; k < R->npar; k++)
+    for (size_t k = 0; !rc && k < R->npar; k++)
       if (fabs(so.par[k] - R->par[k]) > 1e-8 * (1.0 + fabs(R->par[k]))) {
         run_fail(R, WHIRL_RK_BASIN_ATTRACTORS, "BASIN_ATTRACTORS: label %d "
                  "has %s = %.10g, the basins are computed at %.10g (all "
                  "attractors must be at the same parameters: use UZR in the "
                  "continuation run)", so.label, R->pnames[k], so.par[k], R->par[k]);
-        whirl_solution_free(&so);
         rc = -2;
-        goto done;
       }
-    tg[a].n = n;
-    tg[a].tol = s->basin_tol;
-    tg[a].x = malloc(n * sizeof *tg[a].x);
-    if (!tg[a].x || section_state(R, &so, tg[a].x)) {
-      whirl_solution_free(&so);
+    target *g = &J->tg[a];
+    g->n = n;
+    g->tol = s->basin_tol;
+    if (!rc && (!(g->x = malloc(n * sizeof *g->x)) || section_state(R, &so, g->x))) {
       run_say(R, "label %d: cannot evaluate the solution", so.label);
-      goto done;
+      rc = -1;
     }
-    snprintf(names[a], sizeof names[a], "LAB %d", so.label);
-    att[a].name = names[a];
-    att[a].test = near_target;
-    att[a].data = &tg[a];
-    att[a].confirm = 3;
-    fprintf(R->log, "attractor %zu: label %d (%s, %s), section state", a + 1,
-            so.label, so.ty, so.kind == WHIRL_SOL_EQ ? "equilibrium" : "periodic orbit");
-    for (size_t i = 0; i < n; i++) fprintf(R->log, " %.10g", tg[a].x[i]);
-    fputc('\n', R->log);
+    if (!rc) {
+      snprintf(J->names[a], sizeof J->names[a], "LAB %d", so.label);
+      J->att[a] = (whirl_attractor){.name = J->names[a], .test = near_target, .data = g, .confirm = 3};
+      if (R->log) {
+        fprintf(R->log, "attractor %zu: label %d (%s, %s), section state", a + 1, so.label,
+                so.ty, so.kind == WHIRL_SOL_EQ ? "equilibrium" : "periodic orbit");
+        for (size_t i = 0; i < n; i++) fprintf(R->log, " %.10g", g->x[i]);
+        fputc('\n', R->log);
+      }
+    }
     whirl_solution_free(&so);
+    if (rc) return rc;
   }
-  fprintf(R->log, "basins at");
-  for (size_t k = 0; k < R->npar; k++) fprintf(R->log, " %s = %.10g", R->pnames[k], R->par[k]);
-  fputc('\n', R->log);
-  for (size_t j = 0; j < g1; j++)
-    for (size_t i = 0; i < g0; i++) {
-      double *x = x0 + (j * g0 + i) * n;
-      memcpy(x, R->u, n * sizeof *x);
-      x[ax[0]] = s->axes[0].lo + (s->axes[0].hi - s->axes[0].lo) * (double)i / (double)(g0 - 1);
-      x[ax[1]] = s->axes[1].lo + (s->axes[1].hi - s->axes[1].lo) * (double)j / (double)(g1 - 1);
+  return 0;
+}
+
+static void grid_states(const run_ctx *R, run_basins_job *J) {
+  const whirl_run_settings *s = R->s;
+  for (size_t j = 0; j < J->g1; j++)
+    for (size_t i = 0; i < J->g0; i++) {
+      double *x = J->x0 + (j * J->g0 + i) * R->n;
+      memcpy(x, R->u, R->n * sizeof *x);
+      x[J->ax[0]] = s->axes[0].lo + (s->axes[0].hi - s->axes[0].lo) * (double)i / (double)(J->g0 - 1);
+      x[J->ax[1]] = s->axes[1].lo + (s->axes[1].hi - s->axes[1].lo) * (double)j / (double)(J->g1 - 1);
     }
-  whirl_basins_options o;
-  whirl_basins_options_default(&o);
-  o.period = fp >= 0 ? 2.0 * WHIRL_PI / R->par[fp] : 1.0;
-  o.max_periods = (size_t)s->basin_periods;
-  o.rtol = 1e-9;
-  o.atol = 1e-12;
-  o.progress = progress;
-  o.progress_data = R;
-  whirl_basins_stats st;
+}
+
+int run_basins_setup(run_ctx *R) {
+  if (R->bjob) return 0;
+  const whirl_run_settings *s = R->s;
+  int ax0 = run_state_index(R, &s->axes[0].ref), ax1 = run_state_index(R, &s->axes[1].ref);
+  if (ax0 == ax1) {
+    run_fail(R, WHIRL_RK_BASIN_AXES, "BASIN_AXES: the two axes are the same "
+             "component '%s'", R->xnames[ax0]);
+    return -2;
+  }
+  run_basins_job *J = calloc(1, sizeof *J);
+  if (!J) return -1;
+  J->na = s->nattractors;
+  J->g0 = (size_t)s->grid[0];
+  J->g1 = (size_t)s->grid[1];
+  J->np = J->g0 * J->g1;
+  J->ax[0] = ax0;
+  J->ax[1] = ax1;
+  J->tg = calloc(J->na, sizeof *J->tg);
+  J->att = calloc(J->na, sizeof *J->att);
+  J->names = calloc(J->na, sizeof *J->names);
+  J->x0 = malloc(J->np * R->n * sizeof *J->x0);
+  int rc = J->tg && J->att && J->names && J->x0 ? attractors(R, J) : -1;
+  if (rc) {
+    run_basins_job_free(J);
+    return rc;
+  }
+  grid_states(R, J);
+  const int fp = R->model->forcing_param;
+  whirl_basins_options_default(&J->o);
+  J->o.period = fp >= 0 ? 2.0 * WHIRL_PI / R->par[fp] : 1.0;
+  J->o.max_periods = (size_t)s->basin_periods;
+  J->o.rtol = 1e-9;
+  J->o.atol = 1e-12;
+  R->plot.basins = 1;
+  R->plot.x_name = R->xnames[ax0];
+  R->plot.y_name = R->xnames[ax1];
+  R->plot.attractors = s->attractors;
+  R->plot.nattractors = J->na;
+  R->bjob = J;
+  return 0;
+}
+
+size_t run_basins_points(const run_ctx *R) { return R->bjob ? R->bjob->np : 0; }
+size_t run_basins_line(const run_ctx *R) { return R->bjob ? R->bjob->g0 : 0; }
+
+/* Classify the points first .. first + count − 1 of the grid: which[],
+ * periods[] for them.  0 or -1 (said). */
+int run_basins_classify(run_ctx *R, size_t first, size_t count, int *which,
+                        unsigned *periods, whirl_basins_stats *st) {
+  run_basins_job *J = R->bjob;
   char err[512];
-  int brc = whirl_basins_compute(&R->prob, R->par, np, x0, att, na, &o, which,
-                                 periods, &st, err, sizeof err);
+  whirl_basins_options o = J->o;
+  if (count == J->np) {
+    o.progress = progress;
+    o.progress_data = R;
+  }
+  int brc = whirl_basins_compute(&R->prob, R->par, count, J->x0 + first * R->n, J->att, J->na,
+                                 &o, which, periods, st, err, sizeof err);
   if (brc != WHIRL_OK) {
     run_say(R, "basins: %s", err);
-    goto done;
+    return -1;
   }
-  FILE *f = run_open(R, "basins.tsv");
-  if (!f) goto done;
-  fprintf(f, "# %s\t%s\tclass\tperiods\n", R->xnames[ax[0]], R->xnames[ax[1]]);
+  return 0;
+}
+
+/* Point q's row of basins.tsv (no newline): its two axis values, its class
+ * (an attractor's label, or -1 unsettled, -2 left the domain, -3 failed)
+ * and the periods integrated. */
+int run_basins_row(const run_ctx *R, size_t q, int which, unsigned periods, char *buf,
+                   size_t len) {
+  const run_basins_job *J = R->bjob;
+  const int cls = which >= 0 ? R->s->attractors[which] : which;
+  int m = snprintf(buf, len, "%.10g\t%.10g\t%d\t%u", J->x0[q * R->n + J->ax[0]],
+                   J->x0[q * R->n + J->ax[1]], cls, periods);
+  return m < 0 || (size_t)m >= len ? -1 : 0;
+}
+
+/* The header of basins.tsv. */
+int run_basins_header(const run_ctx *R, char *buf, size_t len) {
+  const run_basins_job *J = R->bjob;
+  int m = snprintf(buf, len, "# %s\t%s\tclass\tperiods", R->xnames[J->ax[0]], R->xnames[J->ax[1]]);
+  return m < 0 || (size_t)m >= len ? -1 : 0;
+}
+
+/* The summary lines (and the log's) from the classes of all points. */
+void run_basins_summary(run_ctx *R, const int *cls, size_t np) {
+  const run_basins_job *J = R->bjob;
   size_t count[WHIRL_RUN_MAXITEMS + 3] = {0};
-  for (size_t j = 0; j < g1; j++) {
-    for (size_t i = 0; i < g0; i++) {
-      size_t q = j * g0 + i;
-      int cls = which[q] >= 0 ? s->attractors[which[q]] : which[q];
-      count[which[q] >= 0 ? (size_t)which[q] + 3 : (size_t)(-which[q] - 1)]++;
-      fprintf(f, "%.10g\t%.10g\t%d\t%u\n", x0[q * n + ax[0]], x0[q * n + ax[1]],
-              cls, periods[q]);
-    }
-    fputc('\n', f);
+  for (size_t q = 0; q < np; q++) {
+    size_t k = 0;
+    if (cls[q] < 0) k = (size_t)(-cls[q] - 1);
+    for (size_t a = 0; cls[q] >= 0 && a < J->na; a++)
+      if (R->s->attractors[a] == cls[q]) k = a + 3;
+    count[k]++;
   }
-  if (run_close(R, f, "basins.tsv")) goto done;
-  fprintf(R->log, "grid %zu x %zu, %zu periods, %zu steps, %zu RHS evaluations\n",
-          g0, g1, st.periods, st.steps, st.rhs_evals);
   char line[1024];
-  int len = snprintf(line, sizeof line, "basins: %zu x %zu grid at", g0, g1);
+  int len = snprintf(line, sizeof line, "basins: %zu x %zu grid at", J->g0, J->g1);
   for (size_t k = 0; k < R->npar && len > 0 && (size_t)len < sizeof line; k++)
     len += snprintf(line + len, sizeof line - (size_t)len, " %s = %g", R->pnames[k], R->par[k]);
   run_summary(R, "%s", line);
-  for (size_t a = 0; a < na; a++) {
-    fprintf(R->log, "  LAB %d: %zu points (%.1f%%)\n", s->attractors[a], count[a + 3],
-            100.0 * (double)count[a + 3] / (double)np);
-    run_summary(R, "  attractor LAB %d: %.1f%% of the grid", s->attractors[a],
+  for (size_t a = 0; a < J->na; a++) {
+    if (R->log)
+      fprintf(R->log, "  LAB %d: %zu points (%.1f%%)\n", R->s->attractors[a], count[a + 3],
+              100.0 * (double)count[a + 3] / (double)np);
+    run_summary(R, "  attractor LAB %d: %.1f%% of the grid", R->s->attractors[a],
                 100.0 * (double)count[a + 3] / (double)np);
   }
-  fprintf(R->log, "  unsettled: %zu, left the domain: %zu, failed: %zu\n",
-          count[0], count[1], count[2]);
+  if (R->log)
+    fprintf(R->log, "  unsettled: %zu, left the domain: %zu, failed: %zu\n", count[0],
+            count[1], count[2]);
   run_summary(R, "  unsettled %zu, left the domain %zu, failed %zu", count[0], count[1],
               count[2]);
-  /* what the picture shows */
-  R->plot.x_name = R->xnames[ax[0]];
-  R->plot.y_name = R->xnames[ax[1]];
-  R->plot.attractors = s->attractors;
-  R->plot.nattractors = na;
-  rc = 0;
-done:
-  if (tg)
-    for (size_t a = 0; a < na; a++) free(tg[a].x);
-  free(tg);
-  free(att);
-  free(x0);
+}
+
+int run_basins(run_ctx *R) {
+  int rc = run_basins_setup(R);
+  if (rc) return rc;
+  run_basins_job *J = R->bjob;
+  fprintf(R->log, "basins at");
+  for (size_t k = 0; k < R->npar; k++) fprintf(R->log, " %s = %.10g", R->pnames[k], R->par[k]);
+  fputc('\n', R->log);
+  int *which = malloc(J->np * sizeof *which), *cls = malloc(J->np * sizeof *cls);
+  unsigned *periods = malloc(J->np * sizeof *periods);
+  whirl_basins_stats st;
+  rc = which && cls && periods ? run_basins_classify(R, 0, J->np, which, periods, &st) : -1;
+  FILE *f = rc ? NULL : run_open(R, "basins.tsv");
+  char line[256];
+  if (!rc && (!f || run_basins_header(R, line, sizeof line))) rc = -1;
+  if (!rc) fprintf(f, "%s\n", line);
+  for (size_t q = 0; !rc && q < J->np; q++) {
+    if (run_basins_row(R, q, which[q], periods[q], line, sizeof line)) rc = -1;
+    else fprintf(f, "%s\n%s", line, (q + 1) % J->g0 == 0 ? "\n" : "");
+    cls[q] = which[q] >= 0 ? R->s->attractors[which[q]] : which[q];
+  }
+  if (f && run_close(R, f, "basins.tsv")) rc = -1;
+  if (!rc) {
+    fprintf(R->log, "grid %zu x %zu, %zu periods, %zu steps, %zu RHS evaluations\n",
+            J->g0, J->g1, st.periods, st.steps, st.rhs_evals);
+    run_basins_summary(R, cls, J->np);
+  }
   free(which);
+  free(cls);
   free(periods);
-  free(names);
   return rc;
 }

@@ -28,6 +28,8 @@
 enum { RUN_PLOT_DEFAULT, RUN_PLOT_PAR, RUN_PLOT_PERIOD, RUN_PLOT_L2,
        RUN_PLOT_STATE };
 
+typedef struct run_basins_job run_basins_job;
+
 struct whirl_run {
   whirl_runfile *rf;
   const whirl_run_settings *s;
@@ -66,6 +68,7 @@ struct whirl_run {
   size_t curves, isolated, closed;
   /* parameter study (run_study.c): the grid's axes */
   int in_study;            /* a point of a study: STUDY is not run */
+  run_basins_job *bjob;    /* basins: the attractors and the grid */
   size_t study_naxes, study_npoints;
   int study_par[WHIRL_RUN_MAXITEMS];
   size_t study_first[WHIRL_RUN_MAXITEMS], study_nval[WHIRL_RUN_MAXITEMS];
@@ -164,7 +167,18 @@ int run_discover(run_ctx *R, const branch_spec *b0);
 int run_study_resolve(run_ctx *R);
 int run_study(run_ctx *R);
 
-/* run_basins.c */
+/* run_basins.c: the whole grid (execute), or its points by blocks (the
+ * rows of whirl/run.h): setup once, then classify, rows, summary */
 int run_basins(run_ctx *R);
+int run_basins_setup(run_ctx *R);
+void run_basins_job_free(run_basins_job *J);
+size_t run_basins_points(const run_ctx *R);
+size_t run_basins_line(const run_ctx *R);
+int run_basins_classify(run_ctx *R, size_t first, size_t count, int *which,
+                        unsigned *periods, whirl_basins_stats *st);
+int run_basins_row(const run_ctx *R, size_t q, int which, unsigned periods, char *buf,
+                   size_t len);
+int run_basins_header(const run_ctx *R, char *buf, size_t len);
+void run_basins_summary(run_ctx *R, const int *cls, size_t np);
 
 #endif

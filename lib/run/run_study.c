@@ -55,8 +55,11 @@ int run_study_resolve(run_ctx *R) {
   return 0;
 }
 
-size_t whirl_run_study_size(const whirl_run *r) {
-  return r && r->s && !r->in_study ? r->study_npoints : 0;
+static int is_study(const whirl_run *r) {
+  return r && r->s && !r->in_study && r->study_npoints > 0;
+}
+static int is_basins(const whirl_run *r) {
+  return r && r->s && !r->in_study && r->s->ips == WHIRL_IPS_BASINS;
 }
 
 /* Append to buf[len] at *pos; -1 when it does not fit. */
@@ -70,9 +73,9 @@ static int put(char *buf, size_t len, size_t *pos, const char *fmt, ...) {
   return 0;
 }
 
-int whirl_run_study_header(const whirl_run *R, char *buf, size_t len) {
+static int study_header(const whirl_run *R, char *buf, size_t len) {
   size_t pos = 0;
-  if (!whirl_run_study_size(R) || put(buf, len, &pos, "point")) return WHIRL_EINVAL;
+  if (put(buf, len, &pos, "point")) return WHIRL_EINVAL;
   for (size_t a = 0; a < R->study_naxes; a++)
     if (put(buf, len, &pos, "\t%s", R->pnames[R->study_par[a]])) return WHIRL_EINVAL;
   return put(buf, len, &pos, "\tstatus\tbranches\tisolated\tclosed\tLP\tBP\tHB\tPD\tTR\tUZ")
@@ -131,8 +134,7 @@ static int run_point(run_ctx *R, size_t i, const double *v, whirl_run **out) {
   return rc == 2 ? 2 : rc ? 3 : whirl_run_failed(c) ? 1 : 0;
 }
 
-int whirl_run_study_row(whirl_run *R, size_t i, char *buf, size_t len) {
-  if (i >= whirl_run_study_size(R)) return WHIRL_EINVAL;
+static int study_row(whirl_run *R, size_t i, char *buf, size_t len) {
   double v[WHIRL_RUN_MAXITEMS];
   point_values(R, i, v);
   whirl_run *c = NULL;
@@ -159,13 +161,96 @@ int run_study(run_ctx *R) {
   char line[4096];
   FILE *f = run_open(R, "study.tsv");
   if (!f) return -1;
-  int rc = whirl_run_study_header(R, line, sizeof line);
+  int rc = study_header(R, line, sizeof line);
   if (!rc) fprintf(f, "%s\n", line);
   for (size_t i = 0; !rc && i < R->study_npoints; i++) {
     if (R->io.progress) R->io.progress(i, R->study_npoints, R->io.ctx);
-    rc = whirl_run_study_row(R, i, line, sizeof line);
+    rc = study_row(R, i, line, sizeof line);
     if (!rc) fprintf(f, "%s\n", line);
   }
   fprintf(R->log, "parameter study: %zu points\n", R->study_npoints);
   return run_close(R, f, "study.tsv") || rc ? -1 : 0;
+}
+
+/* ---- the rows of a table computed in blocks (whirl/run.h) ----------------- */
+
+size_t whirl_run_rows(const whirl_run *r) {
+  if (is_study(r)) return r->study_npoints;
+  if (is_basins(r)) return (size_t)r->s->grid[0] * (size_t)r->s->grid[1];
+  return 0;
+}
+
+size_t whirl_run_rows_block(const whirl_run *r) {
+  return is_basins(r) ? (size_t)r->s->grid[0] : is_study(r) ? 1 : 0;
+}
+
+const char *whirl_run_rows_file(const whirl_run *r) {
+  return is_basins(r) ? "basins.tsv" : is_study(r) ? "study.tsv" : NULL;
+}
+
+int whirl_run_rows_prepare(whirl_run *r) {
+  if (!whirl_run_rows(r)) return WHIRL_EINVAL;
+  if (!is_basins(r)) return 0;
+  int rc = run_basins_setup(r);
+  return rc == -2 ? 2 : rc ? 1 : 0;
+}
+
+int whirl_run_rows_header(const whirl_run *r, char *buf, size_t len) {
+  if (is_study(r)) return study_header(r, buf, len);
+  if (is_basins(r) && r->bjob) return run_basins_header(r, buf, len) ? WHIRL_EINVAL : WHIRL_OK;
+  return WHIRL_EINVAL;
+}
+
+/* A basins block: one grid line, classified together (OpenMP inside). */
+static int basins_block(whirl_run *R, size_t b, char **out) {
+  const size_t B = run_basins_line(R), first = b * B;
+  int *which = malloc(B * sizeof *which);
+  unsigned *periods = malloc(B * sizeof *periods);
+  char *text = malloc(B * 96 + 1);
+  whirl_basins_stats st;
+  int rc = which && periods && text ? run_basins_classify(R, first, B, which, periods, &st) : -1;
+  size_t pos = 0;
+  for (size_t q = 0; !rc && q < B; q++) {
+    if (q) text[pos++] = '\n';
+    rc = run_basins_row(R, first + q, which[q], periods[q], text + pos, 96);
+    pos += strlen(text + pos);
+  }
+  free(which);
+  free(periods);
+  if (rc) {
+    free(text);
+    return WHIRL_EINVAL;
+  }
+  *out = text;
+  return WHIRL_OK;
+}
+
+int whirl_run_rows_compute(whirl_run *r, size_t block, char **out) {
+  *out = NULL;
+  const size_t B = whirl_run_rows_block(r);
+  if (!B || block >= whirl_run_rows(r) / B) return WHIRL_EINVAL;
+  if (is_basins(r)) return r->bjob ? basins_block(r, block, out) : WHIRL_EINVAL;
+  char row[4096];
+  int rc = study_row(r, block, row, sizeof row);
+  if (!rc && !(*out = strdup(row))) rc = WHIRL_ENOMEM;
+  return rc;
+}
+
+int whirl_run_rows_finish(whirl_run *r, const char *const *blocks, size_t nblocks) {
+  if (!is_basins(r)) return is_study(r) ? WHIRL_OK : WHIRL_EINVAL;
+  const size_t np = whirl_run_rows(r);
+  int *cls = malloc(np * sizeof *cls);
+  if (!cls) return WHIRL_ENOMEM;
+  size_t q = 0;
+  for (size_t b = 0; b < nblocks; b++)
+    for (const char *c = blocks[b]; c && *c && q < np;) {
+      const char *t = strchr(c, '\t');
+      t = t ? strchr(t + 1, '\t') : NULL;
+      cls[q++] = t ? atoi(t + 1) : -3;
+      c = strchr(c, '\n');
+      c = c ? c + 1 : NULL;
+    }
+  if (q == np) run_basins_summary(r, cls, np);
+  free(cls);
+  return q == np ? WHIRL_OK : WHIRL_EINVAL;
 }

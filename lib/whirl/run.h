@@ -104,21 +104,34 @@ WHIRL_API const whirl_run_plot *whirl_run_plot_info(const whirl_run *r);
 WHIRL_API const char *whirl_run_model_name(const whirl_run *r);
 WHIRL_API const char *whirl_run_file_name(const whirl_run *r);
 
-/* ---- parameter studies (STUDY, doc/parameter-studies.md) ----
- * A run file with STUDY = {name: [values], ...} runs its analysis at every
- * point of the grid; whirl_run_execute writes study.tsv (a header, then a
- * row a point) and run.log.  A caller that distributes the points itself
- * (processes, a checkpoint) asks for the rows one by one: each depends on
- * its point alone, so rows computed anywhere are the same bytes. */
-/* The number of points (0: not a study). */
-WHIRL_API size_t whirl_run_study_size(const whirl_run *r);
-/* The header line of study.tsv (no newline) into buf[len]: WHIRL_OK, or
- * WHIRL_EINVAL (not a study, too long). */
-WHIRL_API int whirl_run_study_header(const whirl_run *r, char *buf, size_t len);
-/* Compute point i and write its row (no newline): WHIRL_OK also when the
- * point's run failed (its status column says so), WHIRL_EINVAL for i out
- * of range or a row longer than len. */
-WHIRL_API int whirl_run_study_row(whirl_run *r, size_t i, char *buf, size_t len);
+/* ---- tables computed in blocks: parameter studies and basins ----
+ * A parameter study (STUDY = {name: [values], ...}, doc/parameter-studies.md)
+ * runs its analysis at every point of a grid; whirl_run_execute writes
+ * study.tsv (a header, then a row a point) and run.log.  Basins (IPS =
+ * basins) write basins.tsv, a row a start state.  A caller that
+ * distributes the work itself (processes, a checkpoint) computes the rows
+ * by blocks: each block depends on its index alone, so blocks computed
+ * anywhere give the same bytes. */
+/* The rows of the table (0: neither a study nor basins). */
+WHIRL_API size_t whirl_run_rows(const whirl_run *r);
+/* Rows computed together: 1 for a study, a grid line for basins (the table
+ * has a blank line after each block of more than one row). */
+WHIRL_API size_t whirl_run_rows_block(const whirl_run *r);
+/* "study.tsv" or "basins.tsv". */
+WHIRL_API const char *whirl_run_rows_file(const whirl_run *r);
+/* Before the first block (basins: the attractors from S): 0, 2 bad input,
+ * 1 failure (said through io.message). */
+WHIRL_API int whirl_run_rows_prepare(whirl_run *r);
+/* The table's header line (no newline) into buf[len]. */
+WHIRL_API int whirl_run_rows_header(const whirl_run *r, char *buf, size_t len);
+/* Block `block`'s rows, joined by newlines (no final one), in *out
+ * (malloc'd, the caller frees): WHIRL_OK also when a study point's run
+ * failed (its status column says so). */
+WHIRL_API int whirl_run_rows_compute(whirl_run *r, size_t block, char **out);
+/* After the last block, all of them in order: the summary (basins: the
+ * attractors' shares) through io.summary, and what the picture shows. */
+WHIRL_API int whirl_run_rows_finish(whirl_run *r, const char *const *blocks,
+                                    size_t nblocks);
 
 /* The first error message (a run file's FILE:LINE: ...), "" if none. */
 WHIRL_API const char *whirl_run_errmsg(const whirl_run *r);
