@@ -10,6 +10,9 @@
 #    checkpoint kept, nothing written;
 #  - MPI (when built --with-mpi and mpirun exists): 2 and 4 ranks give the
 #    serial file;
+#  - basins (IPS = basins, the Jeffcott rotor's, 11 x 11) through the same
+#    blocks: chunks merged, a killed run resumed and MPI give the same
+#    basins.tsv as one process;
 #  - bad input: a grid without points, an unknown parameter, the
 #    continuation parameter as an axis, a chunk out of range, a missing
 #    chunk: one message, exit 2.
@@ -76,6 +79,41 @@ if grep -q "define WHIRL_HAVE_MPI 1" "$cb/config.h" 2> /dev/null && command -v m
     mpirun --allow-run-as-root --oversubscribe -n $np "$WHIRL" run grid.whirl --quiet --OUT=mpi$np > mpi$np.txt 2>&1
     cmp -s serial.tsv mpi$np/study.tsv
     ok $? "mpirun -n $np: the serial study.tsv ($(head -c 200 mpi$np.txt))"
+  done
+else
+  echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
+  echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
+fi
+
+# basins (IPS = basins) through the same blocks: the Jeffcott rotor's at
+# Omega = 1.59 on an 11 x 11 grid (examples/jeffcott), a grid line a block
+cp "$top_srcdir/examples/jeffcott/response.whirl" "$top_srcdir/examples/jeffcott/basins.whirl" .
+"$WHIRL" run response.whirl --quiet > /dev/null 2>&1
+"$WHIRL" run basins.whirl --BASIN_GRID=11 --OUT=b1 > b1.txt 2> b1.err
+ok $? "basins, one process: $(head -c 200 b1.err)"
+[ "$(grep -c . b1/basins.tsv)" -eq 122 ] && [ "$(grep -c '^$' b1/basins.tsv)" -eq 11 ] && [ -s b1/basins.png ] &&
+  grep -q "attractor LAB 2: .*% of the grid" b1.txt
+ok $? "basins.tsv: a header, 121 points, a blank line after each grid line; basins.png; the shares"
+for i in 1 2 3; do "$WHIRL" run basins.whirl --BASIN_GRID=11 --OUT=bc --chunk=$i/3 --quiet; done
+"$WHIRL" run basins.whirl --BASIN_GRID=11 --OUT=bc --merge-chunks=3 --quiet
+cmp -s b1/basins.tsv bc/basins.tsv && [ -s bc/basins.png ]
+ok $? "basins in 3 chunks, merged: the same basins.tsv, and the picture"
+"$WHIRL" run basins.whirl --BASIN_GRID=11 --OUT=bk --quiet > /dev/null 2>&1 &
+pid=$!
+k=0
+while [ "$k" -lt 300 ] && [ "$(cat bk.checkpoint 2> /dev/null | wc -l)" -lt 3 ]; do sleep 0.05; k=$((k + 1)); done
+kill -TERM $pid 2> /dev/null
+wait $pid 2> /dev/null
+[ ! -e bk ] && [ -s bk.checkpoint ]
+ok $? "basins killed after $(($(wc -l < bk.checkpoint) - 1)) of 11 grid lines: only the checkpoint"
+"$WHIRL" run basins.whirl --BASIN_GRID=11 --OUT=bk > bk.txt 2>&1
+cmp -s b1/basins.tsv bk/basins.tsv && grep -q "from the checkpoint" bk.txt
+ok $? "basins started again: the same basins.tsv ($(tail -n 1 bk.txt))"
+if grep -q "define WHIRL_HAVE_MPI 1" "$cb/config.h" 2> /dev/null && command -v mpirun > /dev/null; then
+  for np in 2 4; do
+    mpirun --allow-run-as-root --oversubscribe -n $np "$WHIRL" run basins.whirl --BASIN_GRID=11 --quiet --OUT=bm$np > bm$np.txt 2>&1
+    cmp -s b1/basins.tsv bm$np/basins.tsv
+    ok $? "basins, mpirun -n $np: the same basins.tsv"
   done
 else
   echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
