@@ -35,9 +35,10 @@ static void usage(FILE *f) {
           "Output directory (default FILE's name with .out): branches.tsv,\n"
           "solutions, run.log, diagram.png.  The format: doc/run-files.md.\n"
           "\n"
-          "A parameter study (STUDY = {name: [values], ...}, doc/parameter-studies.md)\n"
-          "writes study.tsv, one row a point; it resumes from OUT.checkpoint when\n"
-          "started again, runs on MPI under mpirun (built --with-mpi), and in parts:\n"
+          "A parameter study (STUDY = {name: [values], ...}: study.tsv, a row a\n"
+          "point) and basins (IPS = basins) resume from OUT.checkpoint when started\n"
+          "again, run on MPI under mpirun (built --with-mpi), and in parts\n"
+          "(doc/parameter-studies.md):\n"
           "  --chunk=I/N        the I-th of N parts, into OUT.chunk-I-of-N/\n"
           "  --merge-chunks=N   join the N parts into OUT/study.tsv\n");
 }
