@@ -40,7 +40,7 @@ static void usage(FILE *f) {
           "again, run on MPI under mpirun (built --with-mpi), and in parts\n"
           "(doc/parameter-studies.md):\n"
           "  --chunk=I/N        the I-th of N parts, into OUT.chunk-I-of-N/\n"
-          "  --merge-chunks=N   join the N parts into OUT/study.tsv\n");
+          "  --merge-chunks=N   join the N parts into OUT\n");
 }
 
 /* "--NMX 5": an override written with a blank for '=' would take its value
