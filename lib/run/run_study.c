@@ -13,6 +13,7 @@
  * rows computed in any order, by any number of processes, are the same
  * bytes (the command distributes them: drivers/run_study.c).
  * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* strdup */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
