@@ -272,7 +272,8 @@ whirl_fe_hbm *whirl_fe_hbm_alloc(const whirl_fe_rotor *r,
   h->L = 2 * h->H + 1;
   h->N = N;
   if (fe_aft_init(&h->aft, r, h->H, N, errbuf, errlen)) goto fail;
-  if ((rc = fe_lin_init(&h->lin, r, !o->uncondensed, h->H, (int)o->nu, &h->aft))) {
+  if ((rc = fe_lin_init(&h->lin, r, !o->uncondensed, o->interior_lu, h->H, (int)o->nu,
+                         &h->aft))) {
     WHIRL_ERRMSG(errbuf, errlen, rc, "%s", h->lin.err[0] ? h->lin.err : whirl_strerror(rc));
     goto fail;
   }

@@ -69,6 +69,31 @@ int fe_aft_eval(fe_aft *a, const double *q, double w, double Omega, double *f,
 
 /* -------------------------------------------------------- linear part */
 
+/* A complex banded LU of a sparse n×n matrix in a reverse Cuthill–McKee
+ * ordering (fe_band.c): init from the CSC pattern, factor from values on
+ * that pattern, solve B (n × nrhs, original order) in place with A or Aᵀ. */
+typedef struct fe_band {
+  int n, kl, ku, ldab;
+  int kv;               /* U's upper bandwidth after the factorisation:
+                           ku without row swaps, at most kl + ku */
+  int *perm, *pinv;     /* perm[new] = old */
+  size_t *pos;          /* band position of each pattern entry */
+  int *ipiv;
+  double *scale;        /* equilibration, new order */
+  double complex *ab;   /* ldab × n, LAPACK's band storage with fill rows */
+  double complex *work;
+  size_t nwork;
+} fe_band;
+
+int fe_band_init(fe_band *b, int n, const int *Ap, const int *Ai);
+void fe_band_free(fe_band *b);
+int fe_band_factor(fe_band *b, const int *Ap, const double complex *x);
+int fe_band_solve(fe_band *b, int transpose, int nrhs, double complex *B);
+
+/* The interior block goes to the banded LU while kl + ku stays at most
+ * this (beam rotors: 14–22); wider patterns go to UMFPACK. */
+#define FE_BAND_MAX 64
+
 /* Per harmonic k = 0..H, the complex b×b dynamic stiffness Z_k (condensed:
  * the Schur complement of D_k onto the nonlinear DOFs; else D_k itself),
  * its derivative in Ω, and the forces g per unit unbalance (harmonic ν) and
@@ -89,8 +114,14 @@ typedef struct fe_lin {
   double *Kx, *Mx, *Cx, *Gx;           /* the four on the union pattern */
   int *inv;                            /* DOF → interior index or −1 − nl */
   int *Lp, *Li, *Lmap;                 /* interior pattern, map into union */
-  double *Lx, *Lz;
-  void *symbolic;
+  double *Lx, *Lz;                     /* interior values (UMFPACK) */
+  double complex *Dv, *dDv;            /* D_k, ∂D_k/∂Ω on the union pattern */
+  double complex *Lv;                  /* interior values (band) */
+  double complex *rhs;                 /* ni × (2m + 1) right-hand sides */
+  int interior_lu;                     /* whirl_fe_hbm_options' */
+  int use_band, k0_done;               /* k = 0 does not depend on Ω */
+  fe_band band;
+  void *symbolic, *numeric;
   double control[20]; /* UMFPACK_CONTROL (20, checked in fe_hbm_lin.c):
                          no iterative refinement */
   double complex *Xk;                  /* (H+1) ni·m: D_ll⁻¹ D_ln */
@@ -100,8 +131,8 @@ typedef struct fe_lin {
   char err[256];
 } fe_lin;
 
-int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed, int H,
-                int nu, const fe_aft *a);
+int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed,
+                int interior_lu, int H, int nu, const fe_aft *a);
 void fe_lin_free(fe_lin *l);
 /* Z, dZ, g at speed Omega (cached); WHIRL_OK or an error, message in err */
 int fe_lin_update(fe_lin *l, double Omega);

@@ -4,9 +4,10 @@
  * condensed exactly onto the nonlinear DOFs n by the Schur complement
  *   Z_k = D_nn − D_nl D_ll⁻¹ D_ln = Vᵀ D_k W,  g_k = F_n − D_nl D_ll⁻¹ F_l
  *       = Vᵀ F_k,   W = [−D_ll⁻¹ D_ln; I],  V = [−D_ll⁻ᵀ D_nlᵀ; I]
- * (one complex sparse LU of the interior block D_ll per harmonic and speed,
- * UMFPACK's zi interface, Davis, ACM TOMS 30 (2004) 196; m solves with D_ll
- * and m with its transpose), and the derivatives in Ω without another
+ * (one complex LU of the interior block D_ll per harmonic and speed —
+ * banded in a reverse Cuthill–McKee ordering (fe_band.c) for beam rotors,
+ * UMFPACK's zi interface (Davis, ACM TOMS 30 (2004) 196) for wider
+ * patterns — then m solves with D_ll and m with its transpose), and the derivatives in Ω without another
  * factorisation: since Vᵀ D = [0 Z] and D W = [0; Z],
  *   ∂Z/∂Ω = Vᵀ (∂D/∂Ω) W,   ∂g/∂Ω = Vᵀ (∂F/∂Ω − (∂D/∂Ω) [D_ll⁻¹ F_l; 0]).
  * Uncondensed, Z_k = D_k and g_k = F_k themselves (dense).
@@ -93,6 +94,12 @@ static int interior_pattern(fe_lin *l) {
     l->Lp[l->inv[c] + 1] = nz;
   }
   if (ni == 0) return WHIRL_OK;
+  int rc = fe_band_init(&l->band, ni, l->Lp, l->Li);
+  if (rc) return rc;
+  l->use_band = l->interior_lu == 1 ||
+                (l->interior_lu == 0 && l->band.kl + l->band.ku <= FE_BAND_MAX);
+  if (l->use_band) return WHIRL_OK;
+  fe_band_free(&l->band);
   /* UMFPACK's default two steps of iterative refinement per solve cost more
    * than the solve; the interior block is well conditioned away from the
    * held rotor's resonances, and condensed = uncondensed to 1e-14 without
@@ -109,9 +116,10 @@ static int interior_pattern(fe_lin *l) {
   return WHIRL_OK;
 }
 
-int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed, int H,
-                int nu, const fe_aft *a) {
+int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed,
+                int interior_lu, int H, int nu, const fe_aft *a) {
   memset(l, 0, sizeof *l);
+  l->interior_lu = interior_lu;
   l->r = r;
   l->condensed = condensed;
   l->H = H;
@@ -134,6 +142,12 @@ int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed, int H,
   if (rc || !condensed) return rc;
   if ((rc = interior_pattern(l))) return rc;
   size_t ni = (size_t)l->ni ? (size_t)l->ni : 1;
+  size_t nz = (size_t)(l->nnz ? l->nnz : 1);
+  l->Dv = malloc(nz * sizeof *l->Dv);
+  l->dDv = malloc(nz * sizeof *l->dDv);
+  l->Lv = malloc(nz * sizeof *l->Lv);
+  l->rhs = malloc(ni * (2 * m + 1) * sizeof *l->rhs);
+  if (!l->Dv || !l->dDv || !l->Lv || !l->rhs) return WHIRL_ENOMEM;
   l->Xk = calloc((size_t)(H + 1) * ni * m, sizeof *l->Xk);
   l->yk = calloc((size_t)(H + 1) * ni, sizeof *l->yk);
   l->w1 = malloc(n * m * sizeof *l->w1);
@@ -149,8 +163,10 @@ int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed, int H,
 }
 
 void fe_lin_free(fe_lin *l) {
+  if (l->numeric) umfpack_zi_free_numeric(&l->numeric);
   if (l->symbolic) umfpack_zi_free_symbolic(&l->symbolic);
-  void *p[] = {l->pos, l->Z, l->dZ, l->gu, l->dgu, l->g0, l->Up, l->Ui,
+  fe_band_free(&l->band);
+  void *p[] = {l->Dv, l->dDv, l->Lv, l->rhs, l->pos, l->Z, l->dZ, l->gu, l->dgu, l->g0, l->Up, l->Ui,
                l->Kx, l->Mx, l->Cx, l->Gx, l->inv, l->Lp, l->Li, l->Lmap,
                l->Lx, l->Lz, l->Xk, l->yk, l->w1, l->w2, l->w3, l->br};
   for (size_t i = 0; i < sizeof p / sizeof *p; ++i) free(p[i]);
@@ -168,14 +184,23 @@ static double complex dval(const fe_lin *l, int q, int k, double Omega, int d) {
          I * (dw * l->Cx[q] + (dw * Omega + w) * l->Gx[q]);
 }
 
-/* y[ndof] = D x (d = 0) or ∂D/∂Ω x (d = 1), x[ndof]. */
-static void matvec(const fe_lin *l, int k, double Omega, int d,
-                   const double complex *x, double complex *y) {
+/* D_k and ∂D_k/∂Ω on the union pattern, once per harmonic and speed. */
+static void values(fe_lin *l, int k, double Omega) {
+  for (int q = 0; q < l->nnz; ++q) {
+    l->Dv[q] = dval(l, q, k, Omega, 0);
+    l->dDv[q] = dval(l, q, k, Omega, 1);
+  }
+}
+
+/* y[ndof] = D x (d = 0) or ∂D/∂Ω x (d = 1), x[ndof], at the values of
+ * values(). */
+static void matvec(const fe_lin *l, int d, const double complex *x,
+                   double complex *y) {
+  const double complex *A = d ? l->dDv : l->Dv;
   memset(y, 0, (size_t)l->ndof * sizeof *y);
   for (int c = 0; c < l->ndof; ++c)
     if (x[c] != 0)
-      for (int q = l->Up[c]; q < l->Up[c + 1]; ++q)
-        y[l->Ui[q]] += dval(l, q, k, Omega, d) * x[c];
+      for (int q = l->Up[c]; q < l->Up[c + 1]; ++q) y[l->Ui[q]] += A[q] * x[c];
 }
 
 static double complex vdot(const double complex *v, const double complex *x,
@@ -185,74 +210,94 @@ static double complex vdot(const double complex *v, const double complex *x,
   return s;
 }
 
-/* x = D_ll⁻¹ b (sys UMFPACK_A) or D_ll⁻ᵀ b (UMFPACK_Aat), b given in br/bz,
- * the result in xr/xz. */
-static int lsolve(fe_lin *l, void *numeric, int sys) {
-  int st = umfpack_zi_solve(sys, l->Lp, l->Li, l->Lx, l->Lz, l->xr, l->xz,
-                            l->br, l->bz, numeric, l->control, NULL);
-  if (st != UMFPACK_OK && st != UMFPACK_WARNING_singular_matrix) {
-    snprintf(l->err, sizeof l->err, "UMFPACK solve: status %d", st);
-    return WHIRL_ESPARSE;
+/* ---------------------------------------------------- the interior block */
+
+/* Factor D_ll at the values of values(): banded LU or UMFPACK. */
+static int interior_factor(fe_lin *l, int k, double Omega) {
+  int nzl = l->Lp[l->ni], st;
+  if (l->use_band) {
+    for (int q = 0; q < nzl; ++q) l->Lv[q] = l->Dv[l->Lmap[q]];
+    st = fe_band_factor(&l->band, l->Lp, l->Lv);
+    if (st == WHIRL_OK) return WHIRL_OK;
+  } else {
+    for (int q = 0; q < nzl; ++q) {
+      l->Lx[q] = creal(l->Dv[l->Lmap[q]]);
+      l->Lz[q] = cimag(l->Dv[l->Lmap[q]]);
+    }
+    if (l->numeric) umfpack_zi_free_numeric(&l->numeric);
+    st = umfpack_zi_numeric(l->Lp, l->Li, l->Lx, l->Lz, l->symbolic,
+                            &l->numeric, l->control, NULL);
+    if (st == UMFPACK_OK) return WHIRL_OK;
+    st = st == UMFPACK_WARNING_singular_matrix ? WHIRL_ESINGULAR : WHIRL_ESPARSE;
+  }
+  snprintf(l->err, sizeof l->err,
+           "the rotor with its nonlinear DOFs held is singular at harmonic "
+           "%d, Omega = %g rad/s", k, Omega);
+  return st;
+}
+
+/* B (ni × nrhs) := D_ll⁻¹ B, or D_ll⁻ᵀ B (the plain transpose). */
+static int interior_solve(fe_lin *l, int transpose, int nrhs,
+                          double complex *B) {
+  if (l->use_band) return fe_band_solve(&l->band, transpose, nrhs, B);
+  int ni = l->ni, sys = transpose ? UMFPACK_Aat : UMFPACK_A;
+  for (int r = 0; r < nrhs; ++r) {
+    double complex *x = B + (size_t)ni * r;
+    for (int i = 0; i < ni; ++i) { l->br[i] = creal(x[i]); l->bz[i] = cimag(x[i]); }
+    int st = umfpack_zi_solve(sys, l->Lp, l->Li, l->Lx, l->Lz, l->xr, l->xz,
+                              l->br, l->bz, l->numeric, l->control, NULL);
+    if (st != UMFPACK_OK && st != UMFPACK_WARNING_singular_matrix) {
+      snprintf(l->err, sizeof l->err, "UMFPACK solve: status %d", st);
+      return WHIRL_ESPARSE;
+    }
+    for (int i = 0; i < ni; ++i) x[i] = l->xr[i] + I * l->xz[i];
   }
   return WHIRL_OK;
 }
 
-/* Full-length column u[ndof] = [−x; e_j] from the interior solution. */
-static void basis_column(const fe_lin *l, int j, double complex *u,
-                         double complex *xint) {
+/* Full-length column u[ndof] = [−x; e_j] from the interior solution x. */
+static void basis_column(const fe_lin *l, int j, const double complex *x,
+                         double complex *u) {
   for (int d = 0; d < l->ndof; ++d) {
     int s = l->inv[d];
-    if (s >= 0) {
-      xint[s] = l->xr[s] + I * l->xz[s];
-      u[d] = -xint[s];
-    } else {
-      u[d] = (-1 - s == j) ? 1.0 : 0.0;
-    }
+    u[d] = s >= 0 ? -x[s] : ((-1 - s == j) ? 1.0 : 0.0);
   }
 }
 
 /* ------------------------------------------------------ condensed update */
 
-/* W (w1) and V (w2) of harmonic k with D_ll factorised in numeric. */
-static int bases(fe_lin *l, int k, double Omega, void *numeric) {
-  int n = l->ndof, m = l->m, ni = l->ni;
-  double complex *Xk = l->Xk + (size_t)k * ni * m;
+/* W (w1) and V (w2) of harmonic k with D_ll factorised: the m right
+ * columns D_ll x = D_l,dj and the m left ones D_llᵀ x = (D_dj,l)ᵀ in one
+ * solve each; X_k keeps the right ones for the recovery. */
+static int bases(fe_lin *l, int k) {
+  int n = l->ndof, m = l->m, ni = l->ni, rc;
+  double complex *R = l->rhs, *Lt = l->rhs + (size_t)ni * m;
+  memset(R, 0, 2 * (size_t)ni * m * sizeof *R);
+  for (int c = 0; c < n; ++c)
+    for (int q = l->Up[c]; q < l->Up[c + 1]; ++q) {
+      int row = l->inv[l->Ui[q]], col = l->inv[c];
+      if (row >= 0 && col < 0) R[row + (size_t)ni * (-1 - col)] = l->Dv[q];
+      if (row < 0 && col >= 0) Lt[col + (size_t)ni * (-1 - row)] = l->Dv[q];
+    }
+  if (ni && ((rc = interior_solve(l, 0, m, R)) ||
+             (rc = interior_solve(l, 1, m, Lt))))
+    return rc;
+  memcpy(l->Xk + (size_t)k * ni * m, R, (size_t)ni * m * sizeof *R);
   for (int j = 0; j < m; ++j) {
-    int dj = l->nldof[j], rc;
-    /* right: D_ll x = D_l,dj (column dj of D, interior rows) */
-    memset(l->br, 0, 2 * (size_t)ni * sizeof *l->br);
-    for (int q = l->Up[dj]; q < l->Up[dj + 1]; ++q)
-      if (l->inv[l->Ui[q]] >= 0) {
-        double complex v = dval(l, q, k, Omega, 0);
-        l->br[l->inv[l->Ui[q]]] = creal(v);
-        l->bz[l->inv[l->Ui[q]]] = cimag(v);
-      }
-    if (ni && (rc = lsolve(l, numeric, UMFPACK_A))) return rc;
-    basis_column(l, j, l->w1 + (size_t)j * n, Xk + (size_t)j * ni);
-    /* left: D_llᵀ x = (row dj of D, interior columns)ᵀ */
-    memset(l->br, 0, 2 * (size_t)ni * sizeof *l->br);
-    for (int c = 0; c < n; ++c)
-      if (l->inv[c] >= 0)
-        for (int q = l->Up[c]; q < l->Up[c + 1]; ++q)
-          if (l->Ui[q] == dj) {
-            double complex v = dval(l, q, k, Omega, 0);
-            l->br[l->inv[c]] = creal(v);
-            l->bz[l->inv[c]] = cimag(v);
-          }
-    if (ni && (rc = lsolve(l, numeric, UMFPACK_Aat))) return rc;
-    basis_column(l, j, l->w2 + (size_t)j * n, l->w3);
+    basis_column(l, j, R + (size_t)ni * j, l->w1 + (size_t)j * n);
+    basis_column(l, j, Lt + (size_t)ni * j, l->w2 + (size_t)j * n);
   }
   return WHIRL_OK;
 }
 
 /* Z_k = (D W) on the nonlinear rows, ∂Z_k = Vᵀ ∂D W. */
-static void condensed_z(fe_lin *l, int k, double Omega) {
+static void condensed_z(fe_lin *l, int k) {
   int n = l->ndof, m = l->m;
   double complex *Z = l->Z + (size_t)k * m * m, *dZ = l->dZ + (size_t)k * m * m;
   for (int j = 0; j < m; ++j) {
-    matvec(l, k, Omega, 0, l->w1 + (size_t)j * n, l->w3);
+    matvec(l, 0, l->w1 + (size_t)j * n, l->w3);
     for (int i = 0; i < m; ++i) Z[i + m * j] = l->w3[l->nldof[i]];
-    matvec(l, k, Omega, 1, l->w1 + (size_t)j * n, l->w3);
+    matvec(l, 1, l->w1 + (size_t)j * n, l->w3);
     for (int i = 0; i < m; ++i)
       dZ[i + m * j] = vdot(l->w2 + (size_t)i * n, l->w3, n);
   }
@@ -260,7 +305,7 @@ static void condensed_z(fe_lin *l, int k, double Omega) {
 
 /* The reduced load of harmonic k: F (static k = 0, unit unbalance k = ν),
  * its particular interior solution y_k and g = Vᵀ F, ∂g = Vᵀ(∂F − ∂D ỹ). */
-static int condensed_load(fe_lin *l, int k, double Omega, void *numeric) {
+static int condensed_load(fe_lin *l, int k, double Omega) {
   int n = l->ndof, m = l->m, ni = l->ni, rc;
   const whirl_fe_rotor *r = l->r;
   double complex *F = malloc((size_t)n * sizeof *F);
@@ -268,25 +313,18 @@ static int condensed_load(fe_lin *l, int k, double Omega, void *numeric) {
   for (int d = 0; d < n; ++d)
     F[d] = k == 0 ? r->f0[d]
                   : Omega * Omega * (r->unb_c[d] - I * r->unb_s[d]);
-  for (int d = 0; d < n; ++d)
-    if (l->inv[d] >= 0) {
-      l->br[l->inv[d]] = creal(F[d]);
-      l->bz[l->inv[d]] = cimag(F[d]);
-    }
-  if (ni && (rc = lsolve(l, numeric, UMFPACK_A))) { free(F); return rc; }
   double complex *y = l->yk + (size_t)k * ni;
-  for (int d = 0; d < n; ++d) {
-    int s = l->inv[d];
-    if (s >= 0) y[s] = l->xr[s] + I * l->xz[s];
-    l->w3[d] = s >= 0 ? y[s] : 0.0;
-  }
+  for (int d = 0; d < n; ++d)
+    if (l->inv[d] >= 0) y[l->inv[d]] = F[d];
+  if (ni && (rc = interior_solve(l, 0, 1, y))) { free(F); return rc; }
+  for (int d = 0; d < n; ++d) l->w3[d] = l->inv[d] >= 0 ? y[l->inv[d]] : 0.0;
   for (int i = 0; i < m; ++i) {
     double complex g = vdot(l->w2 + (size_t)i * n, F, n);
     if (k == 0) l->g0[i] = creal(g);
     else l->gu[i] = g;
   }
   if (k != 0) {
-    matvec(l, k, Omega, 1, l->w3, F); /* F := ∂D ỹ */
+    matvec(l, 1, l->w3, F); /* F := ∂D ỹ */
     for (int d = 0; d < n; ++d)
       F[d] = 2.0 * Omega * (r->unb_c[d] - I * r->unb_s[d]) - F[d];
     for (int i = 0; i < m; ++i) l->dgu[i] = vdot(l->w2 + (size_t)i * n, F, n);
@@ -295,32 +333,16 @@ static int condensed_load(fe_lin *l, int k, double Omega, void *numeric) {
   return WHIRL_OK;
 }
 
+/* Harmonic 0 (D_0 = K) does not depend on Ω: condensed once. */
 static int condensed_update(fe_lin *l, double Omega) {
-  for (int k = 0; k <= l->H; ++k) {
-    void *numeric = NULL;
-    if (l->ni) {
-      for (int q = 0; q < l->Lp[l->ni]; ++q) {
-        double complex v = dval(l, l->Lmap[q], k, Omega, 0);
-        l->Lx[q] = creal(v);
-        l->Lz[q] = cimag(v);
-      }
-      int st = umfpack_zi_numeric(l->Lp, l->Li, l->Lx, l->Lz, l->symbolic,
-                                  &numeric, l->control, NULL);
-      if (st != UMFPACK_OK) {
-        if (numeric) umfpack_zi_free_numeric(&numeric);
-        snprintf(l->err, sizeof l->err,
-                 "the rotor with its nonlinear DOFs held is singular at "
-                 "harmonic %d, Omega = %g rad/s (UMFPACK status %d)", k,
-                 Omega, st);
-        return st == UMFPACK_WARNING_singular_matrix ? WHIRL_ESINGULAR
-                                                     : WHIRL_ESPARSE;
-      }
-    }
-    int rc = bases(l, k, Omega, numeric);
-    if (!rc) condensed_z(l, k, Omega);
-    if (!rc && (k == 0 || k == l->nu)) rc = condensed_load(l, k, Omega, numeric);
-    if (numeric) umfpack_zi_free_numeric(&numeric);
+  for (int k = l->k0_done ? 1 : 0; k <= l->H; ++k) {
+    values(l, k, Omega);
+    int rc = l->ni ? interior_factor(l, k, Omega) : WHIRL_OK;
+    if (!rc) rc = bases(l, k);
+    if (!rc) condensed_z(l, k);
+    if (!rc && (k == 0 || k == l->nu)) rc = condensed_load(l, k, Omega);
     if (rc) return rc;
+    if (k == 0) l->k0_done = 1;
   }
   return WHIRL_OK;
 }

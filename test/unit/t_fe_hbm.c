@@ -276,6 +276,23 @@ static void test_condensed_vs_full(int pedestal, double Om, double unb,
      ic, sf->n, jf, Om, pedestal ? ", pedestal" : "");
   ok(d <= 1e-10 * s, "condensed = uncondensed on all %d DOF x %d coefficients: "
      "%.2e of %.2e", n, L, d, s);
+  /* the interior LU by UMFPACK instead of the banded one */
+  whirl_fe_hbm_options ou;
+  whirl_fe_hbm_options_default(&ou);
+  ou.harmonics = (size_t)H;
+  ou.stability = 0;
+  ou.interior_lu = 2;
+  char eu[256] = "";
+  whirl_fe_hbm *hu = whirl_fe_hbm_alloc(r, &ou, eu, sizeof eu);
+  double *Xu = calloc(sc->n, sizeof *Xu), *qu = calloc((size_t)n * L, sizeof *qu);
+  int iu = 0, ru = hu ? whirl_newton(whirl_fe_hbm_system(hu), Xu, p, 1e-13, 40, &iu) : -1;
+  ru |= hu ? whirl_fe_hbm_recover(hu, Xu, p, qu) : -1;
+  double du = 0;
+  for (int i = 0; i < n * L; ++i) du = fmax(du, fabs(qu[i] - qf[i]));
+  ok(ru == 0 && du <= 1e-10 * s, "condensed with UMFPACK's LU = uncondensed: "
+     "%.2e of %.2e %s", du, s, eu);
+  free(Xu); free(qu);
+  whirl_fe_hbm_free(hu);
   double a1 = whirl_fe_hbm_amplitude(hc, qc, 4), c = r->nl[1].par.clearance;
   ok(a1 > 0.3 * c && a1 < c, "SFD journal amplitude %.3g of the clearance: "
      "nonlinear", a1 / c);

@@ -89,6 +89,10 @@ typedef struct whirl_fe_hbm_options {
                            else sparse when built with ARPACK, else none */
   size_t hill_nev;      /* eigenvalues sought by the sparse Hill method
                            (default 24) */
+  int interior_lu;      /* the LU of the held rotor in the condensation:
+                           0 (default) banded in a reverse Cuthill–McKee
+                           ordering while its kl + ku ≤ 64, else UMFPACK;
+                           1 banded always, 2 UMFPACK always */
 } whirl_fe_hbm_options;
 
 WHIRL_API void whirl_fe_hbm_options_default(whirl_fe_hbm_options *o);
