@@ -82,6 +82,14 @@ static int sparse_factor(whirl_linsol *ls) {
                     status);
 }
 
+int whirl_linsol_set_refinement(whirl_linsol *ls, int steps) {
+  if (!ls || steps < 0) return WHIRL_EINVAL;
+  if (ls->kind != WHIRL_LINSOL_SPARSE) return WHIRL_OK;
+  sparse_backend *s = ls->backend;
+  s->control[UMFPACK_IRSTEP] = steps;
+  return WHIRL_OK;
+}
+
 static int sparse_solve(whirl_linsol *ls, double *B, size_t nrhs, int trans) {
   sparse_backend *s = ls->backend;
   /* For a real matrix UMFPACK_At (conjugate transpose) is the transpose. */

@@ -47,6 +47,13 @@ WHIRL_API int whirl_linsol_factor(whirl_linsol *ls, const double *A);
 WHIRL_API int whirl_linsol_solve(whirl_linsol *ls, double *B, size_t nrhs,
                                  int trans);
 
+/* Steps of iterative refinement per sparse solve (UMFPACK's IRSTEP; its
+ * default is 2, each costing a residual and another solve).  0 is for
+ * callers whose solves only feed an iteration that corrects itself, e.g.
+ * shift-invert Arnoldi.  Dense LU: no refinement, WHIRL_OK.  WHIRL_EINVAL
+ * for steps < 0. */
+WHIRL_API int whirl_linsol_set_refinement(whirl_linsol *ls, int steps);
+
 /* log|det A| and its sign (-1, 0, +1) from the last factorisation; no
  * overflow for large n. */
 WHIRL_API int whirl_linsol_logdet(const whirl_linsol *ls, double *logabs,

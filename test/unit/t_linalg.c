@@ -229,6 +229,11 @@ static void test_dense_vs_sparse(void) {
     double la = 0.0, ls_ = 0.0;
     int sa = 0, ss = 0, rc;
     if (round == 1) {
+      /* and without iterative refinement: still the exact x to 1e-12 */
+      ok(whirl_linsol_set_refinement(lsp, 0) == WHIRL_OK &&
+             whirl_linsol_set_refinement(lsp, -1) == WHIRL_EINVAL &&
+             whirl_linsol_set_refinement(ld, 0) == WHIRL_OK,
+         "refinement steps: 0 accepted, -1 refused, dense unaffected");
       random_sparse(N, A, mask);
       for (j = 0, k = 0; j < N; ++j)
         for (i = 0; i < N; ++i)
