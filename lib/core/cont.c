@@ -963,12 +963,39 @@ static int crosses_bp(const whirl_cont *c, size_t k, const cont_state *a,
   (void)k;
   return a->tests_valid && c->opt.detect_bp && a->sign_det * b->sign_det < 0;
 }
+double cont_hb_rank_test(const whirl_cont *c, const cont_state *st, int k) {
+  const int mult = c->sys.spectrum_kind == WHIRL_SPEC_MULTIPLIERS;
+  double scale = 1.0, best[64];
+  int have = 0;
+  if (k < 1 || k > 64) return NAN;
+  for (size_t i = 0; i < st->nspec; ++i)
+    scale = fmax(scale, hypot(st->re[i], st->im[i]));
+  for (size_t i = 0; i < st->nspec; ++i) { /* the k largest, descending */
+    const double r = hypot(st->re[i], st->im[i]);
+    if (!(fabs(st->im[i]) > 1e-8 * (mult ? fmax(1.0, r) : scale))) continue;
+    double v = mult ? r - 1.0 : st->re[i];
+    int j = have < k ? have++ : k;
+    if (j == k && !(v > best[k - 1])) continue;
+    if (j == k) j = k - 1;
+    while (j > 0 && best[j - 1] < v) { best[j] = best[j - 1]; --j; }
+    best[j] = v;
+  }
+  return have == k ? best[k - 1] : NAN;
+}
+
+/* The count of complex eigenvalues (multipliers) beyond the boundary
+ * changed, and the test nearest the boundary changed sign — or, when
+ * another pair became the nearest within the step, the order statistic of
+ * that count did (cont_hb_rank_test). */
 static int crosses_hb(const whirl_cont *c, size_t k, const cont_state *a,
                       const cont_state *b) {
   (void)k;
-  return a->tests_valid && c->opt.detect_hb && a->n_cu >= 0 && b->n_cu >= 0 &&
-         a->n_cu != b->n_cu && a->has_hb && b->has_hb &&
-         sgn(a->psi_hb) * sgn(b->psi_hb) < 0;
+  if (!(a->tests_valid && c->opt.detect_hb && a->n_cu >= 0 && b->n_cu >= 0 &&
+        a->n_cu != b->n_cu && a->has_hb && b->has_hb))
+    return 0;
+  if (sgn(a->psi_hb) * sgn(b->psi_hb) < 0) return 1;
+  const int r = a->n_cu > b->n_cu ? a->n_cu : b->n_cu;
+  return sgn(cont_hb_rank_test(c, a, r)) * sgn(cont_hb_rank_test(c, b, r)) < 0;
 }
 static int crosses_pd(const whirl_cont *c, size_t k, const cont_state *a,
                       const cont_state *b) {

@@ -80,6 +80,9 @@ struct whirl_cont {
   double *Xstart;     /* N: start point, for loop detection */
   double ds;          /* current signed step (> 0 along the tangent) */
   int its;            /* Newton iterations of the last correction */
+  int hb_rank;        /* 0: the HB/TR test is psi_hb; k > 0: the k-th
+                         largest of the complex spectrum (cont_hb_rank_test)
+                         for the crossing being located */
   size_t index;       /* PT of the next point */
   int started, done, stop_reason;
   int label;          /* last label given */
@@ -122,6 +125,14 @@ double cont_uz_value(const whirl_cont *c, size_t k, const cont_state *st);
  * between c->cur (s = 0) and the trial point (s = ds) along c->dir; on
  * success fills *out and returns 0; returns > 0 when the zero cannot be
  * bracketed or the corrector fails (the event is then dropped). */
+/* The k-th largest real part among the complex eigenvalues of st, or
+ * modulus minus 1 among its complex multipliers; NaN when it has fewer
+ * than k.  Unlike psi_hb (the one nearest the boundary, which jumps when
+ * another pair becomes the nearest), an order statistic of continuous
+ * functions is continuous, and it changes sign wherever the count of
+ * complex ones beyond the boundary goes through k. */
+double cont_hb_rank_test(const whirl_cont *c, const cont_state *st, int k);
+
 int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
                 cont_state *out);
 

@@ -32,6 +32,7 @@ static double psi(const whirl_cont *c, int ev, size_t k, const cont_state *st,
     return st->sign_det * exp(e);
   }
   case EV_HB:
+    if (c->hb_rank > 0) return cont_hb_rank_test(c, st, c->hb_rank);
     return st->has_hb ? st->psi_hb : NAN;
   case EV_PD:
     return st->has_pd ? st->psi_pd : NAN;
@@ -88,6 +89,12 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
     ref = out->logdet;
     fa = out->sign_det;
   } else {
+    if (ev == EV_HB) { /* psi_hb when it changes sign, else the order
+                          statistic of the count that changed */
+      c->hb_rank = 0;
+      if (!(psi(c, ev, k, a, ref) * psi(c, ev, k, b, ref) < 0.0))
+        c->hb_rank = a->n_cu > b->n_cu ? a->n_cu : b->n_cu;
+    }
     fa = psi(c, ev, k, a, ref);
   }
   fb = psi(c, ev, k, b, ref);

@@ -255,6 +255,44 @@ static void test_hopf(void) {
   whirl_equilibrium_free(eq);
 }
 
+/* Two complex pairs, A with real part p - 1 (through the axis at p = 1),
+ * B fixed at -0.15: with steps of 0.3 in p the points p = 0.9 (A nearest
+ * the axis, -0.1) and 1.2 (A at +0.2, now B nearest, -0.15) bracket the
+ * Hopf point while the test "real part of the pair nearest the axis"
+ * keeps its sign: it was missed there (it happened on the Hill
+ * multipliers of an FE rotor) and must be found, at p = 1. */
+static int two_pairs_rhs(double t, const double *u, const double *p, double *f,
+                         void *data) {
+  (void)t, (void)data;
+  const double a = p[0] - 1.0, b = -0.15;
+  f[0] = a * u[0] + 2.0 * u[1];
+  f[1] = -2.0 * u[0] + a * u[1];
+  f[2] = b * u[2] + 5.0 * u[3];
+  f[3] = -5.0 * u[2] + b * u[3];
+  return 0;
+}
+
+static void test_hopf_nearest_switch(void) {
+  static const whirl_problem pr = {.name = "two pairs", .n = 4, .npar = 1,
+                                   .rhs = two_pairs_rhs, .autonomous = 1};
+  whirl_equilibrium *eq = whirl_equilibrium_alloc(&pr);
+  const whirl_system *s = whirl_equilibrium_system(eq);
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = o.ds_min = o.ds_max = 0.3;
+  o.p_min = -1.0;
+  o.p_max = 1.9;
+  double p0[1] = {0.0}, x0[4] = {0, 0, 0, 0};
+  whirl_branch *b = run(s, &o, x0, p0, +1, NULL);
+  const whirl_branch_point *h = b ? nth_type(b, WHIRL_PT_HB, 0) : NULL;
+  ok(b && count_type(b, WHIRL_PT_HB) == 1,
+     "two pairs, the nearest one switching within a step: one HB (%zu)",
+     b ? count_type(b, WHIRL_PT_HB) : 0);
+  if (h) is_abs(h->p[0], 1.0, 1e-10, "two pairs: the HB at p = 1");
+  whirl_branch_free(b);
+  whirl_equilibrium_free(eq);
+}
+
 static void test_loop(void) {
   whirl_system s = {.name = "circle", .n = 1, .npar = 1, .F = circ_F};
   whirl_cont_options o;
@@ -477,6 +515,7 @@ int main(void) {
   test_cusp(0);
   test_bp();
   test_hopf();
+  test_hopf_nearest_switch();
   test_loop();
   test_uz();
   test_uz_fun();

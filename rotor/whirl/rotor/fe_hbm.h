@@ -154,7 +154,7 @@ typedef struct whirl_fe_hbm_response_options {
   double unbalance, clearance, viscosity; /* scales (default 1) */
   int node;                  /* amplitude at this node (default 0) */
   double ds, ds_max;         /* steps, rad/s of speed (0: range/200,
-                                range/50); the arclength weighs Ω by
+                                range/10); the arclength weighs Ω by
                                 1/range and the unknowns by 1 */
   size_t nmx;                /* steps (default 2000) */
   /* A seeded branch: when seed_eps > 0 the branch starts at Ω =
