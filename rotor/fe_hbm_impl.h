@@ -116,6 +116,8 @@ typedef struct fe_lin {
   int *Lp, *Li, *Lmap;                 /* interior pattern, map into union */
   double *Lx, *Lz;                     /* interior values (UMFPACK) */
   double complex *Dv, *dDv;            /* D_k, ∂D_k/∂Ω on the union pattern */
+  int nnlq, *nlq, *nlcol;              /* union entries in nonlinear rows,
+                                          their columns */
   double complex *Lv;                  /* interior values (band) */
   double complex *rhs;                 /* ni × (2m + 1) right-hand sides */
   int interior_lu;                     /* whirl_fe_hbm_options' */

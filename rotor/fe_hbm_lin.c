@@ -143,6 +143,15 @@ int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed,
   if ((rc = interior_pattern(l))) return rc;
   size_t ni = (size_t)l->ni ? (size_t)l->ni : 1;
   size_t nz = (size_t)(l->nnz ? l->nnz : 1);
+  l->nlq = malloc(nz * sizeof *l->nlq);
+  l->nlcol = malloc(nz * sizeof *l->nlcol);
+  if (!l->nlq || !l->nlcol) return WHIRL_ENOMEM;
+  for (int c = 0; c < (int)n; ++c) /* the entries of the nonlinear rows */
+    for (int q = l->Up[c]; q < l->Up[c + 1]; ++q)
+      if (l->inv[l->Ui[q]] < 0) {
+        l->nlq[l->nnlq] = q;
+        l->nlcol[l->nnlq++] = c;
+      }
   l->Dv = malloc(nz * sizeof *l->Dv);
   l->dDv = malloc(nz * sizeof *l->dDv);
   l->Lv = malloc(nz * sizeof *l->Lv);
@@ -166,7 +175,7 @@ void fe_lin_free(fe_lin *l) {
   if (l->numeric) umfpack_zi_free_numeric(&l->numeric);
   if (l->symbolic) umfpack_zi_free_symbolic(&l->symbolic);
   fe_band_free(&l->band);
-  void *p[] = {l->Dv, l->dDv, l->Lv, l->rhs, l->pos, l->Z, l->dZ, l->gu, l->dgu, l->g0, l->Up, l->Ui,
+  void *p[] = {l->nlq, l->nlcol, l->Dv, l->dDv, l->Lv, l->rhs, l->pos, l->Z, l->dZ, l->gu, l->dgu, l->g0, l->Up, l->Ui,
                l->Kx, l->Mx, l->Cx, l->Gx, l->inv, l->Lp, l->Li, l->Lmap,
                l->Lx, l->Lz, l->Xk, l->yk, l->w1, l->w2, l->w3, l->br};
   for (size_t i = 0; i < sizeof p / sizeof *p; ++i) free(p[i]);
@@ -290,13 +299,18 @@ static int bases(fe_lin *l, int k) {
   return WHIRL_OK;
 }
 
-/* Z_k = (D W) on the nonlinear rows, ∂Z_k = Vᵀ ∂D W. */
+/* Z_k = (D W) on the nonlinear rows — from the few entries of those rows
+ * (nlq) — and ∂Z_k = Vᵀ ∂D W. */
 static void condensed_z(fe_lin *l, int k) {
   int n = l->ndof, m = l->m;
   double complex *Z = l->Z + (size_t)k * m * m, *dZ = l->dZ + (size_t)k * m * m;
+  memset(Z, 0, (size_t)m * m * sizeof *Z);
+  for (int e = 0; e < l->nnlq; ++e) {
+    int q = l->nlq[e], i = -1 - l->inv[l->Ui[q]];
+    const double complex *wc = l->w1 + l->nlcol[e];
+    for (int j = 0; j < m; ++j) Z[i + m * j] += l->Dv[q] * wc[(size_t)j * n];
+  }
   for (int j = 0; j < m; ++j) {
-    matvec(l, 0, l->w1 + (size_t)j * n, l->w3);
-    for (int i = 0; i < m; ++i) Z[i + m * j] = l->w3[l->nldof[i]];
     matvec(l, 1, l->w1 + (size_t)j * n, l->w3);
     for (int i = 0; i < m; ++i)
       dZ[i + m * j] = vdot(l->w2 + (size_t)i * n, l->w3, n);
