@@ -176,13 +176,24 @@ typedef struct resp_args {
 
 static int parse_args(int argc, char **argv, resp_args *a) {
   const char *seed = NULL;
+  /* the defaults --help shows are the library's (0 and the sentinels in
+   * resp_args mean "not given") */
+  whirl_fe_hbm_response_options ro;
+  whirl_fe_discover_options dd;
+  whirl_fe_hbm_response_options_default(&ro);
+  whirl_fe_discover_options_default(&dd);
+  char d_h[24], d_nmx[24], d_starts[24], d_seed[24];
+  snprintf(d_h, sizeof d_h, "%zu", ro.hbm.harmonics);
+  snprintf(d_nmx, sizeof d_nmx, "%zu", ro.nmx);
+  snprintf(d_starts, sizeof d_starts, "%zu", dd.starts);
+  snprintf(d_seed, sizeof d_seed, "%lu", (unsigned long)dd.seed);
   const cli_opt opts[] = {
       {"--from", CLI_DOUBLE, &a->from, "S", "lowest speed, in --unit", "the file's"},
       {"--to", CLI_DOUBLE, &a->to, "S", "highest speed, in --unit", "the file's"},
       {"--unit", CLI_STRING, &a->unit, "U", "unit of the speeds: rpm, rad/s or hz", NULL},
       {"--node", CLI_INT, &a->node, "K", "amplitude at node K",
        "the first nonlinear element's node"},
-      {"--harmonics", CLI_SIZE, &a->harmonics, "H", "harmonics of the balance", NULL},
+      {"--harmonics", CLI_SIZE, &a->harmonics, "H", "harmonics of the balance", d_h},
       {"--unbalance", CLI_DOUBLE, &a->unb, "S", "scale of the file's unbalances", NULL},
       {"--clearance", CLI_DOUBLE, &a->clr, "S", "scale of the film clearances", NULL},
       {"--viscosity", CLI_DOUBLE, &a->visc, "S", "scale of the film viscosities", NULL},
@@ -194,13 +205,14 @@ static int parse_args(int argc, char **argv, resp_args *a) {
        "also every branch found at these speeds (in --unit) by deflated Newton, "
        "deflated against the branches traced (doc/discovery.md)",
        ""},
-      {"--discover-starts", CLI_SIZE, &a->starts, "N", "starts per discovery speed", NULL},
-      {"--discover-seed", CLI_INT, &a->dseed, "S", "seed of the random starts", NULL},
+      {"--discover-starts", CLI_SIZE, &a->starts, "N", "starts per discovery speed",
+       d_starts},
+      {"--discover-seed", CLI_INT, &a->dseed, "S", "seed of the random starts", d_seed},
       {"--stability", CLI_STRING, &a->stability, "S",
        "Hill's stability: auto (dense up to 1200 unknowns of the Hill matrix, else "
        "sparse), dense, sparse, or off",
        NULL},
-      {"--nmx", CLI_SIZE, &a->nmx, "N", "continuation steps per branch", NULL},
+      {"--nmx", CLI_SIZE, &a->nmx, "N", "continuation steps per branch", d_nmx},
       {"-o", CLI_STRING, &a->dir, "DIR", "output directory (also --out)", NULL},
       CLI_OPTS_OUT(a->dir, a->noplot, a->quiet)};
   /* --seed may be given several times: collect them before cli_parse,
