@@ -55,8 +55,10 @@ typedef struct cli_opt {
   {"--quiet", CLI_FLAG, &(quiet), NULL, "no summary on stderr", NULL}
 #define CLI_OPTS_OUT(dir, noplot, quiet)                                      \
   {"--out", CLI_STRING, &(dir), "DIR", "output directory", NULL},             \
-  {"--no-plot", CLI_FLAG, &(noplot), NULL, "write the data only, no PNG",     \
+  {"--no-plot", CLI_FLAG, &(noplot), NULL, "write the data only, no pictures", \
    NULL},                                                                     \
+  {"--format", CLI_STRING, &cli_picture_format, "F",                          \
+   "the pictures as png, pdf (vector, pdfcairo) or svg", NULL},               \
   CLI_OPT_QUIET(quiet)
 
 /* A command's --help around its options: HEAD (usage line, description,

@@ -25,7 +25,7 @@
 
 static void usage(FILE *f) {
   fprintf(f,
-          "usage: whirl run FILE [--KEY=value ...] [--quiet]\n"
+          "usage: whirl run FILE [--KEY=value ...] [--format=F] [--quiet]\n"
           "\n"
           "Run an AUTO-style run file: equilibria (IPS = 1), periodic orbits\n"
           "(IPS = 2, METHOD = colloc | hbm), branch switching and fold/Hopf\n"
@@ -40,7 +40,9 @@ static void usage(FILE *f) {
           "again, run on MPI under mpirun (built --with-mpi), and in parts\n"
           "(doc/parameter-studies.md):\n"
           "  --chunk=I/N        the I-th of N parts, into OUT.chunk-I-of-N/\n"
-          "  --merge-chunks=N   join the N parts into OUT\n");
+          "  --merge-chunks=N   join the N parts into OUT\n"
+          "\n"
+          "  --format=F         the picture as png (default), pdf or svg\n");
 }
 
 /* "--NMX 5": an override written with a blank for '=' would take its value
@@ -121,6 +123,11 @@ static int parse_args(int argc, char **argv, const char **file, int *quiet,
       *quiet = 1;
       continue;
     }
+    if (!strncmp(argv[i], "--format=", 9)) { /* a picture option, not a key */
+      cli_picture_format = argv[i] + 9;
+      if (cli_picture_format_check("run")) return 2;
+      continue;
+    }
     if (override_without_eq(argc, argv, i)) return 2;
     if (argv[i][0] == '-' && argv[i][1] == '-') {
       ov[(*nov)++] = argv[i];
@@ -152,9 +159,10 @@ static int finish_output(run_io_ctx *c, const whirl_run *r) {
   if (cli_outdir_commit(&c->od)) return 1;
   const int basins = whirl_run_plot_info(r)->basins;
   if (!c->quiet)
-    printf("wrote %s/ (%s%s)\n", whirl_run_output(r),
+    printf("wrote %s/ (%s%s%s)\n", whirl_run_output(r),
            basins ? "basins.tsv, run.log" : "branches.tsv, solutions, run.log",
-           pic_failed ? "" : basins ? ", basins.png" : ", diagram.png");
+           pic_failed ? "" : basins ? ", basins." : ", diagram.",
+           pic_failed ? "" : cli_picture_format);
   return pic_failed;
 }
 

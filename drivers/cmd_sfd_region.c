@@ -193,8 +193,8 @@ int cmd_sfd_region(int argc, char **argv) {
       fprintf(stderr, "  the two folds at Omega = W meet in a cusp (CP) at lambda = %.8f, "
                       "delta = %.8f (not a boundary of the region)\n", reg.lambda_c, reg.delta_c);
     if (!status)
-      fprintf(stderr, "  wrote %s/upper.tsv, lower.tsv, band.tsv%s\n", dir,
-              noplot ? "" : ", region.png");
+      fprintf(stderr, "  wrote %s/upper.tsv, lower.tsv, band.tsv%s%s\n", dir,
+              noplot ? "" : ", region.", noplot ? "" : cli_picture_format);
   }
   whirl_sfd_region_free(&reg);
   return status;

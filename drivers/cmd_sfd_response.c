@@ -542,8 +542,11 @@ int cmd_sfd_response(int argc, char **argv) {
             counts[WHIRL_PT_LP], counts[WHIRL_PT_BP],
             counts[WHIRL_PT_HB] + counts[WHIRL_PT_TR], periodic ? "TR" : "HB",
             counts[WHIRL_PT_PD], steps, newton_its, 1e3 * secs);
-    fprintf(stderr, "  wrote %s/branches.tsv, %s/special.tsv%s\n", dir, dir,
-            plot && !status ? ", response.png, multipliers.png" : "");
+    if (plot && !status)
+      fprintf(stderr, "  wrote %s/branches.tsv, %s/special.tsv, response.%s, "
+              "multipliers.%s\n", dir, dir, cli_picture_format, cli_picture_format);
+    else
+      fprintf(stderr, "  wrote %s/branches.tsv, %s/special.tsv\n", dir, dir);
   }
   tab_free(&T);
   return status || failed;

@@ -415,6 +415,7 @@ static int check_writable(const cli_outdir *d) {
 }
 
 int cli_outdir_check(const char *cmd, const char *where, const char *path) {
+  if (cli_picture_format_check(cmd)) return 2;
   cli_outdir *d = calloc(1, sizeof *d);
   if (!d) return 0; /* begin will say it */
   d->cmd = cmd;

@@ -97,13 +97,21 @@ int out_open(out_file *o, cli_outdir *d, const char *name);
 int out_commit(out_file *o);
 void out_abort(out_file *o);
 
-/* Draw NAME.png by running gnuplot on NAME.gp in the stage, and check that
- * the picture is complete (a PNG with its IEND chunk): gnuplot exits 0
- * even when it could not write.  0, or -1 with the picture removed. */
+/* Draw NAME.png (.pdf, .svg) by running gnuplot on NAME.gp in the stage,
+ * and check that the picture is complete (a PNG with its IEND chunk, a PDF
+ * with its trailer, an SVG closed): gnuplot exits 0 even when it could not
+ * write.  0, or -1 with the picture removed. */
 int cli_outdir_plot(cli_outdir *d, const char *name);
 
+/* The pictures' format, png (default), pdf or svg: --format of
+ * CLI_OPTS_OUT (drivers/cli.h).  cli_picture_format_check: 0, or 2 with the
+ * message printed for another value. */
+extern const char *cli_picture_format;
+int cli_picture_format_check(const char *cmd);
+
 /* The first lines of a picture's script: a comment naming the command,
- * the terminal (pngcairo W x H) and 'set output "NAME.png"'. */
+ * the terminal (pngcairo W x H pixels, or the same proportions in pdfcairo
+ * or svg) and 'set output "NAME.png"' (.pdf, .svg). */
 void cli_gp_preamble(FILE *f, const char *cmd, const char *name, int w, int h,
                      const char *font);
 

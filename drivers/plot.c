@@ -1,8 +1,10 @@
-/* drivers/plot.c — pictures through gnuplot (pngcairo): the driver writes a
- * self-contained script (data in datablocks or the tables beside it) into
- * the output directory, so a user can edit and re-run it as it is, and runs
- * gnuplot on it there.  gnuplot exits 0 even when it could not write the
- * picture (a full disk), so the picture is checked to be a complete PNG.
+/* drivers/plot.c — pictures through gnuplot (pngcairo, or pdfcairo and svg
+ * with --format): the driver writes a self-contained script (data in
+ * datablocks or the tables beside it) into the output directory, so a user
+ * can edit and re-run it as it is, and runs gnuplot on it there.  gnuplot
+ * exits 0 even when it could not write the picture (a full disk), so the
+ * picture is checked to be complete (PNG: its IEND chunk; PDF: the %%EOF
+ * trailer; SVG: the closing </svg>).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <errno.h>
 #include <signal.h>
@@ -18,6 +20,15 @@
 
 extern volatile pid_t cli_outdir_child; /* outdir.c: killed on a signal */
 
+const char *cli_picture_format = "png";
+
+int cli_picture_format_check(const char *cmd) {
+  const char *f = cli_picture_format;
+  if (!strcmp(f, "png") || !strcmp(f, "pdf") || !strcmp(f, "svg")) return 0;
+  cli_error(cmd, "--format '%s': the pictures are png, pdf or svg", f);
+  return 2;
+}
+
 const char *cli_gp_quote(const char *s, char *buf, size_t len) {
   size_t k = 0;
   if (len < 3) return "''";
@@ -32,12 +43,23 @@ const char *cli_gp_quote(const char *s, char *buf, size_t len) {
   return buf;
 }
 
+/* pngcairo draws a font point as a pixel; pdfcairo at W/72 × H/72 inches
+ * and svg at W × H points keep the same proportions of text to picture. */
 void cli_gp_preamble(FILE *f, const char *cmd, const char *name, int w, int h,
                      const char *font) {
-  fprintf(f, "# gnuplot script written by whirl %s; redraw: gnuplot %s.gp\n"
-             "set terminal pngcairo size %d,%d enhanced font '%s'\n"
-             "set output '%s.png'\n",
-          cmd, name, w, h, font, name);
+  const char *fmt = cli_picture_format;
+  fprintf(f, "# gnuplot script written by whirl %s; redraw: gnuplot %s.gp\n",
+          cmd, name);
+  if (!strcmp(fmt, "pdf"))
+    fprintf(f, "set terminal pdfcairo size %.2fin,%.2fin enhanced font '%s'\n",
+            w / 72.0, h / 72.0, font);
+  else if (!strcmp(fmt, "svg"))
+    fprintf(f, "set terminal svg size %d,%d dynamic enhanced font '%s'\n", w,
+            h, font);
+  else
+    fprintf(f, "set terminal pngcairo size %d,%d enhanced font '%s'\n", w, h,
+            font);
+  fprintf(f, "set output '%s.%s'\n", name, fmt);
 }
 
 /* Is PATH a complete PNG: the signature, and the IEND chunk at its end? */
@@ -53,6 +75,31 @@ static int png_complete(const char *path) {
            !memcmp(b, iend, 12);
   fclose(f);
   return ok;
+}
+
+/* Does PATH begin with HEAD and end with TAIL (trailing blanks aside)? */
+static int text_framed(const char *path, const char *head, const char *tail) {
+  char a[16], b[64];
+  size_t lh = strlen(head), lt = strlen(tail);
+  FILE *f = fopen(path, "rb");
+  if (!f) return 0;
+  int ok = fread(a, 1, lh, f) == lh && !memcmp(a, head, lh) &&
+           fseek(f, 0, SEEK_END) == 0;
+  long size = ok ? ftell(f) : -1, from = size > 64 ? size - 64 : 0;
+  size_t got = 0;
+  if (ok && size > 0 && fseek(f, from, SEEK_SET) == 0)
+    got = fread(b, 1, (size_t)(size - from), f);
+  fclose(f);
+  while (got > 0 && (b[got - 1] == '\n' || b[got - 1] == '\r' || b[got - 1] == ' '))
+    --got;
+  return ok && got >= lt && !memcmp(b + got - lt, tail, lt);
+}
+
+/* Is the picture PATH complete in its format? */
+static int picture_complete(const char *path) {
+  if (!strcmp(cli_picture_format, "pdf")) return text_framed(path, "%PDF-", "%%EOF");
+  if (!strcmp(cli_picture_format, "svg")) return text_framed(path, "<?xml", "</svg>");
+  return png_complete(path);
 }
 
 /* Run gnuplot on SCRIPT in DIR; its messages are kept in err (the first
@@ -112,11 +159,11 @@ static int run_gnuplot(const char *dir, const char *script, char *err, size_t le
 int cli_outdir_plot(cli_outdir *d, const char *name) {
   char script[300], png[300], p[8600], shown[4400], err[300];
   snprintf(script, sizeof script, "%s.gp", name);
-  snprintf(png, sizeof png, "%s.png", name);
+  snprintf(png, sizeof png, "%s.%s", name, cli_picture_format);
   snprintf(p, sizeof p, "%s/%s", d->stage, png);
   cli_outdir_shown(d, png, shown, sizeof shown);
   int rc = run_gnuplot(d->stage, script, err, sizeof err);
-  if (rc == 0 && png_complete(p)) {
+  if (rc == 0 && picture_complete(p)) {
     return cli_outdir_record(d, png);
   }
   unlink(p);

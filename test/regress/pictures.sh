@@ -1,0 +1,78 @@
+#!/bin/sh
+# test/regress/pictures.sh — every picture the commands draw, as PNG and as
+# PDF (--format): each one complete (PNG: signature and IEND chunk; PDF:
+# header and %%EOF trailer, checked here independently of whirl's own
+# check), each script beside it redrawing it when run as it is (gnuplot
+# NAME.gp in the output directory, the picture removed first), and a bad
+# --format refused before any work.  The runs are small versions of the
+# examples (the sfd commands, the rotor commands on examples/rotor, whirl
+# run on built-in models of examples/).
+# SPDX-License-Identifier: BSD-3-Clause
+name=pictures
+. "${top_srcdir:-.}/test/regress/tap.sh"
+ex="$top_srcdir/examples"
+GNUPLOT=${WHIRL_GNUPLOT:-gnuplot}
+if ! command -v "$GNUPLOT" > /dev/null 2>&1; then
+  echo "1..0 # SKIP gnuplot is not installed"
+  exit 0
+fi
+
+png_ok() { # the 8-byte signature, and IEND with its CRC as the last 12 bytes
+  [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] &&
+  [ "$(tail -c 12 "$1" | od -An -tx1 | tr -d ' \n')" = 0000000049454e44ae426082 ]
+}
+pdf_ok() { # %PDF- first, %%EOF the last line
+  [ "$(head -c 5 "$1")" = "%PDF-" ] && [ "$(tail -c 32 "$1" | tr -d '\r' | sed '/^$/d' | tail -n 1)" = "%%EOF" ]
+}
+
+# run LABEL DIR-STEM ARGS...: the command with --format png and pdf; every
+# NAME.gp of its directory has its complete NAME.FMT, and redraws it
+check_cmd() {
+  label=$1 stem=$2
+  shift 2
+  for fmt in png pdf; do
+    out="$tmp/$stem-$fmt"
+    "$WHIRL" "$@" --out "$out" --format "$fmt" --quiet > "$out.stdout" 2> "$out.stderr"
+    rc=$?
+    bad="" n=0
+    for gp in "$out"/*.gp; do
+      [ -f "$gp" ] || continue
+      n=$((n + 1))
+      pic="${gp%.gp}.$fmt"
+      "${fmt}_ok" "$pic" || bad="$bad $(basename "$pic")"
+      cp "$pic" "$pic.first" 2> /dev/null
+      rm -f "$pic"
+      (cd "$out" && "$GNUPLOT" "$(basename "$gp")") > /dev/null 2>&1
+      "${fmt}_ok" "$pic" || bad="$bad $(basename "$gp")(redraw)"
+    done
+    [ $rc -eq 0 ] && [ $n -ge 1 ] && [ -z "$bad" ]
+    ok $? "$label --format $fmt: $n pictures complete and redrawn by their scripts${bad:+; bad:$bad} $(head -c 200 "$out.stderr")"
+  done
+}
+
+check_cmd "sfd response" response sfd response
+check_cmd "sfd simulate" simulate sfd simulate --omega 1.78 --periods 40
+check_cmd "sfd sweep" sweep sfd sweep --from 1 --to 3 --step 0.5 --periods 60 --record 20 --direction up
+check_cmd "sfd basins" basins sfd basins --omega 1.78 --points 25 --periods 60
+check_cmd "sfd nonsync" nonsync sfd nonsync --omega-max 10 --omega-min 7
+check_cmd "sfd region" region sfd region --lambda-min 0.05 --lambda-max 0.3
+rigid="$ex/rotor/rigid-limit.rotor"
+check_cmd "rotor campbell" campbell rotor campbell "$ex/rotor/friswell-5.9.1.rotor" --speeds 0:4000:5
+check_cmd "rotor unbalance" unbalance rotor unbalance "$rigid" --node 3 --speeds 100:9000:20
+check_cmd "rotor response" rresponse rotor response "$rigid" --harmonics 3 --stability off
+check_cmd "rotor loci" loci rotor loci "$rigid" --param unbalance --range 0.5:2 --harmonics 1
+check_cmd "rotor simulate" rsimulate rotor simulate "$rigid" --speed 3000 --periods 10
+check_cmd "rotor basins" rbasins rotor basins "$rigid" --speed 7000 --grid 3 --periods 40
+check_cmd "run (jeffcott response)" jeff run "$ex/jeffcott/response.whirl"
+check_cmd "run (jeffcott basins)" jeffb run "$ex/jeffcott/basins.whirl" --NPTS=4
+check_cmd "run (discovery, sfd-rotating)" disc run "$ex/discover/sfd-rotating.whirl"
+
+"$WHIRL" sfd response --out "$tmp/badfmt" --format gif > /dev/null 2> "$tmp/badfmt.err"
+rc=$?
+[ $rc -eq 2 ] && [ ! -e "$tmp/badfmt" ] && grep -q "png, pdf or svg" "$tmp/badfmt.err"
+ok $? "--format gif: exit 2, nothing written: $(cat "$tmp/badfmt.err")"
+"$WHIRL" run "$ex/jeffcott/response.whirl" --out="$tmp/badfmt2" --format=eps > /dev/null 2> "$tmp/badfmt2.err"
+rc=$?
+[ $rc -eq 2 ] && [ ! -e "$tmp/badfmt2" ]
+ok $? "whirl run --format=eps: exit 2, nothing written: $(cat "$tmp/badfmt2.err")"
+tap_end
