@@ -24,4 +24,5 @@
 #include <whirl/runfile.h>
 #include <whirl/solution.h>
 #include <whirl/run.h>
+#include <whirl/auto_constants.h>
 #endif
