@@ -18,6 +18,8 @@
 #include <whirl/auto_constants.h>
 #include <whirl/runfile.h>
 
+#include "auto_impl.h"
+
 /* ---- the keys AUTO knows (parseC's table) ----------------------------- */
 
 typedef struct key_def {
@@ -724,4 +726,14 @@ int whirl_auto_constants_item(const whirl_auto_constants *ac, const char *key, s
   item->is_list = it->is_list;
   item->text = it->text;
   return WHIRL_OK;
+}
+
+int whirl_auto_constants_fail(whirl_auto_constants *ac, int line, const char *fmt, ...) {
+  char where[1100];
+  va_list ap;
+  snprintf(where, sizeof where, "%s:%d", ac->name, line);
+  va_start(ap, fmt);
+  whirl_errmsg_vat(ac->err, sizeof ac->err, WHIRL_EINVAL, where, fmt, ap);
+  va_end(ap);
+  return WHIRL_EINVAL;
 }

@@ -120,6 +120,28 @@ WHIRL_API int whirl_auto_constants_item(const whirl_auto_constants *ac,
                                         const char *key, size_t i,
                                         whirl_auto_item *item);
 
+/* ---- as a whirl run file (doc/auto-files.md) ---------------------------
+ * The run file `whirl run` executes for these constants: the keys whirl
+ * shares with AUTO copied (NDIM, IPS, ILP, ISP, ISW, NTST, NCOL, IAD, NMX,
+ * NPR, RL0, RL1, A0, A1, EPS*, DS*, ITNW, JAC, PAR, U, the AUTO keys whirl
+ * accepts and ignores), indices for names (parnames, unames; PERIOD and
+ * PAR(11) of orbits as PERIOD), UZR's negative indices as UZSTOP, IRS with
+ * S = opts->restart.  What whirl cannot do yet is refused (IPS other than
+ * 1 and 2, dat) with the line of the key; what it does not use (THL, THU,
+ * STOP, SP, UZR on PVLS quantities beyond NPAR) is written as a "# note:"
+ * comment, so run.log shows it.  *text is malloc'd (the caller frees). */
+typedef struct whirl_auto_runfile_opts {
+  const char *model;   /* `model = ` (a plug-in path) */
+  const char *restart; /* `S = `: the output directory IRS refers to, or NULL */
+  const char *label;   /* replaces IRS ("3", "HB1"), or NULL */
+  const char *out;     /* `OUT = `: the run's output directory, or NULL */
+  size_t npar;         /* the model's parameters PAR(1..npar) */
+} whirl_auto_runfile_opts;
+
+WHIRL_API int whirl_auto_constants_runfile(whirl_auto_constants *ac,
+                                           const whirl_auto_runfile_opts *opts,
+                                           char **text);
+
 #ifdef __cplusplus
 }
 #endif
