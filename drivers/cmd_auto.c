@@ -307,6 +307,31 @@ static int build_model(auto_job *J) {
   return install_stage(stage, J->out);
 }
 
+/* OUT/b.ID, s.ID, d.ID of run i from its output directory.  0 or 1. */
+static int write_auto_files(const auto_job *J, size_t i) {
+  const auto_run *r = &J->run[i];
+  char dir[4400], path[3][4400], msg[1024];
+  snprintf(dir, sizeof dir, "%s/%s.out", J->out, r->id);
+  const whirl_auto_output o = {dir, r->ac, J->ndim, J->npar, (const char *const *)J->p_names,
+                               (const char *const *)J->x_names};
+  FILE *f[3];
+  static const char kind[3] = {'b', 's', 'd'};
+  int rc = 0;
+  for (int k = 0; k < 3; k++) {
+    snprintf(path[k], sizeof path[k], "%s/%c.%s", J->out, kind[k], r->id);
+    if (!(f[k] = fopen(path[k], "w"))) rc = 1;
+  }
+  if (!rc && whirl_auto_write_files(&o, f[0], f[1], f[2], msg, sizeof msg) != WHIRL_OK) {
+    cli_error("auto", "%s: %s", dir, msg);
+    rc = 1;
+  }
+  for (int k = 0; k < 3; k++)
+    if (f[k] && fclose(f[k])) rc = 1;
+  if (rc) /* no half-written AUTO files */
+    for (int k = 0; k < 3; k++) unlink(path[k]);
+  return rc;
+}
+
 /* Write the run files and run them all in order (a run after a failed one
  * may still work, as in AUTO).  The first failing status. */
 static int run_all(auto_job *J) {
@@ -327,6 +352,9 @@ static int run_all(auto_job *J) {
     fflush(stdout);
     char *argv[] = {"run", path, J->quiet ? "--quiet" : NULL, NULL};
     int st = cmd_run(J->quiet ? 3 : 2, argv);
+    char tsv[4400];
+    snprintf(tsv, sizeof tsv, "%s/%s.out/branches.tsv", J->out, J->run[i].id);
+    if (st != 2 && access(tsv, R_OK) == 0 && write_auto_files(J, i) && !st) st = 1;
     if (st) cli_error("auto", "run %s (c.%s) failed (exit %d)", J->run[i].id, J->run[i].c, st);
     if (st && !status) status = st;
   }

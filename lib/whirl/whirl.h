@@ -25,4 +25,5 @@
 #include <whirl/solution.h>
 #include <whirl/run.h>
 #include <whirl/auto_constants.h>
+#include <whirl/auto_files.h>
 #endif
