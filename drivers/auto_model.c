@@ -5,8 +5,12 @@
  *        also DFDU(NDIM, NDIM), column-major, as whirl's jac_x
  *   STPNT(NDIM, U, PAR, T)                         the start, T in [0, 1]
  * PAR has AUTO's NPARX entries (36); PAR(11) of orbits is the period that
- * STPNT may set.  BCND, ICND, FOPT and PVLS are not called (IPS 1 and 2);
- * GETP, the utility PVLS calls, is defined so that the object links.  The
+ * STPNT may set.  BCND, ICND and FOPT are not called (IPS 1 and 2); PVLS
+ * is called once, after STPNT, as AUTO does before the first step (some
+ * FUNCs rely on data it sets up: demos brc, brf), but its output is not
+ * used; GETP, the utility PVLS calls, returns 0 (so the object links), and
+ * GE, AUTO's linear solver that some FUNCs call (demos brc, brf), is
+ * written here afresh (Gaussian elimination).  The
  * adapter is generated here and compiled with the user's file; it is
  * whirl's own code, not AUTO's.
  * SPDX-License-Identifier: BSD-3-Clause */
@@ -54,9 +58,37 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "void func_(const int *, const double *, const int *, const double *, const int *,\n"
     "           double *, double *, double *);\n"
     "void stpnt_(const int *, double *, double *, const double *);\n"
+    "void pvls_(const int *, const double *, double *);\n"
     "/* PVLS's utility; whirl never calls PVLS */\n"
     "double getp_(const char *c, const int *i, const double *u, size_t l) {\n"
     "  (void)c, (void)i, (void)u, (void)l;\n  return 0.0;\n}\n"
+    "/* AUTO's GE(IAM, N, M1A, A, NRHS, NDX, U, M1F, F, IR, IC, DET): U = A^-1 F\n"
+    " * for NRHS columns (A(M1A,N), U(NDX,NRHS), F(M1F,NRHS), column-major) by\n"
+    " * Gaussian elimination with partial pivoting; DET = det A.  A and F are\n"
+    " * overwritten, IR and IC unused. */\n"
+    "void ge_(const int *iam, const int *n_, const int *m1a, double *a, const int *nrhs,\n"
+    "         const int *ndx, double *u, const int *m1f, double *f, int *ir, int *ic,\n"
+    "         double *det) {\n"
+    "  const int n = *n_, la = *m1a, lf = *m1f, lu = *ndx, nr = *nrhs;\n"
+    "  (void)iam, (void)ir, (void)ic;\n  *det = 1;\n"
+    "  for (int k = 0; k < n; k++) {\n"
+    "    int p = k;\n"
+    "    for (int i = k + 1; i < n; i++)\n"
+    "      if (__builtin_fabs(a[i + la * k]) > __builtin_fabs(a[p + la * k])) p = i;\n"
+    "    if (p != k) {\n      *det = -*det;\n"
+    "      for (int j = 0; j < n; j++) { double t = a[k + la * j]; a[k + la * j] = a[p + la * j]; a[p + la * j] = t; }\n"
+    "      for (int j = 0; j < nr; j++) { double t = f[k + lf * j]; f[k + lf * j] = f[p + lf * j]; f[p + lf * j] = t; }\n"
+    "    }\n"
+    "    const double piv = a[k + la * k];\n    *det *= piv;\n    if (piv == 0) continue;\n"
+    "    for (int i = k + 1; i < n; i++) {\n"
+    "      const double m = a[i + la * k] / piv;\n"
+    "      for (int j = k; j < n; j++) a[i + la * j] -= m * a[k + la * j];\n"
+    "      for (int j = 0; j < nr; j++) f[i + lf * j] -= m * f[k + lf * j];\n    }\n  }\n"
+    "  for (int j = 0; j < nr; j++)\n"
+    "    for (int i = n - 1; i >= 0; i--) {\n"
+    "      double s = f[i + lf * j];\n"
+    "      for (int k = i + 1; k < n; k++) s -= a[i + la * k] * u[k + lu * j];\n"
+    "      u[i + lu * j] = a[i + la * i] != 0 ? s / a[i + la * i] : 0;\n    }\n}\n"
     "static const int icp[NPX];\n"
     "static int call(const double *x, const double *p, int ijac, double *f, double *dfdu) {\n"
     "  double par[NPX] = {0}, dfdp[N * NPX], df[N * N];\n  const int n = N;\n"
@@ -85,6 +117,7 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "__attribute__((constructor)) static void init(void) {\n"
     "  double par[NPX] = {0}, t = 0;\n  const int n = N;\n"
     "  stpnt_(&n, u0, par, &t);\n  memcpy(par0, par, NP * sizeof *par);\n"
+    "  pvls_(&n, u0, par); /* as AUTO after the start: some set up data there */\n"
     "  whirl_model_def.period0 = par[10] > 0 ? par[10] : 0;\n}\n",
     m->name, m->name);
 }

@@ -121,9 +121,14 @@ static void copy_same(ctx *c) {
   char nb[40];
   int v;
   double x;
-  for (size_t i = 0; i < sizeof same_int / sizeof *same_int; i++)
-    if (whirl_auto_constants_int(c->ac, same_int[i], &v) == WHIRL_OK)
-      put(c->t, "%-6s = %d\n", same_int[i], v);
+  for (size_t i = 0; i < sizeof same_int / sizeof *same_int; i++) {
+    if (whirl_auto_constants_int(c->ac, same_int[i], &v) != WHIRL_OK) continue;
+    /* equilibria do not use the mesh; AUTO accepts any NTST, NCOL there */
+    if (c->ips == 1 && (!strcmp(same_int[i], "NTST") || !strcmp(same_int[i], "NCOL")) &&
+        v < 2)
+      put(c->t, "# note: %s = %d (no mesh for equilibria)\n", same_int[i], v);
+    else put(c->t, "%-6s = %d\n", same_int[i], v);
+  }
   for (size_t i = 0; i < sizeof same_real / sizeof *same_real; i++)
     if (whirl_auto_constants_real(c->ac, same_real[i], &x) == WHIRL_OK)
       put(c->t, "%-6s = %s\n", same_real[i], num(x, nb, sizeof nb));
