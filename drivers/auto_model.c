@@ -58,7 +58,7 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "void func_(const int *, const double *, const int *, const double *, const int *,\n"
     "           double *, double *, double *);\n"
     "void stpnt_(const int *, double *, double *, const double *);\n"
-    "void pvls_(const int *, const double *, double *);\n"
+    "void pvls_(const int *, const double *, double *) __attribute__((weak)); /* optional */\n"
     "/* PVLS's utility; whirl never calls PVLS */\n"
     "double getp_(const char *c, const int *i, const double *u, size_t l) {\n"
     "  (void)c, (void)i, (void)u, (void)l;\n  return 0.0;\n}\n"
@@ -117,7 +117,7 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "__attribute__((constructor)) static void init(void) {\n"
     "  double par[NPX] = {0}, t = 0;\n  const int n = N;\n"
     "  stpnt_(&n, u0, par, &t);\n  memcpy(par0, par, NP * sizeof *par);\n"
-    "  pvls_(&n, u0, par); /* as AUTO after the start: some set up data there */\n"
+    "  if (pvls_) pvls_(&n, u0, par); /* as AUTO after the start: some set up data there */\n"
     "  whirl_model_def.period0 = par[10] > 0 ? par[10] : 0;\n}\n",
     m->name, m->name);
 }

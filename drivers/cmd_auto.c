@@ -307,35 +307,56 @@ static int build_model(auto_job *J) {
   return install_stage(stage, J->out);
 }
 
-/* OUT/b.ID, s.ID, d.ID of run i from its output directory.  0 or 1. */
-static int write_auto_files(const auto_job *J, size_t i) {
-  const auto_run *r = &J->run[i];
-  char dir[4400], path[3][4400], msg[1024];
-  snprintf(dir, sizeof dir, "%s/%s.out", J->out, r->id);
-  const whirl_auto_output o = {dir, r->ac, J->ndim, J->npar, (const char *const *)J->p_names,
-                               (const char *const *)J->x_names};
-  FILE *f[3];
+/* Open OUT/b.STEM, s.STEM, d.STEM for writing (MODE "w" or "a"). */
+static int open_auto(const auto_job *J, const char *stem, const char *mode, FILE *f[3],
+                     char path[3][4400]) {
   static const char kind[3] = {'b', 's', 'd'};
   int rc = 0;
   for (int k = 0; k < 3; k++) {
-    snprintf(path[k], sizeof path[k], "%s/%c.%s", J->out, kind[k], r->id);
-    if (!(f[k] = fopen(path[k], "w"))) rc = 1;
+    snprintf(path[k], sizeof path[k], "%s/%c.%s", J->out, kind[k], stem);
+    if (!(f[k] = fopen(path[k], mode))) rc = 1;
   }
-  if (!rc && whirl_auto_write_files(&o, f[0], f[1], f[2], msg, sizeof msg) != WHIRL_OK) {
-    cli_error("auto", "%s: %s", dir, msg);
-    rc = 1;
-  }
+  return rc;
+}
+
+static int close_auto(FILE *f[3], char path[3][4400], int rc) {
   for (int k = 0; k < 3; k++)
     if (f[k] && fclose(f[k])) rc = 1;
-  if (rc) /* no half-written AUTO files */
+  if (rc) { /* no half-written AUTO files */
+    cli_error("auto", "%s: cannot write", path[0]);
     for (int k = 0; k < 3; k++) unlink(path[k]);
+  }
   return rc;
+}
+
+/* OUT/b.ID, s.ID, d.ID of run i from its output directory, and the run
+ * appended to OUT/b.NAME, s.NAME, d.NAME (emptied before the runs) with its labels
+ * numbered on (*labels: the labels so far).  0 or 1. */
+static int write_auto_files(const auto_job *J, size_t i, int *labels) {
+  const auto_run *r = &J->run[i];
+  char dir[4400], path[3][4400], msg[1024];
+  snprintf(dir, sizeof dir, "%s/%s.out", J->out, r->id);
+  whirl_auto_output o = {dir, r->ac, J->ndim, J->npar, (const char *const *)J->p_names,
+                         (const char *const *)J->x_names, 0};
+  FILE *f[3];
+  int n = 0;
+  for (int merged = 0; merged < 2; merged++) {
+    int rc = open_auto(J, merged ? J->name : r->id, merged ? "a" : "w", f, path);
+    o.label_offset = merged ? *labels : 0;
+    if (!rc && whirl_auto_write_files(&o, f[0], f[1], f[2], &n, msg, sizeof msg) != WHIRL_OK) {
+      cli_error("auto", "%s: %s", dir, msg);
+      rc = 1;
+    }
+    if (close_auto(f, path, rc)) return 1;
+  }
+  *labels += n;
+  return 0;
 }
 
 /* Write the run files and run them all in order (a run after a failed one
  * may still work, as in AUTO).  The first failing status. */
 static int run_all(auto_job *J) {
-  int status = 0;
+  int status = 0, labels = 0;
   for (size_t i = 0; i < J->nrun; i++) {
     char path[4400];
     snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
@@ -345,8 +366,19 @@ static int run_all(auto_job *J) {
       return 1;
     }
   }
+  FILE *f[3];
+  char merged[3][4400];
+  if (close_auto(f, merged, open_auto(J, J->name, "w", f, merged))) return 1;
   for (size_t i = 0; i < J->nrun; i++) {
-    char path[4400];
+    char path[4400], dir[4400];
+    snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
+    /* an earlier invocation's output of this run must not pass for this one's */
+    snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[i].id);
+    remove_files(dir);
+    for (const char *k = "bsd"; *k; k++) {
+      snprintf(path, sizeof path, "%s/%c.%s", J->out, *k, J->run[i].id);
+      unlink(path);
+    }
     snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
     if (!J->quiet) printf("== %s (c.%s)\n", J->run[i].id, J->run[i].c);
     fflush(stdout);
@@ -354,7 +386,8 @@ static int run_all(auto_job *J) {
     int st = cmd_run(J->quiet ? 3 : 2, argv);
     char tsv[4400];
     snprintf(tsv, sizeof tsv, "%s/%s.out/branches.tsv", J->out, J->run[i].id);
-    if (st != 2 && access(tsv, R_OK) == 0 && write_auto_files(J, i) && !st) st = 1;
+    if (st != 2 && access(tsv, R_OK) == 0 && write_auto_files(J, i, &labels) && !st)
+      st = 1;
     if (st) cli_error("auto", "run %s (c.%s) failed (exit %d)", J->run[i].id, J->run[i].c, st);
     if (st && !status) status = st;
   }

@@ -263,7 +263,8 @@ static void b_header(FILE *f, const run *R, const cols *c) {
 static void b_row(FILE *f, const run *R, const cols *c, const row *r) {
   char b[40];
   const int br = R->orbit ? -r->br : r->br, pt = r->stab == 1 ? -(r->pt + 1) : r->pt + 1;
-  fprintf(f, "%4d%6d%4d%5d", br, pt, type_code(r->ty, r->lab, R->orbit), r->lab);
+  fprintf(f, "%4d%6d%4d%5d", br, pt, type_code(r->ty, r->lab, R->orbit),
+          r->lab > 0 ? r->lab + R->o->label_offset : 0);
   for (size_t j = 0; j < c->n; j++) fputs(es(r->v[c->at[j]], 19, 10, b, sizeof b), f);
   fputc('\n', f);
 }
@@ -289,7 +290,7 @@ static void write_d(FILE *f, const run *R) {
     fputs("\n  BR    PT  TY  LAB", f);
     for (size_t j = 0; j < c.n; j++) fprintf(f, " %13.13s", c.name[j]);
     fprintf(f, "\n%4d%6d  %-2s%5d", r->br, r->stab == 1 ? -(r->pt + 1) : r->pt + 1,
-            strcmp(r->ty, "RG") ? r->ty : "  ", r->lab);
+            strcmp(r->ty, "RG") ? r->ty : "  ", r->lab + R->o->label_offset);
     for (size_t j = 0; j < c.n; j++) fputs(es(r->v[c.at[j]], 14, 5, b, sizeof b), f);
     fputs("\n===============================================\n", f);
   }
@@ -319,7 +320,8 @@ static int write_s_block(FILE *f, const run *R, const whirl_solution *S, const r
   const size_t nrow = ntpl * lines_of(n + 1, 7) + lines_of(nfpr, 20) + lines_of(nfpr, 7) +
                       ntpl * lines_of(n, 7) + lines_of(nparw, 7);
   fprintf(f, "%6d%6d%6d%6d%6zu%6d%8zu%6zu%8zu%5d%5d%5zu%5d%5zu%5d%5d\n", r->br, r->pt + 1,
-          type_code(r->ty, r->lab, orbit), r->lab, nfpr, R->isw, ntpl, n + 1, nrow,
+          type_code(r->ty, r->lab, orbit), r->lab + R->o->label_offset, nfpr, R->isw, ntpl,
+          n + 1, nrow,
           orbit ? S->ntst : 1, orbit ? S->ncol : 0, nparw, 0, n, R->ips, 0);
   for (size_t j = 0; j < ntpl; j++) { /* t and the state at node j */
     const size_t iv = orbit ? j / (size_t)S->ncol : 0, k = orbit ? j % (size_t)S->ncol : 0;
@@ -371,8 +373,8 @@ static int write_s(FILE *f, const run *R, char *msg, size_t len) {
   return WHIRL_OK;
 }
 
-int whirl_auto_write_files(const whirl_auto_output *o, FILE *b, FILE *s, FILE *d, char *msg,
-                           size_t len) {
+int whirl_auto_write_files(const whirl_auto_output *o, FILE *b, FILE *s, FILE *d,
+                           int *nlabels, char *msg, size_t len) {
   if (!o || !o->rundir || !o->ac || o->ndim < 1) return WHIRL_EINVAL;
   run R;
   memset(&R, 0, sizeof R);
@@ -382,6 +384,10 @@ int whirl_auto_write_files(const whirl_auto_output *o, FILE *b, FILE *s, FILE *d
   if (!rc && b) write_b(b, &R);
   if (!rc && s) rc = write_s(s, &R, msg, len);
   if (!rc && d) write_d(d, &R);
+  if (!rc && nlabels) {
+    *nlabels = 0;
+    for (size_t i = 0; i < R.t.n; i++) *nlabels += R.t.r[i].lab > 0;
+  }
   if (!rc && ((b && ferror(b)) || (s && ferror(s)) || (d && ferror(d)))) {
     snprintf(msg, len, "write error");
     rc = WHIRL_EIO;

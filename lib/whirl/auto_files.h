@@ -37,13 +37,17 @@ typedef struct whirl_auto_output {
   size_t npar;                   /* the model's parameters PAR(1..npar) */
   const char *const *p_names;    /* column names, or NULL: PAR(k) */
   const char *const *x_names;    /* or NULL: U(i) */
+  int label_offset;              /* added to every label written (0: as
+                                    whirl numbered them; a merged file of
+                                    several runs numbers on, as AUTO's rl) */
 } whirl_auto_output;
 
-/* Write b, s and d (any may be NULL).  WHIRL_OK, WHIRL_EIO (a file that
- * cannot be read or written) or WHIRL_EINVAL (a table whirl did not
- * write), with a message in msg[len]. */
+/* Write b, s and d (any may be NULL), and the number of labels in
+ * *nlabels (NULL: not wanted).  WHIRL_OK, WHIRL_EIO (a file that cannot be
+ * read or written) or WHIRL_EINVAL (a table whirl did not write), with a
+ * message in msg[len]. */
 WHIRL_API int whirl_auto_write_files(const whirl_auto_output *o, FILE *b, FILE *s,
-                                     FILE *d, char *msg, size_t len);
+                                     FILE *d, int *nlabels, char *msg, size_t len);
 
 #ifdef __cplusplus
 }

@@ -14,8 +14,9 @@
 #     source tree; skipped where absent): the HB of c.ab.2 from label 2
 #     against AUTO's own output (test/hyper.all: 1.65042E-01 1.47770E+00
 #     4.05955E-01 1.42084E+00), the s-file header of label 1 against the
-#     line AUTO writes, and, where the Debian package auto-07p is
-#     installed, AUTO's parseB/parseS/parseD loading every file.
+#     line AUTO writes, the merged b.ab numbering labels on, and, where the
+#     Debian package auto-07p is installed, AUTO's parseB/parseS/parseD
+#     loading every file.
 # TAP output.
 set -u
 : "${top_srcdir:=.}" "${top_builddir:=.}"
@@ -150,9 +151,13 @@ if [ -d "$auto/demos/ab" ]; then
   check $? "b.ab.2@2: the HB agrees with AUTO's (hyper.all) to its 6 digits: $hb"
   head -1 "$tmp/ab.out/s.ab.1" | grep -qx '     1     1     9     1     1     1       1     3       6    1    0   11    0    2    1    0'
   check $? "s.ab.1: label 1's header as AUTO writes it"
+  labs=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 > 0 { printf "%d ", substr($0, 15, 5) }' "$tmp/ab.out/b.ab")
+  nl=$(grep -c '^LAB' "$tmp/ab.out/ab.1.out/solutions"); n2=$(grep -c '^LAB' "$tmp/ab.out/ab.2@2.out/solutions")
+  [ "$labs" = "$(seq -s ' ' 1 $((nl + n2))) " ]
+  check $? "b.ab: both runs, labels numbered on 1..$((nl + n2)) as AUTO's rl() does ($labs)"
   py=${AUTO_07P_PYTHON:-/usr/lib/auto-07p/python}
   if [ -f "$py/auto/parseB.py" ] && command -v python3 >/dev/null 2>&1; then
-    (cd "$tmp/ab.out" && python3 - "$py" ab.1 ab.2@2 > "$tmp/py.out" 2>&1 <<'PY'
+    (cd "$tmp/ab.out" && python3 - "$py" ab.1 ab.2@2 ab > "$tmp/py.out" 2>&1 <<'PY'
 import sys
 sys.path.insert(0, sys.argv[1])
 from auto import parseB, parseS, parseD
@@ -166,7 +171,7 @@ for stem in sys.argv[2:]:
     print(stem, len(bl), "labels", b.branches[0].coordnames)
 PY
     )
-    check $? "AUTO's parseB, parseS, parseD read b., s., d. of both runs: $(tr '\n' ';' < "$tmp/py.out" | cut -c1-160)"
+    check $? "AUTO's parseB, parseS, parseD read b., s., d. of both runs and the merged b.ab, s.ab, d.ab: $(tr '\n' ';' < "$tmp/py.out" | cut -c1-160)"
   else
     n=$((n + 1)); echo "ok $n - # SKIP AUTO's Python tools not installed (apt-get install auto-07p)"
   fi
