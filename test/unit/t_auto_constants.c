@@ -143,6 +143,63 @@ static void errors(void) {
   whirl_auto_constants_free(ac);
 }
 
+/* ---- as a whirl run file ---------------------------------------------- */
+
+static void runfile(void) {
+  int rc;
+  whirl_auto_constants *ac = parse(
+      "NDIM=2, IPS=2, IRS=3, ISW=1\n"
+      "ICP=['Da', 'PERIOD']\n"
+      "UZR={-1: 0.25, 'Da': [0.1, 0.2], 22: 0.0, 11: 5}\n"
+      "parnames={1: 'Da'}, unames={1: 'x'}\n"
+      "NPAR=3, DS=0.01\n"
+      "THL={11: 0}\n"
+      "U={'x': 1.5}\n", &rc);
+  const whirl_auto_runfile_opts o = {"m.so", "prev.out", NULL, "o.out", 3};
+  char *t = NULL;
+  ok(rc == WHIRL_OK && whirl_auto_constants_runfile(ac, &o, &t) == WHIRL_OK && t,
+     "translates (%s)", whirl_auto_constants_errmsg(ac));
+  static const char *const want[] = {
+      "\nmodel  = 'm.so'\n", "\nOUT    = 'o.out'\n", "\nIPS    = 2\n", "\nISW    = 1\n",
+      "\nJAC    = 0\n", "\nICP    = [1, PERIOD]\n", "\nS      = 'prev.out'\n",
+      "\nIRS    = 3\n", "\nNDIM   = 2\n", "\nDS     = 0.01\n", "\nU      = {1: 1.5}\n",
+      "\n# note: UZR on PAR(22): not a parameter of the model (a PVLS quantity?), ignored\n",
+      "\nUZR    = {1: [0.1, 0.2], PERIOD: [5]}\n", "\nUZSTOP = {1: [0.25]}\n",
+      "\n# note: THL (line 6) is not used by whirl\n"};
+  for (size_t i = 0; i < sizeof want / sizeof *want; i++)
+    ok(t && strstr(t, want[i]), "run file has '%.*s'", (int)strlen(want[i]) - 2, want[i] + 1);
+  whirl_runfile *rf = whirl_runfile_alloc();
+  ok(t && whirl_runfile_parse(rf, "t.whirl", t, strlen(t)) == WHIRL_OK,
+     "whirl's run-file parser reads it (%s)", whirl_runfile_errmsg(rf));
+  whirl_runfile_free(rf);
+  free(t);
+  whirl_auto_constants_free(ac);
+
+  static const struct {
+    const char *text, *msg;
+    const char *restart;
+  } bad[] = {
+      {"NDIM=1\nIPS = 4\nICP=[1]\n", "c.t:2: IPS = 4: whirl runs AUTO's equilibria (1) and "
+                                      "periodic orbits (2) only", NULL},
+      {"NDIM=1, ICP=[1]\ndat = 'x'\n", "c.t:2: dat = 'x': whirl cannot start from a data file yet",
+       NULL},
+      {"NDIM=1, ICP=[1]\n\nIRS = 3\n", "c.t:3: IRS = 3: no earlier run to restart from", NULL},
+      {"NDIM=1\nICP=['foo']\n", "c.t:2: ICP: 'foo' is neither in parnames nor PERIOD", NULL},
+      {"NDIM=1\nICP=[7]\n", "c.t:2: ICP: PAR(7) beyond NPAR = 3", NULL},
+      {"NDIM=1\nICP=[1], ISW = 3\n", "c.t:2: ISW = 3: whirl has ISW = 1, -1 and 2 only", NULL},
+      {"NDIM=1, ICP=[1]\nU = {2: 0}\n", "c.t:2: U: U(2) beyond NDIM = 1", NULL},
+  };
+  for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+    ac = parse(bad[i].text, &rc);
+    const whirl_auto_runfile_opts ob = {"m.so", bad[i].restart, NULL, NULL, 3};
+    t = NULL;
+    rc = rc ? rc : whirl_auto_constants_runfile(ac, &ob, &t);
+    ok(rc == WHIRL_EINVAL && !t && !strcmp(whirl_auto_constants_errmsg(ac), bad[i].msg),
+       "refused: %s (got '%s')", bad[i].msg, whirl_auto_constants_errmsg(ac));
+    whirl_auto_constants_free(ac);
+  }
+}
+
 /* ---- the demos' own files ---------------------------------------------- */
 
 static char demos[1200];
@@ -167,6 +224,31 @@ static whirl_auto_constants *demo_file(const char *rel) {
   return ac;
 }
 
+static size_t ntranslated, nrunfile_bad;
+
+/* A demo file of IPS 1 or 2 without dat, as a run file: whirl's parser
+ * must read it. */
+static void translate_demo(whirl_auto_constants *ac) {
+  int ips = 1, npar = 36;
+  whirl_auto_constants_int(ac, "IPS", &ips);
+  whirl_auto_constants_int(ac, "NPAR", &npar);
+  if ((ips != 1 && ips != 2) || whirl_auto_constants_line(ac, "dat")) return;
+  const whirl_auto_runfile_opts o = {"m.so", "r.out", NULL, "o.out", (size_t)npar};
+  char *t = NULL;
+  if (whirl_auto_constants_runfile(ac, &o, &t) != WHIRL_OK) {
+    printf("# %s\n", whirl_auto_constants_errmsg(ac));
+    return; /* refused with a message: not counted */
+  }
+  whirl_runfile *rf = whirl_runfile_alloc();
+  ntranslated++;
+  if (whirl_runfile_parse(rf, whirl_auto_constants_name(ac), t, strlen(t)) != WHIRL_OK) {
+    printf("# %s\n", whirl_runfile_errmsg(rf));
+    nrunfile_bad++;
+  }
+  whirl_runfile_free(rf);
+  free(t);
+}
+
 /* Every c.* of one demo directory; the number of files, *bad those that fail. */
 static size_t parse_demo(const char *name, size_t *bad) {
   char dirpath[1400];
@@ -179,6 +261,7 @@ static size_t parse_demo(const char *name, size_t *bad) {
     snprintf(rel, sizeof rel, "%s/%s", name, e->d_name);
     whirl_auto_constants *ac = demo_file(rel);
     if (*whirl_auto_constants_errmsg(ac)) (*bad)++;
+    else translate_demo(ac);
     whirl_auto_constants_free(ac);
     n++;
   }
@@ -198,6 +281,9 @@ static void every_demo(void) {
   if (dir) closedir(dir);
   ok(files >= 300 && bad == 0, "every c.* of the %zu demos parses: %zu files, %zu failed",
      ndemos, files, bad);
+  ok(ntranslated >= 80 && nrunfile_bad == 0,
+     "the %zu of IPS 1 or 2 translate into run files whirl's parser reads (%zu fail)",
+     ntranslated, nrunfile_bad);
 }
 
 /* ab/c.ab.1: its text, copied by hand. */
@@ -313,6 +399,7 @@ int main(int argc, char **argv) {
   if (argc > 1 && !strcmp(argv[1], "--dump")) return dump(argc, argv);
   syntax();
   errors();
+  runfile();
   if (!find_demos()) {
     printf("# SKIP the demos: %s not found (set AUTO_07P_DIR)\n", demos);
   } else {
