@@ -249,7 +249,7 @@ static int check_out(const char *out) {
 
 static void remove_files(const char *dir) {
   DIR *d = opendir(dir);
-  char p[4400];
+  char p[4800];
   for (struct dirent *e; d && (e = readdir(d));) {
     if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
     snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
@@ -266,7 +266,7 @@ static int install_stage(const char *stage, const char *out) {
     return 1;
   }
   DIR *d = opendir(stage);
-  char a[4400], b[4400];
+  char a[4800], b[4800];
   int rc = d ? 0 : 1;
   for (struct dirent *e; d && (e = readdir(d));) {
     if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;

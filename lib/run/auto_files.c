@@ -4,6 +4,7 @@
  * manual, ch. "Output files") and as its Python reader parseB/parseS takes
  * it: fixed-width integers, ES19.10E3 reals, column names at 19 characters.
  * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* strtok_r */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -22,9 +23,9 @@ static const char *es(double x, int w, int d, char *buf, size_t len) {
   char *e = strchr(m, 'E');
   int ex = e ? atoi(e + 1) : 0;
   if (e) *e = 0;
-  char t[80];
-  snprintf(t, sizeof t, "%sE%c%03d", m, ex < 0 ? '-' : '+', ex < 0 ? -ex : ex);
-  snprintf(buf, len, "%*s", w, t);
+  char t[40];
+  snprintf(t, sizeof t, "%.24sE%c%03d", m, ex < 0 ? '-' : '+', (ex < 0 ? -ex : ex) % 1000);
+  snprintf(buf, len, "%*.32s", w, t);
   return buf;
 }
 
@@ -154,7 +155,7 @@ static int type_code(const char *ty, int lab, int orbit) {
  * values, and the name. */
 typedef struct cols {
   size_t at[64];
-  char name[64][20];
+  char name[64][32];
   size_t n;
 } cols;
 
@@ -166,7 +167,7 @@ static size_t par_at(const run *R, int k) {
 static void add_col(cols *c, size_t at, const char *name) {
   if (at == (size_t)-1 || c->n == 64) return;
   c->at[c->n] = at;
-  snprintf(c->name[c->n++], sizeof c->name[0], "%s", name);
+  snprintf(c->name[c->n++], sizeof c->name[0], "%.31s", name);
 }
 
 static void par_name(const run *R, int k, char *buf, size_t len) {
