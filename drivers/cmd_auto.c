@@ -198,6 +198,24 @@ static long restart_from(const auto_job *J, size_t i) {
   return (long)i - 1;
 }
 
+/* Run i's run file, restarting from run FROM (-1: none).  0 or 2. */
+static int translate_run(auto_job *J, size_t i, long from) {
+  auto_run *r = &J->run[i];
+  char model[400], restart[4400], out[4400];
+  snprintf(model, sizeof model, "%s.so", J->name);
+  if (from >= 0) snprintf(restart, sizeof restart, "%s/%s.out", J->out, J->run[from].id);
+  snprintf(out, sizeof out, "%s/%s.out", J->out, r->id);
+  const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL,
+                                     r->label[0] ? r->label : NULL, out, J->npar};
+  free(r->text);
+  r->text = NULL;
+  if (whirl_auto_constants_runfile(r->ac, &o, &r->text) != WHIRL_OK) {
+    cli_error("auto", "%s", whirl_auto_constants_errmsg(r->ac));
+    return 2;
+  }
+  return 0;
+}
+
 /* Each run's id (unique in OUT) and run file.  0 or 2. */
 static int translate(auto_job *J) {
   for (size_t i = 0; i < J->nrun; i++) {
@@ -206,18 +224,57 @@ static int translate(auto_job *J) {
     for (size_t k = 0, dup = 1; k < i; k++)
       if (!strcmp(J->run[k].id, r->id))
         snprintf(r->id, sizeof r->id, "%s%s%s-%zu", r->c, r->label[0] ? "@" : "", r->label, ++dup);
-    char model[400], restart[4400], out[4400];
-    snprintf(model, sizeof model, "%s.so", J->name);
     const long from = restart_from(J, i);
-    if (from == -2) return 2;
-    if (from >= 0) snprintf(restart, sizeof restart, "%s/%s.out", J->out, J->run[from].id);
-    snprintf(out, sizeof out, "%s/%s.out", J->out, r->id);
-    const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL,
-                                       r->label[0] ? r->label : NULL, out, J->npar};
-    if (whirl_auto_constants_runfile(r->ac, &o, &r->text) != WHIRL_OK) {
-      cli_error("auto", "%s", whirl_auto_constants_errmsg(r->ac));
-      return 2;
-    }
+    if (from == -2 || translate_run(J, i, from)) return 2;
+  }
+  return 0;
+}
+
+/* Can run i (its IPS, ISW) start from solution S? */
+static int fits(const auto_run *r, const whirl_solution *S) {
+  int ips = 1, isw = 1;
+  whirl_auto_constants_int(r->ac, "IPS", &ips);
+  whirl_auto_constants_int(r->ac, "ISW", &isw);
+  const char *t = S->ty;
+  if (ips == 1)
+    return S->kind == WHIRL_SOL_EQ && (isw == 2 ? !strcmp(t, "LP") || !strcmp(t, "HB")
+                                       : isw == -1 ? !strcmp(t, "BP") : 1);
+  if (S->kind == WHIRL_SOL_EQ) return !strcmp(t, "HB");
+  if (isw == -1) return !strcmp(t, "BP") || !strcmp(t, "PD");
+  if (isw == 2) return !strcmp(t, "LP") || !strcmp(t, "PD") || !strcmp(t, "TR");
+  return 1;
+}
+
+/* Run i restarts by the default rule (IRS, no @RUN): AUTO's scripts name
+ * labels of any earlier run (often the first), so take the nearest earlier
+ * run whose label IRS (or k-th point of type TY) is one run i can start
+ * from; else the run before.  Re-translates run i when that changes its
+ * source.  0 or 2. */
+static int pick_source(auto_job *J, size_t i) {
+  auto_run *r = &J->run[i];
+  int irs = 0;
+  const char *t = whirl_auto_constants_text(r->ac, "IRS");
+  char lab[64] = "";
+  if (r->from[0] || i == 0) return 0;
+  if (r->label[0]) snprintf(lab, sizeof lab, "%s", r->label);
+  else if (t) snprintf(lab, sizeof lab, "%s", t);
+  else if (whirl_auto_constants_int(r->ac, "IRS", &irs) == WHIRL_OK && irs) snprintf(lab, sizeof lab, "%d", irs);
+  if (!lab[0]) return 0;
+  char ty[8] = "";
+  size_t nty = 0;
+  while (nty < 7 && isalpha((unsigned char)lab[nty])) ty[nty] = lab[nty], nty++;
+  ty[nty] = 0;
+  const int k = atoi(lab + nty);
+  const long def = restart_from(J, i);
+  for (long j = (long)i - 1; j >= 0; j--) {
+    char dir[4400], msg[512];
+    whirl_solution S;
+    const whirl_solution_shape any = {NULL, 0, 0, -1};
+    snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[j].id);
+    if (whirl_solution_find(dir, &any, k, ty, &S, msg, sizeof msg)) continue;
+    const int good = fits(r, &S);
+    whirl_solution_free(&S);
+    if (good) return j == def ? 0 : translate_run(J, i, j);
   }
   return 0;
 }
@@ -340,7 +397,8 @@ static int write_auto_files(const auto_job *J, size_t i, int *labels) {
                          (const char *const *)J->x_names, 0};
   FILE *f[3];
   int n = 0;
-  for (int merged = 0; merged < 2; merged++) {
+  /* a run named NAME (c.NAME) has the merged files as its own */
+  for (int merged = !strcmp(r->id, J->name); merged < 2; merged++) {
     int rc = open_auto(J, merged ? J->name : r->id, merged ? "a" : "w", f, path);
     o.label_offset = merged ? *labels : 0;
     if (!rc && whirl_auto_write_files(&o, f[0], f[1], f[2], &n, msg, sizeof msg) != WHIRL_OK) {
@@ -379,7 +437,13 @@ static int run_all(auto_job *J) {
       snprintf(path, sizeof path, "%s/%c.%s", J->out, *k, J->run[i].id);
       unlink(path);
     }
+    if (pick_source(J, i)) return 2;
     snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
+    FILE *rf = fopen(path, "w");
+    if (!rf || fputs(J->run[i].text, rf) < 0 || fclose(rf)) {
+      cli_error("auto", "%s: cannot write", path);
+      return 1;
+    }
     if (!J->quiet) printf("== %s (c.%s)\n", J->run[i].id, J->run[i].c);
     fflush(stdout);
     char *argv[] = {"run", path, J->quiet ? "--quiet" : NULL, NULL};

@@ -36,9 +36,10 @@ auto_points() {
     on && $1 ~ /^-?[0-9]+$/ && $2 ~ /^-?[0-9]+$/ && $3 ~ /^(BP|LP|HB|PD|TR|BT|CP|ZH|GH)$/ {
       s = $3; for (i = 5; i <= NF; i++) s = s " " $i; print s }' "$hyper"
 }
-# whirl's, from the b-files: AUTO's type codes at columns 11-14
+# whirl's, from the b-file of all runs, b.$2: AUTO's type codes at
+# columns 11-14
 whirl_points() {
-  for b in "$1"/b.*; do
+  for b in "$1/b.$2"; do
     [ -f "$b" ] || continue
     awk 'substr($0, 1, 4) + 0 != 0 {
       t = substr($0, 11, 4) + 0
@@ -78,7 +79,7 @@ for dir in "$demos"/*/; do
   nrun=$(ls "$tmp/$d.out"/*.whirl 2>/dev/null | wc -l)
   nbad=$(grep -c 'failed (exit' "$tmp/$d.log")
   auto_points "$d" > "$tmp/$d.auto"
-  whirl_points "$tmp/$d.out" > "$tmp/$d.whirl"
+  whirl_points "$tmp/$d.out" "$d" > "$tmp/$d.whirl"
   w=$(wc -l < "$tmp/$d.whirl"); a=$(wc -l < "$tmp/$d.auto")
   match "$tmp/$d.whirl" "$tmp/$d.auto" > "$tmp/$d.m1"; c=$(tail -1 "$tmp/$d.m1")
   match "$tmp/$d.auto" "$tmp/$d.whirl" > "$tmp/$d.m2"; f=$(tail -1 "$tmp/$d.m2")
