@@ -145,6 +145,13 @@ typedef struct scanner {
   size_t nlines, li, i;
 } scanner;
 
+/* Control bytes of the user's text shown in a message as '?': one line
+ * of printable text. */
+static void printable(char *s) {
+  for (; *s; s++)
+    if ((unsigned char)*s < 0x20 || *s == 0x7f) *s = '?';
+}
+
 static int fail(whirl_auto_constants *ac, size_t line, const char *fmt, ...)
     WHIRL_PRINTF_LIKE(3, 4);
 static int fail(whirl_auto_constants *ac, size_t line, const char *fmt, ...) {
@@ -154,6 +161,7 @@ static int fail(whirl_auto_constants *ac, size_t line, const char *fmt, ...) {
   va_start(ap, fmt);
   whirl_errmsg_vat(ac->err, sizeof ac->err, WHIRL_EINVAL, where, fmt, ap);
   va_end(ap);
+  printable(ac->err);
   return WHIRL_EINVAL;
 }
 
@@ -735,5 +743,6 @@ int whirl_auto_constants_fail(whirl_auto_constants *ac, int line, const char *fm
   va_start(ap, fmt);
   whirl_errmsg_vat(ac->err, sizeof ac->err, WHIRL_EINVAL, where, fmt, ap);
   va_end(ap);
+  printable(ac->err);
   return WHIRL_EINVAL;
 }
