@@ -481,7 +481,10 @@ static int parse_args(auto_job *J, int argc, char **argv, const char **runs) {
     usage(stderr);
     return 2;
   }
-  J->dir = pos[0];
+  static char dir[4096];
+  snprintf(dir, sizeof dir, "%s", pos[0]);
+  for (size_t n = strlen(dir); n > 1 && dir[n - 1] == '/';) dir[--n] = 0;
+  J->dir = dir;
   if (pos[1]) J->name = pos[1];
   else { /* DIR's last component */
     static char base[256];
