@@ -97,6 +97,7 @@ double cli_now(void); /* monotonic seconds */
 int cli_is_tty(void);
 
 int cmd_run(int argc, char **argv);
+int cmd_auto(int argc, char **argv); /* cmd_auto.c: AUTO-07p files */
 int cmd_sfd_response(int argc, char **argv);
 int cmd_sfd_simulate(int argc, char **argv);
 int cmd_sfd_nonsync(int argc, char **argv);

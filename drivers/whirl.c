@@ -52,6 +52,9 @@ static void usage(FILE *f) {
                 "run an AUTO-style run file on any model (built-in or a plug-in .so): "
                 "equilibria, periodic orbits, loci, branch switching, basins "
                 "(doc/run-files.md)", 17);
+  cli_help_item(f, "auto DIR [NAME]",
+                "run an AUTO-07p problem from its own constants files and "
+                "equations (doc/auto-files.md)", 17);
   list_sfd(f, "sfd ", 17);
   cli_rotor_help(f, "rotor ", 17);
   fprintf(f,
@@ -84,6 +87,7 @@ int main(int argc, char **argv) {
     return 0;
   }
   if (!strcmp(argv[1], "run")) return cmd_run(argc - 1, argv + 1);
+  if (!strcmp(argv[1], "auto")) return cmd_auto(argc - 1, argv + 1);
   if (!strcmp(argv[1], "rotor")) return cmd_rotor(argc - 1, argv + 1);
   if (!strcmp(argv[1], "sfd")) {
     if (argc < 3) {

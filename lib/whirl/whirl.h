@@ -24,4 +24,6 @@
 #include <whirl/runfile.h>
 #include <whirl/solution.h>
 #include <whirl/run.h>
+#include <whirl/auto_constants.h>
+#include <whirl/auto_files.h>
 #endif

@@ -10,6 +10,8 @@
 #               (fuzz_solutions.c, lib/run/solution.c)
 #   rotorfile   the reader of rotor files (fuzz_rotorfile.c, rotor/fe_file.c
 #               with the Matrix Market reader, CHOLMOD)
+#   auto        AUTO-07p constants files and their run files
+#               (fuzz_auto_constants.c, lib/run/auto_constants.c, auto_runfile.c)
 # (default: all).  Each target prints one line
 #   fuzz_NAME: RUNS runs requested, exit RC, N s wall
 # Environment: CLANG (default clang), FUZZ_JOBS (parallel workers, default 1),
@@ -27,7 +29,7 @@
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
-all="runfile solutions rotorfile"
+all="runfile solutions rotorfile auto"
 usage() { echo "usage: $0 [RUNS] [TARGET ...]   (targets: $all)" >&2; exit 2; }
 runs=1000000
 case ${1:-} in
@@ -64,6 +66,7 @@ sources() {
   case $1 in
     runfile) echo "$here/fuzz_runfile.c $top/lib/run/runfile.c $top/lib/util/errmsg.c" ;;
     solutions) echo "$here/fuzz_solutions.c $top/lib/run/solution.c $top/lib/util/errmsg.c" ;;
+    auto) echo "$here/fuzz_auto_constants.c $top/lib/run/auto_constants.c $top/lib/run/auto_runfile.c $top/lib/run/runfile.c $top/lib/util/errmsg.c" ;;
     rotorfile) echo "$here/fuzz_rotorfile.c $top/rotor/fe_file.c $top/rotor/fe_sparse.c $top/rotor/fe_matrix.c $top/lib/run/runfile.c $top/lib/util/errmsg.c -lcholmod" ;;
   esac
 }

@@ -31,7 +31,7 @@ layer_of_header() {
     ode.h|floquet.h) echo ode ;;
     equilibrium.h|hbm.h|colloc.h|fold.h|hopf.h|periodic.h) echo systems ;;
     spectrum.h|section.h|basins.h|deflate.h) echo analysis ;;
-    runfile.h|model.h|run.h|solution.h) echo run ;;
+    runfile.h|model.h|run.h|solution.h|auto_constants.h|auto_files.h) echo run ;;
     whirl.h) echo whirl ;;
     *) echo "" ;;
   esac

@@ -1,0 +1,27 @@
+/* drivers/auto_model.h — an AUTO-07p equations file (NAME.f90, NAME.f) as
+ * a whirl plug-in: a generated adapter (auto_model.c) that calls the user
+ * routines FUNC and STPNT by AUTO's calling convention, compiled with them
+ * (gfortran, or $FC) into NAME.so.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_AUTO_MODEL_H
+#define WHIRL_AUTO_MODEL_H
+#include <stddef.h>
+
+typedef struct auto_model_info {
+  const char *name;            /* the model's name: AUTO's NAME */
+  int ndim;                    /* NDIM */
+  size_t npar;                 /* PAR(1..npar) are whirl's parameters */
+  const char *const *p_names;  /* npar names */
+  const char *const *x_names;  /* ndim names */
+} auto_model_info;
+
+/* The equations file of demo NAME in DIR (NAME.f90, NAME.f, else NAME.c)
+ * into path[len]: 0, or 2 with a message printed (none, or C). */
+int auto_model_source(const char *dir, const char *name, char *path, size_t len);
+
+/* Write STAGE/auto_model.c and compile it with SOURCE into STAGE/NAME.so.
+ * 0, or 2 with a message and the compiler's own lines printed (the
+ * equations do not compile, FUNC or STPNT missing), 1 for I/O errors. */
+int auto_model_build(const char *stage, const char *source, const auto_model_info *m);
+
+#endif

@@ -1,0 +1,530 @@
+/* drivers/cmd_auto.c — `whirl auto DIR [NAME]`: an AUTO-07p demo (or any
+ * AUTO problem directory) run from its own files, unchanged: the constants
+ * files c.NAME.1, c.NAME.2, ... (whirl/auto_constants.h) each translated
+ * into a whirl run file, the equations NAME.f90 compiled into a plug-in
+ * (auto_model.c), and the runs executed in order by `whirl run`, each into
+ * its own output directory, so that no run replaces the output another
+ * restarts from.  doc/auto-files.md.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L
+#include <ctype.h>
+#include <dirent.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <whirl/whirl.h>
+
+#include "auto_model.h"
+#include "cli.h"
+
+#define MAXRUNS 64
+#define MARKER ".whirl-auto"
+
+typedef struct auto_run {
+  char c[256];    /* the constants file's suffix: ab.1 (c.ab.1) */
+  char label[64]; /* "@LABEL": the restart label, or "" */
+  char from[320]; /* "@ID:LABEL": the run to restart from, or "" */
+  char id[320];   /* the run's name in OUT: ab.1, ab.2@3 */
+  whirl_auto_constants *ac;
+  char *text;     /* the whirl run file */
+} auto_run;
+
+typedef struct auto_job {
+  const char *dir, *name, *out;
+  int quiet;
+  auto_run run[MAXRUNS];
+  size_t nrun;
+  size_t npar;
+  int ndim;
+  char **p_names, **x_names;
+} auto_job;
+
+static void usage(FILE *f) {
+  fprintf(f,
+          "usage: whirl auto DIR [NAME] [--runs=C1,C2@LABEL,...] [--out=OUT] [--quiet]\n"
+          "\n"
+          "Run an AUTO-07p problem from its own files: the constants files\n"
+          "DIR/c.NAME.1, c.NAME.2, ... (or DIR/c.NAME alone) in order, the equations\n"
+          "DIR/NAME.f90 compiled (gfortran, or $FC) into a plug-in.  NAME defaults to\n"
+          "DIR's last component.  --runs names the constants files (c.C1, ...) to run,\n"
+          "in order; C@LABEL restarts from LABEL (a number or HB1) of the run before.\n"
+          "A run whose IRS is not 0 restarts from the run before it.\n"
+          "Output (default NAME.out): NAME.so, and for each run C its run file\n"
+          "C.whirl and output directory C.out (branches.tsv, solutions, run.log).\n"
+          "doc/auto-files.md.\n");
+}
+
+/* "--runs=a,b@3": the runs. 0 or 2. */
+static int parse_runs(auto_job *J, const char *list) {
+  char buf[4096];
+  snprintf(buf, sizeof buf, "%s", list);
+  for (char *save = NULL, *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+    if (J->nrun == MAXRUNS) {
+      cli_error("auto", "--runs: more than %d runs", MAXRUNS);
+      return 2;
+    }
+    auto_run *r = &J->run[J->nrun++];
+    char *at = strchr(t, '@'), *colon = at ? strrchr(at, ':') : NULL;
+    if (colon) *colon = 0, snprintf(r->label, sizeof r->label, "%s", colon + 1);
+    if (at) {
+      *at = 0;
+      snprintf(colon ? r->from : r->label, colon ? sizeof r->from : sizeof r->label, "%s", at + 1);
+    }
+    snprintf(r->c, sizeof r->c, "%s", t);
+    if (!r->c[0] || (at && !r->label[0]) || (colon && !r->from[0]) || strchr(r->c, '/')) {
+      cli_error("auto", "--runs: '%s' is not C, C@LABEL or C@RUN:LABEL (c.C in DIR)", t);
+      return 2;
+    }
+  }
+  return 0;
+}
+
+static int by_suffix(const void *a, const void *b) {
+  const char *x = *(char *const *)a, *y = *(char *const *)b;
+  const char *dx = strrchr(x, '.'), *dy = strrchr(y, '.');
+  long nx = dx ? strtol(dx + 1, NULL, 10) : 0, ny = dy ? strtol(dy + 1, NULL, 10) : 0;
+  return nx != ny ? (nx < ny ? -1 : 1) : strcmp(x, y);
+}
+
+/* The default runs: c.NAME.<k> by k, else c.NAME.  0 or 2. */
+static int default_runs(auto_job *J) {
+  DIR *d = opendir(J->dir);
+  if (!d) {
+    cli_error("auto", "%s: %s", J->dir, strerror(errno));
+    return 2;
+  }
+  char *names[MAXRUNS];
+  size_t n = 0, len = strlen(J->name);
+  int plain = 0;
+  for (struct dirent *e; (e = readdir(d));) {
+    const char *s = e->d_name;
+    if (strncmp(s, "c.", 2) || strncmp(s + 2, J->name, len)) continue;
+    if (!s[2 + len]) plain = 1;
+    else if (s[2 + len] == '.' && isdigit((unsigned char)s[3 + len]) && n < MAXRUNS)
+      names[n++] = strdup(s + 2);
+  }
+  closedir(d);
+  if (!n && plain) names[n++] = strdup(J->name);
+  if (!n) {
+    cli_error("auto", "%s: no constants file c.%s or c.%s.1", J->dir, J->name, J->name);
+    return 2;
+  }
+  qsort(names, n, sizeof *names, by_suffix);
+  for (size_t i = 0; i < n; i++) {
+    snprintf(J->run[i].c, sizeof J->run[i].c, "%s", names[i] ? names[i] : "");
+    free(names[i]);
+  }
+  J->nrun = n;
+  return 0;
+}
+
+/* Read every constants file.  0 or 2 (the message printed). */
+static int read_constants(auto_job *J) {
+  for (size_t i = 0; i < J->nrun; i++) {
+    auto_run *r = &J->run[i];
+    char path[4400];
+    snprintf(path, sizeof path, "%s/c.%s", J->dir, r->c);
+    r->ac = whirl_auto_constants_alloc();
+    if (!r->ac) return 1;
+    if (whirl_auto_constants_read(r->ac, path) != WHIRL_OK) {
+      cli_error("auto", "%s", whirl_auto_constants_errmsg(r->ac));
+      return 2;
+    }
+    int n = 0;
+    whirl_auto_constants_int(r->ac, "NPAR", &n);
+    if (n > 0 && (size_t)n > J->npar) J->npar = (size_t)n;
+    if (!J->ndim) whirl_auto_constants_int(r->ac, "NDIM", &J->ndim);
+  }
+  if (J->ndim < 1) {
+    cli_error("auto", "%s/c.%s: NDIM missing", J->dir, J->run[0].c);
+    return 2;
+  }
+  if (!J->npar) J->npar = 36; /* AUTO's NPARX */
+  return 0;
+}
+
+/* Whirl's run-file names: letters, digits, _ . ( ) - + ^ /, not a digit
+ * first (whirl_model_check). */
+static int name_ok(const char *s) {
+  if (!s || !*s || strlen(s) >= 64 || isdigit((unsigned char)*s)) return 0;
+  for (; *s; s++)
+    if (!isalnum((unsigned char)*s) && !strchr("_.()-+^/", *s)) return 0;
+  return 1;
+}
+
+/* The names of the model's parameters or state components: AUTO's
+ * parnames / unames where given and usable, else PAR(k) / U(k). */
+static char **make_names(const auto_job *J, const char *key, const char *stem, size_t n) {
+  char **v = calloc(n, sizeof *v);
+  for (size_t k = 0; v && k < n; k++) {
+    const char *given = NULL;
+    for (size_t i = 0; i < J->nrun && !given; i++)
+      for (size_t j = 0; j < whirl_auto_constants_count(J->run[i].ac, key); j++) {
+        whirl_auto_item it;
+        whirl_auto_constants_item(J->run[i].ac, key, j, &it);
+        if ((size_t)it.index == k + 1) given = it.text;
+      }
+    for (size_t m = 0; given && m < k; m++)
+      if (!strcmp(v[m], given)) given = NULL;
+    char buf[80];
+    snprintf(buf, sizeof buf, "%s(%zu)", stem, k + 1);
+    v[k] = strdup(name_ok(given) ? given : buf);
+  }
+  return v;
+}
+
+static void free_names(char **v, size_t n) {
+  for (size_t i = 0; v && i < n; i++) free(v[i]);
+  free(v);
+}
+
+/* The run that run i restarts from: @RUN:LABEL's RUN; for @LABEL the
+ * nearest earlier run of another constants file; else the run before.
+ * -1: none (the first run), -2: RUN unknown (said). */
+static long restart_from(const auto_job *J, size_t i) {
+  const auto_run *r = &J->run[i];
+  for (size_t k = i; r->from[0] && k-- > 0;)
+    if (!strcmp(J->run[k].id, r->from)) return (long)k;
+  if (r->from[0]) {
+    cli_error("auto", "--runs: %s@%s:%s: no earlier run %s", r->c, r->from, r->label, r->from);
+    return -2;
+  }
+  for (size_t k = i; r->label[0] && k-- > 0;)
+    if (strcmp(J->run[k].c, r->c)) return (long)k;
+  return (long)i - 1;
+}
+
+/* Run i's run file, restarting from run FROM (-1: none).  0 or 2. */
+static int translate_run(auto_job *J, size_t i, long from) {
+  auto_run *r = &J->run[i];
+  char model[400], restart[4400], out[4400];
+  snprintf(model, sizeof model, "%s.so", J->name);
+  if (from >= 0) snprintf(restart, sizeof restart, "%s/%s.out", J->out, J->run[from].id);
+  snprintf(out, sizeof out, "%s/%s.out", J->out, r->id);
+  const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL,
+                                     r->label[0] ? r->label : NULL, out, J->npar};
+  free(r->text);
+  r->text = NULL;
+  if (whirl_auto_constants_runfile(r->ac, &o, &r->text) != WHIRL_OK) {
+    cli_error("auto", "%s", whirl_auto_constants_errmsg(r->ac));
+    return 2;
+  }
+  return 0;
+}
+
+/* Each run's id (unique in OUT) and run file.  0 or 2. */
+static int translate(auto_job *J) {
+  for (size_t i = 0; i < J->nrun; i++) {
+    auto_run *r = &J->run[i];
+    snprintf(r->id, sizeof r->id, "%s%s%s", r->c, r->label[0] ? "@" : "", r->label);
+    for (size_t k = 0, dup = 1; k < i; k++)
+      if (!strcmp(J->run[k].id, r->id))
+        snprintf(r->id, sizeof r->id, "%s%s%s-%zu", r->c, r->label[0] ? "@" : "", r->label, ++dup);
+    const long from = restart_from(J, i);
+    if (from == -2 || translate_run(J, i, from)) return 2;
+  }
+  return 0;
+}
+
+/* Can run i (its IPS, ISW) start from solution S? */
+static int fits(const auto_run *r, const whirl_solution *S) {
+  int ips = 1, isw = 1;
+  whirl_auto_constants_int(r->ac, "IPS", &ips);
+  whirl_auto_constants_int(r->ac, "ISW", &isw);
+  const char *t = S->ty;
+  if (ips == 1)
+    return S->kind == WHIRL_SOL_EQ && (isw == 2 ? !strcmp(t, "LP") || !strcmp(t, "HB")
+                                       : isw == -1 ? !strcmp(t, "BP") : 1);
+  if (S->kind == WHIRL_SOL_EQ) return !strcmp(t, "HB");
+  if (isw == -1) return !strcmp(t, "BP") || !strcmp(t, "PD");
+  if (isw == 2) return !strcmp(t, "LP") || !strcmp(t, "PD") || !strcmp(t, "TR");
+  return 1;
+}
+
+/* Run i restarts by the default rule (IRS, no @RUN): AUTO's scripts name
+ * labels of any earlier run (often the first), so take the nearest earlier
+ * run whose label IRS (or k-th point of type TY) is one run i can start
+ * from; else the run before.  Re-translates run i when that changes its
+ * source.  0 or 2. */
+static int pick_source(auto_job *J, size_t i) {
+  auto_run *r = &J->run[i];
+  int irs = 0;
+  const char *t = whirl_auto_constants_text(r->ac, "IRS");
+  char lab[64] = "";
+  if (r->from[0] || i == 0) return 0;
+  if (r->label[0]) snprintf(lab, sizeof lab, "%s", r->label);
+  else if (t) snprintf(lab, sizeof lab, "%s", t);
+  else if (whirl_auto_constants_int(r->ac, "IRS", &irs) == WHIRL_OK && irs) snprintf(lab, sizeof lab, "%d", irs);
+  if (!lab[0]) return 0;
+  char ty[8] = "";
+  size_t nty = 0;
+  while (nty < 7 && isalpha((unsigned char)lab[nty])) ty[nty] = lab[nty], nty++;
+  ty[nty] = 0;
+  const int k = atoi(lab + nty);
+  const long def = restart_from(J, i);
+  for (long j = (long)i - 1; j >= 0; j--) {
+    char dir[4400], msg[512];
+    whirl_solution S;
+    const whirl_solution_shape any = {NULL, 0, 0, -1};
+    snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[j].id);
+    if (whirl_solution_find(dir, &any, k, ty, &S, msg, sizeof msg)) continue;
+    const int good = fits(r, &S);
+    whirl_solution_free(&S);
+    if (good) return j == def ? 0 : translate_run(J, i, j);
+  }
+  return 0;
+}
+
+/* ---- the output directory ---------------------------------------------- */
+
+/* OUT may be missing, empty, or an earlier output of whirl auto (MARKER).
+ * 0 or 2. */
+static int check_out(const char *out) {
+  struct stat st;
+  if (stat(out, &st) != 0) return 0;
+  if (!S_ISDIR(st.st_mode)) {
+    cli_error("auto", "%s exists and is not a directory", out);
+    return 2;
+  }
+  char m[4400];
+  snprintf(m, sizeof m, "%s/%s", out, MARKER);
+  if (access(m, F_OK) == 0) return 0;
+  DIR *d = opendir(out);
+  int empty = 1;
+  for (struct dirent *e; d && (e = readdir(d));)
+    if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) empty = 0;
+  if (d) closedir(d);
+  if (empty) return 0;
+  cli_error("auto", "%s holds files whirl auto did not write (no %s): choose another "
+            "--out", out, MARKER);
+  return 2;
+}
+
+static void remove_files(const char *dir) {
+  DIR *d = opendir(dir);
+  char p[4800];
+  for (struct dirent *e; d && (e = readdir(d));) {
+    if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+    snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
+    unlink(p);
+  }
+  if (d) closedir(d);
+  rmdir(dir);
+}
+
+/* Move the stage's files into OUT (made when missing) and mark it.  0 or 1. */
+static int install_stage(const char *stage, const char *out) {
+  if (mkdir(out, 0777) != 0 && errno != EEXIST) {
+    cli_error("auto", "%s: %s", out, strerror(errno));
+    return 1;
+  }
+  DIR *d = opendir(stage);
+  char a[4800], b[4800];
+  int rc = d ? 0 : 1;
+  for (struct dirent *e; d && (e = readdir(d));) {
+    if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+    snprintf(a, sizeof a, "%s/%s", stage, e->d_name);
+    snprintf(b, sizeof b, "%s/%s", out, e->d_name);
+    if (rename(a, b) != 0) rc = 1;
+  }
+  if (d) closedir(d);
+  rmdir(stage);
+  snprintf(a, sizeof a, "%s/%s", out, MARKER);
+  FILE *f = fopen(a, "w");
+  if (!f || fprintf(f, "written by whirl auto\n") < 0) rc = 1;
+  if (f && fclose(f)) rc = 1;
+  if (rc) cli_error("auto", "%s: cannot move the plug-in into it", out);
+  return rc;
+}
+
+/* Compile the plug-in in OUT.tmp.PID, then into OUT.  0, 1 or 2. */
+static int build_model(auto_job *J) {
+  char src[4400], stage[4400];
+  int rc = auto_model_source(J->dir, J->name, src, sizeof src);
+  if (rc) return rc;
+  snprintf(stage, sizeof stage, "%s.tmp.%ld", J->out, (long)getpid());
+  if (mkdir(stage, 0777) != 0) {
+    cli_error("auto", "%s: %s", stage, strerror(errno));
+    return 1;
+  }
+  J->p_names = make_names(J, "parnames", "PAR", J->npar);
+  J->x_names = make_names(J, "unames", "U", (size_t)J->ndim);
+  if (!J->p_names || !J->x_names) return 1;
+  const auto_model_info m = {J->name, J->ndim, J->npar, (const char *const *)J->p_names,
+                             (const char *const *)J->x_names};
+  rc = auto_model_build(stage, src, &m);
+  if (rc) {
+    remove_files(stage);
+    return rc;
+  }
+  return install_stage(stage, J->out);
+}
+
+/* Open OUT/b.STEM, s.STEM, d.STEM for writing (MODE "w" or "a"). */
+static int open_auto(const auto_job *J, const char *stem, const char *mode, FILE *f[3],
+                     char path[3][4400]) {
+  static const char kind[3] = {'b', 's', 'd'};
+  int rc = 0;
+  for (int k = 0; k < 3; k++) {
+    snprintf(path[k], sizeof path[k], "%s/%c.%s", J->out, kind[k], stem);
+    if (!(f[k] = fopen(path[k], mode))) rc = 1;
+  }
+  return rc;
+}
+
+static int close_auto(FILE *f[3], char path[3][4400], int rc) {
+  for (int k = 0; k < 3; k++)
+    if (f[k] && fclose(f[k])) rc = 1;
+  if (rc) { /* no half-written AUTO files */
+    cli_error("auto", "%s: cannot write", path[0]);
+    for (int k = 0; k < 3; k++) unlink(path[k]);
+  }
+  return rc;
+}
+
+/* OUT/b.ID, s.ID, d.ID of run i from its output directory, and the run
+ * appended to OUT/b.NAME, s.NAME, d.NAME (emptied before the runs) with its labels
+ * numbered on (*labels: the labels so far).  0 or 1. */
+static int write_auto_files(const auto_job *J, size_t i, int *labels) {
+  const auto_run *r = &J->run[i];
+  char dir[4400], path[3][4400], msg[1024];
+  snprintf(dir, sizeof dir, "%s/%s.out", J->out, r->id);
+  whirl_auto_output o = {dir, r->ac, J->ndim, J->npar, (const char *const *)J->p_names,
+                         (const char *const *)J->x_names, 0};
+  FILE *f[3];
+  int n = 0;
+  /* a run named NAME (c.NAME) has the merged files as its own */
+  for (int merged = !strcmp(r->id, J->name); merged < 2; merged++) {
+    int rc = open_auto(J, merged ? J->name : r->id, merged ? "a" : "w", f, path);
+    o.label_offset = merged ? *labels : 0;
+    if (!rc && whirl_auto_write_files(&o, f[0], f[1], f[2], &n, msg, sizeof msg) != WHIRL_OK) {
+      cli_error("auto", "%s: %s", dir, msg);
+      rc = 1;
+    }
+    if (close_auto(f, path, rc)) return 1;
+  }
+  *labels += n;
+  return 0;
+}
+
+/* Write the run files and run them all in order (a run after a failed one
+ * may still work, as in AUTO).  The first failing status. */
+static int run_all(auto_job *J) {
+  int status = 0, labels = 0;
+  for (size_t i = 0; i < J->nrun; i++) {
+    char path[4400];
+    snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
+    FILE *f = fopen(path, "w");
+    if (!f || fputs(J->run[i].text, f) < 0 || fclose(f)) {
+      cli_error("auto", "%s: cannot write", path);
+      return 1;
+    }
+  }
+  FILE *f[3];
+  char merged[3][4400];
+  if (close_auto(f, merged, open_auto(J, J->name, "w", f, merged))) return 1;
+  for (size_t i = 0; i < J->nrun; i++) {
+    char path[4400], dir[4400];
+    snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
+    /* an earlier invocation's output of this run must not pass for this one's */
+    snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[i].id);
+    remove_files(dir);
+    for (const char *k = "bsd"; *k; k++) {
+      snprintf(path, sizeof path, "%s/%c.%s", J->out, *k, J->run[i].id);
+      unlink(path);
+    }
+    if (pick_source(J, i)) return 2;
+    snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
+    FILE *rf = fopen(path, "w");
+    if (!rf || fputs(J->run[i].text, rf) < 0 || fclose(rf)) {
+      cli_error("auto", "%s: cannot write", path);
+      return 1;
+    }
+    if (!J->quiet) printf("== %s (c.%s)\n", J->run[i].id, J->run[i].c);
+    fflush(stdout);
+    char *argv[] = {"run", path, J->quiet ? "--quiet" : NULL, NULL};
+    int st = cmd_run(J->quiet ? 3 : 2, argv);
+    char tsv[4400];
+    snprintf(tsv, sizeof tsv, "%s/%s.out/branches.tsv", J->out, J->run[i].id);
+    if (st != 2 && access(tsv, R_OK) == 0 && write_auto_files(J, i, &labels) && !st)
+      st = 1;
+    if (st) cli_error("auto", "run %s (c.%s) failed (exit %d)", J->run[i].id, J->run[i].c, st);
+    if (st && !status) status = st;
+  }
+  return status;
+}
+
+/* ---- the command ------------------------------------------------------- */
+
+static int parse_args(auto_job *J, int argc, char **argv, const char **runs) {
+  const char *pos[2] = {NULL, NULL};
+  size_t npos = 0;
+  for (int i = 1; i < argc; i++) {
+    const char *a = argv[i];
+    if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+      usage(stdout);
+      return -1;
+    }
+    if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) J->quiet = 1;
+    else if (!strncmp(a, "--out=", 6) && a[6]) J->out = a + 6;
+    else if (!strncmp(a, "--runs=", 7) && a[7]) *runs = a + 7;
+    else if (a[0] == '-' || npos == 2) {
+      cli_error("auto", "unexpected argument '%s' (see whirl auto --help)", a);
+      return 2;
+    } else pos[npos++] = a;
+  }
+  if (!npos) {
+    usage(stderr);
+    return 2;
+  }
+  static char dir[4096];
+  snprintf(dir, sizeof dir, "%s", pos[0]);
+  for (size_t n = strlen(dir); n > 1 && dir[n - 1] == '/';) dir[--n] = 0;
+  J->dir = dir;
+  if (pos[1]) J->name = pos[1];
+  else { /* DIR's last component */
+    static char base[256];
+    const char *d = J->dir;
+    size_t n = strlen(d);
+    while (n > 1 && d[n - 1] == '/') n--;
+    size_t b = n;
+    while (b > 0 && d[b - 1] != '/') b--;
+    snprintf(base, sizeof base, "%.*s", (int)(n - b), d + b);
+    J->name = base;
+  }
+  if (!name_ok(J->name) || strchr(J->name, '/')) {
+    cli_error("auto", "'%s' is not a usable problem name (give NAME)", J->name);
+    return 2;
+  }
+  return 0;
+}
+
+int cmd_auto(int argc, char **argv) {
+  static auto_job J;
+  const char *runs = NULL;
+  char out[300];
+  memset(&J, 0, sizeof J);
+  int rc = parse_args(&J, argc, argv, &runs);
+  if (rc) return rc < 0 ? 0 : rc;
+  if (!J.out) {
+    snprintf(out, sizeof out, "%s.out", J.name);
+    J.out = out;
+  }
+  rc = runs ? parse_runs(&J, runs) : default_runs(&J);
+  if (!rc) rc = read_constants(&J);
+  if (!rc) rc = translate(&J);
+  if (!rc) rc = check_out(J.out);
+  if (!rc) rc = build_model(&J);
+  if (!rc) rc = run_all(&J);
+  for (size_t i = 0; i < J.nrun; i++) {
+    whirl_auto_constants_free(J.run[i].ac);
+    free(J.run[i].text);
+  }
+  free_names(J.p_names, J.npar);
+  free_names(J.x_names, (size_t)J.ndim);
+  return rc;
+}

@@ -1,0 +1,125 @@
+#!/bin/sh
+# test/auto-demos/run.sh [AUTO_DEMOS_DIR] — AUTO-07p's demos of the classes
+# whirl runs (every constants file IPS 1 or 2, equations in Fortran), each
+# run by `whirl auto DEMO` from its own files, unchanged, in the default
+# order (c.NAME.1, c.NAME.2, ...; doc/auto-files.md), and every special
+# point whirl labels (BP, LP, HB, PD, TR and the loci's BT, CP, ZH, GH)
+# looked up in AUTO-07p's own log of the same demo (AUTO_DEMOS_DIR/../test/
+# hyper.all, 6 digits): a point agrees when AUTO labels a point of the same
+# type whose every printed value (the ICP parameter, L2-NORM, the state or
+# its maximum, the other ICP parameters) is within one unit of its 6th
+# digit (at least 1e-6: AUTO's 3.00001E-09 of a Hopf point at 0 is 0).
+# Prints a table and `N of M demos agree`; known gaps are in
+# test/auto-demos/known-gaps.  AUTO's demo scripts (NAME.auto) restart
+# runs from labels chosen by Python code that whirl auto does not follow,
+# so the points AUTO finds beyond whirl's runs are listed, not counted.
+# Where AUTO-07p itself is installed (the Debian package auto-07p, driven
+# by /usr/bin/python3), AUTO's own run of the demo's script on a scratch
+# copy with every EPSS = 1e-10 is a second reference (its 6 printed digits
+# are converged; hyper.all's are EPSS-limited, often 1e-4): a point agrees
+# when either of AUTO's runs printed it (REF both; AUTO_REF=hyper: hyper.all
+# alone).  That takes minutes (AUTO compiles each demo, some run long at
+# EPSS = 1e-10); with hyper.all alone about 30 s.
+# Default directory: ../shared/auto-07p/demos beside the source tree; a
+# message and exit 0 where it is absent.
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+top=${top_srcdir:-$here/../..}
+top=$(cd "$top" && pwd)
+demos=${1:-$top/../shared/auto-07p/demos}
+WHIRL=${WHIRL:-${top_builddir:-$top}/drivers/whirl}
+[ -d "$demos" ] || { echo "# SKIP: no AUTO-07p demos at $demos"; exit 0; }
+demos=$(cd "$demos" && pwd)
+hyper="$demos/../test/hyper.all"
+[ -f "$hyper" ] || { echo "# SKIP: no reference log $hyper"; exit 0; }
+command -v "${FC:-gfortran}" >/dev/null 2>&1 || { echo "# SKIP: no Fortran compiler"; exit 0; }
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+
+py=${AUTO_07P_PYTHON:-/usr/lib/auto-07p/python}
+tight=0
+[ "${AUTO_REF:-}" != hyper ] && [ -f "$py/auto/__main__.py" ] && command -v python3 >/dev/null 2>&1 && tight=1
+# AUTO's own run of demo $1 at EPSS = 1e-10 in a scratch copy: its log,
+# framed like hyper.all's, in $tmp/$1.tight (empty when it fails)
+auto_tight() {
+  rm -rf "$tmp/ref.$1"; mkdir "$tmp/ref.$1"
+  cp "$demos/$1"/* "$tmp/ref.$1"/ 2>/dev/null
+  for c in "$tmp/ref.$1"/c.*; do
+    sed 's/EPSS *= *[-+0-9.eEdD]*/EPSS = 1e-10/' "$c" > "$c.t" && mv "$c.t" "$c"
+  done
+  { echo "Demo $1 is started"
+    (cd "$tmp/ref.$1" && timeout 300 python3 "$py/auto/__main__.py" "$1.auto" 2>&1)
+    echo "Demo $1 is done"; } > "$tmp/$1.tight"
+  grep -q 'PT  TY' "$tmp/$1.tight" || : > "$tmp/$1.tight"
+}
+# the special points of demo $1 in the log $2: TY and values, one a line
+auto_points() {
+  awk -v d="$1" '$0 == "Demo " d " is started" { on = 1; next }
+    $0 == "Demo " d " is done" { on = 0 }
+    on && $1 ~ /^-?[0-9]+$/ && $2 ~ /^-?[0-9]+$/ && $3 ~ /^(BP|LP|HB|PD|TR|BT|CP|ZH|GH)$/ {
+      s = $3; for (i = 5; i <= NF; i++) s = s " " $i; print s }' "$2"
+}
+# whirl's, from the b-file of all runs, b.$2: AUTO's type codes at
+# columns 11-14
+whirl_points() {
+  for b in "$1/b.$2"; do
+    [ -f "$b" ] || continue
+    awk 'substr($0, 1, 4) + 0 != 0 {
+      t = substr($0, 11, 4) + 0
+      ty = t == 1 || t == 6 ? "BP" : t == 2 || t == 5 ? "LP" : t == 3 ? "HB" : t == 7 ? "PD" : \
+           t == 8 ? "TR" : t == -1 ? "BT" : t == -2 ? "CP" : t == -3 ? "ZH" : t == -32 ? "GH" : ""
+      if (ty == "") next
+      s = ty; for (i = 20; i + 18 <= length($0); i += 19) s = s " " sprintf("%.10g", substr($0, i, 19) + 0)
+      print s }' "$b"
+  done
+}
+# A's lines found in B (same type, every common value within one unit of
+# B's 6th digit): the count, and the lines not found (prefixed "- ")
+match() {
+  awk 'function unit(a,   e, m) { m = a < 0 ? -a : a; if (m < 1e-6) return 1e-6
+         e = int(log(m) / log(10) + 100) - 100; if (10 ^ e > m) e--; return 10 ^ (e - 5) }
+    NR == FNR { b[++nb] = $0; next }
+    { found = 0; na = split($0, x, " ")
+      for (k = 1; k <= nb && !found; k++) {
+        m = split(b[k], y, " "); if (y[1] != x[1]) continue
+        good = 1; for (i = 2; i <= na && i <= m; i++) { d = x[i] - y[i]; if (d < 0) d = -d; if (d > unit(y[i]) * 1.01) good = 0 }
+        found = good }
+      if (found) n++; else print "- " $0 }
+    END { print n + 0 }' "$2" "$1"
+}
+
+printf '%-6s %-7s %-6s %-10s %-10s %s\n' DEMO RUNS REF "WHIRL=AUTO" "AUTO-FOUND" NOTE
+agree=0 total=0 wpts=0 wok=0
+for dir in "$demos"/*/; do
+  d=$(basename "$dir")
+  [ -f "$dir/$d.f90" ] || continue
+  ls "$dir"/c.* >/dev/null 2>&1 || continue
+  cls=$(cat "$dir"/c.* | grep -o 'IPS *= *-\{0,1\}[0-9]*' | grep -o -- '-\{0,1\}[0-9]*$' | sort -u | tr '\n' ' ')
+  case "$cls" in "1 " | "2 " | "1 2 ") ;; *) continue ;; esac
+  total=$((total + 1))
+  (cd "$tmp" && timeout 300 "$WHIRL" auto "$dir" --quiet --out="$d.out" > "$d.log" 2>&1)
+  rc=$?
+  nrun=$(ls "$tmp/$d.out"/*.whirl 2>/dev/null | wc -l)
+  nbad=$(grep -c 'failed (exit' "$tmp/$d.log")
+  ref=hyper
+  auto_points "$d" "$hyper" > "$tmp/$d.auto"
+  if [ $tight = 1 ]; then
+    auto_tight "$d"
+    [ -s "$tmp/$d.tight" ] && ref=both && auto_points "$d" "$tmp/$d.tight" >> "$tmp/$d.auto"
+  fi
+  whirl_points "$tmp/$d.out" "$d" > "$tmp/$d.whirl"
+  w=$(wc -l < "$tmp/$d.whirl"); a=$(wc -l < "$tmp/$d.auto")
+  match "$tmp/$d.whirl" "$tmp/$d.auto" > "$tmp/$d.m1"; c=$(tail -1 "$tmp/$d.m1")
+  match "$tmp/$d.auto" "$tmp/$d.whirl" > "$tmp/$d.m2"; f=$(tail -1 "$tmp/$d.m2")
+  note=""
+  [ "$rc" = 0 ] || note="exit $rc: $(grep -v '^ ' "$tmp/$d.log" | head -1 | cut -c1-90)"
+  gap=$(awk -F'\t' -v d="$d" '$1 == d { print $2 }' "$here/known-gaps" 2>/dev/null | head -1)
+  [ -n "$gap" ] && note="${note:+$note; }known: $gap"
+  ok=0
+  [ "$rc" = 0 ] && [ "$c" = "$w" ] && { [ "$w" -gt 0 ] || [ "$a" = 0 ]; } && ok=1
+  [ $ok = 1 ] && agree=$((agree + 1))
+  wpts=$((wpts + w)); wok=$((wok + c))
+  printf '%-6s %-7s %-6s %-10s %-10s %s\n' "$d" "$((nrun - nbad))/$nrun" "$ref" "$c/$w" "$f/$a" "$([ $ok = 1 ] && echo agree || echo "${note:-disagree}")"
+  [ "$c" = "$w" ] || sed -n '/^- /s/^/         whirl only: /p' "$tmp/$d.m1" | head -4
+done
+echo "$agree of $total demos agree; $wok of $wpts of whirl's special points are AUTO's to 6 digits"

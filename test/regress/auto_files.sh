@@ -1,0 +1,182 @@
+#!/bin/sh
+# test/regress/auto_files.sh — `whirl auto` on AUTO-style problem
+# directories, and AUTO's b./s./d. files it writes.
+#  1. A fold u' = p - u^2 written here (equations and constants in AUTO's
+#     form): the branch u = +-sqrt(p) from (1, 1) through the LP at p = 0,
+#     with user points at p = 0.25 and a stop at p = 2 (a negative UZR
+#     index; AUTO stops at its first crossing), then a second run restarting from label 2.  The b- and s-files
+#     are read back by awk here (fixed columns) and checked against the
+#     closed form, the stability against the sign of f' = -2u, and run 1's
+#     output against being replaced by run 2.
+#  2. Bad input: an unknown constant, no equations file, equations that do
+#     not compile, STPNT missing: exit 2, the file named, nothing written.
+#  3. AUTO-07p's demo ab (AUTO_07P_DIR, else ../shared/auto-07p beside the
+#     source tree; skipped where absent): the HB of c.ab.2 from label 2
+#     against AUTO's own output (test/hyper.all: 1.65042E-01 1.47770E+00
+#     4.05955E-01 1.42084E+00), the s-file header of label 1 against the
+#     line AUTO writes, the merged b.ab numbering labels on, and, where the
+#     Debian package auto-07p is installed, AUTO's parseB/parseS/parseD
+#     loading every file.
+# TAP output.
+set -u
+: "${top_srcdir:=.}" "${top_builddir:=.}"
+WHIRL="$(cd "$top_builddir" && pwd)/drivers/whirl"
+command -v "${FC:-gfortran}" >/dev/null 2>&1 || { echo "1..0 # SKIP no Fortran compiler"; exit 0; }
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+n=0 fail=0
+ok() { n=$((n + 1)); echo "ok $n - $*"; }
+nok() { n=$((n + 1)); echo "not ok $n - $*"; fail=1; }
+check() { if [ "$1" = 0 ]; then shift; ok "$@"; else shift; nok "$@"; fi; }
+
+mkdir "$tmp/fold"
+cat > "$tmp/fold/fold.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      F(1) = PAR(1) - U(1)**2
+      IF (IJAC.EQ.0) RETURN
+      DFDU(1,1) = -2*U(1)
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 1
+      U(1) = 1
+      END SUBROUTINE STPNT
+F
+cat > "$tmp/fold/c.fold.1" <<'C'
+NDIM=   1, IPS =   1, IRS =   0, ILP =   1
+ICP =  ['p']
+NTST=  20, NCOL=   4, IAD =   3, ISP =   1, ISW = 1, IPLT= 0, NBC= 0, NINT= 0
+NMX=  200, NPR=  200, MXBF=  10, IID =   2, ITMX= 8, ITNW= 7, NWTN= 3, JAC= 1
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-08
+DS  = -0.05, DSMIN= 0.0001, DSMAX=  0.05, IADS=   1
+NPAR=   1, THL =  {11: 0.0}, THU =  {}
+UZR = {'p': 0.25, -1: 2.0}
+parnames = {1: 'p'}, unames = {1: "u"}
+C
+cat > "$tmp/fold/c.fold.2" <<'C'
+NDIM=   1, IPS =   1, IRS =   2, ILP =   1
+ICP =  [1]
+NTST=  20, NCOL=   4, IAD =   3, ISP =   1, ISW = 1
+NMX=  200, NPR=  200, ITNW= 7, JAC= 1
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-08
+DS  = 0.05, DSMIN= 0.0001, DSMAX=  0.05
+NPAR=   1
+UZSTOP = {1: 2.0}
+C
+(cd "$tmp" && "$WHIRL" auto fold --quiet > auto.out 2> auto.err)
+check $? "whirl auto fold: two runs exit 0 $(head -1 "$tmp/auto.err")"
+o="$tmp/fold.out"
+missing=
+for f in fold.so fold.1.whirl fold.1.out/branches.tsv b.fold.1 s.fold.1 d.fold.1 \
+         fold.2.out/solutions b.fold.2 s.fold.2 d.fold.2; do
+  [ -s "$o/$f" ] || missing="$missing $f"
+done
+check "$([ -z "$missing" ] && echo 0 || echo 1)" "fold.out: the plug-in, the run files, both outputs and AUTO's files ${missing:+(missing:$missing)}"
+
+# b-file rows: BR(1-4) PT(5-10) TY(11-14) LAB(15-19), then 19-wide columns
+# PAR(1) L2-NORM U(1); the labelled ones, with the closed form u = +-sqrt(p)
+awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 > 0 {
+  printf "%d %d %d %.17g %.17g %.17g\n", substr($0,5,6), substr($0,11,4), substr($0,15,5), substr($0,20,19), substr($0,39,19), substr($0,58,19) }' \
+  "$o/b.fold.1" > "$tmp/lab1"
+printf '%s\n' "-1 9 1 1 1 1" "-x -4 2 0.25 0.5 0.5" "x 2 3 0 0 0" "x -4 4 0.25 0.5 -0.5" "x -4 5 2 1.4142135623730951 -1.4142135623730951" > "$tmp/want1"
+res=$(awk 'NR == FNR { w[FNR] = $0; nw = FNR; next }
+  { split(w[FNR], e, " ");
+    if ($2 != e[2] || $3 != e[3]) { print "row " FNR ": type/label " $2 "/" $3 ", want " e[2] "/" e[3]; exit }
+    for (i = 4; i <= 6; i++) { d = $i - e[i]; if (d < 0) d = -d; if (d > ($3 == 3 && i > 4 ? 1e-4 : 1e-7)) { print "row " FNR " column " i ": " $i ", want " e[i]; exit } }
+    if (e[1] == "-1" && $1 != -1) { print "row 1: PT " $1; exit }
+    if ($6 > 1e-3 && $1 > 0) { print "row " FNR ": u > 0 is stable, PT must be negative: " $1; exit }
+    if ($6 < -1e-3 && $1 < 0) { print "row " FNR ": u < 0 is unstable, PT must be positive: " $1; exit }
+    n++ }
+  END { if (!n) print "no rows"; else if (n != nw) print n " labelled rows, want " nw }' "$tmp/want1" "$tmp/lab1")
+check "$([ -z "$res" ] && echo 0 || echo 1)" "b.fold.1: EP, UZ p = 1/4, LP p = 0, UZ, stop p = 2 at u = +-sqrt(p), stability in PT's sign ${res}"
+grep -q '^   0    PT  TY  LAB    p                  L2-NORM            u' "$o/b.fold.1"
+check $? "b.fold.1: the column names from parnames and unames, 19 wide"
+
+# s-file: a 16-integer header a label, then t and u, ICP, the tangent, PAR
+# (11 values: 2 lines)
+res=$(awk 'NF == 16 && $1 ~ /^[0-9]+$/ { hdr++; lab = $4; ty = $3; nrow = $9; getline; t = $1; u = $2;
+           for (k = 1; k < nrow; k++) { getline; if (k == nrow - 2) p = $1 } # PAR: the last 2 lines
+           printf "%d %d %.12g %.12g\n", lab, ty, u, p }' "$o/s.fold.1" |
+      awk '{ want = ($1 == 1) ? 1 : ($1 == 3 ? 0 : sqrt($4)); if ($1 >= 4) want = -want;
+             d = $3 - want; if (d < 0) d = -d; if (d > ($1 == 3 ? 1e-4 : 1e-7)) print "label " $1 ": u " $3 ", want " want; n++ }
+           END { if (n != 5) print n " solutions, want 5" }')
+check "$([ -z "$res" ] && echo 0 || echo 1)" "s.fold.1: five solutions, u = +-sqrt(PAR(1)) at each ${res}"
+head -1 "$o/s.fold.1" | grep -qx '     1     1     9     1     1     1       1     2       6    1    0   11    0    1    1    0'
+check $? "s.fold.1: AUTO's header of label 1 (IBR NTOT ITP LAB NFPR ISW NTPL NAR NROWPR NTST NCOL NPAR 0 NDIM IPS 0)"
+grep -q "^S      = '[^']*fold.1.out'" "$o/fold.2.whirl" && grep -q '^IRS    = 2$' "$o/fold.2.whirl"
+check $? "fold.2.whirl restarts from run 1's output directory"
+last=$(awk 'substr($0, 1, 4) + 0 != 0' "$o/b.fold.2" | tail -1)
+echo "$last" | awk '{ exit !($3 == -4 && ($5 - 2 < 1e-9 && 2 - $5 < 1e-9) && ($7 - sqrt(2) < 1e-8 && sqrt(2) - $7 < 1e-8)) }'
+check $? "b.fold.2: from label 2 up to the stop p = 2, u = sqrt(2) ($last)"
+[ "$(grep -c '^LAB' "$o/fold.1.out/solutions")" = 5 ]
+check $? "run 2 left run 1's solutions as they were (5 labels)"
+grep -q '^# note: THL (line 7) is not used by whirl' "$o/fold.1.whirl"
+check $? "fold.1.whirl notes THL, which whirl does not use"
+
+# bad input: exit 2, FILE:LINE, nothing written
+bad() { # DIR, expected message (a grep pattern), what
+  rm -rf "$tmp/$1.out"
+  (cd "$tmp" && "$WHIRL" auto "$1" --quiet > /dev/null 2> "$1.err"); st=$?
+  if [ $st = 2 ] && grep -q -- "$2" "$tmp/$1.err" && [ ! -e "$tmp/$1.out" ] && ! ls -d "$tmp/$1".out.tmp.* >/dev/null 2>&1; then
+    ok "$3: exit 2, '$(head -1 "$tmp/$1.err")', nothing written"
+  else nok "$3: exit $st, '$(head -1 "$tmp/$1.err")'"; fi
+}
+mkdir "$tmp/b1" "$tmp/b2" "$tmp/b3" "$tmp/b4"
+cp "$tmp/fold/fold.f90" "$tmp/b1/b1.f90"
+printf 'NDIM= 1, IPS = 1\nICP = [1]\nDS = 0.1, DSMX = 0.2\n' > "$tmp/b1/c.b1"
+bad b1 'b1/c.b1:3: unknown AUTO constant .DSMX.' "an unknown constant"
+cp "$tmp/fold/c.fold.1" "$tmp/b2/c.b2"
+bad b2 'b2/b2.f90: no equations file' "no equations file"
+cp "$tmp/fold/c.fold.1" "$tmp/b3/c.b3"
+sed 's/F(1) = PAR(1) - U(1)\*\*2/F(1) = PAR(1) - U(1)**/' "$tmp/fold/fold.f90" > "$tmp/b3/b3.f90"
+bad b3 'b3.f90:5' "equations that do not compile (the compiler's FILE:LINE)"
+cp "$tmp/fold/c.fold.1" "$tmp/b4/c.b4"
+sed '/SUBROUTINE STPNT/,$d' "$tmp/fold/fold.f90" > "$tmp/b4/b4.f90"
+bad b4 'stpnt_' "STPNT missing from the equations"
+
+# AUTO-07p's demo ab
+auto=${AUTO_07P_DIR:-$top_srcdir/../shared/auto-07p}
+if [ -d "$auto/demos/ab" ]; then
+  auto=$(cd "$auto" && pwd)
+  (cd "$tmp" && "$WHIRL" auto "$auto/demos/ab" --runs=ab.1,ab.2@2 --quiet > ab.log 2>&1)
+  check $? "whirl auto ab --runs=ab.1,ab.2@2 exits 0"
+  hb=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 3' "$tmp/ab.out/b.ab.2@2" | head -1)
+  echo "$hb" | awk '{ split("1.65042E-01 1.47770E+00 4.05955E-01 1.42084E+00", a, " ");
+    for (i = 1; i <= 4; i++) { d = ($(i + 4) - a[i]) / a[i]; if (d < 0) d = -d; if (d > 1e-5) exit 1 } }'
+  check $? "b.ab.2@2: the HB agrees with AUTO's (hyper.all) to its 6 digits: $hb"
+  head -1 "$tmp/ab.out/s.ab.1" | grep -qx '     1     1     9     1     1     1       1     3       6    1    0   11    0    2    1    0'
+  check $? "s.ab.1: label 1's header as AUTO writes it"
+  labs=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 > 0 { printf "%d ", substr($0, 15, 5) }' "$tmp/ab.out/b.ab")
+  nl=$(grep -c '^LAB' "$tmp/ab.out/ab.1.out/solutions"); n2=$(grep -c '^LAB' "$tmp/ab.out/ab.2@2.out/solutions")
+  [ "$labs" = "$(seq -s ' ' 1 $((nl + n2))) " ]
+  check $? "b.ab: both runs, labels numbered on 1..$((nl + n2)) as AUTO's rl() does ($labs)"
+  py=${AUTO_07P_PYTHON:-/usr/lib/auto-07p/python}
+  if [ -f "$py/auto/parseB.py" ] && command -v python3 >/dev/null 2>&1; then
+    (cd "$tmp/ab.out" && python3 - "$py" ab.1 ab.2@2 ab > "$tmp/py.out" 2>&1 <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+from auto import parseB, parseS, parseD
+for stem in sys.argv[2:]:
+    b = parseB.parseB("b." + stem)
+    s = parseS.parseS("s." + stem)
+    parseD.parseD("d." + stem)
+    bl = sorted(b.getLabels())
+    sl = sorted(x["Label"] for x in s)
+    assert bl == sl and bl, (stem, bl, sl)
+    print(stem, len(bl), "labels", b.branches[0].coordnames)
+PY
+    )
+    check $? "AUTO's parseB, parseS, parseD read b., s., d. of both runs and the merged b.ab, s.ab, d.ab: $(tr '\n' ';' < "$tmp/py.out" | cut -c1-160)"
+  else
+    n=$((n + 1)); echo "ok $n - # SKIP AUTO's Python tools not installed (apt-get install auto-07p)"
+  fi
+else
+  n=$((n + 1)); echo "ok $n - # SKIP no AUTO-07p demos at $auto (set AUTO_07P_DIR)"
+fi
+echo "1..$n"
+exit $fail
