@@ -29,7 +29,7 @@ commands() {
       if (match(label, /  +/)) label = substr(label, 1, RSTART - 1)
       n = split(label, w, " "); out = ""
       for (i = 1; i <= n; i++)
-        if (w[i] !~ /^[A-Z][A-Z0-9_]*$/ && w[i] != "") out = out (out ? " " : "") w[i]
+        if (w[i] !~ /^\[?[A-Z][A-Z0-9_.]*\]?$/ && w[i] != "") out = out (out ? " " : "") w[i]
       print out
     }'
 }

@@ -155,7 +155,7 @@ static int finish_output(run_io_ctx *c, const whirl_run *r) {
     cli_outdir_abort(&c->od);
     return 1;
   }
-  const int pic_failed = cli_outdir_plot(&c->od, pic) != 0;
+  const int pic_failed = cli_outdir_plot(&c->od, pic) != 0 || cli_pictures_skipped();
   if (cli_outdir_commit(&c->od)) return 1;
   const int basins = whirl_run_plot_info(r)->basins;
   if (!c->quiet)
@@ -163,7 +163,7 @@ static int finish_output(run_io_ctx *c, const whirl_run *r) {
            basins ? "basins.tsv, run.log" : "branches.tsv, solutions, run.log",
            pic_failed ? "" : basins ? ", basins." : ", diagram.",
            pic_failed ? "" : cli_picture_format);
-  return pic_failed;
+  return pic_failed && !cli_pictures_skipped();
 }
 
 /* A study: its points through run_study.c; 0, 1 or 2. */

@@ -311,7 +311,7 @@ int cmd_sfd_nonsync(int argc, char **argv) {
     fprintf(stderr, "  special points: %zu LP, %zu PD, %zu TR; %zu steps, %zu Newton "
                     "iterations; max residual %.1e; %.2f s\n",
             nlp, npd, ntr, ns.steps, ns.newton_its, ns.max_residual, secs);
-    if (!noplot && !status)
+    if (!noplot && !status && !cli_pictures_skipped())
       fprintf(stderr, "  wrote %s/branches.tsv, special.tsv, nonsync.%s, f2.%s\n", dir,
               cli_picture_format, cli_picture_format);
   }

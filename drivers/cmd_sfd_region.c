@@ -194,7 +194,8 @@ int cmd_sfd_region(int argc, char **argv) {
                       "delta = %.8f (not a boundary of the region)\n", reg.lambda_c, reg.delta_c);
     if (!status)
       fprintf(stderr, "  wrote %s/upper.tsv, lower.tsv, band.tsv%s%s\n", dir,
-              noplot ? "" : ", region.", noplot ? "" : cli_picture_format);
+              noplot || cli_pictures_skipped() ? "" : ", region.",
+              noplot || cli_pictures_skipped() ? "" : cli_picture_format);
   }
   whirl_sfd_region_free(&reg);
   return status;

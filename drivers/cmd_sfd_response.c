@@ -542,7 +542,7 @@ int cmd_sfd_response(int argc, char **argv) {
             counts[WHIRL_PT_LP], counts[WHIRL_PT_BP],
             counts[WHIRL_PT_HB] + counts[WHIRL_PT_TR], periodic ? "TR" : "HB",
             counts[WHIRL_PT_PD], steps, newton_its, 1e3 * secs);
-    if (plot && !status)
+    if (plot && !status && !cli_pictures_skipped())
       fprintf(stderr, "  wrote %s/branches.tsv, %s/special.tsv, response.%s, "
               "multipliers.%s\n", dir, dir, cli_picture_format, cli_picture_format);
     else

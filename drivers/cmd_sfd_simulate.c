@@ -372,7 +372,8 @@ int cmd_sfd_simulate(int argc, char **argv) {
       fprintf(stderr, "  %zu Jacobians, %zu LU factorisations, %zu Newton iterations\n",
               ist.jac_evals, ist.lu_factors, ist.newton_iters);
     fprintf(stderr, "  wrote %s/history.tsv poincare.tsv%s peaks.tsv%s\n", dir,
-            contact ? "" : " spectrum.tsv", noplot ? "" : " and PNGs");
+            contact ? "" : " spectrum.tsv",
+            noplot || status || cli_pictures_skipped() ? "" : " and the pictures");
   }
   free(P);
   free(h.buf);

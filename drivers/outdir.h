@@ -100,7 +100,8 @@ void out_abort(out_file *o);
 /* Draw NAME.png (.pdf, .svg) by running gnuplot on NAME.gp in the stage,
  * and check that the picture is complete (a PNG with its IEND chunk, a PDF
  * with its trailer, an SVG closed): gnuplot exits 0 even when it could not
- * write.  0, or -1 with the picture removed. */
+ * write.  0, or -1 with the picture removed; 0 without a picture when
+ * gnuplot cannot be started (cli_pictures_skipped). */
 int cli_outdir_plot(cli_outdir *d, const char *name);
 
 /* The pictures' format, png (default), pdf or svg: --format of
@@ -108,6 +109,11 @@ int cli_outdir_plot(cli_outdir *d, const char *name);
  * message printed for another value. */
 extern const char *cli_picture_format;
 int cli_picture_format_check(const char *cmd);
+
+/* 1 once a picture was skipped because gnuplot cannot be started (not
+ * installed, or configured --without-gnuplot): that is said once on
+ * stderr, is not a failure, and no summary may claim a picture. */
+int cli_pictures_skipped(void);
 
 /* The first lines of a picture's script: a comment naming the command,
  * the terminal (pngcairo W x H pixels, or the same proportions in pdfcairo

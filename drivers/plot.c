@@ -22,6 +22,13 @@ extern volatile pid_t cli_outdir_child; /* outdir.c: killed on a signal */
 
 const char *cli_picture_format = "png";
 
+/* gnuplot could not be started (not installed, or configured
+ * --without-gnuplot and WHIRL_GNUPLOT unset): the pictures are skipped,
+ * said once, and the run's status is what it would be with them. */
+static int gnuplot_missing;
+
+int cli_pictures_skipped(void) { return gnuplot_missing; }
+
 int cli_picture_format_check(const char *cmd) {
   const char *f = cli_picture_format;
   if (!strcmp(f, "png") || !strcmp(f, "pdf") || !strcmp(f, "svg")) return 0;
@@ -107,6 +114,11 @@ static int picture_complete(const char *path) {
 static int run_gnuplot(const char *dir, const char *script, char *err, size_t len) {
   const char *gp = getenv("WHIRL_GNUPLOT");
   if (!gp || !*gp) gp = WHIRL_GNUPLOT;
+  if (!*gp) { /* configure --without-gnuplot */
+    snprintf(err, len, "whirl was configured --without-gnuplot (set WHIRL_GNUPLOT "
+             "to a gnuplot to draw them)");
+    return -2;
+  }
   int fd[2];
   err[0] = '\0';
   if (pipe(fd) != 0) {
@@ -151,7 +163,7 @@ static int run_gnuplot(const char *dir, const char *script, char *err, size_t le
   if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
     snprintf(err, len, "gnuplot not found ('%s'); on Debian: apt-get install "
              "gnuplot-nox (or set WHIRL_GNUPLOT)", gp);
-    return -1;
+    return -2;
   }
   return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
 }
@@ -162,9 +174,17 @@ int cli_outdir_plot(cli_outdir *d, const char *name) {
   snprintf(png, sizeof png, "%s.%s", name, cli_picture_format);
   snprintf(p, sizeof p, "%s/%s", d->stage, png);
   cli_outdir_shown(d, png, shown, sizeof shown);
+  if (gnuplot_missing) return 0;
   int rc = run_gnuplot(d->stage, script, err, sizeof err);
   if (rc == 0 && picture_complete(p)) {
     return cli_outdir_record(d, png);
+  }
+  if (rc == -2) { /* no gnuplot: the scripts stay, to be run later */
+    gnuplot_missing = 1;
+    unlink(p);
+    fprintf(stderr, "whirl %s: pictures skipped: %s; their scripts (*.gp) are "
+            "written, run them with gnuplot in the output directory\n", d->cmd, err);
+    return 0;
   }
   unlink(p);
   if (rc == 0)

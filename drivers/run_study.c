@@ -377,8 +377,9 @@ int run_study_command(whirl_run *r, const study_opts *o, int rank, int nranks) {
     if (!o->quiet)
       printf("%zu %s (%zu computed, %zu from the checkpoint); wrote %s/ (%s, run.log%s%s)\n",
              S.hi - S.lo, S.B > 1 ? "grid lines" : "points", S.computed, S.resumed, S.out,
-             whirl_run_rows_file(r), S.B > 1 && !o->chunks ? ", basins." : "",
-             S.B > 1 && !o->chunks ? cli_picture_format : "");
+             whirl_run_rows_file(r), S.B > 1 && !o->chunks && !cli_pictures_skipped()
+             ? ", basins." : "",
+             S.B > 1 && !o->chunks && !cli_pictures_skipped() ? cli_picture_format : "");
   }
   release(&S);
   return rank == 0 ? rc : 0;

@@ -18,7 +18,7 @@ ok $? "man/whirl.1 is built"
 # the commands, as doc/mkman.sh reads them, and their options
 "$WHIRL" --help | awk '/^commands:/ { on = 1; next } on && /^$/ { exit }
   on && /^  [a-z]/ { l = substr($0, 3); if (match(l, /  +/)) l = substr(l, 1, RSTART - 1)
-    n = split(l, w, " "); o = ""; for (i = 1; i <= n; i++) if (w[i] !~ /^[A-Z][A-Z0-9_]*$/) o = o (o ? " " : "") w[i]
+    n = split(l, w, " "); o = ""; for (i = 1; i <= n; i++) if (w[i] !~ /^\[?[A-Z][A-Z0-9_.]*\]?$/) o = o (o ? " " : "") w[i]
     print o }' > "$tmp/commands"
 ncmd=$(wc -l < "$tmp/commands")
 missing=""
