@@ -80,7 +80,7 @@ int cmd_sfd_basins(int argc, char **argv) {
   double p[WHIRL_SFD_NPAR];
   whirl_sfd_default_params(p);
   p[WHIRL_SFD_OMEGA] = NAN;
-  size_t npoints = 8000, periods = 500;
+  size_t npoints = 8000, periods = 500, seeds = 4, levels = 4, cells = 64, hits = 2;
   double radius = 0.98, rtol = 1e-12, atol = 1e-15;
   int threads = 0, fixed = 0, noplot = 0, quiet = 0;
   const char *vel = "zero", *dir = "sfd-basins";
@@ -98,6 +98,14 @@ int cmd_sfd_basins(int argc, char **argv) {
       {"--periods", CLI_SIZE, &periods, "P", "most forcing periods per trajectory", NULL},
       {"--fixed-horizon", CLI_FLAG, &fixed, NULL,
        "always integrate P periods, classify at the end", NULL},
+      {"--seeds", CLI_SIZE, &seeds, "K",
+       "every K-th initial state is a seed of the atlas of classified cells; 0: no atlas, "
+       "every state until the certified capture (doc/basins.md)", NULL},
+      {"--levels", CLI_SIZE, &levels, "L",
+       "the seeds in L rounds, each using the atlas of the rounds before (1..8)", NULL},
+      {"--cells", CLI_SIZE, &cells, "N", "atlas cells: N intervals per coordinate", NULL},
+      {"--cell-hits", CLI_SIZE, &hits, "H",
+       "consecutive section points in cells of one attractor that classify a state", NULL},
       {"--threads", CLI_INT, &threads, "T", "OpenMP threads, 0..1024; 0: as many as OpenMP offers", NULL},
       SFD_OPTS_MODEL(p),
       SFD_OPTS_TOL(rtol, atol),
@@ -197,6 +205,10 @@ int cmd_sfd_basins(int argc, char **argv) {
   bo.rtol = rtol;
   bo.atol = atol;
   bo.nthreads = threads;
+  bo.seed_stride = seeds;
+  bo.cells = cells;
+  bo.atlas_levels = levels;
+  bo.cell_hits = hits;
   cli_progress prog;
   cli_progress_init(&prog, "whirl sfd basins", quiet);
   bo.progress = progress_cb;
@@ -288,9 +300,9 @@ int cmd_sfd_basins(int argc, char **argv) {
     if (threads > 0) snprintf(thr, sizeof thr, "%d thread%s", threads, threads == 1 ? "" : "s");
     else snprintf(thr, sizeof thr, "all threads");
     fprintf(stderr, "  attractors %.2f s; basins %.2f s on %s; %zu periods (%.1f per point), "
-                    "%zu steps, %zu RHS evaluations\n",
+                    "%zu steps, %zu RHS evaluations; %zu points by the atlas\n",
             t_att, t_cls, thr, bst.periods,
-            (double)bst.periods / (double)n, bst.steps, bst.rhs_evals);
+            (double)bst.periods / (double)n, bst.steps, bst.rhs_evals, bst.by_atlas);
   }
   free(which);
   free(per);
