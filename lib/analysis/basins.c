@@ -52,12 +52,13 @@ typedef struct {
   size_t last_k;
   int error;
   const whirl_basins_atlas *atlas;
+  size_t phases;            /* section points a period (atlas, record) */
   size_t need_hits, hits;
   int cell_class, by_atlas;
   basins_record *rec;
 } classify_ctx;
 
-static void record(basins_record *r, const double *x) {
+static void record(basins_record *r, const double *x, size_t phase) {
   if (r->oom) return;
   if (r->m == r->cap) {
     size_t cap = r->cap ? 2 * r->cap : 64;
@@ -69,15 +70,16 @@ static void record(basins_record *r, const double *x) {
     r->x = nx;
     r->cap = cap;
   }
-  memcpy(r->x + r->m * r->n, x, r->n * sizeof *x);
+  memcpy(r->x + r->m * r->n, x, (r->n - 1) * sizeof *x);
+  r->x[r->m * r->n + r->n - 1] = (double)phase;
   ++r->m;
 }
 
-/* The atlas's word on section point k: 1 once cell_hits consecutive
- * points (k >= 1) lie in cells of one class. */
+/* The atlas's word on section point k (of `phases` a period): 1 once
+ * cell_hits consecutive points (k >= 1) lie in cells of one class. */
 static int atlas_says(classify_ctx *c, size_t k, const double *x) {
   if (!c->atlas || k == 0) return 0;
-  int cls = basins_atlas_lookup(c->atlas, x);
+  int cls = basins_atlas_lookup(c->atlas, x, k % c->phases);
   if (cls < 0 || (size_t)cls >= c->natt) {
     c->hits = 0;
     return 0;
@@ -92,9 +94,9 @@ static int atlas_says(classify_ctx *c, size_t k, const double *x) {
 
 static int on_section(size_t k, double t, const double *x, void *data) {
   classify_ctx *c = data;
-  c->last_k = k;
-  if (c->rec) record(c->rec, x);
-  for (size_t j = 0; j < c->natt; ++j) {
+  c->last_k = (k + c->phases - 1) / c->phases; /* periods begun */
+  if (c->rec) record(c->rec, x, k % c->phases);
+  for (size_t j = 0; k % c->phases == 0 && j < c->natt; ++j) {
     int r = c->att[j].test(t, x, c->att[j].data);
     if (r < 0) {
       c->error = r;
@@ -128,6 +130,7 @@ int basins_classify_ex(whirl_ode *ode, const double *x0,
   c.need_hits = o->cell_hits ? o->cell_hits : 3;
   c.cell_class = -1;
   c.rec = rec;
+  c.phases = (c.atlas || rec) && o->section_phases ? o->section_phases : 1;
   if (by_atlas) *by_atlas = 0;
   int rc = whirl_ode_reset(ode, o->t0, x0);
   if (rc != WHIRL_OK) {
@@ -135,7 +138,8 @@ int basins_classify_ex(whirl_ode *ode, const double *x0,
     if (periods) *periods = 0;
     return WHIRL_OK;
   }
-  rc = whirl_ode_sample(ode, o->period, o->max_periods, on_section, &c);
+  rc = whirl_ode_sample(ode, o->period / (double)c.phases,
+                        o->max_periods * c.phases, on_section, &c);
   if (periods) *periods = (unsigned)c.last_k;
   if (c.error) return c.error;
   if (rc == 1) {

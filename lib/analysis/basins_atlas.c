@@ -21,7 +21,8 @@
 #define MIXED (-1)
 
 struct whirl_basins_atlas {
-  size_t n, npoints, fine, levels, nheld;
+  size_t n, nk, npoints, fine, levels, nheld; /* nk = n + 1: a cell's key
+                              is its n indices and the section phase */
   int *held_which;         /* classes of the points g = j*fine, j < nheld */
   unsigned *held_periods;
   double *lo, *h;          /* cell i of coordinate k: lo + [i, i+1) h */
@@ -40,17 +41,18 @@ static uint64_t hash_key(const int32_t *q, size_t n) {
   return h;
 }
 
-static void cell_of(const whirl_basins_atlas *a, const double *x, int32_t *q) {
+static void cell_of(const whirl_basins_atlas *a, const double *x, size_t phase, int32_t *q) {
   for (size_t i = 0; i < a->n; ++i) {
     double c = floor((x[i] - a->lo[i]) / a->h[i]);
     q[i] = c > INT32_MAX / 2 ? INT32_MAX / 2 : c < INT32_MIN / 2 ? INT32_MIN / 2 : (int32_t)c;
   }
+  q[a->n] = (int32_t)phase;
 }
 
 /* The slot of cell q: its own, or the empty one where it would go. */
 static size_t slot_of(const whirl_basins_atlas *a, const int32_t *q) {
-  size_t s = (size_t)hash_key(q, a->n) & (a->cap - 1);
-  while (a->cls[s] != EMPTY && memcmp(a->keys + s * a->n, q, a->n * sizeof *q))
+  size_t s = (size_t)hash_key(q, a->nk) & (a->cap - 1);
+  while (a->cls[s] != EMPTY && memcmp(a->keys + s * a->nk, q, a->nk * sizeof *q))
     s = (s + 1) & (a->cap - 1);
   return s;
 }
@@ -62,7 +64,7 @@ static int grow(whirl_basins_atlas *a, size_t want) {
   int32_t *ok = a->keys;
   signed char *oc = a->cls;
   size_t ocap = a->cap;
-  a->keys = malloc(cap * a->n * sizeof *a->keys);
+  a->keys = malloc(cap * a->nk * sizeof *a->keys);
   a->cls = malloc(cap);
   if (!a->keys || !a->cls) {
     free(a->keys);
@@ -74,8 +76,8 @@ static int grow(whirl_basins_atlas *a, size_t want) {
   a->cap = cap;
   for (size_t s = 0; s < ocap; ++s) /* rehash the cells as they are */
     if (oc[s] != EMPTY) {
-      size_t t = slot_of(a, ok + s * a->n);
-      memcpy(a->keys + t * a->n, ok + s * a->n, a->n * sizeof *ok);
+      size_t t = slot_of(a, ok + s * a->nk);
+      memcpy(a->keys + t * a->nk, ok + s * a->nk, a->nk * sizeof *ok);
       a->cls[t] = oc[s];
     }
   free(ok);
@@ -83,13 +85,14 @@ static int grow(whirl_basins_atlas *a, size_t want) {
   return WHIRL_OK;
 }
 
+/* x: a recorded state, its n coordinates and its phase. */
 static void insert(whirl_basins_atlas *a, const double *x, int which) {
-  int32_t q[64], *qq = a->n <= 64 ? q : malloc(a->n * sizeof *qq);
+  int32_t q[64], *qq = a->nk <= 64 ? q : malloc(a->nk * sizeof *qq);
   if (!qq) return; /* a cell left out only makes the atlas say less */
-  cell_of(a, x, qq);
+  cell_of(a, x, (size_t)x[a->n], qq);
   size_t s = slot_of(a, qq);
   if (a->cls[s] == EMPTY) {
-    memcpy(a->keys + s * a->n, qq, a->n * sizeof *qq);
+    memcpy(a->keys + s * a->nk, qq, a->nk * sizeof *qq);
     a->cls[s] = (signed char)which;
     ++a->used;
   } else if (a->cls[s] != which) {
@@ -102,11 +105,11 @@ static int cell_class(const whirl_basins_atlas *a, const int32_t *q) {
   return a->cls[slot_of(a, q)];
 }
 
-int basins_atlas_lookup(const whirl_basins_atlas *a, const double *x) {
+int basins_atlas_lookup(const whirl_basins_atlas *a, const double *x, size_t phase) {
   if (!a || a->used == 0) return -1;
-  int32_t q[64], *qq = a->n <= 64 ? q : malloc(a->n * sizeof *qq);
+  int32_t q[64], *qq = a->nk <= 64 ? q : malloc(a->nk * sizeof *qq);
   if (!qq) return -1;
-  cell_of(a, x, qq);
+  cell_of(a, x, phase, qq);
   int c = cell_class(a, qq);
   for (size_t i = 0; c >= 0 && i < a->n; ++i)
     for (int d = -1; d <= 1 && c >= 0; d += 2) {
@@ -127,7 +130,7 @@ static void set_cells(whirl_basins_atlas *a, const basins_record *rec, const siz
     for (size_t j = 0; j < m; ++j) {
       if (a->held_which[idx[j] / a->fine] < 0) continue;
       for (size_t k = 0; k < rec[j].m; ++k) {
-        double v = rec[j].x[k * a->n + i];
+        double v = rec[j].x[k * a->nk + i];
         lo = v < lo ? v : lo;
         hi = v > hi ? v : hi;
       }
@@ -146,7 +149,7 @@ static int enter(whirl_basins_atlas *a, const basins_record *rec, const size_t *
   if (grow(a, total) != WHIRL_OK) return WHIRL_ENOMEM;
   for (size_t j = 0; j < m; ++j) {
     int w = a->held_which[idx[j] / a->fine];
-    for (size_t k = 0; w >= 0 && k < rec[j].m; ++k) insert(a, rec[j].x + k * a->n, w);
+    for (size_t k = 0; w >= 0 && k < rec[j].m; ++k) insert(a, rec[j].x + k * a->nk, w);
   }
   return WHIRL_OK;
 }
@@ -171,7 +174,7 @@ static int classify_level(whirl_basins_atlas *a, const whirl_problem *prob, cons
     for (size_t j = 0; j < m; ++j) {
       int w = WHIRL_BASIN_FAILED, by = 0;
       unsigned per = 0;
-      rec[j].n = a->n;
+      rec[j].n = a->nk;
       if (my == WHIRL_OK)
         my = basins_classify_ex(ode, x0 + idx[j] * a->n, att, natt, o, use_atlas ? a : NULL,
                                 &rec[j], &w, &per, &by);
@@ -233,6 +236,7 @@ int whirl_basins_atlas_build(const whirl_problem *prob, const double *p, size_t 
   whirl_basins_atlas *a = calloc(1, sizeof *a);
   if (!a) return WHIRL_ENOMEM;
   a->n = prob->n;
+  a->nk = prob->n + 1;
   a->npoints = npoints;
   a->fine = o->seed_stride;
   a->levels = o->atlas_levels ? o->atlas_levels : 1;

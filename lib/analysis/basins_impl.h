@@ -7,17 +7,19 @@
 
 #include <whirl/basins.h>
 
-/* A growing array of section states (n doubles each). */
+/* A growing array of section states: n doubles each, the state and its
+ * section phase (0 .. section_phases − 1). */
 typedef struct basins_record {
   double *x;
   size_t m, cap, n;
   int oom; /* an allocation failed: the record is incomplete */
 } basins_record;
 
-/* Class of the cell of x in the atlas: an attractor index (>= 0) when
+/* Class of the cell of x (at section phase `phase`) in the atlas: an attractor index (>= 0) when
  * the cell and its 2n face neighbours were visited by seed trajectories of
  * that class only, else -1. */
-int basins_atlas_lookup(const whirl_basins_atlas *a, const double *x);
+int basins_atlas_lookup(const whirl_basins_atlas *a, const double *x,
+                        size_t phase);
 
 /* whirl_basins_classify with an atlas (may be NULL: certificates only) and
  * a record of the section states 0 .. the last (rec may be NULL);

@@ -18,20 +18,24 @@
  *
  * Reuse of classified trajectories (an atlas; cell recurrence after
  * Datseris & Wagemakers, "Effortless estimation of basins of attraction",
- * Chaos 32, 023104, 2022).  With seed_stride = s > 0, every s-th point
- * (index 0, s, 2s, ...) is a seed: it is classified by the tests alone, and
- * its section states up to its capture are put into cells (each coordinate
- * cut into `cells` intervals over the range of all seeds' states).  A cell
- * has the class of the seeds that visited it, or none if seeds of two
- * classes did.  Every other point is integrated until the tests capture
- * it, or until `cell_hits` consecutive section points (from the first
- * period on) lie in cells whose class is the same attractor and whose 2n
- * face neighbours carry no other class: it then takes that class.  The
- * atlas depends on the seeds only, which are classified independently, so
- * the result is still the same for any number of threads and any order
- * of the points (and any split into blocks, with a shared atlas).  The
+ * Chaos 32, 023104, 2022).  With seed_stride = s > 0 the points 0, s, 2s,
+ * ... are held by the atlas: they are classified first, in atlas_levels = L
+ * rounds (round 1: the multiples of s·4^(L−1), by the tests alone; round l:
+ * the multiples of s·4^(L−l) not in an earlier round, with the atlas of the
+ * rounds before), and the section states of each, up to its
+ * classification, are put into cells (each coordinate cut into `cells`
+ * intervals over the range of round 1's states; with section_phases = m,
+ * the section points are m a period, each phase with cells of its own).  A cell has the class of
+ * the trajectories that visited it, or none if two classes did.  Every
+ * other point is integrated until the tests capture it, or until
+ * `cell_hits` consecutive section points (from the first period on, never
+ * the initial state) lie in cells whose class is one attractor and whose
+ * 2n face neighbours carry no other class: it then takes that class.  The
+ * atlas depends on the held points only, each classified on its own within
+ * its round, so the result is the same for any number of threads, any
+ * order of the points and any split into blocks sharing one atlas.  The
  * tests are certificates, the atlas is not: its guarantee is empirical
- * (see doc/basins.md), which is why it is off by default here.
+ * (see doc/sfd-time-domain.md), which is why it is off by default here.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_BASINS_H
 #define WHIRL_BASINS_H
@@ -88,6 +92,9 @@ typedef struct whirl_basins_options {
   size_t seed_stride;   /* 0: no atlas (default); s: every s-th point a seed */
   size_t cells;         /* intervals per coordinate, 0: 64 */
   size_t cell_hits;     /* consecutive section points in cells, 0: 3 */
+  size_t section_phases; /* m (0: 1): the atlas's section points are
+                           t0 + kT/m, each phase k mod m with cells of its
+                           own (the tests still at t0 + kT only) */
   size_t atlas_levels;  /* L (0: 1, at most 8): the seeds are classified in
                            L rounds, round l those of stride s·4^(L−l) not
                            in an earlier round, each with the atlas of the

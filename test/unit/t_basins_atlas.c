@@ -59,7 +59,8 @@ static void options(whirl_basins_options *o, double Om, int threads) {
   o->seed_stride = 2;
   o->atlas_levels = 3;
   o->cells = 32;
-  o->cell_hits = 2;
+  o->cell_hits = 4;
+  o->section_phases = 8; /* the defaults of whirl sfd basins but the strides */
 }
 
 static int run(const paper_case *c, const whirl_basins_options *o, int *w, unsigned *per,
