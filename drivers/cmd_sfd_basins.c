@@ -25,7 +25,10 @@ static const cli_doc doc = {
 "there is one), each with a certified Lyapunov neighbourhood in the\n"
 "rotating frame, and the nonsynchronous (quasiperiodic) response if a\n"
 "trajectory settles on one.  Every initial state is then integrated until\n"
-"it enters one of those neighbourhoods (or --periods have passed).\n"
+"it enters one of those neighbourhoods (or --periods have passed), or --\n"
+"an atlas of classified cells (--seeds) -- until it has passed --cell-hits\n"
+"consecutive periods in cells that trajectories of one attractor alone\n"
+"went through.\n"
 "\n"
 "options (defaults: Table 1 of the paper):\n",
 "stdout: TSV 'attractor count percent'.  DIR/basins.tsv: y0 z0 vy0 vz0\n"
@@ -80,7 +83,7 @@ int cmd_sfd_basins(int argc, char **argv) {
   double p[WHIRL_SFD_NPAR];
   whirl_sfd_default_params(p);
   p[WHIRL_SFD_OMEGA] = NAN;
-  size_t npoints = 8000, periods = 500;
+  size_t npoints = 8000, periods = 500, seeds = 4, levels = 4, cells = 32, hits = 4, phases = 8;
   double radius = 0.98, rtol = 1e-12, atol = 1e-15;
   int threads = 0, fixed = 0, noplot = 0, quiet = 0;
   const char *vel = "zero", *dir = "sfd-basins";
@@ -98,6 +101,17 @@ int cmd_sfd_basins(int argc, char **argv) {
       {"--periods", CLI_SIZE, &periods, "P", "most forcing periods per trajectory", NULL},
       {"--fixed-horizon", CLI_FLAG, &fixed, NULL,
        "always integrate P periods, classify at the end", NULL},
+      {"--seeds", CLI_SIZE, &seeds, "K",
+       "atlas of classified cells: every K-th initial state is classified first and its "
+       "trajectory's cells keep its class; 0: no atlas, every state integrated until a "
+       "certified capture (doc/sfd-time-domain.md)", NULL},
+      {"--levels", CLI_SIZE, &levels, "L",
+       "those states in L rounds (1..8) of strides K*4^(L-1), ..., 4K, K, each round "
+       "using the cells of the rounds before", NULL},
+      {"--cells", CLI_SIZE, &cells, "N", "atlas cells: N intervals per coordinate", NULL},
+      {"--cell-hits", CLI_SIZE, &hits, "H",
+       "consecutive section points in cells of one attractor that classify a state", NULL},
+      {"--phases", CLI_SIZE, &phases, "M", "atlas section points a forcing period (1..64)", NULL},
       {"--threads", CLI_INT, &threads, "T", "OpenMP threads, 0..1024; 0: as many as OpenMP offers", NULL},
       SFD_OPTS_MODEL(p),
       SFD_OPTS_TOL(rtol, atol),
@@ -120,6 +134,15 @@ int cmd_sfd_basins(int argc, char **argv) {
   }
   if (periods < 1) {
     cli_error(CMD, "--periods must be >= 1");
+    return 2;
+  }
+  if (phases < 1 || phases > 64) {
+    cli_error(CMD, "--phases must be in 1..64 (got %zu)", phases);
+    return 2;
+  }
+  if (levels < 1 || levels > 8 || cells < 1 || cells > 1000000 || hits < 1 || hits > periods) {
+    cli_error(CMD, "need 1 <= --levels <= 8, 1 <= --cells <= 1e6, 1 <= --cell-hits <= --periods "
+              "(got %zu, %zu, %zu)", levels, cells, hits);
     return 2;
   }
   if (threads < 0 || threads > WHIRL_BASINS_MAX_THREADS) {
@@ -197,6 +220,11 @@ int cmd_sfd_basins(int argc, char **argv) {
   bo.rtol = rtol;
   bo.atol = atol;
   bo.nthreads = threads;
+  bo.seed_stride = seeds;
+  bo.cells = cells;
+  bo.atlas_levels = levels;
+  bo.section_phases = phases;
+  bo.cell_hits = hits;
   cli_progress prog;
   cli_progress_init(&prog, "whirl sfd basins", quiet);
   bo.progress = progress_cb;
@@ -288,9 +316,9 @@ int cmd_sfd_basins(int argc, char **argv) {
     if (threads > 0) snprintf(thr, sizeof thr, "%d thread%s", threads, threads == 1 ? "" : "s");
     else snprintf(thr, sizeof thr, "all threads");
     fprintf(stderr, "  attractors %.2f s; basins %.2f s on %s; %zu periods (%.1f per point), "
-                    "%zu steps, %zu RHS evaluations\n",
+                    "%zu steps, %zu RHS evaluations; %zu points by the atlas\n",
             t_att, t_cls, thr, bst.periods,
-            (double)bst.periods / (double)n, bst.steps, bst.rhs_evals);
+            (double)bst.periods / (double)n, bst.steps, bst.rhs_evals, bst.by_atlas);
   }
   free(which);
   free(per);

@@ -15,6 +15,27 @@
  * Points are integrated in parallel (OpenMP, dynamic schedule); every point
  * has its own integrator and its result depends on nothing else, so the
  * basins are identical for any number of threads.
+ *
+ * Reuse of classified trajectories (an atlas; cell recurrence after
+ * Datseris & Wagemakers, "Effortless estimation of basins of attraction",
+ * Chaos 32, 023104, 2022).  With seed_stride = s > 0 the points 0, s, 2s,
+ * ... are held by the atlas: they are classified first, in atlas_levels = L
+ * rounds (round 1: the multiples of s·4^(L−1), by the tests alone; round l:
+ * the multiples of s·4^(L−l) not in an earlier round, with the atlas of the
+ * rounds before), and the section states of each, up to its
+ * classification, are put into cells (each coordinate cut into `cells`
+ * intervals over the range of round 1's states; with section_phases = m,
+ * the section points are m a period, each phase with cells of its own).  A cell has the class of
+ * the trajectories that visited it, or none if two classes did.  Every
+ * other point is integrated until the tests capture it, or until
+ * `cell_hits` consecutive section points (from the first period on, never
+ * the initial state) lie in cells whose class is one attractor and whose
+ * 2n face neighbours carry no other class: it then takes that class.  The
+ * atlas depends on the held points only, each classified on its own within
+ * its round, so the result is the same for any number of threads, any
+ * order of the points and any split into blocks sharing one atlas.  The
+ * tests are certificates, the atlas is not: its guarantee is empirical
+ * (see doc/sfd-time-domain.md), which is why it is off by default here.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_BASINS_H
 #define WHIRL_BASINS_H
@@ -67,6 +88,22 @@ typedef struct whirl_basins_options {
   /* Optional progress report, called (serialised) after each point. */
   void (*progress)(size_t done, size_t total, void *data);
   void *progress_data;
+  /* Atlas (see above; ignored with fixed_horizon). */
+  size_t seed_stride;   /* 0: no atlas (default); s: every s-th point a seed */
+  size_t cells;         /* intervals per coordinate, 0: 64 */
+  size_t cell_hits;     /* consecutive section points in cells, 0: 3 */
+  size_t section_phases; /* m (0: 1): the atlas's section points are
+                           t0 + kT/m, each phase k mod m with cells of its
+                           own (the tests still at t0 + kT only) */
+  size_t atlas_levels;  /* L (0: 1, at most 8): the seeds are classified in
+                           L rounds, round l those of stride s·4^(L−l) not
+                           in an earlier round, each with the atlas of the
+                           rounds before it (round 1 by the tests alone) */
+  const struct whirl_basins_atlas *atlas; /* built beforehand over the whole
+                           list of points (whirl_basins_atlas_build); NULL:
+                           whirl_basins_compute builds its own over the
+                           points it is given when seed_stride > 0 */
+  size_t first;         /* with atlas: index in the atlas's list of x0[0] */
 } whirl_basins_options;
 
 WHIRL_API void whirl_basins_options_default(whirl_basins_options *o);
@@ -80,7 +117,29 @@ typedef struct whirl_basins_stats {
   size_t periods;   /* section periods integrated, all points */
   size_t steps;     /* accepted steps, all points */
   size_t rhs_evals; /* right-hand-side evaluations, all points */
+  size_t by_atlas;  /* points classified by the atlas (not the tests) */
 } whirl_basins_stats;
+
+typedef struct whirl_basins_atlas whirl_basins_atlas;
+
+/* Classify the seeds among npoints initial states x0 (every
+ * o->seed_stride-th, which must be > 0) and build the atlas from their
+ * trajectories, for whirl_basins_compute calls on any parts of the same
+ * list (options.atlas, options.first).  Threads as o->nthreads.  The
+ * seeds' classes are kept: those calls copy them.  Returns WHIRL_OK or an
+ * error with a message in errbuf. */
+WHIRL_API int whirl_basins_atlas_build(const whirl_problem *prob,
+                                       const double *p, size_t npoints,
+                                       const double *x0,
+                                       const whirl_attractor *att,
+                                       size_t natt,
+                                       const whirl_basins_options *o,
+                                       whirl_basins_atlas **out,
+                                       char *errbuf, size_t errlen);
+WHIRL_API void whirl_basins_atlas_free(whirl_basins_atlas *a);
+/* Seeds, and classified cells, of an atlas. */
+WHIRL_API size_t whirl_basins_atlas_seeds(const whirl_basins_atlas *a);
+WHIRL_API size_t whirl_basins_atlas_cells(const whirl_basins_atlas *a);
 
 /* Classify npoints initial states x0[npoints * n] (row i = point i) at
  * parameters p.  which[i] = index into att[] or a WHIRL_BASIN_* code;

@@ -101,6 +101,26 @@ ok $? "small and large orbits both reported"
 [ -s "$out/basins.png" ]
 ok $? "basins.png written"
 
+# the atlas of classified cells (issue 19): on a small basin the classes of
+# the certified route alone (--seeds 0) but for at most 1 % of the states (the
+# atlas is not a proof: 1 of these 293 differs with the defaults, none with
+# --cell-hits 8, doc/sfd-time-domain.md; t_basins_atlas checks equality with
+# the fixed horizon), the same file for 1 and 2 threads, bad options refused
+for t in 1 2; do
+  "$WHIRL" sfd basins --omega 1.78 --velocities circular --points 300 --rtol 1e-10 --atol 1e-13 \
+    --threads $t --no-plot --quiet --out "$tmp/atl-$t" > /dev/null 2>&1
+  ok $? "basins with the atlas on $t thread(s) runs"
+done
+cmp -s "$tmp/atl-1/basins.tsv" "$tmp/atl-2/basins.tsv"
+ok $? "basins.tsv with the atlas identical on 1 and 2 threads"
+"$WHIRL" sfd basins --omega 1.78 --velocities circular --points 300 --rtol 1e-10 --atol 1e-13 \
+  --seeds 0 --no-plot --quiet --out "$tmp/atl-0" > /dev/null 2>&1
+paste "$tmp/atl-0/basins.tsv" "$tmp/atl-2/basins.tsv" | awk -F'\t' 'NR > 2 { n++; d += $5 != $11 }
+  END { exit !(n > 250 && 100 * d <= n) }'
+ok $? "the atlas's classes = the certified route's on all but at most 1 % of the states"
+check_bad basins "levels" --omega 1.78 --levels 9
+check_bad basins "phases" --omega 1.78 --phases 0
+
 # --method: BDF (CVODE) near the housing (F_E = 0.995, eps ~ 0.99, stiff)
 # against DOPRI5 at the same settings: the same final state
 check_bad simulate "method must be dopri5 or bdf" --omega 2 --method rk4
