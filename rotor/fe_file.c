@@ -41,6 +41,8 @@ typedef struct ctx {
   int line;
   char *msg;
   size_t len;
+  int *elline;  /* elline[n]: the line of the shaft element from node n, 0 */
+  int nelline;  /* its length (the largest node so far + 1) */
 } ctx;
 
 static int fail_at(ctx *c, int line, const char *fmt, ...) WHIRL_PRINTF_LIKE(3, 4);
@@ -178,11 +180,18 @@ static int st_shaft(ctx *c, char **tok, int ntok) {
     return FAIL(c, "shaft: elements=%g but from=%g to=%g makes %g elements", nel, from, to, to - from);
   int mk = find_material(d, mat);
   if (mk < 0) return FAIL(c, "shaft: unknown material '%s' (define it before its first use)", mat);
+  if ((int)to > c->nelline) { /* a line per node: the check below is O(1) */
+    int *e = realloc(c->elline, (size_t)to * sizeof *e);
+    if (!e) return WHIRL_ENOMEM;
+    memset(e + c->nelline, 0, ((size_t)to - (size_t)c->nelline) * sizeof *e);
+    c->elline = e;
+    c->nelline = (int)to;
+  }
   for (int n = (int)from; n < (int)to; ++n) {
-    for (size_t k = 0; k < d->nel; ++k)
-      if (d->el[k].node == n)
-        return FAIL(c, "shaft: the element between nodes %d and %d is defined twice (first at line %d)",
-                    n, n + 1, d->el[k].line);
+    if (c->elline[n])
+      return FAIL(c, "shaft: the element between nodes %d and %d is defined twice (first at line %d)",
+                  n, n + 1, c->elline[n]);
+    c->elline[n] = c->line;
     if (PUSH(d->el, d->nel, d->cel)) return WHIRL_ENOMEM;
     d->el[d->nel++] = (fe_element){n, length / (to - from), od, id, mk, c->line};
   }
@@ -616,7 +625,7 @@ static int check_whole(ctx *c) {
 int fe_parse(const char *path, fe_desc *d, char *msg, size_t len) {
   memset(d, 0, sizeof *d);
   snprintf(d->file, sizeof d->file, "%s", path);
-  ctx c = {d, 0, msg, len};
+  ctx c = {d, 0, msg, len, NULL, 0};
   FILE *f = fopen(path, "r");
   if (!f) {
     if (msg && len) snprintf(msg, len, "%s: cannot open: %s", path, strerror(errno));
@@ -624,6 +633,7 @@ int fe_parse(const char *path, fe_desc *d, char *msg, size_t len) {
   }
   int rc = read_lines(&c, f);
   fclose(f);
+  free(c.elline);
   if (rc == WHIRL_ENOMEM && msg && len) snprintf(msg, len, "%s:%d: out of memory", path, c.line);
   if (!rc) rc = check_whole(&c);
   if (rc) fe_desc_free(d);

@@ -100,6 +100,14 @@ extra "duplicate material" 6 "material 'steel' defined twice (first at line 1)" 
 extra "duplicate disk" 6 "a disk at node 2 is already defined (line 3)" 'disk node=2 mass=1'
 extra "duplicate shaft element" 6 "between nodes 1 and 2 is defined twice (first at line 2)" \
   'shaft from=1 to=2 length=1 od=0.05 material=steel'
+# a shaft over 10^6 nodes with one element given again: found at once (the
+# check was quadratic in the elements: libFuzzer's timeout on the first line)
+printf '%s\n%s\n%s\n' "$base" 'shaft from=4 to=1000000 length=1 od=0.05 material=steel' \
+  'shaft from=500000 to=500001 length=1 od=0.05 material=steel' > case.rotor
+timeout 60 "$WHIRL" rotor modes case.rotor > out.txt 2> err.txt
+rc=$?
+[ $rc -eq 2 ] && grep -q "case\.rotor:7: .*between nodes 500000 and 500001 is defined twice (first at line 6)" err.txt
+ok $? "a 10^6-element shaft given twice: exit 2 within 60 s (got $rc): $(head -c 200 err.txt)"
 extra "duplicate bearing" 6 "a bearing at node 4 is already defined (line 5)" 'bearing node=4 kyy=1'
 extra "duplicate key" 6 "key 'mass' given twice" 'disk node=1 mass=1 mass=2'
 extra "disk given both ways" 6 "disk: give either mass= \[ip= it=\] or width= od= \[id=\] material=" \
