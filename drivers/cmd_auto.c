@@ -28,7 +28,7 @@ typedef struct auto_run {
   char c[256];    /* the constants file's suffix: ab.1 (c.ab.1) */
   char label[64]; /* "@LABEL": the restart label, or "" */
   char from[320]; /* "@ID:LABEL": the run to restart from, or "" */
-  char id[320];   /* the run's name in OUT: ab.1, ab.2@3 */
+  char id[256 + 64 + 24]; /* the run's name in OUT: ab.1, ab.2@3 (c, label, a count) */
   whirl_auto_constants *ac;
   char *text;     /* the whirl run file */
 } auto_run;
@@ -220,10 +220,15 @@ static int translate_run(auto_job *J, size_t i, long from) {
 static int translate(auto_job *J) {
   for (size_t i = 0; i < J->nrun; i++) {
     auto_run *r = &J->run[i];
-    snprintf(r->id, sizeof r->id, "%s%s%s", r->c, r->label[0] ? "@" : "", r->label);
+    /* built in a buffer of its own: c and label are fields of the same run
+     * (GCC's -Wrestrict), and c + label + a count fit id */
+    char id[sizeof r->c + sizeof r->label + 24];
+    snprintf(id, sizeof id, "%s%s%s", r->c, r->label[0] ? "@" : "", r->label);
     for (size_t k = 0, dup = 1; k < i; k++)
-      if (!strcmp(J->run[k].id, r->id))
-        snprintf(r->id, sizeof r->id, "%s%s%s-%zu", r->c, r->label[0] ? "@" : "", r->label, ++dup);
+      if (!strcmp(J->run[k].id, id))
+        snprintf(id, sizeof id, "%s%s%s-%zu", r->c, r->label[0] ? "@" : "", r->label, ++dup);
+    _Static_assert(sizeof id == sizeof r->id, "id holds c, label and a count");
+    memcpy(r->id, id, sizeof id);
     const long from = restart_from(J, i);
     if (from == -2 || translate_run(J, i, from)) return 2;
   }
