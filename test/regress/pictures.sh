@@ -25,27 +25,30 @@ pdf_ok() { # %PDF- first, %%EOF the last line
   [ "$(head -c 5 "$1")" = "%PDF-" ] && [ "$(tail -c 32 "$1" | tr -d '\r' | sed '/^$/d' | tail -n 1)" = "%%EOF" ]
 }
 
-# run LABEL DIR-STEM ARGS...: the command with --format png and pdf; every
-# NAME.gp of its directory has its complete NAME.FMT, and redraws it
+# pictures_ok LABEL FMT OUT RC: every NAME.gp in OUT has its complete
+# NAME.FMT, and redraws it when run as it is (the picture removed first)
+pictures_ok() {
+  label=$1 fmt=$2 out=$3 rc=$4 bad="" np=0
+  for gp in "$out"/*.gp; do
+    [ -f "$gp" ] || continue
+    np=$((np + 1)) pic="${gp%.gp}.$fmt"
+    "${fmt}_ok" "$pic" || bad="$bad $(basename "$pic")"
+    rm -f "$pic"
+    (cd "$out" && "$GNUPLOT" "$(basename "$gp")") > /dev/null 2>&1
+    "${fmt}_ok" "$pic" || bad="$bad $(basename "$gp")(redraw)"
+  done
+  [ "$rc" -eq 0 ] && [ $np -ge 1 ] && [ -z "$bad" ]
+  ok $? "$label --format $fmt: $np pictures complete and redrawn by their scripts${bad:+; bad:$bad} $(head -c 200 "$out.stderr")"
+}
+
+# check_cmd LABEL DIR-STEM ARGS...: the command with --format png and pdf
 check_cmd() {
   label=$1 stem=$2
   shift 2
   for fmt in png pdf; do
     out="$tmp/$stem-$fmt"
     "$WHIRL" "$@" --out "$out" --format "$fmt" --quiet > "$out.stdout" 2> "$out.stderr"
-    rc=$?
-    bad="" np=0
-    for gp in "$out"/*.gp; do
-      [ -f "$gp" ] || continue
-      np=$((np + 1))
-      pic="${gp%.gp}.$fmt"
-      "${fmt}_ok" "$pic" || bad="$bad $(basename "$pic")"
-      rm -f "$pic"
-      (cd "$out" && "$GNUPLOT" "$(basename "$gp")") > /dev/null 2>&1
-      "${fmt}_ok" "$pic" || bad="$bad $(basename "$gp")(redraw)"
-    done
-    [ $rc -eq 0 ] && [ $np -ge 1 ] && [ -z "$bad" ]
-    ok $? "$label --format $fmt: $np pictures complete and redrawn by their scripts${bad:+; bad:$bad} $(head -c 200 "$out.stderr")"
+    pictures_ok "$label" "$fmt" "$out" $?
   done
 }
 
@@ -67,17 +70,7 @@ check_run() {
   for fmt in png pdf; do
     out="$tmp/$stem-$fmt"
     "$WHIRL" run "$file" --out="$out" --format="$fmt" --quiet > "$out.stdout" 2> "$out.stderr"
-    rc=$? bad="" np=0
-    for gp in "$out"/*.gp; do
-      [ -f "$gp" ] || continue
-      np=$((np + 1)) pic="${gp%.gp}.$fmt"
-      "${fmt}_ok" "$pic" || bad="$bad $(basename "$pic")"
-      rm -f "$pic"
-      (cd "$out" && "$GNUPLOT" "$(basename "$gp")") > /dev/null 2>&1
-      "${fmt}_ok" "$pic" || bad="$bad $(basename "$gp")(redraw)"
-    done
-    [ $rc -eq 0 ] && [ $np -ge 1 ] && [ -z "$bad" ]
-    ok $? "$label --format=$fmt: $np pictures complete and redrawn${bad:+; bad:$bad} $(head -c 200 "$out.stderr")"
+    pictures_ok "$label" "$fmt" "$out" $?
   done
 }
 check_run "run (discovery, examples/discover/sfd-rotating.whirl)" disc "$ex/discover/sfd-rotating.whirl"
