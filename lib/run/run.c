@@ -205,7 +205,16 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
   so.nx = b->nb;
   so.par = pfull;
   so.x = (double *)pt->x;
-  so.tan = (b->fold || b->hopf) ? NULL : (double *)pt->t;
+  /* the tangent in AUTO's convention: the motion along the branch is DS
+   * times it, so it is the motion times the sign of this run's DS, and a
+   * restart moves along DS times it (run_tangent_start) */
+  double *tan = NULL;
+  if (!b->fold && !b->hopf && pt->t) {
+    const double sg = (b->dir_sign ? b->dir_sign : s->ds < 0 ? -1 : 1) < 0 ? -1.0 : 1.0;
+    if (!(tan = malloc((b->nb + 1) * sizeof *tan))) return -1;
+    for (size_t i = 0; i <= b->nb; i++) tan[i] = sg * pt->t[i];
+  }
+  so.tan = tan;
   so.stable = pt->stable;
   if (b->kind == WHIRL_SOL_COLLOC) {
     so.ncol = s->ncol;
@@ -213,7 +222,9 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
     so.ntst = (int)((b->nb - (R->prob.autonomous ? 1 : 0)) / R->n - 1) / s->ncol;
   }
   if (b->kind == WHIRL_SOL_HBM) so.nhb = s->nhb;
-  if (whirl_solution_write(R->sols, &so)) return -1;
+  const int wrc = whirl_solution_write(R->sols, &so);
+  free(tan);
+  if (wrc) return -1;
   if (type != WHIRL_PT_REGULAR && type != WHIRL_PT_EP) {
     fprintf(R->log, "  %s  LAB %d  PT %zu  %s = %.10g", ty, lab, pt->index,
             R->pnames[b->icp], pt->p[b->icp]);
@@ -528,6 +539,18 @@ static int start_equilibria(run_ctx *R, run_objects *O, branch_spec *b) {
   b->nb = R->n;
   b->x0 = restart ? so->x : R->u;
   b->p0 = p0;
+  /* run_tangent_start: a restart in the label's own parameter moves along
+   * DS times its stored tangent (write_label), as AUTO does — the sign of DS
+   * is relative to the branch's direction at the label, not to the
+   * parameter; and a Newton correction at fixed parameter, the plain
+   * start, has a singular F_x at an LP (and would label it again).  The
+   * sign of DS is applied in run_continuation. */
+  if (restart && R->s->isw == 1 && so->tan && so->icp == b->icp) {
+    O->D = malloc((b->nb + 1) * sizeof *O->D);
+    if (!O->D) return -1;
+    memcpy(O->D, so->tan, (b->nb + 1) * sizeof *O->D);
+    b->dir = O->D;
+  }
   return 0;
 }
 
