@@ -3,7 +3,7 @@
  * write its output directory as one transaction (outdir.h) with the
  * picture (run_plot.c):
  *
- *   branches.tsv   # BR PT TY LAB, parameters, norms, state, STAB per point
+ *   branches.tsv   branch pt type label, parameters, norms, state, stable (doc/tables.md)
  *   solutions      labelled solutions, full precision, restartable (IRS)
  *   run.log        diagnostics: settings, model, steps, stop reasons
  *   diagram.png    the bifurcation diagram (gnuplot), or basins.png

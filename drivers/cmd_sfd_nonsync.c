@@ -237,6 +237,8 @@ int cmd_sfd_nonsync(int argc, char **argv) {
     if (have_sync) whirl_sfd_response_free(&sync);
     return 1;
   }
+  fprintf(fb.fp, "branch\tpt\ttype\tlabel\tOmega\tf2\tperiod\teps_max\teps_min\tstable\tn_unstable\t"
+                 "max_multiplier\tmult_re\tmult_im\tresidual\n");
   fprintf(fb.fp, "# whirl %s sfd nonsync: lambda=%.10g delta=%.10g zeta=%.10g, method %s", whirl_version(),
           p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA],
           whirl_sfd_method_name(o.method));
@@ -247,8 +249,6 @@ int cmd_sfd_nonsync(int argc, char **argv) {
                  "(second fixed-frame frequency over Omega); eps_max, eps_min = largest and "
                  "smallest eccentricity on the orbit; multipliers from the monodromy matrix "
                  "(trivial one removed); residual = max |F| of the discretised equations\n");
-  fprintf(fb.fp, "branch\tpt\ttype\tlabel\tOmega\tf2\tperiod\teps_max\teps_min\tstable\tn_unstable\t"
-                 "max_multiplier\tmult_re\tmult_im\tresidual\n");
   const char *hdr = "type\tbranch\tlabel\tOmega\tf2\tperiod\teps_max\teps_min\tstable\t"
                     "max_multiplier\tmeaning\n";
   fputs(hdr, fs.fp);

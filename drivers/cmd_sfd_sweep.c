@@ -229,9 +229,9 @@ int cmd_sfd_sweep(int argc, char **argv) {
     return 1;
   }
   const char *hdr = "direction\tOmega\tclass\teps_max\teps_min\tperiods\teps_eq15\tdiff\n";
+  fputs(hdr, fs.fp);
   fprintf(fs.fp, "# whirl sfd sweep: lambda=%.10g delta=%.10g zeta=%.10g, step %g, at most %zu periods "
                  "per speed, settle %g, rtol %g atol %g\n", p[1], p[2], p[3], step, periods, settle, rtol, atol);
-  fputs(hdr, fs.fp);
   fputs(hdr, stdout);
   fprintf(fp.fp, "direction\tOmega\ty\tz\tvy\tvz\n");
   const size_t SPP = 64;

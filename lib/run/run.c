@@ -2,7 +2,7 @@
  * the run asks for out of the library's constructors, continue it and
  * write the branch table, the labelled solutions and the log:
  *
- *   branches.tsv   # BR PT TY LAB, parameters, norms, state, STAB per point
+ *   branches.tsv   branch pt type label, parameters, norms, state, stable (doc/tables.md)
  *   solutions      labelled solutions, full precision, restartable (IRS)
  *   run.log        diagnostics: settings, model, steps, stop reasons
  *
