@@ -64,13 +64,16 @@ typedef struct run_io_ctx {
   cli_progress progress;
 } run_io_ctx;
 
+/* the progress line is taken off before a message or a summary line (the
+ * terminal may show stdout too) and drawn again at the next progress */
 static void io_message(const char *line, void *ctx) {
-  (void)ctx;
+  cli_progress_clear(&((run_io_ctx *)ctx)->progress);
   cli_error("run", "%s", line);
 }
 static void io_summary(const char *line, void *ctx) {
-  const run_io_ctx *c = ctx;
-  if (!c->quiet) printf("%s\n", line);
+  run_io_ctx *c = ctx;
+  cli_progress_clear(&c->progress);
+  if (!c->quiet) printf("%s\n", line), fflush(stdout);
 }
 static FILE *io_open(const char *name, void *ctx) {
   return cli_outdir_fopen(&((run_io_ctx *)ctx)->od, name);
@@ -235,7 +238,7 @@ static int cmd_run_ranked(int argc, char **argv, int rank, int nranks) {
     free(ov);
     return 1;
   }
-  cli_progress_init(&c.progress, "basins", c.quiet);
+  cli_progress_init(&c.progress, "whirl run", c.quiet);
   const whirl_run_io io = {io_message, io_summary, io_open, io_close, io_progress, &c};
   whirl_run *r = whirl_run_alloc(models, &io);
   status = r ? whirl_run_load(r, file, ov, nov) : 1;

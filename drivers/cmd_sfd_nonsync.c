@@ -148,6 +148,20 @@ static int write_plots(cli_outdir *od, const whirl_sfd_periodic *ns,
   return out_commit(&o);
 }
 
+/* Progress of the continuation: the part of [omega_min, omega_max] the
+ * branch has covered (both halves from the start speed together). */
+typedef struct {
+  cli_progress prog;
+  double lo, hi, a, b;
+} branch_progress;
+
+static void on_point(size_t points, double omega, void *data) {
+  branch_progress *bp = data;
+  if (points == 1) bp->lo = bp->hi = omega;
+  bp->lo = fmin(bp->lo, omega), bp->hi = fmax(bp->hi, omega);
+  cli_progress_show(&bp->prog, (size_t)(1000.0 * (bp->hi - bp->lo) / (bp->b - bp->a)), 1000);
+}
+
 int cmd_sfd_nonsync(int argc, char **argv) {
   double p[WHIRL_SFD_NPAR];
   whirl_sfd_default_params(p);
@@ -214,7 +228,11 @@ int cmd_sfd_nonsync(int argc, char **argv) {
   if (orc) return orc;
   const double t0 = cli_now();
   whirl_sfd_periodic ns;
+  branch_progress bp = {.a = o.omega_min, .b = o.omega_max};
+  cli_progress_init(&bp.prog, "whirl sfd nonsync", quiet);
+  o.progress = on_point, o.progress_data = &bp;
   int rc = whirl_sfd_nonsync(p, w0, &o, &ns, msg, sizeof msg);
+  cli_progress_end(&bp.prog);
   if (rc != WHIRL_OK) {
     cli_error(CMD, "%s", msg);
     return 1;

@@ -329,7 +329,9 @@ int cmd_sfd_sweep(int argc, char **argv) {
 #define ROW_FMT "%s\t%.10g\t%s\t%.12g\t%.12g\t%zu\t%.12g\t%.3e\n"
       double emax = strcmp(cls, "contact") ? rcx.emax : 1.0, emin = strcmp(cls, "contact") ? rcx.emin : NAN;
       fprintf(fs.fp, ROW_FMT, dname, Om, cls, emax, emin, used, e15, diff);
+      cli_progress_clear(&prog); /* stdout may be the same terminal */
       printf(ROW_FMT, dname, Om, cls, emax, emin, used, e15, diff);
+      fflush(stdout);
       for (size_t k = 0; k < rcx.np && strcmp(cls, "contact"); ++k)
         fprintf(fp.fp, "%s\t%.10g\t%.12g\t%.12g\t%.12g\t%.12g\n", dname, Om, P[4 * k],
                 P[4 * k + 1], P[4 * k + 2], P[4 * k + 3]);

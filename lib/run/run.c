@@ -282,6 +282,23 @@ static void branch_summary(run_ctx *R, const branch_spec *b, whirl_cont *c,
   }
 }
 
+/* The progress of a branch, as io.progress(done, 1000): the larger of the
+ * steps over NMX and the parameter's way over [RL0, RL1] (the range
+ * covered, over it plus the distance still to the bound the branch heads
+ * for); never less than before (*best). */
+static void branch_progress(const run_ctx *R, const whirl_cont_options *o, size_t npts,
+                            double p, double pmin, double pmax, double *prev, double *best) {
+  if (!R->io.progress) return;
+  double f = o->nmx ? (double)npts / (double)o->nmx : 0.0;
+  if (npts > 1 && fabs(o->p_min) < 1e29 && fabs(o->p_max) < 1e29) {
+    const double gap = p >= *prev ? o->p_max - p : p - o->p_min;
+    if (pmax - pmin + gap > 0) f = fmax(f, (pmax - pmin) / (pmax - pmin + fmax(gap, 0.0)));
+  }
+  *prev = p;
+  if (f > *best || npts <= 1) *best = npts <= 1 ? f : fmin(f, 1.0);
+  R->io.progress((size_t)(1000.0 * *best), 1000, R->io.ctx);
+}
+
 int run_branch(run_ctx *R, branch_spec *b) {
   const whirl_run_settings *s = R->s;
   whirl_cont_options o;
@@ -328,7 +345,7 @@ int run_branch(run_ctx *R, branch_spec *b) {
   int counts[16] = {0};
   int stop = 0;
   size_t npts = 0;
-  double pmin = 0.0, pmax = 0.0;
+  double pmin = 0.0, pmax = 0.0, pprev = 0.0, done = 0.0;
   for (;;) {
     rc = whirl_cont_step(c);
     if (rc != WHIRL_OK) break;
@@ -336,6 +353,7 @@ int run_branch(run_ctx *R, branch_spec *b) {
     npts++;
     if (npts == 1 || pt->p[b->icp] < pmin) pmin = pt->p[b->icp];
     if (npts == 1 || pt->p[b->icp] > pmax) pmax = pt->p[b->icp];
+    branch_progress(R, &o, npts, pt->p[b->icp], pmin, pmax, &pprev, &done);
     int type = pt->type;
     const char *ty = type ? whirl_point_type_name(type) : "RG";
     base_of(b, pt->x, pt->p, pfull);
