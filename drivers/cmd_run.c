@@ -34,6 +34,8 @@ static void usage(FILE *f) {
           "command line, e.g. --DS=0.01 --ICP=[B] --out=dir.\n"
           "Output directory (default FILE's name with .out): branches.tsv,\n"
           "solutions, run.log, diagram.png.  The format: doc/run-files.md.\n"
+          "Paths (model, S, OUT) written in FILE are relative to FILE's directory\n"
+          "(the default output too); on the command line, to the current one.\n"
           "\n"
           "A parameter study (STUDY = {name: [values], ...}: study.tsv, a row a\n"
           "point) and basins (IPS = basins) resume from OUT.checkpoint when started\n"

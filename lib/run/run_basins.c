@@ -108,7 +108,7 @@ static int attractors(run_ctx *R, run_basins_job *J) {
   for (size_t a = 0; a < J->na; a++) {
     whirl_solution so;
     char msg[1024];
-    if (run_solution_find(R, s->s, s->attractors[a], "", &so, msg, sizeof msg)) {
+    if (run_solution_find(R, R->spath, s->attractors[a], "", &so, msg, sizeof msg)) {
       run_fail(R, WHIRL_RK_BASIN_ATTRACTORS, "BASIN_ATTRACTORS: %s", msg);
       return -2;
     }
