@@ -203,8 +203,9 @@ static int translate_run(auto_job *J, size_t i, long from) {
   auto_run *r = &J->run[i];
   char model[400], restart[4400], out[4400];
   snprintf(model, sizeof model, "%s.so", J->name);
-  if (from >= 0) snprintf(restart, sizeof restart, "%s/%s.out", J->out, J->run[from].id);
-  snprintf(out, sizeof out, "%s/%s.out", J->out, r->id);
+  /* beside the run file in J->out, as a run file's paths are (run_path) */
+  if (from >= 0) snprintf(restart, sizeof restart, "%s.out", J->run[from].id);
+  snprintf(out, sizeof out, "%s.out", r->id);
   const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL,
                                      r->label[0] ? r->label : NULL, out, J->npar};
   free(r->text);

@@ -119,7 +119,9 @@ static int read_table(run *R, char *msg, size_t len) {
   int rc = WHIRL_OK, lineno = 0;
   while (rc == WHIRL_OK && fgets(line, sizeof line, f)) {
     lineno++;
-    if (line[0] == '#' || line[0] == '\n') continue;
+    /* the header (the first line), comments, blank lines */
+    if (line[0] == '#' || line[0] == '\n' || (lineno == 1 && !strncmp(line, "branch\t", 7)))
+      continue;
     row *r = realloc(R->t.r, (R->t.n + 1) * sizeof *r);
     if (!r) rc = WHIRL_ENOMEM;
     else {
