@@ -226,11 +226,23 @@ static size_t plot_batch(cli_outdir *d, const char *const *pics, size_t n) {
     args[na++] = scripts[i];
   }
   args[na] = NULL;
-  if (run_gnuplot_args(d->stage, args, err, sizeof err) != 0) return 0;
+  if (run_gnuplot_args(d->stage, args, err, sizeof err) != 0) done = n;
+  else done = 0;
+  if (done == n) { /* the batch failed: nothing it wrote is kept */
+    for (size_t i = 0; i < n; i++) {
+      snprintf(p, sizeof p, "%s/%s.%s", d->stage, pics[i], cli_picture_format);
+      unlink(p);
+    }
+    return 0;
+  }
   for (; done < n; done++) {
     snprintf(pic, sizeof pic, "%s.%s", pics[done], cli_picture_format);
     snprintf(p, sizeof p, "%s/%s", d->stage, pic);
     if (!picture_complete(p) || cli_outdir_record(d, pic) != 0) break;
+  }
+  for (size_t i = done; i < n; i++) { /* not whirl's: redrawn, or not kept */
+    snprintf(p, sizeof p, "%s/%s.%s", d->stage, pics[i], cli_picture_format);
+    unlink(p);
   }
   return done;
 }
