@@ -31,6 +31,13 @@ typedef struct auto_run {
   char id[256 + 64 + 24]; /* the run's name in OUT: ab.1, ab.2@3 (c, label, a count) */
   whirl_auto_constants *ac;
   char *text;     /* the whirl run file */
+  char irs[64];   /* the whirl label IRS resolves to ("": r->label or IRS) */
+  long src;       /* the run it restarts from (-1: none) */
+  int fresh;      /* IRS = 0 and no @LABEL: AUTO numbers labels from 1 */
+  /* AUTO's numbering of the run's labels (after it ran) */
+  whirl_auto_label *labs;
+  size_t nlabs;
+  int offset;     /* labels before its first: the largest of its group */
 } auto_run;
 
 typedef struct auto_job {
@@ -205,8 +212,9 @@ static int translate_run(auto_job *J, size_t i, long from) {
   snprintf(model, sizeof model, "%s.so", J->name);
   if (from >= 0) snprintf(restart, sizeof restart, "%s/%s.out", J->out, J->run[from].id);
   snprintf(out, sizeof out, "%s/%s.out", J->out, r->id);
-  const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL,
-                                     r->label[0] ? r->label : NULL, out, J->npar};
+  const char *lab = r->irs[0] ? r->irs : r->label[0] ? r->label : NULL;
+  const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL, lab, out, J->npar};
+  r->src = from;
   free(r->text);
   r->text = NULL;
   if (whirl_auto_constants_runfile(r->ac, &o, &r->text) != WHIRL_OK) {
@@ -229,6 +237,9 @@ static int translate(auto_job *J) {
         snprintf(id, sizeof id, "%s%s%s-%zu", r->c, r->label[0] ? "@" : "", r->label, ++dup);
     _Static_assert(sizeof id == sizeof r->id, "id holds c, label and a count");
     memcpy(r->id, id, sizeof id);
+    int irs = 0;
+    whirl_auto_constants_int(r->ac, "IRS", &irs);
+    r->fresh = !r->label[0] && !r->from[0] && !irs && !whirl_auto_constants_text(r->ac, "IRS");
     const long from = restart_from(J, i);
     if (from == -2 || translate_run(J, i, from)) return 2;
   }
@@ -250,11 +261,53 @@ static int fits(const auto_run *r, const whirl_solution *S) {
   return 1;
 }
 
-/* Run i restarts by the default rule (IRS, no @RUN): AUTO's scripts name
- * labels of any earlier run (often the first), so take the nearest earlier
- * run whose label IRS (or k-th point of type TY) is one run i can start
- * from; else the run before.  Re-translates run i when that changes its
- * source.  0 or 2. */
+/* AUTO's label numbering across runs (AUTO-07p io.f90, FINDLB and NEWLAB):
+ * a run restarting from an s-file numbers its labels on from the largest
+ * label in that file, a run with IRS = 0 from 1; IRS = k is the first
+ * solution labelled k in the file, IRS = 'HB2' its second HB.  The c-files
+ * of a demo are AUTO's legacy script (`@r NAME; @sv NAME` for a fresh start,
+ * `@r NAME k NAME; @ap NAME` for a restart), so the s-file a run restarts
+ * from holds the runs since the last fresh start: its group. */
+static size_t group_start(const auto_job *J, size_t i) {
+  size_t g = i;
+  while (g > 0 && !J->run[g].fresh) g--;
+  return g;
+}
+
+/* The label of run i's group (runs before i) that AUTO's IRS (TY, K)
+ * names: its run in *j and its entry.  NULL: none. */
+static const whirl_auto_label *group_label(const auto_job *J, size_t i, const char *ty, int k,
+                                           size_t *j) {
+  int count = 0;
+  for (size_t g = group_start(J, i > 0 ? i - 1 : 0); g < i; g++)
+    for (size_t m = 0; m < J->run[g].nlabs; m++) {
+      const whirl_auto_label *L = &J->run[g].labs[m];
+      if (ty[0] ? !strcmp(L->ty, ty) && ++count == k : L->label == k) {
+        *j = g;
+        return L;
+      }
+    }
+  return NULL;
+}
+
+/* Can run i start from label LAB of run j?  1 or 0. */
+static int fits_label(const auto_job *J, size_t i, size_t j, int lab) {
+  char dir[4400], msg[512];
+  whirl_solution S;
+  const whirl_solution_shape any = {NULL, 0, 0, -1};
+  snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[j].id);
+  if (whirl_solution_find(dir, &any, lab, "", &S, msg, sizeof msg)) return 0;
+  const int good = fits(&J->run[i], &S);
+  whirl_solution_free(&S);
+  return good;
+}
+
+/* Run i restarts by the default rule (IRS, no @RUN): the label AUTO's
+ * numbering gives IRS in run i's group (above); where that is no label
+ * run i can start from (whirl labels a point AUTO does not, or misses
+ * one), the nearest earlier run whose own label IRS (or k-th point of type
+ * TY) is one run i can start from; else the run before.  Re-translates
+ * run i when that changes its source.  0 or 2. */
 static int pick_source(auto_job *J, size_t i) {
   auto_run *r = &J->run[i];
   int irs = 0;
@@ -270,6 +323,12 @@ static int pick_source(auto_job *J, size_t i) {
   while (nty < 7 && isalpha((unsigned char)lab[nty])) ty[nty] = lab[nty], nty++;
   ty[nty] = 0;
   const int k = atoi(lab + nty);
+  size_t g;
+  const whirl_auto_label *L = r->label[0] ? NULL : group_label(J, i, ty, k, &g);
+  if (L && fits_label(J, i, g, L->whirl)) {
+    snprintf(r->irs, sizeof r->irs, "%d", L->whirl);
+    return translate_run(J, i, (long)g);
+  }
   const long def = restart_from(J, i);
   for (long j = (long)i - 1; j >= 0; j--) {
     char dir[4400], msg[512];
@@ -391,35 +450,66 @@ static int close_auto(FILE *f[3], char path[3][4400], int rc) {
   return rc;
 }
 
-/* OUT/b.ID, s.ID, d.ID of run i from its output directory, and the run
- * appended to OUT/b.NAME, s.NAME, d.NAME (emptied before the runs) with its labels
- * numbered on (*labels: the labels so far).  0 or 1. */
-static int write_auto_files(const auto_job *J, size_t i, int *labels) {
+/* AUTO's number of run i's first branch (AUTO-07p io.f90, NEWLAB): one
+ * more than the largest of its group for a fresh start or a branch switch
+ * (ISW < 0); the restart label itself for a locus (|ISW| = 2) or orbits
+ * from a Hopf point; else the branch of the restart point. */
+static int first_branch(const auto_job *J, size_t i) {
   const auto_run *r = &J->run[i];
+  int ips = 1, isw = 1, mbr = 0;
+  whirl_auto_constants_int(r->ac, "IPS", &ips);
+  whirl_auto_constants_int(r->ac, "ISW", &isw);
+  for (size_t g = group_start(J, i > 0 ? i - 1 : 0); !r->fresh && g < i; g++)
+    for (size_t m = 0; m < J->run[g].nlabs; m++)
+      if (J->run[g].labs[m].br > mbr) mbr = J->run[g].labs[m].br;
+  const whirl_auto_label *L = NULL;
+  const int want = r->src >= 0 ? atoi(r->irs[0] ? r->irs : r->label) : 0;
+  for (size_t m = 0; r->src >= 0 && m < J->run[r->src].nlabs && !L; m++)
+    if (J->run[r->src].labs[m].whirl == want) L = &J->run[r->src].labs[m];
+  if (isw < 0 || r->fresh || !L) return mbr + 1;
+  if ((abs(isw) == 2 && abs(L->type) < 10) || (ips == 2 && L->type == 3)) return L->label;
+  return L->br;
+}
+
+/* OUT/b.ID, s.ID, d.ID of run i from its output directory, and the run
+ * appended to OUT/b.NAME, s.NAME, d.NAME (emptied before the runs), its
+ * labels and branches numbered as AUTO numbers them (above), which both
+ * files show.  0 or 1. */
+static int write_auto_files(auto_job *J, size_t i) {
+  auto_run *r = &J->run[i];
   char dir[4400], path[3][4400], msg[1024];
   snprintf(dir, sizeof dir, "%s/%s.out", J->out, r->id);
+  r->offset = 0;
+  for (size_t g = group_start(J, i > 0 ? i - 1 : 0); !r->fresh && g < i; g++)
+    for (size_t m = 0; m < J->run[g].nlabs; m++)
+      if (J->run[g].labs[m].label > r->offset) r->offset = J->run[g].labs[m].label;
   whirl_auto_output o = {dir, r->ac, J->ndim, J->npar, (const char *const *)J->p_names,
-                         (const char *const *)J->x_names, 0};
+                         (const char *const *)J->x_names, r->offset, !r->fresh,
+                         first_branch(J, i)};
+  size_t n = 0;
+  if (whirl_auto_labels(&o, NULL, 0, &n, msg, sizeof msg) != WHIRL_OK ||
+      !(r->labs = calloc(n ? n : 1, sizeof *r->labs)) ||
+      whirl_auto_labels(&o, r->labs, n, &r->nlabs, msg, sizeof msg) != WHIRL_OK) {
+    cli_error("auto", "%s: %s", dir, r->labs ? msg : "out of memory");
+    return 1;
+  }
   FILE *f[3];
-  int n = 0;
   /* a run named NAME (c.NAME) has the merged files as its own */
   for (int merged = !strcmp(r->id, J->name); merged < 2; merged++) {
     int rc = open_auto(J, merged ? J->name : r->id, merged ? "a" : "w", f, path);
-    o.label_offset = merged ? *labels : 0;
-    if (!rc && whirl_auto_write_files(&o, f[0], f[1], f[2], &n, msg, sizeof msg) != WHIRL_OK) {
+    if (!rc && whirl_auto_write_files(&o, f[0], f[1], f[2], NULL, msg, sizeof msg) != WHIRL_OK) {
       cli_error("auto", "%s: %s", dir, msg);
       rc = 1;
     }
     if (close_auto(f, path, rc)) return 1;
   }
-  *labels += n;
   return 0;
 }
 
 /* Write the run files and run them all in order (a run after a failed one
  * may still work, as in AUTO).  The first failing status. */
 static int run_all(auto_job *J) {
-  int status = 0, labels = 0;
+  int status = 0;
   for (size_t i = 0; i < J->nrun; i++) {
     char path[4400];
     snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
@@ -455,7 +545,7 @@ static int run_all(auto_job *J) {
     int st = cmd_run(J->quiet ? 3 : 2, argv);
     char tsv[4400];
     snprintf(tsv, sizeof tsv, "%s/%s.out/branches.tsv", J->out, J->run[i].id);
-    if (st != 2 && access(tsv, R_OK) == 0 && write_auto_files(J, i, &labels) && !st)
+    if (st != 2 && access(tsv, R_OK) == 0 && write_auto_files(J, i) && !st)
       st = 1;
     if (st) cli_error("auto", "run %s (c.%s) failed (exit %d)", J->run[i].id, J->run[i].c, st);
     if (st && !status) status = st;
@@ -528,6 +618,7 @@ int cmd_auto(int argc, char **argv) {
   for (size_t i = 0; i < J.nrun; i++) {
     whirl_auto_constants_free(J.run[i].ac);
     free(J.run[i].text);
+    free(J.run[i].labs);
   }
   free_names(J.p_names, J.npar);
   free_names(J.x_names, (size_t)J.ndim);
