@@ -22,6 +22,7 @@
 #include "cli.h"
 
 #define MAXRUNS 64
+#define MAXALL 512 /* with the branches MXBF switches to */
 #define MARKER ".whirl-auto"
 
 typedef struct auto_run {
@@ -38,12 +39,15 @@ typedef struct auto_run {
   whirl_auto_label *labs;
   size_t nlabs;
   int offset;     /* labels before its first: the largest of its group */
+  int sub;        /* a branch MXBF switches to (no IRS of its own) */
+  int br_fixed;   /* its AUTO branch number (0: NEWLAB's) */
+  int br_auto;    /* the AUTO branch number its first branch got */
 } auto_run;
 
 typedef struct auto_job {
   const char *dir, *name, *out;
   int quiet;
-  auto_run run[MAXRUNS];
+  auto_run run[MAXALL];
   size_t nrun;
   size_t npar;
   int ndim;
@@ -313,7 +317,7 @@ static int pick_source(auto_job *J, size_t i) {
   int irs = 0;
   const char *t = whirl_auto_constants_text(r->ac, "IRS");
   char lab[64] = "";
-  if (r->from[0] || i == 0) return 0;
+  if (r->from[0] || r->sub || i == 0) return 0;
   if (r->label[0]) snprintf(lab, sizeof lab, "%s", r->label);
   else if (t) snprintf(lab, sizeof lab, "%s", t);
   else if (whirl_auto_constants_int(r->ac, "IRS", &irs) == WHIRL_OK && irs) snprintf(lab, sizeof lab, "%d", irs);
@@ -462,6 +466,7 @@ static int first_branch(const auto_job *J, size_t i) {
   for (size_t g = group_start(J, i > 0 ? i - 1 : 0); !r->fresh && g < i; g++)
     for (size_t m = 0; m < J->run[g].nlabs; m++)
       if (J->run[g].labs[m].br > mbr) mbr = J->run[g].labs[m].br;
+  if (r->br_fixed > 0) return r->br_fixed;
   const whirl_auto_label *L = NULL;
   const int want = r->src >= 0 ? atoi(r->irs[0] ? r->irs : r->label) : 0;
   for (size_t m = 0; r->src >= 0 && m < J->run[r->src].nlabs && !L; m++)
@@ -483,9 +488,9 @@ static int write_auto_files(auto_job *J, size_t i) {
   for (size_t g = group_start(J, i > 0 ? i - 1 : 0); !r->fresh && g < i; g++)
     for (size_t m = 0; m < J->run[g].nlabs; m++)
       if (J->run[g].labs[m].label > r->offset) r->offset = J->run[g].labs[m].label;
+  r->br_auto = first_branch(J, i);
   whirl_auto_output o = {dir, r->ac, J->ndim, J->npar, (const char *const *)J->p_names,
-                         (const char *const *)J->x_names, r->offset, !r->fresh,
-                         first_branch(J, i)};
+                         (const char *const *)J->x_names, r->offset, !r->fresh, r->br_auto};
   size_t n = 0;
   if (whirl_auto_labels(&o, NULL, 0, &n, msg, sizeof msg) != WHIRL_OK ||
       !(r->labs = calloc(n ? n : 1, sizeof *r->labs)) ||
@@ -506,6 +511,137 @@ static int write_auto_files(auto_job *J, size_t i) {
   return 0;
 }
 
+/* Run i: its run file written (its restart chosen) and run, its AUTO
+ * files written.  Its exit status (0, 1, 2), or -1 (cannot write), -2
+ * (bad input: stop). */
+static int run_one(auto_job *J, size_t i) {
+  char path[4400], dir[4400];
+  /* an earlier invocation's output of this run must not pass for this one's */
+  snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[i].id);
+  remove_files(dir);
+  for (const char *k = "bsd"; *k; k++) {
+    snprintf(path, sizeof path, "%s/%c.%s", J->out, *k, J->run[i].id);
+    unlink(path);
+  }
+  if (pick_source(J, i)) return -2;
+  snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
+  FILE *rf = fopen(path, "w");
+  if (!rf || fputs(J->run[i].text, rf) < 0 || fclose(rf)) {
+    cli_error("auto", "%s: cannot write", path);
+    return -1;
+  }
+  if (!J->quiet) printf("== %s (c.%s)\n", J->run[i].id, J->run[i].c);
+  fflush(stdout);
+  char *argv[] = {"run", path, J->quiet ? "--quiet" : NULL, NULL};
+  int st = cmd_run(J->quiet ? 3 : 2, argv);
+  char tsv[4400];
+  snprintf(tsv, sizeof tsv, "%s/%s.out/branches.tsv", J->out, J->run[i].id);
+  if (st != 2 && access(tsv, R_OK) == 0 && write_auto_files(J, i) && !st) st = 1;
+  if (st) cli_error("auto", "run %s (c.%s) failed (exit %d)", J->run[i].id, J->run[i].c, st);
+  return st;
+}
+
+/* ---- MXBF: AUTO's automatic branch switching ------------------------- */
+
+/* AUTO-07p ae.f90 (CNRLAE, STBIF, SWPNT): on a branch of equilibria
+ * (IPS = 1, |ISW| <= 1) AUTO stores the first |MXBF| branch points it meets,
+ * in order, on that branch and on the branches it then switches to (a BP
+ * met while |MXBF| are stored is not stored); after a branch ends it
+ * switches at the first stored BP (ISW = -1): with MXBF > 0 first with DS
+ * and then with -DS (the direction in which the parameter grows is +), the
+ * two halves one branch number, with MXBF < 0 once, with DS; at most
+ * 2|MXBF| (|MXBF|) branches follow the first.  Labels number on.  whirl
+ * auto does the same with a run a branch, inserted after run i. */
+typedef struct bp_queue {
+  size_t run[64];
+  int lab[64];
+  size_t n, cap;
+} bp_queue;
+
+static void queue_bps(const auto_job *J, size_t i, bp_queue *q) {
+  for (size_t m = 0; m < J->run[i].nlabs; m++)
+    if (!strcmp(J->run[i].labs[m].ty, "BP") && q->n < q->cap)
+      q->run[q->n] = i, q->lab[q->n++] = J->run[i].labs[m].whirl;
+}
+
+/* Insert after run AT a run switching at BP (run j, whirl label lab) of
+ * run i's constants with DS times SIGN and AUTO branch BR.  0, 1 or 2. */
+static int insert_switch(auto_job *J, size_t i, size_t at, size_t j, int lab, int sign,
+                         int br, int k) {
+  if (J->nrun == MAXALL) {
+    cli_error("auto", "%s: more than %d runs with MXBF's branches", J->run[i].c, MAXALL);
+    return 1;
+  }
+  memmove(&J->run[at + 1], &J->run[at], (J->nrun - at) * sizeof J->run[0]);
+  J->nrun++;
+  for (size_t m = at + 1; m < J->nrun; m++)
+    if (J->run[m].src >= (long)at) J->run[m].src++;
+  auto_run *r = &J->run[at], *p = &J->run[i];
+  memset(r, 0, sizeof *r);
+  snprintf(r->c, sizeof r->c, "%s", p->c);
+  char id[sizeof r->id];
+  snprintf(id, sizeof id, "%.300s.bif%d", p->id, k);
+  memcpy(r->id, id, sizeof id);
+  snprintf(r->irs, sizeof r->irs, "%d", lab);
+  r->sub = 1, r->br_fixed = br;
+  /* the constants file again with ISW = -1 and the signed DS last (a later
+   * key replaces an earlier one) */
+  char path[4400], *text = NULL;
+  size_t len = 0;
+  snprintf(path, sizeof path, "%s/c.%s", J->dir, p->c);
+  FILE *f = fopen(path, "r"), *m = open_memstream(&text, &len);
+  double ds = 0.01;
+  whirl_auto_constants_real(p->ac, "DS", &ds);
+  for (int ch; f && m && (ch = fgetc(f)) != EOF;) fputc(ch, m);
+  if (m) fprintf(m, "\nISW = -1, DS = %.17g\n", sign * ds);
+  if (f) fclose(f);
+  if (!f || !m || fclose(m) || !(r->ac = whirl_auto_constants_alloc()) ||
+      whirl_auto_constants_parse(r->ac, path, text, len) != WHIRL_OK) {
+    cli_error("auto", "%s: cannot set up MXBF's switch", path);
+    free(text);
+    return 1;
+  }
+  free(text);
+  return translate_run(J, at, (long)j);
+}
+
+/* After run i (and its branches so far) ran: the next switch MXBF asks
+ * for, inserted after run at (its BP queue and counts in *q, *nbfc, *br,
+ * *pos).  1 when one was inserted, 0 when none is left, -1 on error. */
+static int next_switch(auto_job *J, size_t i, size_t at, bp_queue *q, int *nbfc, int *br,
+                       int *pos) {
+  int mxbf = 0;
+  whirl_auto_constants_int(J->run[i].ac, "MXBF", &mxbf);
+  const int nbfcs = mxbf > 0 ? 2 * mxbf : -mxbf;
+  queue_bps(J, at, q);
+  if (!q->n || *nbfc >= nbfcs) return 0;
+  if (*pos || mxbf < 0) ++*br; /* a new branch; its second half keeps it */
+  const int sign = *pos ? 1 : -1;
+  const size_t j = q->run[0];
+  const int lab = q->lab[0];
+  if (mxbf > 0) *pos = !*pos;
+  if (*pos) { /* both halves done (or the one of MXBF < 0): the next BP */
+    memmove(q->run, q->run + 1, (q->n - 1) * sizeof *q->run);
+    memmove(q->lab, q->lab + 1, (q->n - 1) * sizeof *q->lab);
+    q->n--;
+  }
+  ++*nbfc;
+  return insert_switch(J, i, at + 1, j, lab, sign, *br, *nbfc) ? -1 : 1;
+}
+
+/* MXBF's queue of run i: set up when run i has ran (IPS = 1, |ISW| <= 1,
+ * MXBF not 0).  0 when MXBF does not apply. */
+static int mxbf_begin(const auto_job *J, size_t i, bp_queue *q) {
+  int ips = 1, isw = 1, mxbf = 0;
+  const auto_run *r = &J->run[i];
+  whirl_auto_constants_int(r->ac, "IPS", &ips);
+  whirl_auto_constants_int(r->ac, "ISW", &isw);
+  whirl_auto_constants_int(r->ac, "MXBF", &mxbf);
+  memset(q, 0, sizeof *q);
+  q->cap = (size_t)abs(mxbf) < 64 ? (size_t)abs(mxbf) : 64;
+  return ips == 1 && abs(isw) <= 1 && mxbf != 0 && !r->sub;
+}
+
 /* Write the run files and run them all in order (a run after a failed one
  * may still work, as in AUTO).  The first failing status. */
 static int run_all(auto_job *J) {
@@ -523,32 +659,21 @@ static int run_all(auto_job *J) {
   char merged[3][4400];
   if (close_auto(f, merged, open_auto(J, J->name, "w", f, merged))) return 1;
   for (size_t i = 0; i < J->nrun; i++) {
-    char path[4400], dir[4400];
-    snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
-    /* an earlier invocation's output of this run must not pass for this one's */
-    snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[i].id);
-    remove_files(dir);
-    for (const char *k = "bsd"; *k; k++) {
-      snprintf(path, sizeof path, "%s/%c.%s", J->out, *k, J->run[i].id);
-      unlink(path);
-    }
-    if (pick_source(J, i)) return 2;
-    snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
-    FILE *rf = fopen(path, "w");
-    if (!rf || fputs(J->run[i].text, rf) < 0 || fclose(rf)) {
-      cli_error("auto", "%s: cannot write", path);
-      return 1;
-    }
-    if (!J->quiet) printf("== %s (c.%s)\n", J->run[i].id, J->run[i].c);
-    fflush(stdout);
-    char *argv[] = {"run", path, J->quiet ? "--quiet" : NULL, NULL};
-    int st = cmd_run(J->quiet ? 3 : 2, argv);
-    char tsv[4400];
-    snprintf(tsv, sizeof tsv, "%s/%s.out/branches.tsv", J->out, J->run[i].id);
-    if (st != 2 && access(tsv, R_OK) == 0 && write_auto_files(J, i) && !st)
-      st = 1;
-    if (st) cli_error("auto", "run %s (c.%s) failed (exit %d)", J->run[i].id, J->run[i].c, st);
+    int st = run_one(J, i);
+    if (st == -2) return 2;
+    if (st < 0) return 1;
     if (st && !status) status = st;
+    bp_queue q;
+    if (!mxbf_begin(J, i, &q)) continue;
+    int nbfc = 0, br = J->run[i].br_auto, pos = 1, k;
+    size_t at = i;
+    while ((k = next_switch(J, i, at, &q, &nbfc, &br, &pos)) == 1) {
+      st = run_one(J, ++at);
+      if (st < 0) return st == -2 ? 2 : 1;
+      if (st && !status) status = st;
+    }
+    if (k < 0) return 1;
+    i = at;
   }
   return status;
 }

@@ -785,9 +785,21 @@ int whirl_cont_start_switch(whirl_cont *c, const whirl_point *bp, int dir) {
     }
     if (nn > bestn) {
       bestn = nn;
-      for (size_t i = 0; i < N; ++i) ph[i] = (v[i] - vt * bp->t[i] / tn) * (dir < 0 ? -1.0 : 1.0);
+      for (size_t i = 0; i < N; ++i) ph[i] = v[i] - vt * bp->t[i] / tn;
     }
   }
+  /* dir = +1 is the direction in which the parameter grows, as in AUTO
+   * (AUTO-07p ae.f90, STPRAE: the sign makes PAR(ICP(1))-dot >= 0), so
+   * that the sign of DS chooses the side and not the SVD's sign.  Where the
+   * new branch leaves at a constant parameter (a pitchfork: AUTO's sign is
+   * round-off there), the first of its largest components grows. */
+  double big = 0.0, lead = 0.0;
+  for (size_t i = 0; i < N; ++i) big = fmax(big, fabs(ph[i]));
+  for (size_t i = 0; i < n && lead == 0.0; ++i)
+    if (fabs(ph[i]) >= (1.0 - 1e-8) * big) lead = ph[i];
+  const double key = fabs(ph[n]) > 1e-8 * big ? ph[n] : lead;
+  const double sg = (key < 0.0 ? -1.0 : 1.0) * (dir < 0 ? -1.0 : 1.0);
+  for (size_t i = 0; i < N; ++i) ph[i] *= sg;
   rc = whirl_cont_start_direction(c, bp->x, bp->p, ph);
 done:
   free(A);

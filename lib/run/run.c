@@ -339,14 +339,23 @@ int run_branch(run_ctx *R, branch_spec *b) {
     int type = pt->type;
     const char *ty = type ? whirl_point_type_name(type) : "RG";
     base_of(b, pt->x, pt->p, pfull);
-    int lab = 0, labelled = type != WHIRL_PT_REGULAR ||
-                            (s->npr > 0 && pt->index > 0 && pt->index % (size_t)s->npr == 0);
-    if (labelled) lab = ++R->label;
-    if (type >= 0 && type < 16) counts[type]++;
     double l2 = 0.0, period = 0.0;
     const void *obj = b->kind == WHIRL_SOL_COLLOC ? (const void *)b->colloc
                       : b->kind == WHIRL_SOL_HBM  ? (const void *)b->hbm
                                             : NULL;
+    /* the first point past A0 or A1 ends the branch, an EP as in AUTO
+     * (ae.f90 STPLAE: ITP = 9 where AMP leaves [A0, A1]) */
+    if (pt->index > 0 && (s->a0 > 0.0 || s->a1 < 1e30) &&
+        run_point_measures(R, b->kind, obj, pt->x, pfull, &l2, &period, state) == 0 &&
+        (l2 < s->a0 || l2 > s->a1)) {
+      stop = 1;
+      fprintf(R->log, "  L2-NORM = %g left [A0, A1]: branch ends\n", l2);
+      if (type == WHIRL_PT_REGULAR) ty = "EP";
+    }
+    int lab = 0, labelled = type != WHIRL_PT_REGULAR || stop ||
+                            (s->npr > 0 && pt->index > 0 && pt->index % (size_t)s->npr == 0);
+    if (labelled) lab = ++R->label;
+    if (type >= 0 && type < 16) counts[type]++;
     if (b->trace && run_trace_add(b->trace, pt->x, pt->p, b->icp, type, R->branch)) {
       rc = -1;
       break;
@@ -355,10 +364,6 @@ int run_branch(run_ctx *R, branch_spec *b) {
                       pfull, pt->stable, &l2, &period, state)) {
       rc = -1;
       break;
-    }
-    if (!stop && pt->index > 0 && (l2 < s->a0 || l2 > s->a1)) {
-      stop = 1;
-      fprintf(R->log, "  L2-NORM = %g left [A0, A1]: branch ends\n", l2);
     }
     if (labelled && write_label(R, b, pt, ty, lab, pfull)) {
       rc = -1;
