@@ -243,8 +243,9 @@ static int branch_end(run_ctx *R, whirl_cont *c, int rc, int stop, size_t npts) 
     rc = 0;
   } else if (rc == WHIRL_DONE || stop) {
     fprintf(R->log, "  ended: %s after %zu points\n",
-            stop ? "L2-NORM left [A0, A1]"
-                 : whirl_stop_reason_name(whirl_cont_stop_reason(c)),
+            stop == 1 ? "L2-NORM left [A0, A1]"
+            : stop ? "maximum number of points (NMX)"
+                   : whirl_stop_reason_name(whirl_cont_stop_reason(c)),
             npts);
     rc = 0;
   } else if (rc < 0) {
@@ -352,8 +353,16 @@ int run_branch(run_ctx *R, branch_spec *b) {
       fprintf(R->log, "  L2-NORM = %g left [A0, A1]: branch ends\n", l2);
       if (type == WHIRL_PT_REGULAR) ty = "EP";
     }
+    /* AUTO counts points, the start and the special points included
+     * (ae.f90 STPLAE: NTOT, PT = index + 1): the NMX-th ends the branch,
+     * an EP, and every NPR-th regular one is labelled */
+    const size_t ntot = pt->index + 1;
+    if (!stop && ntot >= (size_t)s->nmx) {
+      stop = 2;
+      if (type == WHIRL_PT_REGULAR) ty = "EP";
+    }
     int lab = 0, labelled = type != WHIRL_PT_REGULAR || stop ||
-                            (s->npr > 0 && pt->index > 0 && pt->index % (size_t)s->npr == 0);
+                            (s->npr > 0 && ntot % (size_t)s->npr == 0);
     if (labelled) lab = ++R->label;
     if (type >= 0 && type < 16) counts[type]++;
     if (b->trace && run_trace_add(b->trace, pt->x, pt->p, b->icp, type, R->branch)) {
