@@ -136,10 +136,17 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
        * it converges only linearly): keep the best point found so far when
        * the bracket has already shrunk to a small part of the step */
       if (found && fabs(sb - sa) <= 1e-3 * fabs(ds)) {
-        memcpy(out->X, Xbest, N * sizeof *Xbest);
-        rc = cont_correct(c, a->X, c->dir, sbest, out->X);
-        sout = sbest;
-        if (rc == 0 && !p_only) rc = cont_analyse(c, out, c->dir);
+        /* at the singular point itself the tangent solve may fail too
+         * (enz's pitchfork by a fold): then a point a little off it */
+        static const double off[] = {0.0, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5};
+        rc = 1;
+        for (size_t j = 0; rc != 0 && j < sizeof off / sizeof *off; ++j) {
+          memcpy(out->X, Xbest, N * sizeof *Xbest);
+          sout = sbest + off[j] * fabs(ds);
+          rc = cont_correct(c, a->X, c->dir, sout, out->X);
+          if (rc == 0 && !p_only) rc = cont_analyse(c, out, c->dir);
+          if (rc < 0) break;
+        }
       }
       if (rc != 0) found = 0;
       break;
