@@ -217,7 +217,7 @@ static int translate_run(auto_job *J, size_t i, long from) {
   if (from >= 0) snprintf(restart, sizeof restart, "%s/%s.out", J->out, J->run[from].id);
   snprintf(out, sizeof out, "%s/%s.out", J->out, r->id);
   const char *lab = r->irs[0] ? r->irs : r->label[0] ? r->label : NULL;
-  const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL, lab, out, J->npar};
+  const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL, lab, out, J->npar, J->dir};
   r->src = from;
   free(r->text);
   r->text = NULL;

@@ -396,6 +396,7 @@ int run_branch(run_ctx *R, branch_spec *b) {
  * or a forced response settled by time integration from U. */
 static int start_samples(run_ctx *R, size_t m, double *xs, double *T) {
   const whirl_model *md = R->model;
+  if (R->s->dat[0]) return run_dat_samples(R, m, xs, T);
   if (md->forcing_param < 0) {
     if (!md->stpnt || !(md->period0 > 0)) {
       run_fail(R, WHIRL_RK_IPS, "IPS = 2 from the model's start needs a "

@@ -81,6 +81,7 @@ static const key_def keys[] = {
     {WHIRL_RK_DISCOVER_SETTLE, "DISCOVER_SETTLE", "discover_settle", NULL, K_REAL},
     {WHIRL_RK_STUDY, "STUDY", "parameter_study", NULL, K_UZDICT},
     {WHIRL_RK_IPLT, "IPLT", "plot_measure", NULL, K_INT},
+    {WHIRL_RK_DAT, "DAT", "start_data", NULL, K_STRING},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -90,7 +91,7 @@ static const key_def keys[] = {
 static const char *const ignored_keys[] = {
     "ITMX", "NWTN", "IID", "NBC", "NINT", "MXBF", "IADS", "THL",
     "THU", "NTHL", "NTHU", "NUZR", "NPAR", "SP", "STOP", "UNAMES",
-    "PARNAMES", "NUNSTAB", "NSTAB", "IIS", "IBR", "LAB", "TY", "DAT", "EFILE",
+    "PARNAMES", "NUNSTAB", "NSTAB", "IIS", "IBR", "LAB", "TY", "EFILE",
     "SFILE", "NPRM", "DATFILE"};
 #define NIGNORED (sizeof ignored_keys / sizeof ignored_keys[0])
 
@@ -622,6 +623,7 @@ static char *string_field(whirl_run_settings *s, whirl_run_key k, size_t *len) {
     case WHIRL_RK_MODEL: *len = sizeof s->model; return s->model;
     case WHIRL_RK_OUT: *len = sizeof s->out; return s->out;
     case WHIRL_RK_S: *len = sizeof s->s; return s->s;
+    case WHIRL_RK_DAT: *len = sizeof s->dat; return s->dat;
     case WHIRL_RK_PLOT: *len = sizeof s->plot; return s->plot;
     default: *len = 0; return NULL;
   }

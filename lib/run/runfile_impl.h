@@ -12,6 +12,7 @@ typedef struct whirl_run_settings {
   char model[WHIRL_RUN_MAXPATH];
   char out[WHIRL_RUN_MAXPATH];  /* "" : default <stem>.out */
   char s[WHIRL_RUN_MAXPATH];    /* restart directory ("" none) */
+  char dat[WHIRL_RUN_MAXPATH];  /* IPS 2: the start orbit's data file ("" none) */
   int ndim;                     /* 0: not given */
   int ips;                      /* WHIRL_IPS_* (default 1) */
   int method;                   /* WHIRL_METHOD_* (default colloc) */

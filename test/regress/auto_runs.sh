@@ -9,6 +9,8 @@
 #     = 8), the LP and PT 30 (EP, NMX = 30): it counts the start and the LP
 #     among the points; with IPLT = 1 its second column is U(1) itself,
 #     negative past the LP (the L2-NORM would be |u|).
+#     dat: a start from a data file, on the Hopf normal form (closed form:
+#     r = sqrt(p), period 2 pi), and a missing data file (exit 2).
 #  2. Demos of AUTO-07p 0.9.2 (AUTO_07P_DIR, else ../shared/auto-07p beside
 #     the source tree; skipped where absent), run from their own c-files,
 #     their labels (BR, TY, LAB) against AUTO's log hyper.all:
@@ -24,6 +26,8 @@
 #       against AUTO's own run of it (AUTO-07p 0.9.2, `run(e='ppp',
 #       c='ppp.4')`, listed below);
 #     - enz: the BP at s0 = 34.2229 just past the LP is found (AUTO's BP 3);
+#     - lor: dat = 'lor', the orbit at the UZ rho = 200 (INTEGRAL U(1) of
+#       IPLT = 4 and the period) as AUTO's;
 #     - ffn: IPLT = 9 (2 NDIM + 1): the second column is AUTO's L2-NORM of U(1),
 #       at the TR 9.54521E-01 (the whole state's L2-NORM is 1.53).
 # TAP output.
@@ -98,6 +102,53 @@ awk 'substr($0, 1, 4) + 0 != 0 { lp = lp || substr($0, 11, 4) + 0 == 2
   END { exit bad }' "$b" 2>/dev/null
 check $? "fold: the second column is U(1) on every row, negative past the LP (not the L2-NORM)"
 
+# ---- dat: the Hopf normal form x' = p x - y - x r^2, y' = x + p y - y r^2
+# (orbits r = sqrt(p), period 2 pi) from 41 rows of the circle r = 1 over
+# t in [0, 2 pi]: the period is the data's (AUTO's STPNUB), the orbit at the
+# user point p = 0.25 has MAX U(1) = 0.5 and period 2 pi
+mkdir "$tmp/hnf"
+cat > "$tmp/hnf/hnf.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*), R2
+      R2 = U(1)**2 + U(2)**2
+      F(1) = PAR(1)*U(1) - U(2) - U(1)*R2
+      F(2) = U(1) + PAR(1)*U(2) - U(2)*R2
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 1
+      END SUBROUTINE STPNT
+F
+awk 'BEGIN { pi = atan2(0, -1); for (k = 0; k <= 40; k++) { t = 2 * pi * k / 40
+  printf "%.10E %.10E %.10E\n", t, cos(t), sin(t) } }' | sed 's/E/D/g' > "$tmp/hnf/circle.dat"
+cat > "$tmp/hnf/c.hnf.1" <<'C'
+dat = 'circle'
+NDIM=   2, IPS =   2, IRS =   0, ILP =   1
+ICP =  [1, 11]
+NTST=  20, NCOL=   4, IAD =   3, ISP =   1, ISW = 1, IPLT= 0, NBC= 0, NINT= 0
+NMX=  100, NPR=  100, MXBF=  10, IID =   2, ITMX= 8, ITNW= 7, NWTN= 3, JAC= 0
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-08
+DS  = -0.05, DSMIN= 0.0001, DSMAX=  0.05, IADS=   1
+NPAR=  11, THL =  {11: 0.0}, THU =  {}
+UZR = {1: 0.25}, UZSTOP = {1: 0.1}
+C
+(cd "$tmp" && "$WHIRL" auto hnf --quiet > hnf.log 2>&1)
+check $? "dat: whirl auto hnf (a start from the data file circle.dat) exits 0"
+uz=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == -4 { printf "%.12g %.12g %.12g\n", substr($0, 20, 19), substr($0, 58, 19), substr($0, 96, 19); exit }' "$tmp/hnf.out/b.hnf" 2>/dev/null)
+echo "$uz" | awk '{ pi = atan2(0, -1); exit !($1 != "" && ($1 - 0.25) ^ 2 < 1e-16 && ($2 - 0.5) ^ 2 < 1e-12 && ($3 - 2 * pi) ^ 2 < 1e-12) }'
+check $? "dat: at p = 0.25 MAX U(1) = 0.5 and the period 2 pi (closed form): $uz"
+grep -q 'start orbit from .*circle.dat: 41 rows over 6.28318530[0-9]*, period 6.28318530' "$tmp/hnf.out/hnf.1.out/run.log"
+check $? "dat: the period is the data's t range: $(grep 'start orbit' "$tmp/hnf.out/hnf.1.out/run.log" 2>/dev/null)"
+sed 's/circle/nothere/' "$tmp/hnf/c.hnf.1" > "$tmp/hnf/c.hnf.2"
+(cd "$tmp" && "$WHIRL" auto hnf --runs=hnf.2 --out=bad.out > bad.log 2>&1)
+rc=$?
+[ $rc = 2 ] && grep -q "c.hnf.2:1: dat = 'nothere': no data file .*nothere or .*nothere.dat" "$tmp/bad.log" && [ ! -e "$tmp/bad.out" ]
+check $? "dat: a missing data file: exit 2 ($rc), the constants file and line, nothing written: $(head -1 "$tmp/bad.log")"
+
 # ---- 2. AUTO's demos
 auto=${AUTO_07P_DIR:-$top_srcdir/../shared/auto-07p}
 hyper="$auto/test/hyper.all"
@@ -150,6 +201,12 @@ demo enz --runs=enz.1
 bp=$(awk 'substr($0, 1, 4) + 0 == 1 && substr($0, 11, 4) + 0 == 1 { print substr($0, 20, 19) + 0, substr($0, 39, 19) + 0; exit }' "$tmp/enz.out/b.enz")
 echo "$bp" | awk '{ exit !($1 != "" && (($1 - 34.2229) / 34.2229) ^ 2 < 1e-10 && (($2 - 1.66053) / 1.66053) ^ 2 < 1e-10) }'
 check $? "enz: the first BP of run 1 at s0 = 34.2229, L2-NORM 1.66053 as AUTO's BP 3 (hyper.all): $bp"
+
+# lor: dat = 'lor' (AUTO's data file of the demo), IPLT = 4 (INTEGRAL U(1))
+demo lor --runs=lor.1
+uz=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == -4 { printf "%.12g %.12g\n", substr($0, 39, 19), substr($0, 115, 19); exit }' "$tmp/lor.out/b.lor")
+echo "$uz" | awk '{ exit !($1 != "" && (($1 + 1.23833) / 1.23833) ^ 2 < 1e-10 && (($2 - 0.516877) / 0.516877) ^ 2 < 1e-10) }'
+check $? "lor: from lor.dat, at the UZ rho = 200 INTEGRAL U(1) and PERIOD as AUTO's UZ 3 (-1.23833, 0.516877): $uz"
 
 # ffn: IPLT = 9
 demo ffn
