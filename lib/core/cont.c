@@ -1009,12 +1009,20 @@ static int crosses_hb(const whirl_cont *c, size_t k, const cont_state *a,
   const int r = a->n_cu > b->n_cu ? a->n_cu : b->n_cu;
   return sgn(cont_hb_rank_test(c, a, r)) * sgn(cont_hb_rank_test(c, b, r)) < 0;
 }
+/* A multiplier that passes -1 between two points is near -1 at both
+ * (within a factor 10): multipliers computed wildly wrong on an orbit close
+ * to a homoclinic loop of a conservative family (demo vhb: true ones 1 and
+ * 1, computed -1e8 and -0.5) jump instead, and are no PD. */
+static int near_minus_one(const cont_state *s) {
+  const double mu = s->psi_pd - 1.0; /* psi_pd = mu + 1 */
+  return mu < -0.1 && mu > -10.0;
+}
 static int crosses_pd(const whirl_cont *c, size_t k, const cont_state *a,
                       const cont_state *b) {
   (void)k;
   return a->tests_valid && c->opt.detect_pd && a->n_rn >= 0 && b->n_rn >= 0 &&
          a->n_rn != b->n_rn && a->has_pd && b->has_pd &&
-         sgn(a->psi_pd) * sgn(b->psi_pd) < 0;
+         sgn(a->psi_pd) * sgn(b->psi_pd) < 0 && near_minus_one(a) && near_minus_one(b);
 }
 static int crosses_pmin(const whirl_cont *c, size_t k, const cont_state *a,
                         const cont_state *b) {

@@ -21,7 +21,10 @@
 #       start from the HBs on it, their ends labelled 25 and 43 on branches
 #       4 and 6 (AUTO's branch number of orbits from an HB is the label);
 #     - chu: MXBF = -2, one side a BP; the branch leaving [A0, A1] ends in
-#       a labelled EP; c.chu.2 (IRS = 6) starts from the HB on branch 3;
+#       a labelled EP; c.chu.2 (IRS = 6) starts from the HB on branch 3 and
+#       ends in EP 9, no PD near the homoclinic end;
+#     - vhb: no PD on the conservative family from the Hopf point (AUTO has
+#       none; whirl's multipliers there are wrong by orders of magnitude);
 #     - ppp: c.ppp.4 alone (a fresh start with MXBF = 10), all 20 labels
 #       against AUTO's own run of it (AUTO-07p 0.9.2, `run(e='ppp',
 #       c='ppp.4')`, listed below);
@@ -183,10 +186,18 @@ check $? "lrz: the side with U(1) > 0 first: U(1) at HB 4 = $u4, AUTO 7.95602"
 
 # chu: MXBF < 0, the EP at A1, IRS = 6
 demo chu
-w=$(labels "$tmp/chu.out/b.chu" | awk '$3 <= 8' | tr '\n' ';')
-a=$(hyper_labels chu "$hyper" | awk '$3 <= 8' | tr '\n' ';')
+w=$(labels "$tmp/chu.out/b.chu" | awk '$3 <= 9' | tr '\n' ';')
+a=$(hyper_labels chu "$hyper" | awk '$3 <= 9' | tr '\n' ';')
 [ -n "$a" ] && [ "$w" = "$a" ]
-check $? "chu: labels 1-8 (one side a BP, the EP at A1, c.chu.2 from HB 6) as AUTO's ($a): $w"
+check $? "chu: labels 1-9 (one side a BP, the EP at A1, c.chu.2 from HB 6, no PD near the homoclinic end) as AUTO's ($a): $w"
+
+# vhb: no PD on the conservative family (its multipliers are 1, whirl's
+# computed ones wild near the homoclinic loop)
+demo vhb
+npd=$(labels "$tmp/vhb.out/b.vhb" | awk '$2 == "PD"' | wc -l)
+apd=$(hyper_labels vhb "$hyper" | awk '$2 == "PD"' | wc -l)
+[ "$npd" -eq 0 ] && [ "$apd" -eq 0 ]
+check $? "vhb: no PD on the family from the Hopf point, as AUTO ($npd, AUTO $apd)"
 
 # ppp: c.ppp.4 alone against AUTO's own run of it
 demo ppp --runs=ppp.4
