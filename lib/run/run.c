@@ -100,6 +100,9 @@ static void base_of(const branch_spec *b, const double *Z, const double *p,
     whirl_hopf_params(b->hopf, Z, p, pfull);
   else
     memcpy(pfull, p, b->sys->npar * sizeof *pfull);
+  /* the model's derived parameters (AUTO's PVLS) at an equilibrium */
+  if (b->kind == WHIRL_SOL_EQ && !b->fold && !b->hopf && b->model && b->model->pvls)
+    b->model->pvls(Z, pfull, b->model->problem.data);
 }
 
 /* The quantity a UZR/UZSTOP value refers to (whirl_cont_options.uz_fun). */
@@ -759,6 +762,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
   b.icp = R->icp[0];
   b.q = -1;
   b.ds_scale = 1.0;
+  b.model = R->model;
 
   if (s->ndiscover && s->ips != WHIRL_IPS_EQUILIBRIA && R->model->forcing_param < 0) {
     run_fail(R, WHIRL_RK_DISCOVER, "DISCOVER finds periodic orbits of forced models; "

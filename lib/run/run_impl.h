@@ -157,6 +157,7 @@ typedef struct branch_spec {
   int dir_sign;            /* +1 / -1: direction of the parameter at the
                               start; 0: the sign of DS */
   run_trace *trace;        /* record the points here (or NULL) */
+  const whirl_model *model; /* its derived parameters (pvls), or NULL */
 } branch_spec;
 
 /* Continue branch b: its rows, labels, log and summary.  0, -1, -2. */

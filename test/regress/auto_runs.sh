@@ -31,6 +31,8 @@
 #     - enz: the BP at s0 = 34.2229 just past the LP is found (AUTO's BP 3);
 #     - lor: dat = 'lor', the orbit at the UZ rho = 200 (INTEGRAL U(1) of
 #       IPLT = 4 and the period) as AUTO's;
+#     - pp3: PVLS's PAR(9) (the L2-NORM through GETP) stops a branch at
+#       UZSTOP {9: 1.2}, AUTO's UZ 4;
 #     - ffn: IPLT = 9 (2 NDIM + 1): the second column is AUTO's L2-NORM of U(1),
 #       at the TR 9.54521E-01 (the whole state's L2-NORM is 1.53).
 # TAP output.
@@ -218,6 +220,13 @@ demo lor --runs=lor.1
 uz=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == -4 { printf "%.12g %.12g\n", substr($0, 39, 19), substr($0, 115, 19); exit }' "$tmp/lor.out/b.lor")
 echo "$uz" | awk '{ exit !($1 != "" && (($1 + 1.23833) / 1.23833) ^ 2 < 1e-10 && (($2 - 0.516877) / 0.516877) ^ 2 < 1e-10) }'
 check $? "lor: from lor.dat, at the UZ rho = 200 INTEGRAL U(1) and PERIOD as AUTO's UZ 3 (-1.23833, 0.516877): $uz"
+
+# pp3: PVLS sets PAR(9) to the L2-NORM of U (GETP('NRM', i, U) = |U(i)|);
+# UZSTOP {9: 1.2} ends the first half of MXBF's branch 2 there (AUTO's UZ 4)
+demo pp3
+uz=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 == 4 { printf "%d %.12g %.12g\n", substr($0, 11, 4), substr($0, 20, 19), substr($0, 39, 19); exit }' "$tmp/pp3.out/b.pp3")
+echo "$uz" | awk '{ exit !($1 == -4 && (($2 - 0.800796) / 0.800796) ^ 2 < 1e-10 && ($3 - 1.2) ^ 2 < 1e-16) }'
+check $? "pp3: label 4 is the UZ where PVLS's PAR(9) = L2-NORM = 1.2, at PAR(1) = 0.800796 as AUTO's UZ 4: $uz"
 
 # ffn: IPLT = 9
 demo ffn
