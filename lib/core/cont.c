@@ -1009,20 +1009,41 @@ static int crosses_hb(const whirl_cont *c, size_t k, const cont_state *a,
   const int r = a->n_cu > b->n_cu ? a->n_cu : b->n_cu;
   return sgn(cont_hb_rank_test(c, a, r)) * sgn(cont_hb_rank_test(c, b, r)) < 0;
 }
-/* A multiplier that passes -1 between two points is near -1 at both
- * (within a factor 10): multipliers computed wildly wrong on an orbit close
- * to a homoclinic loop of a conservative family (demo vhb: true ones 1 and
- * 1, computed -1e8 and -0.5) jump instead, and are no PD. */
-static int near_minus_one(const cont_state *s) {
-  const double mu = s->psi_pd - 1.0; /* psi_pd = mu + 1 */
+double cont_pd_rank_test(const cont_state *st, int k) {
+  double best[64];
+  int have = 0;
+  if (k < 1 || k > 64) return NAN;
+  for (size_t i = 0; i < st->nspec; ++i) { /* the k most negative, ascending */
+    const double r = hypot(st->re[i], st->im[i]), v = st->re[i];
+    if (fabs(st->im[i]) > 1e-8 * fmax(1.0, r) || !(v < 0.0)) continue;
+    int j = have < k ? have++ : k;
+    if (j == k && !(v < best[k - 1])) continue;
+    if (j == k) j = k - 1;
+    while (j > 0 && best[j - 1] > v) { best[j] = best[j - 1]; --j; }
+    best[j] = v;
+  }
+  return have == k ? best[k - 1] + 1.0 : NAN;
+}
+/* The count of real multipliers below -1 changed, and the one that passed
+ * -1 (the k-th most negative, k the larger count: when it moves far in a
+ * step, another negative one can be nearer to -1 than it, lor's PD at rho
+ * = 229.4 on big steps) is near -1 at both ends, within a factor 10:
+ * multipliers computed wildly wrong on an orbit close to a homoclinic loop
+ * of a conservative family (demo vhb: true ones 1 and 1, computed -1e8 and
+ * -0.5) jump instead, and are no PD. */
+static int near_minus_one(double psi) {
+  const double mu = psi - 1.0; /* psi = mu + 1 */
   return mu < -0.1 && mu > -10.0;
 }
 static int crosses_pd(const whirl_cont *c, size_t k, const cont_state *a,
                       const cont_state *b) {
   (void)k;
-  return a->tests_valid && c->opt.detect_pd && a->n_rn >= 0 && b->n_rn >= 0 &&
-         a->n_rn != b->n_rn && a->has_pd && b->has_pd &&
-         sgn(a->psi_pd) * sgn(b->psi_pd) < 0 && near_minus_one(a) && near_minus_one(b);
+  if (!(a->tests_valid && c->opt.detect_pd && a->n_rn >= 0 && b->n_rn >= 0 &&
+        a->n_rn != b->n_rn))
+    return 0;
+  const int r = a->n_rn > b->n_rn ? a->n_rn : b->n_rn;
+  const double fa = cont_pd_rank_test(a, r), fb = cont_pd_rank_test(b, r);
+  return sgn(fa) * sgn(fb) < 0 && near_minus_one(fa) && near_minus_one(fb);
 }
 static int crosses_pmin(const whirl_cont *c, size_t k, const cont_state *a,
                         const cont_state *b) {

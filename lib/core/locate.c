@@ -35,6 +35,7 @@ static double psi(const whirl_cont *c, int ev, size_t k, const cont_state *st,
     if (c->hb_rank > 0) return cont_hb_rank_test(c, st, c->hb_rank);
     return st->has_hb ? st->psi_hb : NAN;
   case EV_PD:
+    if (c->pd_rank > 0) return cont_pd_rank_test(st, c->pd_rank);
     return st->has_pd ? st->psi_pd : NAN;
   case EV_PMAX:
     return pv - c->opt.p_max;
@@ -89,6 +90,8 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
     ref = out->logdet;
     fa = out->sign_det;
   } else {
+    if (ev == EV_PD) /* the multiplier that passed -1 (crosses_pd) */
+      c->pd_rank = a->n_rn > b->n_rn ? a->n_rn : b->n_rn;
     if (ev == EV_HB) { /* psi_hb when it changes sign, else the order
                           statistic of the count that changed */
       c->hb_rank = 0;

@@ -29,8 +29,8 @@
 #       against AUTO's own run of it (AUTO-07p 0.9.2, `run(e='ppp',
 #       c='ppp.4')`, listed below);
 #     - enz: the BP at s0 = 34.2229 just past the LP is found (AUTO's BP 3);
-#     - lor: dat = 'lor', the orbit at the UZ rho = 200 (INTEGRAL U(1) of
-#       IPLT = 4 and the period) as AUTO's;
+#     - lor: dat = 'lor', the PD near rho = 229.4 and the orbit at the UZ
+#       rho = 200 (INTEGRAL U(1) of IPLT = 4 and the period) as AUTO's;
 #     - pp3: PVLS's PAR(9) (the L2-NORM through GETP) stops a branch at
 #       UZSTOP {9: 1.2}, AUTO's UZ 4;
 #     - ffn: IPLT = 9 (2 NDIM + 1): the second column is AUTO's L2-NORM of U(1),
@@ -220,6 +220,9 @@ demo lor --runs=lor.1
 uz=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == -4 { printf "%.12g %.12g\n", substr($0, 39, 19), substr($0, 115, 19); exit }' "$tmp/lor.out/b.lor")
 echo "$uz" | awk '{ exit !($1 != "" && (($1 + 1.23833) / 1.23833) ^ 2 < 1e-10 && (($2 - 0.516877) / 0.516877) ^ 2 < 1e-10) }'
 check $? "lor: from lor.dat, at the UZ rho = 200 INTEGRAL U(1) and PERIOD as AUTO's UZ 3 (-1.23833, 0.516877): $uz"
+pd=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 7 { printf "%.12g %.12g %.12g\n", substr($0, 20, 19), substr($0, 39, 19), substr($0, 115, 19); exit }' "$tmp/lor.out/b.lor")
+echo "$pd" | awk '{ exit !($1 != "" && (($1 - 229.407) / 229.407) ^ 2 < 1e-10 && (($2 + 1.06862) / 1.06862) ^ 2 < 1e-10 && (($3 - 0.480867) / 0.480867) ^ 2 < 1e-10) }'
+check $? "lor: the PD on DSMAX = 25 steps (the multiplier passing -1 moves from -0.98 to -2.0) as AUTO's PD 2 (229.407, -1.06862, 0.480867): $pd"
 
 # pp3: PVLS sets PAR(9) to the L2-NORM of U (GETP('NRM', i, U) = |U(i)|);
 # UZSTOP {9: 1.2} ends the first half of MXBF's branch 2 there (AUTO's UZ 4)
