@@ -134,7 +134,7 @@ double cont_uz_value(const whirl_cont *c, size_t k, const cont_state *st);
  * functions is continuous, and it changes sign wherever the count of
  * complex ones beyond the boundary goes through k. */
 double cont_hb_rank_test(const whirl_cont *c, const cont_state *st, int k);
-/* mu + 1 of the k-th most negative real multiplier (NaN: fewer than k). */
+/* mu + 1 of the k-th most negative real part of a multiplier (NaN: fewer). */
 double cont_pd_rank_test(const cont_state *st, int k);
 
 int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,

@@ -399,7 +399,7 @@ int run_branch(run_ctx *R, branch_spec *b) {
  * or a forced response settled by time integration from U. */
 static int start_samples(run_ctx *R, size_t m, double *xs, double *T) {
   const whirl_model *md = R->model;
-  if (R->s->dat[0]) return run_dat_samples(R, m, xs, T);
+  if (R->s->dat[0]) return run_dat_samples(R, m, xs, T, NULL);
   if (md->forcing_param < 0) {
     if (!md->stpnt || !(md->period0 > 0)) {
       run_fail(R, WHIRL_RK_IPS, "IPS = 2 from the model's start needs a "
@@ -587,8 +587,15 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
   if (!restart) {
     const size_t m = 200;
     double T;
-    O->xs = malloc(m * R->n * sizeof *O->xs);
-    if (!O->xs || start_samples(R, m, O->xs, &T)) return O->xs ? -2 : -1;
+    O->xs = malloc((m + 1) * R->n * sizeof *O->xs);
+    if (!O->xs) return -1;
+    if (R->s->dat[0]) { /* the data's jumps over the period: rotations */
+      double *jump = O->xs + m * R->n;
+      if (run_dat_samples(R, m, O->xs, &T, jump)) return -2;
+      if (whirl_colloc_set_rotations(O->colloc, jump))
+        fprintf(R->log, "rotations: components turning by 2 pi k over a period (AUTO's NRTN)\n");
+    } else if (start_samples(R, m, O->xs, &T))
+      return -2;
     whirl_colloc_from_samples(O->colloc, O->xs, m, T, O->X);
   } else if (so->kind == WHIRL_SOL_EQ) {
     if (strcmp(so->ty, "HB") || !R->prob.autonomous) {
@@ -610,6 +617,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
     if ((size_t)so->ntst == co.ntst && (size_t)so->ncol == co.ncol) {
       memcpy(O->X, so->x, b->nb * sizeof *O->X);
       whirl_periodic_restore(&dst, so->mesh, O->X);
+      whirl_colloc_rotations_of(O->colloc, O->X); /* AUTO's SETRTN */
     } else { /* another mesh: resample the stored orbit */
       whirl_colloc_options c0 = co;
       c0.ntst = (size_t)so->ntst;
@@ -618,6 +626,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
       if (!O->colloc2) return -1;
       whirl_periodic src = whirl_periodic_of_colloc(O->colloc2);
       whirl_periodic_restore(&src, so->mesh, so->x);
+      whirl_colloc_rotations_of(O->colloc, so->x); /* AUTO's SETRTN */
       if (whirl_periodic_convert(&src, so->x, so->par, &dst, 400, O->X))
         return -1;
       whirl_colloc_free(O->colloc2);

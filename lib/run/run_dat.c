@@ -71,7 +71,7 @@ static int read_rows(run_ctx *R, const char *path, double **t, double **u, size_
   return rc;
 }
 
-int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T) {
+int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T, double *jump) {
   const size_t n = R->n;
   double *t, *u;
   size_t nr;
@@ -92,6 +92,7 @@ int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T) {
     for (size_t i = 0; i < n; i++)
       xs[k * n + i] = (1.0 - w) * u[j * n + i] + w * u[(j + 1) * n + i];
   }
+  for (size_t i = 0; jump && i < n; i++) jump[i] = u[(nr - 1) * n + i] - u[i];
   fprintf(R->log, "start orbit from %s: %zu rows over %.10g, period %.10g\n", R->s->dat, nr,
           tdat, *T);
   free(t), free(u);

@@ -11,6 +11,8 @@
 #     negative past the LP (the L2-NORM would be |u|).
 #     dat: a start from a data file, on the Hopf normal form (closed form:
 #     r = sqrt(p), period 2 pi), and a missing data file (exit 2).
+#     rotations: an angle turning by 2 pi over the orbit (AUTO's NRTN), from
+#     a data file, against the closed form (period 2 pi / p).
 #  2. Demos of AUTO-07p 0.9.2 (AUTO_07P_DIR, else ../shared/auto-07p beside
 #     the source tree; skipped where absent), run from their own c-files,
 #     their labels (BR, TY, LAB) against AUTO's log hyper.all:
@@ -153,6 +155,44 @@ sed 's/circle/nothere/' "$tmp/hnf/c.hnf.1" > "$tmp/hnf/c.hnf.2"
 rc=$?
 [ $rc = 2 ] && grep -q "c.hnf.2:1: dat = 'nothere': no data file .*nothere or .*nothere.dat" "$tmp/bad.log" && [ ! -e "$tmp/bad.out" ]
 check $? "dat: a missing data file: exit 2 ($rc), the constants file and line, nothing written: $(head -1 "$tmp/bad.log")"
+
+# ---- rotations (AUTO's NRTN): u1' = u2, u2' = p - u2 is 2 pi-periodic in
+# the angle u1; its orbits u1 = p t, u2 = p turn u1 by 2 pi in the period
+# 2 pi / p.  From a data file over one turn at p = 1 (u1 = t, t in
+# [0, 2 pi]): at the user point p = 2 the period is pi and U(2) = 2
+mkdir "$tmp/rot"
+cat > "$tmp/rot/rot.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      F(1) = U(2)
+      F(2) = PAR(1) - U(2)
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 1
+      END SUBROUTINE STPNT
+F
+awk 'BEGIN { pi = atan2(0, -1); for (k = 0; k <= 30; k++) { t = 2 * pi * k / 30; printf "%.10e %.10e 1.0\n", t, t } }' > "$tmp/rot/rot.dat"
+cat > "$tmp/rot/c.rot.1" <<'C'
+dat = 'rot'
+NDIM=   2, IPS =   2, IRS =   0, ILP =   1
+ICP =  [1, 11]
+NTST=  10, NCOL=   4, IAD =   3, ISP =   1, ISW = 1, IPLT= 0, NBC= 0, NINT= 0
+NMX=  100, NPR=  100, MXBF=  10, IID =   2, ITMX= 8, ITNW= 7, NWTN= 3, JAC= 0
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-08
+DS  = 0.05, DSMIN= 0.0001, DSMAX=  0.1, IADS=   1
+NPAR=  11, THL =  {11: 0.0}, THU =  {}
+UZSTOP = {1: 2.0}
+C
+(cd "$tmp" && "$WHIRL" auto rot --quiet > rot.log 2>&1)
+check $? "rotations: whirl auto rot (an orbit turning the angle u1 by 2 pi) exits 0"
+uz=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == -4 { printf "%.12g %.12g %.12g\n", substr($0, 20, 19), substr($0, 77, 19), substr($0, 96, 19); exit }' "$tmp/rot.out/b.rot" 2>/dev/null)
+echo "$uz" | awk '{ pi = atan2(0, -1); exit !($1 != "" && ($1 - 2) ^ 2 < 1e-16 && ($2 - 2) ^ 2 < 1e-14 && ($3 - pi) ^ 2 < 1e-14) }'
+check $? "rotations: at p = 2 MAX U(2) = 2 and the period pi (closed form): $uz"
 
 # ---- 2. AUTO's demos
 auto=${AUTO_07P_DIR:-$top_srcdir/../shared/auto-07p}
