@@ -181,8 +181,10 @@ static void runfile(void) {
   } bad[] = {
       {"NDIM=1\nIPS = 4\nICP=[1]\n", "c.t:2: IPS = 4: whirl runs AUTO's equilibria (1) and "
                                       "periodic orbits (2) only", NULL},
-      {"NDIM=1, ICP=[1]\ndat = 'x'\n", "c.t:2: dat = 'x': whirl cannot start from a data file yet",
-       NULL},
+      {"NDIM=1, ICP=[1]\ndat = 'x'\n",
+       "c.t:2: dat = 'x': a data file starts periodic orbits (IPS = 2), not IPS = 1", NULL},
+      {"NDIM=1, IPS=2, ICP=[1]\ndat = 'nothere'\n",
+       "c.t:2: dat = 'nothere': no data file nothere or nothere.dat", NULL},
       {"NDIM=1, ICP=[1]\n\nIRS = 3\n", "c.t:3: IRS = 3: no earlier run to restart from", NULL},
       {"NDIM=1\nICP=['foo']\n", "c.t:2: ICP: 'foo' is neither in parnames nor PERIOD", NULL},
       {"NDIM=1\nICP=[7]\n", "c.t:2: ICP: PAR(7) beyond NPAR = 3", NULL},
