@@ -155,7 +155,7 @@ static void runfile(void) {
       "NPAR=3, DS=0.01\n"
       "THL={11: 0}\n"
       "U={'x': 1.5}\n", &rc);
-  const whirl_auto_runfile_opts o = {"m.so", "prev.out", NULL, "o.out", 3};
+  const whirl_auto_runfile_opts o = {"m.so", "prev.out", NULL, "o.out", 3, NULL};
   char *t = NULL;
   ok(rc == WHIRL_OK && whirl_auto_constants_runfile(ac, &o, &t) == WHIRL_OK && t,
      "translates (%s)", whirl_auto_constants_errmsg(ac));
@@ -193,7 +193,7 @@ static void runfile(void) {
   };
   for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
     ac = parse(bad[i].text, &rc);
-    const whirl_auto_runfile_opts ob = {"m.so", bad[i].restart, NULL, NULL, 3};
+    const whirl_auto_runfile_opts ob = {"m.so", bad[i].restart, NULL, NULL, 3, NULL};
     t = NULL;
     rc = rc ? rc : whirl_auto_constants_runfile(ac, &ob, &t);
     ok(rc == WHIRL_EINVAL && !t && !strcmp(whirl_auto_constants_errmsg(ac), bad[i].msg),
@@ -235,7 +235,7 @@ static void translate_demo(whirl_auto_constants *ac) {
   whirl_auto_constants_int(ac, "IPS", &ips);
   whirl_auto_constants_int(ac, "NPAR", &npar);
   if ((ips != 1 && ips != 2) || whirl_auto_constants_line(ac, "dat")) return;
-  const whirl_auto_runfile_opts o = {"m.so", "r.out", NULL, "o.out", (size_t)npar};
+  const whirl_auto_runfile_opts o = {"m.so", "r.out", NULL, "o.out", (size_t)npar, NULL};
   char *t = NULL;
   if (whirl_auto_constants_runfile(ac, &o, &t) != WHIRL_OK) {
     printf("# %s\n", whirl_auto_constants_errmsg(ac));
