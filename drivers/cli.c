@@ -303,22 +303,47 @@ double cli_now(void) {
 
 void cli_progress_init(cli_progress *p, const char *what, int quiet) {
   p->on = !quiet && cli_is_tty();
+  p->shown = 0;
   p->last = -1;
+  p->start = cli_now();
   p->what = what;
+}
+
+void cli_duration(double s, char *buf, size_t len) {
+  if (!(s >= 0) || s > 1e8) snprintf(buf, len, "?");
+  else if (s >= 3600) snprintf(buf, len, "%dh%02dm", (int)(s / 3600), (int)fmod(s, 3600) / 60);
+  else if (s >= 60) snprintf(buf, len, "%dm%02ds", (int)(s / 60), (int)fmod(s, 60));
+  else snprintf(buf, len, "%ds", (int)ceil(s));
 }
 
 void cli_progress_show(cli_progress *p, size_t done, size_t total) {
   if (!p->on) return;
   double now = cli_now();
-  if (done < total && p->last >= 0 && now - p->last < 0.2) return;
+  if (done == 0 && !p->shown) p->start = now; /* a new piece of work */
+  if (done < total && (now - p->start < 0.5 || (p->last >= 0 && now - p->last < 0.2))) return;
   p->last = now;
-  fprintf(stderr, "\r%s: %zu/%zu (%.0f%%)  ", p->what, done, total,
-          total ? 100.0 * (double)done / (double)total : 100.0);
+  if (done > total) done = total;
+  /* the mean rate so far: (elapsed / done) per unit for the rest */
+  char eta[32];
+  cli_duration(done ? (now - p->start) * (double)(total - done) / (double)done : -1, eta,
+               sizeof eta);
+  fprintf(stderr, "\r\033[K%s: %zu/%zu (%.0f%%), ETA %s", p->what, done, total,
+          total ? 100.0 * (double)done / (double)total : 100.0, eta);
   fflush(stderr);
+  p->shown = 1;
+}
+
+void cli_progress_clear(cli_progress *p) {
+  if (!p->on || !p->shown) return;
+  fprintf(stderr, "\r\033[K");
+  fflush(stderr);
+  p->shown = 0;
+  p->last = -1; /* drawn again at the next show */
 }
 
 void cli_progress_end(cli_progress *p) {
   if (!p->on) return;
   fprintf(stderr, "\r\033[K");
   fflush(stderr);
+  p->shown = 0;
 }

@@ -50,9 +50,9 @@ typedef struct cli_opt {
 } cli_opt;
 
 /* Options most commands share: the output directory DIR, --no-plot (the
- * data only) and --quiet (no summary on stderr). */
+ * data only) and --quiet (no summary or progress line on stderr). */
 #define CLI_OPT_QUIET(quiet)                                                  \
-  {"--quiet", CLI_FLAG, &(quiet), NULL, "no summary on stderr", NULL}
+  {"--quiet", CLI_FLAG, &(quiet), NULL, "no summary or progress line on stderr", NULL}
 #define CLI_OPTS_OUT(dir, noplot, quiet)                                      \
   {"--out", CLI_STRING, &(dir), "DIR", "output directory", NULL},             \
   {"--no-plot", CLI_FLAG, &(noplot), NULL, "write the data only, no pictures", \
@@ -81,16 +81,26 @@ int cli_parse(const char *cmd, int argc, char **argv, const cli_opt *opts,
  * on the next line. */
 void cli_help_item(FILE *f, const char *label, const char *text, size_t col);
 
-/* Progress line on stderr (only on a terminal and when not quiet): at most
- * five updates a second, cleared by cli_progress_end. */
+/* Progress line on stderr (only on a terminal and when not quiet; never on
+ * stdout): "WHAT: DONE/TOTAL (P%), ETA 1m05s", one line rewritten in place
+ * (carriage return, the rest of the line cleared), at most five updates a
+ * second, the first after half a second (short work draws none); the ETA
+ * extrapolates the mean rate since cli_progress_init (or the last show of
+ * DONE = 0 while no line was up: a new piece of work).
+ * cli_progress_clear takes the line off (before a line on stdout, which
+ * may be the same terminal; the next show draws it again);
+ * cli_progress_end clears it for good. */
 typedef struct cli_progress {
-  int on;
-  double last;
+  int on, shown;
+  double last, start;
   const char *what;
 } cli_progress;
 void cli_progress_init(cli_progress *p, const char *what, int quiet);
 void cli_progress_show(cli_progress *p, size_t done, size_t total);
+void cli_progress_clear(cli_progress *p);
 void cli_progress_end(cli_progress *p);
+/* "1h02m", "3m05s", "12s" or "?" (negative or not finite) into buf */
+void cli_duration(double seconds, char *buf, size_t len);
 double cli_now(void); /* monotonic seconds */
 
 /* 1 when stderr is a terminal (progress lines are shown only then). */

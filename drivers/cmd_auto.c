@@ -6,10 +6,11 @@
  * its own output directory, so that no run replaces the output another
  * restarts from.  doc/auto-files.md.
  * SPDX-License-Identifier: BSD-3-Clause */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700 /* realpath */
 #include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -52,6 +53,7 @@ typedef struct auto_job {
   size_t npar;
   int ndim;
   char **p_names, **x_names;
+  char absdir[4096]; /* DIR as an absolute path ("" if unknown) */
 } auto_job;
 
 static void usage(FILE *f) {
@@ -214,10 +216,14 @@ static int translate_run(auto_job *J, size_t i, long from) {
   auto_run *r = &J->run[i];
   char model[400], restart[4400], out[4400];
   snprintf(model, sizeof model, "%s.so", J->name);
-  if (from >= 0) snprintf(restart, sizeof restart, "%s/%s.out", J->out, J->run[from].id);
-  snprintf(out, sizeof out, "%s/%s.out", J->out, r->id);
+  /* beside the run file in J->out, as a run file's paths are (run_path) */
+  if (from >= 0) snprintf(restart, sizeof restart, "%s.out", J->run[from].id);
+  snprintf(out, sizeof out, "%s.out", r->id);
   const char *lab = r->irs[0] ? r->irs : r->label[0] ? r->label : NULL;
-  const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL, lab, out, J->npar, J->dir};
+  /* dat files by an absolute path: the run file is in OUT, DIR relative
+   * to the working directory */
+  const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL, lab, out, J->npar,
+                                     J->absdir[0] ? J->absdir : J->dir};
   r->src = from;
   free(r->text);
   r->text = NULL;
@@ -705,6 +711,7 @@ static int parse_args(auto_job *J, int argc, char **argv, const char **runs) {
   snprintf(dir, sizeof dir, "%s", pos[0]);
   for (size_t n = strlen(dir); n > 1 && dir[n - 1] == '/';) dir[--n] = 0;
   J->dir = dir;
+  if (!realpath(dir, J->absdir)) J->absdir[0] = '\0';
   if (pos[1]) J->name = pos[1];
   else { /* DIR's last component */
     static char base[256];

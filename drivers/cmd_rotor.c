@@ -246,12 +246,12 @@ static const cli_doc unbalance_doc = {
 "usage: whirl rotor unbalance FILE --node K [options]\n"
 "\n"
 "The linear steady response of node K to the rotor's unbalances over a\n"
-"speed range (the nonlinear elements left out): y(t) = y_amp cos(Wt +\n"
+"speed range (the nonlinear elements left out): y(t) = y_amp_m cos(Wt +\n"
 "y_phase), likewise z; the orbit's semi-axes and its whirl.\n"
 "\n"
 "options:\n",
-"stdout: TSV 'speed_rpm speed_rad_s y_amp y_phase_deg z_amp z_phase_deg\n"
-"major minor whirl' (amplitudes in m).\n"
+"stdout: TSV 'speed_rpm speed_rad_s y_amp_m y_phase_deg z_amp_m z_phase_deg\n"
+"major_m minor_m whirl' (amplitudes in m).\n"
 "exit status: 0, 1 a failed solve (an undamped resonance), 2 bad options or\n"
 "rotor file.\n"};
 
@@ -294,7 +294,7 @@ int cmd_rotor_unbalance(int argc, char **argv) {
     cli_error(CMD, "out of memory");
   if (q) {
     rc = 0;
-    printf("speed_rpm\tspeed_rad_s\ty_amp\ty_phase_deg\tz_amp\tz_phase_deg\tmajor\tminor\twhirl\n");
+    printf("speed_rpm\tspeed_rad_s\ty_amp_m\ty_phase_deg\tz_amp_m\tz_phase_deg\tmajor_m\tminor_m\twhirl\n");
     char msg[512];
     for (size_t k = 0; k < ns && !rc; ++k) {
       double *qr = q, *qi = q + r->ndof;

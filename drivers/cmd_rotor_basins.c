@@ -37,10 +37,11 @@ static const cli_doc doc = {
 "assigned to the orbit its state once a revolution approaches.\n"
 "\n"
 "options:\n",
-"stdout: one line per class 'class<TAB>points'.\n"
-"files: attractors.tsv (index, amplitude at --node), basins.tsv (y0, z0,\n"
-"class: 1.. an attractor, 0 unsettled, -1 outside or reaching a clearance,\n"
-"-2 failed; revolutions), basins.png.\n"
+"stdout: TSV 'attractor count', a row per class of points.\n"
+"files: attractors.tsv 'attractor amplitude_m node' (index, amplitude at\n"
+"--node), basins.tsv 'y0_m z0_m attractor periods' (attractor: 1.. an\n"
+"orbit, 0 unsettled, -1 outside or reaching a clearance, -2 failed;\n"
+"periods: revolutions integrated), basins.png.\n"
 "exit status: 0 ok, 1 failed, 2 bad input.\n"};
 
 typedef struct bas_args {
@@ -207,9 +208,9 @@ static int classify(const bas_args *a, const whirl_fe_rotor *r, double Om, orbit
 }
 
 static void write_tables(FILE *fa, FILE *fb, const orbit *o, int no, const grid *g, int node) {
-  fprintf(fa, "class\tamplitude_m\tnode\n");
+  fprintf(fa, "attractor\tamplitude_m\tnode\n");
   for (int k = 0; k < no; ++k) fprintf(fa, "%d\t%.10g\t%d\n", k + 1, o[k].amp, node);
-  fprintf(fb, "y0_m\tz0_m\tclass\trevolutions\n");
+  fprintf(fb, "y0_m\tz0_m\tattractor\tperiods\n");
   for (size_t i = 0; i < g->n; ++i) {
     if (i > 0 && g->y0[i] != g->y0[i - 1]) fputc('\n', fb); /* gnuplot's scans */
     fprintf(fb, "%.10g\t%.10g\t%d\t%u\n", g->y0[i], g->z0[i], g->cls[i], g->revs[i]);
@@ -334,6 +335,7 @@ int cmd_rotor_basins(int argc, char **argv) {
   if (!rc && make_grid(&g, a.grid, a.range)) cli_error(CMD, "out of memory"), rc = 1;
   if (!rc) rc = classify(&a, r, Om, o, no, &g);
   if (!rc) rc = write_out(&a, r, Om, o, no, &g);
+  if (!rc) printf("attractor\tcount\n");
   if (!rc)
     for (int k = -2; k <= no; ++k) {
       size_t c = 0;

@@ -3,7 +3,7 @@
  * write its output directory as one transaction (outdir.h) with the
  * picture (run_plot.c):
  *
- *   branches.tsv   # BR PT TY LAB, parameters, norms, state, STAB per point
+ *   branches.tsv   branch pt type label, parameters, norms, state, stable (doc/tables.md)
  *   solutions      labelled solutions, full precision, restartable (IRS)
  *   run.log        diagnostics: settings, model, steps, stop reasons
  *   diagram.png    the bifurcation diagram (gnuplot), or basins.png
@@ -34,6 +34,8 @@ static void usage(FILE *f) {
           "command line, e.g. --DS=0.01 --ICP=[B] --out=dir.\n"
           "Output directory (default FILE's name with .out): branches.tsv,\n"
           "solutions, run.log, diagram.png.  The format: doc/run-files.md.\n"
+          "Paths (model, S, OUT) written in FILE are relative to FILE's directory\n"
+          "(the default output too); on the command line, to the current one.\n"
           "\n"
           "A parameter study (STUDY = {name: [values], ...}: study.tsv, a row a\n"
           "point) and basins (IPS = basins) resume from OUT.checkpoint when started\n"
@@ -64,13 +66,16 @@ typedef struct run_io_ctx {
   cli_progress progress;
 } run_io_ctx;
 
+/* the progress line is taken off before a message or a summary line (the
+ * terminal may show stdout too) and drawn again at the next progress */
 static void io_message(const char *line, void *ctx) {
-  (void)ctx;
+  cli_progress_clear(&((run_io_ctx *)ctx)->progress);
   cli_error("run", "%s", line);
 }
 static void io_summary(const char *line, void *ctx) {
-  const run_io_ctx *c = ctx;
-  if (!c->quiet) printf("%s\n", line);
+  run_io_ctx *c = ctx;
+  cli_progress_clear(&c->progress);
+  if (!c->quiet) printf("%s\n", line), fflush(stdout);
 }
 static FILE *io_open(const char *name, void *ctx) {
   return cli_outdir_fopen(&((run_io_ctx *)ctx)->od, name);
@@ -235,7 +240,7 @@ static int cmd_run_ranked(int argc, char **argv, int rank, int nranks) {
     free(ov);
     return 1;
   }
-  cli_progress_init(&c.progress, "basins", c.quiet);
+  cli_progress_init(&c.progress, "whirl run", c.quiet);
   const whirl_run_io io = {io_message, io_summary, io_open, io_close, io_progress, &c};
   whirl_run *r = whirl_run_alloc(models, &io);
   status = r ? whirl_run_load(r, file, ov, nov) : 1;

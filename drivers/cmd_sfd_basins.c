@@ -266,10 +266,10 @@ int cmd_sfd_basins(int argc, char **argv) {
   out_file fb, fa;
   int bad = cli_outdir_begin(&od, CMD, NULL, dir) != 0;
   if (!bad && !(bad = out_open(&fb, &od, "basins.tsv"))) {
+    fprintf(fb.fp, "y0\tz0\tvy0\tvz0\tattractor\tperiods\n");
     fprintf(fb.fp, "# whirl sfd basins: Omega=%.10g lambda=%.10g delta=%.10g zeta=%.10g velocities=%s "
                    "periods=%zu%s rtol=%g atol=%g\n",
             Om, p[1], p[2], p[3], vel, periods, fixed ? " (fixed horizon)" : "", rtol, atol);
-    fprintf(fb.fp, "y0\tz0\tvy0\tvz0\tattractor\tperiods\n");
     for (size_t i = 0; i < n; ++i) {
       const char *name = which[i] >= 0 ? whirl_sfd_attractors_info(A, (size_t)which[i])->name
                          : which[i] == WHIRL_BASIN_DOMAIN ? "contact"
@@ -280,7 +280,7 @@ int cmd_sfd_basins(int argc, char **argv) {
     bad = out_commit(&fb);
   }
   if (!bad && !(bad = out_open(&fa, &od, "attractors.tsv"))) {
-    fprintf(fa.fp, "attractor\tkind\teps_max\teps_min\trate\tlevel\n");
+    fprintf(fa.fp, "attractor\tclass\teps_max\teps_min\trate\tlevel\n");
     for (size_t j = 0; j < na; ++j) {
       const whirl_sfd_attractor_info *in = whirl_sfd_attractors_info(A, j);
       fprintf(fa.fp, "%s\t%s\t%.12g\t%.12g\t%.6g\t%.6g\n", in->name,

@@ -148,6 +148,20 @@ static int write_plots(cli_outdir *od, const whirl_sfd_periodic *ns,
   return out_commit(&o);
 }
 
+/* Progress of the continuation: the part of [omega_min, omega_max] the
+ * branch has covered (both halves from the start speed together). */
+typedef struct {
+  cli_progress prog;
+  double lo, hi, a, b;
+} branch_progress;
+
+static void on_point(size_t points, double omega, void *data) {
+  branch_progress *bp = data;
+  if (points == 1) bp->lo = bp->hi = omega;
+  bp->lo = fmin(bp->lo, omega), bp->hi = fmax(bp->hi, omega);
+  cli_progress_show(&bp->prog, (size_t)(1000.0 * (bp->hi - bp->lo) / (bp->b - bp->a)), 1000);
+}
+
 int cmd_sfd_nonsync(int argc, char **argv) {
   double p[WHIRL_SFD_NPAR];
   whirl_sfd_default_params(p);
@@ -214,7 +228,11 @@ int cmd_sfd_nonsync(int argc, char **argv) {
   if (orc) return orc;
   const double t0 = cli_now();
   whirl_sfd_periodic ns;
+  branch_progress bp = {.a = o.omega_min, .b = o.omega_max};
+  cli_progress_init(&bp.prog, "whirl sfd nonsync", quiet);
+  o.progress = on_point, o.progress_data = &bp;
   int rc = whirl_sfd_nonsync(p, w0, &o, &ns, msg, sizeof msg);
+  cli_progress_end(&bp.prog);
   if (rc != WHIRL_OK) {
     cli_error(CMD, "%s", msg);
     return 1;
@@ -237,6 +255,8 @@ int cmd_sfd_nonsync(int argc, char **argv) {
     if (have_sync) whirl_sfd_response_free(&sync);
     return 1;
   }
+  fprintf(fb.fp, "branch\tpt\ttype\tlabel\tOmega\tf2\tperiod\teps_max\teps_min\tstable\tn_unstable\t"
+                 "max_multiplier\tmult_re\tmult_im\tresidual\n");
   fprintf(fb.fp, "# whirl %s sfd nonsync: lambda=%.10g delta=%.10g zeta=%.10g, method %s", whirl_version(),
           p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA],
           whirl_sfd_method_name(o.method));
@@ -247,8 +267,6 @@ int cmd_sfd_nonsync(int argc, char **argv) {
                  "(second fixed-frame frequency over Omega); eps_max, eps_min = largest and "
                  "smallest eccentricity on the orbit; multipliers from the monodromy matrix "
                  "(trivial one removed); residual = max |F| of the discretised equations\n");
-  fprintf(fb.fp, "branch\tpt\ttype\tlabel\tOmega\tf2\tperiod\teps_max\teps_min\tstable\tn_unstable\t"
-                 "max_multiplier\tmult_re\tmult_im\tresidual\n");
   const char *hdr = "type\tbranch\tlabel\tOmega\tf2\tperiod\teps_max\teps_min\tstable\t"
                     "max_multiplier\tmeaning\n";
   fputs(hdr, fs.fp);

@@ -37,10 +37,10 @@ static int write_curve(cli_outdir *od, const char *name, const whirl_sfd_curve *
                        const char *what, double zeta, double W) {
   out_file o;
   if (out_open(&o, od, name)) return -1;
+  fprintf(o.fp, "lambda\tdelta\tOmega\teps\ttype\tresidual\n");
   fprintf(o.fp, "# whirl %s sfd region: %s; zeta = %.10g, W = %.10g; residual = largest "
                 "relative residual of the defining equations of eq. 15\n",
           whirl_version(), what, zeta, W);
-  fprintf(o.fp, "lambda\tdelta\tOmega\teps\ttype\tresidual\n");
   for (size_t i = 0; i < c->len; ++i)
     fprintf(o.fp, "%.12e\t%.12e\t%.12e\t%.12e\t%s\t%.1e\n", c->lambda[i], c->delta[i],
             c->Omega[i], c->eps[i], c->type[i] ? whirl_point_type_name(c->type[i]) : "-",

@@ -183,7 +183,7 @@ static int tab_from_periodic(tab *t, const whirl_sfd_periodic *res) {
 static int is_special(int type) { return type != WHIRL_PT_REGULAR; }
 
 static void print_special_header(FILE *f) {
-  fprintf(f, "type\tbranch\tlabel\tOmega\teps\tphase\tstable\tmax_multiplier\tfixed_frame\n");
+  fprintf(f, "type\tbranch\tlabel\tOmega\teps\tphase\tstable\tmax_multiplier\tmeaning\n");
 }
 
 static void print_special(FILE *f, const row *r, int type) {
@@ -460,6 +460,10 @@ int cmd_sfd_response(int argc, char **argv) {
     tab_free(&T);
     return 1;
   }
+  /* the header first, then the comments (doc/tables.md) */
+  fprintf(fb.fp, "branch\tpt\ttype\tlabel\tOmega\teps\tphase\tu\tv\tstable\tn_unstable\t"
+                 "max_multiplier\t%s\n",
+          periodic ? "mult_re\tmult_im\teps_min\tperiod\tresidual" : "mu_re\tmu_im");
   fprintf(fb.fp, "# whirl %s sfd response: lambda=%.10g delta=%.10g zeta=%.10g FE=%.10g "
                  "Omega in [%g, %g], method %s",
           whirl_version(), p[WHIRL_SFD_LAMBDA], p[WHIRL_SFD_DELTA], p[WHIRL_SFD_ZETA],
@@ -470,22 +474,17 @@ int cmd_sfd_response(int argc, char **argv) {
   else if (method == WHIRL_SFD_METHOD_COLLOC)
     fprintf(fb.fp, " (NTST %zu, NCOL %zu)", po.ntst, po.ncol);
   fprintf(fb.fp, "\n");
-  if (periodic) {
+  if (periodic)
     fprintf(fb.fp, "# fixed-frame periodic orbits: eps = LARGEST eccentricity |(y, z)| on the "
                    "orbit / clearance, eps_min the smallest; phase = angle by which the first "
                    "harmonic of y lags the unbalance (rad); u, v = first harmonic of y "
                    "(y1 = u cos Omega t - v sin Omega t); multipliers from the monodromy matrix "
                    "(variational equations); mult = the multiplier of largest modulus; "
                    "residual = max |F| of the discretised equations\n");
-    fprintf(fb.fp, "branch\tpt\ttype\tlabel\tOmega\teps\tphase\tu\tv\tstable\tn_unstable\t"
-                   "max_multiplier\tmult_re\tmult_im\teps_min\tperiod\tresidual\n");
-  } else {
+  else
     fprintf(fb.fp, "# eps = orbit radius / clearance; phase = beta of eqs. 16-17 (rad); "
                    "max_multiplier = max |exp(2 pi mu / Omega)|; mu = rotating-frame eigenvalue "
                    "of largest real part\n");
-    fprintf(fb.fp, "branch\tpt\ttype\tlabel\tOmega\teps\tphase\tu\tv\tstable\tn_unstable\t"
-                   "max_multiplier\tmu_re\tmu_im\n");
-  }
   print_special_header(fs.fp);
   print_special_header(stdout);
   size_t counts[8] = {0};

@@ -295,10 +295,10 @@ int cmd_sfd_simulate(int argc, char **argv) {
   }
   bad = out_open(&fh, &od, "history.tsv");
   if (!bad) {
+    fprintf(fh.fp, "t\ty\tz\tvy\tvz\teps\n");
     fprintf(fh.fp, "# whirl sfd simulate: Omega=%.10g lambda=%.10g delta=%.10g zeta=%.10g FE=%.10g "
                    "x0=(%g, %g, %g, %g) rtol=%g atol=%g method=%s\n",
             p[0], p[1], p[2], p[3], p[4], x0[0], x0[1], x0[2], x0[3], rtol, atol, method_name);
-    fprintf(fh.fp, "t\ty\tz\tvy\tvz\teps\n");
     for (size_t k = 0; k < h.got; ++k) {
       const double *x = h.buf + 4 * k;
       fprintf(fh.fp, "%.10g\t%.12g\t%.12g\t%.12g\t%.12g\t%.12g\n", (double)k * T / (double)samples,
@@ -307,8 +307,8 @@ int cmd_sfd_simulate(int argc, char **argv) {
     bad = out_commit(&fh);
   }
   if (!bad && !(bad = out_open(&fp, &od, "poincare.tsv"))) {
-    fprintf(fp.fp, "# stroboscopic section tau = k 2 pi / Omega; steady = 1 from period %zu\n", steady_from);
     fprintf(fp.fp, "k\tt\ty\tz\tvy\tvz\tsteady\n");
+    fprintf(fp.fp, "# stroboscopic section tau = k 2 pi / Omega; steady = 1 from period %zu\n", steady_from);
     for (size_t k = 0; k * samples < h.got; ++k) {
       const double *x = h.buf + 4 * k * samples;
       fprintf(fp.fp, "%zu\t%.10g\t%.12g\t%.12g\t%.12g\t%.12g\t%d\n", k, (double)k * T, x[0], x[1],
@@ -326,8 +326,8 @@ int cmd_sfd_simulate(int argc, char **argv) {
       fr = malloc(nf * sizeof *fr);
       am = malloc(nf * sizeof *am);
     }
-    fprintf(fs.fp, "# amplitude spectrum of y over periods %zu..%zu (Hann window); frequency in "
-                   "units of the rotation frequency\nfrequency\tamplitude\n", steady_from, periods);
+    fprintf(fs.fp, "frequency\tamplitude\n# amplitude spectrum of y over periods %zu..%zu (Hann "
+                   "window); frequency in units of the rotation frequency\n", steady_from, periods);
     if (fr && am && whirl_spectrum(y, m, 1.0 / (double)samples, fr, am, nf, &nf) == WHIRL_OK)
       for (size_t k = 0; k < nf && fr[k] <= 4.0; ++k)
         fprintf(fs.fp, "%.8g\t%.8g\n", fr[k], am[k]);

@@ -229,9 +229,9 @@ int cmd_sfd_sweep(int argc, char **argv) {
     return 1;
   }
   const char *hdr = "direction\tOmega\tclass\teps_max\teps_min\tperiods\teps_eq15\tdiff\n";
+  fputs(hdr, fs.fp);
   fprintf(fs.fp, "# whirl sfd sweep: lambda=%.10g delta=%.10g zeta=%.10g, step %g, at most %zu periods "
                  "per speed, settle %g, rtol %g atol %g\n", p[1], p[2], p[3], step, periods, settle, rtol, atol);
-  fputs(hdr, fs.fp);
   fputs(hdr, stdout);
   fprintf(fp.fp, "direction\tOmega\ty\tz\tvy\tvz\n");
   const size_t SPP = 64;
@@ -329,7 +329,9 @@ int cmd_sfd_sweep(int argc, char **argv) {
 #define ROW_FMT "%s\t%.10g\t%s\t%.12g\t%.12g\t%zu\t%.12g\t%.3e\n"
       double emax = strcmp(cls, "contact") ? rcx.emax : 1.0, emin = strcmp(cls, "contact") ? rcx.emin : NAN;
       fprintf(fs.fp, ROW_FMT, dname, Om, cls, emax, emin, used, e15, diff);
+      cli_progress_clear(&prog); /* stdout may be the same terminal */
       printf(ROW_FMT, dname, Om, cls, emax, emin, used, e15, diff);
+      fflush(stdout);
       for (size_t k = 0; k < rcx.np && strcmp(cls, "contact"); ++k)
         fprintf(fp.fp, "%s\t%.10g\t%.12g\t%.12g\t%.12g\t%.12g\n", dname, Om, P[4 * k],
                 P[4 * k + 1], P[4 * k + 2], P[4 * k + 3]);

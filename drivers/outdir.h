@@ -62,6 +62,10 @@ FILE *cli_outdir_fopen(cli_outdir *d, const char *name);
 /* Close a stream of cli_outdir_fopen, checking every write: 0 or -1. */
 int cli_outdir_fclose(cli_outdir *d, FILE *f, const char *name);
 
+/* The most pictures one command draws with one gnuplot process
+ * (cli_outdir_finish; more are drawn one by one). */
+#define CLI_MAX_PICTURES 8
+
 /* Record NAME, a file another program wrote into the stage, as whirl's. */
 int cli_outdir_record(cli_outdir *d, const char *name);
 

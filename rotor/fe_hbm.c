@@ -307,6 +307,7 @@ void whirl_fe_hbm_free(whirl_fe_hbm *h) {
   free(h->q);
   free(h->Jnl);
   free(h->qfull);
+  free(h->hill_start);
   free(h->xsi);
   free(h);
 }

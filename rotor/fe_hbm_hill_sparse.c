@@ -9,7 +9,9 @@
  * OP = (L − σB)⁻¹ B (mode 1, which = "LM") has the eigenvalues
  * θ = 1/(λ − σ), and (L − σB) y = b is one sparse solve of order ndof·L:
  *   P y1 = −b2 − (A1 + σ A2) b1,  y2 = b1 + σ y1,  P = A0 + σ A1 + σ² A2
- * (UMFPACK through whirl/linsol.h, once per orbit).  A0, A1, A2 keep the
+ * (once per orbit: condensed onto the nonlinear DOFs by fe_hbm_shift.c
+ * when the harmonic balance is condensed, else UMFPACK through
+ * whirl/linsol.h).  A0, A1, A2 keep the
  * sparsity of K, C + ΩG, M per harmonic, the derivative ∇ coupling a_k with
  * b_k, and a dense (m L)² block of the nonlinear elements.
  *
@@ -59,7 +61,9 @@ typedef struct hill_op {
   int NH;
   double sigma;
   whirl_fe_csc A2, A1s;  /* M_H and A1 + σ A2 */
-  whirl_linsol *ls;      /* P = A0 + σ A1 + σ² A2 */
+  whirl_linsol *ls;      /* P = A0 + σ A1 + σ² A2 (uncondensed) */
+  fe_lin *lin;           /* condensed: P solved by fe_shift */
+  fe_shift sh;
   double *t;             /* NH */
 } hill_op;
 
@@ -115,11 +119,39 @@ static void op_free(hill_op *o) {
   fe_csc_free(&o->A2);
   fe_csc_free(&o->A1s);
   whirl_linsol_free(o->ls);
+  if (o->lin) fe_shift_free(&o->sh);
   free(o->t);
 }
 
-static int op_init(hill_op *o, const whirl_fe_hbm *h, double Omega,
-                   double sigma) {
+/* P = A0 + σ A1 + σ² A2 assembled and factorised by UMFPACK. */
+static int op_factor_sparse(hill_op *o, const whirl_fe_csc *CH,
+                            const whirl_fe_csc *KH, int nd, double w) {
+  double sigma = o->sigma;
+  fe_trip t;
+  fe_trip_init(&t, o->NH);
+  /* P = K_H + C_H∇ + M_H∇² + σ(C_H + 2 M_H∇) + σ² M_H */
+  fe_trip_add_csc(&t, KH, 1.0, 0, 0);
+  add_nabla(&t, CH, 1.0, nd, w);
+  add_nabla2(&t, &o->A2, 1.0, nd, w);
+  fe_trip_add_csc(&t, CH, sigma, 0, 0);
+  add_nabla(&t, &o->A2, 2 * sigma, nd, w);
+  fe_trip_add_csc(&t, &o->A2, sigma * sigma, 0, 0);
+  whirl_fe_csc P;
+  memset(&P, 0, sizeof P);
+  int rc = fe_trip_to_csc(&t, &P);
+  if (!rc) o->ls = whirl_linsol_alloc_sparse((size_t)o->NH, P.p, P.i);
+  /* Arnoldi corrects its own basis: refinement halved the whole response's
+   * time on compressor.rotor and changed no digit of branches.tsv */
+  if (o->ls) whirl_linsol_set_refinement(o->ls, 0);
+  if (!rc) rc = o->ls ? whirl_linsol_factor(o->ls, P.x) : WHIRL_ENOMEM;
+  fe_csc_free(&P);
+  return rc;
+}
+
+/* The operator at shift σ: M_H and A1 + σ A2 for the products, P's
+ * factorisation condensed onto the nonlinear DOFs (fe_hbm_shift.c) when
+ * the harmonic balance is condensed, else a sparse LU of P. */
+static int op_init(hill_op *o, whirl_fe_hbm *h, double Omega, double sigma) {
   int nd = h->r->ndof;
   double w = Omega / h->o.nu;
   whirl_fe_csc CH, KH;
@@ -130,33 +162,26 @@ static int op_init(hill_op *o, const whirl_fe_hbm *h, double Omega,
   o->sigma = sigma;
   int rc = operator_csc(h, 0, Omega, &o->A2);
   if (!rc) rc = operator_csc(h, 1, Omega, &CH);
-  if (!rc) rc = operator_csc(h, 2, Omega, &KH);
-  fe_trip t, u;
-  fe_trip_init(&t, o->NH);
+  if (!rc && !h->lin.condensed) rc = operator_csc(h, 2, Omega, &KH);
+  fe_trip u;
   fe_trip_init(&u, o->NH);
-  if (!rc) { /* P = K_H + C_H∇ + M_H∇² + σ(C_H + 2 M_H∇) + σ² M_H */
-    fe_trip_add_csc(&t, &KH, 1.0, 0, 0);
-    add_nabla(&t, &CH, 1.0, nd, w);
-    add_nabla2(&t, &o->A2, 1.0, nd, w);
-    fe_trip_add_csc(&t, &CH, sigma, 0, 0);
-    add_nabla(&t, &o->A2, 2 * sigma, nd, w);
-    fe_trip_add_csc(&t, &o->A2, sigma * sigma, 0, 0);
-    fe_trip_add_csc(&u, &CH, 1.0, 0, 0); /* A1 + σ A2 */
+  if (!rc) { /* A1 + σ A2 */
+    fe_trip_add_csc(&u, &CH, 1.0, 0, 0);
     add_nabla(&u, &o->A2, 2.0, nd, w);
     fe_trip_add_csc(&u, &o->A2, sigma, 0, 0);
   }
-  whirl_fe_csc P;
-  memset(&P, 0, sizeof P);
-  int r1 = fe_trip_to_csc(&t, &P), r2 = fe_trip_to_csc(&u, &o->A1s);
-  if (!rc) rc = r1 ? r1 : r2;
+  int r2 = fe_trip_to_csc(&u, &o->A1s);
+  if (!rc) rc = r2;
   o->t = malloc((size_t)o->NH * sizeof *o->t);
   if (!rc && !o->t) rc = WHIRL_ENOMEM;
-  if (!rc) o->ls = whirl_linsol_alloc_sparse((size_t)o->NH, P.p, P.i);
-  /* Arnoldi corrects its own basis: refinement halved the whole response's
-   * time on compressor.rotor and changed no digit of branches.tsv */
-  if (o->ls) whirl_linsol_set_refinement(o->ls, 0);
-  if (!rc) rc = o->ls ? whirl_linsol_factor(o->ls, P.x) : WHIRL_ENOMEM;
-  fe_csc_free(&P);
+  if (!rc && h->lin.condensed) {
+    o->lin = &h->lin;
+    rc = fe_shift_init(&o->sh, &h->lin);
+    if (rc) o->lin = NULL;
+    else rc = fe_shift_factor(&o->sh, &h->lin, Omega, w, sigma, h->Jnl);
+  } else if (!rc) {
+    rc = op_factor_sparse(o, &CH, &KH, nd, w);
+  }
   fe_csc_free(&CH);
   fe_csc_free(&KH);
   return rc;
@@ -171,26 +196,47 @@ static int op_apply(hill_op *o, const double *x, double *y) {
   fe_csc_gemv(&o->A2, 1.0, x2, o->t); /* b2 = A2 x2, b1 = x1 */
   for (int k = 0; k < n; ++k) y1[k] = -o->t[k];
   fe_csc_gemv(&o->A1s, -1.0, x1, y1);
-  int rc = whirl_linsol_solve(o->ls, y1, 1, 0);
+  int rc = o->lin ? fe_shift_solve(&o->sh, o->lin, y1)
+                  : whirl_linsol_solve(o->ls, y1, 1, 0);
   for (int k = 0; k < n; ++k) y2[k] = x1[k] + o->sigma * y1[k];
   return rc;
 }
 
-/* dnaupd's reverse communication, then the Ritz values (no vectors). */
-static int arnoldi(hill_op *o, int nev, double *dr, double *di, int *nconv) {
+/* The next start: the sum of the Ritz vectors z[N × nconv] (the wanted
+ * invariant subspace of this orbit), normalised. */
+static void next_start(double *start, const double *z, int N, int nconv) {
+  double s = 0;
+  memset(start, 0, (size_t)N * sizeof *start);
+  for (int j = 0; j < nconv; ++j)
+    for (int i = 0; i < N; ++i) start[i] += z[i + (size_t)N * j];
+  for (int i = 0; i < N; ++i) s += start[i] * start[i];
+  s = sqrt(s);
+  for (int i = 0; s > 0 && i < N; ++i) start[i] /= s;
+}
+
+/* dnaupd's reverse communication from start (when *warm; ARPACK's random
+ * start else), then the Ritz values and, for the next orbit's start, the
+ * sum of the Ritz vectors.  Along a branch the wanted invariant subspace
+ * moves little from point to point: a Krylov space grown from a vector in
+ * it is nearly invariant after nev steps, so the warm start saves most of
+ * the restarts (Saad, Numerical Methods for Large Eigenvalue Problems,
+ * 2nd ed., SIAM 2011, §4.3, §7.1).  A poor start costs only restarts. */
+static int arnoldi(hill_op *o, int nev, double *start, int *warm, double *dr,
+                   double *di, int *nconv) {
   int N = 2 * o->NH, ncv = 2 * nev + 1 > 20 ? 2 * nev + 1 : 20;
   if (ncv > N) ncv = N;
-  int lworkl = 3 * ncv * ncv + 6 * ncv, ido = 0, info = 0;
+  int lworkl = 3 * ncv * ncv + 6 * ncv, ido = 0, info = *warm ? 1 : 0;
   int iparam[11] = {0}, ipntr[14] = {0};
   double tol = 1e-12, *resid = calloc((size_t)N, sizeof *resid);
   double *v = malloc((size_t)N * ncv * sizeof *v);
   double *workd = malloc(3 * (size_t)N * sizeof *workd);
   double *workl = malloc((size_t)lworkl * sizeof *workl);
   double *workev = malloc(3 * (size_t)ncv * sizeof *workev);
-  double *z = malloc((size_t)N * (nev + 1) * sizeof *z); /* not referenced */
+  double *z = malloc((size_t)N * (nev + 1) * sizeof *z);
   int *select = malloc((size_t)ncv * sizeof *select), rc = WHIRL_OK;
   if (!resid || !v || !workd || !workl || !workev || !select || !z)
     rc = WHIRL_ENOMEM;
+  if (!rc && *warm) memcpy(resid, start, (size_t)N * sizeof *resid);
   iparam[0] = 1;    /* exact shifts */
   iparam[2] = 1000; /* restarts */
   iparam[6] = 1;    /* mode 1 on OP */
@@ -203,13 +249,18 @@ static int arnoldi(hill_op *o, int nev, double *dr, double *di, int *nconv) {
   if (!rc && (info < 0 || (info == 1 && iparam[4] == 0)))
     rc = info == 1 ? WHIRL_EMAXITER : WHIRL_ELAPACK;
   if (!rc) {
-    const int rvec = 0;
+    const int rvec = 1;
     const double sr = 0, si = 0;
     dneupd_(&rvec, "A", select, dr, di, z, &N, &sr, &si, workev, "I", &N,
             "LM", &nev, &tol, resid, &ncv, v, &N, iparam, ipntr, workd, workl,
             &lworkl, &info, 1, 1, 2);
     if (info != 0) rc = WHIRL_ELAPACK;
     *nconv = iparam[4];
+  }
+  *warm = 0;
+  if (!rc && *nconv > 0) {
+    next_start(start, z, N, *nconv < nev ? *nconv : nev);
+    *warm = 1;
   }
   free(resid); free(v); free(workd); free(workl); free(workev); free(select);
   free(z);
@@ -232,7 +283,14 @@ int fe_hill_sparse(whirl_fe_hbm *h, const double *qfull, const double *p,
   if (!dr) return WHIRL_ENOMEM;
   int nconv = 0;
   rc = op_init(&o, h, Omega, sigma);
-  if (!rc) rc = arnoldi(&o, (int)nev, dr, dr + nev + 1, &nconv);
+  if (!rc && !h->hill_start) {
+    h->hill_start = malloc((size_t)o.NH * 2 * sizeof *h->hill_start);
+    h->hill_warm = 0;
+    if (!h->hill_start) rc = WHIRL_ENOMEM;
+  }
+  if (!rc)
+    rc = arnoldi(&o, (int)nev, h->hill_start, &h->hill_warm, dr, dr + nev + 1,
+                 &nconv);
   op_free(&o);
   size_t k = 0;
   for (int j = 0; !rc && j < nconv && j < (int)nev; ++j) {

@@ -94,6 +94,13 @@ int fe_band_solve(fe_band *b, int transpose, int nrhs, double complex *B);
  * this (beam rotors: 14–22); wider patterns go to UMFPACK. */
 #define FE_BAND_MAX 64
 
+/* A factorisation of the interior block D_ll (fe_hbm_lin.c): banded or
+ * UMFPACK's numeric object, on the pattern of an fe_lin. */
+typedef struct fe_ilu {
+  fe_band band;
+  void *numeric;
+} fe_ilu;
+
 /* Per harmonic k = 0..H, the complex b×b dynamic stiffness Z_k (condensed:
  * the Schur complement of D_k onto the nonlinear DOFs; else D_k itself),
  * its derivative in Ω, and the forces g per unit unbalance (harmonic ν) and
@@ -122,8 +129,8 @@ typedef struct fe_lin {
   double complex *rhs;                 /* ni × (2m + 1) right-hand sides */
   int interior_lu;                     /* whirl_fe_hbm_options' */
   int use_band, k0_done;               /* k = 0 does not depend on Ω */
-  fe_band band;
-  void *symbolic, *numeric;
+  fe_ilu lu;
+  void *symbolic;
   double control[20]; /* UMFPACK_CONTROL (20, checked in fe_hbm_lin.c):
                          no iterative refinement */
   double complex *Xk;                  /* (H+1) ni·m: D_ll⁻¹ D_ln */
@@ -138,10 +145,44 @@ int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed,
 void fe_lin_free(fe_lin *l);
 /* Z, dZ, g at speed Omega (cached); WHIRL_OK or an error, message in err */
 int fe_lin_update(fe_lin *l, double Omega);
+/* Interior factorisations on l's pattern beyond l's own (fe_hbm_shift.c):
+ * init (after fe_lin_init), factor from values Dv on the union pattern
+ * (l->nnz), solve B (ni × nrhs) in place with D_ll or its transpose. */
+int fe_ilu_init(const fe_lin *l, fe_ilu *f);
+void fe_ilu_free(fe_ilu *f);
+int fe_ilu_factor(fe_lin *l, fe_ilu *f, const double complex *Dv);
+int fe_ilu_solve(fe_lin *l, fe_ilu *f, int transpose, int nrhs,
+                 double complex *B);
+
 /* All ndof coefficients q[ndof L] from the b-block vector x[b L] (SI),
  * unb the unbalance scale. */
 int fe_lin_recover(fe_lin *l, double Omega, double unb, const double *x,
                    double *q);
+
+/* The Hill matrix at a real shift σ condensed onto the nonlinear DOFs
+ * (fe_hbm_shift.c): H + 1 interior factorisations at s_k = σ + i kω and
+ * the dense real Schur complement S of order m (2H + 1). */
+typedef struct fe_shift {
+  int H;
+  fe_ilu *lu;             /* H + 1 */
+  double complex *Dn;     /* (H + 1) nnlq: D(s_k) on the nonlinear rows */
+  double complex *X;      /* (H + 1) ni m: D_ll⁻¹ D_ln */
+  double complex *T;      /* (H + 1) ni: interior solutions of a solve */
+  double *S;              /* (m L)², its LU */
+  int *ipiv;
+  double complex *Dv;     /* nnz: D(s_k) on the union pattern */
+  double *g;              /* m L */
+  double complex *Z;      /* m² + 2m work */
+} fe_shift;
+
+int fe_shift_init(fe_shift *s, const fe_lin *l);
+void fe_shift_free(fe_shift *s);
+/* Factor P(σ) at speed Omega, response frequency w, with AFT's three
+ * operators J3 (FE_AFT_HILL); message in l->err. */
+int fe_shift_factor(fe_shift *s, fe_lin *l, double Omega, double w,
+                    double sigma, const double *J3);
+/* y[ndof L] := P(σ)⁻¹ y (real harmonic form over all DOFs). */
+int fe_shift_solve(fe_shift *s, fe_lin *l, double *y);
 
 /* ----------------------------------------------------------- the object */
 
@@ -158,6 +199,9 @@ struct whirl_fe_hbm {
                                     (m L)² (3 (m L)² for Hill) */
   double *qfull;           /* ndof L, for the spectrum */
   double *xsi;             /* b L: the unknowns in metres */
+  double *hill_start;      /* 2 ndof L: the sparse Hill method's next
+                              Arnoldi start (fe_hbm_hill_sparse.c) */
+  int hill_warm;           /* hill_start holds one */
   char errmsg[512];
 };
 

@@ -94,12 +94,12 @@ static int interior_pattern(fe_lin *l) {
     l->Lp[l->inv[c] + 1] = nz;
   }
   if (ni == 0) return WHIRL_OK;
-  int rc = fe_band_init(&l->band, ni, l->Lp, l->Li);
+  int rc = fe_band_init(&l->lu.band, ni, l->Lp, l->Li);
   if (rc) return rc;
   l->use_band = l->interior_lu == 1 ||
-                (l->interior_lu == 0 && l->band.kl + l->band.ku <= FE_BAND_MAX);
+                (l->interior_lu == 0 && l->lu.band.kl + l->lu.band.ku <= FE_BAND_MAX);
   if (l->use_band) return WHIRL_OK;
-  fe_band_free(&l->band);
+  fe_band_free(&l->lu.band);
   /* UMFPACK's default two steps of iterative refinement per solve cost more
    * than the solve; the interior block is well conditioned away from the
    * held rotor's resonances, and condensed = uncondensed to 1e-14 without
@@ -172,9 +172,8 @@ int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed,
 }
 
 void fe_lin_free(fe_lin *l) {
-  if (l->numeric) umfpack_zi_free_numeric(&l->numeric);
+  fe_ilu_free(&l->lu);
   if (l->symbolic) umfpack_zi_free_symbolic(&l->symbolic);
-  fe_band_free(&l->band);
   void *p[] = {l->nlq, l->nlcol, l->Dv, l->dDv, l->Lv, l->rhs, l->pos, l->Z, l->dZ, l->gu, l->dgu, l->g0, l->Up, l->Ui,
                l->Kx, l->Mx, l->Cx, l->Gx, l->inv, l->Lp, l->Li, l->Lmap,
                l->Lx, l->Lz, l->Xk, l->yk, l->w1, l->w2, l->w3, l->br};
@@ -221,40 +220,50 @@ static double complex vdot(const double complex *v, const double complex *x,
 
 /* ---------------------------------------------------- the interior block */
 
-/* Factor D_ll at the values of values(): banded LU or UMFPACK. */
-static int interior_factor(fe_lin *l, int k, double Omega) {
+/* A factorisation of the interior block on the pattern of l: a banded LU
+ * or UMFPACK's numeric object (the symbolic one is l's). */
+int fe_ilu_init(const fe_lin *l, fe_ilu *f) {
+  memset(f, 0, sizeof *f);
+  if (!l->use_band || l->ni == 0) return WHIRL_OK;
+  return fe_band_init(&f->band, l->ni, l->Lp, l->Li);
+}
+
+void fe_ilu_free(fe_ilu *f) {
+  if (f->numeric) umfpack_zi_free_numeric(&f->numeric);
+  fe_band_free(&f->band);
+  memset(f, 0, sizeof *f);
+}
+
+/* Factor D_ll from the values Dv on l's union pattern. */
+int fe_ilu_factor(fe_lin *l, fe_ilu *f, const double complex *Dv) {
   int nzl = l->Lp[l->ni], st;
   if (l->use_band) {
-    for (int q = 0; q < nzl; ++q) l->Lv[q] = l->Dv[l->Lmap[q]];
-    st = fe_band_factor(&l->band, l->Lp, l->Lv);
-    if (st == WHIRL_OK) return WHIRL_OK;
-  } else {
-    for (int q = 0; q < nzl; ++q) {
-      l->Lx[q] = creal(l->Dv[l->Lmap[q]]);
-      l->Lz[q] = cimag(l->Dv[l->Lmap[q]]);
-    }
-    if (l->numeric) umfpack_zi_free_numeric(&l->numeric);
-    st = umfpack_zi_numeric(l->Lp, l->Li, l->Lx, l->Lz, l->symbolic,
-                            &l->numeric, l->control, NULL);
-    if (st == UMFPACK_OK) return WHIRL_OK;
-    st = st == UMFPACK_WARNING_singular_matrix ? WHIRL_ESINGULAR : WHIRL_ESPARSE;
+    for (int q = 0; q < nzl; ++q) l->Lv[q] = Dv[l->Lmap[q]];
+    return fe_band_factor(&f->band, l->Lp, l->Lv);
   }
-  snprintf(l->err, sizeof l->err,
-           "the rotor with its nonlinear DOFs held is singular at harmonic "
-           "%d, Omega = %g rad/s", k, Omega);
-  return st;
+  for (int q = 0; q < nzl; ++q) {
+    l->Lx[q] = creal(Dv[l->Lmap[q]]);
+    l->Lz[q] = cimag(Dv[l->Lmap[q]]);
+  }
+  if (f->numeric) umfpack_zi_free_numeric(&f->numeric);
+  st = umfpack_zi_numeric(l->Lp, l->Li, l->Lx, l->Lz, l->symbolic,
+                          &f->numeric, l->control, NULL);
+  if (st == UMFPACK_OK) return WHIRL_OK;
+  return st == UMFPACK_WARNING_singular_matrix ? WHIRL_ESINGULAR : WHIRL_ESPARSE;
 }
 
 /* B (ni × nrhs) := D_ll⁻¹ B, or D_ll⁻ᵀ B (the plain transpose). */
-static int interior_solve(fe_lin *l, int transpose, int nrhs,
-                          double complex *B) {
-  if (l->use_band) return fe_band_solve(&l->band, transpose, nrhs, B);
+int fe_ilu_solve(fe_lin *l, fe_ilu *f, int transpose, int nrhs,
+                 double complex *B) {
+  if (l->use_band) return fe_band_solve(&f->band, transpose, nrhs, B);
   int ni = l->ni, sys = transpose ? UMFPACK_Aat : UMFPACK_A;
   for (int r = 0; r < nrhs; ++r) {
     double complex *x = B + (size_t)ni * r;
     for (int i = 0; i < ni; ++i) { l->br[i] = creal(x[i]); l->bz[i] = cimag(x[i]); }
+    /* without iterative refinement (control) UMFPACK reads only the
+     * numeric factors, not the values: other factorisations may reuse Lx */
     int st = umfpack_zi_solve(sys, l->Lp, l->Li, l->Lx, l->Lz, l->xr, l->xz,
-                              l->br, l->bz, l->numeric, l->control, NULL);
+                              l->br, l->bz, f->numeric, l->control, NULL);
     if (st != UMFPACK_OK && st != UMFPACK_WARNING_singular_matrix) {
       snprintf(l->err, sizeof l->err, "UMFPACK solve: status %d", st);
       return WHIRL_ESPARSE;
@@ -262,6 +271,21 @@ static int interior_solve(fe_lin *l, int transpose, int nrhs,
     for (int i = 0; i < ni; ++i) x[i] = l->xr[i] + I * l->xz[i];
   }
   return WHIRL_OK;
+}
+
+/* Factor D_ll of harmonic k at the values of values(). */
+static int interior_factor(fe_lin *l, int k, double Omega) {
+  int st = fe_ilu_factor(l, &l->lu, l->Dv);
+  if (st == WHIRL_OK) return WHIRL_OK;
+  snprintf(l->err, sizeof l->err,
+           "the rotor with its nonlinear DOFs held is singular at harmonic "
+           "%d, Omega = %g rad/s", k, Omega);
+  return st;
+}
+
+static int interior_solve(fe_lin *l, int transpose, int nrhs,
+                          double complex *B) {
+  return fe_ilu_solve(l, &l->lu, transpose, nrhs, B);
 }
 
 /* Full-length column u[ndof] = [−x; e_j] from the interior solution x. */

@@ -254,6 +254,8 @@ static void cont_defaults(whirl_cont_options *co,
   co->detect_bp = 0; /* cycles of a forced system: no symmetry-breaking
                         branches are sought here */
   co->linsol = o->linsol;
+  co->progress = o->progress;
+  co->progress_ctx = o->progress_data;
   /* collocation Jacobians are sparse (block bidiagonal plus borders) */
   if (o->method == WHIRL_SFD_METHOD_COLLOC) co->linsol = WHIRL_LINSOL_SPARSE;
   co->newton_tol = 1e-12; /* the paper: residual below 7e-14 */

@@ -149,14 +149,25 @@ double whirl_branch_distance(const whirl_branch *b, const double *x,
   return best;
 }
 
-int whirl_cont_run(whirl_cont *c, whirl_branch *b) {
+/* whirl_cont_run, telling opt->progress (if any) of each point; *points
+ * counts the points of the whole branch. */
+static int run_told(whirl_cont *c, whirl_branch *b, const whirl_cont_options *opt,
+                    size_t *points) {
   int rc;
   while ((rc = whirl_cont_step(c)) == WHIRL_OK) {
-    int r = whirl_branch_append(b, whirl_cont_point(c));
+    const whirl_point *pt = whirl_cont_point(c);
+    int r = whirl_branch_append(b, pt);
     if (r != WHIRL_OK) return r;
+    ++*points;
+    if (opt && opt->progress) opt->progress(*points, pt->p[opt->icp], opt->progress_ctx);
   }
   if (rc == WHIRL_DONE) b->stop_reason = whirl_cont_stop_reason(c);
   return rc;
+}
+
+int whirl_cont_run(whirl_cont *c, whirl_branch *b) {
+  size_t points = 0;
+  return run_told(c, b, NULL, &points);
 }
 
 static void accumulate(whirl_cont_stats *acc, const whirl_cont_stats *s) {
@@ -179,11 +190,12 @@ int whirl_trace_branch(const whirl_system *sys, const whirl_cont_options *opt,
   if (!c) return WHIRL_EINVAL;
   whirl_branch *half[2] = {NULL, NULL};
   int rc = WHIRL_ENOMEM, reasons[2] = {0, 0};
+  size_t points = 0;
   for (int h = 0; h < 2; ++h) {
     half[h] = whirl_branch_alloc(sys->n, sys->npar, sys->nspec, opt->icp);
     if (!half[h]) goto done;
     rc = whirl_cont_start(c, x0, p0, h == 0 ? -1 : +1);
-    if (rc == WHIRL_OK) rc = whirl_cont_run(c, half[h]);
+    if (rc == WHIRL_OK) rc = run_told(c, half[h], opt, &points);
     accumulate(stats, whirl_cont_get_stats(c));
     whirl_cont_reset_stats(c);
     if (rc < 0) {

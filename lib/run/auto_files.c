@@ -59,7 +59,7 @@ typedef struct run {
   int icp[16]; /* 1-based; 11 of orbits: the period */
   size_t nicp;
   table t;
-  char mname[64]; /* the L2-NORM column's name in branches.tsv (IPLT) */
+  char mname[64]; /* AUTO's name of the L2-NORM column (IPLT) */
 } run;
 
 static int named(const whirl_auto_constants *ac, const char *name) {
@@ -68,6 +68,23 @@ static int named(const whirl_auto_constants *ac, const char *name) {
     if (whirl_auto_constants_item(ac, "parnames", i, &it) == WHIRL_OK && !strcmp(it.text, name))
       return it.index;
   return !strcmp(name, "PERIOD") || !strcmp(name, "Period") ? 11 : 0;
+}
+
+/* AUTO's name of the second column (io.f90, HEADNG) under IPLT: L2-NORM,
+ * or U(i), MAX U(i), MIN U(i), INTEGRAL U(i), L2-NORM U(i) with the state's
+ * names (unames). */
+static void measure_name(run *R) {
+  int ip = 0;
+  const long n = R->o->ndim;
+  whirl_auto_constants_int(R->o->ac, "IPLT", &ip);
+  snprintf(R->mname, sizeof R->mname, "L2-NORM");
+  if (ip == 0 || ip < -n || ip > 3 * n) return;
+  const long i = (ip < 0 ? -ip : ip > 2 * n ? ip - 2 * n : ip > n ? ip - n : ip) - 1;
+  char x[40];
+  if (R->o->x_names) snprintf(x, sizeof x, "%.39s", R->o->x_names[i]);
+  else snprintf(x, sizeof x, "U(%ld)", i + 1);
+  const char *pre = ip > 2 * n ? "L2-NORM " : ip > n ? "INTEGRAL " : !R->orbit ? "" : ip > 0 ? "MAX " : "MIN ";
+  snprintf(R->mname, sizeof R->mname, "%s%s", pre, x);
 }
 
 static void read_icp(run *R) {
@@ -83,6 +100,7 @@ static void read_icp(run *R) {
     if (k > 0) R->icp[R->nicp++] = k;
   }
   if (!R->nicp) R->icp[R->nicp++] = 1;
+  measure_name(R);
 }
 
 static void table_free(table *t) {
@@ -119,15 +137,11 @@ static int read_table(run *R, char *msg, size_t len) {
   }
   R->t.nv = R->o->npar + (size_t)R->orbit + 1 + (size_t)R->o->ndim;
   int rc = WHIRL_OK, lineno = 0;
-  snprintf(R->mname, sizeof R->mname, "L2-NORM");
   while (rc == WHIRL_OK && fgets(line, sizeof line, f)) {
     lineno++;
-    if (line[0] == '#' && lineno == 1) { /* the header: the measure's name */
-      char *save = NULL, *w = strtok_r(line, "\t\n", &save);
-      for (size_t c = 0; w && c < 4 + R->o->npar + (size_t)R->orbit; c++) w = strtok_r(NULL, "\t\n", &save);
-      if (w) snprintf(R->mname, sizeof R->mname, "%.63s", w);
-    }
-    if (line[0] == '#' || line[0] == '\n') continue;
+    /* the header (the first line), comments, blank lines */
+    if (line[0] == '#' || line[0] == '\n' || (lineno == 1 && !strncmp(line, "branch\t", 7)))
+      continue;
     row *r = realloc(R->t.r, (R->t.n + 1) * sizeof *r);
     if (!r) rc = WHIRL_ENOMEM;
     else {

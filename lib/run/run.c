@@ -2,7 +2,7 @@
  * the run asks for out of the library's constructors, continue it and
  * write the branch table, the labelled solutions and the log:
  *
- *   branches.tsv   # BR PT TY LAB, parameters, norms, state, STAB per point
+ *   branches.tsv   branch pt type label, parameters, norms, state, stable (doc/tables.md)
  *   solutions      labelled solutions, full precision, restartable (IRS)
  *   run.log        diagnostics: settings, model, steps, stop reasons
  *
@@ -208,7 +208,16 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
   so.nx = b->nb;
   so.par = pfull;
   so.x = (double *)pt->x;
-  so.tan = (b->fold || b->hopf) ? NULL : (double *)pt->t;
+  /* the tangent in AUTO's convention: the motion along the branch is DS
+   * times it, so it is the motion times the sign of this run's DS, and a
+   * restart moves along DS times it (run_tangent_start) */
+  double *tan = NULL;
+  if (!b->fold && !b->hopf && pt->t) {
+    const double sg = (b->dir_sign ? b->dir_sign : s->ds < 0 ? -1 : 1) < 0 ? -1.0 : 1.0;
+    if (!(tan = malloc((b->nb + 1) * sizeof *tan))) return -1;
+    for (size_t i = 0; i <= b->nb; i++) tan[i] = sg * pt->t[i];
+  }
+  so.tan = tan;
   so.stable = pt->stable;
   if (b->kind == WHIRL_SOL_COLLOC) {
     so.ncol = s->ncol;
@@ -216,7 +225,9 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
     so.ntst = (int)((b->nb - (R->prob.autonomous ? 1 : 0)) / R->n - 1) / s->ncol;
   }
   if (b->kind == WHIRL_SOL_HBM) so.nhb = s->nhb;
-  if (whirl_solution_write(R->sols, &so)) return -1;
+  const int wrc = whirl_solution_write(R->sols, &so);
+  free(tan);
+  if (wrc) return -1;
   if (type != WHIRL_PT_REGULAR && type != WHIRL_PT_EP) {
     fprintf(R->log, "  %s  LAB %d  PT %zu  %s = %.10g", ty, lab, pt->index,
             R->pnames[b->icp], pt->p[b->icp]);
@@ -286,6 +297,23 @@ static void branch_summary(run_ctx *R, const branch_spec *b, whirl_cont *c,
   }
 }
 
+/* The progress of a branch, as io.progress(done, 1000): the larger of the
+ * steps over NMX and the parameter's way over [RL0, RL1] (the range
+ * covered, over it plus the distance still to the bound the branch heads
+ * for); never less than before (*best). */
+static void branch_progress(const run_ctx *R, const whirl_cont_options *o, size_t npts,
+                            double p, double pmin, double pmax, double *prev, double *best) {
+  if (!R->io.progress) return;
+  double f = o->nmx ? (double)npts / (double)o->nmx : 0.0;
+  if (npts > 1 && fabs(o->p_min) < 1e29 && fabs(o->p_max) < 1e29) {
+    const double gap = p >= *prev ? o->p_max - p : p - o->p_min;
+    if (pmax - pmin + gap > 0) f = fmax(f, (pmax - pmin) / (pmax - pmin + fmax(gap, 0.0)));
+  }
+  *prev = p;
+  if (f > *best || npts <= 1) *best = npts <= 1 ? f : fmin(f, 1.0);
+  R->io.progress((size_t)(1000.0 * *best), 1000, R->io.ctx);
+}
+
 int run_branch(run_ctx *R, branch_spec *b) {
   const whirl_run_settings *s = R->s;
   whirl_cont_options o;
@@ -332,7 +360,7 @@ int run_branch(run_ctx *R, branch_spec *b) {
   int counts[16] = {0};
   int stop = 0;
   size_t npts = 0;
-  double pmin = 0.0, pmax = 0.0;
+  double pmin = 0.0, pmax = 0.0, pprev = 0.0, done = 0.0;
   for (;;) {
     rc = whirl_cont_step(c);
     if (rc != WHIRL_OK) break;
@@ -340,6 +368,7 @@ int run_branch(run_ctx *R, branch_spec *b) {
     npts++;
     if (npts == 1 || pt->p[b->icp] < pmin) pmin = pt->p[b->icp];
     if (npts == 1 || pt->p[b->icp] > pmax) pmax = pt->p[b->icp];
+    branch_progress(R, &o, npts, pt->p[b->icp], pmin, pmax, &pprev, &done);
     int type = pt->type;
     const char *ty = type ? whirl_point_type_name(type) : "RG";
     base_of(b, pt->x, pt->p, pfull);
@@ -546,6 +575,18 @@ static int start_equilibria(run_ctx *R, run_objects *O, branch_spec *b) {
   b->nb = R->n;
   b->x0 = restart ? so->x : R->u;
   b->p0 = p0;
+  /* run_tangent_start: a restart in the label's own parameter moves along
+   * DS times its stored tangent (write_label), as AUTO does — the sign of DS
+   * is relative to the branch's direction at the label, not to the
+   * parameter; and a Newton correction at fixed parameter, the plain
+   * start, has a singular F_x at an LP (and would label it again).  The
+   * sign of DS is applied in run_continuation. */
+  if (restart && R->s->isw == 1 && so->tan && so->icp == b->icp) {
+    O->D = malloc((b->nb + 1) * sizeof *O->D);
+    if (!O->D) return -1;
+    memcpy(O->D, so->tan, (b->nb + 1) * sizeof *O->D);
+    b->dir = O->D;
+  }
   return 0;
 }
 
@@ -820,29 +861,46 @@ void whirl_run_free(whirl_run *r) {
   free(r);
 }
 
-/* The output directory: OUT, or the run file's name with .out; plug-in
- * paths are relative to the run file's directory. */
-static void set_paths(whirl_run *R, const char *file) {
+/* A path of the run (doc/run-files.md, "Paths"): as it is when absolute
+ * or given on the command line (relative to the current directory), else
+ * relative to the run file's directory — a run file means the same from
+ * any directory.  0, or -1 when it does not fit. */
+int run_path(const run_ctx *R, whirl_run_key k, const char *value, char *buf, size_t len) {
+  int m;
+  if (value[0] == '/' || !R->rundir[0] || whirl_runfile_on_command_line(R->rf, k))
+    m = snprintf(buf, len, "%s", value);
+  else
+    m = snprintf(buf, len, "%s%s%s", R->rundir, strcmp(R->rundir, "/") ? "/" : "", value);
+  return m < 0 || (size_t)m >= len ? -1 : 0;
+}
+
+/* The run file's directory; the output directory (OUT, or the run file's
+ * name with .out beside it) and S by run_path.  0, or 2 (said). */
+static int set_paths(whirl_run *R, const char *file) {
   const char *slash = strrchr(file, '/');
   if (slash) snprintf(R->rundir, sizeof R->rundir, "%.*s", (int)(slash - file), file);
   if (slash && !R->rundir[0]) snprintf(R->rundir, sizeof R->rundir, "/");
-  if (R->s->out[0]) {
-    snprintf(R->out, sizeof R->out, "%s", R->s->out);
-  } else {
-    const char *base = slash ? slash + 1 : file;
-    const char *dot = strrchr(base, '.');
-    int len = dot && dot != base ? (int)(dot - base) : (int)strlen(base);
-    snprintf(R->out, sizeof R->out, "%.*s.out", len, base);
+  char def[1024];
+  const char *base = slash ? slash + 1 : file;
+  const char *dot = strrchr(base, '.');
+  int len = dot && dot != base ? (int)(dot - base) : (int)strlen(base);
+  snprintf(def, sizeof def, "%.*s.out", len, base);
+  if (run_path(R, WHIRL_RK_OUT, R->s->out[0] ? R->s->out : def, R->out, sizeof R->out) ||
+      run_path(R, WHIRL_RK_S, R->s->s, R->spath, sizeof R->spath)) {
+    run_fail(R, WHIRL_RK_OUT, "OUT or S: the path is too long");
+    return 2;
   }
+  if (!R->s->s[0]) R->spath[0] = '\0';
   if (whirl_runfile_given(R->rf, WHIRL_RK_OUT))
     whirl_runfile_where(R->rf, WHIRL_RK_OUT, R->out_where, sizeof R->out_where);
+  return 0;
 }
 
 /* AUTO's c.ab.2 after c.ab.1 with the same output: the run would replace
  * the solutions it restarts from (S).  1 (said) when OUT is S. */
 static int replaces_restart(whirl_run *R) {
   struct stat a, b;
-  if (!R->s->s[0] || stat(R->s->s, &a) != 0 || stat(R->out, &b) != 0) return 0;
+  if (!R->spath[0] || stat(R->spath, &a) != 0 || stat(R->out, &b) != 0) return 0;
   if (a.st_dev != b.st_dev || a.st_ino != b.st_ino) return 0;
   run_fail(R, whirl_runfile_given(R->rf, WHIRL_RK_OUT) ? WHIRL_RK_OUT : WHIRL_RK_S,
            "OUT '%s' is S, the run this one restarts from: its output would "
@@ -872,8 +930,7 @@ int whirl_run_load(whirl_run *R, const char *file, const char *const *overrides,
     return rc == WHIRL_EIO && (probe || errno != ENOENT) ? 1 : 2;
   }
   R->s = whirl_runfile_settings(R->rf);
-  set_paths(R, file);
-  if (replaces_restart(R)) return 2;
+  if (set_paths(R, file) || replaces_restart(R)) return 2;
   return run_load_model(R) || run_resolve(R) || run_study_resolve(R) ? 2 : 0;
 }
 
@@ -906,8 +963,8 @@ const char *whirl_run_errmsg(const whirl_run *r) { return r->errmsg; }
  * file's PAR, and its state for equilibria.  0, or -1 (message said). */
 static int restart_solution(whirl_run *R, run_objects *O) {
   char msg[1024];
-  /* S is relative to the current directory, like the output directory */
-  if (run_solution_find(R, R->s->s, R->s->irs, R->s->irs_type, &O->sol, msg,
+  /* S resolved like OUT (run_path) */
+  if (run_solution_find(R, R->spath, R->s->irs, R->s->irs_type, &O->sol, msg,
                         sizeof msg)) {
     run_fail(R, WHIRL_RK_IRS, "IRS: %s", msg);
     return -1;

@@ -8,7 +8,7 @@
  * points stay within BASIN_TOL·(1 + |x*|) of the target (max norm) for 3
  * consecutive periods; whirl_basins_compute integrates the grid in parallel
  * and stops each trajectory there (BASIN_PERIODS at most).
- * Writes basins.tsv (axis values, class: attractor label, -1 unsettled,
+ * Writes basins.tsv (axis values, attractor: its label, -1 unsettled,
  * -2 left the domain, -3 failed; periods integrated) and basins.png.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
@@ -108,7 +108,7 @@ static int attractors(run_ctx *R, run_basins_job *J) {
   for (size_t a = 0; a < J->na; a++) {
     whirl_solution so;
     char msg[1024];
-    if (run_solution_find(R, s->s, s->attractors[a], "", &so, msg, sizeof msg)) {
+    if (run_solution_find(R, R->spath, s->attractors[a], "", &so, msg, sizeof msg)) {
       run_fail(R, WHIRL_RK_BASIN_ATTRACTORS, "BASIN_ATTRACTORS: %s", msg);
       return -2;
     }
@@ -243,7 +243,7 @@ int run_basins_row(const run_ctx *R, size_t q, int which, unsigned periods, char
 /* The header of basins.tsv. */
 int run_basins_header(const run_ctx *R, char *buf, size_t len) {
   const run_basins_job *J = R->bjob;
-  int m = snprintf(buf, len, "# %s\t%s\tclass\tperiods", R->xnames[J->ax[0]], R->xnames[J->ax[1]]);
+  int m = snprintf(buf, len, "%s\t%s\tattractor\tperiods", R->xnames[J->ax[0]], R->xnames[J->ax[1]]);
   return m < 0 || (size_t)m >= len ? -1 : 0;
 }
 

@@ -73,9 +73,15 @@ static int read_rows(run_ctx *R, const char *path, double **t, double **u, size_
 
 int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T, double *jump) {
   const size_t n = R->n;
-  double *t, *u;
+  double *t = NULL, *u = NULL;
   size_t nr;
-  if (read_rows(R, R->s->dat, &t, &u, &nr)) {
+  char path[4096];
+  /* relative to the run file's directory, as model, S and OUT (run_path) */
+  if (run_path(R, WHIRL_RK_DAT, R->s->dat, path, sizeof path)) {
+    run_fail(R, WHIRL_RK_DAT, "DAT: the path is too long");
+    return -1;
+  }
+  if (read_rows(R, path, &t, &u, &nr)) {
     free(t), free(u);
     return -1;
   }
@@ -93,7 +99,7 @@ int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T, double *jump) {
       xs[k * n + i] = (1.0 - w) * u[j * n + i] + w * u[(j + 1) * n + i];
   }
   for (size_t i = 0; jump && i < n; i++) jump[i] = u[(nr - 1) * n + i] - u[i];
-  fprintf(R->log, "start orbit from %s: %zu rows over %.10g, period %.10g\n", R->s->dat, nr,
+  fprintf(R->log, "start orbit from %s: %zu rows over %.10g, period %.10g\n", path, nr,
           tdat, *T);
   free(t), free(u);
   return 0;

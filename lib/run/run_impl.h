@@ -42,6 +42,7 @@ struct whirl_run {
   int icp[4];              /* resolved, 0-based; -1 for the period (PAR 11) */
   size_t nicp;
   char out[4096], rundir[4096];
+  char spath[4096];        /* S, resolved (run_path) */
   FILE *log, *table, *sols; /* run.log, branches.tsv, solutions in od */
   int label, branch;
   int failed;              /* a branch ended in failure (DSMIN reached without
@@ -87,6 +88,9 @@ int run_close(run_ctx *R, FILE *f, const char *name);
 double run_now(void); /* monotonic seconds */
 
 /* run_model.c */
+/* model, S or OUT's path: relative to the run file's directory, or as it is
+ * (absolute, or a command-line override's); 0, or -1 too long (run.c) */
+int run_path(const run_ctx *R, whirl_run_key k, const char *value, char *buf, size_t len);
 int run_load_model(run_ctx *R);  /* 0 or -1 (message printed) */
 int run_resolve(run_ctx *R);     /* names -> indices, PAR, U; 0 or -1 */
 int run_par_index(run_ctx *R, const whirl_run_ref *r); /* -1 unknown */

@@ -76,13 +76,13 @@ int run_load_model(run_ctx *R) {
     R->model = registered_model(R, m);
     if (!R->model) return -1;
   } else {
-    char path[8192];
-    if (m[0] == '/' || (!R->rundir[0] && strchr(m, '/')))
-      snprintf(path, sizeof path, "%s", m);
-    else if (!R->rundir[0]) /* dlopen searches the library path without a '/' */
-      snprintf(path, sizeof path, "./%s", m);
-    else
-      snprintf(path, sizeof path, "%s/%s", R->rundir, m);
+    char path[8192], rel[8100];
+    if (run_path(R, WHIRL_RK_MODEL, m, rel, sizeof rel)) {
+      run_fail(R, WHIRL_RK_MODEL, "model: the path is too long");
+      return -1;
+    }
+    /* dlopen searches the library path for a name without a '/' */
+    snprintf(path, sizeof path, "%s%s", strchr(rel, '/') ? "" : "./", rel);
     FILE *probe = fopen(path, "rb");
     if (!probe) {
       run_fail(R, WHIRL_RK_MODEL, "model: cannot open plug-in '%s': %s", path,

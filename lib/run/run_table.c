@@ -1,8 +1,10 @@
 /* lib/run/run_table.c — the branch table of a run, branches.tsv (AUTO's
- * b-file as TSV: BR PT TY LAB, then all parameters, PERIOD for periodic
- * orbits, L2-NORM, the state (MAX of each component over the orbit for
- * periodic orbits) and STAB: 1 stable, 0 unstable, -1 unknown), and the
- * labelled points kept with their rows (whirl_run_special).
+ * b-file as TSV, the column names of doc/tables.md: branch pt type label
+ * (AUTO's BR PT TY LAB), then all parameters, period for periodic orbits,
+ * l2_norm (AUTO's L2-NORM), the state (max_NAME, the MAX of each component
+ * over the orbit, for periodic orbits) and stable (AUTO's STAB: 1 stable,
+ * 0 unstable, -1 unknown)), and the labelled points kept with their rows
+ * (whirl_run_special).
  *
  * L2-NORM follows AUTO: |x| for an equilibrium, sqrt(∫_0^1 |x(τ)|² dτ) for
  * a periodic orbit; MAX and L2-NORM of orbits come from the periodic-orbit
@@ -15,6 +17,8 @@
  * U(IPLT - 2 NDIM) up to 3 NDIM ("L2-NORM U(i)"); for orbits MAX U(i),
  * MIN U(-IPLT) (over the nodes, as AUTO), ∫₀¹ u_i and sqrt(∫₀¹ u_i²); any
  * other IPLT is the L2-NORM.  The limits A0, A1 bound the same measure.
+ * The column keeps its name l2_norm (doc/tables.md); the picture's axis
+ * and AUTO's b-file (auto_files.c) name the measure as AUTO does.
  * SPDX-License-Identifier: BSD-3-Clause */
 #define _POSIX_C_SOURCE 200809L /* open_memstream */
 #include <math.h>
@@ -49,7 +53,7 @@ static void measure_name(const run_ctx *R, whirl_solution_kind kind, char *buf, 
 int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q) {
   FILE *f = R->table;
   size_t col = 4;
-  fprintf(f, "# BR\tPT\tTY\tLAB");
+  fprintf(f, "branch\tpt\ttype\tlabel");
   int ycol = 0;
   for (size_t k = 0; k < R->npar; k++) {
     fprintf(f, "\t%s", R->pnames[k]);
@@ -59,25 +63,27 @@ int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q) {
     if (R->plot_kind == RUN_PLOT_PAR && (int)k == R->plot_index) ycol = (int)col;
   }
   if (kind != WHIRL_SOL_EQ) {
-    fprintf(f, "\tPERIOD");
+    fprintf(f, "\tperiod");
     col++;
     if (R->plot_kind == RUN_PLOT_PERIOD) ycol = (int)col;
   }
+  /* the column keeps its name under IPLT; the picture's axis says AUTO's */
   char mname[WHIRL_RUN_MAXNAME + 16];
   measure_name(R, kind, mname, sizeof mname);
-  fprintf(f, "\t%s", mname);
+  fprintf(f, "\tl2_norm");
   col++;
   if (!ycol || R->plot_kind == RUN_PLOT_L2) ycol = (int)col;
   for (size_t i = 0; i < R->n; i++) {
-    fprintf(f, kind == WHIRL_SOL_EQ ? "\t%s" : "\tMAX %s", R->xnames[i]);
+    fprintf(f, kind == WHIRL_SOL_EQ ? "\t%s" : "\tmax_%s", R->xnames[i]);
     col++;
     if (R->plot_kind == RUN_PLOT_STATE && (int)i == R->plot_index) ycol = (int)col;
   }
-  fprintf(f, "\tSTAB\n");
+  fprintf(f, "\tstable\n");
   col++;
   R->ncols = col;
   R->plot_y = ycol;
-  /* axis names: the header's columns (1-based, "# BR" is column 1) */
+  /* axis names: AUTO's names of the header's columns (1-based, branch is
+   * column 1) */
   snprintf(R->plot_x_name, sizeof R->plot_x_name, "%s", R->pnames[R->plot_x - 5]);
   if (ycol >= 5 && ycol < 5 + (int)R->npar)
     snprintf(R->plot_y_name, sizeof R->plot_y_name, "%s", R->pnames[ycol - 5]);

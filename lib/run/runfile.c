@@ -182,6 +182,9 @@ const char *whirl_runfile_ignored(const whirl_runfile *rf) {
 int whirl_runfile_given(const whirl_runfile *rf, whirl_run_key k) {
   return k >= 0 && k < WHIRL_RK_COUNT && rf->line[k] != 0;
 }
+int whirl_runfile_on_command_line(const whirl_runfile *rf, whirl_run_key k) {
+  return k >= 0 && k < WHIRL_RK_COUNT && rf->line[k] < 0;
+}
 
 const char *whirl_run_key_name(whirl_run_key k) {
   for (size_t i = 0; i < NKEYS; i++)

@@ -129,6 +129,11 @@ typedef struct whirl_cont_options {
   double (*uz_fun)(size_t k, const double *x, const double *p, void *uz_ctx);
   void *uz_ctx;
   const int *uz_stop;
+  /* Optional, for a progress display: called by whirl_trace_branch after
+   * each point with the points of the branch so far and the point's
+   * continuation parameter.  NULL: none. */
+  void (*progress)(size_t points, double p, void *progress_ctx);
+  void *progress_ctx;
 } whirl_cont_options;
 
 /* Defaults: icp 0, ds 1e-2, ds_min 1e-8, ds_max 0.5, nmx 1000, p bounds

@@ -132,6 +132,9 @@ WHIRL_API int whirl_runfile_box(const whirl_runfile *rf, size_t i,
 
 /* 1 if the key was given (file or command line). */
 WHIRL_API int whirl_runfile_given(const whirl_runfile *rf, whirl_run_key k);
+/* 1 if the key's value is a command-line override's (whose paths are
+ * relative to the current directory, those of the file to the file's). */
+WHIRL_API int whirl_runfile_on_command_line(const whirl_runfile *rf, whirl_run_key k);
 
 /* Where a key was set, for messages: "ab.whirl:7", "command line
  * (--DS=...)" or, for a key that was not given, "ab.whirl".  Returns buf. */

@@ -75,6 +75,22 @@ check_run() {
 }
 check_run "run (discovery, examples/discover/sfd-rotating.whirl)" disc "$ex/discover/sfd-rotating.whirl"
 
+# One gnuplot process draws all the pictures of a run (its start-up costs
+# more than a picture); when that process fails, each picture is drawn
+# alone, so a failure is still found and reported per picture.
+real_gp=$(command -v "$GNUPLOT")
+printf '#!/bin/sh\necho "$#" >> "%s/gp-calls"\nexec "%s" "$@"\n' "$tmp" "$real_gp" > "$tmp/gp-count"
+printf '#!/bin/sh\necho "$#" >> "%s/gp-calls2"\n[ $# -gt 1 ] && { echo "batch refused" >&2; exit 1; }\nexec "%s" "$@"\n' "$tmp" "$real_gp" > "$tmp/gp-nobatch"
+chmod +x "$tmp/gp-count" "$tmp/gp-nobatch"
+WHIRL_GNUPLOT="$tmp/gp-count" "$WHIRL" sfd response --out "$tmp/batch" --quiet > /dev/null 2>&1
+rc=$?
+[ $rc -eq 0 ] && [ "$(wc -l < "$tmp/gp-calls")" -eq 1 ] && png_ok "$tmp/batch/response.png" && png_ok "$tmp/batch/multipliers.png"
+ok $? "sfd response: both pictures by one gnuplot process ($(wc -l < "$tmp/gp-calls") started)"
+WHIRL_GNUPLOT="$tmp/gp-nobatch" "$WHIRL" sfd response --out "$tmp/batch2" --quiet > /dev/null 2> "$tmp/batch2.err"
+rc=$?
+[ $rc -eq 0 ] && [ "$(wc -l < "$tmp/gp-calls2")" -eq 3 ] && png_ok "$tmp/batch2/response.png" && png_ok "$tmp/batch2/multipliers.png" && [ ! -s "$tmp/batch2.err" ]
+ok $? "sfd response: the batch failing, each picture drawn alone ($(wc -l < "$tmp/gp-calls2") gnuplot runs, exit $rc)"
+
 "$WHIRL" sfd response --out "$tmp/badfmt" --format gif > /dev/null 2> "$tmp/badfmt.err"
 rc=$?
 [ $rc -eq 2 ] && [ ! -e "$tmp/badfmt" ] && grep -q "png, pdf or svg" "$tmp/badfmt.err"

@@ -53,7 +53,7 @@ for z in 0 0.05; do
   "$WHIRL" sfd region --zeta $z --quiet --out "$tmp/reg$z" > "$tmp/sp$z.tsv"
   ok $? "whirl sfd region --zeta $z exits 0"
   for f in upper lower; do
-    head -2 "$tmp/reg$z/$f.tsv" | tail -1 | grep -q "^lambda	delta	Omega	eps"
+    head -n 1 "$tmp/reg$z/$f.tsv" | grep -q "^lambda	delta	Omega	eps"
     ok $? "region --zeta $z: $f.tsv has columns lambda delta Omega eps"
     m=$(awk -F'\t' 'NR > 2 { if ($6 + 0 > m) m = $6 + 0; k++ } END { if (k < 20) m = 1; printf "%.2g", m }' "$tmp/reg$z/$f.tsv")
     ok $(lt "$m" 1e-10; echo $?) "region --zeta $z: every $f boundary point satisfies eq. 15 to 1e-10 (max $m)"

@@ -95,7 +95,7 @@ unbalance node=2 me=1e-4 phase-deg=30
 EOF
 "$WHIRL" rotor unbalance j.rotor --node 2 --speeds 1000:4000:7 > r.tsv 2> err.txt
 ok $? "response exits 0"
-[ "$(wc -l < r.tsv)" -eq 8 ] && [ "$(head -n 1 r.tsv)" = "$(printf 'speed_rpm\tspeed_rad_s\ty_amp\ty_phase_deg\tz_amp\tz_phase_deg\tmajor\tminor\twhirl')" ]
+[ "$(wc -l < r.tsv)" -eq 8 ] && [ "$(head -n 1 r.tsv)" = "$(printf 'speed_rpm\tspeed_rad_s\ty_amp_m\ty_phase_deg\tz_amp_m\tz_phase_deg\tmajor_m\tminor_m\twhirl')" ]
 ok $? "response: header and 7 speeds"
 awk -F '\t' 'NR > 1 { d = ($7 - $8) / $7; if (d < 0) d = -d; if (d > 1e-9 || $9 != "forward") bad = 1
   p = $4 - $6; if (p < 0) p += 360; p -= 90; if (p < -1e-6 || p > 1e-6) bad = 1 } END { exit bad }' r.tsv

@@ -103,7 +103,7 @@ ok "$(awk -v a="$1" -v b="$2" 'BEGIN { exit !(a < 1e-5 && b < 1e-4) }'; echo $?)
   --merge-along clearance --range2 0.5:2 -o merge.d --quiet > /dev/null 2> merge2.err
 ok $? "whirl rotor loci --merge-along clearance: $(head -c 200 merge2.err)"
 worst=0 npts=0
-for row in $(awk -F '\t' 'NF > 6 && $1 == "" && (NR % 15) == 0 { print $6 ":" $7 }' merge.d/merge.tsv); do
+for row in $(awk -F '\t' 'NF > 6 && $1 == "-" && (NR % 15) == 0 { print $6 ":" $7 }' merge.d/merge.tsv); do
   s=${row%%:*} u=${row##*:}
   lam=$(awk -v s="$s" 'BEGIN { printf "%.15g", 0.0503 / s ^ 3 }')
   d=$("$WHIRL" sfd merge --lambda "$lam" --quiet | awk -F '\t' 'NR == 2 { print $3 }')

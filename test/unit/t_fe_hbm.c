@@ -683,6 +683,55 @@ static void hill_sparse_vs_dense(const whirl_fe_rotor *r, const double *X,
   whirl_fe_hbm_free(hs);
 }
 
+/* The sparse Hill method's shift-invert solves condensed onto the nonlinear
+ * DOFs (fe_hbm_shift.c: interior DOFs, gyroscopic terms, a pedestal, an SFD
+ * whose Jacobian has displacement, velocity and — with fluid inertia —
+ * acceleration parts) against the dense Hill method and the uncondensed
+ * sparse route (UMFPACK on the whole Hill matrix), at a state that is not
+ * an orbit (Hill's matrix is defined at any coefficients). */
+static void hill_condensed_shift(whirl_fe_nl_kind kind) {
+  whirl_fe_rotor *r = model5_kind(1, kind);
+  const double ls = 2e-4; /* the SFD's clearance, the same for all three */
+  whirl_fe_hbm *hd = make(r, 3, 0, ls, 0, 1), *hs = make(r, 3, 0, ls, 0, 2);
+  whirl_fe_hbm *hu = make(r, 3, 1, ls, 0, 2);
+  const whirl_system *sd = whirl_fe_hbm_system(hd), *su = whirl_fe_hbm_system(hu);
+  double *X = calloc(sd->n, sizeof *X), *XU = calloc(su->n, sizeof *XU), p[4];
+  double dre[400], dim[400], sre[64], sim[64], ure[64], uim[64], worst = 0;
+  size_t md = 400, ms = 64, mu = 64;
+  whirl_fe_hbm_params(250.0, p);
+  p[1] = 1.3;
+  for (size_t i = 0; i < sd->n; ++i) X[i] = tap_urand(-0.08, 0.08);
+  /* the same state uncondensed: the nonlinear DOFs' coefficients as given,
+   * the others recovered as the condensed system defines them */
+  int rc = whirl_fe_hbm_recover(hd, X, p, XU);
+  for (size_t i = 0; i < su->n; ++i) XU[i] /= ls;
+  rc |= whirl_fe_hbm_hill(hd, X, p, dre, dim, &md);
+  int rs = whirl_fe_hbm_hill(hs, X, p, sre, sim, &ms);
+  int ru = whirl_fe_hbm_hill(hu, XU, p, ure, uim, &mu);
+  if (rs == WHIRL_EINVAL && strstr(whirl_fe_hbm_errmsg(hs), "without ARPACK")) {
+    ok(1, "# SKIP %s: built without ARPACK", kname(kind));
+  } else {
+    double w = 250.0, wu = 0;
+    for (size_t i = 0; i < ms; ++i) {
+      double best = INFINITY, bu = INFINITY;
+      for (size_t j = 0; j < md; ++j)
+        best = fmin(best, hypot(sre[i] - dre[j], sim[i] - dim[j]));
+      for (size_t j = 0; j < mu; ++j)
+        bu = fmin(bu, hypot(sre[i] - ure[j], sim[i] - uim[j]));
+      worst = fmax(worst, best);
+      wu = fmax(wu, bu);
+    }
+    ok(rc == 0 && rs == 0 && ru == 0 && ms >= 4 && worst < 1e-8 * w,
+       "%s: the %zu condensed shift-invert exponents are dense Hill ones "
+       "(%.1e)", kname(kind), ms, worst / w);
+    ok(ms == mu && wu < 1e-8 * w, "%s: and the uncondensed sparse route's "
+       "(%zu of %zu, %.1e)", kname(kind), ms, mu, wu / w);
+  }
+  free(X); free(XU);
+  whirl_fe_hbm_free(hd); whirl_fe_hbm_free(hs); whirl_fe_hbm_free(hu);
+  fe_chain_free(r);
+}
+
 static void test_response(void) {
   whirl_fe_rotor *r = duffing3();
   whirl_fe_hbm_response_options o;
@@ -873,6 +922,8 @@ int main(void) {
   test_jacobians(0, 1, WHIRL_FE_SFD_INERTIA);
   test_jacobians(0, 0, WHIRL_FE_SFD_LONG);
   test_jacobians(0, 0, WHIRL_FE_SFD_SHORT_2PI);
+  hill_condensed_shift(WHIRL_FE_SFD_SHORT_PI);
+  hill_condensed_shift(WHIRL_FE_SFD_INERTIA);
   test_linear();
   test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_PI);
   test_condensed_vs_full(1, 320.0, 4.0, WHIRL_FE_SFD_SHORT_PI);

@@ -36,6 +36,10 @@ typedef struct whirl_sfd_periodic_options {
                           always uses the sparse solver) */
   double uz[8];        /* speeds at which to report points (UZ) */
   size_t nuz;
+  /* optional progress report after each point of a branch (the points of
+   * the branch so far, its speed); NULL: none */
+  void (*progress)(size_t points, double omega, void *data);
+  void *progress_data;
 } whirl_sfd_periodic_options;
 
 WHIRL_API void whirl_sfd_periodic_options_default(
