@@ -7,8 +7,11 @@
  * PAR has AUTO's NPARX entries (36); PAR(11) of orbits is the period that
  * STPNT may set.  BCND, ICND and FOPT are not called (IPS 1 and 2); PVLS
  * is called once, after STPNT, as AUTO does before the first step (some
- * FUNCs rely on data it sets up: demos brc, brf), but its output is not
- * used; GETP, the utility PVLS calls, returns 0 (so the object links), and
+ * FUNCs rely on data it sets up: demos brc, brf), and at every point of
+ * equilibria, the parameters it sets shown and tested by UZR/UZSTOP (the
+ * model's pvls; demo pp3 stops at its PAR(9) = |U(1)|); on orbits its
+ * output is not used yet; GETP, the utility PVLS calls, is AUTO's for
+ * equilibria (NRM |U(i)|, INT, MAX, MIN, BV0, BV1 U(i)), and
  * GE, AUTO's linear solver that some FUNCs call (demos brc, brf), is
  * written here afresh (Gaussian elimination).  The
  * adapter is generated here and compiled with the user's file; it is
@@ -59,9 +62,18 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "           double *, double *, double *);\n"
     "void stpnt_(const int *, double *, double *, const double *);\n"
     "void pvls_(const int *, const double *, double *) __attribute__((weak)); /* optional */\n"
-    "/* PVLS's utility; whirl never calls PVLS */\n"
+    "/* PVLS's utility GETP(CODE, IC, U) for equilibria, as AUTO's (support.f90):\n"
+    " * NRM |U(IC)|; INT, MAX, MIN, BV0, BV1 U(IC); NDIM for NDI; else 0 */\n"
     "double getp_(const char *c, const int *i, const double *u, size_t l) {\n"
-    "  (void)c, (void)i, (void)u, (void)l;\n  return 0.0;\n}\n"
+    "  char k[4] = {0};\n"
+    "  for (size_t j = 0; j < 3 && j < l; j++) k[j] = (char)(c[j] >= 'a' && c[j] <= 'z' ? c[j] - 32 : c[j]);\n"
+    "  const int ic = *i;\n"
+    "  if (!strcmp(k, \"NDI\") || !strcmp(k, \"NDX\")) return N;\n"
+    "  if (ic < 1 || ic > N) return 0.0;\n"
+    "  if (!strcmp(k, \"NRM\")) return __builtin_fabs(u[ic - 1]);\n"
+    "  if (!strcmp(k, \"INT\") || !strcmp(k, \"MAX\") || !strcmp(k, \"MIN\") ||\n"
+    "      !strcmp(k, \"BV0\") || !strcmp(k, \"BV1\")) return u[ic - 1];\n"
+    "  return 0.0;\n}\n"
     "/* AUTO's GE(IAM, N, M1A, A, NRHS, NDX, U, M1F, F, IR, IC, DET): U = A^-1 F\n"
     " * for NRHS columns (A(M1A,N), U(NDX,NRHS), F(M1F,NRHS), column-major) by\n"
     " * Gaussian elimination with partial pivoting; DET = det A.  A and F are\n"
@@ -102,6 +114,12 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "static int stpnt(double tau, double *u, double *p, void *d) {\n"
     "  double par[NPX] = {0};\n  const int n = N;\n  (void)d;\n"
     "  memcpy(par, p, NP * sizeof *p);\n  stpnt_(&n, u, par, &tau);\n"
+    "  memcpy(p, par, NP * sizeof *p);\n  return 0;\n}\n"
+    "/* PVLS at an equilibrium: the parameters it sets */\n"
+    "static int pvls(const double *x, double *p, void *d) {\n"
+    "  double par[NPX] = {0};\n  const int n = N;\n  (void)d;\n"
+    "  if (!pvls_) return 0;\n"
+    "  memcpy(par, p, NP * sizeof *p);\n  pvls_(&n, x, par);\n"
     "  memcpy(p, par, NP * sizeof *p);\n  return 0;\n}\n",
     m->ndim, m->npar, m->npar > 36 ? m->npar : 36);
   write_names(f, "p_names", m->p_names, m->npar);
@@ -111,7 +129,7 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "whirl_model whirl_model_def = {\n  .abi = WHIRL_MODEL_ABI,\n"
     "  .problem = {.name = \"%s\", .n = N, .npar = NP, .rhs = rhs, .jac_x = jac,\n"
     "              .autonomous = 1, .x_names = x_names, .p_names = p_names},\n"
-    "  .par0 = par0, .u0 = u0, .stpnt = stpnt, .forcing_param = -1,\n"
+    "  .par0 = par0, .u0 = u0, .stpnt = stpnt, .forcing_param = -1, .pvls = pvls,\n"
     "  .description = \"AUTO-07p equations %s\"};\n"
     "/* par0 and u0 from STPNT at T = 0; the period of its orbit, PAR(11) */\n"
     "__attribute__((constructor)) static void init(void) {\n"

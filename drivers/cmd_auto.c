@@ -6,10 +6,11 @@
  * its own output directory, so that no run replaces the output another
  * restarts from.  doc/auto-files.md.
  * SPDX-License-Identifier: BSD-3-Clause */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700 /* realpath */
 #include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,6 +23,7 @@
 #include "cli.h"
 
 #define MAXRUNS 64
+#define MAXALL 512 /* with the branches MXBF switches to */
 #define MARKER ".whirl-auto"
 
 typedef struct auto_run {
@@ -31,16 +33,27 @@ typedef struct auto_run {
   char id[256 + 64 + 24]; /* the run's name in OUT: ab.1, ab.2@3 (c, label, a count) */
   whirl_auto_constants *ac;
   char *text;     /* the whirl run file */
+  char irs[64];   /* the whirl label IRS resolves to ("": r->label or IRS) */
+  long src;       /* the run it restarts from (-1: none) */
+  int fresh;      /* IRS = 0 and no @LABEL: AUTO numbers labels from 1 */
+  /* AUTO's numbering of the run's labels (after it ran) */
+  whirl_auto_label *labs;
+  size_t nlabs;
+  int offset;     /* labels before its first: the largest of its group */
+  int sub;        /* a branch MXBF switches to (no IRS of its own) */
+  int br_fixed;   /* its AUTO branch number (0: NEWLAB's) */
+  int br_auto;    /* the AUTO branch number its first branch got */
 } auto_run;
 
 typedef struct auto_job {
   const char *dir, *name, *out;
   int quiet;
-  auto_run run[MAXRUNS];
+  auto_run run[MAXALL];
   size_t nrun;
   size_t npar;
   int ndim;
   char **p_names, **x_names;
+  char absdir[4096]; /* DIR as an absolute path ("" if unknown) */
 } auto_job;
 
 static void usage(FILE *f) {
@@ -206,8 +219,12 @@ static int translate_run(auto_job *J, size_t i, long from) {
   /* beside the run file in J->out, as a run file's paths are (run_path) */
   if (from >= 0) snprintf(restart, sizeof restart, "%s.out", J->run[from].id);
   snprintf(out, sizeof out, "%s.out", r->id);
-  const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL,
-                                     r->label[0] ? r->label : NULL, out, J->npar};
+  const char *lab = r->irs[0] ? r->irs : r->label[0] ? r->label : NULL;
+  /* dat files by an absolute path: the run file is in OUT, DIR relative
+   * to the working directory */
+  const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL, lab, out, J->npar,
+                                     J->absdir[0] ? J->absdir : J->dir};
+  r->src = from;
   free(r->text);
   r->text = NULL;
   if (whirl_auto_constants_runfile(r->ac, &o, &r->text) != WHIRL_OK) {
@@ -230,6 +247,9 @@ static int translate(auto_job *J) {
         snprintf(id, sizeof id, "%s%s%s-%zu", r->c, r->label[0] ? "@" : "", r->label, ++dup);
     _Static_assert(sizeof id == sizeof r->id, "id holds c, label and a count");
     memcpy(r->id, id, sizeof id);
+    int irs = 0;
+    whirl_auto_constants_int(r->ac, "IRS", &irs);
+    r->fresh = !r->label[0] && !r->from[0] && !irs && !whirl_auto_constants_text(r->ac, "IRS");
     const long from = restart_from(J, i);
     if (from == -2 || translate_run(J, i, from)) return 2;
   }
@@ -251,17 +271,59 @@ static int fits(const auto_run *r, const whirl_solution *S) {
   return 1;
 }
 
-/* Run i restarts by the default rule (IRS, no @RUN): AUTO's scripts name
- * labels of any earlier run (often the first), so take the nearest earlier
- * run whose label IRS (or k-th point of type TY) is one run i can start
- * from; else the run before.  Re-translates run i when that changes its
- * source.  0 or 2. */
+/* AUTO's label numbering across runs (AUTO-07p io.f90, FINDLB and NEWLAB):
+ * a run restarting from an s-file numbers its labels on from the largest
+ * label in that file, a run with IRS = 0 from 1; IRS = k is the first
+ * solution labelled k in the file, IRS = 'HB2' its second HB.  The c-files
+ * of a demo are AUTO's legacy script (`@r NAME; @sv NAME` for a fresh start,
+ * `@r NAME k NAME; @ap NAME` for a restart), so the s-file a run restarts
+ * from holds the runs since the last fresh start: its group. */
+static size_t group_start(const auto_job *J, size_t i) {
+  size_t g = i;
+  while (g > 0 && !J->run[g].fresh) g--;
+  return g;
+}
+
+/* The label of run i's group (runs before i) that AUTO's IRS (TY, K)
+ * names: its run in *j and its entry.  NULL: none. */
+static const whirl_auto_label *group_label(const auto_job *J, size_t i, const char *ty, int k,
+                                           size_t *j) {
+  int count = 0;
+  for (size_t g = group_start(J, i > 0 ? i - 1 : 0); g < i; g++)
+    for (size_t m = 0; m < J->run[g].nlabs; m++) {
+      const whirl_auto_label *L = &J->run[g].labs[m];
+      if (ty[0] ? !strcmp(L->ty, ty) && ++count == k : L->label == k) {
+        *j = g;
+        return L;
+      }
+    }
+  return NULL;
+}
+
+/* Can run i start from label LAB of run j?  1 or 0. */
+static int fits_label(const auto_job *J, size_t i, size_t j, int lab) {
+  char dir[4400], msg[512];
+  whirl_solution S;
+  const whirl_solution_shape any = {NULL, 0, 0, -1};
+  snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[j].id);
+  if (whirl_solution_find(dir, &any, lab, "", &S, msg, sizeof msg)) return 0;
+  const int good = fits(&J->run[i], &S);
+  whirl_solution_free(&S);
+  return good;
+}
+
+/* Run i restarts by the default rule (IRS, no @RUN): the label AUTO's
+ * numbering gives IRS in run i's group (above); where that is no label
+ * run i can start from (whirl labels a point AUTO does not, or misses
+ * one), the nearest earlier run whose own label IRS (or k-th point of type
+ * TY) is one run i can start from; else the run before.  Re-translates
+ * run i when that changes its source.  0 or 2. */
 static int pick_source(auto_job *J, size_t i) {
   auto_run *r = &J->run[i];
   int irs = 0;
   const char *t = whirl_auto_constants_text(r->ac, "IRS");
   char lab[64] = "";
-  if (r->from[0] || i == 0) return 0;
+  if (r->from[0] || r->sub || i == 0) return 0;
   if (r->label[0]) snprintf(lab, sizeof lab, "%s", r->label);
   else if (t) snprintf(lab, sizeof lab, "%s", t);
   else if (whirl_auto_constants_int(r->ac, "IRS", &irs) == WHIRL_OK && irs) snprintf(lab, sizeof lab, "%d", irs);
@@ -271,6 +333,12 @@ static int pick_source(auto_job *J, size_t i) {
   while (nty < 7 && isalpha((unsigned char)lab[nty])) ty[nty] = lab[nty], nty++;
   ty[nty] = 0;
   const int k = atoi(lab + nty);
+  size_t g;
+  const whirl_auto_label *L = r->label[0] ? NULL : group_label(J, i, ty, k, &g);
+  if (L && fits_label(J, i, g, L->whirl)) {
+    snprintf(r->irs, sizeof r->irs, "%d", L->whirl);
+    return translate_run(J, i, (long)g);
+  }
   const long def = restart_from(J, i);
   for (long j = (long)i - 1; j >= 0; j--) {
     char dir[4400], msg[512];
@@ -392,35 +460,198 @@ static int close_auto(FILE *f[3], char path[3][4400], int rc) {
   return rc;
 }
 
-/* OUT/b.ID, s.ID, d.ID of run i from its output directory, and the run
- * appended to OUT/b.NAME, s.NAME, d.NAME (emptied before the runs) with its labels
- * numbered on (*labels: the labels so far).  0 or 1. */
-static int write_auto_files(const auto_job *J, size_t i, int *labels) {
+/* AUTO's number of run i's first branch (AUTO-07p io.f90, NEWLAB): one
+ * more than the largest of its group for a fresh start or a branch switch
+ * (ISW < 0); the restart label itself for a locus (|ISW| = 2) or orbits
+ * from a Hopf point; else the branch of the restart point. */
+static int first_branch(const auto_job *J, size_t i) {
   const auto_run *r = &J->run[i];
+  int ips = 1, isw = 1, mbr = 0;
+  whirl_auto_constants_int(r->ac, "IPS", &ips);
+  whirl_auto_constants_int(r->ac, "ISW", &isw);
+  for (size_t g = group_start(J, i > 0 ? i - 1 : 0); !r->fresh && g < i; g++)
+    for (size_t m = 0; m < J->run[g].nlabs; m++)
+      if (J->run[g].labs[m].br > mbr) mbr = J->run[g].labs[m].br;
+  if (r->br_fixed > 0) return r->br_fixed;
+  const whirl_auto_label *L = NULL;
+  const int want = r->src >= 0 ? atoi(r->irs[0] ? r->irs : r->label) : 0;
+  for (size_t m = 0; r->src >= 0 && m < J->run[r->src].nlabs && !L; m++)
+    if (J->run[r->src].labs[m].whirl == want) L = &J->run[r->src].labs[m];
+  if (isw < 0 || r->fresh || !L) return mbr + 1;
+  if ((abs(isw) == 2 && abs(L->type) < 10) || (ips == 2 && L->type == 3)) return L->label;
+  return L->br;
+}
+
+/* OUT/b.ID, s.ID, d.ID of run i from its output directory, and the run
+ * appended to OUT/b.NAME, s.NAME, d.NAME (emptied before the runs), its
+ * labels and branches numbered as AUTO numbers them (above), which both
+ * files show.  0 or 1. */
+static int write_auto_files(auto_job *J, size_t i) {
+  auto_run *r = &J->run[i];
   char dir[4400], path[3][4400], msg[1024];
   snprintf(dir, sizeof dir, "%s/%s.out", J->out, r->id);
+  r->offset = 0;
+  for (size_t g = group_start(J, i > 0 ? i - 1 : 0); !r->fresh && g < i; g++)
+    for (size_t m = 0; m < J->run[g].nlabs; m++)
+      if (J->run[g].labs[m].label > r->offset) r->offset = J->run[g].labs[m].label;
+  r->br_auto = first_branch(J, i);
   whirl_auto_output o = {dir, r->ac, J->ndim, J->npar, (const char *const *)J->p_names,
-                         (const char *const *)J->x_names, 0};
+                         (const char *const *)J->x_names, r->offset, !r->fresh, r->br_auto};
+  size_t n = 0;
+  if (whirl_auto_labels(&o, NULL, 0, &n, msg, sizeof msg) != WHIRL_OK ||
+      !(r->labs = calloc(n ? n : 1, sizeof *r->labs)) ||
+      whirl_auto_labels(&o, r->labs, n, &r->nlabs, msg, sizeof msg) != WHIRL_OK) {
+    cli_error("auto", "%s: %s", dir, r->labs ? msg : "out of memory");
+    return 1;
+  }
   FILE *f[3];
-  int n = 0;
   /* a run named NAME (c.NAME) has the merged files as its own */
   for (int merged = !strcmp(r->id, J->name); merged < 2; merged++) {
     int rc = open_auto(J, merged ? J->name : r->id, merged ? "a" : "w", f, path);
-    o.label_offset = merged ? *labels : 0;
-    if (!rc && whirl_auto_write_files(&o, f[0], f[1], f[2], &n, msg, sizeof msg) != WHIRL_OK) {
+    if (!rc && whirl_auto_write_files(&o, f[0], f[1], f[2], NULL, msg, sizeof msg) != WHIRL_OK) {
       cli_error("auto", "%s: %s", dir, msg);
       rc = 1;
     }
     if (close_auto(f, path, rc)) return 1;
   }
-  *labels += n;
   return 0;
+}
+
+/* Run i: its run file written (its restart chosen) and run, its AUTO
+ * files written.  Its exit status (0, 1, 2), or -1 (cannot write), -2
+ * (bad input: stop). */
+static int run_one(auto_job *J, size_t i) {
+  char path[4400], dir[4400];
+  /* an earlier invocation's output of this run must not pass for this one's */
+  snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[i].id);
+  remove_files(dir);
+  for (const char *k = "bsd"; *k; k++) {
+    snprintf(path, sizeof path, "%s/%c.%s", J->out, *k, J->run[i].id);
+    unlink(path);
+  }
+  if (pick_source(J, i)) return -2;
+  snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
+  FILE *rf = fopen(path, "w");
+  if (!rf || fputs(J->run[i].text, rf) < 0 || fclose(rf)) {
+    cli_error("auto", "%s: cannot write", path);
+    return -1;
+  }
+  if (!J->quiet) printf("== %s (c.%s)\n", J->run[i].id, J->run[i].c);
+  fflush(stdout);
+  char *argv[] = {"run", path, J->quiet ? "--quiet" : NULL, NULL};
+  int st = cmd_run(J->quiet ? 3 : 2, argv);
+  char tsv[4400];
+  snprintf(tsv, sizeof tsv, "%s/%s.out/branches.tsv", J->out, J->run[i].id);
+  if (st != 2 && access(tsv, R_OK) == 0 && write_auto_files(J, i) && !st) st = 1;
+  if (st) cli_error("auto", "run %s (c.%s) failed (exit %d)", J->run[i].id, J->run[i].c, st);
+  return st;
+}
+
+/* ---- MXBF: AUTO's automatic branch switching ------------------------- */
+
+/* AUTO-07p ae.f90 (CNRLAE, STBIF, SWPNT): on a branch of equilibria
+ * (IPS = 1, |ISW| <= 1) AUTO stores the first |MXBF| branch points it meets,
+ * in order, on that branch and on the branches it then switches to (a BP
+ * met while |MXBF| are stored is not stored); after a branch ends it
+ * switches at the first stored BP (ISW = -1): with MXBF > 0 first with DS
+ * and then with -DS (the direction in which the parameter grows is +), the
+ * two halves one branch number, with MXBF < 0 once, with DS; at most
+ * 2|MXBF| (|MXBF|) branches follow the first.  Labels number on.  whirl
+ * auto does the same with a run a branch, inserted after run i. */
+typedef struct bp_queue {
+  size_t run[64];
+  int lab[64];
+  size_t n, cap;
+} bp_queue;
+
+static void queue_bps(const auto_job *J, size_t i, bp_queue *q) {
+  for (size_t m = 0; m < J->run[i].nlabs; m++)
+    if (!strcmp(J->run[i].labs[m].ty, "BP") && q->n < q->cap)
+      q->run[q->n] = i, q->lab[q->n++] = J->run[i].labs[m].whirl;
+}
+
+/* Insert after run AT a run switching at BP (run j, whirl label lab) of
+ * run i's constants with DS times SIGN and AUTO branch BR.  0, 1 or 2. */
+static int insert_switch(auto_job *J, size_t i, size_t at, size_t j, int lab, int sign,
+                         int br, int k) {
+  if (J->nrun == MAXALL) {
+    cli_error("auto", "%s: more than %d runs with MXBF's branches", J->run[i].c, MAXALL);
+    return 1;
+  }
+  memmove(&J->run[at + 1], &J->run[at], (J->nrun - at) * sizeof J->run[0]);
+  J->nrun++;
+  for (size_t m = at + 1; m < J->nrun; m++)
+    if (J->run[m].src >= (long)at) J->run[m].src++;
+  auto_run *r = &J->run[at], *p = &J->run[i];
+  memset(r, 0, sizeof *r);
+  snprintf(r->c, sizeof r->c, "%s", p->c);
+  char id[sizeof r->id];
+  snprintf(id, sizeof id, "%.300s.bif%d", p->id, k);
+  memcpy(r->id, id, sizeof id);
+  snprintf(r->irs, sizeof r->irs, "%d", lab);
+  r->sub = 1, r->br_fixed = br;
+  /* the constants file again with ISW = -1 and the signed DS last (a later
+   * key replaces an earlier one) */
+  char path[4400], *text = NULL;
+  size_t len = 0;
+  snprintf(path, sizeof path, "%s/c.%s", J->dir, p->c);
+  FILE *f = fopen(path, "r"), *m = open_memstream(&text, &len);
+  double ds = 0.01;
+  whirl_auto_constants_real(p->ac, "DS", &ds);
+  for (int ch; f && m && (ch = fgetc(f)) != EOF;) fputc(ch, m);
+  if (m) fprintf(m, "\nISW = -1, DS = %.17g\n", sign * ds);
+  if (f) fclose(f);
+  if (!f || !m || fclose(m) || !(r->ac = whirl_auto_constants_alloc()) ||
+      whirl_auto_constants_parse(r->ac, path, text, len) != WHIRL_OK) {
+    cli_error("auto", "%s: cannot set up MXBF's switch", path);
+    free(text);
+    return 1;
+  }
+  free(text);
+  return translate_run(J, at, (long)j);
+}
+
+/* After run i (and its branches so far) ran: the next switch MXBF asks
+ * for, inserted after run at (its BP queue and counts in *q, *nbfc, *br,
+ * *pos).  1 when one was inserted, 0 when none is left, -1 on error. */
+static int next_switch(auto_job *J, size_t i, size_t at, bp_queue *q, int *nbfc, int *br,
+                       int *pos) {
+  int mxbf = 0;
+  whirl_auto_constants_int(J->run[i].ac, "MXBF", &mxbf);
+  const int nbfcs = mxbf > 0 ? 2 * mxbf : -mxbf;
+  queue_bps(J, at, q);
+  if (!q->n || *nbfc >= nbfcs) return 0;
+  if (*pos || mxbf < 0) ++*br; /* a new branch; its second half keeps it */
+  const int sign = *pos ? 1 : -1;
+  const size_t j = q->run[0];
+  const int lab = q->lab[0];
+  if (mxbf > 0) *pos = !*pos;
+  if (*pos) { /* both halves done (or the one of MXBF < 0): the next BP */
+    memmove(q->run, q->run + 1, (q->n - 1) * sizeof *q->run);
+    memmove(q->lab, q->lab + 1, (q->n - 1) * sizeof *q->lab);
+    q->n--;
+  }
+  ++*nbfc;
+  return insert_switch(J, i, at + 1, j, lab, sign, *br, *nbfc) ? -1 : 1;
+}
+
+/* MXBF's queue of run i: set up when run i has ran (IPS = 1, |ISW| <= 1,
+ * MXBF not 0).  0 when MXBF does not apply. */
+static int mxbf_begin(const auto_job *J, size_t i, bp_queue *q) {
+  int ips = 1, isw = 1, mxbf = 0;
+  const auto_run *r = &J->run[i];
+  whirl_auto_constants_int(r->ac, "IPS", &ips);
+  whirl_auto_constants_int(r->ac, "ISW", &isw);
+  whirl_auto_constants_int(r->ac, "MXBF", &mxbf);
+  memset(q, 0, sizeof *q);
+  q->cap = (size_t)abs(mxbf) < 64 ? (size_t)abs(mxbf) : 64;
+  return ips == 1 && abs(isw) <= 1 && mxbf != 0 && !r->sub;
 }
 
 /* Write the run files and run them all in order (a run after a failed one
  * may still work, as in AUTO).  The first failing status. */
 static int run_all(auto_job *J) {
-  int status = 0, labels = 0;
+  int status = 0;
   for (size_t i = 0; i < J->nrun; i++) {
     char path[4400];
     snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
@@ -434,32 +665,21 @@ static int run_all(auto_job *J) {
   char merged[3][4400];
   if (close_auto(f, merged, open_auto(J, J->name, "w", f, merged))) return 1;
   for (size_t i = 0; i < J->nrun; i++) {
-    char path[4400], dir[4400];
-    snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
-    /* an earlier invocation's output of this run must not pass for this one's */
-    snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[i].id);
-    remove_files(dir);
-    for (const char *k = "bsd"; *k; k++) {
-      snprintf(path, sizeof path, "%s/%c.%s", J->out, *k, J->run[i].id);
-      unlink(path);
-    }
-    if (pick_source(J, i)) return 2;
-    snprintf(path, sizeof path, "%s/%s.whirl", J->out, J->run[i].id);
-    FILE *rf = fopen(path, "w");
-    if (!rf || fputs(J->run[i].text, rf) < 0 || fclose(rf)) {
-      cli_error("auto", "%s: cannot write", path);
-      return 1;
-    }
-    if (!J->quiet) printf("== %s (c.%s)\n", J->run[i].id, J->run[i].c);
-    fflush(stdout);
-    char *argv[] = {"run", path, J->quiet ? "--quiet" : NULL, NULL};
-    int st = cmd_run(J->quiet ? 3 : 2, argv);
-    char tsv[4400];
-    snprintf(tsv, sizeof tsv, "%s/%s.out/branches.tsv", J->out, J->run[i].id);
-    if (st != 2 && access(tsv, R_OK) == 0 && write_auto_files(J, i, &labels) && !st)
-      st = 1;
-    if (st) cli_error("auto", "run %s (c.%s) failed (exit %d)", J->run[i].id, J->run[i].c, st);
+    int st = run_one(J, i);
+    if (st == -2) return 2;
+    if (st < 0) return 1;
     if (st && !status) status = st;
+    bp_queue q;
+    if (!mxbf_begin(J, i, &q)) continue;
+    int nbfc = 0, br = J->run[i].br_auto, pos = 1, k;
+    size_t at = i;
+    while ((k = next_switch(J, i, at, &q, &nbfc, &br, &pos)) == 1) {
+      st = run_one(J, ++at);
+      if (st < 0) return st == -2 ? 2 : 1;
+      if (st && !status) status = st;
+    }
+    if (k < 0) return 1;
+    i = at;
   }
   return status;
 }
@@ -491,6 +711,7 @@ static int parse_args(auto_job *J, int argc, char **argv, const char **runs) {
   snprintf(dir, sizeof dir, "%s", pos[0]);
   for (size_t n = strlen(dir); n > 1 && dir[n - 1] == '/';) dir[--n] = 0;
   J->dir = dir;
+  if (!realpath(dir, J->absdir)) J->absdir[0] = '\0';
   if (pos[1]) J->name = pos[1];
   else { /* DIR's last component */
     static char base[256];
@@ -529,6 +750,7 @@ int cmd_auto(int argc, char **argv) {
   for (size_t i = 0; i < J.nrun; i++) {
     whirl_auto_constants_free(J.run[i].ac);
     free(J.run[i].text);
+    free(J.run[i].labs);
   }
   free_names(J.p_names, J.npar);
   free_names(J.x_names, (size_t)J.ndim);

@@ -785,9 +785,21 @@ int whirl_cont_start_switch(whirl_cont *c, const whirl_point *bp, int dir) {
     }
     if (nn > bestn) {
       bestn = nn;
-      for (size_t i = 0; i < N; ++i) ph[i] = (v[i] - vt * bp->t[i] / tn) * (dir < 0 ? -1.0 : 1.0);
+      for (size_t i = 0; i < N; ++i) ph[i] = v[i] - vt * bp->t[i] / tn;
     }
   }
+  /* dir = +1 is the direction in which the parameter grows, as in AUTO
+   * (AUTO-07p ae.f90, STPRAE: the sign makes PAR(ICP(1))-dot >= 0), so
+   * that the sign of DS chooses the side and not the SVD's sign.  Where the
+   * new branch leaves at a constant parameter (a pitchfork: AUTO's sign is
+   * round-off there), the first of its largest components grows. */
+  double big = 0.0, lead = 0.0;
+  for (size_t i = 0; i < N; ++i) big = fmax(big, fabs(ph[i]));
+  for (size_t i = 0; i < n && lead == 0.0; ++i)
+    if (fabs(ph[i]) >= (1.0 - 1e-8) * big) lead = ph[i];
+  const double key = fabs(ph[n]) > 1e-8 * big ? ph[n] : lead;
+  const double sg = (key < 0.0 ? -1.0 : 1.0) * (dir < 0 ? -1.0 : 1.0);
+  for (size_t i = 0; i < N; ++i) ph[i] *= sg;
   rc = whirl_cont_start_direction(c, bp->x, bp->p, ph);
 done:
   free(A);
@@ -997,12 +1009,45 @@ static int crosses_hb(const whirl_cont *c, size_t k, const cont_state *a,
   const int r = a->n_cu > b->n_cu ? a->n_cu : b->n_cu;
   return sgn(cont_hb_rank_test(c, a, r)) * sgn(cont_hb_rank_test(c, b, r)) < 0;
 }
+double cont_pd_rank_test(const cont_state *st, int k) {
+  double best[64];
+  int have = 0;
+  if (k < 1 || k > 64) return NAN;
+  /* the k most negative real parts, ascending: a complex pair about to
+   * meet on the negative axis counts by its real part, so the test stays
+   * defined (and continuous) through the meeting that precedes many PDs
+   * (demo pen's rotations on IAD = 3 steps) */
+  for (size_t i = 0; i < st->nspec; ++i) {
+    const double v = st->re[i];
+    if (!(v < 0.0)) continue;
+    int j = have < k ? have++ : k;
+    if (j == k && !(v < best[k - 1])) continue;
+    if (j == k) j = k - 1;
+    while (j > 0 && best[j - 1] > v) { best[j] = best[j - 1]; --j; }
+    best[j] = v;
+  }
+  return have == k ? best[k - 1] + 1.0 : NAN;
+}
+/* The count of real multipliers below -1 changed, and the one that passed
+ * -1 (the k-th most negative, k the larger count: when it moves far in a
+ * step, another negative one can be nearer to -1 than it, lor's PD at rho
+ * = 229.4 on big steps) is near -1 at both ends, within a factor 10:
+ * multipliers computed wildly wrong on an orbit close to a homoclinic loop
+ * of a conservative family (demo vhb: true ones 1 and 1, computed -1e8 and
+ * -0.5) jump instead, and are no PD. */
+static int near_minus_one(double psi) {
+  const double mu = psi - 1.0; /* psi = mu + 1 */
+  return mu < -0.1 && mu > -10.0;
+}
 static int crosses_pd(const whirl_cont *c, size_t k, const cont_state *a,
                       const cont_state *b) {
   (void)k;
-  return a->tests_valid && c->opt.detect_pd && a->n_rn >= 0 && b->n_rn >= 0 &&
-         a->n_rn != b->n_rn && a->has_pd && b->has_pd &&
-         sgn(a->psi_pd) * sgn(b->psi_pd) < 0;
+  if (!(a->tests_valid && c->opt.detect_pd && a->n_rn >= 0 && b->n_rn >= 0 &&
+        a->n_rn != b->n_rn))
+    return 0;
+  const int r = a->n_rn > b->n_rn ? a->n_rn : b->n_rn;
+  const double fa = cont_pd_rank_test(a, r), fb = cont_pd_rank_test(b, r);
+  return sgn(fa) * sgn(fb) < 0 && near_minus_one(fa) && near_minus_one(fb);
 }
 static int crosses_pmin(const whirl_cont *c, size_t k, const cont_state *a,
                         const cont_state *b) {

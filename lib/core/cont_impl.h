@@ -80,6 +80,8 @@ struct whirl_cont {
   double *Xstart;     /* N: start point, for loop detection */
   double ds;          /* current signed step (> 0 along the tangent) */
   int its;            /* Newton iterations of the last correction */
+  int pd_rank;        /* the PD test: the pd_rank-th most negative real
+                         multiplier (cont_pd_rank_test) */
   int hb_rank;        /* 0: the HB/TR test is psi_hb; k > 0: the k-th
                          largest of the complex spectrum (cont_hb_rank_test)
                          for the crossing being located */
@@ -132,6 +134,8 @@ double cont_uz_value(const whirl_cont *c, size_t k, const cont_state *st);
  * functions is continuous, and it changes sign wherever the count of
  * complex ones beyond the boundary goes through k. */
 double cont_hb_rank_test(const whirl_cont *c, const cont_state *st, int k);
+/* mu + 1 of the k-th most negative real part of a multiplier (NaN: fewer). */
+double cont_pd_rank_test(const cont_state *st, int k);
 
 int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
                 cont_state *out);

@@ -35,6 +35,7 @@ static double psi(const whirl_cont *c, int ev, size_t k, const cont_state *st,
     if (c->hb_rank > 0) return cont_hb_rank_test(c, st, c->hb_rank);
     return st->has_hb ? st->psi_hb : NAN;
   case EV_PD:
+    if (c->pd_rank > 0) return cont_pd_rank_test(st, c->pd_rank);
     return st->has_pd ? st->psi_pd : NAN;
   case EV_PMAX:
     return pv - c->opt.p_max;
@@ -89,6 +90,8 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
     ref = out->logdet;
     fa = out->sign_det;
   } else {
+    if (ev == EV_PD) /* the multiplier that passed -1 (crosses_pd) */
+      c->pd_rank = a->n_rn > b->n_rn ? a->n_rn : b->n_rn;
     if (ev == EV_HB) { /* psi_hb when it changes sign, else the order
                           statistic of the count that changed */
       c->hb_rank = 0;
@@ -136,10 +139,17 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
        * it converges only linearly): keep the best point found so far when
        * the bracket has already shrunk to a small part of the step */
       if (found && fabs(sb - sa) <= 1e-3 * fabs(ds)) {
-        memcpy(out->X, Xbest, N * sizeof *Xbest);
-        rc = cont_correct(c, a->X, c->dir, sbest, out->X);
-        sout = sbest;
-        if (rc == 0 && !p_only) rc = cont_analyse(c, out, c->dir);
+        /* at the singular point itself the tangent solve may fail too
+         * (enz's pitchfork by a fold): then a point a little off it */
+        static const double off[] = {0.0, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5};
+        rc = 1;
+        for (size_t j = 0; rc != 0 && j < sizeof off / sizeof *off; ++j) {
+          memcpy(out->X, Xbest, N * sizeof *Xbest);
+          sout = sbest + off[j] * fabs(ds);
+          rc = cont_correct(c, a->X, c->dir, sout, out->X);
+          if (rc == 0 && !p_only) rc = cont_analyse(c, out, c->dir);
+          if (rc < 0) break;
+        }
       }
       if (rc != 0) found = 0;
       break;

@@ -42,6 +42,7 @@ static void put_reals(FILE *f, const double *v, size_t n) {
 
 typedef struct row {
   int br, pt, lab, stab;
+  int alab; /* AUTO's label (0: none): label_offset + its rank */
   char ty[3];
   double *v; /* npar, [period], l2, state */
 } row;
@@ -58,6 +59,7 @@ typedef struct run {
   int icp[16]; /* 1-based; 11 of orbits: the period */
   size_t nicp;
   table t;
+  char mname[64]; /* AUTO's name of the L2-NORM column (IPLT) */
 } run;
 
 static int named(const whirl_auto_constants *ac, const char *name) {
@@ -66,6 +68,23 @@ static int named(const whirl_auto_constants *ac, const char *name) {
     if (whirl_auto_constants_item(ac, "parnames", i, &it) == WHIRL_OK && !strcmp(it.text, name))
       return it.index;
   return !strcmp(name, "PERIOD") || !strcmp(name, "Period") ? 11 : 0;
+}
+
+/* AUTO's name of the second column (io.f90, HEADNG) under IPLT: L2-NORM,
+ * or U(i), MAX U(i), MIN U(i), INTEGRAL U(i), L2-NORM U(i) with the state's
+ * names (unames). */
+static void measure_name(run *R) {
+  int ip = 0;
+  const long n = R->o->ndim;
+  whirl_auto_constants_int(R->o->ac, "IPLT", &ip);
+  snprintf(R->mname, sizeof R->mname, "L2-NORM");
+  if (ip == 0 || ip < -n || ip > 3 * n) return;
+  const long i = (ip < 0 ? -ip : ip > 2 * n ? ip - 2 * n : ip > n ? ip - n : ip) - 1;
+  char x[40];
+  if (R->o->x_names) snprintf(x, sizeof x, "%.39s", R->o->x_names[i]);
+  else snprintf(x, sizeof x, "U(%ld)", i + 1);
+  const char *pre = ip > 2 * n ? "L2-NORM " : ip > n ? "INTEGRAL " : !R->orbit ? "" : ip > 0 ? "MAX " : "MIN ";
+  snprintf(R->mname, sizeof R->mname, "%s%s", pre, x);
 }
 
 static void read_icp(run *R) {
@@ -81,6 +100,7 @@ static void read_icp(run *R) {
     if (k > 0) R->icp[R->nicp++] = k;
   }
   if (!R->nicp) R->icp[R->nicp++] = 1;
+  measure_name(R);
 }
 
 static void table_free(table *t) {
@@ -137,6 +157,26 @@ static int read_table(run *R, char *msg, size_t len) {
   return rc;
 }
 
+/* AUTO's labels: the labelled rows numbered on from label_offset.  A run
+ * restarted from a label does not label its first point (AUTO-07p's
+ * CNRLAE/CNRLBV give it type 0 when IRS is not 0), so whirl's EP there
+ * loses its label and type.  The number of labels. */
+static int number_labels(run *R) {
+  int k = 0;
+  for (size_t i = 0; i < R->t.n; i++) {
+    row *r = &R->t.r[i];
+    if (R->o->restarted && i == 0 && r->lab > 0 && !strcmp(r->ty, "EP"))
+      r->lab = 0, snprintf(r->ty, sizeof r->ty, "RG");
+    r->alab = r->lab > 0 ? R->o->label_offset + ++k : 0;
+  }
+  return k;
+}
+
+/* AUTO's branch number of a row: whirl's, or o->br on from the run's first. */
+static int branch_of(const run *R, const row *r) {
+  return R->o->br > 0 ? R->o->br + r->br - 1 : r->br;
+}
+
 /* ---- b. ---------------------------------------------------------------- */
 
 /* AUTO's type code of whirl's TY (parseB.type_translation's table). */
@@ -180,12 +220,13 @@ static void par_name(const run *R, int k, char *buf, size_t len) {
 }
 
 static void columns(const run *R, cols *c) {
+  /* AUTO's b-file names IPLT's measure: "L2-NORM U(1)", "MAX U(2)", ... */
   char nm[80];
   const size_t l2 = R->o->npar + (size_t)R->orbit;
   c->n = 0;
   par_name(R, R->icp[0], nm, sizeof nm);
   add_col(c, par_at(R, R->icp[0]), nm);
-  add_col(c, l2, "L2-NORM");
+  add_col(c, l2, R->mname);
   for (int i = 0; i < R->o->ndim && i < 7; i++) { /* AUTO shows up to 7 */
     char x[64];
     if (R->o->x_names) snprintf(x, sizeof x, "%s", R->o->x_names[i]);
@@ -265,9 +306,9 @@ static void b_header(FILE *f, const run *R, const cols *c) {
 
 static void b_row(FILE *f, const run *R, const cols *c, const row *r) {
   char b[40];
-  const int br = R->orbit ? -r->br : r->br, pt = r->stab == 1 ? -(r->pt + 1) : r->pt + 1;
-  fprintf(f, "%4d%6d%4d%5d", br, pt, type_code(r->ty, r->lab, R->orbit),
-          r->lab > 0 ? r->lab + R->o->label_offset : 0);
+  const int br = R->orbit ? -branch_of(R, r) : branch_of(R, r),
+            pt = r->stab == 1 ? -(r->pt + 1) : r->pt + 1;
+  fprintf(f, "%4d%6d%4d%5d", br, pt, type_code(r->ty, r->lab, R->orbit), r->alab);
   for (size_t j = 0; j < c->n; j++) fputs(es(r->v[c->at[j]], 19, 10, b, sizeof b), f);
   fputc('\n', f);
 }
@@ -292,8 +333,8 @@ static void write_d(FILE *f, const run *R) {
     if (r->lab <= 0) continue;
     fputs("\n  BR    PT  TY  LAB", f);
     for (size_t j = 0; j < c.n; j++) fprintf(f, " %13.13s", c.name[j]);
-    fprintf(f, "\n%4d%6d  %-2s%5d", r->br, r->stab == 1 ? -(r->pt + 1) : r->pt + 1,
-            strcmp(r->ty, "RG") ? r->ty : "  ", r->lab + R->o->label_offset);
+    fprintf(f, "\n%4d%6d  %-2s%5d", branch_of(R, r), r->stab == 1 ? -(r->pt + 1) : r->pt + 1,
+            strcmp(r->ty, "RG") ? r->ty : "  ", r->alab);
     for (size_t j = 0; j < c.n; j++) fputs(es(r->v[c.at[j]], 14, 5, b, sizeof b), f);
     fputs("\n===============================================\n", f);
   }
@@ -322,8 +363,8 @@ static int write_s_block(FILE *f, const run *R, const whirl_solution *S, const r
   if (orbit) par[10] = S->x[S->nx - 1];
   const size_t nrow = ntpl * lines_of(n + 1, 7) + lines_of(nfpr, 20) + lines_of(nfpr, 7) +
                       ntpl * lines_of(n, 7) + lines_of(nparw, 7);
-  fprintf(f, "%6d%6d%6d%6d%6zu%6d%8zu%6zu%8zu%5d%5d%5zu%5d%5zu%5d%5d\n", r->br, r->pt + 1,
-          type_code(r->ty, r->lab, orbit), r->lab + R->o->label_offset, nfpr, R->isw, ntpl,
+  fprintf(f, "%6d%6d%6d%6d%6zu%6d%8zu%6zu%8zu%5d%5d%5zu%5d%5zu%5d%5d\n", branch_of(R, r),
+          r->pt + 1, type_code(r->ty, r->lab, orbit), r->alab, nfpr, R->isw, ntpl,
           n + 1, nrow,
           orbit ? S->ntst : 1, orbit ? S->ncol : 0, nparw, 0, n, R->ips, 0);
   for (size_t j = 0; j < ntpl; j++) { /* t and the state at node j */
@@ -384,16 +425,38 @@ int whirl_auto_write_files(const whirl_auto_output *o, FILE *b, FILE *s, FILE *d
   R.o = o;
   read_icp(&R);
   int rc = read_table(&R, msg, len);
+  const int nlab = rc ? 0 : number_labels(&R);
   if (!rc && b) write_b(b, &R);
   if (!rc && s) rc = write_s(s, &R, msg, len);
   if (!rc && d) write_d(d, &R);
-  if (!rc && nlabels) {
-    *nlabels = 0;
-    for (size_t i = 0; i < R.t.n; i++) *nlabels += R.t.r[i].lab > 0;
-  }
+  if (!rc && nlabels) *nlabels = nlab;
   if (!rc && ((b && ferror(b)) || (s && ferror(s)) || (d && ferror(d)))) {
     snprintf(msg, len, "write error");
     rc = WHIRL_EIO;
+  }
+  table_free(&R.t);
+  return rc;
+}
+
+int whirl_auto_labels(const whirl_auto_output *o, whirl_auto_label *lab, size_t max,
+                      size_t *n, char *msg, size_t len) {
+  if (!o || !o->rundir || !o->ac || o->ndim < 1 || !n) return WHIRL_EINVAL;
+  run R;
+  memset(&R, 0, sizeof R);
+  R.o = o;
+  read_icp(&R);
+  int rc = read_table(&R, msg, len);
+  *n = 0;
+  if (!rc) number_labels(&R);
+  for (size_t i = 0; !rc && i < R.t.n; i++) {
+    const row *r = &R.t.r[i];
+    if (!r->alab) continue;
+    if (*n < max) {
+      lab[*n].label = r->alab, lab[*n].whirl = r->lab, lab[*n].br = branch_of(&R, r);
+      lab[*n].type = type_code(r->ty, r->lab, R.orbit);
+      snprintf(lab[*n].ty, sizeof lab[*n].ty, "%s", r->ty);
+    }
+    ++*n;
   }
   table_free(&R.t);
   return rc;

@@ -286,14 +286,37 @@ static int user_points(ctx *c) {
   return WHIRL_OK;
 }
 
-/* Keys whirl has no use for yet: refused (dat) or noted. */
+/* dat = 'NAME': DAT, the file NAME, else NAME.dat, in opts->dir (AUTO-07p
+ * opens them in that order, toolboxbv.f90 STPNUB); a start of orbits only. */
+static int dat(ctx *c) {
+  const char *d = whirl_auto_constants_text(c->ac, "dat");
+  const int line = whirl_auto_constants_line(c->ac, "dat");
+  if (!d || !d[0]) return WHIRL_OK;
+  if (c->ips != 2)
+    return whirl_auto_constants_fail(c->ac, line, "dat = '%s': a data file starts periodic "
+                                     "orbits (IPS = 2), not IPS = %d", d, c->ips);
+  char path[2][4200];
+  for (int k = 0; k < 2; k++) {
+    snprintf(path[k], sizeof path[k], "%s%s%s%s", c->o->dir && d[0] != '/' ? c->o->dir : "",
+             c->o->dir && d[0] != '/' ? "/" : "", d, k ? ".dat" : "");
+    FILE *f = fopen(path[k], "r");
+    if (f) {
+      fclose(f);
+      if (strchr(path[k], '\'') || strchr(path[k], '\n'))
+        return whirl_auto_constants_fail(c->ac, line, "dat: %s: a quote or newline in the path",
+                                         path[k]);
+      put(c->t, "DAT    = '%s'\n", path[k]);
+      return WHIRL_OK;
+    }
+  }
+  return whirl_auto_constants_fail(c->ac, line, "dat = '%s': no data file %s or %s", d, path[0],
+                                   path[1]);
+}
+
+/* Keys whirl has no use for yet: noted. */
 static int unused(ctx *c) {
   static const char *const noted[] = {"THL", "THU", "STOP", "SP", "IEQUIB", "ITWIST",
                                       "ISTART", "IREV", "IFIXED", "IPSI", "TY"};
-  if (whirl_auto_constants_line(c->ac, "dat"))
-    return whirl_auto_constants_fail(c->ac, whirl_auto_constants_line(c->ac, "dat"),
-                                     "dat = '%s': whirl cannot start from a data file yet",
-                                     whirl_auto_constants_text(c->ac, "dat"));
   for (size_t i = 0; i < sizeof noted / sizeof *noted; i++)
     if (whirl_auto_constants_line(c->ac, noted[i]))
       put(c->t, "# note: %s (line %d) is not used by whirl\n", noted[i],
@@ -316,6 +339,7 @@ int whirl_auto_constants_runfile(whirl_auto_constants *ac, const whirl_auto_runf
   if (!rc) copy_same(&c);
   if (!rc) rc = values(&c);
   if (!rc) rc = user_points(&c);
+  if (!rc) rc = dat(&c);
   if (!rc) rc = unused(&c);
   if (!rc && t.oom) rc = WHIRL_ENOMEM;
   if (rc) {

@@ -100,6 +100,9 @@ static void base_of(const branch_spec *b, const double *Z, const double *p,
     whirl_hopf_params(b->hopf, Z, p, pfull);
   else
     memcpy(pfull, p, b->sys->npar * sizeof *pfull);
+  /* the model's derived parameters (AUTO's PVLS) at an equilibrium */
+  if (b->kind == WHIRL_SOL_EQ && !b->fold && !b->hopf && b->model && b->model->pvls)
+    b->model->pvls(Z, pfull, b->model->problem.data);
 }
 
 /* The quantity a UZR/UZSTOP value refers to (whirl_cont_options.uz_fun). */
@@ -254,8 +257,9 @@ static int branch_end(run_ctx *R, whirl_cont *c, int rc, int stop, size_t npts) 
     rc = 0;
   } else if (rc == WHIRL_DONE || stop) {
     fprintf(R->log, "  ended: %s after %zu points\n",
-            stop ? "L2-NORM left [A0, A1]"
-                 : whirl_stop_reason_name(whirl_cont_stop_reason(c)),
+            stop == 1 ? "L2-NORM left [A0, A1]"
+            : stop ? "maximum number of points (NMX)"
+                   : whirl_stop_reason_name(whirl_cont_stop_reason(c)),
             npts);
     rc = 0;
   } else if (rc < 0) {
@@ -368,14 +372,31 @@ int run_branch(run_ctx *R, branch_spec *b) {
     int type = pt->type;
     const char *ty = type ? whirl_point_type_name(type) : "RG";
     base_of(b, pt->x, pt->p, pfull);
-    int lab = 0, labelled = type != WHIRL_PT_REGULAR ||
-                            (s->npr > 0 && pt->index > 0 && pt->index % (size_t)s->npr == 0);
-    if (labelled) lab = ++R->label;
-    if (type >= 0 && type < 16) counts[type]++;
     double l2 = 0.0, period = 0.0;
     const void *obj = b->kind == WHIRL_SOL_COLLOC ? (const void *)b->colloc
                       : b->kind == WHIRL_SOL_HBM  ? (const void *)b->hbm
                                             : NULL;
+    /* the first point past A0 or A1 ends the branch, an EP as in AUTO
+     * (ae.f90 STPLAE: ITP = 9 where AMP leaves [A0, A1]) */
+    if (pt->index > 0 && (s->a0 > 0.0 || s->a1 < 1e30) &&
+        run_point_measures(R, b->kind, obj, pt->x, pfull, &l2, &period, state) == 0 &&
+        (l2 < s->a0 || l2 > s->a1)) {
+      stop = 1;
+      fprintf(R->log, "  L2-NORM = %g left [A0, A1]: branch ends\n", l2);
+      if (type == WHIRL_PT_REGULAR) ty = "EP";
+    }
+    /* AUTO counts points, the start and the special points included
+     * (ae.f90 STPLAE: NTOT, PT = index + 1): the NMX-th ends the branch,
+     * an EP, and every NPR-th regular one is labelled */
+    const size_t ntot = pt->index + 1;
+    if (!stop && ntot >= (size_t)s->nmx) {
+      stop = 2;
+      if (type == WHIRL_PT_REGULAR) ty = "EP";
+    }
+    int lab = 0, labelled = type != WHIRL_PT_REGULAR || stop ||
+                            (s->npr > 0 && ntot % (size_t)s->npr == 0);
+    if (labelled) lab = ++R->label;
+    if (type >= 0 && type < 16) counts[type]++;
     if (b->trace && run_trace_add(b->trace, pt->x, pt->p, b->icp, type, R->branch)) {
       rc = -1;
       break;
@@ -384,10 +405,6 @@ int run_branch(run_ctx *R, branch_spec *b) {
                       pfull, pt->stable, &l2, &period, state)) {
       rc = -1;
       break;
-    }
-    if (!stop && pt->index > 0 && (l2 < s->a0 || l2 > s->a1)) {
-      stop = 1;
-      fprintf(R->log, "  L2-NORM = %g left [A0, A1]: branch ends\n", l2);
     }
     if (labelled && write_label(R, b, pt, ty, lab, pfull)) {
       rc = -1;
@@ -411,6 +428,7 @@ int run_branch(run_ctx *R, branch_spec *b) {
  * or a forced response settled by time integration from U. */
 static int start_samples(run_ctx *R, size_t m, double *xs, double *T) {
   const whirl_model *md = R->model;
+  if (R->s->dat[0]) return run_dat_samples(R, m, xs, T, NULL);
   if (md->forcing_param < 0) {
     if (!md->stpnt || !(md->period0 > 0)) {
       run_fail(R, WHIRL_RK_IPS, "IPS = 2 from the model's start needs a "
@@ -610,8 +628,15 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
   if (!restart) {
     const size_t m = 200;
     double T;
-    O->xs = malloc(m * R->n * sizeof *O->xs);
-    if (!O->xs || start_samples(R, m, O->xs, &T)) return O->xs ? -2 : -1;
+    O->xs = malloc((m + 1) * R->n * sizeof *O->xs);
+    if (!O->xs) return -1;
+    if (R->s->dat[0]) { /* the data's jumps over the period: rotations */
+      double *jump = O->xs + m * R->n;
+      if (run_dat_samples(R, m, O->xs, &T, jump)) return -2;
+      if (whirl_colloc_set_rotations(O->colloc, jump))
+        fprintf(R->log, "rotations: components turning by 2 pi k over a period (AUTO's NRTN)\n");
+    } else if (start_samples(R, m, O->xs, &T))
+      return -2;
     whirl_colloc_from_samples(O->colloc, O->xs, m, T, O->X);
   } else if (so->kind == WHIRL_SOL_EQ) {
     if (strcmp(so->ty, "HB") || !R->prob.autonomous) {
@@ -633,6 +658,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
     if ((size_t)so->ntst == co.ntst && (size_t)so->ncol == co.ncol) {
       memcpy(O->X, so->x, b->nb * sizeof *O->X);
       whirl_periodic_restore(&dst, so->mesh, O->X);
+      whirl_colloc_rotations_of(O->colloc, O->X); /* AUTO's SETRTN */
     } else { /* another mesh: resample the stored orbit */
       whirl_colloc_options c0 = co;
       c0.ntst = (size_t)so->ntst;
@@ -641,6 +667,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
       if (!O->colloc2) return -1;
       whirl_periodic src = whirl_periodic_of_colloc(O->colloc2);
       whirl_periodic_restore(&src, so->mesh, so->x);
+      whirl_colloc_rotations_of(O->colloc, so->x); /* AUTO's SETRTN */
       if (whirl_periodic_convert(&src, so->x, so->par, &dst, 400, O->X))
         return -1;
       whirl_colloc_free(O->colloc2);
@@ -785,6 +812,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
   b.icp = R->icp[0];
   b.q = -1;
   b.ds_scale = 1.0;
+  b.model = R->model;
 
   if (s->ndiscover && s->ips != WHIRL_IPS_EQUILIBRIA && R->model->forcing_param < 0) {
     run_fail(R, WHIRL_RK_DISCOVER, "DISCOVER finds periodic orbits of forced models; "

@@ -106,6 +106,9 @@ int run_solution_find(const run_ctx *R, const char *dir, int label,
 int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q);
 /* L2-NORM, PERIOD (0 for equilibria) and the state (its MAX over the orbit
  * for periodic orbits, mx[n]) of the solution xb of a problem of this kind */
+/* DAT: m samples xs[m * n] of the data file's orbit, its period *T and
+ * (jump not NULL) u_last - u_first, jump[n] (run_dat.c).  0, or -1 (said). */
+int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T, double *jump);
 int run_point_measures(const run_ctx *R, whirl_solution_kind kind, const void *obj,
                        const double *xb, const double *p, double *l2,
                        double *period, double *mx);
@@ -158,6 +161,7 @@ typedef struct branch_spec {
   int dir_sign;            /* +1 / -1: direction of the parameter at the
                               start; 0: the sign of DS */
   run_trace *trace;        /* record the points here (or NULL) */
+  const whirl_model *model; /* its derived parameters (pvls), or NULL */
 } branch_spec;
 
 /* Continue branch b: its rows, labels, log and summary.  0, -1, -2. */

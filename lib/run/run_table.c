@@ -10,6 +10,15 @@
  * a periodic orbit; MAX and L2-NORM of orbits come from the periodic-orbit
  * interface (whirl/periodic.h), so the table does not choose between
  * collocation and harmonic balance.
+ *
+ * IPLT (AUTO-07p manual, "IPLT"; io.f90 HEADNG, ae.f90 STPLAE) replaces
+ * that column as AUTO does: for equilibria U(i) where |IPLT| = i <= NDIM,
+ * U(IPLT - NDIM) for NDIM < IPLT <= 2 NDIM ("INTEGRAL U(i)") and
+ * U(IPLT - 2 NDIM) up to 3 NDIM ("L2-NORM U(i)"); for orbits MAX U(i),
+ * MIN U(-IPLT) (over the nodes, as AUTO), ∫₀¹ u_i and sqrt(∫₀¹ u_i²); any
+ * other IPLT is the L2-NORM.  The limits A0, A1 bound the same measure.
+ * The column keeps its name l2_norm (doc/tables.md); the picture's axis
+ * and AUTO's b-file (auto_files.c) name the measure as AUTO does.
  * SPDX-License-Identifier: BSD-3-Clause */
 #define _POSIX_C_SOURCE 200809L /* open_memstream */
 #include <math.h>
@@ -20,6 +29,26 @@
 #include <strings.h>
 
 #include "run_impl.h"
+
+/* IPLT's component (0-based) and kind: 0 L2-NORM, 1 U(i) or MAX U(i),
+ * 2 MIN U(i), 3 INTEGRAL U(i), 4 L2-NORM U(i). */
+static int iplt_kind(const run_ctx *R, size_t *comp) {
+  const long n = (long)R->n, ip = R->s->iplt;
+  if (ip == 0 || ip < -n || ip > 3 * n) return 0;
+  *comp = (size_t)((ip < 0 ? -ip : ip > 2 * n ? ip - 2 * n : ip > n ? ip - n : ip) - 1);
+  return ip < 0 ? 2 : ip > 2 * n ? 4 : ip > n ? 3 : 1;
+}
+
+/* The name of the L2-NORM column (AUTO's HEADNG names). */
+static void measure_name(const run_ctx *R, whirl_solution_kind kind, char *buf, size_t len) {
+  size_t i = 0;
+  const int k = iplt_kind(R, &i);
+  static const char *const pre[2][5] = {{"L2-NORM", "", "", "INTEGRAL ", "L2-NORM "},
+                                        {"L2-NORM", "MAX ", "MIN ", "INTEGRAL ", "L2-NORM "}};
+  const int orbit = kind != WHIRL_SOL_EQ;
+  if (!k) snprintf(buf, len, "L2-NORM");
+  else snprintf(buf, len, "%s%s", pre[orbit][k], R->xnames[i]);
+}
 
 int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q) {
   FILE *f = R->table;
@@ -38,6 +67,9 @@ int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q) {
     col++;
     if (R->plot_kind == RUN_PLOT_PERIOD) ycol = (int)col;
   }
+  /* the column keeps its name under IPLT; the picture's axis says AUTO's */
+  char mname[WHIRL_RUN_MAXNAME + 16];
+  measure_name(R, kind, mname, sizeof mname);
   fprintf(f, "\tl2_norm");
   col++;
   if (!ycol || R->plot_kind == RUN_PLOT_L2) ycol = (int)col;
@@ -58,7 +90,7 @@ int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q) {
   else if (kind != WHIRL_SOL_EQ && ycol == 5 + (int)R->npar)
     snprintf(R->plot_y_name, sizeof R->plot_y_name, "PERIOD");
   else if (ycol == 5 + (int)R->npar + (kind != WHIRL_SOL_EQ))
-    snprintf(R->plot_y_name, sizeof R->plot_y_name, "L2-NORM");
+    snprintf(R->plot_y_name, sizeof R->plot_y_name, "%.*s", (int)sizeof R->plot_y_name - 1, mname);
   else
     snprintf(R->plot_y_name, sizeof R->plot_y_name, "%s%s", kind == WHIRL_SOL_EQ ? "" : "MAX ",
              R->xnames[ycol - 6 - (int)R->npar - (kind != WHIRL_SOL_EQ)]);
@@ -71,6 +103,49 @@ whirl_periodic run_periodic(whirl_solution_kind kind, const void *obj) {
   return kind == WHIRL_SOL_COLLOC ? whirl_periodic_of_colloc(o) : whirl_periodic_of_hbm(o);
 }
 
+/* ∫u_i, ∫u_i² and the minimum of an orbit's component i: collocation by
+ * its mesh, harmonic balance by 512 equally spaced samples (the trapezoid
+ * rule is exact for its trigonometric polynomials of lower degree). */
+static int orbit_moments(const run_ctx *R, whirl_solution_kind kind, const void *obj,
+                         const whirl_periodic *po, const double *xb, size_t i, double m[3]) {
+  const size_t n = R->n, ns = 512;
+  double *v = malloc(4 * n * sizeof *v);
+  int rc = v ? WHIRL_OK : WHIRL_ENOMEM;
+  if (!rc && kind == WHIRL_SOL_COLLOC)
+    rc = whirl_colloc_moments(obj, xb, v, v + n, v + 2 * n, v + 3 * n);
+  else if (!rc) {
+    v[i] = v[n + i] = 0.0, v[2 * n + i] = HUGE_VAL;
+    double *u = malloc(n * sizeof *u);
+    for (size_t k = 0; u && !rc && k < ns; k++) {
+      rc = whirl_periodic_eval(po, xb, (double)k / (double)ns, u);
+      v[i] += u[i] / (double)ns, v[n + i] += u[i] * u[i] / (double)ns;
+      v[2 * n + i] = fmin(v[2 * n + i], u[i]);
+    }
+    if (!u) rc = WHIRL_ENOMEM;
+    free(u);
+  }
+  if (!rc) m[0] = v[i], m[1] = v[n + i], m[2] = v[2 * n + i];
+  free(v);
+  return rc;
+}
+
+/* The L2-NORM column's value under IPLT (above). */
+static int iplt_measure(const run_ctx *R, whirl_solution_kind kind, const void *obj,
+                        const whirl_periodic *po, const double *xb, const double *mx,
+                        double *out) {
+  size_t i = 0;
+  const int k = iplt_kind(R, &i);
+  if (!k) return 0;
+  if (kind == WHIRL_SOL_EQ || k == 1) {
+    *out = kind == WHIRL_SOL_EQ ? xb[i] : mx[i];
+    return 0;
+  }
+  double m[3];
+  if (orbit_moments(R, kind, obj, po, xb, i, m)) return -1;
+  *out = k == 2 ? m[2] : k == 3 ? m[0] : sqrt(m[1]);
+  return 0;
+}
+
 int run_point_measures(const run_ctx *R, whirl_solution_kind kind, const void *obj,
                        const double *xb, const double *p, double *l2out,
                        double *period_out, double *mx) {
@@ -79,12 +154,13 @@ int run_point_measures(const run_ctx *R, whirl_solution_kind kind, const void *o
     for (size_t i = 0; i < R->n; i++) l2 += xb[i] * xb[i], mx[i] = xb[i];
     *l2out = sqrt(l2);
     *period_out = 0.0;
-    return 0;
+    return iplt_measure(R, kind, obj, NULL, xb, mx, l2out);
   }
   const whirl_periodic po = run_periodic(kind, obj);
   *period_out = whirl_periodic_period(&po, xb, p);
   *l2out = whirl_periodic_l2norm(&po, xb);
-  return whirl_periodic_max(&po, xb, mx) != WHIRL_OK || isnan(*l2out) ? -1 : 0;
+  if (whirl_periodic_max(&po, xb, mx) != WHIRL_OK || isnan(*l2out)) return -1;
+  return iplt_measure(R, kind, obj, &po, xb, mx, l2out);
 }
 
 /* One row of the branch table. */

@@ -80,6 +80,8 @@ static const key_def keys[] = {
     {WHIRL_RK_DISCOVER_SEED, "DISCOVER_SEED", "discover_seed", NULL, K_INT},
     {WHIRL_RK_DISCOVER_SETTLE, "DISCOVER_SETTLE", "discover_settle", NULL, K_REAL},
     {WHIRL_RK_STUDY, "STUDY", "parameter_study", NULL, K_UZDICT},
+    {WHIRL_RK_IPLT, "IPLT", "plot_measure", NULL, K_INT},
+    {WHIRL_RK_DAT, "DAT", "start_data", NULL, K_STRING},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -87,9 +89,9 @@ static const key_def keys[] = {
  * noted in the run's log): they control output, AUTO's own iteration
  * details or boundary-value problems with none of them set. */
 static const char *const ignored_keys[] = {
-    "ITMX", "NWTN", "IID", "IPLT", "NBC", "NINT", "MXBF", "IADS", "THL",
+    "ITMX", "NWTN", "IID", "NBC", "NINT", "MXBF", "IADS", "THL",
     "THU", "NTHL", "NTHU", "NUZR", "NPAR", "SP", "STOP", "UNAMES",
-    "PARNAMES", "NUNSTAB", "NSTAB", "IIS", "IBR", "LAB", "TY", "DAT", "EFILE",
+    "PARNAMES", "NUNSTAB", "NSTAB", "IIS", "IBR", "LAB", "TY", "EFILE",
     "SFILE", "NPRM", "DATFILE"};
 #define NIGNORED (sizeof ignored_keys / sizeof ignored_keys[0])
 
@@ -591,6 +593,7 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_OVERSAMPLING: return &s->oversampling;
     case WHIRL_RK_NMX: return &s->nmx;
     case WHIRL_RK_NPR: return &s->npr;
+    case WHIRL_RK_IPLT: return &s->iplt;
     case WHIRL_RK_ITNW: return &s->itnw;
     case WHIRL_RK_JAC: return &s->jac;
     case WHIRL_RK_BASIN_PERIODS: return &s->basin_periods;
@@ -623,6 +626,7 @@ static char *string_field(whirl_run_settings *s, whirl_run_key k, size_t *len) {
     case WHIRL_RK_MODEL: *len = sizeof s->model; return s->model;
     case WHIRL_RK_OUT: *len = sizeof s->out; return s->out;
     case WHIRL_RK_S: *len = sizeof s->s; return s->s;
+    case WHIRL_RK_DAT: *len = sizeof s->dat; return s->dat;
     case WHIRL_RK_PLOT: *len = sizeof s->plot; return s->plot;
     default: *len = 0; return NULL;
   }

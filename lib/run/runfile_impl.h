@@ -12,6 +12,7 @@ typedef struct whirl_run_settings {
   char model[WHIRL_RUN_MAXPATH];
   char out[WHIRL_RUN_MAXPATH];  /* "" : default <stem>.out */
   char s[WHIRL_RUN_MAXPATH];    /* restart directory ("" none) */
+  char dat[WHIRL_RUN_MAXPATH];  /* IPS 2: the start orbit's data file ("" none) */
   int ndim;                     /* 0: not given */
   int ips;                      /* WHIRL_IPS_* (default 1) */
   int method;                   /* WHIRL_METHOD_* (default colloc) */
@@ -29,6 +30,7 @@ typedef struct whirl_run_settings {
   double ds, dsmin, dsmax;      /* defaults 0.01, 1e-5, 0.1; |DS| is
                                    clipped to [DSMIN, DSMAX] as in AUTO */
   int nmx, npr;                 /* defaults 200, 0 (no regular labels) */
+  int iplt;                     /* AUTO's IPLT: the L2-NORM column (0) */
   double rl0, rl1, a0, a1;      /* defaults -1e30, 1e30, 0, 1e30 */
   double epsl, epsu, epss;      /* defaults 1e-7, 1e-7, 1e-5 */
   int itnw, jac;                /* defaults 8, 1 */

@@ -237,16 +237,20 @@ static int colloc_F(const double *X, const double *p, double *F, void *data) {
       for (size_t r = 0; r < n; ++r) Fr[r] = c->dx[r] - h * T * c->f[r];
     }
   }
-  /* periodicity x(1) − x(0) = 0 */
+  /* periodicity x(1) − x(0) = 0, or 2π k for a rotation */
   const double *x0 = X, *x1 = X + n * N * m;
-  for (size_t r = 0; r < n; ++r) F[n * N * m + r] = x1[r] - x0[r];
+  for (size_t r = 0; r < n; ++r) F[n * N * m + r] = x1[r] - x0[r] - c->rot[r];
   if (c->aut) {
     /* <phase, X> summed as <phase, X − ref> + <phase, ref>: the terms are
      * small near the reference, so the residual has little rounding */
     double s = 0.0;
     for (size_t q = 0; q < c->nnodes * n; ++q)
       s += c->phase[q] * (X[q] - c->ref[q]);
-    F[c->nx - 1] = s + c->phase0;
+    /* ∫ <x, x_ref'> for orbits (<x_ref, x_ref'> integrates to 0); with a
+     * rotation it does not, and AUTO's ∫ <x − x_ref, x_ref'> is the one */
+    int rotating = 0;
+    for (size_t r = 0; r < n; ++r) rotating |= c->rot[r] != 0.0;
+    F[c->nx - 1] = s + (rotating ? 0.0 : c->phase0);
   }
   return 0;
 }
@@ -502,6 +506,7 @@ static int alloc_arrays(whirl_colloc *c) {
   const size_t n = c->n, N = c->ntst, nnodes = c->nnodes, nx = c->nx, nnz = c->nnz;
   const size_t np = prob->npar ? prob->npar : 1;
   c->mesh = malloc((N + 1) * sizeof *c->mesh);
+  c->rot = calloc(n, sizeof *c->rot);
   c->old_mesh = malloc((N + 1) * sizeof *c->old_mesh);
   c->Jp = malloc((nx + 1) * sizeof *c->Jp);
   c->Ji = malloc(nnz * sizeof *c->Ji);
@@ -665,6 +670,7 @@ void whirl_colloc_free(whirl_colloc *c) {
   if (!c) return;
   colloc_bsolver.free(c->spec_ws);
   free(c->mesh);
+  free(c->rot);
   free(c->old_mesh);
   free(c->Jp);
   free(c->Ji);
@@ -733,9 +739,15 @@ int whirl_colloc_from_samples(whirl_colloc *c, const double *x, size_t m,
       const double w0 = (s + 1.0) * (s - 1.0) * (s - 2.0) / 2.0;
       const double w1 = -(s + 1.0) * s * (s - 2.0) / 2.0;
       const double w2 = (s + 1.0) * s * (s - 1.0) / 6.0;
+      /* a rotation: the samples less the ramp rot·τ are periodic (sample
+       * k at τ = k/m; the indices wrap by a whole period) */
+      const double tj = u / (double)m, ts[4] = {(double)im1 / (double)m, (double)k0 / (double)m,
+                                                (double)ip1 / (double)m, (double)ip2 / (double)m};
       for (size_t r = 0; r < n; ++r)
-        X[n * j + r] = wm1 * x[n * im1 + r] + w0 * x[n * k0 + r] +
-                       w1 * x[n * ip1 + r] + w2 * x[n * ip2 + r];
+        X[n * j + r] = wm1 * (x[n * im1 + r] - c->rot[r] * ts[0]) +
+                       w0 * (x[n * k0 + r] - c->rot[r] * ts[1]) +
+                       w1 * (x[n * ip1 + r] - c->rot[r] * ts[2]) +
+                       w2 * (x[n * ip2 + r] - c->rot[r] * ts[3]) + c->rot[r] * tj;
     }
   }
   if (c->aut) {
@@ -964,8 +976,11 @@ int whirl_colloc_pd_switch(const whirl_colloc *c, const double *X,
     for (size_t j2 = 0; j2 < nn2; ++j2) {
       const size_t j = j2 <= N * m ? j2 : j2 - N * m;
       memcpy(X2 + n * j2, X + n * j, n * sizeof *X2);
+      if (j2 > N * m) /* a rotation turns on over the second period */
+        for (size_t r = 0; r < n; ++r) X2[n * j2 + r] += c->rot[r];
     }
   }
+  for (size_t r = 0; r < n; ++r) c2->rot[r] = 2.0 * c->rot[r];
   for (size_t i = 0; i < N2; ++i) {
     const double h = c2->mesh[i + 1] - c2->mesh[i];
     for (size_t k = 0; k < m2; ++k)
@@ -975,8 +990,10 @@ int whirl_colloc_pd_switch(const whirl_colloc *c, const double *X,
   if (!(N2 == 2 * N && m2 == m))
     for (size_t j2 = 0; j2 < nn2; ++j2) {
       double t = 2.0 * tau2[j2];
-      if (t > 1.0) t -= 1.0;
+      const int second = t > 1.0;
+      if (second) t -= 1.0;
       eval_poly(n, N, m, c->mesh, X, t, X2 + n * j2);
+      for (size_t r = 0; second && r < n; ++r) X2[n * j2 + r] += c->rot[r];
     }
   if (c2->aut) X2[nx2 - 1] = 2.0 * T;
 
@@ -1152,4 +1169,30 @@ done:
   whirl_eig_free(e);
   free(buf);
   return rc;
+}
+
+/* Rotations (AUTO-07p bvp.f90, SETRTN; periodic.f90, BCPS): a component
+ * whose jump over one period is 2 pi k, k = nint(jump / 2 pi) != 0, is an
+ * angle that turns k times; the periodicity condition becomes
+ * x(1) - x(0) = 2 pi k for it.  From the jumps jump[n]; the number of
+ * rotating components. */
+size_t whirl_colloc_set_rotations(whirl_colloc *c, const double *jump) {
+  size_t k = 0;
+  for (size_t i = 0; c && jump && i < c->n; ++i) {
+    const double t = nearbyint(jump[i] / (2.0 * WHIRL_PI));
+    c->rot[i] = isfinite(t) ? 2.0 * WHIRL_PI * t : 0.0;
+    k += c->rot[i] != 0.0;
+  }
+  return k;
+}
+
+size_t whirl_colloc_rotations_of(whirl_colloc *c, const double *X) {
+  if (!c || !X) return 0;
+  double jump[64] = {0};
+  double *j = c->n <= 64 ? jump : malloc(c->n * sizeof *j);
+  if (!j) return 0;
+  for (size_t i = 0; i < c->n; ++i) j[i] = X[c->n * (c->nnodes - 1) + i] - X[i];
+  const size_t k = whirl_colloc_set_rotations(c, j);
+  if (j != jump) free(j);
+  return k;
 }

@@ -29,6 +29,8 @@ struct whirl_colloc {
   double t0, floquet_rtol;
 
   double *mesh; /* ntst + 1 */
+  double *rot;  /* n: x(1) - x(0) of components that are angles turning by
+                   2 pi k over a period (AUTO's rotations, NRTN), else 0 */
   /* Gauss points and weights on [0, 1]; Lagrange basis and its derivative
    * at them, L[c*(ncol+1) + k] = l_k(σ_c), D likewise l_k'(σ_c); dm[k] the
    * weights of the NCOL-th derivative in σ (NCOL^NCOL (−1)^{m−k} C(m, k)). */

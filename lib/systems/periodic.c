@@ -88,6 +88,30 @@ double whirl_colloc_l2norm(const whirl_colloc *c, const double *x) {
   return sqrt(l2);
 }
 
+/* ∫₀¹ u_i and ∫₀¹ u_i² of each component (5-point Gauss-Legendre on each
+ * mesh interval, as whirl_colloc_l2norm) and the minimum and maximum over
+ * the NTST*NCOL+1 nodes (AUTO's MIN U(i) and MAX U(i) are taken there). */
+int whirl_colloc_moments(const whirl_colloc *c, const double *x, double *m1, double *m2,
+                         double *mn, double *mx) {
+  const size_t n = c->n;
+  double *v = malloc(n * sizeof *v);
+  if (!v) return WHIRL_ENOMEM;
+  for (size_t i = 0; i < n; i++) m1[i] = m2[i] = 0.0, mn[i] = HUGE_VAL, mx[i] = -HUGE_VAL;
+  for (size_t k = 0; k < c->ntst; k++) {
+    const double a = c->mesh[k], h = c->mesh[k + 1] - c->mesh[k];
+    for (int g = 0; g < 5; g++) {
+      whirl_colloc_eval(c, x, a + 0.5 * h * (1.0 + gx[g]), v);
+      for (size_t i = 0; i < n; i++) m1[i] += 0.5 * h * gw[g] * v[i], m2[i] += 0.5 * h * gw[g] * v[i] * v[i];
+    }
+    for (size_t j = 0; j <= c->ncol; j++) {
+      whirl_colloc_eval(c, x, a + h * (double)j / (double)c->ncol, v);
+      for (size_t i = 0; i < n; i++) mn[i] = fmin(mn[i], v[i]), mx[i] = fmax(mx[i], v[i]);
+    }
+  }
+  free(v);
+  return WHIRL_OK;
+}
+
 /* ---- the adapters ----------------------------------------------------------- */
 
 /* The multipliers as the object's system computes its stability. */

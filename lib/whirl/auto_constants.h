@@ -136,6 +136,8 @@ typedef struct whirl_auto_runfile_opts {
   const char *label;   /* replaces IRS ("3", "HB1"), or NULL */
   const char *out;     /* `OUT = `: the run's output directory, or NULL */
   size_t npar;         /* the model's parameters PAR(1..npar) */
+  const char *dir;     /* where `dat` files are (AUTO's run directory), or
+                          NULL: the working directory */
 } whirl_auto_runfile_opts;
 
 WHIRL_API int whirl_auto_constants_runfile(whirl_auto_constants *ac,

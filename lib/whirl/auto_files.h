@@ -40,7 +40,21 @@ typedef struct whirl_auto_output {
   int label_offset;              /* added to every label written (0: as
                                     whirl numbered them; a merged file of
                                     several runs numbers on, as AUTO's rl) */
+  int restarted;                 /* the run started from a label (IRS not
+                                    0): its first point is not labelled,
+                                    as in AUTO */
+  int br;                        /* AUTO's number of the run's first branch
+                                    (0: whirl's numbers); later branches
+                                    number on */
 } whirl_auto_output;
+/* One label of a run as AUTO numbers it (whirl_auto_labels). */
+typedef struct whirl_auto_label {
+  int label;                     /* AUTO's: label_offset + its rank */
+  int whirl;                     /* whirl's label in the run's solutions */
+  int br;                        /* AUTO's branch number */
+  int type;                      /* AUTO's type code (b-file column 3) */
+  char ty[3];                    /* whirl's type: BP, HB, EP, RG, ... */
+} whirl_auto_label;
 
 /* Write b, s and d (any may be NULL), and the number of labels in
  * *nlabels (NULL: not wanted).  WHIRL_OK, WHIRL_EIO (a file that cannot be
@@ -49,6 +63,11 @@ typedef struct whirl_auto_output {
 WHIRL_API int whirl_auto_write_files(const whirl_auto_output *o, FILE *b, FILE *s,
                                      FILE *d, int *nlabels, char *msg, size_t len);
 
+/* The labels of the run o->rundir in AUTO's order and numbering (those
+ * whirl_auto_write_files writes): the first max in lab[], their number in
+ * *n.  WHIRL_OK, WHIRL_EIO or WHIRL_EINVAL with a message in msg[len]. */
+WHIRL_API int whirl_auto_labels(const whirl_auto_output *o, whirl_auto_label *lab,
+                                size_t max, size_t *n, char *msg, size_t len);
 #ifdef __cplusplus
 }
 #endif

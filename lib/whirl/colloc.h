@@ -168,6 +168,15 @@ WHIRL_API int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
                                       const double *p, double *X, double *D,
                                       double *omega);
 
+/* Rotations (AUTO's NRTN): components that are angles turning by 2 pi k
+ * over one period get the periodicity x(1) - x(0) = 2 pi k, k = nint(jump
+ * / 2 pi) from the jumps jump[n] (set_rotations) or from the orbit X's
+ * x(1) - x(0) (rotations_of; call it after X is set, before continuing).
+ * from_samples then reads samples of such an orbit (without the endpoint).
+ * The number of rotating components. */
+WHIRL_API size_t whirl_colloc_set_rotations(whirl_colloc *c, const double *jump);
+WHIRL_API size_t whirl_colloc_rotations_of(whirl_colloc *c, const double *X);
+
 /* Current mesh: tau[NTST + 1]. */
 WHIRL_API const double *whirl_colloc_mesh(const whirl_colloc *c);
 

@@ -201,7 +201,8 @@ WHIRL_API int whirl_cont_start_direction(whirl_cont *c, const double *x0,
 /* Branch switching at a branch point bp (from whirl_cont_point of a branch
  * of the same system): computes the second branch direction from the null
  * space of [F_x F_p] at bp, orthogonal to bp->t, and starts along it with
- * the given sign (+1/-1); the first point is corrected on the new branch. */
+ * the given sign: +1 the side where the parameter grows (AUTO's rule), -1
+ * the other; the first point is corrected on the new branch. */
 WHIRL_API int whirl_cont_start_switch(whirl_cont *c, const whirl_point *bp,
                                       int dir);
 

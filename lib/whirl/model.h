@@ -37,7 +37,7 @@
 extern "C" {
 #endif
 
-#define WHIRL_MODEL_ABI 3
+#define WHIRL_MODEL_ABI 4
 #define WHIRL_MODEL_SYMBOL "whirl_model_def"
 
 typedef struct whirl_model {
@@ -67,6 +67,12 @@ typedef struct whirl_model {
    * the default box ±scale of discovery's random starts (DISCOVER,
    * doc/discovery.md); NULL: the box comes from the start branch. */
   const double *scale;
+  /* Optional (ABI 4), AUTO's PVLS: quantities derived from an equilibrium
+   * x[n], written into parameters of par[npar] (holding the point's
+   * values), which whirl run then shows and UZR/UZSTOP test, at every
+   * point of equilibria; the continuation itself never sees them.  0 on
+   * success. */
+  int (*pvls)(const double *x, double *par, void *data);
 } whirl_model;
 
 /* Check a model description: abi, sizes, required callbacks, parameter

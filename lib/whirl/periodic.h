@@ -110,6 +110,12 @@ WHIRL_API double whirl_periodic_l2norm(const whirl_periodic *po, const double *x
  * Gauss-Legendre quadrature on each mesh interval. */
 WHIRL_API int whirl_colloc_max(const whirl_colloc *c, const double *x, double *mx);
 WHIRL_API double whirl_colloc_l2norm(const whirl_colloc *c, const double *x);
+/* AUTO's measures of each component (its IPLT, its b-file's MAX): m1[i] =
+ * ∫₀¹ u_i, m2[i] = ∫₀¹ u_i² (the quadrature of whirl_colloc_l2norm), mn[i]
+ * and mx[i] the minimum and maximum over the NTST*NCOL+1 nodes.  WHIRL_OK
+ * or WHIRL_ENOMEM. */
+WHIRL_API int whirl_colloc_moments(const whirl_colloc *c, const double *x, double *m1,
+                                   double *m2, double *mn, double *mx);
 
 #ifdef __cplusplus
 }

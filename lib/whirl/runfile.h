@@ -44,6 +44,8 @@ typedef enum whirl_run_key {
   WHIRL_RK_BASIN_PERIODS, WHIRL_RK_BASIN_ATTRACTORS, WHIRL_RK_BASIN_TOL,
   WHIRL_RK_DISCOVER, WHIRL_RK_DISCOVER_BOX, WHIRL_RK_DISCOVER_STARTS,
   WHIRL_RK_DISCOVER_SEED, WHIRL_RK_DISCOVER_SETTLE, WHIRL_RK_STUDY,
+  WHIRL_RK_IPLT, /* AUTO's measure in the L2-NORM column */
+  WHIRL_RK_DAT,  /* a start orbit from a data file (AUTO's dat) */
   WHIRL_RK_IGNORED, /* AUTO keys whirl accepts and ignores (ITMX, NWTN, ...) */
   WHIRL_RK_COUNT
 } whirl_run_key;

@@ -73,7 +73,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   if (rc == WHIRL_EINVAL) check_message(whirl_auto_constants_errmsg(ac), data, size);
   if (rc == WHIRL_OK) {
     check_values(ac);
-    const whirl_auto_runfile_opts o = {"m.so", size % 2 ? "r.out" : NULL, NULL, "o.out", size % 40};
+    const whirl_auto_runfile_opts o = {"m.so", size % 2 ? "r.out" : NULL, NULL, "o.out", size % 40, NULL};
     char *t = NULL;
     rc = whirl_auto_constants_runfile(ac, &o, &t);
     REQUIRE(rc == WHIRL_OK ? t != NULL : t == NULL);

@@ -155,7 +155,7 @@ static void runfile(void) {
       "NPAR=3, DS=0.01\n"
       "THL={11: 0}\n"
       "U={'x': 1.5}\n", &rc);
-  const whirl_auto_runfile_opts o = {"m.so", "prev.out", NULL, "o.out", 3};
+  const whirl_auto_runfile_opts o = {"m.so", "prev.out", NULL, "o.out", 3, NULL};
   char *t = NULL;
   ok(rc == WHIRL_OK && whirl_auto_constants_runfile(ac, &o, &t) == WHIRL_OK && t,
      "translates (%s)", whirl_auto_constants_errmsg(ac));
@@ -181,8 +181,10 @@ static void runfile(void) {
   } bad[] = {
       {"NDIM=1\nIPS = 4\nICP=[1]\n", "c.t:2: IPS = 4: whirl runs AUTO's equilibria (1) and "
                                       "periodic orbits (2) only", NULL},
-      {"NDIM=1, ICP=[1]\ndat = 'x'\n", "c.t:2: dat = 'x': whirl cannot start from a data file yet",
-       NULL},
+      {"NDIM=1, ICP=[1]\ndat = 'x'\n",
+       "c.t:2: dat = 'x': a data file starts periodic orbits (IPS = 2), not IPS = 1", NULL},
+      {"NDIM=1, IPS=2, ICP=[1]\ndat = 'nothere'\n",
+       "c.t:2: dat = 'nothere': no data file nothere or nothere.dat", NULL},
       {"NDIM=1, ICP=[1]\n\nIRS = 3\n", "c.t:3: IRS = 3: no earlier run to restart from", NULL},
       {"NDIM=1\nICP=['foo']\n", "c.t:2: ICP: 'foo' is neither in parnames nor PERIOD", NULL},
       {"NDIM=1\nICP=[7]\n", "c.t:2: ICP: PAR(7) beyond NPAR = 3", NULL},
@@ -191,7 +193,7 @@ static void runfile(void) {
   };
   for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
     ac = parse(bad[i].text, &rc);
-    const whirl_auto_runfile_opts ob = {"m.so", bad[i].restart, NULL, NULL, 3};
+    const whirl_auto_runfile_opts ob = {"m.so", bad[i].restart, NULL, NULL, 3, NULL};
     t = NULL;
     rc = rc ? rc : whirl_auto_constants_runfile(ac, &ob, &t);
     ok(rc == WHIRL_EINVAL && !t && !strcmp(whirl_auto_constants_errmsg(ac), bad[i].msg),
@@ -233,7 +235,7 @@ static void translate_demo(whirl_auto_constants *ac) {
   whirl_auto_constants_int(ac, "IPS", &ips);
   whirl_auto_constants_int(ac, "NPAR", &npar);
   if ((ips != 1 && ips != 2) || whirl_auto_constants_line(ac, "dat")) return;
-  const whirl_auto_runfile_opts o = {"m.so", "r.out", NULL, "o.out", (size_t)npar};
+  const whirl_auto_runfile_opts o = {"m.so", "r.out", NULL, "o.out", (size_t)npar, NULL};
   char *t = NULL;
   if (whirl_auto_constants_runfile(ac, &o, &t) != WHIRL_OK) {
     printf("# %s\n", whirl_auto_constants_errmsg(ac));

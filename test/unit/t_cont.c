@@ -509,11 +509,55 @@ static void test_start_messages(void) {
   whirl_cont_free(c);
 }
 
+/* start_switch's side, AUTO's rule (AUTO-07p ae.f90 STPRAE: the new
+ * direction has PAR-dot >= 0): dir = +1 leaves the BP where p grows, -1
+ * where it falls, on x = p of the transcritical x' = x (p - x); where the
+ * new branch leaves at constant p (the pitchfork x' = x (p - x^2), x =
+ * +-sqrt(p)), +1 is the side where x grows.  The second point of the
+ * switched branch, against the closed forms. */
+static void switch_side(const whirl_system *s, double tp, int dir, double *x, double *p) {
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.02;
+  o.ds_max = 0.05;
+  char err[256];
+  whirl_cont *c = whirl_cont_alloc(s, &o, err, sizeof err);
+  double bx = 0.0, bp = 0.0, bt[2] = {0.0, 1.0};
+  (void)tp;
+  const whirl_point bpp = {.n = 1, .npar = 1, .x = &bx, .p = &bp, .t = bt};
+  *x = *p = NAN;
+  if (c && whirl_cont_start_switch(c, &bpp, dir) == WHIRL_OK) {
+    for (int k = 0; k < 3 && whirl_cont_step(c) == WHIRL_OK; k++) {
+      const whirl_point *pt = whirl_cont_point(c);
+      if (pt->index >= 2) {
+        *x = pt->x[0], *p = pt->p[0];
+        break;
+      }
+    }
+  }
+  whirl_cont_free(c);
+}
+
+static void test_switch_side(void) {
+  whirl_system t = {.name = "transcritical", .n = 1, .npar = 1, .F = tc_F};
+  whirl_system f = {.name = "pitchfork", .n = 1, .npar = 1, .F = pf_F};
+  double x, p;
+  switch_side(&t, 0.0, +1, &x, &p);
+  ok(p > 0 && fabs(x - p) < 1e-8, "switch at the transcritical BP, dir +1: p grows on x = p (x %g, p %g)", x, p);
+  switch_side(&t, 0.0, -1, &x, &p);
+  ok(p < 0 && fabs(x - p) < 1e-8, "dir -1: p falls on x = p (x %g, p %g)", x, p);
+  switch_side(&f, 0.0, +1, &x, &p);
+  ok(x > 0 && fabs(x * x - p) < 1e-8, "switch at the pitchfork, dir +1: x = +sqrt(p) (x %g, p %g)", x, p);
+  switch_side(&f, 0.0, -1, &x, &p);
+  ok(x < 0 && fabs(x * x - p) < 1e-8, "dir -1: x = -sqrt(p) (x %g, p %g)", x, p);
+}
+
 int main(void) {
   test_start_messages();
   test_cusp(1);
   test_cusp(0);
   test_bp();
+  test_switch_side();
   test_hopf();
   test_hopf_nearest_switch();
   test_loop();

@@ -1,0 +1,106 @@
+/* lib/run/run_dat.c — a start orbit from a data file (DAT, AUTO-07p's
+ * `dat`): rows "t u(1) ... u(n)", t increasing, more numbers on a row
+ * ignored, Fortran's D exponents read.  As AUTO-07p does it (toolboxbv.f90,
+ * STPNUB): the period is t_last - t_first unless the model's start sets
+ * it (STPNT's PAR(11), whirl's period0), time is rescaled to [0, 1] and
+ * the orbit is the piecewise-linear interpolant of the rows (its ADAPT2 of
+ * data with NCOL = 1), sampled here at m equally spaced times for the
+ * collocation's start (whirl_colloc_from_samples); the first point is then
+ * corrected by Newton with the phase condition against this orbit.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "run_impl.h"
+
+/* The numbers of one line, at most max, D exponents as E.  Their count. */
+static size_t numbers(char *line, double *v, size_t max) {
+  for (char *q = line; *q; q++)
+    if (*q == 'D' || *q == 'd') *q = 'E';
+  size_t k = 0;
+  for (char *q = line, *end; k < max; q = end) {
+    v[k] = strtod(q, &end);
+    if (end == q) break;
+    k++;
+  }
+  return k;
+}
+
+/* The rows of PATH: t[*nr] and u[*nr * n] (allocated).  0, or -1 said. */
+static int read_rows(run_ctx *R, const char *path, double **t, double **u, size_t *nr) {
+  const size_t n = R->n;
+  FILE *f = fopen(path, "r");
+  if (!f) {
+    run_fail(R, WHIRL_RK_DAT, "%s: cannot open", path);
+    return -1;
+  }
+  char line[8192];
+  double *v = malloc((n + 1) * sizeof *v);
+  size_t cap = 0, lineno = 0;
+  int rc = v ? 0 : -1;
+  *t = *u = NULL, *nr = 0;
+  while (!rc && fgets(line, sizeof line, f)) {
+    lineno++;
+    const size_t k = numbers(line, v, n + 1);
+    if (k == 0 && strspn(line, " \t\r\n") == strlen(line)) continue;
+    if (k < n + 1) {
+      run_fail(R, WHIRL_RK_DAT, "%s:%zu: %zu numbers, a row is t and the %zu state components",
+               path, lineno, k, n);
+      rc = -1;
+    } else if (*nr && !(v[0] > (*t)[*nr - 1])) {
+      run_fail(R, WHIRL_RK_DAT, "%s:%zu: t = %g does not increase", path, lineno, v[0]);
+      rc = -1;
+    } else {
+      if (*nr == cap) {
+        cap = cap ? 2 * cap : 64;
+        double *nt = realloc(*t, cap * sizeof *nt), *nu = nt ? realloc(*u, cap * n * sizeof *nu) : NULL;
+        if (nt) *t = nt;
+        if (nu) *u = nu;
+        if (!nt || !nu) rc = -1;
+      }
+      if (!rc) (*t)[*nr] = v[0], memcpy(*u + *nr * n, v + 1, n * sizeof *v), ++*nr;
+    }
+  }
+  fclose(f);
+  free(v);
+  if (!rc && *nr < 2) {
+    run_fail(R, WHIRL_RK_DAT, "%s: %zu rows, an orbit needs at least 2", path, *nr);
+    rc = -1;
+  }
+  return rc;
+}
+
+int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T, double *jump) {
+  const size_t n = R->n;
+  double *t = NULL, *u = NULL;
+  size_t nr;
+  char path[4096];
+  /* relative to the run file's directory, as model, S and OUT (run_path) */
+  if (run_path(R, WHIRL_RK_DAT, R->s->dat, path, sizeof path)) {
+    run_fail(R, WHIRL_RK_DAT, "DAT: the path is too long");
+    return -1;
+  }
+  if (read_rows(R, path, &t, &u, &nr)) {
+    free(t), free(u);
+    return -1;
+  }
+  *T = t[nr - 1] - t[0];
+  /* AUTO sets PAR(11) to it and then calls STPNT, which may set the
+   * period itself (demo pen: its data are in scaled time): the model's
+   * period0, where it has one, is that value */
+  const double tdat = *T;
+  if (R->model->period0 > 0) *T = R->model->period0;
+  for (size_t k = 0, j = 0; k < m; k++) { /* the interpolant at k/m */
+    const double tk = t[0] + *T * (double)k / (double)m;
+    while (j + 2 < nr && t[j + 1] <= tk) j++;
+    const double w = (tk - t[j]) / (t[j + 1] - t[j]);
+    for (size_t i = 0; i < n; i++)
+      xs[k * n + i] = (1.0 - w) * u[j * n + i] + w * u[(j + 1) * n + i];
+  }
+  for (size_t i = 0; jump && i < n; i++) jump[i] = u[(nr - 1) * n + i] - u[i];
+  fprintf(R->log, "start orbit from %s: %zu rows over %.10g, period %.10g\n", path, nr,
+          tdat, *T);
+  free(t), free(u);
+  return 0;
+}

@@ -1,0 +1,282 @@
+#!/bin/sh
+# test/regress/auto_runs.sh — the run semantics `whirl auto` takes from
+# AUTO-07p across runs and within one, each checked against AUTO's own
+# output (AUTO-07p's log test/hyper.all, or AUTO run on the same files),
+# never against whirl's:
+#  1. NMX, NPR and IPLT on a fold u' = p - u^2 written here (u from 1
+#     through the LP at p = 0 onto u = -sqrt(p)): AUTO-07p 0.9.2 (the Debian
+#     package, `run(e='fold', c='fold.1')`) labels PT 1 (EP), 8, 16, 24 (NPR
+#     = 8), the LP and PT 30 (EP, NMX = 30): it counts the start and the LP
+#     among the points; with IPLT = 1 its second column is U(1) itself,
+#     negative past the LP (the L2-NORM would be |u|).
+#     dat: a start from a data file, on the Hopf normal form (closed form:
+#     r = sqrt(p), period 2 pi), and a missing data file (exit 2).
+#     rotations: an angle turning by 2 pi over the orbit (AUTO's NRTN), from
+#     a data file, against the closed form (period 2 pi / p).
+#  2. Demos of AUTO-07p 0.9.2 (AUTO_07P_DIR, else ../shared/auto-07p beside
+#     the source tree; skipped where absent), run from their own c-files,
+#     their labels (BR, TY, LAB) against AUTO's log hyper.all:
+#     - brc: labels numbered across runs (run 2 from HB 2 labels on from 7,
+#       as branch 2), and c.brc.3's IRS = 7 is the BP of run 2;
+#     - lrz: MXBF = 10 switches at the BP of run 1 (both sides, branch 2,
+#       the side of U(1) > 0 first), c.lrz.2 (IRS = 4) and c.lrz.3 (IRS = 6)
+#       start from the HBs on it, their ends labelled 25 and 43 on branches
+#       4 and 6 (AUTO's branch number of orbits from an HB is the label);
+#     - chu: MXBF = -2, one side a BP; the branch leaving [A0, A1] ends in
+#       a labelled EP; c.chu.2 (IRS = 6) starts from the HB on branch 3 and
+#       ends in EP 9, no PD near the homoclinic end;
+#     - vhb: no PD on the conservative family from the Hopf point (AUTO has
+#       none; whirl's multipliers there are wrong by orders of magnitude);
+#     - ppp: c.ppp.4 alone (a fresh start with MXBF = 10), all 20 labels
+#       against AUTO's own run of it (AUTO-07p 0.9.2, `run(e='ppp',
+#       c='ppp.4')`, listed below);
+#     - enz: the BP at s0 = 34.2229 just past the LP is found (AUTO's BP 3);
+#     - lor: dat = 'lor', the PD near rho = 229.4 and the orbit at the UZ
+#       rho = 200 (INTEGRAL U(1) of IPLT = 4 and the period) as AUTO's;
+#     - pp3: PVLS's PAR(9) (the L2-NORM through GETP) stops a branch at
+#       UZSTOP {9: 1.2}, AUTO's UZ 4;
+#     - ffn: IPLT = 9 (2 NDIM + 1): the second column is AUTO's L2-NORM of U(1),
+#       at the TR 9.54521E-01 (the whole state's L2-NORM is 1.53).
+# TAP output.
+set -u
+: "${top_srcdir:=.}" "${top_builddir:=.}"
+WHIRL="$(cd "$top_builddir" && pwd)/drivers/whirl"
+command -v "${FC:-gfortran}" >/dev/null 2>&1 || { echo "1..0 # SKIP no Fortran compiler"; exit 0; }
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+n=0 fail=0
+ok() { n=$((n + 1)); echo "ok $n - $*"; }
+nok() { n=$((n + 1)); echo "not ok $n - $*"; fail=1; }
+check() { if [ "$1" = 0 ]; then shift; ok "$@"; else shift; nok "$@"; fi; }
+skip() { n=$((n + 1)); echo "ok $n - # SKIP $*"; }
+
+# the labelled rows of a b-file, "BR TY LAB" (|BR|, AUTO's type names, RG
+# for the NPR labels), one a line
+labels() {
+  awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 > 0 {
+    t = substr($0, 11, 4) + 0; br = substr($0, 1, 4) + 0; if (br < 0) br = -br
+    ty = t == 1 || t == 6 ? "BP" : t == 2 || t == 5 ? "LP" : t == 3 ? "HB" : t == 4 ? "RG" : \
+         t == -4 ? "UZ" : t == 7 ? "PD" : t == 8 ? "TR" : t == 9 ? "EP" : t == -9 ? "MX" : t
+    print br, ty, substr($0, 15, 5) + 0 }' "$1"
+}
+# AUTO's labelled rows of demo $1 in hyper.all, "BR TY LAB"
+hyper_labels() {
+  awk -v d="$1" '$0 == "Demo " d " is started" { on = 1; next } $0 == "Demo " d " is done" { on = 0 }
+    on && $1 ~ /^[0-9]+$/ && $2 ~ /^[0-9]+$/ && $3 ~ /^[A-Z][A-Z]$/ && $4 ~ /^[0-9]+$/ { print $1, $3, $4 }' "$2"
+}
+
+# ---- 1. the fold: NMX, NPR, IPLT
+mkdir "$tmp/fold"
+cat > "$tmp/fold/fold.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      F(1) = PAR(1) - U(1)**2
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 1
+      U(1) = 1
+      END SUBROUTINE STPNT
+F
+cat > "$tmp/fold/c.fold.1" <<'C'
+NDIM=   1, IPS =   1, IRS =   0, ILP =   1
+ICP =  [1]
+NTST=  20, NCOL=   4, IAD =   3, ISP =   1, ISW = 1, IPLT= 1, NBC= 0, NINT= 0
+NMX=   30, NPR=   8, MXBF=  10, IID =   2, ITMX= 8, ITNW= 7, NWTN= 3, JAC= 0
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-08
+DS  = -0.1, DSMIN= 0.0001, DSMAX=  0.1, IADS=   1
+NPAR=   1, THL =  {11: 0.0}, THU =  {}
+C
+(cd "$tmp" && "$WHIRL" auto fold --quiet > fold.log 2>&1)
+check $? "whirl auto fold exits 0"
+b="$tmp/fold.out/b.fold"
+got=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 > 0 && substr($0, 11, 4) + 0 != 2 {
+  pt = substr($0, 5, 6) + 0; if (pt < 0) pt = -pt; printf "%d:%d ", pt, substr($0, 11, 4) + 0 }' "$b" 2>/dev/null)
+[ "$got" = "1:9 8:4 16:4 24:4 30:9 " ]
+check $? "fold: labels at PT 1 (EP), 8, 16, 24 (NPR) and 30 (EP = NMX) as AUTO's run: $got"
+nlp=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 2' "$b" 2>/dev/null | wc -l)
+[ "$nlp" -eq 1 ]
+check $? "fold: one LP among the 30 points ($nlp)"
+grep -q 'PT  TY  LAB    PAR(1) *U(1) *U(1)' "$b" 2>/dev/null
+check $? "fold: IPLT = 1 names the second column U(1), as AUTO's b-file"
+awk 'substr($0, 1, 4) + 0 != 0 { lp = lp || substr($0, 11, 4) + 0 == 2
+    a = substr($0, 39, 19) + 0; u = substr($0, 58, 19) + 0
+    if (a != u) bad = 1; if (lp && substr($0, 11, 4) + 0 != 2 && a >= 0) bad = 1 }
+  END { exit bad }' "$b" 2>/dev/null
+check $? "fold: the second column is U(1) on every row, negative past the LP (not the L2-NORM)"
+
+# ---- dat: the Hopf normal form x' = p x - y - x r^2, y' = x + p y - y r^2
+# (orbits r = sqrt(p), period 2 pi) from 41 rows of the circle r = 1 over
+# t in [0, 2 pi]: the period is the data's (AUTO's STPNUB), the orbit at the
+# user point p = 0.25 has MAX U(1) = 0.5 and period 2 pi
+mkdir "$tmp/hnf"
+cat > "$tmp/hnf/hnf.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*), R2
+      R2 = U(1)**2 + U(2)**2
+      F(1) = PAR(1)*U(1) - U(2) - U(1)*R2
+      F(2) = U(1) + PAR(1)*U(2) - U(2)*R2
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 1
+      END SUBROUTINE STPNT
+F
+awk 'BEGIN { pi = atan2(0, -1); for (k = 0; k <= 40; k++) { t = 2 * pi * k / 40
+  printf "%.10E %.10E %.10E\n", t, cos(t), sin(t) } }' | sed 's/E/D/g' > "$tmp/hnf/circle.dat"
+cat > "$tmp/hnf/c.hnf.1" <<'C'
+dat = 'circle'
+NDIM=   2, IPS =   2, IRS =   0, ILP =   1
+ICP =  [1, 11]
+NTST=  20, NCOL=   4, IAD =   3, ISP =   1, ISW = 1, IPLT= 0, NBC= 0, NINT= 0
+NMX=  100, NPR=  100, MXBF=  10, IID =   2, ITMX= 8, ITNW= 7, NWTN= 3, JAC= 0
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-08
+DS  = -0.05, DSMIN= 0.0001, DSMAX=  0.05, IADS=   1
+NPAR=  11, THL =  {11: 0.0}, THU =  {}
+UZR = {1: 0.25}, UZSTOP = {1: 0.1}
+C
+(cd "$tmp" && "$WHIRL" auto hnf --quiet > hnf.log 2>&1)
+check $? "dat: whirl auto hnf (a start from the data file circle.dat) exits 0"
+uz=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == -4 { printf "%.12g %.12g %.12g\n", substr($0, 20, 19), substr($0, 58, 19), substr($0, 96, 19); exit }' "$tmp/hnf.out/b.hnf" 2>/dev/null)
+echo "$uz" | awk '{ pi = atan2(0, -1); exit !($1 != "" && ($1 - 0.25) ^ 2 < 1e-16 && ($2 - 0.5) ^ 2 < 1e-12 && ($3 - 2 * pi) ^ 2 < 1e-12) }'
+check $? "dat: at p = 0.25 MAX U(1) = 0.5 and the period 2 pi (closed form): $uz"
+grep -q 'start orbit from .*circle.dat: 41 rows over 6.28318530[0-9]*, period 6.28318530' "$tmp/hnf.out/hnf.1.out/run.log"
+check $? "dat: the period is the data's t range: $(grep 'start orbit' "$tmp/hnf.out/hnf.1.out/run.log" 2>/dev/null)"
+sed 's/circle/nothere/' "$tmp/hnf/c.hnf.1" > "$tmp/hnf/c.hnf.2"
+(cd "$tmp" && "$WHIRL" auto hnf --runs=hnf.2 --out=bad.out > bad.log 2>&1)
+rc=$?
+[ $rc = 2 ] && grep -q "c.hnf.2:1: dat = 'nothere': no data file .*nothere or .*nothere.dat" "$tmp/bad.log" && [ ! -e "$tmp/bad.out" ]
+check $? "dat: a missing data file: exit 2 ($rc), the constants file and line, nothing written: $(head -1 "$tmp/bad.log")"
+
+# ---- rotations (AUTO's NRTN): u1' = u2, u2' = p - u2 is 2 pi-periodic in
+# the angle u1; its orbits u1 = p t, u2 = p turn u1 by 2 pi in the period
+# 2 pi / p.  From a data file over one turn at p = 1 (u1 = t, t in
+# [0, 2 pi]): at the user point p = 2 the period is pi and U(2) = 2
+mkdir "$tmp/rot"
+cat > "$tmp/rot/rot.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      F(1) = U(2)
+      F(2) = PAR(1) - U(2)
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 1
+      END SUBROUTINE STPNT
+F
+awk 'BEGIN { pi = atan2(0, -1); for (k = 0; k <= 30; k++) { t = 2 * pi * k / 30; printf "%.10e %.10e 1.0\n", t, t } }' > "$tmp/rot/rot.dat"
+cat > "$tmp/rot/c.rot.1" <<'C'
+dat = 'rot'
+NDIM=   2, IPS =   2, IRS =   0, ILP =   1
+ICP =  [1, 11]
+NTST=  10, NCOL=   4, IAD =   3, ISP =   1, ISW = 1, IPLT= 0, NBC= 0, NINT= 0
+NMX=  100, NPR=  100, MXBF=  10, IID =   2, ITMX= 8, ITNW= 7, NWTN= 3, JAC= 0
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-08
+DS  = 0.05, DSMIN= 0.0001, DSMAX=  0.1, IADS=   1
+NPAR=  11, THL =  {11: 0.0}, THU =  {}
+UZSTOP = {1: 2.0}
+C
+(cd "$tmp" && "$WHIRL" auto rot --quiet > rot.log 2>&1)
+check $? "rotations: whirl auto rot (an orbit turning the angle u1 by 2 pi) exits 0"
+uz=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == -4 { printf "%.12g %.12g %.12g\n", substr($0, 20, 19), substr($0, 77, 19), substr($0, 96, 19); exit }' "$tmp/rot.out/b.rot" 2>/dev/null)
+echo "$uz" | awk '{ pi = atan2(0, -1); exit !($1 != "" && ($1 - 2) ^ 2 < 1e-16 && ($2 - 2) ^ 2 < 1e-14 && ($3 - pi) ^ 2 < 1e-14) }'
+check $? "rotations: at p = 2 MAX U(2) = 2 and the period pi (closed form): $uz"
+
+# ---- 2. AUTO's demos
+auto=${AUTO_07P_DIR:-$top_srcdir/../shared/auto-07p}
+hyper="$auto/test/hyper.all"
+if [ ! -f "$hyper" ] || [ ! -d "$auto/demos" ]; then
+  skip "no AUTO-07p demos at $auto (set AUTO_07P_DIR)"
+  echo "1..$n"
+  exit $fail
+fi
+auto=$(cd "$auto" && pwd)
+hyper="$auto/test/hyper.all"
+demo() { (cd "$tmp" && "$WHIRL" auto "$auto/demos/$1" ${2:+"$2"} --quiet > "$1.log" 2>&1); }
+
+# brc: run 2's labels 7-10 on branch 2, run 3 from label 7 (the BP)
+demo brc
+w=$(labels "$tmp/brc.out/b.brc" | awk '$3 >= 7 && $3 <= 11' | tr '\n' ';')
+a=$(hyper_labels brc "$hyper" | awk '$3 >= 7 && $3 <= 11' | tr '\n' ';')
+[ -n "$a" ] && [ "$w" = "$a" ]
+check $? "brc: labels 7-11 across runs as AUTO's ($a): $w"
+tr11=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 == 11 { print substr($0, 20, 19) + 0 }' "$tmp/brc.out/b.brc")
+awk -v x="${tr11:-0}" 'BEGIN { d = (x - 1.30281) / 1.30281; exit !(d < 1e-5 && d > -1e-5) }'
+check $? "brc: c.brc.3 (IRS = 7) starts from the BP: its TR 11 at PAR(5) = $tr11, AUTO 1.30281"
+
+# lrz: MXBF, and IRS = 4, 6 on the switched branch
+demo lrz
+w=$(labels "$tmp/lrz.out/b.lrz" | awk '$2 != "RG"' | head -9 | tr '\n' ';')
+a=$(hyper_labels lrz "$hyper" | tr '\n' ';')
+[ -n "$a" ] && [ "$w" = "$a" ]
+check $? "lrz: MXBF's branches and the restarts from them labelled as AUTO's ($a): $w"
+u4=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 == 4 { print substr($0, 58, 19) + 0 }' "$tmp/lrz.out/b.lrz")
+awk -v x="${u4:-0}" 'BEGIN { d = (x - 7.95602) / 7.95602; exit !(d < 1e-5 && d > -1e-5) }'
+check $? "lrz: the side with U(1) > 0 first: U(1) at HB 4 = $u4, AUTO 7.95602"
+
+# chu: MXBF < 0, the EP at A1, IRS = 6
+demo chu
+w=$(labels "$tmp/chu.out/b.chu" | awk '$3 <= 9' | tr '\n' ';')
+a=$(hyper_labels chu "$hyper" | awk '$3 <= 9' | tr '\n' ';')
+[ -n "$a" ] && [ "$w" = "$a" ]
+check $? "chu: labels 1-9 (one side a BP, the EP at A1, c.chu.2 from HB 6, no PD near the homoclinic end) as AUTO's ($a): $w"
+
+# vhb: no PD on the conservative family (its multipliers are 1, whirl's
+# computed ones wild near the homoclinic loop)
+demo vhb
+npd=$(labels "$tmp/vhb.out/b.vhb" | awk '$2 == "PD"' | wc -l)
+apd=$(hyper_labels vhb "$hyper" | awk '$2 == "PD"' | wc -l)
+[ "$npd" -eq 0 ] && [ "$apd" -eq 0 ]
+check $? "vhb: no PD on the family from the Hopf point, as AUTO ($npd, AUTO $apd)"
+
+# ppp: c.ppp.4 alone against AUTO's own run of it
+demo ppp --runs=ppp.4
+w=$(labels "$tmp/ppp.out/b.ppp" | tr '\n' ';')
+a="1 EP 1;1 BP 2;1 EP 3;2 LP 4;2 EP 5;2 BP 6;2 HB 7;2 HB 8;2 BP 9;2 EP 10;3 EP 11;3 EP 12;4 EP 13;4 BP 14;4 BP 15;4 EP 16;5 EP 17;5 EP 18;6 EP 19;6 EP 20;"
+[ "$w" = "$a" ]
+check $? "ppp: c.ppp.4's 20 labels on 6 branches (MXBF = 10) as AUTO's run of it: $w"
+
+# enz: the BP ten points past the LP (the locator's Newton fails at the
+# singular point itself; the point a little off it is taken)
+demo enz --runs=enz.1
+bp=$(awk 'substr($0, 1, 4) + 0 == 1 && substr($0, 11, 4) + 0 == 1 { print substr($0, 20, 19) + 0, substr($0, 39, 19) + 0; exit }' "$tmp/enz.out/b.enz")
+echo "$bp" | awk '{ exit !($1 != "" && (($1 - 34.2229) / 34.2229) ^ 2 < 1e-10 && (($2 - 1.66053) / 1.66053) ^ 2 < 1e-10) }'
+check $? "enz: the first BP of run 1 at s0 = 34.2229, L2-NORM 1.66053 as AUTO's BP 3 (hyper.all): $bp"
+
+# lor: dat = 'lor' (AUTO's data file of the demo), IPLT = 4 (INTEGRAL U(1))
+demo lor --runs=lor.1
+uz=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == -4 { printf "%.12g %.12g\n", substr($0, 39, 19), substr($0, 115, 19); exit }' "$tmp/lor.out/b.lor")
+echo "$uz" | awk '{ exit !($1 != "" && (($1 + 1.23833) / 1.23833) ^ 2 < 1e-10 && (($2 - 0.516877) / 0.516877) ^ 2 < 1e-10) }'
+check $? "lor: from lor.dat, at the UZ rho = 200 INTEGRAL U(1) and PERIOD as AUTO's UZ 3 (-1.23833, 0.516877): $uz"
+pd=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 7 { printf "%.12g %.12g %.12g\n", substr($0, 20, 19), substr($0, 39, 19), substr($0, 115, 19); exit }' "$tmp/lor.out/b.lor")
+echo "$pd" | awk '{ exit !($1 != "" && (($1 - 229.407) / 229.407) ^ 2 < 1e-10 && (($2 + 1.06862) / 1.06862) ^ 2 < 1e-10 && (($3 - 0.480867) / 0.480867) ^ 2 < 1e-10) }'
+check $? "lor: the PD on DSMAX = 25 steps (the multiplier passing -1 moves from -0.98 to -2.0) as AUTO's PD 2 (229.407, -1.06862, 0.480867): $pd"
+
+# pp3: PVLS sets PAR(9) to the L2-NORM of U (GETP('NRM', i, U) = |U(i)|);
+# UZSTOP {9: 1.2} ends the first half of MXBF's branch 2 there (AUTO's UZ 4)
+demo pp3
+uz=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 == 4 { printf "%d %.12g %.12g\n", substr($0, 11, 4), substr($0, 20, 19), substr($0, 39, 19); exit }' "$tmp/pp3.out/b.pp3")
+echo "$uz" | awk '{ exit !($1 == -4 && (($2 - 0.800796) / 0.800796) ^ 2 < 1e-10 && ($3 - 1.2) ^ 2 < 1e-16) }'
+check $? "pp3: label 4 is the UZ where PVLS's PAR(9) = L2-NORM = 1.2, at PAR(1) = 0.800796 as AUTO's UZ 4: $uz"
+
+# ffn: IPLT = 9
+demo ffn
+grep -q 'PT  TY  LAB    amp *L2-NORM x ' "$tmp/ffn.out/b.ffn"
+check $? "ffn: IPLT = 9 names the second column 'L2-NORM x' (AUTO's HEADNG with unames {1: 'x'})"
+tr=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 8 { print substr($0, 39, 19) + 0; exit }' "$tmp/ffn.out/b.ffn")
+awk -v x="${tr:-0}" 'BEGIN { d = (x - 0.954521) / 0.954521; exit !(d < 1e-5 && d > -1e-5) }'
+check $? "ffn: L2-NORM U(1) at the TR = $tr, AUTO 9.54521E-01"
+echo "1..$n"
+exit $fail
