@@ -122,7 +122,7 @@ static int broadcast(blocks *K, size_t s, int rank) {
       const size_t m = len[b] - at < PIECE ? len[b] - at : PIECE;
       MPI_Bcast(K->data[e0 + b] + at, (int)m, MPI_BYTE, 0, MPI_COMM_WORLD);
     }
-    K->data[e0 + b][len[b]] = '\0';
+    if (rank != 0) K->data[e0 + b][len[b]] = '\0';
   }
   free(len);
   return 0;
