@@ -13,6 +13,10 @@
 #  - basins (IPS = basins, the Jeffcott rotor's, 11 x 11) through the same
 #    blocks: chunks merged, a killed run resumed and MPI give the same
 #    basins.tsv as one process;
+#  - whirl sfd basins (the atlas's rounds broadcast, then the states): 3
+#    chunks merged, killed and resumed, the checkpoint of other options
+#    refused, a chunk out of range, and 2 and 4 ranks: the one-process
+#    basins.tsv and shares;
 #  - bad input: a grid without points, an unknown parameter, the
 #    continuation parameter as an axis, a chunk out of range, a missing
 #    chunk: one message, exit 2.
@@ -114,6 +118,49 @@ if grep -q "define WHIRL_HAVE_MPI 1" "$cb/config.h" 2> /dev/null && command -v m
     mpirun --allow-run-as-root --oversubscribe -n $np "$WHIRL" run basins.whirl --BASIN_GRID=11 --quiet --OUT=bm$np > bm$np.txt 2>&1
     cmp -s b1/basins.tsv bm$np/basins.tsv
     ok $? "basins, mpirun -n $np: the same basins.tsv"
+  done
+else
+  echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
+  echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
+fi
+
+# whirl sfd basins (the paper's command) through the same blocks: the atlas's
+# rounds as stages every rank takes in, then the states; 400 states at
+# Omega = 1.78 (two attractors, both basins large)
+sb="sfd basins --omega 1.78 --points 400 --no-plot"
+"$WHIRL" $sb --out s1 > s1.txt 2> s1.err
+ok $? "sfd basins, one process: $(tail -n 1 s1.err | head -c 200)"
+[ "$(wc -l < s1/basins.tsv)" -eq 403 ] && grep -q "^small	" s1.txt && grep -q "^large	" s1.txt && [ ! -e s1.checkpoint ]
+ok $? "sfd basins: 401 states, both attractors' shares, no checkpoint left"
+for i in 1 2 3; do "$WHIRL" $sb --out sc --chunk $i/3 --quiet > /dev/null; done
+"$WHIRL" $sb --out sc --merge-chunks 3 > sc.txt 2> sc.err
+cmp -s s1/basins.tsv sc/basins.tsv && cmp -s s1/attractors.tsv sc/attractors.tsv && cmp -s s1.txt sc.txt
+ok $? "sfd basins in 3 chunks, merged: the same basins.tsv, attractors.tsv and shares $(head -c 200 sc.err)"
+"$WHIRL" $sb --out sk --threads 1 --quiet > /dev/null 2>&1 &
+pid=$!
+k=0
+while [ "$k" -lt 400 ] && [ "$(cat sk.checkpoint 2> /dev/null | grep -a -c "^4	")" -lt 2 ]; do sleep 0.05; k=$((k + 1)); done
+kill -TERM $pid 2> /dev/null
+wait $pid 2> /dev/null
+[ ! -e sk ] && [ -s sk.checkpoint ]
+ok $? "sfd basins killed after the atlas and $(grep -a -c "^4	" sk.checkpoint) blocks of states: only the checkpoint"
+cp sk.checkpoint sk.saved
+"$WHIRL" $sb --out sk --cells 16 --quiet > sko.txt 2> sko.err
+rc=$?
+[ "$rc" -eq 2 ] && grep -q "checkpoint of another run" sko.err && cmp -s sk.saved sk.checkpoint && [ ! -e sk ]
+ok $? "sfd basins, the checkpoint of other options (--cells): exit 2 ($rc), kept, nothing written"
+"$WHIRL" $sb --out sk > sk.txt 2> sk.err
+cmp -s s1/basins.tsv sk/basins.tsv && cmp -s s1.txt sk.txt && grep -q "from the checkpoint" sk.err && [ ! -e sk.checkpoint ]
+ok $? "sfd basins started again: the same basins.tsv ($(tail -n 1 sk.err | sed 's/.*; //'))"
+"$WHIRL" $sb --out sx --chunk 4/3 > sx.txt 2> sx.err
+rc=$?
+[ "$rc" -eq 2 ] && grep -q "need 1 <= I <= N" sx.err && [ ! -e sx.chunk-4-of-3 ] && [ ! -e sx.chunk-4-of-3.checkpoint ]
+ok $? "sfd basins --chunk 4/3: exit 2 ($rc), nothing written: $(cat sx.err)"
+if grep -q "define WHIRL_HAVE_MPI 1" "$cb/config.h" 2> /dev/null && command -v mpirun > /dev/null; then
+  for np in 2 4; do
+    mpirun --allow-run-as-root --oversubscribe -n $np "$WHIRL" $sb --threads 1 --out sm$np > sm$np.txt 2> sm$np.err
+    cmp -s s1/basins.tsv sm$np/basins.tsv && cmp -s s1.txt sm$np.txt
+    ok $? "sfd basins, mpirun -n $np (one thread each): the serial basins.tsv and shares ($(tail -n 1 sm$np.err | head -c 160))"
   done
 else
   echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
