@@ -21,16 +21,25 @@ typedef struct study {
   blocks_def d;
 } study;
 
-/* The run's identity: the run file's bytes and the overrides. */
-static int identity(const study_opts *o, uint64_t *id) {
-  FILE *f = fopen(o->file, "rb");
+/* The bytes of file `path` into the hash: 0, or -1. */
+static int hash_file(const char *path, uint64_t *h) {
+  FILE *f = fopen(path, "rb");
   if (!f) return -1;
-  uint64_t h = BLOCKS_HASH0;
   char buf[4096];
   size_t n;
-  while ((n = fread(buf, 1, sizeof buf, f)) > 0) h = blocks_hash(h, buf, n);
+  while ((n = fread(buf, 1, sizeof buf, f)) > 0) *h = blocks_hash(*h, buf, n);
   fclose(f);
+  return 0;
+}
+
+/* The run's identity: the run file's bytes, the overrides and the bytes
+ * of the study's points file. */
+static int identity(const whirl_run *r, const study_opts *o, uint64_t *id) {
+  uint64_t h = BLOCKS_HASH0;
+  if (hash_file(o->file, &h)) return -1;
   for (size_t i = 0; i < o->nov; i++) h = blocks_hash(h, o->ov[i], strlen(o->ov[i]) + 1);
+  const char *pts = whirl_run_points_file(r);
+  if (pts[0] && hash_file(pts, &h)) return -1;
   *id = h;
   return 0;
 }
@@ -102,7 +111,7 @@ static int setup(study *S, whirl_run *r, const study_opts *o) {
   d->ctx = S;
   d->compute = compute;
   d->finish = finish;
-  return identity(o, &d->id) ? 1 : 0;
+  return identity(r, o, &d->id) ? 1 : 0;
 }
 
 int run_study_command(whirl_run *r, const study_opts *o, int rank, int nranks) {

@@ -72,6 +72,7 @@ struct whirl_run {
   size_t study_naxes, study_npoints;
   int study_par[WHIRL_RUN_MAXITEMS];
   size_t study_first[WHIRL_RUN_MAXITEMS], study_nval[WHIRL_RUN_MAXITEMS];
+  double *points;          /* POINTS: study_npoints rows of study_naxes values */
 };
 typedef struct whirl_run run_ctx;
 
@@ -165,6 +166,8 @@ int run_discover(run_ctx *R, const branch_spec *b0);
 
 /* run_study.c: the grid of STUDY (at load), the serial study (execute) */
 int run_study_resolve(run_ctx *R);
+/* run_points.c: the points of POINTS = FILE into R->points: 0, or -1 (said). */
+int run_points_load(run_ctx *R, const char *path);
 int run_study(run_ctx *R);
 
 /* run_basins.c: the whole grid (execute), or its points by blocks (the

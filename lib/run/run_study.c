@@ -24,6 +24,7 @@
 /* The grid's axes: runs of equal references in STUDY. */
 int run_study_resolve(run_ctx *R) {
   const whirl_run_settings *s = R->s;
+  if (s->points[0]) return R->in_study ? 0 : run_points_load(R, s->points);
   R->study_naxes = 0;
   R->study_npoints = s->nstudy ? 1 : 0;
   for (size_t i = 0; i < s->nstudy; i++) {
@@ -107,8 +108,13 @@ static int point_close(FILE *f, const char *name, void *ctx) {
   return fclose(f) ? -1 : 0;
 }
 
-/* The point's values: index i in mixed radix, the last axis fastest. */
+/* The point's values: its row of POINTS, or index i in mixed radix, the
+ * last axis fastest. */
 static void point_values(const run_ctx *R, size_t i, double *v) {
+  if (R->points) {
+    memcpy(v, R->points + i * R->study_naxes, R->study_naxes * sizeof *v);
+    return;
+  }
   for (size_t a = R->study_naxes; a-- > 0;) {
     const size_t m = R->study_nval[a];
     v[a] = R->s->study[R->study_first[a] + i % m].value;
@@ -183,6 +189,10 @@ size_t whirl_run_rows(const whirl_run *r) {
 
 size_t whirl_run_rows_block(const whirl_run *r) {
   return is_basins(r) ? (size_t)r->s->grid[0] : is_study(r) ? 1 : 0;
+}
+
+const char *whirl_run_points_file(const whirl_run *r) {
+  return r && r->s ? r->s->points : "";
 }
 
 const char *whirl_run_rows_file(const whirl_run *r) {

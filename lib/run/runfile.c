@@ -80,6 +80,7 @@ static const key_def keys[] = {
     {WHIRL_RK_DISCOVER_SEED, "DISCOVER_SEED", "discover_seed", NULL, K_INT},
     {WHIRL_RK_DISCOVER_SETTLE, "DISCOVER_SETTLE", "discover_settle", NULL, K_REAL},
     {WHIRL_RK_STUDY, "STUDY", "parameter_study", NULL, K_UZDICT},
+    {WHIRL_RK_POINTS, "POINTS", "study_points", NULL, K_STRING},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -621,6 +622,7 @@ static char *string_field(whirl_run_settings *s, whirl_run_key k, size_t *len) {
     case WHIRL_RK_OUT: *len = sizeof s->out; return s->out;
     case WHIRL_RK_S: *len = sizeof s->s; return s->s;
     case WHIRL_RK_PLOT: *len = sizeof s->plot; return s->plot;
+    case WHIRL_RK_POINTS: *len = sizeof s->points; return s->points;
     default: *len = 0; return NULL;
   }
 }
@@ -1250,6 +1252,13 @@ int whirl_runfile_check(whirl_runfile *rf) {
                     "DISCOVER: %g is outside [RL0, RL1] = [%g, %g]",
                     s->discover[i], s->rl0, s->rl1);
   }
+  if (s->nstudy && s->points[0])
+    return fail(rf, where_of(rf, WHIRL_RK_POINTS, w, sizeof w), "POINTS and STUDY: "
+                "a study is a grid (STUDY) or a list of points (POINTS), not both");
+  if (s->points[0] && s->ips == WHIRL_IPS_BASINS)
+    return fail(rf, where_of(rf, WHIRL_RK_POINTS, w, sizeof w), "POINTS of basins "
+                "is not available yet: a study runs continuations (IPS = 1, 2) "
+                "and their discovery");
   if (s->nstudy && s->ips == WHIRL_IPS_BASINS)
     return fail(rf, where_of(rf, WHIRL_RK_STUDY, w, sizeof w), "STUDY of basins "
                 "is not available yet: a study runs continuations (IPS = 1, 2) "

@@ -55,6 +55,7 @@ typedef struct whirl_run_settings {
   whirl_run_value study[WHIRL_RUN_MAXITEMS]; /* parameter study: {name:
                                    [values]}, a grid (first name slowest) */
   size_t nstudy;
+  char points[WHIRL_RUN_MAXPATH]; /* parameter study: a TSV of points ("" none) */
 } whirl_run_settings;
 
 const whirl_run_settings *whirl_runfile_settings(const whirl_runfile *rf);

@@ -117,6 +117,9 @@ WHIRL_API size_t whirl_run_rows(const whirl_run *r);
 /* Rows computed together: 1 for a study, a grid line for basins (the table
  * has a blank line after each block of more than one row). */
 WHIRL_API size_t whirl_run_rows_block(const whirl_run *r);
+/* The file of the study's points (POINTS), "" for a grid or none: its
+ * bytes are an input of the run as much as the run file's. */
+WHIRL_API const char *whirl_run_points_file(const whirl_run *r);
 /* "study.tsv" or "basins.tsv". */
 WHIRL_API const char *whirl_run_rows_file(const whirl_run *r);
 /* Before the first block (basins: the attractors from S): 0, 2 bad input,

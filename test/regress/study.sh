@@ -17,6 +17,11 @@
 #    chunks merged, killed and resumed, the checkpoint of other options
 #    refused, a chunk out of range, and 2 and 4 ranks: the one-process
 #    basins.tsv and shares;
+#  - POINTS = a TSV of points (the grid's, in a file): the grid's
+#    study.tsv, serial and on 2 ranks; an empty list, an unknown or
+#    repeated name, the continuation parameter, short and long rows, a
+#    value that is not a number, POINTS with STUDY: FILE:LINE, exit 2,
+#    nothing written;
 #  - bad input: a grid without points, an unknown parameter, the
 #    continuation parameter as an axis, a chunk out of range, a missing
 #    chunk: one message, exit 2.
@@ -166,6 +171,42 @@ else
   echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
   echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
 fi
+
+# a study over a list of points (POINTS = a TSV with a header of parameter
+# names): the grid's points in a file give the grid's study.tsv
+printf 'lambda\tdelta\n# the grid above, a row a point\n0.05\t0.2\n0.05\t0.3\n\n0.05\t0.42\n0.05\t0.6\n0.25\t0.2\n0.25\t0.3\n0.25\t0.42\n0.25\t0.6\n' > pts.tsv
+sed '/^STUDY/d' grid.whirl > pl.whirl
+echo 'POINTS = pts.tsv' >> pl.whirl
+"$WHIRL" run pl.whirl --quiet 2> pl.err
+cmp -s serial.tsv pl.out/study.tsv
+ok $? "POINTS = pts.tsv (the grid's 8 points, a comment, a blank line): the grid's study.tsv $(head -c 200 pl.err)"
+if grep -q "define WHIRL_HAVE_MPI 1" "$cb/config.h" 2> /dev/null && command -v mpirun > /dev/null; then
+  mpirun --allow-run-as-root --oversubscribe -n 2 "$WHIRL" run pl.whirl --quiet --OUT=plm > plm.txt 2>&1
+  cmp -s serial.tsv plm/study.tsv
+  ok $? "POINTS, mpirun -n 2: the same study.tsv"
+else
+  echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
+fi
+bad_points() { # NAME PATTERN CONTENT: pts-NAME.tsv with CONTENT refused
+  printf "$3" > "pts-$1.tsv"
+  "$WHIRL" run pl.whirl --quiet --POINTS="pts-$1.tsv" --OUT="pt-$1" > "pt-$1.txt" 2> "pt-$1.err"
+  rc=$?
+  [ "$rc" -eq 2 ] && grep -q "$2" "pt-$1.err" && [ "$(wc -l < "pt-$1.err")" -eq 1 ] && [ ! -e "pt-$1" ] && [ ! -e "pt-$1.checkpoint" ]
+  ok $? "POINTS $1: exit 2 ($rc), one message, nothing written: $(cat "pt-$1.err")"
+}
+bad_points empty "pts-empty.tsv:1: no points" 'lambda\tdelta\n'
+bad_points unknown "pts-unknown.tsv:1: column 2, 'nope' is not a parameter" 'lambda\tnope\n0.1\t1\n'
+bad_points icp "pts-icp.tsv:1: column 1, 'Omega' is the continuation parameter" 'Omega\n1\n'
+bad_points twice "pts-twice.tsv:1: column 2, 'lambda' is named twice" 'lambda\tlambda\n0.1\t0.2\n'
+bad_points short "pts-short.tsv:4: 1 value where the header names 2" 'lambda\tdelta\n0.1\t0.2\n\n0.1\n'
+bad_points long "pts-long.tsv:2: more than 2 values" 'lambda\tdelta\n0.1\t0.2\t0.3\n'
+bad_points number "pts-number.tsv:3: column 2 (delta): '0.3x' is not a finite number" 'lambda\tdelta\n0.1\t0.2\n0.1\t0.3x\n'
+bad_points nan "pts-nan.tsv:2: column 1 (lambda): 'nan' is not a finite number" 'lambda\tdelta\nnan\t0.2\n'
+{ cat pl.whirl; echo 'STUDY = {lambda: [0.1]}'; } > both.whirl
+"$WHIRL" run both.whirl --quiet > both.txt 2> both.err
+rc=$?
+[ "$rc" -eq 2 ] && grep -q "POINTS and STUDY" both.err && [ ! -e both.out ]
+ok $? "POINTS and STUDY together: exit 2 ($rc): $(cat both.err)"
 
 bad_input() { # NAME PATTERN [ARGS...], the study line last in NAME.whirl
   nm=$1 pat=$2
