@@ -48,7 +48,7 @@ uint64_t blocks_hash(uint64_t h, const void *p, size_t n) {
   return h;
 }
 
-static double seconds(void) {
+double blocks_seconds(void) {
   struct timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
@@ -157,7 +157,7 @@ static int checkpoint_open(blocks *K) {
     remove(tmp);
     return 1;
   }
-  K->synced = seconds();
+  K->synced = blocks_seconds();
   K->ck = fopen(K->ckpt, "ab");
   return K->ck ? 0 : 1;
 }
@@ -165,15 +165,17 @@ static int checkpoint_open(blocks *K) {
 /* Keep block b of stage s (data taken over): in memory and in the
  * checkpoint, flushed at once and synced at most once a second (one fsync
  * a block would bound rank 0 at a few hundred blocks a second). */
-int blocks_keep(blocks *K, size_t s, size_t b, char *data, size_t n) {
+int blocks_keep(blocks *K, size_t s, size_t b, char *data, size_t n, const blocks_when *w) {
   const size_t e = blocks_entry(K, s, b);
+  if (K->times)
+    fprintf(K->times, "%zu\t%zu\t%d\t%.6f\t%.6f\t%zu\n", s, b, w->rank, w->t0, w->t1, n);
   K->data[e] = data, K->len[e] = n, K->have[e] = 1;
   if (s == K->d->nstages) K->computed++;
   cli_progress_show(&K->prog, ++K->done, K->total);
   int bad = put_entry(K, K->ck, s, b, data, n) || fflush(K->ck);
-  if (!bad && seconds() - K->synced >= 1.0) {
+  if (!bad && blocks_seconds() - K->synced >= 1.0) {
     bad = fsync(fileno(K->ck)) != 0;
-    K->synced = seconds();
+    K->synced = blocks_seconds();
   }
   if (bad) cli_error(K->d->cmd, "writing %s failed: %s", K->ckpt, strerror(errno));
   return bad;
@@ -193,8 +195,10 @@ int blocks_absorb(blocks *K, size_t s) {
 int blocks_compute_one(blocks *K, size_t s, size_t b) {
   char *data = NULL;
   size_t n = 0;
+  blocks_when w = {blocks_seconds(), 0, 0};
   if (K->d->compute(K->d->ctx, s, b, &data, &n)) return 1;
-  return blocks_keep(K, s, b, data, n);
+  w.t1 = blocks_seconds();
+  return blocks_keep(K, s, b, data, n, &w);
 }
 
 static int compute_serial(blocks *K) {
@@ -265,6 +269,7 @@ static int setup(blocks *K, const blocks_def *d, size_t chunk, size_t chunks) {
 
 static void release(blocks *K) {
   if (K->ck) fclose(K->ck);
+  if (K->times) fclose(K->times);
   for (size_t i = 0; K->data && i < K->total; i++) free(K->data[i]);
   free(K->data);
   free(K->len);
@@ -278,6 +283,9 @@ int blocks_run(const blocks_def *d, size_t chunk, size_t chunks, int quiet, int 
   if (!rc && rank == 0) rc = cli_outdir_check(d->cmd, d->where, K.out);
   if (!rc && rank == 0) rc = resume(&K);
   if (!rc && rank == 0) rc = checkpoint_open(&K);
+  const char *tf = getenv("WHIRL_BLOCK_TIMES"); /* a benchmark's record */
+  if (!rc && rank == 0 && tf && *tf && (K.times = fopen(tf, "w")))
+    fprintf(K.times, "stage\tblock\trank\tstart\tend\tbytes\n");
   cli_progress_init(&K.prog, d->progress, quiet || rank != 0);
 #ifdef WHIRL_HAVE_MPI
   if (nranks > 1) {

@@ -24,7 +24,16 @@ typedef struct blocks {
   size_t resumed, computed, done, total;
   double synced;
   cli_progress prog;
+  FILE *times;              /* WHIRL_BLOCK_TIMES: a line a block computed */
 } blocks;
+
+/* When a block was computed, and where (for WHIRL_BLOCK_TIMES). */
+typedef struct blocks_when {
+  double t0, t1; /* CLOCK_MONOTONIC seconds */
+  int rank;
+} blocks_when;
+
+double blocks_seconds(void);
 
 /* The entry of block b of stage s (the table's: b in [lo, hi)), and a
  * stage's blocks on this run [first, end). */
@@ -32,7 +41,7 @@ size_t blocks_entry(const blocks *K, size_t s, size_t b);
 size_t blocks_stage_first(const blocks *K, size_t s);
 size_t blocks_stage_end(const blocks *K, size_t s);
 /* Keep a finished block (data taken over): memory, checkpoint, progress. */
-int blocks_keep(blocks *K, size_t s, size_t b, char *data, size_t n);
+int blocks_keep(blocks *K, size_t s, size_t b, char *data, size_t n, const blocks_when *w);
 /* Compute block b of stage s here and keep it: 0 or 1. */
 int blocks_compute_one(blocks *K, size_t s, size_t b);
 /* Stage s's blocks to the command (every process), then freed: 0 or 1. */

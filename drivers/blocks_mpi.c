@@ -10,8 +10,8 @@
  *
  * Messages: work {stage, block} (TAG_WORK), the end of a stage (TAG_STAGE,
  * then the stage's broadcast) or of the run (TAG_STOP), to the ranks; a
- * finished block {stage, block} and its bytes (TAG_DATA; stage
- * UINT64_MAX: it failed, said by that rank), to rank 0.
+ * finished block {stage, block, when it was computed} and its bytes
+ * (TAG_DATA; stage UINT64_MAX: it failed, said by that rank), to rank 0.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include "config.h"
 #ifdef WHIRL_HAVE_MPI
@@ -28,6 +28,12 @@ enum { TAG_WORK = 1, TAG_DATA = 2, TAG_STOP = 3, TAG_STAGE = 4 };
 enum { QUEUE = 4 };
 #define NONE UINT64_MAX
 #define PIECE (1 << 30) /* bytes a broadcast at most (MPI counts are int) */
+
+/* A finished block's message starts with this. */
+typedef struct head {
+  uint64_t stage, block;
+  double t0, t1; /* when it was computed */
+} head;
 
 static uint64_t next_block(const blocks *K, size_t s, size_t *next) {
   while (*next < blocks_stage_end(K, s) && K->have[blocks_entry(K, s, *next)]) (*next)++;
@@ -49,16 +55,17 @@ static int receive(blocks *K, size_t s, int *from) {
   if (!msg) return 1; /* the message is left: the run ends in failure */
   MPI_Recv(msg, len, MPI_BYTE, st.MPI_SOURCE, TAG_DATA, MPI_COMM_WORLD, &st);
   *from = st.MPI_SOURCE;
-  uint64_t h[2] = {NONE, 0};
-  if ((size_t)len >= sizeof h) memcpy(h, msg, sizeof h);
-  if (h[0] != s || h[1] < blocks_stage_first(K, s) || h[1] >= blocks_stage_end(K, s)) {
+  head h = {NONE, 0, 0, 0};
+  if ((size_t)len >= sizeof h) memcpy(&h, msg, sizeof h);
+  if (h.stage != s || h.block < blocks_stage_first(K, s) || h.block >= blocks_stage_end(K, s)) {
     free(msg);
     return 1;
   }
   const size_t n = (size_t)len - sizeof h;
   memmove(msg, msg + sizeof h, n);
   msg[n] = '\0';
-  return blocks_keep(K, s, (size_t)h[1], msg, n);
+  const blocks_when w = {h.t0, h.t1, *from};
+  return blocks_keep(K, s, (size_t)h.block, msg, n, &w);
 }
 
 /* The blocks of stage s: handed out, computed here between messages,
@@ -141,31 +148,76 @@ int blocks_master(blocks *K, int nranks) {
   return bad;
 }
 
+/* The finished blocks on their way to rank 0: sent without waiting (a
+ * block's rows are more than the few kB a message is sent eagerly with;
+ * a blocking send would wait until rank 0 is done with a block of its
+ * own, and the rank with it), freed once rank 0 has them. */
+typedef struct outbox {
+  MPI_Request rq[2 * QUEUE];
+  char *msg[2 * QUEUE];
+  int n;
+} outbox;
+
+static void outbox_reap(outbox *o, int all) {
+  for (int i = 0; i < o->n;) {
+    int done = 0;
+    if (all) MPI_Wait(&o->rq[i], MPI_STATUS_IGNORE), done = 1;
+    else MPI_Test(&o->rq[i], &done, MPI_STATUS_IGNORE);
+    if (!done) {
+      i++;
+      continue;
+    }
+    free(o->msg[i]);
+    o->n--;
+    o->rq[i] = o->rq[o->n], o->msg[i] = o->msg[o->n];
+  }
+}
+
+static void outbox_send(outbox *o, char *msg, size_t n) {
+  outbox_reap(o, 0);
+  if (o->n == 2 * QUEUE) {
+    int i;
+    MPI_Waitany(o->n, o->rq, &i, MPI_STATUS_IGNORE);
+    free(o->msg[i]);
+    o->n--;
+    o->rq[i] = o->rq[o->n], o->msg[i] = o->msg[o->n];
+  }
+  MPI_Isend(msg, (int)n, MPI_BYTE, 0, TAG_DATA, MPI_COMM_WORLD, &o->rq[o->n]);
+  o->msg[o->n++] = msg;
+}
+
 /* Compute the blocks rank 0 sends and return them, take each finished
  * stage in, until told to stop. */
 int blocks_worker(blocks *K) {
   int failed = 0;
+  outbox ob = {.n = 0};
   for (;;) {
     uint64_t w[2];
     MPI_Status st;
     MPI_Recv(w, 2, MPI_UINT64_T, 0, MPI_ANY_TAG, MPI_COMM_WORLD, &st);
-    if (st.MPI_TAG == TAG_STOP) return 0;
+    if (st.MPI_TAG == TAG_STOP) break;
     if (st.MPI_TAG == TAG_STAGE) {
       failed |= broadcast(K, (size_t)w[0], 1) || blocks_absorb(K, (size_t)w[0]);
       continue;
     }
     char *data = NULL, *msg = NULL;
     size_t n = 0;
-    uint64_t h[2] = {w[0], w[1]};
+    head h = {w[0], w[1], blocks_seconds(), 0};
     if (failed || K->d->compute(K->d->ctx, (size_t)w[0], (size_t)w[1], &data, &n) ||
         n > INT_MAX - sizeof h || !(msg = malloc(n + sizeof h)))
-      h[0] = NONE, n = 0;
-    if (!msg) msg = (char *)h;
-    else memcpy(msg, h, sizeof h), memcpy(msg + sizeof h, data, n);
-    MPI_Send(msg, (int)(n + sizeof h), MPI_BYTE, 0, TAG_DATA, MPI_COMM_WORLD);
-    if (msg != (char *)h) free(msg);
+      h.stage = NONE, n = 0;
+    h.t1 = blocks_seconds();
+    if (!msg && !(msg = malloc(sizeof h))) { /* a failure: the header alone */
+      cli_error(K->d->cmd, "out of memory for a message: the job is ended");
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    }
+    memcpy(msg, &h, sizeof h);
+    if (n) memcpy(msg + sizeof h, data, n);
     free(data);
+    outbox_send(&ob, msg, n + sizeof h);
   }
+  outbox_reap(&ob, 1);
+  return 0;
 }
 #else
 typedef int blocks_mpi_unused; /* ISO C: no empty translation unit */
