@@ -201,10 +201,38 @@ int blocks_compute_one(blocks *K, size_t s, size_t b) {
   return blocks_keep(K, s, b, data, n, &w);
 }
 
+/* The missing blocks b .. b + nb − 1 of stage s in one call, kept. */
+static int compute_run(blocks *K, size_t s, size_t b, size_t nb) {
+  char *data[BLOCKS_RUN] = {NULL};
+  size_t len[BLOCKS_RUN] = {0};
+  blocks_when w = {blocks_seconds(), 0, 0};
+  if (K->d->compute_run(K->d->ctx, s, b, nb, data, len)) return 1;
+  w.t1 = blocks_seconds();
+  int bad = 0;
+  for (size_t k = 0; k < nb; k++) {
+    if (!bad) bad = blocks_keep(K, s, b + k, data[k], len[k], &w);
+    else free(data[k]);
+  }
+  return bad;
+}
+
+/* One process: the stages' blocks in order, each stage taken in, then the
+ * table's; runs of up to BLOCKS_RUN missing blocks at once when the
+ * command computes runs. */
 static int compute_serial(blocks *K) {
   for (size_t s = 0; s <= K->d->nstages; s++) {
-    for (size_t b = blocks_stage_first(K, s); b < blocks_stage_end(K, s); b++)
-      if (!K->have[blocks_entry(K, s, b)] && blocks_compute_one(K, s, b)) return 1;
+    const size_t end = blocks_stage_end(K, s);
+    for (size_t b = blocks_stage_first(K, s); b < end;) {
+      size_t nb = 0;
+      while (b + nb < end && nb < BLOCKS_RUN && !K->have[blocks_entry(K, s, b + nb)]) nb++;
+      if (nb == 0) {
+        b++;
+        continue;
+      }
+      if (K->d->compute_run && nb > 1 ? compute_run(K, s, b, nb) : blocks_compute_one(K, s, b))
+        return 1;
+      b += K->d->compute_run ? nb : 1;
+    }
     if (s < K->d->nstages && blocks_absorb(K, s)) return 1;
   }
   return 0;

@@ -20,6 +20,7 @@
 #include "outdir.h"
 
 #define BLOCKS_MAX_STAGES 8
+#define BLOCKS_RUN 8 /* blocks a run of compute_run at most */
 
 /* What the table's last step is given (rank 0). */
 typedef struct blocks_result {
@@ -49,6 +50,13 @@ typedef struct blocks_def {
   /* Block b of stage s (s == nstages: the table), malloc'd: 0, or 1
    * (said). */
   int (*compute)(void *ctx, size_t s, size_t b, char **data, size_t *len);
+  /* Optional, for one process: blocks b0 .. b0 + nb − 1 of stage s in one
+   * call (nb <= BLOCKS_RUN; threads then share one pass over them instead
+   * of waiting for each other at the end of every block), data[k] and
+   * len[k] block b0 + k's.  A stage's blocks may take their bytes together
+   * (all in data[0], the others empty): a stage is only ever taken in
+   * whole, in order.  0, or 1 (said). */
+  int (*compute_run)(void *ctx, size_t s, size_t b0, size_t nb, char **data, size_t *len);
   /* Every process, stage s < nstages once all its blocks are in: 0 or 1. */
   int (*absorb)(void *ctx, size_t s, char *const *data, const size_t *len, size_t nb);
   /* Rank 0, the table written into od: the other files, then

@@ -16,9 +16,8 @@
 
 #include "blocks.h"
 #include "cli.h"
+#include "sfd_basins.h"
 #include "sfd_common.h"
-
-#define CMD "sfd basins"
 
 static const cli_doc doc = {
 "usage: whirl sfd basins --omega W [options]\n"
@@ -84,80 +83,84 @@ static int write_script(cli_outdir *od, const whirl_sfd_attractors *A, size_t na
  * of consecutive initial states classified with the whole atlas.  A table
  * block is its rows, then '\0' and "steps rhs_evals by_atlas" of it. */
 
-typedef struct sb {
-  double p[WHIRL_SFD_NPAR];
-  const char *vel;
-  int vmode, threads, fixed, noplot, quiet;
-  size_t npoints, periods, seeds, levels, cells, hits, phases;
-  double radius, rtol, atol;
-  whirl_sfd_attractors *A;
-  size_t na, n;              /* attractors, initial states */
-  double *X;                 /* the states, 4 a row (NULL when merging) */
-  whirl_basins_options bo;
-  whirl_basins_atlas *atlas; /* NULL: none (--seeds 0, --fixed-horizon) */
-  size_t per[BLOCKS_MAX_STAGES]; /* seeds a block, each round */
-  char header[1024];
-  double t_att, t_start;
-  blocks_def d;
-} sb;
-
 enum { TABLE_BLOCKS = 64, TABLE_BLOCK_MAX = 128 };
 
-static const char *class_name(const sb *S, int w) {
+const char *sfd_basins_class(const sb *S, int w) {
   return w >= 0 ? whirl_sfd_attractors_info(S->A, (size_t)w)->name
          : w == WHIRL_BASIN_DOMAIN ? "contact" : w == WHIRL_BASIN_UNSETTLED ? "unsettled" : "failed";
 }
 
-/* Table block b: its states classified, their rows and the trailer. */
-static int table_block(sb *S, size_t b, char **data, size_t *len) {
-  const size_t first = b * S->d.block, m = S->n - first < S->d.block ? S->n - first : S->d.block;
+/* Table blocks b0 .. b0 + nb − 1: their states classified together, each
+ * block its rows, then the trailer (the statistics: all on the first). */
+static int table_run(sb *S, size_t b0, size_t nb, char **data, size_t *len) {
+  const size_t B = S->d.block, first = b0 * B;
+  const size_t m = S->n - first < nb * B ? S->n - first : nb * B;
   int *which = malloc((m + 1) * sizeof *which);
   unsigned *per = malloc((m + 1) * sizeof *per);
-  char *text = malloc(m * 128 + 96), msg[512];
+  char msg[512];
   whirl_basins_options o = S->bo;
   o.atlas = S->atlas;
   o.first = first;
   whirl_basins_stats st;
-  int rc = which && per && text ? WHIRL_OK : WHIRL_ENOMEM;
+  int rc = which && per ? WHIRL_OK : WHIRL_ENOMEM;
   if (rc == WHIRL_OK)
     rc = whirl_basins_compute(whirl_sfd_fixed(), S->p, m, S->X + 4 * first,
                               whirl_sfd_attractors_list(S->A), S->na, &o, which, per, &st, msg,
                               sizeof msg);
-  size_t pos = 0;
-  for (size_t i = 0; rc == WHIRL_OK && i < m; ++i) {
-    const double *x = S->X + 4 * (first + i);
-    pos += (size_t)sprintf(text + pos, "%s%.10g\t%.10g\t%.10g\t%.10g\t%s\t%u", i ? "\n" : "", x[0],
-                           x[1], x[2], x[3], class_name(S, which[i]), per[i]);
-  }
-  if (rc == WHIRL_OK) {
+  for (size_t k = 0; rc == WHIRL_OK && k < nb; ++k) {
+    const size_t i0 = k * B, i1 = (k + 1) * B < m ? (k + 1) * B : m;
+    char *text = malloc((i1 - i0) * 128 + 96);
+    if (!(data[k] = text)) {
+      rc = WHIRL_ENOMEM;
+      break;
+    }
+    size_t pos = 0;
+    for (size_t i = i0; i < i1; ++i) {
+      const double *x = S->X + 4 * (first + i);
+      pos += (size_t)sprintf(text + pos, "%s%.10g\t%.10g\t%.10g\t%.10g\t%s\t%u", i > i0 ? "\n" : "",
+                             x[0], x[1], x[2], x[3], sfd_basins_class(S, which[i]), per[i]);
+    }
     text[pos++] = '\0';
-    pos += (size_t)sprintf(text + pos, "%zu %zu %zu", st.steps, st.rhs_evals, st.by_atlas);
+    pos += (size_t)sprintf(text + pos, "%zu %zu %zu", k ? 0 : st.steps, k ? 0 : st.rhs_evals,
+                           k ? 0 : st.by_atlas);
+    len[k] = pos;
   }
   free(which);
   free(per);
   if (rc != WHIRL_OK) {
+    for (size_t k = 0; k < nb; ++k) free(data[k]), data[k] = NULL;
     cli_error(CMD, "%s", rc == WHIRL_ENOMEM ? "out of memory" : msg);
-    free(text);
     return 1;
   }
-  *data = text;
-  *len = pos;
   return 0;
 }
 
-static int compute(void *ctx, size_t s, size_t b, char **data, size_t *len) {
-  sb *S = ctx;
-  if (s == S->d.nstages) return table_block(S, b, data, len);
-  const size_t m = whirl_basins_atlas_round_seeds(S->atlas, s), j0 = b * S->per[s];
+/* Blocks b0 .. b0 + nb − 1 of atlas round s: their seeds classified
+ * together, the bytes all in data[0] (the round is taken in whole). */
+static int round_run(sb *S, size_t s, size_t b0, size_t nb, char **data, size_t *len) {
+  const size_t m = whirl_basins_atlas_round_seeds(S->atlas, s), j0 = b0 * S->per[s];
+  const size_t count = m - j0 < nb * S->per[s] ? m - j0 : nb * S->per[s];
   void *part = NULL;
-  int rc = whirl_basins_atlas_classify(S->atlas, s, j0, m - j0 < S->per[s] ? m - j0 : S->per[s],
-                                       &part, len);
+  int rc = whirl_basins_atlas_classify(S->atlas, s, j0, count, &part, &len[0]);
+  data[0] = part;
+  for (size_t k = 1; rc == WHIRL_OK && k < nb; ++k)
+    if ((data[k] = malloc(1))) len[k] = 0;
+    else rc = WHIRL_ENOMEM;
   if (rc != WHIRL_OK) {
+    for (size_t k = 0; k < nb; ++k) free(data[k]), data[k] = NULL;
     cli_error(CMD, "basins atlas, round %zu: %s", s + 1, whirl_strerror(rc));
     return 1;
   }
-  *data = part;
   return 0;
+}
+
+static int compute_run(void *ctx, size_t s, size_t b0, size_t nb, char **data, size_t *len) {
+  sb *S = ctx;
+  return s == S->d.nstages ? table_run(S, b0, nb, data, len) : round_run(S, s, b0, nb, data, len);
+}
+
+static int compute(void *ctx, size_t s, size_t b, char **data, size_t *len) {
+  return compute_run(ctx, s, b, 1, data, len);
 }
 
 static int absorb(void *ctx, size_t s, char *const *data, const size_t *len, size_t nb) {
@@ -181,7 +184,7 @@ static void count_row(const sb *S, const char *row, tally *T) {
   const char *e = strchr(c, '\t');
   const size_t L = e ? (size_t)(e - c) : strlen(c);
   size_t j = 0;
-  while (j < S->na && !(strlen(class_name(S, (int)j)) == L && !strncmp(class_name(S, (int)j), c, L))) ++j;
+  while (j < S->na && !(strlen(sfd_basins_class(S, (int)j)) == L && !strncmp(sfd_basins_class(S, (int)j), c, L))) ++j;
   if (j < S->na) ++T->cnt[j];
   else if (!strncmp(c, "contact", L)) ++T->ncontact;
   else if (!strncmp(c, "unsettled", L)) ++T->nunset;
@@ -225,7 +228,7 @@ static void print_shares(const sb *S, const tally *T) {
   const double n = (double)S->n;
   printf("attractor\tcount\tpercent\n");
   for (size_t j = 0; j < S->na; ++j)
-    printf("%s\t%zu\t%.2f\n", class_name(S, (int)j), T->cnt[j], 100.0 * (double)T->cnt[j] / n);
+    printf("%s\t%zu\t%.2f\n", sfd_basins_class(S, (int)j), T->cnt[j], 100.0 * (double)T->cnt[j] / n);
   if (T->ncontact) printf("contact\t%zu\t%.2f\n", T->ncontact, 100.0 * (double)T->ncontact / n);
   if (T->nunset) printf("unsettled\t%zu\t%.2f\n", T->nunset, 100.0 * (double)T->nunset / n);
   if (T->nfail) printf("failed\t%zu\t%.2f\n", T->nfail, 100.0 * (double)T->nfail / n);
@@ -291,7 +294,8 @@ static int finish(void *ctx, cli_outdir *od, const blocks_result *res) {
 /* ---- the command --------------------------------------------------------- */
 
 /* The options into S, checked: 0, 1 (help shown) or 2 (said). */
-static int parse(sb *S, int argc, char **argv, const char **dir, const char **chunk, size_t *merge) {
+static int parse(sb *S, int argc, char **argv, const char **dir, const char **chunk, size_t *merge,
+                 const char **study) {
   whirl_sfd_default_params(S->p);
   S->p[WHIRL_SFD_OMEGA] = NAN;
   S->npoints = 8000, S->periods = 500, S->seeds = 4, S->levels = 4, S->cells = 32, S->hits = 4;
@@ -327,12 +331,19 @@ static int parse(sb *S, int argc, char **argv, const char **dir, const char **ch
        "the I-th of N parts of the states (each with the whole atlas) into DIR.chunk-I-of-N/, "
        "for job arrays (doc/parameter-studies.md)", ""},
       {"--merge-chunks", CLI_SIZE, merge, "N", "join DIR.chunk-1-of-N ... DIR.chunk-N-of-N into DIR", ""},
+      {"--study", CLI_STRING, study, "FILE",
+       "basin fractions at each point of FILE, a TSV: a header of parameter names (omega, "
+       "lambda, delta, zeta), a row of values a point; the options give the rest: "
+       "DIR/study.tsv, a row a point (doc/parameter-studies.md)", ""},
       SFD_OPTS_MODEL(p),
       SFD_OPTS_TOL(S->rtol, S->atol),
       CLI_OPTS_OUT(*dir, S->noplot, S->quiet)};
   int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 1 : 2;
-  if (sfd_check(CMD, p, 1)) return 2;
+  double q[WHIRL_SFD_NPAR];
+  memcpy(q, p, sizeof q);
+  if (*study && isnan(q[WHIRL_SFD_OMEGA])) q[WHIRL_SFD_OMEGA] = 1; /* may be the file's */
+  if (sfd_check(CMD, q, 1)) return 2;
   const char *vel = S->vel;
   S->vmode = !strcmp(vel, "zero") ? 0 : !strcmp(vel, "circular") ? 1 : !strcmp(vel, "trajectory") ? 2 : -1;
   if (S->vmode < 0) {
@@ -369,7 +380,7 @@ static int parse(sb *S, int argc, char **argv, const char **dir, const char **ch
 }
 
 /* The initial states (S->n of them into S->X): 0, or 1 (said). */
-static int initial_states(sb *S, int rows_only) {
+int sfd_basins_states(sb *S, int rows_only) {
   const double Om = S->p[WHIRL_SFD_OMEGA];
   char msg[512];
   if (S->vmode == 2) {
@@ -403,7 +414,7 @@ static int initial_states(sb *S, int rows_only) {
   return 0;
 }
 
-static void basins_options(sb *S) {
+void sfd_basins_options(sb *S) {
   whirl_basins_options *bo = &S->bo;
   whirl_basins_options_default(bo);
   bo->period = 2 * WHIRL_PI / S->p[WHIRL_SFD_OMEGA];
@@ -419,8 +430,19 @@ static void basins_options(sb *S) {
   bo->cell_hits = S->hits;
 }
 
-/* The table and its stages (the atlas's rounds), and the run's identity:
- * every option that changes a row (not --threads, --quiet, the output). */
+/* The identity of a run: every option that changes a row (not --threads,
+ * --quiet, the output directory). */
+uint64_t sfd_basins_id(const sb *S) {
+  char id[1024];
+  int len = snprintf(id, sizeof id, "sfd basins %s %zu %a %zu %d %zu %zu %zu %zu %zu %a %a",
+                     S->vel, S->npoints, S->radius, S->periods, S->fixed, S->seeds, S->levels,
+                     S->cells, S->hits, S->phases, S->rtol, S->atol);
+  for (size_t k = 0; k < WHIRL_SFD_NPAR && len > 0 && (size_t)len < sizeof id; ++k)
+    len += snprintf(id + len, sizeof id - (size_t)len, " %a", S->p[k]);
+  return blocks_hash(BLOCKS_HASH0, id, strlen(id));
+}
+
+/* The table and its stages (the atlas's rounds), and the run's identity: */
 static int describe(sb *S, const char *dir, int merging) {
   blocks_def *d = &S->d;
   char msg[512];
@@ -440,28 +462,23 @@ static int describe(sb *S, const char *dir, int merging) {
   d->rows = S->n;
   d->cmd = CMD, d->progress = "whirl sfd basins", d->file = "basins.tsv", d->out = dir;
   d->header = S->header, d->ctx = S, d->compute = compute, d->absorb = absorb, d->finish = finish;
+  d->compute_run = compute_run;
   const double *p = S->p;
   snprintf(S->header, sizeof S->header,
            "# whirl sfd basins: Omega=%.10g lambda=%.10g delta=%.10g zeta=%.10g velocities=%s "
            "periods=%zu%s rtol=%g atol=%g\ny0\tz0\tvy0\tvz0\tattractor\tperiods\n",
            p[WHIRL_SFD_OMEGA], p[1], p[2], p[3], S->vel, S->periods,
            S->fixed ? " (fixed horizon)" : "", S->rtol, S->atol);
-  char id[1024];
-  int len = snprintf(id, sizeof id, "sfd basins %s %zu %a %zu %d %zu %zu %zu %zu %zu %a %a",
-                     S->vel, S->npoints, S->radius, S->periods, S->fixed, S->seeds, S->levels,
-                     S->cells, S->hits, S->phases, S->rtol, S->atol);
-  for (size_t k = 0; k < WHIRL_SFD_NPAR && len > 0 && (size_t)len < sizeof id; ++k)
-    len += snprintf(id + len, sizeof id - (size_t)len, " %a", p[k]);
-  d->id = blocks_hash(BLOCKS_HASH0, id, strlen(id));
+  d->id = sfd_basins_id(S);
   return 0;
 }
 
 static int basins_ranked(int argc, char **argv, int rank, int nranks) {
   sb S;
   memset(&S, 0, sizeof S);
-  const char *dir = "sfd-basins", *chunk = NULL;
+  const char *dir = "sfd-basins", *chunk = NULL, *study = NULL;
   size_t merge = 0, ci = 0, cn = 0;
-  int rc = parse(&S, argc, argv, &dir, &chunk, &merge);
+  int rc = parse(&S, argc, argv, &dir, &chunk, &merge, &study);
   if (rc) return rc == 1 ? 0 : 2;
   char tail;
   if (chunk && (sscanf(chunk, "%zu/%zu%c", &ci, &cn, &tail) != 2 || cn == 0)) {
@@ -473,6 +490,7 @@ static int basins_ranked(int argc, char **argv, int rank, int nranks) {
     return 2;
   }
   if (rank != 0) S.quiet = 1;
+  if (study) return sfd_basins_study(&S, study, dir, ci, cn, merge, rank, nranks);
   if (rank == 0 && !chunk && !merge && (rc = cli_outdir_check(CMD, NULL, dir))) return rc;
   S.t_start = cli_now();
   whirl_sfd_attractors_options ao;
@@ -488,8 +506,8 @@ static int basins_ranked(int argc, char **argv, int rank, int nranks) {
   }
   S.t_att = cli_now() - S.t_start;
   S.na = whirl_sfd_attractors_count(S.A);
-  basins_options(&S);
-  rc = initial_states(&S, merge > 0);
+  sfd_basins_options(&S);
+  rc = sfd_basins_states(&S, merge > 0);
   if (!rc) rc = describe(&S, dir, merge > 0);
   if (!rc && merge) rc = rank == 0 ? blocks_merge(&S.d, merge) : 0;
   else if (!rc) rc = blocks_run(&S.d, ci, cn, S.quiet, rank, nranks);

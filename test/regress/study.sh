@@ -22,6 +22,10 @@
 #    repeated name, the continuation parameter, short and long rows, a
 #    value that is not a number, POINTS with STUDY: FILE:LINE, exit 2,
 #    nothing written;
+#  - basin fractions as a study (whirl sfd basins --study points.tsv):
+#    each point's counts those of whirl sfd basins at that point alone;
+#    chunks merged and 2 ranks give the same study.tsv; an unknown name, no
+#    omega: exit 2, nothing written;
 #  - bad input: a grid without points, an unknown parameter, the
 #    continuation parameter as an axis, a chunk out of range, a missing
 #    chunk: one message, exit 2.
@@ -207,6 +211,46 @@ bad_points nan "pts-nan.tsv:2: column 1 (lambda): 'nan' is not a finite number" 
 rc=$?
 [ "$rc" -eq 2 ] && grep -q "POINTS and STUDY" both.err && [ ! -e both.out ]
 ok $? "POINTS and STUDY together: exit 2 ($rc): $(cat both.err)"
+
+# basin fractions as the analysis of a study: whirl sfd basins --study over
+# points (omega, delta), each row the counts that whirl sfd basins at that
+# point alone prints (another route: the atlas built in rounds of blocks
+# there, by whirl_basins_compute itself here)
+printf 'omega\tdelta\n1.78\t0.3\n1.715\t0.25\n-1\t0.3\n' > bs.tsv
+"$WHIRL" sfd basins --study bs.tsv --points 200 --out bs1 > bs1.txt 2> bs1.err
+ok $? "sfd basins --study (3 points, one invalid): $(tail -n 1 bs1.err)"
+bad=0
+for pt in 0 1; do
+  row=$(awk -F '\t' -v p=$pt '$1 == p' bs1/study.tsv)
+  om=$(echo "$row" | cut -f2); de=$(echo "$row" | cut -f3)
+  "$WHIRL" sfd basins --omega "$om" --delta "$de" --points 200 --no-plot --quiet --out bsp$pt > bsp$pt.txt
+  want=$(awk -F '\t' 'NR > 1 { c[$1] = $2 } END { printf "%d %d", c["small"], c["large"] }' bsp$pt.txt)
+  got=$(echo "$row" | awk -F '\t' '{ printf "%d %d", $7, $9 }')
+  [ "$want" = "$got" ] && [ "$(echo "$row" | cut -f4)" = ok ] || { bad=1; echo "# point $pt: $got, alone $want"; }
+done
+awk -F '\t' '$1 == 2 && $4 == "invalid"' bs1/study.tsv | grep -q . && grep -q "study point 2: omega must be > 0" bs1.err || bad=1
+ok $bad "every point's small and large counts are those of whirl sfd basins at that point; the invalid one said"
+for i in 1 2; do "$WHIRL" sfd basins --study bs.tsv --points 200 --out bsc --chunk $i/2 --quiet 2> /dev/null; done
+"$WHIRL" sfd basins --study bs.tsv --points 200 --out bsc --merge-chunks 2 --quiet
+cmp -s bs1/study.tsv bsc/study.tsv
+ok $? "sfd basins --study in 2 chunks, merged: the same study.tsv"
+if grep -q "define WHIRL_HAVE_MPI 1" "$cb/config.h" 2> /dev/null && command -v mpirun > /dev/null; then
+  mpirun --allow-run-as-root --oversubscribe -n 2 "$WHIRL" sfd basins --study bs.tsv --points 200 --threads 1 --out bsm --quiet > /dev/null 2>&1
+  cmp -s bs1/study.tsv bsm/study.tsv
+  ok $? "sfd basins --study, mpirun -n 2: the same study.tsv"
+else
+  echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
+fi
+printf 'omega\tclearance\n1.78\t1\n' > bsu.tsv
+"$WHIRL" sfd basins --study bsu.tsv --out bsu > bsu.txt 2> bsu.err
+rc=$?
+[ "$rc" -eq 2 ] && grep -q "bsu.tsv:1: column 2, 'clearance' is not a parameter" bsu.err && [ ! -e bsu ] && [ ! -e bsu.checkpoint ]
+ok $? "sfd basins --study, an unknown name: exit 2 ($rc), nothing written: $(cat bsu.err)"
+printf 'delta\n0.3\n' > bso.tsv
+"$WHIRL" sfd basins --study bso.tsv --out bso > bso.txt 2> bso.err
+rc=$?
+[ "$rc" -eq 2 ] && grep -q "no omega column, and no --omega" bso.err && [ ! -e bso ]
+ok $? "sfd basins --study without omega: exit 2 ($rc): $(cat bso.err)"
 
 bad_input() { # NAME PATTERN [ARGS...], the study line last in NAME.whirl
   nm=$1 pat=$2
