@@ -54,6 +54,12 @@ double blocks_seconds(void) {
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+double blocks_cpu_seconds(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 /* Entry index of block b of stage s (the table's: b in [lo, hi)). */
 size_t blocks_entry(const blocks *K, size_t s, size_t b) {
   return K->off[s] + (s == K->d->nstages ? b - K->lo : b);
@@ -168,7 +174,8 @@ static int checkpoint_open(blocks *K) {
 int blocks_keep(blocks *K, size_t s, size_t b, char *data, size_t n, const blocks_when *w) {
   const size_t e = blocks_entry(K, s, b);
   if (K->times)
-    fprintf(K->times, "%zu\t%zu\t%d\t%.6f\t%.6f\t%zu\n", s, b, w->rank, w->t0, w->t1, n);
+    fprintf(K->times, "%zu\t%zu\t%d\t%.6f\t%.6f\t%zu\t%.6f\n", s, b, w->rank, w->t0, w->t1, n,
+            w->cpu);
   K->data[e] = data, K->len[e] = n, K->have[e] = 1;
   if (s == K->d->nstages) K->computed++;
   cli_progress_show(&K->prog, ++K->done, K->total);
@@ -195,9 +202,11 @@ int blocks_absorb(blocks *K, size_t s) {
 int blocks_compute_one(blocks *K, size_t s, size_t b) {
   char *data = NULL;
   size_t n = 0;
-  blocks_when w = {blocks_seconds(), 0, 0};
+  const double c0 = blocks_cpu_seconds();
+  blocks_when w = {blocks_seconds(), 0, 0, 0};
   if (K->d->compute(K->d->ctx, s, b, &data, &n)) return 1;
   w.t1 = blocks_seconds();
+  w.cpu = blocks_cpu_seconds() - c0;
   return blocks_keep(K, s, b, data, n, &w);
 }
 
@@ -205,9 +214,11 @@ int blocks_compute_one(blocks *K, size_t s, size_t b) {
 static int compute_run(blocks *K, size_t s, size_t b, size_t nb) {
   char *data[BLOCKS_RUN] = {NULL};
   size_t len[BLOCKS_RUN] = {0};
-  blocks_when w = {blocks_seconds(), 0, 0};
+  const double c0 = blocks_cpu_seconds();
+  blocks_when w = {blocks_seconds(), 0, 0, 0};
   if (K->d->compute_run(K->d->ctx, s, b, nb, data, len)) return 1;
   w.t1 = blocks_seconds();
+  w.cpu = (blocks_cpu_seconds() - c0) / (double)nb;
   int bad = 0;
   for (size_t k = 0; k < nb; k++) {
     if (!bad) bad = blocks_keep(K, s, b + k, data[k], len[k], &w);
@@ -313,7 +324,7 @@ int blocks_run(const blocks_def *d, size_t chunk, size_t chunks, int quiet, int 
   if (!rc && rank == 0) rc = checkpoint_open(&K);
   const char *tf = getenv("WHIRL_BLOCK_TIMES"); /* a benchmark's record */
   if (!rc && rank == 0 && tf && *tf && (K.times = fopen(tf, "w")))
-    fprintf(K.times, "stage\tblock\trank\tstart\tend\tbytes\n");
+    fprintf(K.times, "stage\tblock\trank\tstart\tend\tbytes\tcpu\n");
   cli_progress_init(&K.prog, d->progress, quiet || rank != 0);
 #ifdef WHIRL_HAVE_MPI
   if (nranks > 1) {

@@ -31,9 +31,11 @@ typedef struct blocks {
 typedef struct blocks_when {
   double t0, t1; /* CLOCK_MONOTONIC seconds */
   int rank;
+  double cpu;    /* the computing thread's CPU seconds (a run's: its share) */
 } blocks_when;
 
 double blocks_seconds(void);
+double blocks_cpu_seconds(void); /* this thread's CPU time */
 
 /* The entry of block b of stage s (the table's: b in [lo, hi)), and a
  * stage's blocks on this run [first, end). */

@@ -32,7 +32,7 @@ enum { QUEUE = 4 };
 /* A finished block's message starts with this. */
 typedef struct head {
   uint64_t stage, block;
-  double t0, t1; /* when it was computed */
+  double t0, t1, cpu; /* when it was computed, its CPU seconds */
 } head;
 
 static uint64_t next_block(const blocks *K, size_t s, size_t *next) {
@@ -55,7 +55,7 @@ static int receive(blocks *K, size_t s, int *from) {
   if (!msg) return 1; /* the message is left: the run ends in failure */
   MPI_Recv(msg, len, MPI_BYTE, st.MPI_SOURCE, TAG_DATA, MPI_COMM_WORLD, &st);
   *from = st.MPI_SOURCE;
-  head h = {NONE, 0, 0, 0};
+  head h = {NONE, 0, 0, 0, 0};
   if ((size_t)len >= sizeof h) memcpy(&h, msg, sizeof h);
   if (h.stage != s || h.block < blocks_stage_first(K, s) || h.block >= blocks_stage_end(K, s)) {
     free(msg);
@@ -64,7 +64,7 @@ static int receive(blocks *K, size_t s, int *from) {
   const size_t n = (size_t)len - sizeof h;
   memmove(msg, msg + sizeof h, n);
   msg[n] = '\0';
-  const blocks_when w = {h.t0, h.t1, *from};
+  const blocks_when w = {h.t0, h.t1, *from, h.cpu};
   return blocks_keep(K, s, (size_t)h.block, msg, n, &w);
 }
 
@@ -202,11 +202,13 @@ int blocks_worker(blocks *K) {
     }
     char *data = NULL, *msg = NULL;
     size_t n = 0;
-    head h = {w[0], w[1], blocks_seconds(), 0};
+    const double c0 = blocks_cpu_seconds();
+    head h = {w[0], w[1], blocks_seconds(), 0, 0};
     if (failed || K->d->compute(K->d->ctx, (size_t)w[0], (size_t)w[1], &data, &n) ||
         n > INT_MAX - sizeof h || !(msg = malloc(n + sizeof h)))
       h.stage = NONE, n = 0;
     h.t1 = blocks_seconds();
+    h.cpu = blocks_cpu_seconds() - c0;
     if (!msg && !(msg = malloc(sizeof h))) { /* a failure: the header alone */
       cli_error(K->d->cmd, "out of memory for a message: the job is ended");
       MPI_Abort(MPI_COMM_WORLD, 1);
