@@ -20,7 +20,7 @@
 #include "outdir.h"
 
 #define BLOCKS_MAX_STAGES 8
-#define BLOCKS_RUN 8 /* blocks a run of compute_run at most */
+#define BLOCKS_RUN 16 /* blocks a run of compute_run at most */
 
 /* What the table's last step is given (rank 0). */
 typedef struct blocks_result {

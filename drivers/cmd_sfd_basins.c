@@ -83,7 +83,7 @@ static int write_script(cli_outdir *od, const whirl_sfd_attractors *A, size_t na
  * of consecutive initial states classified with the whole atlas.  A table
  * block is its rows, then '\0' and "steps rhs_evals by_atlas" of it. */
 
-enum { TABLE_BLOCKS = 64, TABLE_BLOCK_MAX = 128 };
+enum { TABLE_BLOCKS = 128, TABLE_BLOCK_MAX = 128, ROUND_BLOCKS = 128 };
 
 const char *sfd_basins_class(const sb *S, int w) {
   return w >= 0 ? whirl_sfd_attractors_info(S->A, (size_t)w)->name
@@ -452,7 +452,7 @@ static int describe(sb *S, const char *dir, int merging) {
       return cli_error(CMD, "%s", msg), 1;
     d->nstages = whirl_basins_atlas_rounds(S->atlas);
     for (size_t s = 0; s < d->nstages; ++s) {
-      const size_t m = whirl_basins_atlas_round_seeds(S->atlas, s), q = (m + 63) / 64;
+      const size_t m = whirl_basins_atlas_round_seeds(S->atlas, s), q = (m + ROUND_BLOCKS - 1) / ROUND_BLOCKS;
       S->per[s] = q < 4 ? 4 : q;
       d->stage_blocks[s] = (m + S->per[s] - 1) / S->per[s];
     }

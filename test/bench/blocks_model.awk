@@ -12,7 +12,7 @@
 # usage: awk -F '\t' -v R=2 -v S=0.3 -f blocks_model.awk times.tsv
 # SPDX-License-Identifier: BSD-3-Clause
 NR > 1 { c[$1, $2] = $7; if ($2 + 1 > nb[$1]) nb[$1] = $2 + 1; if ($1 + 1 > ns) ns = $1 + 1; tot += $7 }
-function assign(w, b, t) { fin[w] = (fin[w] > t ? fin[w] : t) + c[st, b]; np++; pt[np] = fin[w]; pw[np] = w }
+function assign(w, b, t) { b = ordv[b]; fin[w] = (fin[w] > t ? fin[w] : t) + c[st, b]; np++; pt[np] = fin[w]; pw[np] = w }
 function pop_earliest(limit,   i, k) { # the earliest reply at or before limit: its rank, or 0
   k = 0
   for (i = 1; i <= np; i++) if (pt[i] <= limit && (k == 0 || pt[i] < pt[k])) k = i
@@ -24,13 +24,14 @@ END {
   now = 0
   for (st = 0; st < ns; st++) {
     M = nb[st]; q = int(M / (2 * R)); q = q < 1 ? 1 : q > 4 ? 4 : q
-    nxt = 0; np = 0
+    nxt = 0; np = 0; j = 0; per = int((M + 7) / 8)
+    for (k = 0; k < 8 * per; k++) { i = (k % per) * 8 + int(k / per); if (i < M) ordv[j++] = i }
     for (w = 1; w < R; w++) fin[w] = now
     for (k = 0; k < q; k++) for (w = 1; w < R && nxt < M; w++) assign(w, nxt++, now)
     for (;;) {
       w = pop_earliest(now)
       if (w) { if (nxt < M) assign(w, nxt++, now); continue }
-      if (nxt < M) { now += c[st, nxt++]; continue }
+      if (nxt < M) { now += c[st, ordv[nxt++]]; continue }
       if (np == 0) break
       e = 1e300; for (i = 1; i <= np; i++) if (pt[i] < e) e = pt[i]
       now = e
