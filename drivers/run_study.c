@@ -46,10 +46,15 @@ static int identity(const whirl_run *r, const study_opts *o, uint64_t *id) {
 
 static int compute(void *ctx, size_t s, size_t b, char **data, size_t *len) {
   study *S = ctx;
-  (void)s;
+  if (s < S->d.nstages) return whirl_run_rows_stage_compute(S->r, s, b, data, len) ? 1 : 0;
   if (whirl_run_rows_compute(S->r, b, data)) return 1;
   *len = strlen(*data);
   return 0;
+}
+
+static int absorb(void *ctx, size_t s, char *const *data, const size_t *len, size_t nb) {
+  study *S = ctx;
+  return whirl_run_rows_stage_enter(S->r, s, data, len, nb) ? 1 : 0;
 }
 
 /* run.log and, for basins of the whole grid, the shares and the picture;
@@ -110,7 +115,11 @@ static int setup(study *S, whirl_run *r, const study_opts *o) {
   d->header = S->header;
   d->ctx = S;
   d->compute = compute;
+  d->absorb = absorb;
   d->finish = finish;
+  d->nstages = whirl_run_rows_stages(r);
+  if (d->nstages > BLOCKS_MAX_STAGES) return 1;
+  for (size_t s = 0; s < d->nstages; s++) d->stage_blocks[s] = whirl_run_rows_stage_blocks(r, s);
   return identity(r, o, &d->id) ? 1 : 0;
 }
 

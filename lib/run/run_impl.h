@@ -177,6 +177,14 @@ int run_basins_setup(run_ctx *R);
 void run_basins_job_free(run_basins_job *J);
 size_t run_basins_points(const run_ctx *R);
 size_t run_basins_line(const run_ctx *R);
+/* BASIN_SEEDS: the atlas begun (prepare), its rounds, a round's blocks, a
+ * block computed, a round entered: 0, or -1 (said). */
+int run_basins_atlas_begin(run_ctx *R);
+size_t run_basins_rounds(const run_ctx *R);
+size_t run_basins_round_blocks(const run_ctx *R, size_t s);
+int run_basins_round_compute(run_ctx *R, size_t s, size_t b, void **part, size_t *len);
+int run_basins_round_enter(run_ctx *R, size_t s, const void *const *parts, const size_t *lens,
+                           size_t n);
 int run_basins_classify(run_ctx *R, size_t first, size_t count, int *which,
                         unsigned *periods, whirl_basins_stats *st);
 int run_basins_row(const run_ctx *R, size_t q, int which, unsigned periods, char *buf,

@@ -203,7 +203,28 @@ int whirl_run_rows_prepare(whirl_run *r) {
   if (!whirl_run_rows(r)) return WHIRL_EINVAL;
   if (!is_basins(r)) return 0;
   int rc = run_basins_setup(r);
+  if (!rc) rc = run_basins_atlas_begin(r);
   return rc == -2 ? 2 : rc ? 1 : 0;
+}
+
+size_t whirl_run_rows_stages(const whirl_run *r) { return is_basins(r) ? run_basins_rounds(r) : 0; }
+
+size_t whirl_run_rows_stage_blocks(const whirl_run *r, size_t s) {
+  return is_basins(r) ? run_basins_round_blocks(r, s) : 0;
+}
+
+int whirl_run_rows_stage_compute(whirl_run *r, size_t s, size_t b, char **out, size_t *len) {
+  void *part = NULL;
+  *out = NULL;
+  if (!is_basins(r) || run_basins_round_compute(r, s, b, &part, len)) return WHIRL_EINVAL;
+  *out = part;
+  return WHIRL_OK;
+}
+
+int whirl_run_rows_stage_enter(whirl_run *r, size_t s, char *const *parts, const size_t *lens,
+                               size_t n) {
+  return is_basins(r) && !run_basins_round_enter(r, s, (const void *const *)parts, lens, n)
+             ? WHIRL_OK : WHIRL_EINVAL;
 }
 
 int whirl_run_rows_header(const whirl_run *r, char *buf, size_t len) {

@@ -81,6 +81,7 @@ static const key_def keys[] = {
     {WHIRL_RK_DISCOVER_SETTLE, "DISCOVER_SETTLE", "discover_settle", NULL, K_REAL},
     {WHIRL_RK_STUDY, "STUDY", "parameter_study", NULL, K_UZDICT},
     {WHIRL_RK_POINTS, "POINTS", "study_points", NULL, K_STRING},
+    {WHIRL_RK_BASIN_SEEDS, "BASIN_SEEDS", "basin_seeds", NULL, K_INT},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -569,6 +570,7 @@ static const char *check_int(whirl_run_key k, int x) {
                                 "model's Jacobian)"
                               : NULL;
     case WHIRL_RK_BASIN_PERIODS: return x < 1 ? "must be >= 1" : NULL;
+    case WHIRL_RK_BASIN_SEEDS: return x < 0 ? "must be >= 0 (0: no atlas)" : NULL;
     case WHIRL_RK_DISCOVER_STARTS:
       return x < 1 || x > 1000000 ? "must be in [1, 1000000] (the starts tried at each sample value)" : NULL;
     case WHIRL_RK_DISCOVER_SEED: return x < 0 ? "must be >= 0" : NULL;
@@ -592,6 +594,7 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_ITNW: return &s->itnw;
     case WHIRL_RK_JAC: return &s->jac;
     case WHIRL_RK_BASIN_PERIODS: return &s->basin_periods;
+    case WHIRL_RK_BASIN_SEEDS: return &s->basin_seeds;
     case WHIRL_RK_DISCOVER_STARTS: return &s->discover_starts;
     case WHIRL_RK_DISCOVER_SEED: return &s->discover_seed;
     default: return NULL;

@@ -44,6 +44,7 @@ typedef struct whirl_run_settings {
   int attractors[WHIRL_RUN_MAXITEMS]; /* basins: labels in S */
   size_t nattractors;
   double basin_tol;             /* basins: capture radius (1e-3) */
+  int basin_seeds;              /* basins: atlas seed stride (0: none) */
   double discover[WHIRL_RUN_MAXITEMS]; /* discovery: sample values of ICP(1) */
   size_t ndiscover;             /* 0: no discovery */
   whirl_run_range box[WHIRL_RUN_MAXITEMS]; /* discovery: box of random starts */

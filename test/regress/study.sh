@@ -13,6 +13,8 @@
 #  - basins (IPS = basins, the Jeffcott rotor's, 11 x 11) through the same
 #    blocks: chunks merged, a killed run resumed and MPI give the same
 #    basins.tsv as one process;
+#  - basins of whirl run with an atlas (BASIN_SEEDS): the certified
+#    classes at every point, 2 chunks and 2 ranks the same bytes;
 #  - whirl sfd basins (the atlas's rounds broadcast, then the states): 3
 #    chunks merged, killed and resumed, the checkpoint of other options
 #    refused, a chunk out of range, and 2 and 4 ranks: the one-process
@@ -251,6 +253,31 @@ printf 'delta\n0.3\n' > bso.tsv
 rc=$?
 [ "$rc" -eq 2 ] && grep -q "no omega column, and no --omega" bso.err && [ ! -e bso ]
 ok $? "sfd basins --study without omega: exit 2 ($rc): $(cat bso.err)"
+
+# basins of whirl run with the atlas (BASIN_SEEDS = 2: its rounds the
+# stages of the blocks), against the certified route (no atlas) point by
+# point, and the same bytes on 2 ranks and in 2 chunks
+"$WHIRL" run basins.whirl --BASIN_GRID=21 --OUT=ja0 --quiet 2> ja0.err
+"$WHIRL" run basins.whirl --BASIN_GRID=21 --BASIN_SEEDS=2 --OUT=ja1 --quiet 2> ja1.err
+ok $? "basins with BASIN_SEEDS = 2 (21 x 21): $(head -c 200 ja1.err)"
+d=$(paste ja0/basins.tsv ja1/basins.tsv | awk -F '\t' 'NR > 1 && NF > 4 && $3 != $7 { d++ } END { print d + 0 }')
+[ "$d" -eq 0 ] && [ "$(grep -c . ja1/basins.tsv)" -eq 442 ]
+ok $? "the atlas's classes are the certified route's at every one of the 441 points ($d differ)"
+for i in 1 2; do "$WHIRL" run basins.whirl --BASIN_GRID=21 --BASIN_SEEDS=2 --OUT=jac --chunk=$i/2 --quiet; done
+"$WHIRL" run basins.whirl --BASIN_GRID=21 --BASIN_SEEDS=2 --OUT=jac --merge-chunks=2 --quiet
+cmp -s ja1/basins.tsv jac/basins.tsv
+ok $? "basins with the atlas in 2 chunks (each with the whole atlas), merged: the same basins.tsv"
+if grep -q "define WHIRL_HAVE_MPI 1" "$cb/config.h" 2> /dev/null && command -v mpirun > /dev/null; then
+  mpirun --allow-run-as-root --oversubscribe -n 2 "$WHIRL" run basins.whirl --BASIN_GRID=21 --BASIN_SEEDS=2 --quiet --OUT=jam > /dev/null 2>&1
+  cmp -s ja1/basins.tsv jam/basins.tsv
+  ok $? "basins with the atlas, mpirun -n 2 (the rounds broadcast): the same basins.tsv"
+else
+  echo "ok $((n + 1)) # SKIP not built --with-mpi (or no mpirun)"; n=$((n + 1))
+fi
+"$WHIRL" run basins.whirl --BASIN_SEEDS=-1 --OUT=jan --quiet > jan.txt 2> jan.err
+rc=$?
+[ "$rc" -eq 2 ] && grep -q "BASIN_SEEDS" jan.err && [ ! -e jan ]
+ok $? "BASIN_SEEDS = -1: exit 2 ($rc): $(cat jan.err)"
 
 bad_input() { # NAME PATTERN [ARGS...], the study line last in NAME.whirl
   nm=$1 pat=$2
