@@ -453,7 +453,7 @@ static int describe(sb *S, const char *dir, int merging) {
     d->nstages = whirl_basins_atlas_rounds(S->atlas);
     for (size_t s = 0; s < d->nstages; ++s) {
       const size_t m = whirl_basins_atlas_round_seeds(S->atlas, s), q = (m + ROUND_BLOCKS - 1) / ROUND_BLOCKS;
-      S->per[s] = q < 4 ? 4 : q;
+      S->per[s] = q < 1 ? 1 : q;
       d->stage_blocks[s] = (m + S->per[s] - 1) / S->per[s];
     }
   }
