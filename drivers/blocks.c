@@ -413,13 +413,27 @@ int blocks_merge(const blocks_def *d, size_t chunks) {
 
 /* ---- processes ---------------------------------------------------------- */
 
+/* MPI is finalized once, at exit: a process may run several commands (whirl
+ * auto runs its run files one after another), and MPI cannot be initialized
+ * again once finalized. */
+#ifdef WHIRL_HAVE_MPI
+static void finalize_at_exit(void) {
+  int fin = 0;
+  MPI_Finalized(&fin);
+  if (!fin) MPI_Finalize();
+}
+#endif
+
 void blocks_processes(int *argc, char ***argv, int *rank, int *nranks) {
   *rank = 0;
   *nranks = 1;
 #ifdef WHIRL_HAVE_MPI
   int init = 0;
   MPI_Initialized(&init);
-  if (!init) MPI_Init(argc, argv);
+  if (!init) {
+    MPI_Init(argc, argv);
+    atexit(finalize_at_exit);
+  }
   MPI_Comm_rank(MPI_COMM_WORLD, rank);
   MPI_Comm_size(MPI_COMM_WORLD, nranks);
 #else
@@ -430,8 +444,10 @@ void blocks_processes(int *argc, char ***argv, int *rank, int *nranks) {
 
 void blocks_processes_end(void) {
 #ifdef WHIRL_HAVE_MPI
+  /* the ranks part here (a rank that returns first must not exit while
+   * others still call it in) and MPI is finalized at exit */
   int fin = 0;
   MPI_Finalized(&fin);
-  if (!fin) MPI_Finalize();
+  if (!fin) MPI_Barrier(MPI_COMM_WORLD);
 #endif
 }

@@ -327,8 +327,8 @@ static int parse(sb *S, int argc, char **argv, const char **dir, const char **ch
        "consecutive section points in cells of one attractor that classify a state", NULL},
       {"--phases", CLI_SIZE, &S->phases, "M", "atlas section points a forcing period (1..64)", NULL},
       {"--threads", CLI_INT, &S->threads, "T", "OpenMP threads, 0..1024; 0: as many as OpenMP offers", NULL},
-      {"--chunk", CLI_STRING, chunk, "I/N",
-       "the I-th of N parts of the states (each with the whole atlas) into DIR.chunk-I-of-N/, "
+      {"--chunk", CLI_STRING, chunk, "PART",
+       "PART = I/N: the I-th of N parts of the states (each with the whole atlas) into DIR.chunk-I-of-N/, "
        "for job arrays (doc/parameter-studies.md)", ""},
       {"--merge-chunks", CLI_SIZE, merge, "N", "join DIR.chunk-1-of-N ... DIR.chunk-N-of-N into DIR", ""},
       {"--study", CLI_STRING, study, "FILE",
