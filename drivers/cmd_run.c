@@ -14,11 +14,7 @@
 
 #include <whirl/rotor.h>
 
-#include "config.h"
-#ifdef WHIRL_HAVE_MPI
-#include <mpi.h>
-#endif
-
+#include "blocks.h"
 #include "cli.h"
 #include "run_cmd.h"
 #include "run_study.h"
@@ -184,36 +180,13 @@ static int run_study_of(whirl_run *r, study_opts *so, size_t merge, int rank, in
   return run_study_command(r, so, rank, nranks);
 }
 
-/* The rank and the number of processes: MPI when built with it (and
- * started by mpirun), else 0 of 1. */
-static void processes(int *argc, char ***argv, int *rank, int *nranks) {
-  *rank = 0;
-  *nranks = 1;
-#ifdef WHIRL_HAVE_MPI
-  int init = 0;
-  MPI_Initialized(&init);
-  if (!init) MPI_Init(argc, argv);
-  MPI_Comm_rank(MPI_COMM_WORLD, rank);
-  MPI_Comm_size(MPI_COMM_WORLD, nranks);
-#else
-  (void)argc;
-  (void)argv;
-#endif
-}
-
-static void processes_end(void) {
-#ifdef WHIRL_HAVE_MPI
-  MPI_Finalize();
-#endif
-}
-
 static int cmd_run_ranked(int argc, char **argv, int rank, int nranks);
 
 int cmd_run(int argc, char **argv) {
   int rank, nranks;
-  processes(&argc, &argv, &rank, &nranks);
+  blocks_processes(&argc, &argv, &rank, &nranks);
   int status = cmd_run_ranked(argc, argv, rank, nranks);
-  processes_end();
+  blocks_processes_end();
   return status;
 }
 

@@ -29,6 +29,12 @@ struct whirl_basins_atlas {
   size_t cap, used;        /* hash table of cells (cap a power of 2) */
   int32_t *keys;           /* cap * n cell indices */
   signed char *cls;        /* EMPTY, MIXED or the class */
+  /* what its rounds classify (borrowed until the last round is entered) */
+  const whirl_problem *prob;
+  const double *p, *x0;
+  const whirl_attractor *att;
+  size_t natt, entered;    /* rounds entered */
+  whirl_basins_options o;
 };
 
 static uint64_t hash_key(const int32_t *q, size_t n) {
@@ -154,19 +160,19 @@ static int enter(whirl_basins_atlas *a, const basins_record *rec, const size_t *
   return WHIRL_OK;
 }
 
-/* Classify the points idx[0..m) in parallel, each with its record; with
- * the atlas as it is (use_atlas) or by the tests alone. */
-static int classify_level(whirl_basins_atlas *a, const whirl_problem *prob, const double *p,
-                          const double *x0, const whirl_attractor *att, size_t natt,
-                          const whirl_basins_options *o, const size_t *idx, size_t m,
-                          int use_atlas, basins_record *rec) {
+/* Classify the points idx[0..m) in parallel, each with its record, its
+ * class and periods; with the atlas as it is (use_atlas) or by the tests
+ * alone. */
+static int classify_level(const whirl_basins_atlas *a, const size_t *idx, size_t m,
+                          int use_atlas, basins_record *rec, int *which, unsigned *periods) {
+  const whirl_basins_options *o = &a->o;
   int status = WHIRL_OK;
 #ifdef _OPENMP
   int nth = o->nthreads > 0 ? o->nthreads : omp_get_max_threads();
 #pragma omp parallel num_threads(nth)
 #endif
   {
-    whirl_ode *ode = whirl_ode_alloc(prob, p);
+    whirl_ode *ode = whirl_ode_alloc(a->prob, a->p);
     int my = ode ? whirl_ode_set_tolerances(ode, o->rtol, o->atol) : WHIRL_ENOMEM;
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1)
@@ -176,11 +182,11 @@ static int classify_level(whirl_basins_atlas *a, const whirl_problem *prob, cons
       unsigned per = 0;
       rec[j].n = a->nk;
       if (my == WHIRL_OK)
-        my = basins_classify_ex(ode, x0 + idx[j] * a->n, att, natt, o, use_atlas ? a : NULL,
-                                &rec[j], &w, &per, &by);
+        my = basins_classify_ex(ode, a->x0 + idx[j] * a->n, a->att, a->natt, o,
+                                use_atlas ? a : NULL, &rec[j], &w, &per, &by);
       if (rec[j].oom) my = WHIRL_ENOMEM;
-      a->held_which[idx[j] / a->fine] = w;
-      a->held_periods[idx[j] / a->fine] = per;
+      which[j] = w;
+      periods[j] = per;
     }
     whirl_ode_free(ode);
 #ifdef _OPENMP
@@ -191,36 +197,140 @@ static int classify_level(whirl_basins_atlas *a, const whirl_problem *prob, cons
   return status;
 }
 
-/* The points of level l (1 = coarsest): multiples of fine·4^(levels−l)
- * that are not multiples of the next coarser stride.  Returns the count. */
-static size_t level_points(const whirl_basins_atlas *a, size_t l, size_t *idx) {
+/* The points of round r (0 = coarsest): multiples of fine·4^(levels−1−r)
+ * that are not multiples of the next coarser stride.  Returns the count;
+ * idx may be NULL. */
+static size_t level_points(const whirl_basins_atlas *a, size_t r, size_t *idx) {
   size_t st = a->fine, m = 0;
-  for (size_t k = l; k < a->levels; ++k) st *= 4;
+  for (size_t k = r + 1; k < a->levels; ++k) st *= 4;
   for (size_t g = 0; g < a->npoints; g += st)
-    if (l == 1 || g % (4 * st)) idx[m++] = g;
+    if (r == 0 || g % (4 * st)) {
+      if (idx) idx[m] = g;
+      m++;
+    }
   return m;
 }
 
-static int build_levels(whirl_basins_atlas *a, const whirl_problem *prob, const double *p,
-                        const double *x0, const whirl_attractor *att, size_t natt,
-                        const whirl_basins_options *o, size_t cells) {
-  size_t *idx = malloc(a->nheld * sizeof *idx);
-  basins_record *rec = calloc(a->nheld, sizeof *rec);
-  int rc = idx && rec ? WHIRL_OK : WHIRL_ENOMEM;
-  for (size_t l = 1; rc == WHIRL_OK && l <= a->levels; ++l) {
-    size_t m = level_points(a, l, idx);
-    memset(rec, 0, m * sizeof *rec);
-    rc = classify_level(a, prob, p, x0, att, natt, o, idx, m, l > 1, rec);
-    if (rc == WHIRL_OK && l == 1) set_cells(a, rec, idx, m, cells);
-    if (rc == WHIRL_OK) rc = enter(a, rec, idx, m);
-    for (size_t j = 0; j < m; ++j) free(rec[j].x);
+size_t whirl_basins_atlas_rounds(const whirl_basins_atlas *a) {
+  return a && a->npoints ? a->levels : 0;
+}
+
+size_t whirl_basins_atlas_round_seeds(const whirl_basins_atlas *a, size_t r) {
+  return a && r < whirl_basins_atlas_rounds(a) ? level_points(a, r, NULL) : 0;
+}
+
+/* A seed's part of a round's result: its class, periods and the count of
+ * its section states (each nk doubles) that follow. */
+typedef struct seed_head {
+  int32_t which;
+  uint32_t periods;
+  uint64_t m;
+} seed_head;
+
+/* The seeds j0 .. j0 + count − 1 of round r, one after another. */
+static int pack(const whirl_basins_atlas *a, const basins_record *rec, const int *which,
+                const unsigned *per, size_t count, void **buf, size_t *len) {
+  size_t total = 0;
+  for (size_t j = 0; j < count; ++j) total += sizeof(seed_head) + rec[j].m * a->nk * sizeof(double);
+  unsigned char *b = malloc(total ? total : 1), *c = b;
+  if (!b) return WHIRL_ENOMEM;
+  for (size_t j = 0; j < count; ++j) {
+    const seed_head h = {which[j], per[j], rec[j].m};
+    memcpy(c, &h, sizeof h);
+    c += sizeof h;
+    if (rec[j].m) memcpy(c, rec[j].x, rec[j].m * a->nk * sizeof(double));
+    c += rec[j].m * a->nk * sizeof(double);
   }
+  *buf = b;
+  *len = total;
+  return WHIRL_OK;
+}
+
+int whirl_basins_atlas_classify(const whirl_basins_atlas *a, size_t r, size_t j0, size_t count,
+                                void **buf, size_t *len) {
+  if (!a || !buf || !len || r >= whirl_basins_atlas_rounds(a) || r != a->entered ||
+      j0 > whirl_basins_atlas_round_seeds(a, r) || count > whirl_basins_atlas_round_seeds(a, r) - j0)
+    return WHIRL_EINVAL;
+  *buf = NULL;
+  *len = 0;
+  size_t *idx = malloc((level_points(a, r, NULL) + 1) * sizeof *idx);
+  basins_record *rec = calloc(count + 1, sizeof *rec);
+  int *which = malloc((count + 1) * sizeof *which);
+  unsigned *per = malloc((count + 1) * sizeof *per);
+  int rc = idx && rec && which && per ? WHIRL_OK : WHIRL_ENOMEM;
+  if (rc == WHIRL_OK) {
+    level_points(a, r, idx);
+    rc = classify_level(a, idx + j0, count, r > 0, rec, which, per);
+  }
+  if (rc == WHIRL_OK) rc = pack(a, rec, which, per, count, buf, len);
+  for (size_t j = 0; rec && j < count; ++j) free(rec[j].x);
+  free(idx);
+  free(rec);
+  free(which);
+  free(per);
+  return rc;
+}
+
+/* The records of round r's seeds from the parts, views into them (rec[j].x
+ * points into a part, not copied): WHIRL_OK, or WHIRL_EINVAL when the parts
+ * do not hold exactly the round's seeds. */
+static int unpack(whirl_basins_atlas *a, const size_t *idx, size_t m, const void *const *parts,
+                  const size_t *lens, size_t nparts, basins_record *rec) {
+  size_t j = 0;
+  for (size_t q = 0; q < nparts; ++q) {
+    const unsigned char *c = parts[q], *end = c + lens[q];
+    while (c < end) {
+      seed_head h;
+      if ((size_t)(end - c) < sizeof h || j >= m) return WHIRL_EINVAL;
+      memcpy(&h, c, sizeof h);
+      c += sizeof h;
+      if (h.m > (size_t)(end - c) / (a->nk * sizeof(double))) return WHIRL_EINVAL;
+      a->held_which[idx[j] / a->fine] = h.which;
+      a->held_periods[idx[j] / a->fine] = h.periods;
+      rec[j].x = (double *)(uintptr_t)c; /* read only */
+      rec[j].m = (size_t)h.m;
+      rec[j].n = a->nk;
+      c += h.m * a->nk * sizeof(double);
+      ++j;
+    }
+  }
+  return j == m ? WHIRL_OK : WHIRL_EINVAL;
+}
+
+int whirl_basins_atlas_enter(whirl_basins_atlas *a, size_t r, const void *const *parts,
+                             const size_t *lens, size_t nparts) {
+  if (!a || (nparts && (!parts || !lens)) || r >= whirl_basins_atlas_rounds(a) || r != a->entered)
+    return WHIRL_EINVAL;
+  const size_t m = level_points(a, r, NULL);
+  size_t *idx = malloc((m + 1) * sizeof *idx);
+  basins_record *rec = calloc(m + 1, sizeof *rec);
+  int rc = idx && rec ? WHIRL_OK : WHIRL_ENOMEM;
+  /* the records are doubles: a part not aligned for them is copied */
+  const void **al = calloc(nparts + 1, sizeof *al);
+  void **copies = calloc(nparts + 1, sizeof *copies);
+  if (!al || !copies) rc = WHIRL_ENOMEM;
+  for (size_t q = 0; rc == WHIRL_OK && q < nparts; ++q) {
+    al[q] = parts[q];
+    if ((uintptr_t)parts[q] % sizeof(double) == 0) continue;
+    if (!(copies[q] = malloc(lens[q] ? lens[q] : 1))) rc = WHIRL_ENOMEM;
+    else al[q] = memcpy(copies[q], parts[q], lens[q]);
+  }
+  if (rc == WHIRL_OK) {
+    level_points(a, r, idx);
+    rc = unpack(a, idx, m, al, lens, nparts, rec);
+  }
+  if (rc == WHIRL_OK && r == 0) set_cells(a, rec, idx, m, a->o.cells ? a->o.cells : 64);
+  if (rc == WHIRL_OK) rc = enter(a, rec, idx, m);
+  if (rc == WHIRL_OK) a->entered++;
+  for (size_t q = 0; copies && q < nparts; ++q) free(copies[q]);
+  free(copies);
+  free(al);
   free(idx);
   free(rec);
   return rc;
 }
 
-int whirl_basins_atlas_build(const whirl_problem *prob, const double *p, size_t npoints,
+int whirl_basins_atlas_begin(const whirl_problem *prob, const double *p, size_t npoints,
                              const double *x0, const whirl_attractor *att, size_t natt,
                              const whirl_basins_options *o, whirl_basins_atlas **out,
                              char *errbuf, size_t errlen) {
@@ -234,24 +344,49 @@ int whirl_basins_atlas_build(const whirl_problem *prob, const double *p, size_t 
     return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "basins atlas: need seed_stride >= 1 "
                         "and atlas_levels <= 8 (got %zu, %zu)", o->seed_stride, o->atlas_levels);
   whirl_basins_atlas *a = calloc(1, sizeof *a);
-  if (!a) return WHIRL_ENOMEM;
+  if (!a) return WHIRL_ERRMSG(errbuf, errlen, WHIRL_ENOMEM, "basins atlas: out of memory");
   a->n = prob->n;
   a->nk = prob->n + 1;
   a->npoints = npoints;
   a->fine = o->seed_stride;
   a->levels = o->atlas_levels ? o->atlas_levels : 1;
   a->nheld = npoints ? (npoints - 1) / a->fine + 1 : 1;
+  a->prob = prob, a->p = p, a->x0 = x0, a->att = att, a->natt = natt;
+  a->o = *o;
+  a->o.fixed_horizon = 0;
+  a->o.progress = NULL;
   a->held_which = malloc(a->nheld * sizeof *a->held_which);
   a->held_periods = malloc(a->nheld * sizeof *a->held_periods);
   a->lo = malloc(a->n * sizeof *a->lo);
   a->h = malloc(a->n * sizeof *a->h);
-  rc = a->held_which && a->held_periods && a->lo && a->h ? WHIRL_OK : WHIRL_ENOMEM;
-  whirl_basins_options so = *o;
-  so.fixed_horizon = 0;
-  if (rc == WHIRL_OK && npoints)
-    rc = build_levels(a, prob, p, x0, att, natt, &so, o->cells ? o->cells : 64);
+  if (!a->held_which || !a->held_periods || !a->lo || !a->h) {
+    whirl_basins_atlas_free(a);
+    return WHIRL_ERRMSG(errbuf, errlen, WHIRL_ENOMEM, "basins atlas: out of memory");
+  }
+  *out = a;
+  return WHIRL_OK;
+}
+
+int whirl_basins_atlas_build(const whirl_problem *prob, const double *p, size_t npoints,
+                             const double *x0, const whirl_attractor *att, size_t natt,
+                             const whirl_basins_options *o, whirl_basins_atlas **out,
+                             char *errbuf, size_t errlen) {
+  whirl_basins_atlas *a;
+  if (out) *out = NULL;
+  int rc = whirl_basins_atlas_begin(prob, p, npoints, x0, att, natt, o, &a, errbuf, errlen);
+  if (rc != WHIRL_OK) return rc;
+  for (size_t r = 0; rc == WHIRL_OK && r < whirl_basins_atlas_rounds(a); ++r) {
+    void *buf = NULL;
+    size_t len = 0;
+    rc = whirl_basins_atlas_classify(a, r, 0, whirl_basins_atlas_round_seeds(a, r), &buf, &len);
+    const void *const parts[1] = {buf};
+    if (rc == WHIRL_OK) rc = whirl_basins_atlas_enter(a, r, parts, &len, 1);
+    free(buf);
+  }
   if (rc != WHIRL_OK) {
     whirl_basins_atlas_free(a);
+    char dummy[1];
+    if (!errbuf || errlen == 0) errbuf = dummy, errlen = sizeof dummy;
     return WHIRL_ERRMSG(errbuf, errlen, rc, "basins atlas: %s", whirl_strerror(rc));
   }
   *out = a;

@@ -849,6 +849,7 @@ void whirl_run_free(whirl_run *r) {
   if (r->table) fclose(r->table);
   if (r->sols) fclose(r->sols);
   run_basins_job_free(r->bjob);
+  free(r->points);
   run_unload_model(r);
   whirl_runfile_free(r->rf);
   for (size_t i = 0; i < r->nspecial; i++) {

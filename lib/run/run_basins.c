@@ -87,6 +87,9 @@ struct run_basins_job {
   char (*names)[32];
   double *x0;              /* np start states */
   whirl_basins_options o;
+  whirl_basins_atlas *atlas; /* BASIN_SEEDS, built in rounds (the rows' stages) */
+  size_t per[8];           /* seeds a block, each round */
+  int atlas_ready;         /* its last round entered */
 };
 
 void run_basins_job_free(run_basins_job *J) {
@@ -96,6 +99,7 @@ void run_basins_job_free(run_basins_job *J) {
   free(J->att);
   free(J->names);
   free(J->x0);
+  whirl_basins_atlas_free(J->atlas);
   free(J);
 }
 
@@ -196,6 +200,13 @@ int run_basins_setup(run_ctx *R) {
   J->o.max_periods = (size_t)s->basin_periods;
   J->o.rtol = 1e-9;
   J->o.atol = 1e-12;
+  if (s->basin_seeds > 0) { /* the atlas, as whirl sfd basins has it */
+    J->o.seed_stride = (size_t)s->basin_seeds;
+    J->o.atlas_levels = 4;
+    J->o.cells = 32;
+    J->o.cell_hits = 4;
+    J->o.section_phases = 8;
+  }
   R->plot.basins = 1;
   R->plot.x_name = R->xnames[ax0];
   R->plot.y_name = R->xnames[ax1];
@@ -215,6 +226,10 @@ int run_basins_classify(run_ctx *R, size_t first, size_t count, int *which,
   run_basins_job *J = R->bjob;
   char err[512];
   whirl_basins_options o = J->o;
+  if (J->atlas_ready) { /* built in rounds: for any block of the grid */
+    o.atlas = J->atlas;
+    o.first = first;
+  }
   if (count == J->np) {
     o.progress = progress;
     o.progress_data = R;
@@ -226,6 +241,52 @@ int run_basins_classify(run_ctx *R, size_t first, size_t count, int *which,
     return -1;
   }
   return 0;
+}
+
+/* ---- the atlas in rounds: the stages of the rows (whirl/run.h) ---------- */
+
+int run_basins_atlas_begin(run_ctx *R) {
+  run_basins_job *J = R->bjob;
+  if (!J || J->atlas || !J->o.seed_stride) return 0;
+  char err[512];
+  if (whirl_basins_atlas_begin(&R->prob, R->par, J->np, J->x0, J->att, J->na, &J->o, &J->atlas,
+                               err, sizeof err) != WHIRL_OK) {
+    run_say(R, "basins: %s", err);
+    return -1;
+  }
+  for (size_t s = 0; s < whirl_basins_atlas_rounds(J->atlas); s++) {
+    const size_t m = whirl_basins_atlas_round_seeds(J->atlas, s), q = (m + 127) / 128;
+    J->per[s] = q < 4 ? 4 : q;
+  }
+  return 0;
+}
+
+size_t run_basins_rounds(const run_ctx *R) {
+  return R->bjob ? whirl_basins_atlas_rounds(R->bjob->atlas) : 0;
+}
+
+size_t run_basins_round_blocks(const run_ctx *R, size_t s) {
+  const run_basins_job *J = R->bjob;
+  if (s >= run_basins_rounds(R)) return 0;
+  return (whirl_basins_atlas_round_seeds(J->atlas, s) + J->per[s] - 1) / J->per[s];
+}
+
+int run_basins_round_compute(run_ctx *R, size_t s, size_t b, void **part, size_t *len) {
+  const run_basins_job *J = R->bjob;
+  if (b >= run_basins_round_blocks(R, s)) return -1;
+  const size_t m = whirl_basins_atlas_round_seeds(J->atlas, s), j0 = b * J->per[s];
+  const int rc = whirl_basins_atlas_classify(J->atlas, s, j0, m - j0 < J->per[s] ? m - j0 : J->per[s],
+                                             part, len);
+  if (rc != WHIRL_OK) run_say(R, "basins atlas, round %zu: %s", s + 1, whirl_strerror(rc));
+  return rc == WHIRL_OK ? 0 : -1;
+}
+
+int run_basins_round_enter(run_ctx *R, size_t s, const void *const *parts, const size_t *lens,
+                           size_t n) {
+  const int rc = R->bjob ? whirl_basins_atlas_enter(R->bjob->atlas, s, parts, lens, n) : WHIRL_EINVAL;
+  if (rc == WHIRL_OK && s + 1 == run_basins_rounds(R)) R->bjob->atlas_ready = 1;
+  if (rc != WHIRL_OK) run_say(R, "basins atlas, round %zu: %s", s + 1, whirl_strerror(rc));
+  return rc == WHIRL_OK ? 0 : -1;
 }
 
 /* Point q's row of basins.tsv (no newline): its two axis values, its class

@@ -73,6 +73,7 @@ struct whirl_run {
   size_t study_naxes, study_npoints;
   int study_par[WHIRL_RUN_MAXITEMS];
   size_t study_first[WHIRL_RUN_MAXITEMS], study_nval[WHIRL_RUN_MAXITEMS];
+  double *points;          /* POINTS: study_npoints rows of study_naxes values */
 };
 typedef struct whirl_run run_ctx;
 
@@ -173,6 +174,8 @@ int run_discover(run_ctx *R, const branch_spec *b0);
 
 /* run_study.c: the grid of STUDY (at load), the serial study (execute) */
 int run_study_resolve(run_ctx *R);
+/* run_points.c: the points of POINTS = FILE into R->points: 0, or -1 (said). */
+int run_points_load(run_ctx *R, const char *path);
 int run_study(run_ctx *R);
 
 /* run_basins.c: the whole grid (execute), or its points by blocks (the
@@ -182,6 +185,14 @@ int run_basins_setup(run_ctx *R);
 void run_basins_job_free(run_basins_job *J);
 size_t run_basins_points(const run_ctx *R);
 size_t run_basins_line(const run_ctx *R);
+/* BASIN_SEEDS: the atlas begun (prepare), its rounds, a round's blocks, a
+ * block computed, a round entered: 0, or -1 (said). */
+int run_basins_atlas_begin(run_ctx *R);
+size_t run_basins_rounds(const run_ctx *R);
+size_t run_basins_round_blocks(const run_ctx *R, size_t s);
+int run_basins_round_compute(run_ctx *R, size_t s, size_t b, void **part, size_t *len);
+int run_basins_round_enter(run_ctx *R, size_t s, const void *const *parts, const size_t *lens,
+                           size_t n);
 int run_basins_classify(run_ctx *R, size_t first, size_t count, int *which,
                         unsigned *periods, whirl_basins_stats *st);
 int run_basins_row(const run_ctx *R, size_t q, int which, unsigned periods, char *buf,

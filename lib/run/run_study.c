@@ -24,6 +24,7 @@
 /* The grid's axes: runs of equal references in STUDY. */
 int run_study_resolve(run_ctx *R) {
   const whirl_run_settings *s = R->s;
+  if (s->points[0]) return R->in_study ? 0 : run_points_load(R, s->points);
   R->study_naxes = 0;
   R->study_npoints = s->nstudy ? 1 : 0;
   for (size_t i = 0; i < s->nstudy; i++) {
@@ -107,8 +108,13 @@ static int point_close(FILE *f, const char *name, void *ctx) {
   return fclose(f) ? -1 : 0;
 }
 
-/* The point's values: index i in mixed radix, the last axis fastest. */
+/* The point's values: its row of POINTS, or index i in mixed radix, the
+ * last axis fastest. */
 static void point_values(const run_ctx *R, size_t i, double *v) {
+  if (R->points) {
+    memcpy(v, R->points + i * R->study_naxes, R->study_naxes * sizeof *v);
+    return;
+  }
   for (size_t a = R->study_naxes; a-- > 0;) {
     const size_t m = R->study_nval[a];
     v[a] = R->s->study[R->study_first[a] + i % m].value;
@@ -185,6 +191,10 @@ size_t whirl_run_rows_block(const whirl_run *r) {
   return is_basins(r) ? (size_t)r->s->grid[0] : is_study(r) ? 1 : 0;
 }
 
+const char *whirl_run_points_file(const whirl_run *r) {
+  return r && r->s ? r->s->points : "";
+}
+
 const char *whirl_run_rows_file(const whirl_run *r) {
   return is_basins(r) ? "basins.tsv" : is_study(r) ? "study.tsv" : NULL;
 }
@@ -193,7 +203,28 @@ int whirl_run_rows_prepare(whirl_run *r) {
   if (!whirl_run_rows(r)) return WHIRL_EINVAL;
   if (!is_basins(r)) return 0;
   int rc = run_basins_setup(r);
+  if (!rc) rc = run_basins_atlas_begin(r);
   return rc == -2 ? 2 : rc ? 1 : 0;
+}
+
+size_t whirl_run_rows_stages(const whirl_run *r) { return is_basins(r) ? run_basins_rounds(r) : 0; }
+
+size_t whirl_run_rows_stage_blocks(const whirl_run *r, size_t s) {
+  return is_basins(r) ? run_basins_round_blocks(r, s) : 0;
+}
+
+int whirl_run_rows_stage_compute(whirl_run *r, size_t s, size_t b, char **out, size_t *len) {
+  void *part = NULL;
+  *out = NULL;
+  if (!is_basins(r) || run_basins_round_compute(r, s, b, &part, len)) return WHIRL_EINVAL;
+  *out = part;
+  return WHIRL_OK;
+}
+
+int whirl_run_rows_stage_enter(whirl_run *r, size_t s, char *const *parts, const size_t *lens,
+                               size_t n) {
+  return is_basins(r) && !run_basins_round_enter(r, s, (const void *const *)parts, lens, n)
+             ? WHIRL_OK : WHIRL_EINVAL;
 }
 
 int whirl_run_rows_header(const whirl_run *r, char *buf, size_t len) {

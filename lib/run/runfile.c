@@ -82,6 +82,8 @@ static const key_def keys[] = {
     {WHIRL_RK_STUDY, "STUDY", "parameter_study", NULL, K_UZDICT},
     {WHIRL_RK_IPLT, "IPLT", "plot_measure", NULL, K_INT},
     {WHIRL_RK_DAT, "DAT", "start_data", NULL, K_STRING},
+    {WHIRL_RK_POINTS, "POINTS", "study_points", NULL, K_STRING},
+    {WHIRL_RK_BASIN_SEEDS, "BASIN_SEEDS", "basin_seeds", NULL, K_INT},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -573,6 +575,7 @@ static const char *check_int(whirl_run_key k, int x) {
                                 "model's Jacobian)"
                               : NULL;
     case WHIRL_RK_BASIN_PERIODS: return x < 1 ? "must be >= 1" : NULL;
+    case WHIRL_RK_BASIN_SEEDS: return x < 0 ? "must be >= 0 (0: no atlas)" : NULL;
     case WHIRL_RK_DISCOVER_STARTS:
       return x < 1 || x > 1000000 ? "must be in [1, 1000000] (the starts tried at each sample value)" : NULL;
     case WHIRL_RK_DISCOVER_SEED: return x < 0 ? "must be >= 0" : NULL;
@@ -597,6 +600,7 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_ITNW: return &s->itnw;
     case WHIRL_RK_JAC: return &s->jac;
     case WHIRL_RK_BASIN_PERIODS: return &s->basin_periods;
+    case WHIRL_RK_BASIN_SEEDS: return &s->basin_seeds;
     case WHIRL_RK_DISCOVER_STARTS: return &s->discover_starts;
     case WHIRL_RK_DISCOVER_SEED: return &s->discover_seed;
     default: return NULL;
@@ -628,6 +632,7 @@ static char *string_field(whirl_run_settings *s, whirl_run_key k, size_t *len) {
     case WHIRL_RK_S: *len = sizeof s->s; return s->s;
     case WHIRL_RK_DAT: *len = sizeof s->dat; return s->dat;
     case WHIRL_RK_PLOT: *len = sizeof s->plot; return s->plot;
+    case WHIRL_RK_POINTS: *len = sizeof s->points; return s->points;
     default: *len = 0; return NULL;
   }
 }
@@ -1257,6 +1262,13 @@ int whirl_runfile_check(whirl_runfile *rf) {
                     "DISCOVER: %g is outside [RL0, RL1] = [%g, %g]",
                     s->discover[i], s->rl0, s->rl1);
   }
+  if (s->nstudy && s->points[0])
+    return fail(rf, where_of(rf, WHIRL_RK_POINTS, w, sizeof w), "POINTS and STUDY: "
+                "a study is a grid (STUDY) or a list of points (POINTS), not both");
+  if (s->points[0] && s->ips == WHIRL_IPS_BASINS)
+    return fail(rf, where_of(rf, WHIRL_RK_POINTS, w, sizeof w), "POINTS of basins "
+                "is not available yet: a study runs continuations (IPS = 1, 2) "
+                "and their discovery");
   if (s->nstudy && s->ips == WHIRL_IPS_BASINS)
     return fail(rf, where_of(rf, WHIRL_RK_STUDY, w, sizeof w), "STUDY of basins "
                 "is not available yet: a study runs continuations (IPS = 1, 2) "

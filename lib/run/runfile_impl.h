@@ -46,6 +46,7 @@ typedef struct whirl_run_settings {
   int attractors[WHIRL_RUN_MAXITEMS]; /* basins: labels in S */
   size_t nattractors;
   double basin_tol;             /* basins: capture radius (1e-3) */
+  int basin_seeds;              /* basins: atlas seed stride (0: none) */
   double discover[WHIRL_RUN_MAXITEMS]; /* discovery: sample values of ICP(1) */
   size_t ndiscover;             /* 0: no discovery */
   whirl_run_range box[WHIRL_RUN_MAXITEMS]; /* discovery: box of random starts */
@@ -57,6 +58,7 @@ typedef struct whirl_run_settings {
   whirl_run_value study[WHIRL_RUN_MAXITEMS]; /* parameter study: {name:
                                    [values]}, a grid (first name slowest) */
   size_t nstudy;
+  char points[WHIRL_RUN_MAXPATH]; /* parameter study: a TSV of points ("" none) */
 } whirl_run_settings;
 
 const whirl_run_settings *whirl_runfile_settings(const whirl_runfile *rf);

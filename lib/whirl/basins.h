@@ -137,6 +137,42 @@ WHIRL_API int whirl_basins_atlas_build(const whirl_problem *prob,
                                        whirl_basins_atlas **out,
                                        char *errbuf, size_t errlen);
 WHIRL_API void whirl_basins_atlas_free(whirl_basins_atlas *a);
+
+/* The same atlas built in steps, for a caller that hands its rounds' seeds
+ * to other processes (MPI) and gives every process the whole atlas:
+ *
+ *     whirl_basins_atlas_begin(..., &a, ...);    (no seed classified yet)
+ *     for r in 0 .. whirl_basins_atlas_rounds(a) − 1:
+ *       any split of the round's seeds 0 .. whirl_basins_atlas_round_seeds(a, r) − 1
+ *       into parts, each whirl_basins_atlas_classify(a, r, j0, count, &buf, &len)
+ *       (anywhere: an identical atlas, with the rounds before r entered);
+ *       whirl_basins_atlas_enter(a, r, parts, lens, nparts), the parts in
+ *       seed order, on every atlas that is to be used.
+ *
+ * A part is bytes (the seeds' classes and section states, in the
+ * machine's representation: for processes of one architecture), malloc'd
+ * (the caller frees it).  The atlas is the one whirl_basins_atlas_build
+ * makes (which is these steps in one process).  begin keeps prob, p, x0 and
+ * att, borrowed until the last round is entered.  WHIRL_OK, or WHIRL_EINVAL
+ * (a round out of order, parts that are not exactly the round's seeds),
+ * WHIRL_ENOMEM, or the error of a classification. */
+WHIRL_API int whirl_basins_atlas_begin(const whirl_problem *prob,
+                                       const double *p, size_t npoints,
+                                       const double *x0,
+                                       const whirl_attractor *att,
+                                       size_t natt,
+                                       const whirl_basins_options *o,
+                                       whirl_basins_atlas **out,
+                                       char *errbuf, size_t errlen);
+WHIRL_API size_t whirl_basins_atlas_rounds(const whirl_basins_atlas *a);
+WHIRL_API size_t whirl_basins_atlas_round_seeds(const whirl_basins_atlas *a,
+                                                size_t r);
+WHIRL_API int whirl_basins_atlas_classify(const whirl_basins_atlas *a,
+                                          size_t r, size_t j0, size_t count,
+                                          void **part, size_t *len);
+WHIRL_API int whirl_basins_atlas_enter(whirl_basins_atlas *a, size_t r,
+                                       const void *const *parts,
+                                       const size_t *lens, size_t nparts);
 /* Seeds, and classified cells, of an atlas. */
 WHIRL_API size_t whirl_basins_atlas_seeds(const whirl_basins_atlas *a);
 WHIRL_API size_t whirl_basins_atlas_cells(const whirl_basins_atlas *a);

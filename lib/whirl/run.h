@@ -117,11 +117,25 @@ WHIRL_API size_t whirl_run_rows(const whirl_run *r);
 /* Rows computed together: 1 for a study, a grid line for basins (the table
  * has a blank line after each block of more than one row). */
 WHIRL_API size_t whirl_run_rows_block(const whirl_run *r);
+/* The file of the study's points (POINTS), "" for a grid or none: its
+ * bytes are an input of the run as much as the run file's. */
+WHIRL_API const char *whirl_run_points_file(const whirl_run *r);
 /* "study.tsv" or "basins.tsv". */
 WHIRL_API const char *whirl_run_rows_file(const whirl_run *r);
 /* Before the first block (basins: the attractors from S): 0, 2 bad input,
  * 1 failure (said through io.message). */
 WHIRL_API int whirl_run_rows_prepare(whirl_run *r);
+/* Stages before the blocks (basins with BASIN_SEEDS: the rounds of the
+ * atlas, whirl/basins.h), each of whirl_run_rows_stage_blocks blocks: a
+ * block computed anywhere (bytes, malloc'd), and once a stage's blocks are
+ * all there, entered in order by every whirl_run that computes blocks
+ * after it.  0 stages: none (a study, basins without an atlas). */
+WHIRL_API size_t whirl_run_rows_stages(const whirl_run *r);
+WHIRL_API size_t whirl_run_rows_stage_blocks(const whirl_run *r, size_t s);
+WHIRL_API int whirl_run_rows_stage_compute(whirl_run *r, size_t s, size_t b, char **out,
+                                           size_t *len);
+WHIRL_API int whirl_run_rows_stage_enter(whirl_run *r, size_t s, char *const *parts,
+                                         const size_t *lens, size_t n);
 /* The table's header line (no newline) into buf[len]. */
 WHIRL_API int whirl_run_rows_header(const whirl_run *r, char *buf, size_t len);
 /* Block `block`'s rows, joined by newlines (no final one), in *out

@@ -46,6 +46,7 @@ typedef enum whirl_run_key {
   WHIRL_RK_DISCOVER_SEED, WHIRL_RK_DISCOVER_SETTLE, WHIRL_RK_STUDY,
   WHIRL_RK_IPLT, /* AUTO's measure in the L2-NORM column */
   WHIRL_RK_DAT,  /* a start orbit from a data file (AUTO's dat) */
+  WHIRL_RK_POINTS, WHIRL_RK_BASIN_SEEDS,
   WHIRL_RK_IGNORED, /* AUTO keys whirl accepts and ignores (ITMX, NWTN, ...) */
   WHIRL_RK_COUNT
 } whirl_run_key;
@@ -102,7 +103,7 @@ WHIRL_API int whirl_runfile_check(whirl_runfile *rf);
 /* The value of a key, given or its default (doc/run-files.md).
  * Integer keys — NDIM (0: not given), IPS, METHOD, ILP, ISP, ISW, IRS (the
  * label, or the count with a type), NTST, NCOL, IAD, NHB, OVERSAMPLING,
- * NMX, NPR, ITNW, JAC, BASIN_PERIODS — through _int; real keys — DS, DSMIN,
+ * NMX, NPR, ITNW, JAC, BASIN_PERIODS, BASIN_SEEDS — through _int; real keys — DS, DSMIN,
  * DSMAX, RL0, RL1, A0, A1, EPSL, EPSU, EPSS, BASIN_TOL — through _real;
  * WHIRL_EINVAL for a key of another type, *v untouched. */
 WHIRL_API int whirl_runfile_int(const whirl_runfile *rf, whirl_run_key k,

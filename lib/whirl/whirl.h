@@ -24,6 +24,7 @@
 #include <whirl/runfile.h>
 #include <whirl/solution.h>
 #include <whirl/run.h>
+#include <whirl/points.h>
 #include <whirl/auto_constants.h>
 #include <whirl/auto_files.h>
 #endif

@@ -9,6 +9,8 @@
  *  - identical on 1 and 2 threads, and computed in three blocks sharing one
  *    atlas identical to one call (the order the points are computed in does
  *    not matter);
+ *  - the atlas built in steps (rounds in parts, classified in any order,
+ *    entered in order: what MPI ranks do) the same as one call;
  *  - an atlas of a single cell (every cell mixed) classifies no point and
  *    leaves the certified classification;
  *  - bad input.
@@ -129,6 +131,41 @@ int main(void) {
   }
   ok(rc == WHIRL_OK && !memcmp(wb, w2, n * sizeof *wb) && !memcmp(pb, p2, n * sizeof *pb),
      "three blocks with a shared atlas, computed last first: the same classes and periods");
+  /* the same atlas built in steps, as processes build it (drivers/
+   * blocks_mpi.c): each round's seeds in parts of 3, classified last part
+   * first, entered in order; then a round out of order refused */
+  whirl_basins_atlas *as = NULL;
+  options(&o, Om, 1);
+  rc = whirl_basins_atlas_begin(whirl_sfd_fixed(), c.p, n, c.X, whirl_sfd_attractors_list(c.A), c.na,
+                                &o, &as, msg, sizeof msg);
+  int steps_ok = rc == WHIRL_OK && whirl_basins_atlas_rounds(as) == 3;
+  void *parts[256] = {NULL};
+  size_t lens[256] = {0}, seeds = 0;
+  for (size_t r = 0; steps_ok && r < whirl_basins_atlas_rounds(as); ++r) {
+    const size_t m = whirl_basins_atlas_round_seeds(as, r), np = (m + 2) / 3;
+    seeds += m;
+    steps_ok = np <= 256 && whirl_basins_atlas_classify(as, r + 1, 0, 1, &parts[0], &lens[0]) == WHIRL_EINVAL;
+    for (size_t q = np; steps_ok && q-- > 0;)
+      steps_ok = whirl_basins_atlas_classify(as, r, 3 * q, 3 * q + 3 <= m ? 3 : m - 3 * q, &parts[q],
+                                             &lens[q]) == WHIRL_OK;
+    if (steps_ok) steps_ok = whirl_basins_atlas_enter(as, r, (const void *const *)parts, lens, np) == WHIRL_OK;
+    for (size_t q = 0; q < np && q < 256; ++q) free(parts[q]), parts[q] = NULL;
+  }
+  ok(steps_ok && seeds == whirl_basins_atlas_seeds(a) && whirl_basins_atlas_cells(as) == whirl_basins_atlas_cells(a),
+     "built in steps (parts of 3 seeds, last first): the seeds and the %zu cells of one call",
+     whirl_basins_atlas_cells(as));
+  o.atlas = as;
+  o.first = 0;
+  rc = steps_ok ? whirl_basins_compute(whirl_sfd_fixed(), c.p, n, c.X, whirl_sfd_attractors_list(c.A),
+                                       c.na, &o, wb, pb, NULL, msg, sizeof msg) : WHIRL_EINVAL;
+  ok(rc == WHIRL_OK && !memcmp(wb, w2, n * sizeof *wb) && !memcmp(pb, p2, n * sizeof *pb),
+     "with the atlas built in steps: the same classes and periods");
+  const void *none[1] = {NULL};
+  ok(whirl_basins_atlas_enter(as, 0, none, lens, 0) == WHIRL_EINVAL,
+     "a round entered twice refused");
+  whirl_basins_atlas_free(as);
+  o.atlas = a;
+
   o.first = n - 5;
   ok(whirl_basins_compute(whirl_sfd_fixed(), c.p, 10, c.X, whirl_sfd_attractors_list(c.A), c.na, &o, wb,
                           NULL, NULL, msg, sizeof msg) == WHIRL_EINVAL && strstr(msg, "atlas"),
