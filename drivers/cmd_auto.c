@@ -582,9 +582,11 @@ static int insert_switch(auto_job *J, size_t i, size_t at, size_t j, int lab, in
   J->nrun++;
   for (size_t m = at + 1; m < J->nrun; m++)
     if (J->run[m].src >= (long)at) J->run[m].src++;
-  auto_run *r = &J->run[at], *p = &J->run[i];
+  auto_run *r = &J->run[at], *p = &J->run[i]; /* i < at: p did not move */
+  char c[sizeof r->c]; /* r and p are elements of one array (-Wrestrict) */
+  memcpy(c, p->c, sizeof c);
   memset(r, 0, sizeof *r);
-  snprintf(r->c, sizeof r->c, "%s", p->c);
+  memcpy(r->c, c, sizeof c);
   char id[sizeof r->id];
   snprintf(id, sizeof id, "%.300s.bif%d", p->id, k);
   memcpy(r->id, id, sizeof id);
