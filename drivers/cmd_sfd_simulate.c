@@ -141,8 +141,8 @@ int cmd_sfd_simulate(int argc, char **argv) {
       SFD_OPT_FE(p),
       SFD_OPTS_TOL(rtol, atol),
       {"--method", CLI_STRING, &method_name, "M",
-       "integration method: dopri5 (explicit) or bdf (implicit, for stiff runs near the "
-       "housing)", NULL},
+       "integration method: dopri5 (explicit, order 5), dop853 (explicit, order 8: fewer "
+       "steps at tight tolerances) or bdf (implicit, for stiff runs near the housing)", NULL},
       CLI_OPTS_OUT(dir, noplot, quiet)};
   int r = cli_parse(CMD, argc, argv, opts, sizeof opts / sizeof opts[0], &doc);
   if (r) return r == 1 ? 0 : 2;
@@ -167,7 +167,7 @@ int cmd_sfd_simulate(int argc, char **argv) {
   }
   if (sfd_check_tolerances(CMD, rtol, atol)) return 2;
   if (whirl_ode_method_parse(method_name, &method) != WHIRL_OK) {
-    cli_error(CMD, "--method must be dopri5 or bdf (got '%s')", method_name);
+    cli_error(CMD, "--method must be dopri5, dop853 or bdf (got '%s')", method_name);
     return 2;
   }
   if (max_steps < 100) {

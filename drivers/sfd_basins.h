@@ -16,7 +16,8 @@
 typedef struct sb {
   double p[WHIRL_SFD_NPAR];
   const char *vel;
-  int vmode, threads, fixed, noplot, quiet;
+  const char *method_name;   /* --method */
+  int vmode, threads, fixed, noplot, quiet, method;
   size_t npoints, periods, seeds, levels, cells, hits, phases;
   double radius, rtol, atol;
   whirl_sfd_attractors *A;

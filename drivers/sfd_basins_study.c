@@ -66,7 +66,7 @@ static int classify_point(const study *T, size_t i, sb *P, size_t *cnt) {
   }
   whirl_sfd_attractors_options ao;
   whirl_sfd_attractors_options_default(&ao);
-  ao.rtol = P->rtol, ao.atol = P->atol;
+  ao.rtol = P->rtol, ao.atol = P->atol, ao.method = P->method;
   if (whirl_sfd_attractors_find(P->p, &ao, &P->A, msg, sizeof msg) != WHIRL_OK) {
     cli_error(CMD, "study point %zu: %s", i, msg);
     return 2;

@@ -206,6 +206,7 @@ void whirl_sfd_attractors_options_default(whirl_sfd_attractors_options *o) {
   o->search_periods = 600;
   o->qp_tol = 0.01;
   o->qp_confirm = 10;
+  o->method = WHIRL_ODE_DOPRI5;
 }
 
 /* Lyapunov equation AᵀP + PA = −I by its Kronecker form (16 x 16). */
@@ -360,10 +361,11 @@ static int find_cycle(const double *p, whirl_sfd_attractors *a,
   whirl_ode *ode = whirl_ode_alloc(whirl_sfd_fixed(), p);
   if (!ode) return WHIRL_ENOMEM;
   int rc = whirl_ode_set_tolerances(ode, o->rtol, o->atol);
+  if (rc == WHIRL_OK && o->method != WHIRL_ODE_DOPRI5) rc = whirl_ode_set_method(ode, o->method);
   if (rc != WHIRL_OK) {
     whirl_ode_free(ode);
-    WHIRL_ERRMSG(errbuf, errlen, rc, "attractors: bad tolerances %g, %g",
-                 o->rtol, o->atol);
+    WHIRL_ERRMSG(errbuf, errlen, rc, "attractors: bad tolerances %g, %g "
+                 "or integration method %d", o->rtol, o->atol, o->method);
     return rc;
   }
   whirl_basins_options bo;
@@ -372,6 +374,7 @@ static int find_cycle(const double *p, whirl_sfd_attractors *a,
   bo.max_periods = o->search_periods;
   bo.rtol = o->rtol;
   bo.atol = o->atol;
+  bo.method = o->method;
   int found = 0;
   for (size_t s = 0; s < 2 * nstart && !found; ++s) {
     double x0[4] = {starts[s % nstart][0], starts[s % nstart][1], 0, 0};

@@ -273,6 +273,8 @@ int whirl_basins_compute(const whirl_problem *prob, const double *p,
     whirl_ode *ode = whirl_ode_alloc(prob, p);
     int my_status = ode ? WHIRL_OK : WHIRL_ENOMEM;
     if (ode) my_status = whirl_ode_set_tolerances(ode, o->rtol, o->atol);
+    if (ode && my_status == WHIRL_OK && o->method != WHIRL_ODE_DOPRI5)
+      my_status = whirl_ode_set_method(ode, o->method);
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1)
 #endif

@@ -174,6 +174,7 @@ static int classify_level(const whirl_basins_atlas *a, const size_t *idx, size_t
   {
     whirl_ode *ode = whirl_ode_alloc(a->prob, a->p);
     int my = ode ? whirl_ode_set_tolerances(ode, o->rtol, o->atol) : WHIRL_ENOMEM;
+    if (my == WHIRL_OK && o->method != WHIRL_ODE_DOPRI5) my = whirl_ode_set_method(ode, o->method);
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1)
 #endif

@@ -89,7 +89,7 @@ void whirl_ode_rhs_said_(const whirl_ode *o, char *buf, size_t len) {
 }
 
 /* the default minimum step: 16 units in the last place of t */
-static double ulp16(double t) {
+double whirl_ode_ulp16_(double t) {
   const double a = fabs(t);
   return 16.0 * (nextafter(a, INFINITY) - a);
 }
@@ -135,6 +135,7 @@ whirl_ode *whirl_ode_alloc(const whirl_problem *prob, const double *p) {
 void whirl_ode_free(whirl_ode *o) {
   if (o == NULL) return;
   whirl_bdf_free_(o->bdf);
+  whirl_dop853_free_(o->d8);
   free(o->x); /* start of the state block */
   free(o->p);
   free(o);
@@ -232,13 +233,15 @@ int whirl_ode_reset(whirl_ode *o, double t0, const double *x0) {
 }
 
 /* ------------------------------------------------------------------------
- * Starting step (HNW I p. 169, DOPRI5's HINIT) with the max norm of the
- * error test.  k[0] = f(t, x) on entry; uses xs and k[1].  Returns the step
- * magnitude in *h, or a fatal callback status. */
-static int initial_step(whirl_ode *o, double posneg, double span,
-                        double hmax, double *hout) {
+ * Starting step (HNW I p. 169, HINIT of DOPRI5 and DOP853) for a method of
+ * the given order, with the max norm of the error test.  f0 = f(t, x);
+ * uses xs and f1 (n doubles).  Returns the step magnitude in *h, or a
+ * fatal callback status. */
+int whirl_ode_initial_step_(whirl_ode *o, const double *f0, double *f1,
+                            int order, double posneg, double span,
+                            double hmax, double *hout) {
   const size_t n = o->n;
-  const double *x = o->x, *f0 = o->k[0];
+  const double *x = o->x;
   double dnf = 0.0, dny = 0.0;
   for (size_t i = 0; i < n; ++i) {
     const double sk = fmax(o->atol, o->rtol * fabs(x[i]));
@@ -249,7 +252,7 @@ static int initial_step(whirl_ode *o, double posneg, double span,
   h = fmin(fmin(h, hmax), span);
   /* an explicit Euler step, to estimate the second derivative */
   for (size_t i = 0; i < n; ++i) o->xs[i] = x[i] + posneg * h * f0[i];
-  const int r = eval(o, o->t + posneg * h, o->xs, o->k[1]);
+  const int r = eval(o, o->t + posneg * h, o->xs, f1);
   if (r < 0) return r;
   double h1;
   if (r > 0) {
@@ -258,11 +261,11 @@ static int initial_step(whirl_ode *o, double posneg, double span,
     double der2 = 0.0;
     for (size_t i = 0; i < n; ++i) {
       const double sk = fmax(o->atol, o->rtol * fabs(x[i]));
-      der2 = fmax(der2, fabs(o->k[1][i] - f0[i]) / sk);
+      der2 = fmax(der2, fabs(f1[i] - f0[i]) / sk);
     }
     der2 /= h;
     const double der12 = fmax(der2, dnf);
-    h1 = der12 <= 1e-15 ? fmax(1e-6, h * 1e-3) : pow(0.01 / der12, 0.2);
+    h1 = der12 <= 1e-15 ? fmax(1e-6, h * 1e-3) : pow(0.01 / der12, 1.0 / order);
     h1 = fmin(100.0 * h, h1);
   }
   *hout = fmin(h1, hmax);
@@ -272,10 +275,10 @@ static int initial_step(whirl_ode *o, double posneg, double span,
 /* ------------------------------------------------------------------------
  * One step */
 
-/* The right-hand side at the start of the first step (later steps reuse
- * the last stage: first same as last). */
-static int first_rhs(whirl_ode *o) {
-  int r = eval(o, o->t, o->x, o->k[0]);
+/* The right-hand side at the start of the first step into f (later steps
+ * reuse the last stage: first same as last). */
+int whirl_ode_first_rhs_(whirl_ode *o, double *f) {
+  int r = eval(o, o->t, o->x, f);
   if (r < 0)
     return WHIRL_FAIL(o, WHIRL_EUSER,
                       "right-hand side returned %d at t = %.17g", r, o->t);
@@ -376,14 +379,17 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
     return WHIRL_FAIL(o, WHIRL_EINVAL, "t_end %g is not finite", t_end);
   if (t_end == o->t) return WHIRL_DONE;
   if (o->method == WHIRL_ODE_BDF) return whirl_bdf_step_(o, t_end);
+  if (o->method == WHIRL_ODE_DOP853) return whirl_dop853_step_(o, t_end);
 
   const double posneg = t_end > o->t ? 1.0 : -1.0;
   const double hmax = o->h_max > 0.0 ? o->h_max : INFINITY;
   int r;
-  if (!o->have_f && (r = first_rhs(o)) != WHIRL_OK) return r;
+  if (!o->have_f && (r = whirl_ode_first_rhs_(o, o->k[0])) != WHIRL_OK)
+    return r;
   double h = o->h;
   if (!(h > 0.0)) {
-    r = initial_step(o, posneg, fabs(t_end - o->t), hmax, &h);
+    r = whirl_ode_initial_step_(o, o->k[0], o->k[1], 5, posneg,
+                                fabs(t_end - o->t), hmax, &h);
     if (r < 0)
       return WHIRL_FAIL(o, WHIRL_EUSER,
                         "right-hand side returned %d at t = %.17g", r, o->t);
@@ -392,7 +398,7 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
 
   for (;;) {
     const double t = o->t, span = fabs(t_end - t);
-    const double hmin = fmax(o->h_min, ulp16(t));
+    const double hmin = fmax(o->h_min, whirl_ode_ulp16_(t));
     h = fmax(h, fmin(hmin, span));
     /* reach t_end exactly; stretch the step by up to 1% to get there */
     const int last = 1.01 * h >= span;
@@ -530,6 +536,10 @@ static void dense_eval(const whirl_ode *o, double t, double *out) {
     (void)whirl_bdf_dense_(o, t, out); /* inside the step: cannot fail */
     return;
   }
+  if (o->method == WHIRL_ODE_DOP853) { /* prepared by the caller */
+    whirl_dop853_dense_(o, t, out);
+    return;
+  }
   const double th = (t - o->t_prev) / (o->t - o->t_prev), th1 = 1.0 - th;
   const double *rc = o->rc;
   for (size_t i = 0; i < n; ++i)
@@ -537,6 +547,15 @@ static void dense_eval(const whirl_ode *o, double t, double *out) {
              th * (rc[i] +
                    th1 * (rc[n + i] +
                           th * (rc[2 * n + i] + th1 * rc[3 * n + i])));
+}
+
+/* DOP853 computes its dense output's stages on the first request after a
+ * step.  The object is the caller's own (whirl_ode_alloc), so writing to
+ * it through a pointer to const is defined; the state x(t) it describes
+ * does not change, only the work counters and the cached coefficients. */
+static int prepare_dense(const whirl_ode *o) {
+  if (o->method != WHIRL_ODE_DOP853) return WHIRL_OK;
+  return whirl_dop853_prepare_dense_((whirl_ode *)o);
 }
 
 static int in_step(const whirl_ode *o, double t) {
@@ -547,6 +566,8 @@ int whirl_ode_dense(const whirl_ode *o, double t, double *x) {
   if (o == NULL || x == NULL || !o->started || !o->have_step ||
       !in_step(o, t))
     return WHIRL_EINVAL;
+  const int r = prepare_dense(o);
+  if (r != WHIRL_OK) return r;
   dense_eval(o, t, x);
   return WHIRL_OK;
 }
@@ -560,6 +581,8 @@ int whirl_ode_find_event(const whirl_ode *o, whirl_event_fn g, void *data,
   if (o == NULL || g == NULL || t_ev == NULL || x_ev == NULL ||
       !o->started || !o->have_step || isnan(tol_t))
     return WHIRL_EINVAL;
+  const int prep = prepare_dense(o);
+  if (prep != WHIRL_OK) return prep;
   double *const y = x_ev; /* the state at the sample points */
   const double t0 = o->t_prev, h = o->t - o->t_prev;
   enum { NS = 9 };
@@ -584,7 +607,7 @@ int whirl_ode_find_event(const whirl_ode *o, whirl_event_fn g, void *data,
       double lo = tl, glo = gl, hi = ts, ghi = gs;
       int side = 0;
       for (int it = 0; it < 200; ++it) {
-        const double tol = fmax(tol_t, 0.25 * ulp16(fmax(fabs(lo), fabs(hi))));
+        const double tol = fmax(tol_t, 0.25 * whirl_ode_ulp16_(fmax(fabs(lo), fabs(hi))));
         if (fabs(hi - lo) <= tol) break;
         double tc = hi - ghi * (hi - lo) / (ghi - glo);
         if (!(tc > fmin(lo, hi) && tc < fmax(lo, hi)))

@@ -1,5 +1,6 @@
 /* lib/ode/method.c — the choice of the integration method of a whirl_ode
- * object (whirl/ode.h): explicit DOPRI5 (dopri.c) or BDF by CVODE (bdf.c),
+ * object (whirl/ode.h): explicit DOPRI5 (dopri.c), explicit DOP853
+ * (dop853.c) or BDF by CVODE (bdf.c),
  * and the methods' names for command lines and run files.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <stdlib.h>
@@ -9,7 +10,7 @@
 
 #include "ode_impl.h"
 
-static const char *const names[] = {"dopri5", "bdf"};
+static const char *const names[] = {"dopri5", "bdf", "dop853"};
 enum { NMETHODS = sizeof names / sizeof names[0] };
 
 const char *whirl_ode_method_name(int method) {

@@ -10,7 +10,8 @@
 
 #include "util/errmsg_impl.h"
 
-struct whirl_bdf; /* CVODE's state, bdf.c */
+struct whirl_bdf;    /* CVODE's state, bdf.c */
+struct whirl_dop853; /* DOP853's stages and dense output, dop853.c */
 
 struct whirl_ode {
   whirl_problem prob; /* copy; data borrowed */
@@ -21,6 +22,7 @@ struct whirl_ode {
   size_t max_steps;
   int method;            /* whirl_ode_method in force */
   struct whirl_bdf *bdf; /* NULL until BDF or a sparse Jacobian is set */
+  struct whirl_dop853 *d8; /* NULL until a DOP853 step */
 
   int started;       /* reset was called */
   int have_step;     /* a step was accepted since the reset: dense valid */
@@ -50,6 +52,26 @@ char *whirl_ode_errbuf_(whirl_ode *o);
 int whirl_ode_eval_(whirl_ode *o, double t, const double *y, double *f);
 /* "right-hand side returned 1" / "... NaN or Inf": what it said last. */
 void whirl_ode_rhs_said_(const whirl_ode *o, char *buf, size_t len);
+
+/* Shared by the explicit methods (dopri.c): 16 ulps of t, the default
+ * minimum step; f = f(t, x) at the start (sets have_f; an error message
+ * when f cannot be evaluated there); the starting step of HNW I p. 169 for
+ * a method of the given order (f0 = f(t, x), f1 scratch). */
+double whirl_ode_ulp16_(double t);
+int whirl_ode_first_rhs_(whirl_ode *o, double *f);
+int whirl_ode_initial_step_(whirl_ode *o, const double *f0, double *f1,
+                            int order, double posneg, double span,
+                            double hmax, double *hout);
+
+/* The DOP853 back end (dop853.c), called by dopri.c's entry points when
+ * o->method is WHIRL_ODE_DOP853: one step towards t_end (o->t != t_end,
+ * checked); the dense output's stages of the last step (once a step; a
+ * status and message if the right-hand side fails there); x(t) on the
+ * last step after that (t inside it, checked); free (accepts NULL). */
+int whirl_dop853_step_(whirl_ode *o, double t_end);
+int whirl_dop853_prepare_dense_(whirl_ode *o);
+void whirl_dop853_dense_(const whirl_ode *o, double t, double *out);
+void whirl_dop853_free_(struct whirl_dop853 *d);
 
 /* The BDF back end (bdf.c), called by dopri.c's entry points when
  * o->method is WHIRL_ODE_BDF.  reset: (re)start CVODE at o->t, o->x with

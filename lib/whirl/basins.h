@@ -104,6 +104,9 @@ typedef struct whirl_basins_options {
                            whirl_basins_compute builds its own over the
                            points it is given when seed_stride > 0 */
   size_t first;         /* with atlas: index in the atlas's list of x0[0] */
+  int method;           /* whirl_ode_method of the trajectories: default
+                           WHIRL_ODE_DOPRI5 (0); WHIRL_ODE_DOP853 takes
+                           3–6 times fewer evaluations at rtol 1e-12 */
 } whirl_basins_options;
 
 WHIRL_API void whirl_basins_options_default(whirl_basins_options *o);

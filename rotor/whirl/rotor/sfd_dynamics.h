@@ -79,6 +79,7 @@ typedef struct whirl_sfd_attractors_options {
   size_t search_periods;   /* per starting state, default 600 */
   double qp_tol;           /* default 0.01 (of each coordinate's range) */
   size_t qp_confirm;       /* default 10 */
+  int method;              /* whirl_ode_method, default WHIRL_ODE_DOPRI5 */
 } whirl_sfd_attractors_options;
 
 WHIRL_API void whirl_sfd_attractors_options_default(
