@@ -4,7 +4,7 @@
 # at Omega = 8.7 (quasiperiodic, f2 against an independent estimate from the
 # Poincare points' rotation), a short sweep whose circular orbits agree with
 # eq. 15, a small basin run whose counts add up, and --method bdf near the
-# housing against DOPRI5.
+# housing against DOPRI5, DOP853 against DOPRI5 on a basin.
 # SPDX-License-Identifier: BSD-3-Clause
 set -u
 WHIRL="${top_builddir:-.}/drivers/whirl"
@@ -118,12 +118,23 @@ ok $? "basins.tsv with the atlas identical on 1 and 2 threads"
 paste "$tmp/atl-0/basins.tsv" "$tmp/atl-2/basins.tsv" | awk -F'\t' 'NR > 2 { n++; d += $5 != $11 }
   END { exit !(n > 250 && 100 * d <= n) }'
 ok $? "the atlas's classes = the certified route's on all but at most 1 % of the states"
+# --method of basins: DOP853 (the default) and DOPRI5 classify every state
+# alike (the certified route: what a state does, not how it is integrated)
+"$WHIRL" sfd basins --omega 1.78 --velocities circular --points 300 --rtol 1e-10 --atol 1e-13 \
+  --seeds 0 --method dopri5 --no-plot --quiet --out "$tmp/atl-d5" > /dev/null 2>&1
+ok $? "basins --method dopri5 runs"
+grep -q "method=dop853" "$tmp/atl-0/basins.tsv" && grep -q "method=dopri5" "$tmp/atl-d5/basins.tsv"
+ok $? "basins.tsv's comment line names the method"
+paste "$tmp/atl-0/basins.tsv" "$tmp/atl-d5/basins.tsv" | awk -F'\t' 'NR > 2 { n++; d += $5 != $11 }
+  END { exit !(n > 250 && d == 0) }'
+ok $? "DOP853 and DOPRI5: the same class for every state"
+check_bad basins "method must be dop853 or dopri5" --omega 1.78 --method bdf
 check_bad basins "levels" --omega 1.78 --levels 9
 check_bad basins "phases" --omega 1.78 --phases 0
 
 # --method: BDF (CVODE) near the housing (F_E = 0.995, eps ~ 0.99, stiff)
 # against DOPRI5 at the same settings: the same final state
-check_bad simulate "method must be dopri5 or bdf" --omega 2 --method rk4
+check_bad simulate "method must be dopri5, dop853 or bdf" --omega 2 --method rk4
 for m in dopri5 bdf; do
   "$WHIRL" sfd simulate --omega 1 --delta 0.5 --fe 0.995 --z0 0.99 --periods 20 --samples 16 \
     --rtol 1e-9 --atol 1e-12 --method $m --no-plot --out "$tmp/stiff-$m" > /dev/null 2> "$tmp/stiff-$m.err"
