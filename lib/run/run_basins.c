@@ -200,6 +200,7 @@ int run_basins_setup(run_ctx *R) {
   J->o.max_periods = (size_t)s->basin_periods;
   J->o.rtol = 1e-9;
   J->o.atol = 1e-12;
+  J->o.method = s->basin_method;
   if (s->basin_seeds > 0) { /* the atlas, as whirl sfd basins has it */
     J->o.seed_stride = (size_t)s->basin_seeds;
     J->o.atlas_levels = 4;

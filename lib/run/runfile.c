@@ -15,6 +15,8 @@
 #include <string.h>
 #include <strings.h>
 
+#include <whirl/ode.h>
+
 #include "runfile_impl.h"
 
 /* ---- the key table ----------------------------------------------------- */
@@ -84,6 +86,7 @@ static const key_def keys[] = {
     {WHIRL_RK_DAT, "DAT", "start_data", NULL, K_STRING},
     {WHIRL_RK_POINTS, "POINTS", "study_points", NULL, K_STRING},
     {WHIRL_RK_BASIN_SEEDS, "BASIN_SEEDS", "basin_seeds", NULL, K_INT},
+    {WHIRL_RK_BASIN_METHOD, "BASIN_METHOD", "basin_method", NULL, K_METHOD},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -158,6 +161,7 @@ static void set_defaults(whirl_run_settings *s) {
   s->jac = 1;
   s->grid[0] = s->grid[1] = 41;
   s->basin_periods = 500;
+  s->basin_method = WHIRL_ODE_DOP853;
   s->basin_tol = 1e-3;
   s->discover_starts = 40;
   s->discover_seed = 1;
@@ -601,6 +605,7 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_JAC: return &s->jac;
     case WHIRL_RK_BASIN_PERIODS: return &s->basin_periods;
     case WHIRL_RK_BASIN_SEEDS: return &s->basin_seeds;
+    case WHIRL_RK_BASIN_METHOD: return &s->basin_method;
     case WHIRL_RK_DISCOVER_STARTS: return &s->discover_starts;
     case WHIRL_RK_DISCOVER_SEED: return &s->discover_seed;
     default: return NULL;
@@ -706,6 +711,13 @@ static int set_method(whirl_runfile *rf, const key_def *d, const char *where) {
   if (v->kind != V_SCALAR)
     return fail(rf, where, "%s: expected one word", kn);
   const char *t = v->it[0].text;
+  if (d->key == WHIRL_RK_BASIN_METHOD) { /* the explicit integrators */
+    if (strcasecmp(t, "dop853") && strcasecmp(t, "dopri5"))
+      return fail(rf, where, "%s: '%s' is not an integrator (dop853 or dopri5)",
+                  kn, show(t, ITEMLEN, shown, sizeof shown));
+    s->basin_method = !strcasecmp(t, "dop853") ? WHIRL_ODE_DOP853 : WHIRL_ODE_DOPRI5;
+    return WHIRL_OK;
+  }
   if (!strcasecmp(t, "colloc") || !strcasecmp(t, "collocation"))
     s->method = WHIRL_METHOD_COLLOC;
   else if (!strcasecmp(t, "hbm") || !strcasecmp(t, "harmonic_balance"))

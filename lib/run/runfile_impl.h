@@ -47,6 +47,7 @@ typedef struct whirl_run_settings {
   size_t nattractors;
   double basin_tol;             /* basins: capture radius (1e-3) */
   int basin_seeds;              /* basins: atlas seed stride (0: none) */
+  int basin_method;             /* basins: whirl_ode_method (DOP853) */
   double discover[WHIRL_RUN_MAXITEMS]; /* discovery: sample values of ICP(1) */
   size_t ndiscover;             /* 0: no discovery */
   whirl_run_range box[WHIRL_RUN_MAXITEMS]; /* discovery: box of random starts */

@@ -47,6 +47,7 @@ typedef enum whirl_run_key {
   WHIRL_RK_IPLT, /* AUTO's measure in the L2-NORM column */
   WHIRL_RK_DAT,  /* a start orbit from a data file (AUTO's dat) */
   WHIRL_RK_POINTS, WHIRL_RK_BASIN_SEEDS,
+  WHIRL_RK_BASIN_METHOD, /* the integrator of basins (whirl_ode_method) */
   WHIRL_RK_IGNORED, /* AUTO keys whirl accepts and ignores (ITMX, NWTN, ...) */
   WHIRL_RK_COUNT
 } whirl_run_key;
@@ -103,7 +104,8 @@ WHIRL_API int whirl_runfile_check(whirl_runfile *rf);
 /* The value of a key, given or its default (doc/run-files.md).
  * Integer keys — NDIM (0: not given), IPS, METHOD, ILP, ISP, ISW, IRS (the
  * label, or the count with a type), NTST, NCOL, IAD, NHB, OVERSAMPLING,
- * NMX, NPR, ITNW, JAC, BASIN_PERIODS, BASIN_SEEDS — through _int; real keys — DS, DSMIN,
+ * NMX, NPR, ITNW, JAC, BASIN_PERIODS, BASIN_SEEDS, BASIN_METHOD (a
+ * whirl_ode_method) — through _int; real keys — DS, DSMIN,
  * DSMAX, RL0, RL1, A0, A1, EPSL, EPSU, EPSS, BASIN_TOL — through _real;
  * WHIRL_EINVAL for a key of another type, *v untouched. */
 WHIRL_API int whirl_runfile_int(const whirl_runfile *rf, whirl_run_key k,

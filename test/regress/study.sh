@@ -109,6 +109,11 @@ ok $? "basins, one process: $(head -c 200 b1.err)"
 [ "$(grep -c . b1/basins.tsv)" -eq 122 ] && [ "$(grep -c '^$' b1/basins.tsv)" -eq 11 ] && [ -s b1/basins.png ] &&
   grep -q "attractor LAB 2: .*% of the grid" b1.txt
 ok $? "basins.tsv: a header, 121 points, a blank line after each grid line; basins.png; the shares"
+# the integrator (BASIN_METHOD): DOP853, the default, and DOPRI5 capture
+# every state by the same attractor
+"$WHIRL" run basins.whirl --BASIN_GRID=11 --BASIN_METHOD=dopri5 --OUT=b5 --quiet > /dev/null 2>&1
+paste b1/basins.tsv b5/basins.tsv | awk -F'\t' 'NR > 1 && $1 != "" { n++; d += $3 != $7 } END { exit !(n == 121 && d == 0) }'
+ok $? "basins with BASIN_METHOD = dopri5: the same attractor at all 121 points"
 for i in 1 2 3; do "$WHIRL" run basins.whirl --BASIN_GRID=11 --OUT=bc --chunk=$i/3 --quiet; done
 "$WHIRL" run basins.whirl --BASIN_GRID=11 --OUT=bc --merge-chunks=3 --quiet
 cmp -s b1/basins.tsv bc/basins.tsv && [ -s bc/basins.png ]

@@ -88,6 +88,29 @@ static void check_error(void) {
   whirl_runfile_free(rf);
 }
 
+/* BASIN_METHOD: DOP853 by default, dopri5 when given, others refused */
+static void check_basin_method(void) {
+  whirl_runfile *rf = whirl_runfile_alloc();
+  int v = -1;
+  const char def[] = "model = sfd\n", d5[] = "model = sfd\nBASIN_METHOD = dopri5\n",
+             bad[] = "model = sfd\nBASIN_METHOD = rk4\n";
+  int good = whirl_runfile_parse(rf, "m.whirl", def, sizeof def - 1) == WHIRL_OK &&
+             whirl_runfile_int(rf, WHIRL_RK_BASIN_METHOD, &v) == WHIRL_OK;
+  ok(good && v == WHIRL_ODE_DOP853, "BASIN_METHOD defaults to dop853 (%d)", v);
+  whirl_runfile_free(rf);
+  rf = whirl_runfile_alloc();
+  good = whirl_runfile_parse(rf, "m.whirl", d5, sizeof d5 - 1) == WHIRL_OK &&
+         whirl_runfile_int(rf, WHIRL_RK_BASIN_METHOD, &v) == WHIRL_OK;
+  ok(good && v == WHIRL_ODE_DOPRI5, "BASIN_METHOD = dopri5 (%d)", v);
+  whirl_runfile_free(rf);
+  rf = whirl_runfile_alloc();
+  ok(whirl_runfile_parse(rf, "m.whirl", bad, sizeof bad - 1) == WHIRL_EINVAL &&
+         strstr(whirl_runfile_errmsg(rf), "m.whirl:2: ") == whirl_runfile_errmsg(rf) &&
+         strstr(whirl_runfile_errmsg(rf), "dop853 or dopri5") != NULL,
+     "BASIN_METHOD = rk4 refused: %s", whirl_runfile_errmsg(rf));
+  whirl_runfile_free(rf);
+}
+
 int main(void) {
   whirl_runfile *rf = whirl_runfile_alloc();
   ok(rf != NULL, "alloc");
@@ -97,5 +120,6 @@ int main(void) {
   check_lists(rf);
   whirl_runfile_free(rf);
   check_error();
+  check_basin_method();
   return done_testing();
 }
