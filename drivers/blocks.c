@@ -424,12 +424,28 @@ static void finalize_at_exit(void) {
 }
 #endif
 
+#ifdef WHIRL_HAVE_MPI
+/* Started by an MPI launcher (mpirun/mpiexec of Open MPI or MPICH, srun):
+ * the variables their process managers give each rank.  Without one the
+ * process is alone and MPI is not initialized at all: a singleton MPI_Init
+ * costs 0.2-0.45 s (Open MPI probing its transports), more than a small
+ * run's whole computation. */
+static int launched_by_mpi(void) {
+  static const char *const vars[] = {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK",
+                                     "PMI_SIZE", "MPI_LOCALNRANKS"};
+  for (size_t i = 0; i < sizeof vars / sizeof vars[0]; i++)
+    if (getenv(vars[i]) != NULL) return 1;
+  return 0;
+}
+#endif
+
 void blocks_processes(int *argc, char ***argv, int *rank, int *nranks) {
   *rank = 0;
   *nranks = 1;
 #ifdef WHIRL_HAVE_MPI
   int init = 0;
   MPI_Initialized(&init);
+  if (!init && !launched_by_mpi()) return;
   if (!init) {
     MPI_Init(argc, argv);
     atexit(finalize_at_exit);
@@ -446,8 +462,9 @@ void blocks_processes_end(void) {
 #ifdef WHIRL_HAVE_MPI
   /* the ranks part here (a rank that returns first must not exit while
    * others still call it in) and MPI is finalized at exit */
-  int fin = 0;
+  int init = 0, fin = 0;
+  MPI_Initialized(&init);
   MPI_Finalized(&fin);
-  if (!fin) MPI_Barrier(MPI_COMM_WORLD);
+  if (init && !fin) MPI_Barrier(MPI_COMM_WORLD);
 #endif
 }

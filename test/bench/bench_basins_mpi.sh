@@ -11,12 +11,15 @@
 # atlas's rounds are broadcast).  Needs a build --with-mpi.  Not a test.
 #   sh test/bench/bench_basins_mpi.sh [REPEAT [CASES]]
 #   CASES: "1.78:zero 8.5327:circular" (the default: these and 1.715:circular)
+#   POINTS=N: about N initial states instead of the paper's 8005
 # SPDX-License-Identifier: BSD-3-Clause
 set -u
 WHIRL=${WHIRL:-${top_builddir:-.}/drivers/whirl}
 case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
 repeat=${1:-3}
 cases=${2:-"1.78:zero 1.715:circular 8.5327:circular"}
+here=$(cd "$(dirname "$0")" && pwd) # before the cd below: $0 may be relative
+pts=${POINTS:+--points $POINTS}
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-bench.XXXXXX") || exit 1
 trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
@@ -25,7 +28,7 @@ echo "# $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut
 printf 'omega\tvelocities\trun\tserial_s\tmpi2_s\tspeedup\tefficiency\tutilization\tload\n'
 for c in $cases; do
   om=${c%%:*}; vel=${c##*:}
-  base="sfd basins --omega $om --velocities $vel --threads 1 --quiet --no-plot"
+  base="sfd basins --omega $om --velocities $vel $pts --threads 1 --quiet --no-plot"
   for r in $(seq 1 "$repeat"); do
     rm -rf s m
     t0=$(now); WHIRL_BLOCK_TIMES=s.times /usr/bin/time -f '%U %S' -o s.cpu "$WHIRL" $base --out s > /dev/null || exit 1
@@ -46,7 +49,6 @@ sort -t '	' -k8 -g times.tsv | awk -F '\t' '{ e[NR] = $8 } END { m = int((NR + 1
 # broadcast, the table's rows sent), and the schedule replayed on cores of
 # their own (blocks_model.awk) for 2 and 4 ranks, with the CPU seconds
 # outside the blocks (the process's, less its blocks') on every rank
-here=$(cd "$(dirname "$0")" && pwd)
 for c in $cases; do
   om=${c%%:*}; vel=${c##*:}
   awk -F '\t' -v c="$om $vel" 'NR > 1 { n[$1]++; s[$1] += $7; if ($7 > mx[$1]) mx[$1] = $7; by[$1] += $6 }
