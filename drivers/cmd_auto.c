@@ -47,7 +47,7 @@ typedef struct auto_run {
 
 typedef struct auto_job {
   const char *dir, *name, *out;
-  int quiet;
+  int quiet, plot; /* --quiet; --plot: each run's diagram */
   auto_run run[MAXALL];
   size_t nrun;
   size_t npar;
@@ -58,7 +58,7 @@ typedef struct auto_job {
 
 static void usage(FILE *f) {
   fprintf(f,
-          "usage: whirl auto DIR [NAME] [--runs=C1,C2@LABEL,...] [--out=OUT] [--quiet]\n"
+          "usage: whirl auto DIR [NAME] [--runs=C1,C2@LABEL,...] [--out=OUT] [--plot] [--quiet]\n"
           "\n"
           "Run an AUTO-07p problem from its own files: the constants files\n"
           "DIR/c.NAME.1, c.NAME.2, ... (or DIR/c.NAME alone) in order, the equations\n"
@@ -68,6 +68,7 @@ static void usage(FILE *f) {
           "A run whose IRS is not 0 restarts from the run before it.\n"
           "Output (default NAME.out): NAME.so, and for each run C its run file\n"
           "C.whirl and output directory C.out (branches.tsv, solutions, run.log).\n"
+          "Like AUTO, no pictures unless --plot (then C.out/diagram.png).\n"
           "doc/auto-files.md.\n");
 }
 
@@ -538,8 +539,11 @@ static int run_one(auto_job *J, size_t i) {
   }
   if (!J->quiet) printf("== %s (c.%s)\n", J->run[i].id, J->run[i].c);
   fflush(stdout);
-  char *argv[] = {"run", path, J->quiet ? "--quiet" : NULL, NULL};
-  int st = cmd_run(J->quiet ? 3 : 2, argv);
+  char *argv[5] = {"run", path, NULL, NULL, NULL};
+  int argc = 2;
+  if (!J->plot) argv[argc++] = "--no-plot";
+  if (J->quiet) argv[argc++] = "--quiet";
+  int st = cmd_run(argc, argv);
   char tsv[4400];
   snprintf(tsv, sizeof tsv, "%s/%s.out/branches.tsv", J->out, J->run[i].id);
   if (st != 2 && access(tsv, R_OK) == 0 && write_auto_files(J, i) && !st) st = 1;
@@ -698,6 +702,7 @@ static int parse_args(auto_job *J, int argc, char **argv, const char **runs) {
       return -1;
     }
     if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) J->quiet = 1;
+    else if (!strcmp(a, "--plot")) J->plot = 1;
     else if (!strncmp(a, "--out=", 6) && a[6]) J->out = a + 6;
     else if (!strncmp(a, "--runs=", 7) && a[7]) *runs = a + 7;
     else if (a[0] == '-' || npos == 2) {

@@ -21,7 +21,7 @@
 
 static void usage(FILE *f) {
   fprintf(f,
-          "usage: whirl run FILE [--KEY=value ...] [--format=F] [--quiet]\n"
+          "usage: whirl run FILE [--KEY=value ...] [--format=F] [--no-plot] [--quiet]\n"
           "\n"
           "Run an AUTO-style run file: equilibria (IPS = 1), periodic orbits\n"
           "(IPS = 2, METHOD = colloc | hbm), branch switching and fold/Hopf\n"
@@ -40,7 +40,8 @@ static void usage(FILE *f) {
           "  --chunk=I/N        the I-th of N parts, into OUT.chunk-I-of-N/\n"
           "  --merge-chunks=N   join the N parts into OUT\n"
           "\n"
-          "  --format=F         the picture as png (default), pdf or svg\n");
+          "  --format=F         the picture as png (default), pdf or svg\n"
+          "  --no-plot          no picture (nor its gnuplot script)\n");
 }
 
 /* "--NMX 5": an override written with a blank for '=' would take its value
@@ -58,7 +59,7 @@ static int override_without_eq(int argc, char **argv, int i) {
 
 typedef struct run_io_ctx {
   cli_outdir od;
-  int quiet;
+  int quiet, no_plot;
   cli_progress progress;
 } run_io_ctx;
 
@@ -106,10 +107,11 @@ static int study_option(const char *a, study_opts *so, size_t *merge, int *bad) 
   return 0;
 }
 
-static int parse_args(int argc, char **argv, const char **file, int *quiet,
+static int parse_args(int argc, char **argv, const char **file, int *quiet, int *no_plot,
                       const char **ov, size_t *nov, study_opts *so, size_t *merge) {
   *file = NULL;
   *nov = 0;
+  *no_plot = 0;
   for (int i = 1; i < argc; i++) {
     int bad = 0;
     if (study_option(argv[i], so, merge, &bad)) {
@@ -122,6 +124,10 @@ static int parse_args(int argc, char **argv, const char **file, int *quiet,
     }
     if (!strcmp(argv[i], "--quiet") || !strcmp(argv[i], "-q")) {
       *quiet = 1;
+      continue;
+    }
+    if (!strcmp(argv[i], "--no-plot")) {
+      *no_plot = 1;
       continue;
     }
     if (!strncmp(argv[i], "--format=", 9)) { /* a picture option, not a key */
@@ -152,11 +158,12 @@ static int parse_args(int argc, char **argv, const char **file, int *quiet,
  * failed, the rest kept; or the commit failed). */
 static int finish_output(run_io_ctx *c, const whirl_run *r) {
   const char *pic = NULL;
-  if (run_write_plot(&c->od, r, &pic)) {
+  if (!c->no_plot && run_write_plot(&c->od, r, &pic)) {
     cli_outdir_abort(&c->od);
     return 1;
   }
-  const int pic_failed = cli_outdir_plot(&c->od, pic) != 0 || cli_pictures_skipped();
+  const int pic_failed =
+      c->no_plot || cli_outdir_plot(&c->od, pic) != 0 || cli_pictures_skipped();
   if (cli_outdir_commit(&c->od)) return 1;
   const int basins = whirl_run_plot_info(r)->basins;
   if (!c->quiet)
@@ -164,7 +171,7 @@ static int finish_output(run_io_ctx *c, const whirl_run *r) {
            basins ? "basins.tsv, run.log" : "branches.tsv, solutions, run.log",
            pic_failed ? "" : basins ? ", basins." : ", diagram.",
            pic_failed ? "" : cli_picture_format);
-  return pic_failed && !cli_pictures_skipped();
+  return pic_failed && !c->no_plot && !cli_pictures_skipped();
 }
 
 /* A study: its points through run_study.c; 0, 1 or 2. */
@@ -198,7 +205,7 @@ static int cmd_run_ranked(int argc, char **argv, int rank, int nranks) {
   memset(&c, 0, sizeof c);
   memset(&so, 0, sizeof so);
   if (!ov) return 1;
-  int status = parse_args(argc, argv, &file, &c.quiet, ov, &nov, &so, &merge);
+  int status = parse_args(argc, argv, &file, &c.quiet, &c.no_plot, ov, &nov, &so, &merge);
   if (status) {
     free(ov);
     return status < 0 ? 0 : status;
@@ -218,6 +225,7 @@ static int cmd_run_ranked(int argc, char **argv, int rank, int nranks) {
   whirl_run *r = whirl_run_alloc(models, &io);
   status = r ? whirl_run_load(r, file, ov, nov) : 1;
   so.file = file, so.ov = ov, so.nov = nov, so.quiet = c.quiet;
+  so.no_plot = c.no_plot;
   if (status == 0 && whirl_run_rows(r) > 0) { /* a study, or basins */
     status = run_study_of(r, &so, merge, rank, nranks);
     goto done;

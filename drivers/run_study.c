@@ -74,7 +74,7 @@ static int finish(void *ctx, cli_outdir *od, const blocks_result *res) {
   }
   if (!bad && B > 1 && res->whole) { /* basins, whole */
     whirl_run_rows_finish(S->r, (const char *const *)res->blk, res->nblocks);
-    if (run_write_plot(od, S->r, &pic)) bad = 1;
+    if (!S->o->no_plot && run_write_plot(od, S->r, &pic)) bad = 1;
   }
   if (bad) {
     cli_outdir_abort(od);
@@ -83,7 +83,7 @@ static int finish(void *ctx, cli_outdir *od, const blocks_result *res) {
   const int pic_failed = pic && cli_outdir_plot(od, pic) != 0;
   if (cli_outdir_commit(od)) return 1;
   const char *what = B > 1 ? "grid lines" : "points";
-  const int shown = B > 1 && res->whole && !cli_pictures_skipped();
+  const int shown = B > 1 && res->whole && pic && !cli_pictures_skipped();
   if (S->o->quiet) return pic_failed;
   if (res->chunks)
     printf("%zu %s from %zu chunks; wrote %s/ (%s, run.log)\n", res->nblocks, what, res->chunks,

@@ -13,7 +13,7 @@ typedef struct study_opts {
   const char *const *ov;     /* its overrides */
   size_t nov;
   size_t chunk, chunks;      /* --chunk=I/N (chunks 0: the whole study) */
-  int quiet;
+  int quiet, no_plot;         /* --quiet, --no-plot */
 } study_opts;
 
 /* The table of r (whirl_run_rows > 0: a study or basins), this process being rank of

@@ -394,9 +394,49 @@ static int write_s_block(FILE *f, const run *R, const whirl_solution *S, const r
   return ferror(f) ? WHIRL_EIO : WHIRL_OK;
 }
 
-static int write_s(FILE *f, const run *R, char *msg, size_t len) {
-  char path[4200];
-  snprintf(path, sizeof path, "%s/solutions", R->o->rundir);
+/* The s-file in one pass over the solutions file (whirl_solution_each):
+ * its labels are those of the table's labelled rows in the same order (a
+ * run writes both as it goes; a block of no row, of a smaller label than
+ * the next row's, is skipped), checked first; otherwise each label is
+ * looked up on its own (write_s_by_label), a pass over the file each. */
+typedef struct s_pass {
+  const run *R;
+  FILE *f;
+  size_t next; /* the table row to match */
+  int write;   /* 0: only check the order */
+  int rc;
+} s_pass;
+
+static int s_pass_block(const whirl_solution *S, void *data) {
+  s_pass *P = data;
+  const run *R = P->R;
+  while (P->next < R->t.n && R->t.r[P->next].lab <= 0) P->next++;
+  /* a block before the next labelled row's has no row (the start of a
+   * restart, whose label AUTO does not repeat): skipped */
+  if (P->next < R->t.n && S->label < R->t.r[P->next].lab) return 0;
+  if (P->next >= R->t.n || R->t.r[P->next].lab != S->label) return 1; /* another order */
+  const row *r = &R->t.r[P->next++];
+  if (P->write && S->kind != WHIRL_SOL_HBM && (P->rc = write_s_block(P->f, R, S, r))) return 2;
+  return 0;
+}
+
+static int s_pass_run(s_pass *P, const char *path, char *msg, size_t len) {
+  FILE *in = fopen(path, "r");
+  if (!in) {
+    snprintf(msg, len, "%s: cannot open", path);
+    return -1;
+  }
+  P->next = 0;
+  int rc = whirl_solution_each(in, path, s_pass_block, P, msg, len);
+  fclose(in);
+  if (rc == 0) { /* every labelled row had its block */
+    while (P->next < P->R->t.n && P->R->t.r[P->next].lab <= 0) P->next++;
+    if (P->next < P->R->t.n) rc = 1;
+  }
+  return rc;
+}
+
+static int write_s_by_label(FILE *f, const run *R, const char *path, char *msg, size_t len) {
   for (size_t i = 0; i < R->t.n; i++) {
     const row *r = &R->t.r[i];
     if (r->lab <= 0) continue;
@@ -415,6 +455,19 @@ static int write_s(FILE *f, const run *R, char *msg, size_t len) {
     if (rc) return rc;
   }
   return WHIRL_OK;
+}
+
+static int write_s(FILE *f, const run *R, char *msg, size_t len) {
+  char path[4200];
+  snprintf(path, sizeof path, "%s/solutions", R->o->rundir);
+  s_pass P = {R, f, 0, 0, WHIRL_OK};
+  int rc = s_pass_run(&P, path, msg, len);
+  if (rc < 0) return WHIRL_EINVAL;
+  if (rc > 0) return write_s_by_label(f, R, path, msg, len);
+  P.write = 1;
+  rc = s_pass_run(&P, path, msg, len);
+  if (rc < 0) return WHIRL_EINVAL;
+  return rc == 2 ? P.rc : rc ? WHIRL_EINVAL : WHIRL_OK;
 }
 
 int whirl_auto_write_files(const whirl_auto_output *o, FILE *b, FILE *s, FILE *d,

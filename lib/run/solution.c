@@ -365,6 +365,38 @@ done:
   return rc;
 }
 
+int whirl_solution_each(FILE *f, const char *path,
+                        int (*fn)(const whirl_solution *s, void *data), void *data,
+                        char *msg, size_t len) {
+  if (len) msg[0] = '\0';
+  reader r = {f, path, 0, NULL, 0, msg, len};
+  char model[256];
+  size_t npar = 0;
+  int rc = -1;
+  if (rd_header(&r, model, sizeof model, &npar)) goto done;
+  for (;;) {
+    whirl_solution s;
+    memset(&s, 0, sizeof s);
+    const int got = rd_line(&r);
+    if (got < 0) goto done;
+    if (got > 0) break;
+    if (rd_lab(&r, npar, &s) || rd_body(&r, &s)) {
+      whirl_solution_free(&s);
+      goto done;
+    }
+    const int stop = fn(&s, data);
+    whirl_solution_free(&s);
+    if (stop) {
+      rc = stop;
+      goto done;
+    }
+  }
+  rc = 0;
+done:
+  free(r.buf);
+  return rc;
+}
+
 int whirl_solution_find(const char *dir, const whirl_solution_shape *want,
                         int label, const char *ty, whirl_solution *out, char *msg,
                         size_t len) {

@@ -75,6 +75,15 @@ WHIRL_API int whirl_solution_read(FILE *f, const char *path,
                                   const char *ty, whirl_solution *out, char *msg,
                                   size_t len);
 
+/* Every solution of the solutions file f called path, in the file's order,
+ * each checked as whirl_solution_read checks it and passed to
+ * fn(s, data) (s is freed after the call; fn's non-zero return stops the
+ * reading and is returned); 0 at the end of the file, or -1 with the
+ * message in msg.  One pass over the file, however many labels. */
+WHIRL_API int whirl_solution_each(FILE *f, const char *path,
+                                  int (*fn)(const whirl_solution *s, void *data),
+                                  void *data, char *msg, size_t len);
+
 /* The same from DIR/solutions. */
 WHIRL_API int whirl_solution_find(const char *dir, const whirl_solution_shape *want,
                                   int label, const char *ty, whirl_solution *out,

@@ -77,6 +77,16 @@ for f in fold.so fold.1.whirl fold.1.out/branches.tsv b.fold.1 s.fold.1 d.fold.1
   [ -s "$o/$f" ] || missing="$missing $f"
 done
 check "$([ -z "$missing" ] && echo 0 || echo 1)" "fold.out: the plug-in, the run files, both outputs and AUTO's files ${missing:+(missing:$missing)}"
+# pictures only when asked, as AUTO: none by default, diagram.png with --plot
+[ ! -e "$o/fold.1.out/diagram.png" ] && [ ! -e "$o/fold.1.out/diagram.gp" ] && [ ! -e "$o/fold.2.out/diagram.png" ]
+check $? "whirl auto draws no picture unless asked (no diagram.png, no diagram.gp)"
+if command -v "${WHIRL_GNUPLOT:-gnuplot}" > /dev/null 2>&1; then
+  (cd "$tmp" && "$WHIRL" auto fold --plot --out=fold-plot --quiet > /dev/null 2>&1) &&
+    [ -s "$tmp/fold-plot/fold.1.out/diagram.png" ] && [ -s "$tmp/fold-plot/fold.2.out/diagram.png" ]
+  check $? "whirl auto --plot: each run's diagram.png"
+else
+  n=$((n + 1)); echo "ok $n # SKIP no gnuplot"
+fi
 
 # b-file rows: BR(1-4) PT(5-10) TY(11-14) LAB(15-19), then 19-wide columns
 # PAR(1) L2-NORM U(1); the labelled ones, with the closed form u = +-sqrt(p)

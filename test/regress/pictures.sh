@@ -99,4 +99,10 @@ ok $? "--format gif: exit 2, nothing written: $(cat "$tmp/badfmt.err")"
 rc=$?
 [ $rc -eq 2 ] && [ ! -e "$tmp/badfmt2" ]
 ok $? "whirl run --format=eps: exit 2, nothing written: $(cat "$tmp/badfmt2.err")"
+# whirl run --no-plot: the tables, no picture and no script
+"$WHIRL" run "$ex/discover/sfd-rotating.whirl" --out="$tmp/noplot" --no-plot > "$tmp/noplot.out" 2>&1
+rc=$?
+[ $rc -eq 0 ] && [ -s "$tmp/noplot/branches.tsv" ] && [ ! -e "$tmp/noplot/diagram.png" ] &&
+  [ ! -e "$tmp/noplot/diagram.gp" ] && ! grep -q "diagram" "$tmp/noplot.out"
+ok $? "whirl run --no-plot: branches.tsv, no diagram.png nor diagram.gp, none claimed (exit $rc)"
 tap_end

@@ -1,0 +1,57 @@
+#!/bin/sh
+# test/bench/auto_demos_speed.sh [AUTO_DEMOS_DIR [REPEAT]] — whole-process
+# time of each AUTO-07p demo that test/auto-demos/run.sh runs (constants
+# files of IPS 1 or 2, equations in Fortran): `whirl auto DEMO` (its
+# default order of the c-files, no pictures, as AUTO) against AUTO-07p
+# itself running the demo's own script NAME.auto (Debian's auto-07p, by
+# /usr/bin/python3: its Python, gfortran compiling the demo, then the runs),
+# each on a fresh scratch copy, paired back to back, REPEAT times (default
+# 3), medians.  Both compile the equations each time (whirl: gfortran into
+# a plug-in).  AUTO's script may run more or fewer constants files than
+# whirl's default order (test/auto-demos/known-gaps says where): the
+# column `runs` gives both.  Prints a table and the totals.  Not a test.
+# SPDX-License-Identifier: BSD-3-Clause
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+top=$(cd "${top_srcdir:-$here/../..}" && pwd)
+demos=${1:-$top/../shared/auto-07p/demos}
+repeat=${2:-3}
+WHIRL=${WHIRL:-${top_builddir:-$top}/drivers/whirl}
+case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
+py=${AUTO_07P_PYTHON:-/usr/lib/auto-07p/python}
+[ -d "$demos" ] || { echo "# no AUTO-07p demos at $demos"; exit 0; }
+[ -f "$py/auto/__main__.py" ] || { echo "# no AUTO-07p at $py (Debian package auto-07p)"; exit 0; }
+demos=$(cd "$demos" && pwd)
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-autospeed.XXXXXX") || exit 1
+trap 'rm -rf "$tmp"' EXIT
+now() { date +%s.%N; }
+median() { sort -g | awk '{ v[NR] = $1 } END { printf "%.3f", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+
+echo "# $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); load $(cut -d' ' -f1-3 /proc/loadavg)"
+printf 'demo\truns_whirl\truns_auto\twhirl_s\tauto_s\tratio\n'
+tw=0 ta=0 faster=0 total=0
+for dir in "$demos"/*/; do
+  d=$(basename "$dir")
+  [ -f "$dir/$d.f90" ] && [ -f "$dir/$d.auto" ] || continue
+  ls "$dir"/c.* > /dev/null 2>&1 || continue
+  cls=$(cat "$dir"/c.* | grep -o 'IPS *= *-\{0,1\}[0-9]*' | grep -o -- '-\{0,1\}[0-9]*$' | sort -u | tr '\n' ' ')
+  case "$cls" in "1 " | "2 " | "1 2 ") ;; *) continue ;; esac
+  : > "$tmp/w" ; : > "$tmp/a"
+  for r in $(seq 1 "$repeat"); do
+    rm -rf "$tmp/wd" "$tmp/ad"; mkdir "$tmp/wd" "$tmp/ad"
+    cp "$dir"/* "$tmp/ad"/ 2> /dev/null
+    t0=$(now); (cd "$tmp/wd" && timeout 300 "$WHIRL" auto "$dir" --quiet --out=o > /dev/null 2>&1)
+    t1=$(now); (cd "$tmp/ad" && timeout 300 /usr/bin/python3 "$py/auto/__main__.py" "$d.auto" > log 2>&1)
+    t2=$(now)
+    echo "$t1 - $t0" | bc -l >> "$tmp/w"; echo "$t2 - $t1" | bc -l >> "$tmp/a"
+  done
+  nw=$(ls "$tmp/wd/o"/*.whirl 2> /dev/null | wc -l)
+  na=$(grep -c "^ *BR *PT *TY" "$tmp/ad/log" 2> /dev/null || echo 0)
+  w=$(median < "$tmp/w"); a=$(median < "$tmp/a")
+  printf '%s\t%s\t%s\t%s\t%s\t%.1f\n' "$d" "$nw" "$na" "$w" "$a" "$(echo "$a / $w" | bc -l)"
+  tw=$(echo "$tw + $w" | bc -l); ta=$(echo "$ta + $a" | bc -l)
+  total=$((total + 1))
+  [ "$(echo "$w < $a" | bc -l)" = 1 ] && faster=$((faster + 1))
+done
+printf '# total: whirl %.2f s, AUTO %.2f s, AUTO / whirl = %.1f; whirl faster on %d of %d demos\n' \
+  "$tw" "$ta" "$(echo "$ta / $tw" | bc -l)" "$faster" "$total"
