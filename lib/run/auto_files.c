@@ -4,7 +4,7 @@
  * manual, ch. "Output files") and as its Python reader parseB/parseS takes
  * it: fixed-width integers, ES19.10E3 reals, column names at 19 characters.
  * SPDX-License-Identifier: BSD-3-Clause */
-#define _POSIX_C_SOURCE 200809L /* strtok_r */
+#define _POSIX_C_SOURCE 200809L /* strtok_r, getline */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,15 +17,38 @@
 
 /* x as ES(w).(d)E3: d.ddd...E+eee, right-justified in w. */
 static const char *es(double x, int w, int d, char *buf, size_t len) {
-  char m[64];
+  char m[64], t[40];
   if (x == 0) x = 0; /* no -0 */
-  snprintf(m, sizeof m, "%.*E", d, x);
-  char *e = strchr(m, 'E');
-  int ex = e ? atoi(e + 1) : 0;
-  if (e) *e = 0;
-  char t[40];
-  snprintf(t, sizeof t, "%.24sE%c%03d", m, ex < 0 ? '-' : '+', (ex < 0 ? -ex : ex) % 1000);
-  snprintf(buf, len, "%*.32s", w, t);
+  /* a literal precision where it can be: "%.*E" takes glibc's slower
+   * positional path */
+  const int n = d == 10 ? snprintf(m, sizeof m, "%.10E", x) : snprintf(m, sizeof m, "%.*E", d, x);
+  const char *e = strchr(m, 'E');
+  size_t tl = 0;
+  if (e) { /* the mantissa (at most 24 characters), E, the sign, 3 digits */
+    size_t ml = (size_t)(e - m);
+    if (ml > 24) ml = 24;
+    int ex = atoi(e + 1);
+    memcpy(t, m, ml);
+    tl = ml;
+    t[tl++] = 'E';
+    t[tl++] = ex < 0 ? '-' : '+';
+    ex = (ex < 0 ? -ex : ex) % 1000;
+    t[tl++] = (char)('0' + ex / 100);
+    t[tl++] = (char)('0' + ex / 10 % 10);
+    t[tl++] = (char)('0' + ex % 10);
+  } else { /* inf, nan */
+    tl = n > 0 ? (size_t)n : 0;
+    if (tl > 32) tl = 32;
+    memcpy(t, m, tl);
+  }
+  const size_t pad = w > 0 && (size_t)w > tl ? (size_t)w - tl : 0;
+  if (pad + tl + 1 > len) { /* cannot happen with the callers' buffers */
+    buf[0] = '\0';
+    return buf;
+  }
+  memset(buf, ' ', pad);
+  memcpy(buf + pad, t, tl);
+  buf[pad + tl] = '\0';
   return buf;
 }
 
@@ -397,13 +420,13 @@ static int write_s_block(FILE *f, const run *R, const whirl_solution *S, const r
 /* The s-file in one pass over the solutions file (whirl_solution_each):
  * its labels are those of the table's labelled rows in the same order (a
  * run writes both as it goes; a block of no row, of a smaller label than
- * the next row's, is skipped), checked first; otherwise each label is
- * looked up on its own (write_s_by_label), a pass over the file each. */
+ * the next row's, is skipped), checked first on the LAB lines alone
+ * (s_order); otherwise each label is looked up on its own
+ * (write_s_by_label), a pass over the file each. */
 typedef struct s_pass {
   const run *R;
   FILE *f;
   size_t next; /* the table row to match */
-  int write;   /* 0: only check the order */
   int rc;
 } s_pass;
 
@@ -416,23 +439,35 @@ static int s_pass_block(const whirl_solution *S, void *data) {
   if (P->next < R->t.n && S->label < R->t.r[P->next].lab) return 0;
   if (P->next >= R->t.n || R->t.r[P->next].lab != S->label) return 1; /* another order */
   const row *r = &R->t.r[P->next++];
-  if (P->write && S->kind != WHIRL_SOL_HBM && (P->rc = write_s_block(P->f, R, S, r))) return 2;
+  if (S->kind != WHIRL_SOL_HBM && (P->rc = write_s_block(P->f, R, S, r))) return 2;
   return 0;
 }
 
-static int s_pass_run(s_pass *P, const char *path, char *msg, size_t len) {
+/* The labels of the LAB lines of path, in order, against the table's
+ * labelled rows (blocks of smaller labels than the next row's skipped):
+ * 0 the same order, 1 not, -1 with the message when path cannot be read.
+ * Only the LAB lines are looked at; the write pass checks the blocks. */
+static int s_order(const run *R, const char *path, char *msg, size_t len) {
   FILE *in = fopen(path, "r");
   if (!in) {
     snprintf(msg, len, "%s: cannot open", path);
     return -1;
   }
-  P->next = 0;
-  int rc = whirl_solution_each(in, path, s_pass_block, P, msg, len);
-  fclose(in);
-  if (rc == 0) { /* every labelled row had its block */
-    while (P->next < P->R->t.n && P->R->t.r[P->next].lab <= 0) P->next++;
-    if (P->next < P->R->t.n) rc = 1;
+  char *line = NULL;
+  size_t cap = 0, next = 0;
+  int rc = 0;
+  while (!rc && getline(&line, &cap, in) >= 0) {
+    if (strncmp(line, "LAB ", 4)) continue;
+    const long lab = strtol(line + 4, NULL, 10);
+    while (next < R->t.n && R->t.r[next].lab <= 0) next++;
+    if (next < R->t.n && lab < R->t.r[next].lab) continue;
+    if (next >= R->t.n || R->t.r[next].lab != lab) rc = 1;
+    else next++;
   }
+  while (!rc && next < R->t.n && R->t.r[next].lab <= 0) next++;
+  if (!rc && next < R->t.n) rc = 1;
+  free(line);
+  fclose(in);
   return rc;
 }
 
@@ -460,14 +495,23 @@ static int write_s_by_label(FILE *f, const run *R, const char *path, char *msg, 
 static int write_s(FILE *f, const run *R, char *msg, size_t len) {
   char path[4200];
   snprintf(path, sizeof path, "%s/solutions", R->o->rundir);
-  s_pass P = {R, f, 0, 0, WHIRL_OK};
-  int rc = s_pass_run(&P, path, msg, len);
-  if (rc < 0) return WHIRL_EINVAL;
+  int rc = s_order(R, path, msg, len);
+  if (rc < 0) return WHIRL_EIO;
   if (rc > 0) return write_s_by_label(f, R, path, msg, len);
-  P.write = 1;
-  rc = s_pass_run(&P, path, msg, len);
+  FILE *in = fopen(path, "r");
+  if (!in) {
+    snprintf(msg, len, "%s: cannot open", path);
+    return WHIRL_EIO;
+  }
+  s_pass P = {R, f, 0, WHIRL_OK};
+  rc = whirl_solution_each(in, path, s_pass_block, &P, msg, len);
+  fclose(in);
   if (rc < 0) return WHIRL_EINVAL;
-  return rc == 2 ? P.rc : rc ? WHIRL_EINVAL : WHIRL_OK;
+  if (rc == 1) { /* cannot happen after s_order */
+    snprintf(msg, len, "%s: the labels are not those of the table", path);
+    return WHIRL_EINVAL;
+  }
+  return rc == 2 ? P.rc : WHIRL_OK;
 }
 
 int whirl_auto_write_files(const whirl_auto_output *o, FILE *b, FILE *s, FILE *d,

@@ -200,30 +200,38 @@ static int rd_lab(reader *r, size_t npar, whirl_solution *s) {
   return s->kind == WHIRL_SOL_EQ ? 0 : orbit_size(r, s);
 }
 
-/* The numbers after a tag: exactly want of them, finite, into *v. */
+/* The numbers after a tag: exactly want of them, finite, into *v (one
+ * strtod a number: the values go into *v as they are read, and the count
+ * goes on past want only to say how many there were). */
 static int rd_values(reader *r, const whirl_solution *s, const char *tag,
                      const char *text, size_t want, const char *expect,
                      double **v) {
+  double *out = malloc((want ? want : 1) * sizeof *out);
+  if (!out) return bad(r, "out of memory");
   size_t k = 0;
   char *end, b[72];
   for (const char *p = text;; p = end) {
     while (*p == ' ') p++;
     if (!*p) break;
     double x = strtod(p, &end);
-    if (end == p || (*end && *end != ' '))
+    if (end == p || (*end && *end != ' ')) {
+      free(out);
       return bad(r, "label %d: %s: '%s' is not a number", s->label, tag,
                  shown(p, b));
-    if (!isfinite(x))
+    }
+    if (!isfinite(x)) {
+      free(out);
       return bad(r, "label %d: %s: value %zu is not finite", s->label, tag, k + 1);
+    }
+    if (k < want) out[k] = x;
     k++;
   }
-  if (k != want)
+  if (k != want) {
+    free(out);
     return bad(r, "label %d: %s has %zu values, %s = %zu expected", s->label,
                tag, k, expect, want);
-  *v = malloc((want ? want : 1) * sizeof **v);
-  if (!*v) return bad(r, "out of memory");
-  const char *p = text;
-  for (size_t i = 0; i < want; i++, p = end) (*v)[i] = strtod(p, &end);
+  }
+  *v = out;
   return 0;
 }
 
