@@ -269,74 +269,23 @@ static void accept_step(whirl_ode *o, struct whirl_dop853 *d, double t,
   ++o->st.steps;
 }
 
-int whirl_dop853_step_(whirl_ode *o, double t_end) {
-  struct whirl_dop853 *d = state(o);
-  if (d == NULL) return ODE_FAIL(o, WHIRL_ENOMEM, "out of memory");
-  const double posneg = t_end > o->t ? 1.0 : -1.0;
-  const double hmax = o->h_max > 0.0 ? o->h_max : INFINITY;
-  int r;
-  if (!o->have_f) {
-    if ((r = whirl_ode_first_rhs_(o, d->k[0])) != WHIRL_OK) return r;
-  }
-  double h = o->h;
-  if (!(h > 0.0)) {
-    r = whirl_ode_initial_step_(o, d->k[0], d->k[1], 8, posneg,
-                                fabs(t_end - o->t), hmax, &h);
-    if (r < 0)
-      return ODE_FAIL(o, WHIRL_EUSER,
-                      "right-hand side returned %d at t = %.17g", r, o->t);
-  }
-  h = fmin(h, hmax);
-  for (;;) {
-    const double t = o->t, span = fabs(t_end - t);
-    const double hmin = fmax(o->h_min, whirl_ode_ulp16_(t));
-    h = fmax(h, fmin(hmin, span));
-    const int last = 1.01 * h >= span;
-    const double hs = last ? span : h, hh = posneg * hs;
-    const double tn = last ? t_end : t + hh;
-    const char *why = NULL;
+/* DOP853 as an explicit method of dopri.c's step */
+static double *d8_f0(whirl_ode *o) { return o->d8->k[0]; }
+static double *d8_scratch(whirl_ode *o) { return o->d8->k[1]; }
+static int d8_stages(whirl_ode *o, double t, double hh, double tn) {
+  return stages(o, o->d8, t, hh, tn);
+}
+static double d8_error(const whirl_ode *o, double hh) { return error_norm(o, o->d8, hh); }
+static void d8_accept(whirl_ode *o, double t, double tn, double hh, double err, double hnew) {
+  accept_step(o, o->d8, t, tn, hh, err, hnew);
+}
+static const ode_explicit_method dop853 = {
+    8, 1.0 / 8.0, 0.0, SAFE, FACMIN, FACMAX,
+    d8_f0, d8_scratch, d8_stages, d8_error, d8_accept};
 
-    r = stages(o, d, t, hh, tn);
-    if (r < 0)
-      return ODE_FAIL(o, WHIRL_EUSER,
-                      "right-hand side returned %d in a step from t = %.17g",
-                      r, t);
-    const double err = r ? NAN : error_norm(o, d, hh);
-    if (!r && !isfinite(err)) why = "non-finite error estimate";
-    if (!r && !why) {
-      const double fac11 = pow(err, 1.0 / 8.0);
-      const double fac = fmax(1.0 / FACMAX, fmin(1.0 / FACMIN, fac11 / SAFE));
-      double hnew = hs / fac;
-      if (err <= 1.0) {
-        hnew = fmin(hnew, hmax);
-        if (o->reject_last) hnew = fmin(hnew, hs);
-        if (last && hs < h) hnew = fmin(fmax(hnew, h), hmax);
-        accept_step(o, d, t, tn, hh, err, hnew);
-        return WHIRL_OK;
-      }
-      hnew = hs / fmin(1.0 / FACMIN, fac11 / SAFE);
-      ++o->st.rejected;
-      o->reject_last = 1;
-      if (hnew < hmin)
-        return ODE_FAIL(o, WHIRL_ESTEP,
-                        "step size %.3g below minimum %.3g at t = %.17g: "
-                        "error test failed (error %.3g)",
-                        hnew, hmin, t, err);
-      h = hnew;
-      continue;
-    }
-    /* recoverable failure (the model's domain, a non-finite error) */
-    ++o->st.rejected;
-    o->reject_last = 1;
-    h = hs / 4.0;
-    if (h < hmin) {
-      char what[64];
-      if (why == NULL) whirl_ode_rhs_said_(o, what, sizeof what);
-      return ODE_FAIL(o, WHIRL_ESTEP,
-                      "step size %.3g below minimum %.3g at t = %.17g: %s", h,
-                      hmin, t, why != NULL ? why : what);
-    }
-  }
+int whirl_dop853_step_(whirl_ode *o, double t_end) {
+  if (state(o) == NULL) return ODE_FAIL(o, WHIRL_ENOMEM, "out of memory");
+  return whirl_ode_explicit_step_(o, &dop853, t_end);
 }
 
 /* ------------------------------------------------------------------------

@@ -370,25 +370,30 @@ static void accept_step(whirl_ode *o, double t, double tn, double hh, double err
   ++o->st.steps;
 }
 
-int whirl_ode_step(whirl_ode *o, double t_end) {
-  if (o == NULL) return WHIRL_EINVAL;
-  if (!o->started)
-    return WHIRL_FAIL(o, WHIRL_EINVAL,
-                      "no initial state: call whirl_ode_reset");
-  if (!isfinite(t_end))
-    return WHIRL_FAIL(o, WHIRL_EINVAL, "t_end %g is not finite", t_end);
-  if (t_end == o->t) return WHIRL_DONE;
-  if (o->method == WHIRL_ODE_BDF) return whirl_bdf_step_(o, t_end);
-  if (o->method == WHIRL_ODE_DOP853) return whirl_dop853_step_(o, t_end);
+/* DOPRI5 as an explicit method of the shared step (below) */
+static double *dopri_f0(whirl_ode *o) { return o->k[0]; }
+static double *dopri_scratch(whirl_ode *o) { return o->k[1]; }
+static const ode_explicit_method dopri5 = {
+    5, 0.2 - 0.75 * BETA, BETA, SAFE, FACMIN, FACMAX,
+    dopri_f0, dopri_scratch, stages, error_norm, accept_step};
 
+/* One step of an explicit embedded pair m towards t_end (o->t != t_end):
+ * the starting step (HNW I p. 169) if none is proposed, then steps of the
+ * proposed size until one passes the error test, with Hairer's PI
+ * controller (fac = err^expo / facold^beta, the new step's factor within
+ * [facmin, facmax] with safety safe, no increase right after a rejection);
+ * a recoverable failure (the model's domain, a non-finite error) retries
+ * with h/4. */
+int whirl_ode_explicit_step_(whirl_ode *o, const ode_explicit_method *m,
+                             double t_end) {
   const double posneg = t_end > o->t ? 1.0 : -1.0;
   const double hmax = o->h_max > 0.0 ? o->h_max : INFINITY;
   int r;
-  if (!o->have_f && (r = whirl_ode_first_rhs_(o, o->k[0])) != WHIRL_OK)
+  if (!o->have_f && (r = whirl_ode_first_rhs_(o, m->f0(o))) != WHIRL_OK)
     return r;
   double h = o->h;
   if (!(h > 0.0)) {
-    r = whirl_ode_initial_step_(o, o->k[0], o->k[1], 5, posneg,
+    r = whirl_ode_initial_step_(o, m->f0(o), m->scratch(o), m->order, posneg,
                                 fabs(t_end - o->t), hmax, &h);
     if (r < 0)
       return WHIRL_FAIL(o, WHIRL_EUSER,
@@ -406,28 +411,27 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
     const double tn = last ? t_end : t + hh;
     const char *why = NULL;
 
-    r = stages(o, t, hh, tn);
+    r = m->stages(o, t, hh, tn);
     if (r < 0)
       return WHIRL_FAIL(o, WHIRL_EUSER,
                         "right-hand side returned %d in a step from t = %.17g",
                         r, t);
-    const double err = r ? NAN : error_norm(o, hh);
+    const double err = r ? NAN : m->error(o, hh);
     if (!r && !isfinite(err)) why = "non-finite error estimate";
     if (!r && !why) {
-      /* PI controller of DOPRI5 */
-      const double fac11 = pow(err, 0.2 - 0.75 * BETA);
-      double fac = fac11 / pow(o->facold, BETA);
-      fac = fmax(1.0 / FACMAX, fmin(1.0 / FACMIN, fac / SAFE));
+      const double fac11 = pow(err, m->expo);
+      double fac = fac11 / pow(o->facold, m->beta);
+      fac = fmax(1.0 / m->facmax, fmin(1.0 / m->facmin, fac / m->safe));
       double hnew = hs / fac;
       if (err <= 1.0) {
         hnew = fmin(hnew, hmax);
         if (o->reject_last) hnew = fmin(hnew, hs);
         /* a step shortened to hit t_end says little about the next one */
         if (last && hs < h) hnew = fmin(fmax(hnew, h), hmax);
-        accept_step(o, t, tn, hh, err, hnew);
+        m->accept(o, t, tn, hh, err, hnew);
         return WHIRL_OK;
       }
-      hnew = hs / fmin(1.0 / FACMIN, fac11 / SAFE);
+      hnew = hs / fmin(1.0 / m->facmin, fac11 / m->safe);
       ++o->st.rejected;
       o->reject_last = 1;
       if (hnew < hmin)
@@ -439,8 +443,7 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
       h = hnew;
       continue;
     }
-    /* recoverable failure (the model's domain, a non-finite error):
-     * reject, retry with h/4 */
+    /* recoverable failure: reject, retry with h/4 */
     ++o->st.rejected;
     o->reject_last = 1;
     h = hs / 4.0;
@@ -452,6 +455,19 @@ int whirl_ode_step(whirl_ode *o, double t_end) {
                         hmin, t, why != NULL ? why : what);
     }
   }
+}
+
+int whirl_ode_step(whirl_ode *o, double t_end) {
+  if (o == NULL) return WHIRL_EINVAL;
+  if (!o->started)
+    return WHIRL_FAIL(o, WHIRL_EINVAL,
+                      "no initial state: call whirl_ode_reset");
+  if (!isfinite(t_end))
+    return WHIRL_FAIL(o, WHIRL_EINVAL, "t_end %g is not finite", t_end);
+  if (t_end == o->t) return WHIRL_DONE;
+  if (o->method == WHIRL_ODE_BDF) return whirl_bdf_step_(o, t_end);
+  if (o->method == WHIRL_ODE_DOP853) return whirl_dop853_step_(o, t_end);
+  return whirl_ode_explicit_step_(o, &dopri5, t_end);
 }
 
 int whirl_ode_evolve(whirl_ode *o, double t_end) {

@@ -63,6 +63,26 @@ int whirl_ode_initial_step_(whirl_ode *o, const double *f0, double *f1,
                             int order, double posneg, double span,
                             double hmax, double *hout);
 
+/* An explicit embedded Runge–Kutta pair for the step of dopri.c
+ * (whirl_ode_explicit_step_): the order of its starting step, the PI
+ * controller's constants (fac = err^expo / facold^beta, the step's factor
+ * in [facmin, facmax], safety safe), f(t, x) and a scratch vector for the
+ * start, the stages of a step of hh from (t, x) to tn (xnew, the rhs
+ * status: 0 or the first nonzero one), its error norm, and the
+ * acceptance (advance, dense output, o->h = hnew). */
+typedef struct ode_explicit_method {
+  int order;
+  double expo, beta, safe, facmin, facmax;
+  double *(*f0)(whirl_ode *o);
+  double *(*scratch)(whirl_ode *o);
+  int (*stages)(whirl_ode *o, double t, double hh, double tn);
+  double (*error)(const whirl_ode *o, double hh);
+  void (*accept)(whirl_ode *o, double t, double tn, double hh, double err,
+                 double hnew);
+} ode_explicit_method;
+int whirl_ode_explicit_step_(whirl_ode *o, const ode_explicit_method *m,
+                             double t_end);
+
 /* The DOP853 back end (dop853.c), called by dopri.c's entry points when
  * o->method is WHIRL_ODE_DOP853: one step towards t_end (o->t != t_end,
  * checked); the dense output's stages of the last step (once a step; a

@@ -16,54 +16,7 @@
 #include <whirl/ode.h>
 
 #include "../tap.h"
-
-#define PI 3.14159265358979323846
-
-/* harmonic oscillator x'' = -x: (x, v) */
-static int osc_rhs(double t, const double *x, const double *p, double *f,
-                   void *data) {
-  (void)t;
-  (void)p;
-  (void)data;
-  f[0] = x[1];
-  f[1] = -x[0];
-  return 0;
-}
-static const whirl_problem osc = {
-    .name = "oscillator", .n = 2, .rhs = osc_rhs, .autonomous = 1};
-
-/* y' = -2 t y, y = y0 exp(t0² - t²) */
-static int gauss_rhs(double t, const double *x, const double *p, double *f,
-                     void *data) {
-  (void)p;
-  (void)data;
-  f[0] = -2.0 * t * x[0];
-  return 0;
-}
-static const whirl_problem gauss = {.name = "gauss", .n = 1, .rhs = gauss_rhs};
-
-/* pendulum θ'' = -sin θ */
-static int pend_rhs(double t, const double *x, const double *p, double *f,
-                    void *data) {
-  (void)t;
-  (void)p;
-  (void)data;
-  f[0] = x[1];
-  f[1] = -sin(x[0]);
-  return 0;
-}
-static const whirl_problem pend = {
-    .name = "pendulum", .n = 2, .rhs = pend_rhs, .autonomous = 1};
-
-/* x' = 1, undefined (status 7) beyond t = 1.5 */
-static int wall_rhs(double t, const double *x, const double *p, double *f,
-                    void *data) {
-  (void)x;
-  (void)p;
-  (void)data;
-  f[0] = 1.0;
-  return t > 1.5 ? 7 : 0;
-}
+#include "ode_models.h"
 
 static whirl_ode *dop853(const whirl_problem *prob) {
   whirl_ode *o = whirl_ode_alloc(prob, NULL);
@@ -87,23 +40,6 @@ static int fixed_run(const whirl_problem *prob, double t0, const double *x0,
   whirl_ode_get_stats(o, st);
   whirl_ode_free(o);
   return rc;
-}
-
-/* complete elliptic integral K(k) = π / (2 AGM(1, sqrt(1 - k²))) */
-static double ellipk(double k) {
-  double a = 1.0, b = sqrt(1.0 - k * k);
-  for (int i = 0; i < 40 && fabs(a - b) > 1e-16 * a; ++i) {
-    const double m = 0.5 * (a + b);
-    b = sqrt(a * b);
-    a = m;
-  }
-  return PI / (a + b);
-}
-
-static double g_x0(double t, const double *x, void *data) {
-  (void)t;
-  (void)data;
-  return x[0];
 }
 
 /* ------------------------------------------------------------------------ */

@@ -17,47 +17,10 @@
 #include <whirl/ode.h>
 
 #include "../tap.h"
-
-#define PI 3.14159265358979323846
+#include "ode_models.h"
 
 /* ------------------------------------------------------------------------
- * Models */
-
-/* harmonic oscillator x'' = -x: (x, v) */
-static int osc_rhs(double t, const double *x, const double *p, double *f,
-                   void *data) {
-  (void)t;
-  (void)p;
-  (void)data;
-  f[0] = x[1];
-  f[1] = -x[0];
-  return 0;
-}
-static const whirl_problem osc = {
-    .name = "oscillator", .n = 2, .rhs = osc_rhs, .autonomous = 1};
-
-/* y' = -2 t y, y = y0 exp(t0² - t²) */
-static int gauss_rhs(double t, const double *x, const double *p, double *f,
-                     void *data) {
-  (void)p;
-  (void)data;
-  f[0] = -2.0 * t * x[0];
-  return 0;
-}
-static const whirl_problem gauss = {.name = "gauss", .n = 1, .rhs = gauss_rhs};
-
-/* pendulum θ'' = -sin θ */
-static int pend_rhs(double t, const double *x, const double *p, double *f,
-                    void *data) {
-  (void)t;
-  (void)p;
-  (void)data;
-  f[0] = x[1];
-  f[1] = -sin(x[0]);
-  return 0;
-}
-static const whirl_problem pend = {
-    .name = "pendulum", .n = 2, .rhs = pend_rhs, .autonomous = 1};
+ * Models (and those of ode_models.h) */
 
 /* damped oscillator x'' + 2 ζ x' + x = 0, ζ = p[0] */
 static int damp_rhs(double t, const double *x, const double *p, double *f,
@@ -140,15 +103,6 @@ static int nan_rhs(double t, const double *x, const double *p, double *f,
   f[0] = NAN;
   return 0;
 }
-/* x' = 1, undefined (status 7) beyond t = 1.5 */
-static int wall_rhs(double t, const double *x, const double *p, double *f,
-                    void *data) {
-  (void)x;
-  (void)p;
-  (void)data;
-  f[0] = 1.0;
-  return t > 1.5 ? 7 : 0;
-}
 static int blowup_rhs(double t, const double *x, const double *p, double *f,
                       void *data) {
   (void)t;
@@ -187,22 +141,6 @@ static int fixed_run(const whirl_problem *prob, double t0, const double *x0,
   return rc;
 }
 
-/* complete elliptic integral K(k) = π / (2 AGM(1, sqrt(1 - k²))) */
-static double ellipk(double k) {
-  double a = 1.0, b = sqrt(1.0 - k * k);
-  for (int i = 0; i < 40 && fabs(a - b) > 1e-16 * a; ++i) {
-    const double m = 0.5 * (a + b);
-    b = sqrt(a * b);
-    a = m;
-  }
-  return PI / (a + b);
-}
-
-static double g_x0(double t, const double *x, void *data) {
-  (void)t;
-  (void)data;
-  return x[0];
-}
 static double g_x1(double t, const double *x, void *data) {
   (void)t;
   (void)data;
