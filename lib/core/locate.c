@@ -124,10 +124,15 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
     if (!(sigma > lo && sigma < hi)) sigma = 0.5 * (sa + sb);
     /* A trial that lands exactly on a singular point (the secant can hit a
      * branch point to the last bit on linear problems) is moved by a tiny
-     * fraction of the bracket and tried again. */
+     * fraction of the bracket and tried again; one that lands merely close
+     * to a branch point, where Newton's basin shrinks with the distance
+     * (the bordered Jacobian is singular there), is replaced by the
+     * bracket's midpoint: a bisection step (brc's BP of cycles). */
     rc = 1;
-    for (int retry = 0; retry < 3 && rc != 0; ++retry) {
-      if (retry) sigma += 1e-7 * (hi - lo) * (retry == 1 ? 1.0 : -2.0);
+    const double mid = 0.5 * (sa + sb);
+    for (int retry = 0; retry < 4 && rc != 0; ++retry) {
+      if (retry == 3) sigma = mid;
+      else if (retry) sigma += 1e-7 * (hi - lo) * (retry == 1 ? 1.0 : -2.0);
       const double u = (sigma - sa) / (sb - sa);
       for (size_t i = 0; i < N; ++i) out->X[i] = Xa[i] + u * (Xb[i] - Xa[i]);
       rc = cont_correct(c, a->X, c->dir, sigma, out->X);

@@ -222,6 +222,58 @@ static void test_bp(void) {
   whirl_branch_free(b);
 }
 
+/* ---- two curved branches crossing: F = (x - sin kp)(x + p)(1 + x^2),
+ * followed along x = sin kp with AUTO-like few Newton iterations (ITNW 3)
+ * and big steps.  A branch point is where sin kp = -p.  Near it the
+ * bordered Jacobian is nearly singular and Newton's basin shrinks with the
+ * distance, so a secant trial that lands close to it fails: the bracket's
+ * midpoint is tried instead (before, the branch point was dropped). */
+static double crv_k;
+static int crv_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = (x[0] - sin(crv_k * p[0])) * (x[0] + p[0]) * (1.0 + x[0] * x[0]);
+  return 0;
+}
+
+/* The roots of sin kp + p in [lo, hi] by bisection on a fine grid. */
+static int crv_roots(double k, double lo, double hi, double *r, int max) {
+  int n = 0;
+  const int M = 20000;
+  for (int i = 0; i < M && n < max; ++i) {
+    double a = lo + (hi - lo) * i / M, b = lo + (hi - lo) * (i + 1) / M;
+    double fa = sin(k * a) + a, fb = sin(k * b) + b;
+    if (fa == 0) { r[n++] = a; continue; }
+    if (fa * fb > 0) continue;
+    for (int it = 0; it < 200; ++it) {
+      double m = 0.5 * (a + b), fm = sin(k * m) + m;
+      if (fa * fm <= 0) b = m; else { a = m; fa = fm; }
+    }
+    r[n++] = 0.5 * (a + b);
+  }
+  return n;
+}
+
+static void test_bp_curved(double k, double ds) {
+  whirl_system s = {.name = "crossing", .n = 1, .npar = 1, .F = crv_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = o.ds_max = ds;
+  o.p_min = -0.7;
+  o.p_max = 1.0;
+  o.newton_maxit = 3;
+  crv_k = k;
+  double p0 = -0.7, x0 = sin(k * p0), r[8];
+  int nr = crv_roots(k, -0.69, 1.0, r, 8);
+  whirl_branch *b = run(&s, &o, &x0, &p0, +1, NULL);
+  int nbp = b ? (int)count_type(b, WHIRL_PT_BP) : -1;
+  ok(nbp == nr, "crossing k = %g, ds = %g: %d BPs, as the %d roots of sin kp = -p", k, ds, nbp, nr);
+  double worst = 0.0;
+  for (int i = 0; i < nr && i < nbp; ++i)
+    worst = fmax(worst, fabs(nth_type(b, WHIRL_PT_BP, (size_t)i)->p[0] - r[i]));
+  ok(nbp == nr && worst < 1e-8, "crossing k = %g: BPs at the roots (worst %.1e)", k, worst);
+  whirl_branch_free(b);
+}
+
 static void test_hopf(void) {
   static const whirl_problem bru = {.name = "brusselator", .n = 2, .npar = 2,
                                     .rhs = bru_rhs, .autonomous = 1};
@@ -557,6 +609,8 @@ int main(void) {
   test_cusp(1);
   test_cusp(0);
   test_bp();
+  test_bp_curved(3.0, 0.1);
+  test_bp_curved(5.0, 0.2);
   test_switch_side();
   test_hopf();
   test_hopf_nearest_switch();
