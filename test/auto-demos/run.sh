@@ -59,21 +59,7 @@ auto_points() {
     on && $1 ~ /^-?[0-9]+$/ && $2 ~ /^-?[0-9]+$/ && $3 ~ /^(BP|LP|HB|PD|TR|BT|CP|ZH|GH)$/ {
       s = $3; for (i = 5; i <= NF; i++) s = s " " $i; print s }' "$2"
 }
-# whirl's, from the b-file of all runs, b.$2: AUTO's type codes at
-# columns 11-14
-whirl_points() {
-  for b in "$1/b.$2"; do
-    [ -f "$b" ] || continue
-    awk 'substr($0, 1, 4) + 0 != 0 {
-      t = substr($0, 11, 4) + 0
-      ty = t == 1 || t == 6 ? "BP" : t == 2 || t == 5 ? "LP" : t == 3 ? "HB" : t == 7 ? "PD" : \
-           t == 8 ? "TR" : t == -1 ? "BT" : t == -2 ? "CP" : t == -3 ? "ZH" : t == -32 ? "GH" : ""
-      if (ty == "") next
-      s = ty; for (i = 20; i + 18 <= length($0); i += 19) s = s " " sprintf("%.10g", substr($0, i, 19) + 0)
-      print s }' "$b"
-  done
-}
-# whirl's points as "LAB TY values", in whirl_points' order
+# whirl's points as "LAB TY values" (LAB from columns 15-19)
 whirl_points_lab() {
   for b in "$1/b.$2"; do
     [ -f "$b" ] || continue
@@ -86,6 +72,9 @@ whirl_points_lab() {
       print s }' "$b"
   done
 }
+# whirl's, from the b-file of all runs, b.$2: AUTO's type codes at
+# columns 11-14, as "TY values"
+whirl_points() { whirl_points_lab "$@" | cut -d' ' -f2-; }
 # the value positions of the MAX U(i) columns of the b-file $1, as POS:i
 max_mask() {
   awk 'substr($0, 1, 4) + 0 == 0 && index($0, "MAX U(") {
