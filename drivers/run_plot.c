@@ -51,10 +51,10 @@ static int write_diagram(cli_outdir *od, const whirl_run *r, const whirl_run_plo
     first = 0;
   }
   if (pl->seen_special)
-    fprintf(f, ", \\\n     'branches.tsv' using %d:(strcol(3) ne 'RG' && "
+    fprintf(f, ", \\\n     'branches.tsv' using %d:(strcol(3) ne '-' && "
             "strcol(3) ne 'EP' ? column(%d) : NaN) with points pt 7 ps 1 lc "
             "rgb 'black' notitle, \\\n     'branches.tsv' using %d:(strcol(3) "
-            "ne 'RG' && strcol(3) ne 'EP' ? column(%d) : NaN):3 with labels "
+            "ne '-' && strcol(3) ne 'EP' ? column(%d) : NaN):3 with labels "
             "offset 1,0.7 notitle", x, y, x, y);
   fputc('\n', f);
   return cli_outdir_fclose(od, f, "diagram.gp");
