@@ -139,7 +139,7 @@ static int write_plots(cli_outdir *od, const whirl_sfd_periodic *ns,
   fprintf(f,
           "set title 'second frequency of the nonsynchronous response, f_2 = |{/Symbol W} - "
           "{/Symbol w}_r| / {/Symbol W}'\n"
-          "set xlabel 'dimensionless speed {/Symbol W}'\nset ylabel 'f_2 / {/Symbol W}'\n"
+          "set xlabel 'dimensionless speed {/Symbol W}'\nset ylabel 'second frequency f_2 (in units of {/Symbol W})'\n"
           "set grid\nset key top right box opaque\n"
           "plot $ns0 using 1:2 with lines lw 2.5 lc rgb '#d62728' title 'stable', \\\n"
           "     $ns1 using 1:2 with lines dt 2 lw 2 lc rgb '#d62728' title 'unstable', \\\n"

@@ -36,6 +36,8 @@ typedef struct ov_run {
  * missing column, a row that is not the header's, no rows). */
 int ov_read(ov_run *r, const char *dir, const char *x, const char *y, char *msg,
             size_t len);
+/* The same with the columns X, Y by their 0-based positions. */
+int ov_read_columns(ov_run *r, const char *dir, int x, int y, char *msg, size_t len);
 void ov_free(ov_run *r);
 
 /* The legend titles when the user gave none: the parameters whose values

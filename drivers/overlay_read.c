@@ -42,8 +42,8 @@ static int find(char **w, size_t n, const char *name) {
 }
 
 /* The header's columns: X and Y as asked (NULL: the defaults). */
-static int header(char **w, size_t n, const char *x, const char *y, cols *c,
-                  ov_run *r, const char *path, char *msg, size_t len) {
+static int header(char **w, size_t n, const char *x, const char *y, const int xy[2],
+                  cols *c, ov_run *r, const char *path, char *msg, size_t len) {
   static const char *const ys[] = {"eps", "eps_max", "amplitude_m", "l2_norm"};
   c->n = n;
   c->stab = find(w, n, "stable");
@@ -54,6 +54,8 @@ static int header(char **w, size_t n, const char *x, const char *y, cols *c,
   c->y = -1;
   for (size_t k = 0; !y && k < sizeof ys / sizeof *ys && c->y < 0; k++) c->y = find(w, n, ys[k]);
   if (y) c->y = find(w, n, y);
+  if (xy) /* by position (whirl run's picture knows its columns so) */
+    c->x = xy[0] < (int)n ? xy[0] : -1, c->y = xy[1] < (int)n ? xy[1] : -1;
   const char *miss = c->stab < 0 ? "stable"
                      : c->x < 0   ? (x ? x : "Omega")
                      : c->y < 0   ? (y ? y : "eps (nor eps_max, amplitude_m, l2_norm)")
@@ -155,8 +157,8 @@ static int rows(FILE *f, const cols *c, ov_run *r, const char *path, char *msg,
   return rc;
 }
 
-int ov_read(ov_run *r, const char *dir, const char *x, const char *y, char *msg,
-            size_t len) {
+static int read_table(ov_run *r, const char *dir, const char *x, const char *y,
+                      const int xy[2], char *msg, size_t len) {
   char path[4200], *line = NULL, **w = NULL;
   size_t n = 0;
   memset(r, 0, sizeof *r);
@@ -175,13 +177,23 @@ int ov_read(ov_run *r, const char *dir, const char *x, const char *y, char *msg,
     snprintf(msg, len, "%s: no header line first (doc/tables.md)", path);
   else if (!(w = malloc((OV_MAX_COLS + 1) * sizeof *w)))
     snprintf(msg, len, "%s: out of memory", path);
-  else if (header(w, split(line, w), x, y, &c, r, path, msg, len) == 0)
+  else if (header(w, split(line, w), x, y, xy, &c, r, path, msg, len) == 0)
     rc = rows(f, &c, r, path, msg, len);
   free(w);
   free(line);
   fclose(f);
   if (rc) ov_free(r);
   return rc;
+}
+
+int ov_read(ov_run *r, const char *dir, const char *x, const char *y, char *msg,
+            size_t len) {
+  return read_table(r, dir, x, y, NULL, msg, len);
+}
+
+int ov_read_columns(ov_run *r, const char *dir, int x, int y, char *msg, size_t len) {
+  const int xy[2] = {x, y};
+  return read_table(r, dir, NULL, NULL, xy, msg, len);
 }
 
 void ov_free(ov_run *r) {
