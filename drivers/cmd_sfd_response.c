@@ -274,7 +274,7 @@ static int write_response_gp(cli_outdir *od, const tab *res,
           "set title 'SFD rigid rotor, %s: %s'%s\n"
           "set xlabel 'dimensionless speed {/Symbol W}'\n"
           "set ylabel '%s'\n"
-          "set xrange [0:%g]\nset yrange [0:1]\nset grid\nset key bottom right box opaque\n"
+          "set xrange [0:%g]\nset yrange [0:1]\nset grid\nset key outside right top box\n"
           "plot $stable using 1:2 with lines lw 2.5 lc rgb '#1f4e9c' title 'stable', \\\n"
           "     $unstable using 1:2 with lines dt 2 lw 2.5 lc rgb '#1f4e9c' title 'unstable', \\\n"
           "     $special using 1:2 with points pt 7 ps 1.6 lc rgb '#2ca02c' title 'LP (saddle-node)'\n",
