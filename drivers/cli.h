@@ -124,5 +124,8 @@ int cmd_rotor_export(int argc, char **argv);   /* cmd_rotor_export.c */
 int cmd_rotor_simulate(int argc, char **argv); /* cmd_rotor_simulate.c */
 int cmd_rotor_basins(int argc, char **argv);   /* cmd_rotor_basins.c */
 void cli_rotor_help(FILE *f, const char *prefix, size_t col);
+/* whirl plot overlay (cmd_plot.c); the help items of its commands */
+int cmd_plot(int argc, char **argv);
+void cli_plot_help(FILE *f, const char *prefix, size_t col);
 
 #endif

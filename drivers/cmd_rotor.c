@@ -154,7 +154,7 @@ static void write_gp(FILE *f, const whirl_fe_rotor *r, const char *file, size_t 
   snprintf(t, sizeof t, "Campbell diagram: %s", r->title && *r->title ? r->title : file);
   fprintf(f,
           "set title %s noenhanced\nset xlabel 'speed (rev/min)'\nset ylabel 'damped natural "
-          "frequency (Hz)'\nset grid\nset key top left box opaque\nset datafile separator '\\t'\n"
+          "frequency (Hz)'\nset grid\nset key outside right top box\nset datafile separator '\\t'\n"
           "set xrange [*:%g]\nset yrange [0:*]\n",
           cli_gp_quote(t, (char[640]){0}, 640), top_rpm);
   fprintf(f,

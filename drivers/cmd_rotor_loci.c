@@ -119,7 +119,7 @@ static void write_gp(FILE *f, const whirl_fe_rotor *r, const char *file, const c
   snprintf(t, sizeof t, "fold loci: %s", r->title && *r->title ? r->title : file);
   fprintf(f,
           "set title %s noenhanced\nset xlabel 'speed (rev/min)'\nset ylabel '%s scale'\n"
-          "set grid\nset key top left box opaque\nset datafile separator '\\t'\n"
+          "set grid\nset key outside right top box\nset datafile separator '\\t'\n"
           "plot 'loci.tsv' using 4:6 with lines lw 2 lc rgb '#1f4e9c' title 'folds', \\\n"
           "  'loci.tsv' using 4:(strcol(1) eq 'CP' || strcol(1) eq 'IS' || strcol(1) eq 'MG' ? "
           "$6 : 1/0) with points pt 7 ps 1.5 lc rgb '#c0392b' title 'CP, IS, MG'\n",

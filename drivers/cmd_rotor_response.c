@@ -93,7 +93,7 @@ static void write_gp(FILE *f, const whirl_fe_rotor *r, const char *file, int nod
            r->title && *r->title ? r->title : file);
   fprintf(f,
           "set title %s noenhanced\nset xlabel 'speed (rev/min)'\n"
-          "set ylabel 'amplitude at node %d (mm)'\nset grid\nset key top left box opaque\n"
+          "set ylabel 'amplitude at node %d (mm)'\nset grid\nset key outside right top box\n"
           "set datafile separator '\\t'\n",
           cli_gp_quote(t, q, sizeof q), node);
   fprintf(f,

@@ -150,7 +150,7 @@ static int write_out(const sim_args *a, const whirl_fe_rotor *r, double Om, cons
     snprintf(circ, sizeof circ, "%g*cos(t), %g*sin(t) with lines lw 2 lc rgb 'black' "
              "title 'clearance', \\\n  ", 1e3 * c, 1e3 * c);
   snprintf(body, sizeof body,
-           "set size ratio -1\nset key top left box opaque\nset xlabel 'y (mm)'\nset ylabel 'z (mm)'\n"
+           "set size ratio -1\nset key outside right top box\nset xlabel 'y (mm)'\nset ylabel 'z (mm)'\n"
            "set parametric\nset trange [0:2*pi]\n"
            "plot %s'time.tsv' every ::%zu using (1e3*$2):(1e3*$3) with lines lw 1 "
            "lc rgb '#1f77b4' title 'orbit, last half'\n",

@@ -3,7 +3,8 @@
  * nonsynchronous response from zero initial conditions, paper §5.2:
  * 8.5322–8.5327), bracketed by bisection in Ω.  At each speed the trajectory
  * from rest is integrated until it enters the certified neighbourhood of a
- * stable circular orbit (synchronous) or --periods pass (nonsynchronous).
+ * stable circular orbit (class circular, as sfd sweep names it) or
+ * --periods pass (nonsynchronous).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdlib.h>
@@ -27,7 +28,8 @@ static const cli_doc doc = {
 "stdout: TSV 'Omega class periods' for every speed tried, then a line\n"
 "'onset<TAB>lo<TAB>hi'.\n"};
 
-/* 1 synchronous (captured by a circular orbit), 0 not, -1 contact, < -1
+/* 1 circular (captured by a circular orbit: the class `sfd sweep` calls
+ * circular), 0 nonsynchronous (not captured), -1 contact, < -1
  * error.  *per: periods integrated. */
 static int from_rest(double *p, size_t periods, double rtol, double atol, unsigned *per,
                      char *msg, size_t len) {
@@ -67,7 +69,7 @@ static int from_rest(double *p, size_t periods, double rtol, double atol, unsign
 }
 
 static const char *cls_name(int c) {
-  return c == 1 ? "synchronous" : c == 0 ? "nonsynchronous" : "contact";
+  return c == 1 ? "circular" : c == 0 ? "nonsynchronous" : "contact";
 }
 
 /* The response from rest at Omega = om (from_rest), its row printed on

@@ -72,7 +72,8 @@ static int write_plot(cli_outdir *od, const whirl_sfd_region *r, double zeta, do
           "set title 'isolated branch below {/Symbol W} = %g: {/Symbol z} = %g (cf. paper Fig. 18)'\n"
           "set xlabel 'SFD constant {/Symbol l}'\nset ylabel 'unbalance {/Symbol d}'\n"
           "set logscale x\nset xrange [%g:%g]\nset yrange [0:1]\nset grid\n"
-          "set key top left box opaque\nset datafile separator '\\t'\n"
+          "set key outside bottom center vertical box\nset bmargin 9\n" /* long entries: under the x label */
+          "set datafile separator '\\t'\n"
           "",
           W, zeta, a, b);
   /* special points: MG labelled to the left, the others to the right */

@@ -198,6 +198,26 @@ static void print_special(FILE *f, const row *r, int type) {
           r->label, r->Om, r->eps, r->phase, r->stable, r->maxmult, ff);
 }
 
+/* The letters A-D of the regions between the three LP speeds LP (sorted)
+ * on [0, WMAX] (Fig. 3), above the frame: inside it they sat on the
+ * upper branch (D) and between B's two red lines, 0.22 apart.  Each is at
+ * its region's middle, pushed apart to 4 % of the axis so that a narrow
+ * region's letter does not run into its neighbour's. */
+static void region_letters(FILE *f, const double *lp, double wmax) {
+  const double gap = 0.04 * wmax;
+  double xs[4] = {0.5 * lp[0], 0.5 * (lp[0] + lp[1]), 0.5 * (lp[1] + lp[2]),
+                  0.5 * (lp[2] + wmax)};
+  for (int i = 1; i < 4; ++i)
+    if (xs[i] < xs[i - 1] + gap) xs[i] = xs[i - 1] + gap;
+  for (int i = 2; i >= 0 && xs[3] > wmax; --i) /* the last past the end: back */
+    if (xs[i] > xs[i + 1] - gap) xs[i] = xs[i + 1] - gap;
+  if (xs[3] > wmax) xs[3] = wmax;
+  fprintf(f, "set tmargin 5\n"); /* the title moved up above them */
+  for (int i = 0; i < 4; ++i)
+    fprintf(f, "set label '%c' at %.10g, graph 1.035 center font 'Sans,14' tc rgb '#d62728'\n",
+            'A' + i, xs[i]);
+}
+
 /* Gnuplot script for ε against Ω: stable solid, unstable dashed, LP marked,
  * red dashed region borders at the LPs (Fig. 3). */
 static int write_response_gp(cli_outdir *od, const tab *res,
@@ -248,26 +268,24 @@ static int write_response_gp(cli_outdir *od, const tab *res,
   for (int i = 0; i < nlp; ++i)
     fprintf(f, "set arrow from %.10g, graph 0 to %.10g, graph 1 nohead dt 2 lw 1.5 lc rgb '#d62728'\n",
             lp[i], lp[i]);
-  if (nlp == 3) {
-    const double xs[4] = {0.5 * lp[0], 0.5 * (lp[0] + lp[1]), 0.5 * (lp[1] + lp[2]),
-                          0.5 * (lp[2] + wmax)};
-    for (int i = 0; i < 4; ++i)
-      fprintf(f, "set label '%c' at %.10g, graph 0.95 center font 'Sans,14' tc rgb '#d62728'\n",
-              'A' + i, xs[i]);
-  }
+  if (nlp == 3) region_letters(f, lp, wmax);
   char title[256];
   fprintf(f,
-          "set title 'SFD rigid rotor, %s: %s'\n"
+          "set title 'SFD rigid rotor, %s: %s'%s\n"
           "set xlabel 'dimensionless speed {/Symbol W}'\n"
           "set ylabel '%s'\n"
-          "set xrange [0:%g]\nset yrange [0:1]\nset grid\nset key bottom right box opaque\n"
+          "set xrange [0:%g]\nset yrange [0:1]\nset grid\nset key outside right top box\n"
           "plot $stable using 1:2 with lines lw 2.5 lc rgb '#1f4e9c' title 'stable', \\\n"
           "     $unstable using 1:2 with lines dt 2 lw 2.5 lc rgb '#1f4e9c' title 'unstable', \\\n"
           "     $special using 1:2 with points pt 7 ps 1.6 lc rgb '#2ca02c' title 'LP (saddle-node)'\n",
           p[WHIRL_SFD_FE] == 0.0 ? "circular orbits" : "synchronous orbits",
-          sfd_gp_params(title, sizeof title, p, SFD_P_MODEL | SFD_P(WHIRL_SFD_FE)), ylab, wmax);
+          sfd_gp_params(title, sizeof title, p, SFD_P_MODEL | SFD_P(WHIRL_SFD_FE)),
+          nlp == 3 ? " offset 0,1.2" : "", ylab, wmax);
   return out_commit(&o);
 }
+
+/* The lower end of the multipliers' axis (see write_multipliers_gp). */
+#define SFD_MULT_FLOOR 1e-3
 
 /* Gnuplot script for the largest Floquet multiplier modulus (Figs. 4-5). */
 static int write_multipliers_gp(cli_outdir *od, const tab *res,
@@ -285,10 +303,14 @@ static int write_multipliers_gp(cli_outdir *od, const tab *res,
   fprintf(f,
           "set title 'largest Floquet multiplier modulus of the synchronous orbits'\n"
           "set xlabel 'dimensionless speed {/Symbol W}'\nset ylabel 'max |{/Symbol r}|'\n"
-          "set xrange [0:%g]\nset logscale y\nset grid\nset key top right box opaque\n"
+          /* from 1e-3: slow orbits' multipliers reach 1e-22, which squeezed
+           * the part that matters, around 1, into a tenth of the axis; the
+           * legend beside the axes, off the curves near 1 */
+          "set xrange [0:%g]\nset logscale y\nset yrange [%g:*]\nset grid\n"
+          "set key outside right top box\n"
           "set arrow from graph 0, first 1 to graph 1, first 1 nohead dt 2 lw 1.5 lc rgb '#d62728'\n"
           "plot ",
-          wmax);
+          wmax, SFD_MULT_FLOOR);
   for (size_t b = 0; b < res->nbranch; ++b)
     fprintf(f, "%s$b%zu using 1:2 with lines lw 2 title 'branch %zu'", b ? ", " : "", b + 1, b + 1);
   fprintf(f, "\n");

@@ -84,17 +84,34 @@ static int write_gp(cli_outdir *od, const char *name, const char *body,
   return out_commit(&o);
 }
 
+/* The forcing periods history.png shows in full at its foot. */
+#define HISTORY_WINDOW 10
+
 /* The pictures' scripts: the time history, the orbit in the clearance
  * circle with the Poincare section, the phase plane and (without contact)
  * the spectrum.  K0 is the first steady sample. */
 static int write_scripts(cli_outdir *od, const double *p, size_t k0, int contact) {
   char body[4096];
+  /* A thousand periods of y and z are a solid band: the whole run is shown
+   * once a forcing period (the Poincare samples' eps: a transient settling
+   * on a line, a band for a quasiperiodic motion), and the motion itself
+   * in a window of the last HISTORY_WINDOW periods. */
   snprintf(body, sizeof body,
-           "set multiplot layout 2,1\nset xlabel '{/Symbol t}'\nset ylabel 'y'\n"
-           "plot 'history.tsv' using 1:2 with lines lw 1 lc rgb '#1f4e9c' notitle\n"
-           "set ylabel 'z'\nunset title\n"
-           "plot 'history.tsv' using 1:3 with lines lw 1 lc rgb '#1f4e9c' notitle\n"
-           "unset multiplot\n");
+           "T = 2 * pi / %.17g\n"
+           "stats 'history.tsv' using 1 nooutput\n"
+           "t1 = STATS_max\nt0 = t1 - %d * T > STATS_min ? t1 - %d * T : STATS_min\n"
+           "set multiplot layout 2,1\nset lmargin 10\nset rmargin 10\n"
+           "set xlabel '{/Symbol t}'\nset ylabel '{/Symbol e} once a period'\n"
+           "set xrange [STATS_min:t1]\nset yrange [0:*]\n"
+           "plot 'poincare.tsv' using 2:(sqrt($3**2 + $4**2)) with points pt 7 ps 0.3 "
+           "lc rgb '#1f4e9c' notitle\n"
+           "set title sprintf('the last %%g periods', (t1 - t0) / T)\n"
+           "set xrange [t0:t1]\nset yrange [*:*]\nset ylabel 'y, z'\n"
+           "set key outside right top\n"
+           "plot 'history.tsv' using 1:2 with lines lw 1.5 lc rgb '#1f4e9c' title 'y', \\\n"
+           "     '' using 1:3 with lines lw 1.5 lc rgb '#d62728' title 'z'\n"
+           "unset multiplot\n",
+           p[WHIRL_SFD_OMEGA], HISTORY_WINDOW, HISTORY_WINDOW);
   int bad = write_gp(od, "history", body, p);
   snprintf(body, sizeof body,
            "set size ratio -1\nset xrange [-1.05:1.05]\nset yrange [-1.05:1.05]\n"

@@ -132,7 +132,7 @@ static int write_scripts(cli_outdir *od, const double *p, double lo, double hi, 
     fprintf(f,
             "set title 'speed sweep by time integration over the circular orbits: %s'\n"
             "set xlabel 'dimensionless speed {/Symbol W}'\nset ylabel 'max relative eccentricity {/Symbol e}'\n"
-            "set xrange [%g:%g]\nset yrange [0:1]\nset grid\nset key bottom right box opaque\n"
+            "set xrange [%g:%g]\nset yrange [0:1]\nset grid\nset key outside right top box\n"
             "plot $stable using 1:2 with lines lw 2 lc rgb '#1f4e9c' title 'stable (continuation)', \\\n"
             "  $unstable using 1:2 with lines dt 2 lw 2 lc rgb '#1f4e9c' title 'unstable', \\\n"
             "  'sweep.tsv' index 0 using 2:4 with points pt 1 ps 1.2 lc rgb 'black' title '%s sweep', \\\n"
@@ -148,7 +148,7 @@ static int write_scripts(cli_outdir *od, const double *p, double lo, double hi, 
     cli_gp_preamble(b.fp, CMD, "bifurcation", 1100, 750, "Sans,12");
     fprintf(b.fp, "set title 'bifurcation diagram: Poincare points (once per period) of the sweep'\n"
                   "set xlabel 'dimensionless speed {/Symbol W}'\nset ylabel 'y at {/Symbol t} = k 2{/Symbol p}/{/Symbol W}'\n"
-                  "set grid\nset key bottom right box opaque\n"
+                  "set grid\nset key outside right top box\n"
                   "plot 'poincare.tsv' index 0 using 2:3 with points pt 7 ps 0.3 lc rgb 'black' title '%s', \\\n"
                   "  'poincare.tsv' index 1 using 2:3 with points pt 7 ps 0.3 lc rgb '#2ca02c' title 'down'\n",
             up ? "up" : "down");

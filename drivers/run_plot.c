@@ -9,6 +9,7 @@
 
 #include "cli.h"
 #include "run_cmd.h"
+#include "run_plot_impl.h"
 
 /* Stable parts solid, unstable dashed, unknown thin; labelled special
  * points marked and named.  Each series is NaN where the STAB column
@@ -23,9 +24,10 @@ static int write_diagram(cli_outdir *od, const whirl_run *r, const whirl_run_plo
            whirl_run_model_name(r));
   const int x = pl->x, y = pl->y;
   cli_gp_preamble(f, "run", "diagram", 900, 650, "Sans,11");
+  if (pl->seen_special) run_plot_labels(f, od, r, pl);
   fprintf(f,
           "set datafile separator '\\t'\n"
-          "set key top left\n"
+          "set key outside bottom center horizontal\nset bmargin 5\n" /* off the curves, under the x label */
           "set grid lc rgb '#dddddd'\n"
           "set title %s noenhanced\n"
           "set xlabel %s noenhanced\n"
@@ -51,11 +53,9 @@ static int write_diagram(cli_outdir *od, const whirl_run *r, const whirl_run_plo
     first = 0;
   }
   if (pl->seen_special)
-    fprintf(f, ", \\\n     'branches.tsv' using %d:(strcol(3) ne 'RG' && "
+    fprintf(f, ", \\\n     'branches.tsv' using %d:(strcol(3) ne '-' && "
             "strcol(3) ne 'EP' ? column(%d) : NaN) with points pt 7 ps 1 lc "
-            "rgb 'black' notitle, \\\n     'branches.tsv' using %d:(strcol(3) "
-            "ne 'RG' && strcol(3) ne 'EP' ? column(%d) : NaN):3 with labels "
-            "offset 1,0.7 notitle", x, y, x, y);
+            "rgb 'black' notitle", x, y);
   fputc('\n', f);
   return cli_outdir_fclose(od, f, "diagram.gp");
 }

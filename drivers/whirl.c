@@ -57,6 +57,7 @@ static void usage(FILE *f) {
                 "equations (doc/auto-files.md)", 17);
   list_sfd(f, "sfd ", 17);
   cli_rotor_help(f, "rotor ", 17);
+  cli_plot_help(f, "plot ", 17);
   fprintf(f,
           "\n"
           "  whirl <command> --help   options of a command\n"
@@ -89,6 +90,7 @@ int main(int argc, char **argv) {
   if (!strcmp(argv[1], "run")) return cmd_run(argc - 1, argv + 1);
   if (!strcmp(argv[1], "auto")) return cmd_auto(argc - 1, argv + 1);
   if (!strcmp(argv[1], "rotor")) return cmd_rotor(argc - 1, argv + 1);
+  if (!strcmp(argv[1], "plot")) return cmd_plot(argc - 1, argv + 1);
   if (!strcmp(argv[1], "sfd")) {
     if (argc < 3) {
       sfd_usage(stderr);

@@ -137,7 +137,8 @@ static int parse_row(char *line, size_t nv, row *r) {
   for (int i = 0; i < 4; i++)
     if (!(w[i] = strtok_r(i ? NULL : line, "\t\n", &save))) return -1;
   r->br = atoi(w[0]), r->pt = atoi(w[1]), r->lab = atoi(w[3]);
-  snprintf(r->ty, sizeof r->ty, "%s", w[2]);
+  /* branches.tsv writes a regular point as '-' (doc/tables.md): AUTO's RG */
+  snprintf(r->ty, sizeof r->ty, "%s", strcmp(w[2], "-") ? w[2] : "RG");
   if (!(r->v = malloc((nv ? nv : 1) * sizeof *r->v))) return -1;
   for (size_t i = 0; i < nv; i++) {
     char *s = strtok_r(NULL, "\t\n", &save), *end;

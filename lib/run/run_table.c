@@ -167,7 +167,9 @@ int run_point_measures(const run_ctx *R, whirl_solution_kind kind, const void *o
 static void write_row(FILE *f, const run_ctx *R, int br, size_t pt, const char *ty,
                       int lab, const double *p, int periodic, double period, double l2,
                       const double *mx, int stable) {
-  fprintf(f, "%d\t%zu\t%s\t%d", br, pt, ty, lab);
+  /* a regular point's type is '-', as in every whirl table (doc/tables.md);
+   * RG stays the run's own name for it (IRS, the solutions file, AUTO's files) */
+  fprintf(f, "%d\t%zu\t%s\t%d", br, pt, strcmp(ty, "RG") ? ty : "-", lab);
   for (size_t k = 0; k < R->npar; k++) fprintf(f, "\t%.12g", p[k]);
   if (periodic) fprintf(f, "\t%.12g", period);
   fprintf(f, "\t%.12g", l2);

@@ -85,6 +85,9 @@ except ImportError:
     pandas = None
 doc, listing = sys.argv[1], sys.argv[2]
 ID = r'[A-Za-z][A-Za-z0-9_]*'
+# doc/tables.md's names: AUTO's types and '-' for a regular point; the classes
+TYPES = {'-', 'ST', 'EP', 'LP', 'BP', 'HB', 'UZ', 'PD', 'TR', 'CP', 'BT', 'ZH', 'IS', 'MG', 'GH'}
+CLASSES = {'circular', 'periodic', 'quasiperiodic', 'irregular', 'transient', 'contact'}
 # doc/tables.md: | `command` | `table` or stdout | `columns` |
 want = {}
 for line in open(doc, encoding='utf-8'):
@@ -128,6 +131,17 @@ for row in open(listing, encoding='utf-8'):
         why.append('a row with another number of fields')
     if not data:
         why.append('no rows')
+    # the same spelling for the same thing in every command: a regular
+    # point is '-' (never AUTO's RG, which whirl run wrote), a class one
+    # of doc/tables.md's (never 'synchronous', which sfd onset wrote)
+    for col, allowed in (('type', TYPES), ('class', CLASSES)):
+        if col in head:
+            vals = set(l.split('\t')[head.index(col)] for l in data)
+            if not vals <= allowed:
+                why.append('%s %s not among %s' % (col, sorted(vals - allowed), sorted(allowed)))
+    if key == 'whirl run' and table == 'branches.tsv' and '-' not in {
+            l.split('\t')[2] for l in data}:
+        why.append("no regular point written '-'")
     try:
         with warnings.catch_warnings():
             warnings.simplefilter('error')
@@ -172,4 +186,18 @@ ok $? "whirl run sfd-rotating.whirl: branches.tsv 'branch pt type label Omega la
 [ "$(head -n 1 response.out/branches.tsv | cut -f 1-12,21)" = "$(printf 'branch\tpt\ttype\tlabel\tOmega\tlambda\tdelta\tzeta\talpha\tkappa\tperiod\tl2_norm\tstable')" ] &&
   [ "$(head -n 1 response.out/branches.tsv | cut -f 13)" = max_yd ]
 ok $? "whirl run examples/jeffcott/response.whirl: period, l2_norm, max_yd ... stable"
+# sfd onset names the class of the response from rest as sfd sweep does:
+# at Omega = 1 both say circular (onset's other classes: nonsynchronous,
+# contact)
+"$WHIRL" sfd onset --from 1 --to 9.5 --tol 4 --periods 300 --quiet > onset.txt 2> onset.err
+ok $? "whirl sfd onset --from 1 --to 9.5 $(head -c 200 onset.err)"
+"$WHIRL" sfd sweep --from 1 --to 1.5 --step 0.5 --periods 60 --direction up --no-plot \
+  --out sweep1 --quiet > sweep1.txt 2> sweep1.err
+c_sweep=$(awk -F'\t' '$2 + 0 == 1 { print $3; exit }' sweep1.txt)
+c_onset=$(awk -F'\t' '$1 + 0 == 1 { print $2; exit }' onset.txt)
+[ "$c_sweep" = circular ] && [ "$c_onset" = circular ]
+ok $? "Omega = 1 from rest: sfd sweep says '$c_sweep', sfd onset '$c_onset' (both circular)"
+bad=$(awk -F'\t' 'NR > 1 && $1 != "onset" && $2 != "circular" && $2 != "nonsynchronous" && $2 != "contact"' onset.txt)
+[ -z "$bad" ] && grep -q '	nonsynchronous	' onset.txt
+ok $? "sfd onset's classes are circular, nonsynchronous, contact: ${bad:-yes}"
 tap_end
