@@ -58,7 +58,7 @@ void ov_default_labels(const ov_run *runs, size_t n, char (*out)[256], char *com
   for (size_t k = 0; k < n; k++) {
     out[k][0] = '\0';
     if (!same || !some) { /* nothing to tell them apart by: their directories */
-      snprintf(out[k], 256, "%s", runs[k].dir);
+      snprintf(out[k], 256, "%.255s", runs[k].dir);
       continue;
     }
     for (size_t i = 0, used = 0; i < p[k].n; i++)

@@ -79,9 +79,24 @@ void whirl_cont_options_default(whirl_cont_options *o) {
 
 double cont_dot(const whirl_cont *c, const double *a, const double *b) {
   double s = 0.0;
-  for (size_t i = 0; i < c->n; ++i) s += a[i] * b[i];
-  const double w = c->opt.p_weight;
-  return s + w * w * a[c->n] * b[c->n];
+  for (size_t i = 0; i < c->N; ++i) s += c->w2[i] * a[i] * b[i];
+  return s;
+}
+
+double cont_dist2(const whirl_cont *c, const double *A, const double *B) {
+  double d2 = 0.0;
+  for (size_t i = 0; i < c->N; ++i) {
+    const double di = A[i] - B[i];
+    d2 += c->w2[i] * di * di;
+  }
+  return d2;
+}
+
+/* The squared weights of the arclength norm (AUTO's THU and THL). */
+static void set_weights(whirl_cont *c, const whirl_cont_options *opt) {
+  for (size_t i = 0; i < c->n; ++i)
+    c->w2[i] = opt->x_weight ? opt->x_weight[i] * opt->x_weight[i] : 1.0;
+  c->w2[c->n] = opt->p_weight * opt->p_weight;
 }
 
 static double cont_norm(const whirl_cont *c, const double *a) {
@@ -144,6 +159,13 @@ void cont_state_copy(const whirl_cont *c, cont_state *dst,
 
 /* ------------------------------------------------------------ alloc */
 
+/* The norm stays a norm with every x weight 0, since p_weight > 0. */
+static int weights_valid(const double *w, size_t n) {
+  for (size_t i = 0; i < n; ++i)
+    if (!(w[i] >= 0) || !isfinite(w[i])) return 0;
+  return 1;
+}
+
 whirl_cont *whirl_cont_alloc(const whirl_system *sys,
                              const whirl_cont_options *opt, char *errbuf,
                              size_t errlen) {
@@ -158,6 +180,8 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   else if (!(opt->newton_tol > 0) || opt->newton_maxit < 1)
     why = "need newton_tol > 0 and newton_maxit >= 1";
   else if (!(opt->p_weight > 0)) why = "need p_weight > 0";
+  else if (opt->x_weight && !weights_valid(opt->x_weight, sys->n))
+    why = "x_weight: need finite weights >= 0";
   else if (opt->newton_chord && !(opt->chord_theta > 0 && opt->chord_theta < 1))
     why = "chord Newton needs 0 < chord_theta < 1";
   else if (opt->linsol == WHIRL_LINSOL_SPARSE &&
@@ -199,12 +223,15 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   c->row2 = calloc(c->N, sizeof *c->row2);
   c->work = calloc(c->wlen, sizeof *c->work);
   c->dir = calloc(c->N, sizeof *c->dir);
+  c->w2 = calloc(c->N, sizeof *c->w2);
   c->Xprev = calloc(c->N, sizeof *c->Xprev);
   c->tprev = calloc(c->N, sizeof *c->tprev);
   c->Xstart = calloc(c->N, sizeof *c->Xstart);
-  if (!c->fp || !c->f || !c->rhs || !c->row || !c->row2 || !c->work || !c->dir ||
+  if (!c->fp || !c->f || !c->rhs || !c->row || !c->row2 || !c->work || !c->dir || !c->w2 ||
       !c->Xprev || !c->tprev || !c->Xstart)
     goto nomem;
+  set_weights(c, opt);
+  c->opt.x_weight = NULL; /* copied: the caller's array need not outlive c */
   /* a step's events: LP, BP, HB, PD, two bounds, the user values and the
    * system's tests; the queue holds their localisations (tail) and what
    * is emitted (head) */
@@ -251,6 +278,7 @@ void whirl_cont_free(whirl_cont *c) {
   free(c->row2);
   free(c->work);
   free(c->dir);
+  free(c->w2);
   free(c->Xprev);
   free(c->tprev);
   free(c->Xstart);
@@ -304,9 +332,7 @@ static int eval_jac(whirl_cont *c, const double *x, const double *p) {
  * general (dense or sparse) LU of the assembled matrix.  Returns 0, 2 for a
  * recoverable model failure, 3 for a singular matrix, < 0 fatal. */
 static void border_row(const whirl_cont *c, const double *dir, double *row) {
-  const double w = c->opt.p_weight;
-  for (size_t i = 0; i < c->n; ++i) row[i] = dir[i];
-  row[c->n] = w * w * dir[c->n];
+  for (size_t i = 0; i < c->N; ++i) row[i] = c->w2[i] * dir[i];
 }
 
 static int jac_factor(whirl_cont *c, const double *x, const double *p,
@@ -817,9 +843,8 @@ static int sgn(double v) { return (v > 0) - (v < 0); }
 static double seg_dist(const whirl_cont *c, const double *P, const double *A,
                        const double *B, double *u_out) {
   double ab = 0, ap = 0;
-  const double w2 = c->opt.p_weight * c->opt.p_weight;
   for (size_t i = 0; i < c->N; ++i) {
-    double wi = i == c->n ? w2 : 1.0;
+    const double wi = c->w2[i];
     ab += wi * (B[i] - A[i]) * (B[i] - A[i]);
     ap += wi * (P[i] - A[i]) * (B[i] - A[i]);
   }
@@ -828,23 +853,13 @@ static double seg_dist(const whirl_cont *c, const double *P, const double *A,
   u = u < 0 ? 0 : u > 1 ? 1 : u;
   double d = 0;
   for (size_t i = 0; i < c->N; ++i) {
-    double wi = i == c->n ? w2 : 1.0;
+    const double wi = c->w2[i];
     double r = P[i] - (A[i] + u * (B[i] - A[i]));
     d += wi * r * r;
   }
   return sqrt(d);
 }
 
-/* |A - B|² in the weighted norm of the arclength. */
-static double weighted_dist2(const whirl_cont *c, const double *A, const double *B) {
-  const double w2 = c->opt.p_weight * c->opt.p_weight;
-  double d2 = 0.0;
-  for (size_t i = 0; i < c->N; ++i) {
-    const double di = A[i] - B[i];
-    d2 += (i == c->n ? w2 : 1.0) * di * di;
-  }
-  return d2;
-}
 
 static int finish(whirl_cont *c, int reason) {
   c->done = 1;
@@ -866,12 +881,8 @@ static void curved_guess(whirl_cont *c) {
   const double *t = c->cur.t, *tp = c->tprev, h = c->hprev, ds = c->ds;
   double b = cont_dot(c, c->dir, t), a = 0.0;
   if (!(b > 0.1)) return; /* the hyperplane nearly contains the tangent */
-  {
-    const double w2 = c->opt.p_weight * c->opt.p_weight;
-    for (size_t i = 0; i < N; ++i)
-      a += (i == c->n ? w2 : 1.0) * c->dir[i] * (t[i] - tp[i]);
-    a *= 0.5 / h;
-  }
+  for (size_t i = 0; i < N; ++i) a += c->w2[i] * c->dir[i] * (t[i] - tp[i]);
+  a *= 0.5 / h;
   double sg = ds / b;
   const double d = 2.0 * a * sg + b;
   if (d > 0.0) sg -= (a * sg * sg + b * sg - ds) / d;
@@ -953,7 +964,7 @@ static int predict_correct(whirl_cont *c, double *cosang, int *its) {
       ++c->stats.rejected;
       continue;
     }
-    c->trial.s = c->cur.s + sqrt(weighted_dist2(c, c->trial.X, c->cur.X));
+    c->trial.s = c->cur.s + sqrt(cont_dist2(c, c->trial.X, c->cur.X));
     return 0;
   }
 }
@@ -1103,7 +1114,7 @@ static void add_event(whirl_cont *c, size_t *nev, int ev, size_t k, cont_state *
 static void fold_at_branch_point(whirl_cont *c, size_t nev) {
   cont_event *e = c->evs;
   if (nev >= 2 && e[0].ev == EV_LP && e[1].ev == EV_BP &&
-      sqrt(weighted_dist2(c, e[0].st->X, e[1].st->X)) <= 1e-2 * fabs(c->ds))
+      sqrt(cont_dist2(c, e[0].st->X, e[1].st->X)) <= 1e-2 * fabs(c->ds))
     cont_state_copy(c, e[0].st, e[1].st);
 }
 

@@ -71,6 +71,8 @@ struct whirl_cont {
   cont_state out;     /* storage behind the point returned to the caller */
   whirl_point pt;
 
+  double *w2;         /* N: weights of the squared components in the
+                         arclength norm (opt.x_weight², opt.p_weight²) */
   double *dir;        /* N: predictor direction of the current step */
   double *Xprev;      /* N: previous accepted point (secant predictor) */
   int have_prev;
@@ -102,8 +104,12 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
  * taken from dir (the predictor direction); st->t is oriented along dir. */
 int cont_analyse(whirl_cont *c, cont_state *st, const double *dir);
 
-/* Weighted inner product of N-vectors (parameter weighted by p_weight^2). */
+/* Weighted inner product of N-vectors: sum of w2[i] a[i] b[i], w2 the
+ * squared weights of the components (x_weight, p_weight). */
 double cont_dot(const whirl_cont *c, const double *a, const double *b);
+
+/* |A - B|² in the same weighted norm. */
+double cont_dist2(const whirl_cont *c, const double *A, const double *B);
 
 /* Copy a state (all arrays). */
 void cont_state_copy(const whirl_cont *c, cont_state *dst,

@@ -200,12 +200,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
       for (size_t i = 0; i < N; ++i) out->t[i] /= nt;
     out->psi_lp = out->t[c->n];
   }
-  double d2 = 0.0;
-  for (size_t i = 0; i < N; ++i) {
-    const double di = out->X[i] - a->X[i];
-    d2 += (i == c->n ? c->opt.p_weight * c->opt.p_weight : 1.0) * di * di;
-  }
-  out->s = a->s + sqrt(d2);
+  out->s = a->s + sqrt(cont_dist2(c, out->X, a->X));
   out->p[c->opt.icp] = out->X[c->n];
   return 0;
 }

@@ -286,6 +286,46 @@ static int user_points(ctx *c) {
   return WHIRL_OK;
 }
 
+/* THL = {k: w} (parameters, PERIOD) and THU = {k: w} (state components):
+ * the weights of the arclength norm, copied where they name what the model
+ * has; THL of a parameter beyond NPAR (e.g. PAR(11) of equilibria) is
+ * noted and left out. */
+static int arclength_weights(ctx *c) {
+  int ndim = 0;
+  whirl_auto_constants_int(c->ac, "NDIM", &ndim);
+  static const char *const keys[] = {"THL", "THU"};
+  for (int k = 0; k < 2; k++) {
+    const size_t n = whirl_auto_constants_count(c->ac, keys[k]);
+    char dict[1024] = "", left[256] = "";
+    size_t used = 0, nleft = 0;
+    for (size_t i = 0; i < n; i++) {
+      whirl_auto_item it;
+      char ref[32], nb[40];
+      whirl_auto_constants_item(c->ac, keys[k], i, &it);
+      if (it.nvalues != 1)
+        return whirl_auto_constants_fail(c->ac, whirl_auto_constants_line(c->ac, keys[k]),
+                                         "%s: one weight an index", keys[k]);
+      int r = k ? state_ref(c, keys[k], &it, ndim) : par_ref(c, keys[k], &it, ref, sizeof ref);
+      if (r < 0 || (k && r == 0)) return WHIRL_EINVAL;
+      if (r == 0) { /* THL of a parameter the model does not have */
+        nleft += (size_t)snprintf(left + nleft, nleft < sizeof left ? sizeof left - nleft : 0,
+                                  "%s%d", nleft ? ", " : "", it.index);
+        continue;
+      }
+      if (k) snprintf(ref, sizeof ref, "%d", r);
+      used += (size_t)snprintf(dict + used, used < sizeof dict ? sizeof dict - used : 0,
+                               "%s%s: %s", used ? ", " : "", ref, num(it.values[0], nb, sizeof nb));
+    }
+    if (used >= sizeof dict || nleft >= sizeof left)
+      return whirl_auto_constants_fail(c->ac, whirl_auto_constants_line(c->ac, keys[k]),
+                                       "%s: too many weights", keys[k]);
+    if (used) put(c->t, "%s    = {%s}\n", keys[k], dict);
+    if (nleft) put(c->t, "# note: %s on PAR(%s): not a parameter of the model, ignored\n",
+                   keys[k], left);
+  }
+  return WHIRL_OK;
+}
+
 /* dat = 'NAME': DAT, the file NAME, else NAME.dat, in opts->dir (AUTO-07p
  * opens them in that order, toolboxbv.f90 STPNUB); a start of orbits only. */
 static int dat(ctx *c) {
@@ -315,7 +355,7 @@ static int dat(ctx *c) {
 
 /* Keys whirl has no use for yet: noted. */
 static int unused(ctx *c) {
-  static const char *const noted[] = {"THL", "THU", "STOP", "SP", "IEQUIB", "ITWIST",
+  static const char *const noted[] = {"STOP", "SP", "IEQUIB", "ITWIST",
                                       "ISTART", "IREV", "IFIXED", "IPSI", "TY"};
   for (size_t i = 0; i < sizeof noted / sizeof *noted; i++)
     if (whirl_auto_constants_line(c->ac, noted[i]))
@@ -339,6 +379,7 @@ int whirl_auto_constants_runfile(whirl_auto_constants *ac, const whirl_auto_runf
   if (!rc) copy_same(&c);
   if (!rc) rc = values(&c);
   if (!rc) rc = user_points(&c);
+  if (!rc) rc = arclength_weights(&c);
   if (!rc) rc = dat(&c);
   if (!rc) rc = unused(&c);
   if (!rc && t.oom) rc = WHIRL_ENOMEM;

@@ -189,6 +189,63 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
   return 0;
 }
 
+/* AUTO's THL and THU as the weights of the arclength norm (whirl_cont
+ * options p_weight, x_weight; AUTO-07p manual, THL, THU): THU on a state
+ * component (at every mesh node of an orbit), THL on the continuation
+ * parameter and on the period of an autonomous orbit (PERIOD, AUTO's
+ * PAR(11): THL = {11: 0} takes it out of the step length).  The weights are
+ * of the squares, as AUTO's; the unknowns of fold and Hopf loci and of
+ * harmonic balance keep weight 1.  0, -1 (memory), -2 (bad input, said);
+ * *xw is NULL or malloc'd (the caller frees it after whirl_cont_alloc). */
+static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *o,
+                          double **xw) {
+  const whirl_run_settings *s = R->s;
+  *xw = NULL;
+  if (!s->nthl && !s->nthu) return 0;
+  const int base = (b->kind == WHIRL_SOL_EQ && b->sys->n == R->n) ||
+                   (b->kind == WHIRL_SOL_COLLOC && b->sys == whirl_colloc_system(b->colloc));
+  const int orbit = b->kind == WHIRL_SOL_COLLOC, aut = orbit && R->model->forcing_param < 0;
+  double wT = 1.0;
+  for (size_t i = 0; i < s->nthl; i++) {
+    const whirl_run_value *v = &s->thl[i];
+    int k = run_par_index(R, &v->ref);
+    if (orbit && (v->ref.index == 11 || !strcasecmp(v->ref.name, "PERIOD"))) {
+      if (aut) wT = v->value;
+    } else if (k < 0) {
+      run_fail(R, WHIRL_RK_THL, "THL: '%s' is not a parameter of model '%s'",
+               v->ref.index ? "(index)" : v->ref.name, R->prob.name);
+      return -2;
+    } else if (k == b->icp) {
+      if (!(v->value > 0)) {
+        run_fail(R, WHIRL_RK_THL, "THL: the continuation parameter's weight must be > 0");
+        return -2;
+      }
+      o->p_weight = sqrt(v->value);
+    }
+  }
+  if (!base || (wT == 1.0 && !s->nthu)) return 0;
+  *xw = malloc(b->nb * sizeof **xw);
+  if (!*xw) return -1;
+  for (size_t i = 0; i < b->nb; i++) (*xw)[i] = 1.0;
+  for (size_t i = 0; i < s->nthu; i++) {
+    const int xi = run_state_index(R, &s->thu[i].ref);
+    if (xi < 0) {
+      run_fail(R, WHIRL_RK_THU, "THU: '%s' is not a state component of model '%s'",
+               s->thu[i].ref.index ? "(index)" : s->thu[i].ref.name, R->prob.name);
+      free(*xw), *xw = NULL;
+      return -2;
+    }
+    for (size_t j = (size_t)xi; j < b->nb - (size_t)aut; j += R->n) (*xw)[j] = sqrt(s->thu[i].value);
+  }
+  if (aut) (*xw)[b->nb - 1] = sqrt(wT);
+  o->x_weight = *xw;
+  for (size_t i = 0; i < b->nb; i++) if ((*xw)[i] > 0) return 0;
+  run_fail(R, s->nthu ? WHIRL_RK_THU : WHIRL_RK_THL, "THL, THU: every weight of the "
+           "unknowns is 0 (the step length would measure the parameter alone)");
+  free(*xw), *xw = NULL;
+  return -2;
+}
+
 /* A labelled point: its block in the solutions file, and (special points)
  * its line in the log. */
 static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
@@ -322,12 +379,16 @@ int run_branch(run_ctx *R, branch_spec *b) {
   uz_ctx uc = {R, b, {0}, NULL, NULL};
   if (branch_options(R, b, &o, uz, uz_stop, &uc)) return -2;
   char err[512];
+  double *xw = NULL;
+  int rc = branch_weights(R, b, &o, &xw);
+  if (rc) return rc;
   whirl_cont *c = whirl_cont_alloc(b->sys, &o, err, sizeof err);
+  free(xw);
   if (!c) {
     run_say(R, "%s", err);
     return -1;
   }
-  int dir = b->dir_sign ? b->dir_sign : s->ds < 0 ? -1 : 1, rc;
+  int dir = b->dir_sign ? b->dir_sign : s->ds < 0 ? -1 : 1;
   double *pfull = malloc(R->npar * sizeof *pfull);
   double *state = malloc(R->n * sizeof *state);
   if (!pfull || !state) {

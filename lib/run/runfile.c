@@ -87,6 +87,8 @@ static const key_def keys[] = {
     {WHIRL_RK_POINTS, "POINTS", "study_points", NULL, K_STRING},
     {WHIRL_RK_BASIN_SEEDS, "BASIN_SEEDS", "basin_seeds", NULL, K_INT},
     {WHIRL_RK_BASIN_METHOD, "BASIN_METHOD", "basin_method", NULL, K_METHOD},
+    {WHIRL_RK_THL, "THL", "parameter_weights", NULL, K_VALDICT},
+    {WHIRL_RK_THU, "THU", "state_weights", NULL, K_VALDICT},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -94,8 +96,8 @@ static const key_def keys[] = {
  * noted in the run's log): they control output, AUTO's own iteration
  * details or boundary-value problems with none of them set. */
 static const char *const ignored_keys[] = {
-    "ITMX", "NWTN", "IID", "NBC", "NINT", "MXBF", "IADS", "THL",
-    "THU", "NTHL", "NTHU", "NUZR", "NPAR", "SP", "STOP", "UNAMES",
+    "ITMX", "NWTN", "IID", "NBC", "NINT", "MXBF", "IADS",
+    "NTHL", "NTHU", "NUZR", "NPAR", "SP", "STOP", "UNAMES",
     "PARNAMES", "NUNSTAB", "NSTAB", "IIS", "IBR", "LAB", "TY", "EFILE",
     "SFILE", "NPRM", "DATFILE"};
 #define NIGNORED (sizeof ignored_keys / sizeof ignored_keys[0])
@@ -747,7 +749,8 @@ static int set_reflist(whirl_runfile *rf, const key_def *d, const char *where) {
   return WHIRL_OK;
 }
 
-/* PAR, U (a dictionary or a positional list), UZR, UZSTOP (dictionaries). */
+/* PAR, U, THL, THU (a dictionary or a positional list), UZR, UZSTOP
+ * (dictionaries). */
 static int set_values(whirl_runfile *rf, const key_def *d, const char *where) {
   whirl_run_settings *s = &rf->s;
   const pvalue *v = &rf->v;
@@ -757,11 +760,15 @@ static int set_values(whirl_runfile *rf, const key_def *d, const char *where) {
                          : d->key == WHIRL_RK_U ? s->u
                          : d->key == WHIRL_RK_UZR ? s->uzr
                          : d->key == WHIRL_RK_STUDY ? s->study
+                         : d->key == WHIRL_RK_THL ? s->thl
+                         : d->key == WHIRL_RK_THU ? s->thu
                                                   : s->uzstop;
   size_t *cnt = d->key == WHIRL_RK_PAR ? &s->npar
                 : d->key == WHIRL_RK_U ? &s->nu
                 : d->key == WHIRL_RK_UZR ? &s->nuzr
                 : d->key == WHIRL_RK_STUDY ? &s->nstudy
+                : d->key == WHIRL_RK_THL ? &s->nthl
+                : d->key == WHIRL_RK_THU ? &s->nthu
                                          : &s->nuzstop;
   if (v->kind != V_DICT && d->kind == K_UZDICT)
     return fail(rf, where, "%s: expected a dictionary {parameter: "
@@ -787,6 +794,10 @@ static int set_values(whirl_runfile *rf, const key_def *d, const char *where) {
     }
     if (v->it[i].quoted || to_double(v->it[i].text, &e->value))
       return fail(rf, where, "%s: '%s' is not a finite number", kn,
+                  show(v->it[i].text, ITEMLEN, shown, sizeof shown));
+    if ((d->key == WHIRL_RK_THL || d->key == WHIRL_RK_THU) && e->value < 0)
+      return fail(rf, where, "%s: weight %s is negative (a weight of the "
+                  "arclength norm is >= 0)", kn,
                   show(v->it[i].text, ITEMLEN, shown, sizeof shown));
   }
   *cnt = v->n;
@@ -1336,6 +1347,8 @@ size_t whirl_runfile_count(const whirl_runfile *rf, whirl_run_key k) {
     case WHIRL_RK_BASIN_ATTRACTORS: return s->nattractors;
     case WHIRL_RK_DISCOVER: return s->ndiscover;
     case WHIRL_RK_STUDY: return s->nstudy;
+    case WHIRL_RK_THL: return s->nthl;
+    case WHIRL_RK_THU: return s->nthu;
     case WHIRL_RK_DISCOVER_BOX: return s->nbox;
     default: return 0;
   }
@@ -1350,6 +1363,8 @@ static const whirl_run_value *value_list(const whirl_run_settings *s,
     case WHIRL_RK_UZR: return s->uzr;
     case WHIRL_RK_UZSTOP: return s->uzstop;
     case WHIRL_RK_STUDY: return s->study;
+    case WHIRL_RK_THL: return s->thl;
+    case WHIRL_RK_THU: return s->thu;
     default: return NULL;
   }
 }

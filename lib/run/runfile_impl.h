@@ -38,6 +38,10 @@ typedef struct whirl_run_settings {
   size_t nuzr;
   whirl_run_value uzstop[WHIRL_RUN_MAXITEMS];
   size_t nuzstop;
+  whirl_run_value thl[WHIRL_RUN_MAXITEMS]; /* THL: {parameter or PERIOD: weight} */
+  size_t nthl;
+  whirl_run_value thu[WHIRL_RUN_MAXITEMS]; /* THU: {state component: weight} */
+  size_t nthu;
   char plot[WHIRL_RUN_MAXNAME]; /* y axis of the picture: "" L2-NORM */
   whirl_run_range axes[2];      /* basins: two state components and ranges */
   size_t naxes;

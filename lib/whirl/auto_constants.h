@@ -124,11 +124,11 @@ WHIRL_API int whirl_auto_constants_item(const whirl_auto_constants *ac,
  * The run file `whirl run` executes for these constants: the keys whirl
  * shares with AUTO copied (NDIM, IPS, ILP, ISP, ISW, NTST, NCOL, IAD, NMX,
  * NPR, RL0, RL1, A0, A1, EPS*, DS*, ITNW, JAC, PAR, U, the AUTO keys whirl
- * accepts and ignores), indices for names (parnames, unames; PERIOD and
+ * accepts and ignores), THL and THU (the arclength weights), indices for names (parnames, unames; PERIOD and
  * PAR(11) of orbits as PERIOD), UZR's negative indices as UZSTOP, IRS with
  * S = opts->restart.  What whirl cannot do yet is refused (IPS other than
- * 1 and 2, dat) with the line of the key; what it does not use (THL, THU,
- * STOP, SP, UZR on PVLS quantities beyond NPAR) is written as a "# note:"
+ * 1 and 2, dat) with the line of the key; what it does not use (THL
+ * beyond NPAR, STOP, SP, UZR on PVLS quantities beyond NPAR) is written as a "# note:"
  * comment, so run.log shows it.  *text is malloc'd (the caller frees). */
 typedef struct whirl_auto_runfile_opts {
   const char *model;   /* `model = ` (a plug-in path) */

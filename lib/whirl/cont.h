@@ -82,6 +82,12 @@ typedef struct whirl_cont_options {
   double p_min, p_max; /* RL0, RL1: bounds of the free parameter */
   double x_max;        /* A1-like bound on |x|_inf (0: none) */
   double p_weight;     /* weight of the parameter in the arclength norm */
+  const double *x_weight; /* NULL (1 each), or n weights of the components
+                          of x in the arclength norm: |(x, p)|² =
+                          sum (x_weight[i] x[i])² + (p_weight p)², as AUTO's
+                          THU and THL (0 takes a component out of the
+                          step length, e.g. the period: THL = {11: 0});
+                          copied by whirl_cont_alloc */
   double newton_tol;   /* EPSL/EPSU: |dx|_inf <= tol*(1+|x|_inf), |F| <= tol */
   int newton_maxit;    /* ITNW */
   int newton_fast;     /* iterations at or below which the step may grow */
@@ -137,7 +143,7 @@ typedef struct whirl_cont_options {
 } whirl_cont_options;
 
 /* Defaults: icp 0, ds 1e-2, ds_min 1e-8, ds_max 0.5, nmx 1000, p bounds
- * +-1e30, p_weight 1, newton_tol 1e-10, newton_maxit 12, newton_fast 3,
+ * +-1e30, p_weight 1, x_weight NULL, newton_tol 1e-10, newton_maxit 12, newton_fast 3,
  * Newton (newton_chord 0, chord_theta 0.25 when set),
  * max_angle 0.2 rad, secant predictor, all detections on, loop detection on,
  * loc_tol 1e-12, dense solver, the system's structured solver if any. */

@@ -48,6 +48,7 @@ typedef enum whirl_run_key {
   WHIRL_RK_DAT,  /* a start orbit from a data file (AUTO's dat) */
   WHIRL_RK_POINTS, WHIRL_RK_BASIN_SEEDS,
   WHIRL_RK_BASIN_METHOD, /* the integrator of basins (whirl_ode_method) */
+  WHIRL_RK_THL, WHIRL_RK_THU, /* AUTO's weights of the arclength norm */
   WHIRL_RK_IGNORED, /* AUTO keys whirl accepts and ignores (ITMX, NWTN, ...) */
   WHIRL_RK_COUNT
 } whirl_run_key;

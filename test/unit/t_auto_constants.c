@@ -153,7 +153,7 @@ static void runfile(void) {
       "UZR={-1: 0.25, 'Da': [0.1, 0.2], 22: 0.0, 11: 5}\n"
       "parnames={1: 'Da'}, unames={1: 'x'}\n"
       "NPAR=3, DS=0.01\n"
-      "THL={11: 0}\n"
+      "THL={11: 0, 2: 3, 5: 1}, THU={'x': 0.5}\n"
       "U={'x': 1.5}\n", &rc);
   const whirl_auto_runfile_opts o = {"m.so", "prev.out", NULL, "o.out", 3, NULL};
   char *t = NULL;
@@ -165,7 +165,8 @@ static void runfile(void) {
       "\nIRS    = 3\n", "\nNDIM   = 2\n", "\nDS     = 0.01\n", "\nU      = {1: 1.5}\n",
       "\n# note: UZR on PAR(22): not a parameter of the model (a PVLS quantity?), ignored\n",
       "\nUZR    = {1: [0.1, 0.2], PERIOD: [5]}\n", "\nUZSTOP = {1: [0.25]}\n",
-      "\n# note: THL (line 6) is not used by whirl\n"};
+      "\nTHL    = {PERIOD: 0, 2: 3}\n", "\nTHU    = {1: 0.5}\n",
+      "\n# note: THL on PAR(5): not a parameter of the model, ignored\n"};
   for (size_t i = 0; i < sizeof want / sizeof *want; i++)
     ok(t && strstr(t, want[i]), "run file has '%.*s'", (int)strlen(want[i]) - 2, want[i] + 1);
   whirl_runfile *rf = whirl_runfile_alloc();

@@ -497,6 +497,67 @@ static void test_two_at_once(void) {
   whirl_cont_free(c2);
 }
 
+
+/* ---- a straight line x = (p, 100 p): the arclength per unit p is
+ * sqrt(1 + 1e4 + 1) with unit weights and sqrt(2) when the second
+ * component's weight is 0 (AUTO's THU), sqrt(1 + 1e4 + 4) with p_weight 2
+ * (THL).  With the step held at ds, n steps advance p by n ds / that. */
+static int line_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[0] - p[0];
+  f[1] = x[1] - 100.0 * p[0];
+  return 0;
+}
+
+static double line_p_after(const double *xw, double pw, int nsteps, double *s_out) {
+  whirl_system s = {.name = "line", .n = 2, .npar = 1, .F = line_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = o.ds_max = 0.01;
+  o.x_weight = xw;
+  o.p_weight = pw;
+  char err[256];
+  whirl_cont *c = whirl_cont_alloc(&s, &o, err, sizeof err);
+  double x0[2] = {0, 0}, p0 = 0;
+  double p = NAN;
+  if (c && whirl_cont_start(c, x0, &p0, +1) == WHIRL_OK) {
+    /* the first step returns the start point, index 0 */
+    while (whirl_cont_step(c) == WHIRL_OK && whirl_cont_point(c)->index < (size_t)nsteps)
+      ;
+    if (whirl_cont_point(c)->index == (size_t)nsteps) {
+      p = whirl_cont_point(c)->p[0];
+      *s_out = whirl_cont_point(c)->s;
+    }
+  }
+  whirl_cont_free(c);
+  return p;
+}
+
+static void test_weights(void) {
+  double s = NAN;
+  const double w_out[2] = {1.0, 0.0}, w_half[2] = {0.5, 0.5};
+  is_rel(line_p_after(NULL, 1.0, 10, &s), 0.1 / sqrt(10002.0), 1e-10,
+         "unit weights: 10 steps of 0.01 advance p by 0.1/sqrt(10002)");
+  is_rel(s, 0.1, 1e-10, "unit weights: arclength 0.1");
+  is_rel(line_p_after(w_out, 1.0, 10, &s), 0.1 / sqrt(2.0), 1e-10,
+         "x_weight {1, 0}: the second component is out of the step (p by 0.1/sqrt 2)");
+  is_rel(s, 0.1, 1e-10, "x_weight {1, 0}: arclength 0.1 in the weighted norm");
+  is_rel(line_p_after(w_half, 2.0, 10, &s), 0.1 / sqrt(0.25 + 2500.0 + 4.0), 1e-10,
+         "x_weight {0.5, 0.5}, p_weight 2: p by 0.1/sqrt(2504.25)");
+  whirl_system sys = {.name = "line", .n = 2, .npar = 1, .F = line_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  char err[256] = "";
+  const double w_zero[2] = {0, 0}, w_neg[2] = {1, -1}, w_nan[2] = {1, NAN};
+  o.x_weight = w_neg;
+  ok(!whirl_cont_alloc(&sys, &o, err, sizeof err) && strstr(err, "x_weight"),
+     "a negative x_weight is refused: %s", err);
+  o.x_weight = w_nan;
+  ok(!whirl_cont_alloc(&sys, &o, err, sizeof err), "a NaN x_weight is refused");
+  is_rel(line_p_after(w_zero, 1.0, 10, &s), 0.1, 1e-10,
+         "x_weight all 0: the step is in p alone (natural parameter), p by 0.1");
+}
+
 static void test_errors(void) {
   whirl_system s = {.name = "cusp", .n = 1, .npar = 2, .F = cusp_F};
   whirl_cont_options o;
@@ -619,6 +680,7 @@ int main(void) {
   test_uz_fun();
   test_bratu();
   test_two_at_once();
+  test_weights();
   test_errors();
   return done_testing();
 }

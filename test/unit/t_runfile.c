@@ -111,6 +111,38 @@ static void check_basin_method(void) {
   whirl_runfile_free(rf);
 }
 
+
+/* THL and THU: weights of the arclength norm, by name or index; a negative
+ * weight is refused at its line */
+static void check_weights(void) {
+  whirl_runfile *rf = whirl_runfile_alloc();
+  whirl_run_value it;
+  const char good[] = "model = sfd\nTHL = {PERIOD: 0, Omega: 2}\nTHU = {1: 0.5}\n",
+             neg[] = "model = sfd\n\nTHU = {2: -1}\n";
+  int rc = whirl_runfile_parse(rf, "w.whirl", good, sizeof good - 1);
+  ok(rc == WHIRL_OK && whirl_runfile_count(rf, WHIRL_RK_THL) == 2 &&
+         whirl_runfile_count(rf, WHIRL_RK_THU) == 1,
+     "THL has 2 weights, THU 1 (%s)", whirl_runfile_errmsg(rf));
+  ok(whirl_runfile_item(rf, WHIRL_RK_THL, 0, &it) == WHIRL_OK &&
+         strcmp(it.ref.name, "PERIOD") == 0 && it.value == 0,
+     "THL[0] is PERIOD: 0");
+  ok(whirl_runfile_item(rf, WHIRL_RK_THL, 1, &it) == WHIRL_OK &&
+         strcmp(it.ref.name, "Omega") == 0 && it.value == 2,
+     "THL[1] is Omega: 2");
+  ok(whirl_runfile_item(rf, WHIRL_RK_THU, 0, &it) == WHIRL_OK && it.ref.index == 1 &&
+         it.value == 0.5,
+     "THU[0] is 1: 0.5");
+  ok(strstr(whirl_runfile_ignored(rf) ? whirl_runfile_ignored(rf) : "", "THL") == NULL,
+     "THL is not among the ignored keys");
+  whirl_runfile_free(rf);
+  rf = whirl_runfile_alloc();
+  ok(whirl_runfile_parse(rf, "w.whirl", neg, sizeof neg - 1) == WHIRL_EINVAL &&
+         strncmp(whirl_runfile_errmsg(rf), "w.whirl:3: ", 11) == 0 &&
+         strstr(whirl_runfile_errmsg(rf), "negative"),
+     "a negative THU weight refused at its line: %s", whirl_runfile_errmsg(rf));
+  whirl_runfile_free(rf);
+}
+
 int main(void) {
   whirl_runfile *rf = whirl_runfile_alloc();
   ok(rf != NULL, "alloc");
@@ -121,5 +153,6 @@ int main(void) {
   whirl_runfile_free(rf);
   check_error();
   check_basin_method();
+  check_weights();
   return done_testing();
 }
