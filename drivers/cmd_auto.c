@@ -262,7 +262,8 @@ static int fits(const auto_run *r, const whirl_solution *S) {
   int ips = 1, isw = 1;
   whirl_auto_constants_int(r->ac, "IPS", &ips);
   whirl_auto_constants_int(r->ac, "ISW", &isw);
-  const char *t = S->ty;
+  /* a point of a locus restarts that locus (ISW = 2) */
+  const char *t = abs(isw) == 2 && S->icp2 >= 0 && S->locus[0] ? S->locus : S->ty;
   if (ips == 1)
     return S->kind == WHIRL_SOL_EQ && (isw == 2 ? !strcmp(t, "LP") || !strcmp(t, "HB")
                                        : isw == -1 ? !strcmp(t, "BP") : 1);

@@ -261,6 +261,11 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
   so.kind = b->kind;
   so.icp = b->q >= 0 ? b->q : b->icp;
   so.icp2 = b->q >= 0 ? b->icp : -1;
+  if (b->fold)
+    snprintf(so.locus, sizeof so.locus, "%s",
+             whirl_fold_point_type(b->fold) == WHIRL_PT_PD ? "PD" : "LP");
+  else if (b->hopf)
+    snprintf(so.locus, sizeof so.locus, "HB");
   so.npar = R->npar;
   so.nx = b->nb;
   so.par = pfull;
@@ -580,20 +585,38 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
   char err[512];
   b->q = q;
   b->icp = other;
-  if (!strcmp(so->ty, "LP")) {
+  /* a point of a locus continues that locus; else the label's own type */
+  const char *ty = so->icp2 >= 0 && so->locus[0] ? so->locus : so->ty;
+  const int pd = !strcmp(ty, "PD") && b->kind == WHIRL_SOL_COLLOC && O->colloc;
+  if (!strcmp(ty, "LP") || pd) {
     whirl_fold_options fo;
     whirl_fold_options_default(&fo, (size_t)q);
+    whirl_fold_operator op;
+    size_t *ei = NULL, *ej = NULL;
+    double *ev = NULL;
+    if (pd) { /* the period-doubling locus: the antiperiodic operator */
+      ei = malloc(R->n * sizeof *ei);
+      ej = malloc(R->n * sizeof *ej);
+      ev = malloc(R->n * sizeof *ev);
+      if (!ei || !ej || !ev) {
+        free(ei), free(ej), free(ev);
+        return -1;
+      }
+      whirl_colloc_pd_operator(O->colloc, &op, ei, ej, ev);
+      fo.op = &op;
+    }
     O->fold = whirl_fold_alloc(base, &fo, err, sizeof err);
+    free(ei), free(ej), free(ev);
     if (!O->fold) goto fail_alloc;
     O->Z = malloc((whirl_fold_size(O->fold) + 1) * sizeof *O->Z);
     if (!O->Z) return -1;
     if (whirl_fold_init(O->fold, x, p, O->Z) != WHIRL_OK) {
-      run_say(R, "fold locus: %s", whirl_fold_errmsg(O->fold));
+      run_say(R, "%s locus: %s", pd ? "period-doubling" : "fold", whirl_fold_errmsg(O->fold));
       return -1;
     }
     b->fold = O->fold;
     b->sys = whirl_fold_system(O->fold);
-  } else if (!strcmp(so->ty, "HB") && so->kind == WHIRL_SOL_EQ) {
+  } else if (!strcmp(ty, "HB") && so->kind == WHIRL_SOL_EQ) {
     O->hopf = whirl_hopf_alloc(base, (size_t)q, err, sizeof err);
     if (!O->hopf) goto fail_alloc;
     O->Z = malloc((whirl_hopf_size(O->hopf) + 1) * sizeof *O->Z);
@@ -605,8 +628,9 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
     b->hopf = O->hopf;
     b->sys = whirl_hopf_system(O->hopf);
   } else {
-    run_fail(R, WHIRL_RK_ISW, "ISW = 2 needs an LP (any problem) or an HB of "
-             "equilibria; label %d is %s%s (loci of %s are not available)",
+    run_fail(R, WHIRL_RK_ISW, "ISW = 2 needs an LP (any problem), an HB of "
+             "equilibria or a PD of periodic orbits by collocation; label %d is "
+             "%s%s (loci of %s are not available)",
              so->label, so->ty, so->kind == WHIRL_SOL_EQ ? "" : " of periodic orbits",
              so->ty);
     return -2;

@@ -36,6 +36,7 @@ int whirl_solution_write(FILE *f, const whirl_solution *s) {
           s->icp2 + 1, s->nx, s->stable);
   if (s->kind == WHIRL_SOL_COLLOC) fprintf(f, " NTST %d NCOL %d", s->ntst, s->ncol);
   if (s->kind == WHIRL_SOL_HBM) fprintf(f, " NHB %d", s->nhb);
+  if (s->icp2 >= 0 && s->locus[0]) fprintf(f, " LOCUS %s", s->locus);
   fputc('\n', f);
   put_vec(f, "PAR", s->par, s->npar);
   put_vec(f, "X", s->x, s->nx);
@@ -194,6 +195,14 @@ static int rd_lab(reader *r, size_t npar, whirl_solution *s) {
   } else {
     return bad(r, "label %d: unknown KIND '%s' (eq, colloc or hbm)", s->label,
                shown(kind, b));
+  }
+  if (!strncmp(p, " LOCUS ", 7)) { /* loci (optional: older files lack it) */
+    char loc[8];
+    if (lab_word(r, &p, "LOCUS", loc, sizeof loc)) return -1;
+    if (s->icp2 < 0 || (strcmp(loc, "LP") && strcmp(loc, "PD") && strcmp(loc, "HB")))
+      return bad(r, "label %d: LOCUS '%s' (LP, PD or HB, on a locus: ICP2 > 0)",
+                 s->label, shown(loc, b));
+    memcpy(s->locus, loc, 3);
   }
   if (*p) return bad(r, "label %d: unexpected '%s' at the end of the LAB line",
                      s->label, shown(p + 1, b));

@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include <whirl/colloc.h>
+#include <whirl/cont.h>
 #include <whirl/floquet.h>
 #include <whirl/ode.h>
 
@@ -697,6 +698,24 @@ const whirl_system *whirl_colloc_system(const whirl_colloc *c) {
 }
 
 size_t whirl_colloc_size(const whirl_colloc *c) { return c ? c->nx : 0; }
+
+void whirl_colloc_pd_operator(const whirl_colloc *c, whirl_fold_operator *op,
+                              size_t *ei, size_t *ej, double *ev) {
+  const size_t n = c->n, rows = n * c->ntst * c->ncol; /* the periodicity rows follow */
+  for (size_t r = 0; r < n; ++r) { /* -1 at x(0) in x(1) - x(0) becomes +1 */
+    ei[r] = rows + r;
+    ej[r] = r;
+    ev[r] = 2.0;
+  }
+  memset(op, 0, sizeof *op);
+  op->na = n * c->nnodes;
+  op->ne = n;
+  op->ei = ei;
+  op->ej = ej;
+  op->ev = ev;
+  op->point_type = WHIRL_PT_PD;
+  op->name = "period-doubling curve";
+}
 
 const double *whirl_colloc_mesh(const whirl_colloc *c) {
   return c ? c->mesh : NULL;

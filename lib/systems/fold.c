@@ -20,13 +20,18 @@ struct whirl_fold {
   whirl_system sys;
   whirl_fold_options o;
   size_t n, N;       /* base size, fold-system size n + nfree + (cond) */
-  double *b, *c;     /* borders [n]: left and right null vector estimates */
-  whirl_linsol *ls;  /* dense LU of M = [F_x b; c^T 0], order n + 1 */
+  size_t na;         /* order of the singular operator A (n for F_x) */
+  size_t ne;         /* its constant entries (an operator's E) */
+  size_t *e_row, *e_col;
+  double *e_val;
+  int point_type;    /* WHIRL_PT_LP, or the operator's */
+  double *b, *c;     /* borders [na]: left and right null vector estimates */
+  whirl_linsol *ls;  /* dense LU of M = [A b; c^T 0], order na + 1 */
   whirl_eig *eig;    /* eigenvalues of F_x for the zero-Hopf test */
   double *M;         /* (n+1)^2 */
   double *A;         /* F_x at the current point, n*n */
   double *Ap, *Am;   /* F_x at shifted points, n*n each */
-  double *v, *w;     /* n + 1: null vectors and g */
+  double *v, *w;     /* na + 1: null vectors and g (v, w of A) */
   double *phi;       /* n + 1: F_x phi = -F_q (bordered) */
   double *pf, *pq;   /* npar: full parameter vectors */
   double *xs;        /* n: shifted state */
@@ -82,27 +87,29 @@ static int jac(whirl_fold *f, const double *x, const double *p, double *J) {
   return whirl_system_jacobian(&f->base, x, p, J, f->work);
 }
 
-/* F_x at (x, p) into f->A, the bordered LU, and the null vectors: f->v =
- * (v, g) and f->w = (w, g). */
+/* F_x at (x, p) into f->A, the bordered LU of [A b; c^T 0] with A its
+ * leading na x na block plus E, and the null vectors: f->v = (v, g) and
+ * f->w = (w, g). */
 static int null_solve(whirl_fold *f, const double *x, const double *p) {
-  const size_t n = f->n, m = n + 1;
+  const size_t n = f->n, na = f->na, m = na + 1;
   int rc = jac(f, x, p, f->A);
   if (rc != 0) return rc;
-  for (size_t j = 0; j < n; ++j) {
-    memcpy(f->M + m * j, f->A + n * j, n * sizeof *f->M);
-    f->M[n + m * j] = f->c[j];
+  for (size_t j = 0; j < na; ++j) {
+    memcpy(f->M + m * j, f->A + n * j, na * sizeof *f->M);
+    f->M[na + m * j] = f->c[j];
   }
-  memcpy(f->M + m * n, f->b, n * sizeof *f->M);
-  f->M[n + m * n] = 0.0;
+  for (size_t k = 0; k < f->ne; ++k) f->M[f->e_row[k] + m * f->e_col[k]] += f->e_val[k];
+  memcpy(f->M + m * na, f->b, na * sizeof *f->M);
+  f->M[na + m * na] = 0.0;
   rc = whirl_linsol_factor(f->ls, f->M);
   if (rc != WHIRL_OK)
     return WHIRL_FAIL(f, rc == WHIRL_ESINGULAR ? 1 : rc,
                       "fold system: bordered matrix [F_x b; c^T 0] is singular "
                       "(the fold is not simple here)");
   memset(f->v, 0, m * sizeof *f->v);
-  f->v[n] = 1.0;
+  f->v[na] = 1.0;
   memset(f->w, 0, m * sizeof *f->w);
-  f->w[n] = 1.0;
+  f->w[na] = 1.0;
   if ((rc = whirl_linsol_solve(f->ls, f->v, 1, 0)) != WHIRL_OK ||
       (rc = whirl_linsol_solve(f->ls, f->w, 1, 1)) != WHIRL_OK)
     return WHIRL_FAIL(f, rc, "fold system: bordered solve failed");
@@ -115,13 +122,13 @@ static int fq_at(whirl_fold *f, const double *x, const double *p, double *out) {
 }
 
 /* w^T (Ap - Am) v with the current null vectors: the difference of two
- * shifted Jacobians contracted with w and v. */
+ * shifted Jacobians contracted with w and v (A's block; E is constant). */
 static double wdiffv(const whirl_fold *f) {
-  const size_t n = f->n;
+  const size_t n = f->n, na = f->na;
   double s = 0.0;
-  for (size_t j = 0; j < n; ++j) {
+  for (size_t j = 0; j < na; ++j) {
     double col = 0.0;
-    for (size_t i = 0; i < n; ++i)
+    for (size_t i = 0; i < na; ++i)
       col += f->w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
     s += col * f->v[j];
   }
@@ -180,7 +187,7 @@ static int fold_F(const double *Z, const double *p, double *out, void *data) {
   int rc = f->base.F(Z, f->pf, out, f->base.data);
   if (rc != 0) return rc;
   if ((rc = null_solve(f, Z, f->pf)) != 0) return rc;
-  out[n] = f->v[n];
+  out[n] = f->v[f->na];
   if (f->o.cond) return cond_value(f, Z, f->pf, &out[n + 1]);
   return 0;
 }
@@ -202,16 +209,18 @@ static int fold_Fx(const double *Z, const double *p, double *J, void *data) {
     if (rc != 0) return rc;
     memcpy(J + N * (n + k), f->fq, n * sizeof *J);
   }
-  /* g_x: -(F_x(x + hv)^T w - F_x(x - hv)^T w) / 2h */
+  /* g_x: -(F_x(x + hv)^T w - F_x(x - hv)^T w) / 2h, v and w padded with
+   * zeros beyond A's block */
   const double *v = f->v, *w = f->w;
-  const double h = hstep(Z, n, v);
-  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] + h * v[i];
+  const size_t na = f->na;
+  const double h = hstep(Z, na, v);
+  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] + (i < na ? h * v[i] : 0.0);
   if ((rc = jac(f, f->xs, f->pf, f->Ap)) != 0) return rc;
-  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] - h * v[i];
+  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] - (i < na ? h * v[i] : 0.0);
   if ((rc = jac(f, f->xs, f->pf, f->Am)) != 0) return rc;
   for (size_t j = 0; j < n; ++j) {
     double s = 0.0;
-    for (size_t i = 0; i < n; ++i)
+    for (size_t i = 0; i < na; ++i)
       s += w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
     J[n + N * j] = -s / (2.0 * h);
   }
@@ -361,17 +370,40 @@ static int fold_test(const double *Z, const double *p, double *tau, int *types,
  * well conditioned along the curve; signs follow continuously. */
 static int fold_accept(const double *Z, const double *p, void *data) {
   whirl_fold *f = data;
-  const size_t n = f->n;
   whirl_fold_params(f, Z, p, f->pf);
   int rc = null_solve(f, Z, f->pf);
   if (rc != 0) return rc < 0 ? rc : 0; /* keep the old borders */
-  const double nv = norm2(f->v, n), nw = norm2(f->w, n);
+  const size_t na = f->na;
+  const double nv = norm2(f->v, na), nw = norm2(f->w, na);
   if (nv > 0 && nw > 0 && isfinite(nv) && isfinite(nw))
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; i < na; ++i) {
       f->c[i] = f->v[i] / nv;
       f->b[i] = f->w[i] / nw;
     }
   if (f->base.accept) return f->base.accept(Z, f->pf, f->base.data);
+  return 0;
+}
+
+static int operator_valid(const whirl_fold_operator *op, size_t n) {
+  if (op->na < 1 || op->na > n || (op->ne && (!op->ei || !op->ej || !op->ev))) return 0;
+  for (size_t k = 0; k < op->ne; ++k)
+    if (op->ei[k] >= op->na || op->ej[k] >= op->na || !isfinite(op->ev[k])) return 0;
+  return 1;
+}
+
+/* The operator's constant entries, copied. */
+static int copy_operator(whirl_fold *f, const whirl_fold_operator *op) {
+  f->na = op ? op->na : f->n;
+  f->point_type = op ? op->point_type : WHIRL_PT_LP;
+  f->ne = op ? op->ne : 0;
+  if (!f->ne) return 0;
+  f->e_row = malloc(f->ne * sizeof *f->e_row);
+  f->e_col = malloc(f->ne * sizeof *f->e_col);
+  f->e_val = malloc(f->ne * sizeof *f->e_val);
+  if (!f->e_row || !f->e_col || !f->e_val) return -1;
+  memcpy(f->e_row, op->ei, f->ne * sizeof *f->e_row);
+  memcpy(f->e_col, op->ej, f->ne * sizeof *f->e_col);
+  memcpy(f->e_val, op->ev, f->ne * sizeof *f->e_val);
   return 0;
 }
 
@@ -391,6 +423,10 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   else if ((o->cond != WHIRL_FOLD_COND_NONE) != (o->nfree == 2))
     why = "a codimension-two condition needs exactly two freed parameters "
           "(and two freed parameters need a condition)";
+  else if (o->op && o->cond != WHIRL_FOLD_COND_NONE)
+    why = "an operator's curve has no codimension-two conditions";
+  else if (o->op && !operator_valid(o->op, base->n))
+    why = "the operator needs 1 <= na <= n and its entries within na";
   if (why) {
     WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "whirl_fold_alloc: %s", why);
     return NULL;
@@ -402,11 +438,14 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   f->o = *o;
   f->n = n;
   f->N = n + o->nfree;
+  f->o.op = NULL; /* copied below */
+  if (copy_operator(f, o->op) != 0) goto nomem;
+  const size_t na = f->na;
   f->b = calloc(n, sizeof *f->b);
   f->c = calloc(n, sizeof *f->c);
-  f->ls = whirl_linsol_alloc_dense(n + 1);
-  f->eig = n >= 3 ? whirl_eig_alloc(n) : NULL;
-  f->M = calloc((n + 1) * (n + 1), sizeof *f->M);
+  f->ls = whirl_linsol_alloc_dense(na + 1);
+  f->eig = n >= 3 && !o->op ? whirl_eig_alloc(n) : NULL;
+  f->M = calloc((na + 1) * (na + 1), sizeof *f->M);
   f->A = calloc(n * n, sizeof *f->A);
   f->Ap = calloc(n * n, sizeof *f->Ap);
   f->Am = calloc(n * n, sizeof *f->Am);
@@ -423,7 +462,7 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   f->tmp = calloc(f->N, sizeof *f->tmp);
   f->er = calloc(n, sizeof *f->er);
   f->ei = calloc(n, sizeof *f->ei);
-  if (!f->b || !f->c || !f->ls || (n >= 3 && !f->eig) || !f->M || !f->A ||
+  if (!f->b || !f->c || !f->ls || (n >= 3 && !o->op && !f->eig) || !f->M || !f->A ||
       !f->Ap || !f->Am || !f->v || !f->w || !f->phi || !f->pf || !f->pq ||
       !f->xs || !f->fq || !f->fqp || !f->work || !f->Zs ||
       !f->tmp || !f->er || !f->ei)
@@ -431,7 +470,9 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   f->b[0] = f->c[0] = 1.0;
   whirl_system *s = &f->sys;
   memset(s, 0, sizeof *s);
-  s->name = o->cond == WHIRL_FOLD_COND_CP   ? "cusp curve"
+  s->name = o->op && o->op->name ? o->op->name
+            : o->op                         ? "singular-operator curve"
+            : o->cond == WHIRL_FOLD_COND_CP ? "cusp curve"
             : o->cond == WHIRL_FOLD_COND_BT ? "Bogdanov-Takens curve"
             : o->cond == WHIRL_FOLD_COND_MG ? "isola/merge curve"
                                             : "fold curve";
@@ -441,8 +482,8 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   s->Fx = fold_Fx;
   s->Fp = NULL;
   s->accept = fold_accept;
-  s->ntest = o->cond ? 0 : WHIRL_FOLD_NTEST;
-  s->test = o->cond ? NULL : fold_test;
+  s->ntest = o->cond || o->op ? 0 : WHIRL_FOLD_NTEST;
+  s->test = o->cond || o->op ? NULL : fold_test;
   s->p_names = base->p_names;
   s->data = f;
   return f;
@@ -460,6 +501,7 @@ void whirl_fold_free(whirl_fold *f) {
   free(f->v); free(f->w); free(f->phi); free(f->pf); free(f->pq);
   free(f->xs); free(f->fq); free(f->fqp); free(f->work);
   free(f->Zs); free(f->tmp); free(f->er); free(f->ei);
+  free(f->e_row); free(f->e_col); free(f->e_val);
   free(f);
 }
 
@@ -467,8 +509,16 @@ const whirl_system *whirl_fold_system(const whirl_fold *f) { return &f->sys; }
 size_t whirl_fold_size(const whirl_fold *f) { return f->N; }
 const char *whirl_fold_errmsg(const whirl_fold *f) { return f->errmsg; }
 
+/* The operator A at the last jac(): the leading na x na block of f->A
+ * plus E, column-major with leading dimension na, into out. */
+static void operator_matrix(const whirl_fold *f, double *out) {
+  const size_t n = f->n, na = f->na;
+  for (size_t j = 0; j < na; ++j) memcpy(out + na * j, f->A + n * j, na * sizeof *out);
+  for (size_t k = 0; k < f->ne; ++k) out[f->e_row[k] + na * f->e_col[k]] += f->e_val[k];
+}
+
 int whirl_fold_init(whirl_fold *f, const double *x, const double *p, double *Z) {
-  const size_t n = f->n;
+  const size_t n = f->n, na = f->na;
   for (size_t i = 0; i < n; ++i)
     if (!isfinite(x[i]))
       return WHIRL_FAIL(f, WHIRL_EINVAL, "fold start: x[%zu] is not finite", i);
@@ -477,11 +527,13 @@ int whirl_fold_init(whirl_fold *f, const double *x, const double *p, double *Z) 
     return WHIRL_FAIL(f, rc < 0 ? rc : WHIRL_EDOMAIN,
                       "fold start: the Jacobian failed (%d)", rc);
   double sv;
-  rc = whirl_null_vectors(n, n, f->A, 1, f->c, &sv);
+  operator_matrix(f, f->Am);
+  rc = whirl_null_vectors(na, na, f->Am, 1, f->c, &sv);
   if (rc != WHIRL_OK) return WHIRL_FAIL(f, rc, "fold start: SVD of F_x failed");
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = 0; j < n; ++j) f->Ap[j + n * i] = f->A[i + n * j];
-  rc = whirl_null_vectors(n, n, f->Ap, 1, f->b, &sv);
+  operator_matrix(f, f->Am);
+  for (size_t i = 0; i < na; ++i)
+    for (size_t j = 0; j < na; ++j) f->Ap[j + na * i] = f->Am[i + na * j];
+  rc = whirl_null_vectors(na, na, f->Ap, 1, f->b, &sv);
   if (rc != WHIRL_OK)
     return WHIRL_FAIL(f, rc, "fold start: SVD of F_x^T failed");
   memcpy(Z, x, n * sizeof *Z);
@@ -490,17 +542,19 @@ int whirl_fold_init(whirl_fold *f, const double *x, const double *p, double *Z) 
   return WHIRL_OK;
 }
 
+int whirl_fold_point_type(const whirl_fold *f) { return f->point_type; }
+
 int whirl_fold_vectors(whirl_fold *f, const double *Z, const double *p,
                        double *v, double *w, double *g, double *tau) {
-  const size_t n = f->n;
+  const size_t na = f->na;
   whirl_fold_params(f, Z, p, f->pf);
   int rc = null_solve(f, Z, f->pf);
   if (rc != 0) return rc;
-  const double gv = f->v[n];
-  if (v) memcpy(v, f->v, n * sizeof *v);
-  if (w) memcpy(w, f->w, n * sizeof *w);
+  const double gv = f->v[na];
+  if (v) memcpy(v, f->v, na * sizeof *v);
+  if (w) memcpy(w, f->w, na * sizeof *w);
   if (g) *g = gv;
-  if (tau) {
+  if (tau && !f->o.op) {
     int types[WHIRL_FOLD_NTEST];
     memcpy(f->Zs, Z, f->N * sizeof *f->Zs);
     rc = fold_test(f->Zs, p, tau, types, f);

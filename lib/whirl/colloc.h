@@ -31,6 +31,7 @@
 #define WHIRL_COLLOC_H
 
 #include <stddef.h>
+#include <whirl/fold.h>
 #include <whirl/problem.h>
 #include <whirl/system.h>
 
@@ -176,6 +177,18 @@ WHIRL_API int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
  * The number of rotating components. */
 WHIRL_API size_t whirl_colloc_set_rotations(whirl_colloc *c, const double *jump);
 WHIRL_API size_t whirl_colloc_rotations_of(whirl_colloc *c, const double *X);
+
+/* The operator whose singularity is a period doubling, for the
+ * period-doubling locus by whirl_fold (op in whirl_fold_options): the
+ * collocation Jacobian on the node values (the period column and the
+ * phase row left out) with the antiperiodic condition x(1) + x(0) = 0 in
+ * place of x(1) − x(0) = 0.  Its null vectors are the solutions of the
+ * variational equation with v(1) = −v(0): it is singular exactly when the
+ * monodromy has the multiplier −1 (the trivial multiplier 1 of an
+ * autonomous orbit does not make it singular).  ei, ej, ev: n entries each
+ * (the model's dimension), filled and pointed to by op. */
+WHIRL_API void whirl_colloc_pd_operator(const whirl_colloc *c, whirl_fold_operator *op,
+                                        size_t *ei, size_t *ej, double *ev);
 
 /* Current mesh: tau[NTST + 1]. */
 WHIRL_API const double *whirl_colloc_mesh(const whirl_colloc *c);

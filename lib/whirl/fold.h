@@ -33,6 +33,16 @@
  * With `cond` set, one of these conditions becomes an extra equation and a
  * second parameter an unknown: the codimension-two curve, continued in a
  * third parameter by the same core.
+ *
+ * The same augmentation holds for any operator A(x, p) whose singularity
+ * defines the bifurcation, not only F_x: with `op` set, A is the leading
+ * na x na block of F_x plus constant entries (whirl_fold_operator), g
+ * comes from [A b; c^T 0] and g_z = -w^T A_z v from the base Jacobians at
+ * x +- h (v, 0).  A period doubling of a collocation orbit is such a point:
+ * A is the collocation Jacobian on the nodes with the antiperiodic
+ * condition x(1) + x(0) = 0, singular exactly when the monodromy has the
+ * multiplier -1 (whirl_colloc_pd_operator; the period-doubling locus).
+ * Such a curve has no test functions of its own.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_FOLD_H
 #define WHIRL_FOLD_H
@@ -60,6 +70,17 @@ enum {
   WHIRL_FOLD_NTEST = 4
 };
 
+/* A = (F_x)[0..na, 0..na] + E, E with ne entries (ei[k], ej[k], ev[k]);
+ * E must not depend on (x, p).  The arrays are copied by whirl_fold_alloc. */
+typedef struct whirl_fold_operator {
+  size_t na;                 /* 1..n */
+  size_t ne;
+  const size_t *ei, *ej;
+  const double *ev;
+  int point_type;            /* what the curve's points are (WHIRL_PT_PD) */
+  const char *name;          /* the curve's name ("period-doubling curve") */
+} whirl_fold_operator;
+
 typedef struct whirl_fold_options {
   size_t par;     /* q: the parameter in which the point is a fold (the
                      base branch's continuation parameter, e.g. Omega) */
@@ -67,6 +88,8 @@ typedef struct whirl_fold_options {
   size_t free[2]; /* their indices (default {par}); a fold locus with q held
                      fixed frees another parameter instead */
   int cond;       /* whirl_fold_cond: extra equation (needs nfree == 2) */
+  const whirl_fold_operator *op; /* NULL: F_x (a fold); else the operator
+                                    whose singularity is followed (no cond) */
 } whirl_fold_options;
 
 /* Defaults: the fold curve in (par, ICP): nfree 1, free {par}, no cond. */
@@ -93,11 +116,14 @@ WHIRL_API int whirl_fold_init(whirl_fold *f, const double *x, const double *p,
                               double *Z);
 
 /* At a point Z of the fold system (p: the other parameters): the null
- * vectors v[n], w[n] (normalised c^T v = 1, b^T w = 1 with the current
+ * vectors v[n], w[n] (v[na], w[na] with an operator) (normalised c^T v = 1, b^T w = 1 with the current
  * borders), g, and the test values tau[WHIRL_FOLD_NTEST] (any may be NULL). */
 WHIRL_API int whirl_fold_vectors(whirl_fold *f, const double *Z,
                                  const double *p, double *v, double *w,
                                  double *g, double *tau);
+
+/* The type of the curve's points: WHIRL_PT_LP, or the operator's. */
+WHIRL_API int whirl_fold_point_type(const whirl_fold *f);
 
 /* Copy the base parameter vector with the freed parameters taken from Z. */
 WHIRL_API void whirl_fold_params(const whirl_fold *f, const double *Z,

@@ -40,6 +40,7 @@ typedef struct whirl_solution {
   whirl_solution_kind kind;
   int icp;          /* the branch's continuation parameter (0-based) */
   int icp2;         /* loci: the second free parameter, else -1 */
+  char locus[3];    /* loci: what the curve is made of (LP, PD, HB), else "" */
   size_t npar, nx;  /* model parameters; unknowns of the base system */
   double *par;      /* npar */
   double *x;        /* nx: base-system unknowns */

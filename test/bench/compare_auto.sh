@@ -11,8 +11,18 @@
 set -eu
 N=${1:-11}
 here=$(cd "$(dirname "$0")" && pwd)
+# The binary itself, not libtool's wrapper script drivers/whirl (a shell
+# that costs ~15 ms a start): drivers/.libs/whirl with the build's
+# libraries, as an installed whirl runs.  WHIRL=/usr/local/bin/whirl times
+# an installed one.
+if [ -z "${WHIRL:-}" ] && [ -x drivers/.libs/whirl ]; then
+  WHIRL=drivers/.libs/whirl
+  LD_LIBRARY_PATH=$(pwd)/lib/.libs:$(pwd)/rotor/.libs${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+  export LD_LIBRARY_PATH
+fi
 WHIRL=${WHIRL:-./drivers/whirl}
 [ -x "$WHIRL" ] || { echo "compare_auto.sh: $WHIRL not found (run from the build directory)" >&2; exit 1; }
+echo "whirl: $WHIRL"
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-cmp.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 # median wall time in ms of N whole runs of whirl sfd response with ARGS

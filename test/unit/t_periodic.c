@@ -477,6 +477,72 @@ static void switch_general(const whirl_colloc *c, const double *X,
   whirl_colloc_free(c2);
 }
 
+
+/* The period-doubling locus from PD1 in (σ, ρ): the minimally augmented
+ * system of whirl_fold with the antiperiodic collocation operator
+ * (whirl_colloc_pd_operator), continued in σ from 10 to 10.25 (dense: the
+ * fold system has no structured solver yet).  Checked by
+ * an independent route at the end: the orbit's multipliers from the
+ * variational equations integrated along x(0) (whirl_floquet_multipliers)
+ * have a real one at −1. */
+static void test_pd_locus(whirl_colloc *c, const double *Xpd, const double *ppd) {
+  char err[256];
+  const size_t nx = whirl_colloc_size(c), n = 3;
+  whirl_fold_operator op;
+  size_t ei[3], ej[3];
+  double ev[3];
+  whirl_colloc_pd_operator(c, &op, ei, ej, ev);
+  ok(op.na == nx - 1 && op.ne == n && op.point_type == WHIRL_PT_PD,
+     "PD operator: the node values (%zu of %zu unknowns), %zu entries changed", op.na, nx,
+     op.ne);
+  whirl_fold_options fo;
+  whirl_fold_options_default(&fo, 1); /* ρ: the PD's parameter, freed */
+  fo.op = &op;
+  whirl_fold *f = whirl_fold_alloc(whirl_colloc_system(c), &fo, err, sizeof err);
+  ok(f != NULL, "PD locus system allocated (%s)", f ? "" : err);
+  if (!f) return;
+  double *Z = malloc((nx + 2) * sizeof *Z), g = NAN, p[3];
+  memcpy(p, ppd, sizeof p);
+  int rc = whirl_fold_init(f, Xpd, p, Z);
+  if (rc == WHIRL_OK) rc = whirl_fold_vectors(f, Z, p, NULL, NULL, &g, NULL);
+  ok(rc == WHIRL_OK && fabs(g) < 1e-6, "at PD1 the antiperiodic operator is singular "
+     "(g = %.1e)", g);
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = 0;
+  co.ds = 1.0;
+  co.ds_max = 0.5 * sqrt((double)nx);
+  co.p_min = 9.5;
+  co.p_max = 10.25;
+  co.nmx = 100;
+  whirl_cont *ct = whirl_cont_alloc(whirl_fold_system(f), &co, err, sizeof err);
+  rc = ct ? whirl_cont_start(ct, Z, p, 1) : WHIRL_EINVAL;
+  size_t npts = 0;
+  while (rc == WHIRL_OK && (rc = whirl_cont_step(ct)) == WHIRL_OK) ++npts;
+  const whirl_point *end = ct ? whirl_cont_point(ct) : NULL;
+  ok(rc == WHIRL_DONE && whirl_cont_stop_reason(ct) == WHIRL_STOP_PMAX && end,
+     "PD locus from σ = 10 to 10.25 (%zu points; %s)", npts, ct ? whirl_cont_errmsg(ct) : err);
+  if (rc == WHIRL_DONE && end) {
+    double pe[3] = {end->p[0], end->x[nx], ppd[2]};
+    const double T = end->x[nx - 1];
+    double re[3], im[3], best = NAN;
+    size_t m = 3;
+    printf("# PD locus: sigma %.6f rho %.9f T %.9f (from rho %.9f at sigma 10)\n", pe[0], pe[1],
+           T, ppd[1]);
+    ok(fabs(pe[0] - 10.25) < 1e-12 && fabs(pe[1] - ppd[1]) > 1.0,
+       "the locus ends at σ = 10.25 with ρ moved (%.6f)", pe[1]);
+    rc = whirl_floquet_multipliers(&lorenz, pe, 0.0, end->x, T, 1, 1e-11, 1e-13, re, im, &m,
+                                   NULL, NULL, err, sizeof err);
+    for (size_t k = 0; rc == WHIRL_OK && k < m; ++k)
+      if (fabs(im[k]) < 1e-9 && (isnan(best) || fabs(re[k] + 1) < fabs(best + 1))) best = re[k];
+    is_abs(best, -1.0, 1e-5, "at the locus's end the integrated monodromy has the "
+           "multiplier -1 (%.9f)", best);
+  }
+  whirl_cont_free(ct);
+  whirl_fold_free(f);
+  free(Z);
+}
+
 static void test_lorenz_cascade(int quick) {
   const double auto_pd[3] = {229.407, 218.210, 215.966};
   const size_t ntst = quick ? 30 : 60, m = 400;
@@ -535,6 +601,7 @@ static void test_lorenz_cascade(int quick) {
          ppd1[1], auto_pd[0], ppd1[1] - auto_pd[0], Xpd1[nx1 - 1], mu1);
   is_abs(ppd1[1], auto_pd[0], 2e-3, "PD1 at ρ = %.3f (AUTO lor)", auto_pd[0]);
   is_abs(mu1, -1.0, 1e-6, "PD1: a real multiplier at −1");
+  test_pd_locus(c1, Xpd1, ppd1);
 
   switch_general(c1, Xpd1, ppd1, 2 * ntst - 10, 5);
 

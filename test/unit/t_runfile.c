@@ -3,6 +3,7 @@
  * doc/run-files.md states them, keys of another type are refused, and a
  * message of bad input names the file and line.
  * SPDX-License-Identifier: BSD-3-Clause */
+#include <stdio.h>
 #include <string.h>
 
 #include <whirl/whirl.h>
@@ -143,6 +144,48 @@ static void check_weights(void) {
   whirl_runfile_free(rf);
 }
 
+
+/* A locus label's LOCUS field: written, read back, optional (older files),
+ * and a wrong one refused with the file and line */
+static void check_solution_locus(void) {
+  double par[3] = {0.1, 14, 3}, x[2] = {0.4, 1.4};
+  whirl_solution so;
+  memset(&so, 0, sizeof so);
+  so.label = 1, so.br = 1, so.pt = 0, so.kind = WHIRL_SOL_EQ, so.icp = 0, so.icp2 = 1;
+  so.npar = 3, so.nx = 2, so.par = par, so.x = x, so.stable = -1;
+  memcpy(so.ty, "EP", 3);
+  memcpy(so.locus, "PD", 3);
+  FILE *f = tmpfile();
+  whirl_solution back;
+  char msg[256] = "";
+  const whirl_solution_shape any = {NULL, 0, 0, -1};
+  if (f) fputs("# whirl solutions: model ab, npar 3\n", f);
+  int rc = f ? whirl_solution_write(f, &so) : -1;
+  if (f) rewind(f);
+  rc = rc ? rc : whirl_solution_read(f, "s", &any, 1, "", &back, msg, sizeof msg);
+  ok(rc == 0 && !strcmp(back.locus, "PD") && back.icp2 == 1,
+     "LOCUS PD written and read back (%s)", msg);
+  if (!rc) whirl_solution_free(&back);
+  if (f) fclose(f);
+  static const char old[] = "# whirl solutions: model ab, npar 3\nLAB 1 TY EP BR 1 PT 0 KIND eq ICP 1 ICP2 2 NX 2 STAB -1\n"
+                            "PAR 0.1 14 3\nX 0.4 1.4\nEND\n",
+                    bad[] = "# whirl solutions: model ab, npar 3\nLAB 1 TY EP BR 1 PT 0 KIND eq ICP 1 ICP2 2 NX 2 STAB -1 LOCUS XX\n"
+                            "PAR 0.1 14 3\nX 0.4 1.4\nEND\n";
+  f = tmpfile();
+  if (f) fputs(old, f), rewind(f);
+  rc = f ? whirl_solution_read(f, "s", &any, 1, "", &back, msg, sizeof msg) : -1;
+  ok(rc == 0 && back.locus[0] == 0, "a file without LOCUS reads (no locus) (%s)", msg);
+  if (!rc) whirl_solution_free(&back);
+  if (f) fclose(f);
+  f = tmpfile();
+  if (f) fputs(bad, f), rewind(f);
+  rc = f ? whirl_solution_read(f, "s", &any, 1, "", &back, msg, sizeof msg) : 0;
+  ok(rc != 0 && strstr(msg, "s:2: ") == msg && strstr(msg, "LOCUS"),
+     "LOCUS XX refused at its line: %s", msg);
+  if (!rc) whirl_solution_free(&back);
+  if (f) fclose(f);
+}
+
 int main(void) {
   whirl_runfile *rf = whirl_runfile_alloc();
   ok(rf != NULL, "alloc");
@@ -154,5 +197,6 @@ int main(void) {
   check_error();
   check_basin_method();
   check_weights();
+  check_solution_locus();
   return done_testing();
 }
