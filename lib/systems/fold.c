@@ -14,6 +14,7 @@
 #include <whirl/linsol.h>
 
 #include "util/errmsg_impl.h"
+#include "fold_sparse_impl.h"
 
 struct whirl_fold {
   whirl_system base; /* copy; data borrowed */
@@ -25,12 +26,14 @@ struct whirl_fold {
   size_t *e_row, *e_col;
   double *e_val;
   int point_type;    /* WHIRL_PT_LP, or the operator's */
+  int sparse;        /* base with a sparse pattern: every matrix sparse */
+  fold_sparse sp;
   double *b, *c;     /* borders [na]: left and right null vector estimates */
   whirl_linsol *ls;  /* dense LU of M = [A b; c^T 0], order na + 1 */
   whirl_eig *eig;    /* eigenvalues of F_x for the zero-Hopf test */
   double *M;         /* (n+1)^2 */
-  double *A;         /* F_x at the current point, n*n */
-  double *Ap, *Am;   /* F_x at shifted points, n*n each */
+  double *A;         /* F_x at the current point, n*n (sparse: nnz values) */
+  double *Ap, *Am;   /* F_x at shifted points, likewise */
   double *v, *w;     /* na + 1: null vectors and g (v, w of A) */
   double *phi;       /* n + 1: F_x phi = -F_q (bordered) */
   double *pf, *pq;   /* npar: full parameter vectors */
@@ -38,6 +41,9 @@ struct whirl_fold {
   double *fq, *fqp;  /* n: F_q at the point and at a shifted point */
   double *work;      /* 2n: scratch of whirl_system_jacobian / _param */
   double *Zs, *tmp;  /* N: scratch for finite differences of the cond row */
+  double *gx;        /* n: the row g_x */
+  double *xc, *pc;   /* the point of the last null_solve (n, npar) */
+  int cached;        /* 1: f->A, the factorisation, v and w are at (xc, pc) */
   double *er, *ei;   /* n: eigenvalues */
   char errmsg[WHIRL_ERRMSG_SIZE];
 };
@@ -84,16 +90,17 @@ static double hstep(const double *x, size_t n, const double *dir) {
 }
 
 static int jac(whirl_fold *f, const double *x, const double *p, double *J) {
+  if (f->sparse) return f->base.Fx_sparse(x, p, J, f->base.data);
   return whirl_system_jacobian(&f->base, x, p, J, f->work);
 }
 
-/* F_x at (x, p) into f->A, the bordered LU of [A b; c^T 0] with A its
- * leading na x na block plus E, and the null vectors: f->v = (v, g) and
- * f->w = (w, g). */
-static int null_solve(whirl_fold *f, const double *x, const double *p) {
+/* The bordered matrix [A b; c^T 0] from the Jacobian in f->A, factored. */
+static int factor_bordered(whirl_fold *f) {
   const size_t n = f->n, na = f->na, m = na + 1;
-  int rc = jac(f, x, p, f->A);
-  if (rc != 0) return rc;
+  if (f->sparse) {
+    fold_sparse_fill_m(&f->sp, f->A, f->b, f->c, f->ne, f->e_val);
+    return whirl_linsol_factor(f->ls, f->sp.Mx);
+  }
   for (size_t j = 0; j < na; ++j) {
     memcpy(f->M + m * j, f->A + n * j, na * sizeof *f->M);
     f->M[na + m * j] = f->c[j];
@@ -101,7 +108,23 @@ static int null_solve(whirl_fold *f, const double *x, const double *p) {
   for (size_t k = 0; k < f->ne; ++k) f->M[f->e_row[k] + m * f->e_col[k]] += f->e_val[k];
   memcpy(f->M + m * na, f->b, na * sizeof *f->M);
   f->M[na + m * na] = 0.0;
-  rc = whirl_linsol_factor(f->ls, f->M);
+  return whirl_linsol_factor(f->ls, f->M);
+}
+
+/* F_x at (x, p) into f->A, the bordered LU of [A b; c^T 0] with A its
+ * leading na x na block plus E, and the null vectors: f->v = (v, g) and
+ * f->w = (w, g). */
+static int null_solve(whirl_fold *f, const double *x, const double *p) {
+  const size_t na = f->na, m = na + 1;
+  /* the same point as the last call (F, then its Jacobian and dF/dp, at
+   * every Newton iterate): F_x, the factorisation and v, w are current */
+  if (f->cached && !memcmp(x, f->xc, f->n * sizeof *x) &&
+      !memcmp(p, f->pc, f->base.npar * sizeof *p))
+    return 0;
+  f->cached = 0;
+  int rc = jac(f, x, p, f->A);
+  if (rc != 0) return rc;
+  rc = factor_bordered(f);
   if (rc != WHIRL_OK)
     return WHIRL_FAIL(f, rc == WHIRL_ESINGULAR ? 1 : rc,
                       "fold system: bordered matrix [F_x b; c^T 0] is singular "
@@ -113,6 +136,9 @@ static int null_solve(whirl_fold *f, const double *x, const double *p) {
   if ((rc = whirl_linsol_solve(f->ls, f->v, 1, 0)) != WHIRL_OK ||
       (rc = whirl_linsol_solve(f->ls, f->w, 1, 1)) != WHIRL_OK)
     return WHIRL_FAIL(f, rc, "fold system: bordered solve failed");
+  memcpy(f->xc, x, f->n * sizeof *x);
+  memcpy(f->pc, p, f->base.npar * sizeof *p);
+  f->cached = 1;
   return 0;
 }
 
@@ -125,6 +151,7 @@ static int fq_at(whirl_fold *f, const double *x, const double *p, double *out) {
  * shifted Jacobians contracted with w and v (A's block; E is constant). */
 static double wdiffv(const whirl_fold *f) {
   const size_t n = f->n, na = f->na;
+  if (f->sparse) return fold_sparse_wdiffv(&f->sp, f->w, f->Ap, f->Am, f->v);
   double s = 0.0;
   for (size_t j = 0; j < na; ++j) {
     double col = 0.0;
@@ -192,9 +219,91 @@ static int fold_F(const double *Z, const double *p, double *out, void *data) {
   return 0;
 }
 
+/* The row of g: g_x[n] into gx and g_q of the freed parameters into
+ * gq[nfree], g_z = -w^T (F_x)_z v from two base Jacobians per direction
+ * (Govaerts 2000, eq. 4.13), v and w padded with zeros beyond A's block;
+ * null_solve done at (Z, f->pf). */
+static int g_derivs(whirl_fold *f, const double *Z, double *gx, double *gq) {
+  const size_t n = f->n, na = f->na, nf = f->o.nfree;
+  const double *v = f->v, *w = f->w;
+  const double h = hstep(Z, na, v);
+  int rc;
+  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] + (i < na ? h * v[i] : 0.0);
+  if ((rc = jac(f, f->xs, f->pf, f->Ap)) != 0) return rc;
+  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] - (i < na ? h * v[i] : 0.0);
+  if ((rc = jac(f, f->xs, f->pf, f->Am)) != 0) return rc;
+  if (f->sparse) {
+    fold_sparse_wdiff_cols(&f->sp, w, f->Ap, f->Am, gx);
+    for (size_t j = 0; j < n; ++j) gx[j] /= -2.0 * h;
+  } else {
+    for (size_t j = 0; j < n; ++j) {
+      double s = 0.0;
+      for (size_t i = 0; i < na; ++i) s += w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
+      gx[j] = -s / (2.0 * h);
+    }
+  }
+  for (size_t k = 0; k < nf; ++k) {
+    const size_t q = f->o.free[k];
+    const double hq = 6e-6 * (1.0 + fabs(f->pf[q]));
+    memcpy(f->pq, f->pf, f->base.npar * sizeof *f->pq);
+    f->pq[q] = f->pf[q] + hq;
+    if ((rc = jac(f, Z, f->pq, f->Ap)) != 0) return rc;
+    f->pq[q] = f->pf[q] - hq;
+    if ((rc = jac(f, Z, f->pq, f->Am)) != 0) return rc;
+    gq[k] = -wdiffv(f) / (2.0 * hq);
+  }
+  return 0;
+}
+
+/* dF/dp_k of the fold system: the base's F_pk and g_pk = -w^T (F_x)_pk v
+ * (two base Jacobians), instead of differences of the whole system (each
+ * of which factors the bordered operator). */
+static int fold_Fp(const double *Z, const double *p, size_t k, double *out, void *data) {
+  whirl_fold *f = data;
+  const size_t n = f->n;
+  for (size_t j = 0; j < f->o.nfree; ++j)
+    if (f->o.free[j] == k) { /* an unknown of the fold system: p[k] is not read */
+      memset(out, 0, (n + 1) * sizeof *out);
+      return 0;
+    }
+  whirl_fold_params(f, Z, p, f->pf);
+  int rc = null_solve(f, Z, f->pf);
+  if (rc != 0) return rc;
+  if ((rc = whirl_system_param(&f->base, Z, f->pf, k, out, f->work)) != 0) return rc;
+  const double hq = 6e-6 * (1.0 + fabs(f->pf[k]));
+  memcpy(f->pq, f->pf, f->base.npar * sizeof *f->pq);
+  f->pq[k] = f->pf[k] + hq;
+  if ((rc = jac(f, Z, f->pq, f->Ap)) != 0) return rc;
+  f->pq[k] = f->pf[k] - hq;
+  if ((rc = jac(f, Z, f->pq, f->Am)) != 0) return rc;
+  out[n] = -wdiffv(f) / (2.0 * hq);
+  return 0;
+}
+
+/* The sparse Jacobian of the fold system in its pattern (fold_sparse.c):
+ * each base column with g_x below it, then F_q and g_q. */
+static int fold_Fx_sparse(const double *Z, const double *p, double *Jx, void *data) {
+  whirl_fold *f = data;
+  const size_t n = f->n;
+  double gq;
+  int rc;
+  whirl_fold_params(f, Z, p, f->pf);
+  if ((rc = null_solve(f, Z, f->pf)) != 0) return rc;
+  size_t q = 0;
+  rc = whirl_system_param(&f->base, Z, f->pf, f->o.free[0], f->fq, f->work);
+  if (rc != 0) return rc;
+  if ((rc = g_derivs(f, Z, f->gx, &gq)) != 0) return rc;
+  for (size_t j = 0; j < n; ++j) {
+    for (int k = f->sp.Jp[j]; k < f->sp.Jp[j + 1]; ++k) Jx[q++] = f->A[k];
+    Jx[q++] = f->gx[j];
+  }
+  memcpy(Jx + q, f->fq, n * sizeof *Jx);
+  Jx[q + n] = gq;
+  return 0;
+}
+
 /* Jacobian of the fold system, N x N column-major: [F_x F_free; g_x g_free]
- * with g_z = -w^T (F_x)_z v from two base Jacobians per direction (Govaerts
- * 2000, eq. 4.13), and the cond row by central differences of its value. */
+ * (g_derivs), and the cond row by central differences of its value. */
 static int fold_Fx(const double *Z, const double *p, double *J, void *data) {
   whirl_fold *f = data;
   const size_t n = f->n, N = f->N, nf = f->o.nfree;
@@ -209,33 +318,10 @@ static int fold_Fx(const double *Z, const double *p, double *J, void *data) {
     if (rc != 0) return rc;
     memcpy(J + N * (n + k), f->fq, n * sizeof *J);
   }
-  /* g_x: -(F_x(x + hv)^T w - F_x(x - hv)^T w) / 2h, v and w padded with
-   * zeros beyond A's block */
-  const double *v = f->v, *w = f->w;
-  const size_t na = f->na;
-  const double h = hstep(Z, na, v);
-  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] + (i < na ? h * v[i] : 0.0);
-  if ((rc = jac(f, f->xs, f->pf, f->Ap)) != 0) return rc;
-  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] - (i < na ? h * v[i] : 0.0);
-  if ((rc = jac(f, f->xs, f->pf, f->Am)) != 0) return rc;
-  for (size_t j = 0; j < n; ++j) {
-    double s = 0.0;
-    for (size_t i = 0; i < na; ++i)
-      s += w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
-    J[n + N * j] = -s / (2.0 * h);
-  }
-  /* g_q: -w^T (F_x(q + hq) - F_x(q - hq)) v / 2hq */
-  for (size_t k = 0; k < nf; ++k) {
-    const size_t q = f->o.free[k];
-    const double hq = 6e-6 * (1.0 + fabs(f->pf[q]));
-    memcpy(f->pq, f->pf, f->base.npar * sizeof *f->pq);
-    f->pq[q] = f->pf[q] + hq;
-    if ((rc = jac(f, Z, f->pq, f->Ap)) != 0) return rc;
-    f->pq[q] = f->pf[q] - hq;
-    if ((rc = jac(f, Z, f->pq, f->Am)) != 0) return rc;
-    const double s = wdiffv(f);
-    J[n + N * (n + k)] = -s / (2.0 * hq);
-  }
+  double gq[2];
+  if ((rc = g_derivs(f, Z, f->gx, gq)) != 0) return rc;
+  for (size_t j = 0; j < n; ++j) J[n + N * j] = f->gx[j];
+  for (size_t k = 0; k < nf; ++k) J[n + N * (n + k)] = gq[k];
   if (f->o.cond) {
     /* the imposed condition: central differences of its value */
     for (size_t j = 0; j < N; ++j) {
@@ -264,7 +350,7 @@ static int zh_value(whirl_fold *f, double *val, int *type) {
   const size_t n = f->n;
   *val = 1.0;
   *type = 0;
-  if (n < 3 || !f->eig) return 0;
+  if (n < 3 || !f->eig || f->sparse) return 0; /* (sparse: no dense eigenvalues) */
   int rc = whirl_eig_compute(f->eig, f->A, f->er, f->ei);
   if (rc != WHIRL_OK) return 0;
   size_t k0 = 0;
@@ -312,11 +398,14 @@ static int hess_wd(whirl_fold *f, const double *x, const double *p,
     if (rc != 0) return rc;
     if ((rc = fq_at(f, f->xs, f->pq, f->fqp)) != 0) return rc;
     double acc = 0.0;
-    for (size_t i = 0; i < n; ++i) {
-      double r = f->fqp[i] * u2[n];
-      for (size_t j = 0; j < n; ++j) r += f->Ap[i + n * j] * u2[j];
-      acc += f->w[i] * r;
-    }
+    for (size_t i = 0; i < n; ++i) acc += f->w[i] * f->fqp[i] * u2[n];
+    if (f->sparse) acc += fold_sparse_wju(&f->sp, f->w, f->Ap, u2);
+    else
+      for (size_t i = 0; i < n; ++i) {
+        double r = 0.0;
+        for (size_t j = 0; j < n; ++j) r += f->Ap[i + n * j] * u2[j];
+        acc += f->w[i] * r;
+      }
     s[side] = acc;
   }
   *val = (s[0] - s[1]) / (2.0 * h);
@@ -357,10 +446,18 @@ static int fold_test(const double *Z, const double *p, double *tau, int *types,
   tau[WHIRL_FOLD_TEST_BT] = bt_value(f);
   types[WHIRL_FOLD_TEST_BT] = eig ? WHIRL_PT_BT : 0;
   if ((rc = mg_value(f, Z, f->pf, &tau[WHIRL_FOLD_TEST_MG])) != 0) return rc;
-  if ((rc = classify_mg(f, Z, f->pf, &types[WHIRL_FOLD_TEST_MG])) != 0) return rc;
-  if ((rc = zh_value(f, &tau[WHIRL_FOLD_TEST_ZH], &types[WHIRL_FOLD_TEST_ZH])) != 0)
+  /* IS or MG (six Jacobians): the type counts only where the core has
+   * localised a zero of the value, so it is worked out only near one */
+  types[WHIRL_FOLD_TEST_MG] = WHIRL_PT_MG;
+  if (fabs(tau[WHIRL_FOLD_TEST_MG]) < 1e-6 &&
+      (rc = classify_mg(f, Z, f->pf, &types[WHIRL_FOLD_TEST_MG])) != 0)
     return rc;
-  if (!eig) types[WHIRL_FOLD_TEST_ZH] = 0;
+  /* zero-Hopf: eigenvalues of F_x, a question about equilibria only (of
+   * an orbit's collocation Jacobian they mean nothing: not computed) */
+  tau[WHIRL_FOLD_TEST_ZH] = 1.0;
+  types[WHIRL_FOLD_TEST_ZH] = 0;
+  if (eig && (rc = zh_value(f, &tau[WHIRL_FOLD_TEST_ZH], &types[WHIRL_FOLD_TEST_ZH])) != 0)
+    return rc;
   if ((rc = cusp_value(f, Z, f->pf, &tau[WHIRL_FOLD_TEST_CP])) != 0) return rc;
   types[WHIRL_FOLD_TEST_CP] = WHIRL_PT_CP;
   return 0;
@@ -380,8 +477,17 @@ static int fold_accept(const double *Z, const double *p, void *data) {
       f->c[i] = f->v[i] / nv;
       f->b[i] = f->w[i] / nw;
     }
+  f->cached = 0; /* new borders; the base's accept may change F_x (phase) */
   if (f->base.accept) return f->base.accept(Z, f->pf, f->base.data);
   return 0;
+}
+
+/* The sparse path: a base with a sparse pattern, large enough that dense
+ * LUs of order n dominate (collocation orbits), and no imposed condition
+ * (its row is differenced densely). */
+static int use_sparse(const whirl_system *base, const whirl_fold_options *o) {
+  return base->Fx_sparse && base->Jp && base->Ji && base->nnz > 0 && base->n > 100 &&
+         o->cond == WHIRL_FOLD_COND_NONE && o->nfree == 1;
 }
 
 static int operator_valid(const whirl_fold_operator *op, size_t n) {
@@ -441,14 +547,22 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   f->o.op = NULL; /* copied below */
   if (copy_operator(f, o->op) != 0) goto nomem;
   const size_t na = f->na;
+  f->sparse = use_sparse(base, o);
+  if (f->sparse && fold_sparse_alloc(&f->sp, base, na, f->ne, f->e_row, f->e_col, o->nfree))
+    goto nomem;
+  const size_t nj = f->sparse ? (base->nnz ? base->nnz : 1) : n * n;
   f->b = calloc(n, sizeof *f->b);
   f->c = calloc(n, sizeof *f->c);
-  f->ls = whirl_linsol_alloc_dense(na + 1);
-  f->eig = n >= 3 && !o->op ? whirl_eig_alloc(n) : NULL;
-  f->M = calloc((na + 1) * (na + 1), sizeof *f->M);
-  f->A = calloc(n * n, sizeof *f->A);
-  f->Ap = calloc(n * n, sizeof *f->Ap);
-  f->Am = calloc(n * n, sizeof *f->Am);
+  f->ls = f->sparse ? whirl_linsol_alloc_sparse(na + 1, f->sp.Mp, f->sp.Mi)
+                    : whirl_linsol_alloc_dense(na + 1);
+  f->eig = n >= 3 && !o->op && !f->sparse ? whirl_eig_alloc(n) : NULL;
+  f->M = f->sparse ? calloc(1, sizeof *f->M) : calloc((na + 1) * (na + 1), sizeof *f->M);
+  f->A = calloc(nj, sizeof *f->A);
+  f->Ap = calloc(nj, sizeof *f->Ap);
+  f->Am = calloc(nj, sizeof *f->Am);
+  f->gx = calloc(n, sizeof *f->gx);
+  f->xc = calloc(n, sizeof *f->xc);
+  f->pc = calloc(base->npar, sizeof *f->pc);
   f->v = calloc(n + 1, sizeof *f->v);
   f->w = calloc(n + 1, sizeof *f->w);
   f->phi = calloc(n + 1, sizeof *f->phi);
@@ -462,7 +576,8 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   f->tmp = calloc(f->N, sizeof *f->tmp);
   f->er = calloc(n, sizeof *f->er);
   f->ei = calloc(n, sizeof *f->ei);
-  if (!f->b || !f->c || !f->ls || (n >= 3 && !o->op && !f->eig) || !f->M || !f->A ||
+  if (!f->b || !f->c || !f->ls || (n >= 3 && !o->op && !f->sparse && !f->eig) || !f->M ||
+      !f->A || !f->gx || !f->xc || !f->pc ||
       !f->Ap || !f->Am || !f->v || !f->w || !f->phi || !f->pf || !f->pq ||
       !f->xs || !f->fq || !f->fqp || !f->work || !f->Zs ||
       !f->tmp || !f->er || !f->ei)
@@ -479,8 +594,14 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   s->n = f->N;
   s->npar = base->npar;
   s->F = fold_F;
-  s->Fx = fold_Fx;
-  s->Fp = NULL;
+  s->Fx = f->sparse ? NULL : fold_Fx;
+  if (f->sparse) {
+    s->nnz = f->sp.snz;
+    s->Jp = f->sp.Sp;
+    s->Ji = f->sp.Si;
+    s->Fx_sparse = fold_Fx_sparse;
+  }
+  s->Fp = o->cond ? NULL : fold_Fp;
   s->accept = fold_accept;
   s->ntest = o->cond || o->op ? 0 : WHIRL_FOLD_NTEST;
   s->test = o->cond || o->op ? NULL : fold_test;
@@ -501,7 +622,8 @@ void whirl_fold_free(whirl_fold *f) {
   free(f->v); free(f->w); free(f->phi); free(f->pf); free(f->pq);
   free(f->xs); free(f->fq); free(f->fqp); free(f->work);
   free(f->Zs); free(f->tmp); free(f->er); free(f->ei);
-  free(f->e_row); free(f->e_col); free(f->e_val);
+  free(f->e_row); free(f->e_col); free(f->e_val); free(f->gx); free(f->xc); free(f->pc);
+  fold_sparse_free(&f->sp);
   free(f);
 }
 
@@ -517,15 +639,55 @@ static void operator_matrix(const whirl_fold *f, double *out) {
   for (size_t k = 0; k < f->ne; ++k) out[f->e_row[k] + na * f->e_col[k]] += f->e_val[k];
 }
 
+/* Sparse start: borders from a fixed pseudo-random pair, then twice the
+ * null vectors of [A b; c^T 0] as the new borders — at a singular A the
+ * bordered solves give its null vectors exactly (inverse iteration
+ * without an SVD of order na). */
+static int sparse_borders(whirl_fold *f) {
+  const size_t na = f->na, m = na + 1;
+  unsigned long long r = 88172645463325252ULL;
+  for (size_t i = 0; i < na; ++i) { /* xorshift64 */
+    r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+    f->c[i] = (double)(r >> 11) / 9007199254740992.0 - 0.5;
+    r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+    f->b[i] = (double)(r >> 11) / 9007199254740992.0 - 0.5;
+  }
+  f->cached = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    int rc = factor_bordered(f);
+    if (rc != WHIRL_OK) return rc;
+    memset(f->v, 0, m * sizeof *f->v);
+    memset(f->w, 0, m * sizeof *f->w);
+    f->v[na] = f->w[na] = 1.0;
+    if ((rc = whirl_linsol_solve(f->ls, f->v, 1, 0)) != WHIRL_OK ||
+        (rc = whirl_linsol_solve(f->ls, f->w, 1, 1)) != WHIRL_OK)
+      return rc;
+    const double nv = norm2(f->v, na), nw = norm2(f->w, na);
+    if (!(nv > 0) || !(nw > 0) || !isfinite(nv) || !isfinite(nw)) return WHIRL_ESINGULAR;
+    for (size_t i = 0; i < na; ++i) f->c[i] = f->v[i] / nv, f->b[i] = f->w[i] / nw;
+  }
+  return WHIRL_OK;
+}
+
 int whirl_fold_init(whirl_fold *f, const double *x, const double *p, double *Z) {
   const size_t n = f->n, na = f->na;
   for (size_t i = 0; i < n; ++i)
     if (!isfinite(x[i]))
       return WHIRL_FAIL(f, WHIRL_EINVAL, "fold start: x[%zu] is not finite", i);
+  f->cached = 0;
   int rc = jac(f, x, p, f->A);
   if (rc != 0)
     return WHIRL_FAIL(f, rc < 0 ? rc : WHIRL_EDOMAIN,
                       "fold start: the Jacobian failed (%d)", rc);
+  if (f->sparse) {
+    if ((rc = sparse_borders(f)) != WHIRL_OK)
+      return WHIRL_FAIL(f, rc, "fold start: the bordered operator [A b; c^T 0] is "
+                        "singular (the point is not a simple fold or PD)");
+    memcpy(Z, x, n * sizeof *Z);
+    Z[n] = p[f->o.free[0]];
+    f->errmsg[0] = 0;
+    return WHIRL_OK;
+  }
   double sv;
   operator_matrix(f, f->Am);
   rc = whirl_null_vectors(na, na, f->Am, 1, f->c, &sv);

@@ -480,8 +480,8 @@ static void switch_general(const whirl_colloc *c, const double *X,
 
 /* The period-doubling locus from PD1 in (σ, ρ): the minimally augmented
  * system of whirl_fold with the antiperiodic collocation operator
- * (whirl_colloc_pd_operator), continued in σ from 10 to 10.25 (dense: the
- * fold system has no structured solver yet).  Checked by
+ * (whirl_colloc_pd_operator), continued in σ from 10 to 10.25 (the
+ * sparse path of the fold system).  Checked by
  * an independent route at the end: the orbit's multipliers from the
  * variational equations integrated along x(0) (whirl_floquet_multipliers)
  * have a real one at −1. */
@@ -507,6 +507,41 @@ static void test_pd_locus(whirl_colloc *c, const double *Xpd, const double *ppd)
   if (rc == WHIRL_OK) rc = whirl_fold_vectors(f, Z, p, NULL, NULL, &g, NULL);
   ok(rc == WHIRL_OK && fabs(g) < 1e-6, "at PD1 the antiperiodic operator is singular "
      "(g = %.1e)", g);
+  /* dense against sparse: the same base without its pattern takes the
+   * dense path; g and the fold system's Jacobian agree */
+  {
+    whirl_system dense = *whirl_colloc_system(c);
+    dense.Jp = dense.Ji = NULL, dense.nnz = 0, dense.Fx_sparse = NULL, dense.bsolver = NULL;
+    whirl_fold *fd = whirl_fold_alloc(&dense, &fo, err, sizeof err);
+    const size_t N = nx + 1;
+    double *Zd = malloc(N * sizeof *Zd), *Js = malloc(N * N * sizeof *Js),
+           *Jd = malloc(N * N * sizeof *Jd), *work = malloc((N * N + 2 * N) * sizeof *work);
+    double gd = NAN, jdiff = 0.0, jmax = 0.0;
+    int rcd = fd && Zd && Js && Jd && work ? whirl_fold_init(fd, Xpd, p, Zd) : WHIRL_ENOMEM;
+    if (rcd == WHIRL_OK) rcd = whirl_fold_vectors(fd, Zd, p, NULL, NULL, &gd, NULL);
+    if (rcd == WHIRL_OK)
+      rcd = whirl_system_jacobian(whirl_fold_system(f), Z, p, Js, work) ||
+            whirl_system_jacobian(whirl_fold_system(fd), Zd, p, Jd, work);
+    /* the g row up to its sign: the null vectors' signs are arbitrary */
+    double sg = 0.0;
+    for (size_t j = 0; rcd == WHIRL_OK && j < N; ++j) sg += Js[nx + N * j] * Jd[nx + N * j];
+    sg = sg < 0 ? -1.0 : 1.0;
+    for (size_t q = 0; rcd == WHIRL_OK && q < N * N; ++q) {
+      const double ws = q % N == nx ? sg : 1.0;
+      jdiff = fmax(jdiff, fabs(ws * Js[q] - Jd[q]));
+      jmax = fmax(jmax, fabs(Jd[q]));
+    }
+    ok(rcd == WHIRL_OK && whirl_fold_system(f)->Jp && !whirl_fold_system(fd)->Jp &&
+           jdiff <= 1e-7 * jmax && fabs(gd) < 1e-6,
+       "PD locus: sparse and dense paths agree (Jacobian %.1e of %.1e, g %.1e)", jdiff, jmax,
+       gd);
+    whirl_fold_free(fd);
+    free(Zd), free(Js), free(Jd), free(work);
+    double jerr = 1.0;
+    rcd = whirl_system_check_jacobian(whirl_fold_system(f), Z, p, &jerr);
+    ok(rcd == 0 && jerr < 1e-5, "PD locus: sparse Jacobian and dF/dp against finite "
+       "differences of the whole system (%.1e)", jerr);
+  }
   whirl_cont_options co;
   whirl_cont_options_default(&co);
   co.icp = 0;
@@ -515,6 +550,7 @@ static void test_pd_locus(whirl_colloc *c, const double *Xpd, const double *ppd)
   co.p_min = 9.5;
   co.p_max = 10.25;
   co.nmx = 100;
+  co.linsol = WHIRL_LINSOL_SPARSE; /* the fold system's own pattern */
   whirl_cont *ct = whirl_cont_alloc(whirl_fold_system(f), &co, err, sizeof err);
   rc = ct ? whirl_cont_start(ct, Z, p, 1) : WHIRL_EINVAL;
   size_t npts = 0;
