@@ -744,6 +744,15 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
       memcpy(O->X, so->x, b->nb * sizeof *O->X);
       whirl_periodic_restore(&dst, so->mesh, O->X);
       whirl_colloc_rotations_of(O->colloc, O->X); /* AUTO's SETRTN */
+      /* as for equilibria (run_tangent_start): along the stored tangent,
+       * which the plain start's Newton at fixed parameter cannot do at an
+       * LP of orbits (singular there) */
+      if (s->isw == 1 && so->tan && so->icp == b->icp && !pd) {
+        O->D = malloc((b->nb + 1) * sizeof *O->D);
+        if (!O->D) return -1;
+        memcpy(O->D, so->tan, (b->nb + 1) * sizeof *O->D);
+        b->dir = O->D;
+      }
     } else { /* another mesh: resample the stored orbit */
       whirl_colloc_options c0 = co;
       c0.ntst = (size_t)so->ntst;
