@@ -748,9 +748,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
        * which the plain start's Newton at fixed parameter cannot do at an
        * LP of orbits (singular there) */
       if (s->isw == 1 && so->tan && so->icp == b->icp && !pd) {
-        O->D = malloc((b->nb + 1) * sizeof *O->D);
-        if (!O->D) return -1;
-        memcpy(O->D, so->tan, (b->nb + 1) * sizeof *O->D);
+        memcpy(O->D, so->tan, (b->nb + 1) * sizeof *O->D); /* O->D: nb + 1 */
         b->dir = O->D;
       }
     } else { /* another mesh: resample the stored orbit */
