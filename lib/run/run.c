@@ -212,8 +212,10 @@ static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *
     if (orbit && (v->ref.index == 11 || !strcasecmp(v->ref.name, "PERIOD"))) {
       if (aut) wT = v->value;
     } else if (k < 0) {
+      char nm[32];
+      if (v->ref.index) snprintf(nm, sizeof nm, "PAR(%d)", v->ref.index);
       run_fail(R, WHIRL_RK_THL, "THL: '%s' is not a parameter of model '%s'",
-               v->ref.index ? "(index)" : v->ref.name, R->prob.name);
+               v->ref.index ? nm : v->ref.name, R->prob.name);
       return -2;
     } else if (k == b->icp) {
       if (!(v->value > 0)) {
@@ -230,8 +232,10 @@ static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *
   for (size_t i = 0; i < s->nthu; i++) {
     const int xi = run_state_index(R, &s->thu[i].ref);
     if (xi < 0) {
+      char nm[32];
+      if (s->thu[i].ref.index) snprintf(nm, sizeof nm, "U(%d)", s->thu[i].ref.index);
       run_fail(R, WHIRL_RK_THU, "THU: '%s' is not a state component of model '%s'",
-               s->thu[i].ref.index ? "(index)" : s->thu[i].ref.name, R->prob.name);
+               s->thu[i].ref.index ? nm : s->thu[i].ref.name, R->prob.name);
       free(*xw), *xw = NULL;
       return -2;
     }

@@ -219,6 +219,20 @@ static int fold_F(const double *Z, const double *p, double *out, void *data) {
   return 0;
 }
 
+/* g_q = -w^T (F_x(q + hq) - F_x(q - hq)) v / 2hq for the parameter q, at
+ * (Z, f->pf) with null_solve done there (uses f->Ap, f->Am). */
+static int g_param(whirl_fold *f, const double *Z, size_t q, double *gq) {
+  const double hq = 6e-6 * (1.0 + fabs(f->pf[q]));
+  int rc;
+  memcpy(f->pq, f->pf, f->base.npar * sizeof *f->pq);
+  f->pq[q] = f->pf[q] + hq;
+  if ((rc = jac(f, Z, f->pq, f->Ap)) != 0) return rc;
+  f->pq[q] = f->pf[q] - hq;
+  if ((rc = jac(f, Z, f->pq, f->Am)) != 0) return rc;
+  *gq = -wdiffv(f) / (2.0 * hq);
+  return 0;
+}
+
 /* The row of g: g_x[n] into gx and g_q of the freed parameters into
  * gq[nfree], g_z = -w^T (F_x)_z v from two base Jacobians per direction
  * (Govaerts 2000, eq. 4.13), v and w padded with zeros beyond A's block;
@@ -242,16 +256,8 @@ static int g_derivs(whirl_fold *f, const double *Z, double *gx, double *gq) {
       gx[j] = -s / (2.0 * h);
     }
   }
-  for (size_t k = 0; k < nf; ++k) {
-    const size_t q = f->o.free[k];
-    const double hq = 6e-6 * (1.0 + fabs(f->pf[q]));
-    memcpy(f->pq, f->pf, f->base.npar * sizeof *f->pq);
-    f->pq[q] = f->pf[q] + hq;
-    if ((rc = jac(f, Z, f->pq, f->Ap)) != 0) return rc;
-    f->pq[q] = f->pf[q] - hq;
-    if ((rc = jac(f, Z, f->pq, f->Am)) != 0) return rc;
-    gq[k] = -wdiffv(f) / (2.0 * hq);
-  }
+  for (size_t k = 0; k < nf; ++k)
+    if ((rc = g_param(f, Z, f->o.free[k], &gq[k])) != 0) return rc;
   return 0;
 }
 
@@ -270,14 +276,7 @@ static int fold_Fp(const double *Z, const double *p, size_t k, double *out, void
   int rc = null_solve(f, Z, f->pf);
   if (rc != 0) return rc;
   if ((rc = whirl_system_param(&f->base, Z, f->pf, k, out, f->work)) != 0) return rc;
-  const double hq = 6e-6 * (1.0 + fabs(f->pf[k]));
-  memcpy(f->pq, f->pf, f->base.npar * sizeof *f->pq);
-  f->pq[k] = f->pf[k] + hq;
-  if ((rc = jac(f, Z, f->pq, f->Ap)) != 0) return rc;
-  f->pq[k] = f->pf[k] - hq;
-  if ((rc = jac(f, Z, f->pq, f->Am)) != 0) return rc;
-  out[n] = -wdiffv(f) / (2.0 * hq);
-  return 0;
+  return g_param(f, Z, k, &out[n]);
 }
 
 /* The sparse Jacobian of the fold system in its pattern (fold_sparse.c):
