@@ -190,7 +190,7 @@ interrupt() { # SIGNAL DIR CMD...: start, wait for DIR.tmp.PID (or 0.5 s
 rc=$(interrupt INT sweep-int "$WHIRL" sfd sweep --from 0.5 --to 8 --step 0.01 --out sweep-int --quiet)
 [ "$rc" -ne 0 ] && [ ! -e sweep-int ] && no_temps .
 ok $? "SIGINT during sfd sweep (tables written as it goes): exit $rc, no directory, no temporary left"
-rc=$(interrupt TERM - "$WHIRL" sfd basins --omega 1.78 --points 3000 --out bas-term --quiet)
+rc=$(interrupt TERM - "$WHIRL" sfd basins --omega 1.78 --points 40000 --out bas-term --quiet)
 [ "$rc" -ne 0 ] && [ ! -e bas-term ] && no_temps .
 ok $? "SIGTERM during sfd basins: exit $rc, nothing left"
 "$WHIRL" run small.whirl --quiet > /dev/null 2>&1
