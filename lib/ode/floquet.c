@@ -80,6 +80,11 @@ static int poincare_multipliers(const whirl_problem *prob, const double *p,
   return rc;
 }
 
+/* The farthest from 1 an autonomous orbit's trivial multiplier may be
+ * computed for its others to count: a well-resolved orbit's is within
+ * ~1e-6 of 1, a coarse mesh's within ~1e-2 (the pairs of test/auto-demos). */
+#define TRIVIAL_TOL 0.1
+
 /* Eigenvalues of M sorted by decreasing modulus, and with drop_trivial the
  * Poincaré-map multipliers; shared by both routes to M. */
 static int multipliers_of(const whirl_problem *prob, const double *p,
@@ -105,6 +110,12 @@ static int multipliers_of(const whirl_problem *prob, const double *p,
     double best = INFINITY;
     for (size_t i = 0; i < n; ++i) best = fmin(best, hypot(er[i] - 1.0, ei[i]));
     if (trivial) *trivial = best;
+    /* An orbit's multiplier 1 (along the flow) computed this far from 1
+     * says M is too ill-conditioned for any of its eigenvalues: near a
+     * homoclinic loop its entries grow like e^{λT} (demo vhb, T = 30: 1e8,
+     * the "multipliers" -14, -92, ... of a conservative family whose true
+     * ones are 1 and 1).  Its stability is unknown, not what M says. */
+    if (!(best <= TRIVIAL_TOL)) return WHIRL_ESINGULAR;
     rc = poincare_multipliers(prob, p, t0, x0, xT, Mm, er, ei);
     if (rc == WHIRL_ESINGULAR && best < INFINITY) {
       /* f(x0) = 0: a constant orbit (the start of a branch at a Hopf

@@ -20,8 +20,11 @@ extern "C" {
  * otherwise *m = n.  On entry *m is the capacity.  M (may be NULL) receives
  * the monodromy matrix (n*n, column-major); *trivial (may be NULL) the
  * distance |mu - 1| of the dropped multiplier, a check on the accuracy of the
- * orbit.  rtol, atol: integrator tolerances (<= 0: 1e-11, 1e-13).  Returns
- * WHIRL_OK or an error with the message in errbuf. */
+ * orbit: with drop_trivial, when no eigenvalue of M lies within 0.1 of 1, M
+ * is too inaccurate for any of its multipliers (an orbit near a homoclinic
+ * loop, whose M has entries like e^{λT}) and WHIRL_ESINGULAR is returned:
+ * its stability is unknown.  rtol, atol: integrator tolerances (<= 0:
+ * 1e-11, 1e-13).  Returns WHIRL_OK or an error with the message in errbuf. */
 WHIRL_API int whirl_floquet_multipliers(const whirl_problem *prob,
                                         const double *p, double t0,
                                         const double *x0, double T,
@@ -34,7 +37,8 @@ WHIRL_API int whirl_floquet_multipliers(const whirl_problem *prob,
  * obtained otherwise, e.g. from the condensed collocation equations
  * (AUTO-07p): x0 is the orbit at t0 and xT its end after one period (equal
  * to x0 for a closed orbit), used by the Poincaré map when drop_trivial.
- * *m on entry the capacity; *trivial (may be NULL) as above. */
+ * *m on entry the capacity; *trivial (may be NULL) and WHIRL_ESINGULAR as
+ * above. */
 WHIRL_API int whirl_floquet_from_monodromy(const whirl_problem *prob,
                                            const double *p, double t0,
                                            const double *x0, const double *xT,

@@ -144,11 +144,17 @@ static int interval_max(void *cv, N_Vector y, N_Vector dky, const orbit *o,
   if (CVodeReInit(cv, o->t[a], y) != CV_SUCCESS) return -1;
   CVodeSetStopTime(cv, o->t[b]);
   double tr = o->t[a];
-  while (tr < o->t[b]) {
+  /* CV_ONE_STEP bypasses CVODE's own step limit: bounded here, so a start
+   * whose flow blows up inside the interval (CVODE's steps shrink until
+   * t + h = t, vhb's orbits near the homoclinic loop) ends as "no
+   * reference" instead of spinning for ever */
+  for (long steps = 0; tr < o->t[b]; ++steps) {
+    if (steps == 1000000) return -1;
     int st = CVode(cv, o->t[b], y, &tr, CV_ONE_STEP);
     if (st < 0) return -1;
     double h;
     CVodeGetLastStep(cv, &h);
+    if (!(fabs(h) > 1e-15 * (fabs(tr) + 1.0))) return -1; /* stalled */
     for (int k = 1; k <= 16; ++k) {
       if (CVodeGetDky(cv, tr - h + h * k / 16.0, 0, dky) != CV_SUCCESS) return -1;
       track(N_VGetArrayPointer(dky), n, mx);

@@ -24,7 +24,9 @@
  *      x = F(a cos ωt + b sin ωt) with a = (1 − ω²)/D, b = 2ζω/D,
  *      D = (1 − ω²)² + (2ζω)², and multipliers of modulus e^{−ζT} are
  *      closed forms: from harmonics, conversion both ways, save/restore of
- *      the mesh, multipliers.
+ *      the mesh, multipliers;
+ *  (f) the trivial multiplier of an autonomous orbit as the check of its
+ *      monodromy matrix (closed-form λ-ω cycle).
  * Run with the argument "quick" for a reduced cascade (first PD and the
  * switch only, coarser mesh) and a shorter Duffing trace (for valgrind).
  * SPDX-License-Identifier: BSD-3-Clause */
@@ -1046,6 +1048,35 @@ static void test_mesh_adaptation(void) {
   free(X), free(smp);
 }
 
+/* (f) The trivial multiplier as a check of the monodromy matrix: the
+ * λ-ω cycle r = 1 (μ = 1, period 2π) has at x0 = (1, 0) the monodromy
+ * diag(e^{−4π}, 1) exactly, its multiplier e^{−4π}; a matrix 1 % off in the
+ * trivial direction still gives it; one as ill-conditioned as the
+ * condensed monodromy of vhb's orbit of period 29 (entries 1.6e8,
+ * eigenvalues ±1.1e7 i, none near 1) gives none: stability unknown
+ * (WHIRL_ESINGULAR), not a multiplier that invents a PD. */
+static void test_trivial_multiplier(void) {
+  const double p[1] = {1.0}, x0[2] = {1.0, 0.0}, e = exp(-4 * PI);
+  const double exact[4] = {e, 0, 0, 1}, off[4] = {e, 0, 0, 1.01};
+  const double wild[4] = {1.57e8, -1.52e8, 1.63e8, -1.57e8};
+  double re[2], im[2];
+  size_t m = 2;
+  int rc = whirl_floquet_from_monodromy(&lamom, p, 0.0, x0, x0, exact, 1, re, im, &m, NULL);
+  ok(rc == 0 && m == 1 && fabs(re[0] - e) < 1e-12 && im[0] == 0,
+     "(f) lambda-omega cycle: multiplier %.6g = e^-4pi from its exact monodromy",
+     rc == 0 ? re[0] : NAN);
+  m = 2;
+  rc = whirl_floquet_from_monodromy(&lamom, p, 0.0, x0, x0, off, 1, re, im, &m, NULL);
+  ok(rc == 0 && m == 1 && fabs(re[0] - e) < 1e-12,
+     "(f) the same with the trivial multiplier 1.01 (rc %d)", rc);
+  m = 2;
+  double triv = 0;
+  rc = whirl_floquet_from_monodromy(&lamom, p, 0.0, x0, x0, wild, 1, re, im, &m, &triv);
+  ok(rc == WHIRL_ESINGULAR,
+     "(f) a monodromy with no eigenvalue near 1 (nearest %.3g away): stability "
+     "unknown (rc %d)", triv, rc);
+}
+
 int main(int argc, char **argv) {
   const int quick = argc > 1 && strcmp(argv[1], "quick") == 0;
   double t0 = now();
@@ -1061,5 +1092,6 @@ int main(int argc, char **argv) {
   test_mesh_adaptation();
   test_errors();
   test_interface();
+  test_trivial_multiplier();
   return done_testing();
 }
