@@ -169,10 +169,23 @@ static const cli_doc response_doc = {
 typedef struct resp_args {
   const char *file, *unit, *dir, *seed[8], *stability, *discover;
   double from, to, unb, clr, visc;
-  size_t harmonics, nmx, nseed, starts;
+  size_t harmonics, nmx, nseed, starts, hill_nev;
   int dseed;
   int node, noplot, quiet;
 } resp_args;
+
+/* Points in motion whose stability could not be computed (the sparse Hill
+ * method's hill_nev too small for the exponents near 0, or a failed
+ * eigensolver): said once, since the picture shows them grey. */
+static void note_unknown_stability(const resp_table *t, size_t hill_nev) {
+  size_t unknown = 0;
+  for (size_t i = 0; i < t->n; ++i)
+    if (t->pt[i].stable < 0 && t->pt[i].Omega > 0) ++unknown;
+  if (unknown)
+    fprintf(stderr, "whirl rotor response: stability unknown at %zu of %zu points "
+            "(with the sparse Hill method: more than --hill-nev %zu exponents near 0)\n",
+            unknown, t->n, hill_nev);
+}
 
 static int parse_args(int argc, char **argv, resp_args *a) {
   const char *seed = NULL;
@@ -182,8 +195,9 @@ static int parse_args(int argc, char **argv, resp_args *a) {
   whirl_fe_discover_options dd;
   whirl_fe_hbm_response_options_default(&ro);
   whirl_fe_discover_options_default(&dd);
-  char d_h[24], d_nmx[24], d_starts[24], d_seed[24];
+  char d_h[24], d_nmx[24], d_starts[24], d_seed[24], d_nev[24];
   snprintf(d_h, sizeof d_h, "%zu", ro.hbm.harmonics);
+  snprintf(d_nev, sizeof d_nev, "%zu", ro.hbm.hill_nev);
   snprintf(d_nmx, sizeof d_nmx, "%zu", ro.nmx);
   snprintf(d_starts, sizeof d_starts, "%zu", dd.starts);
   snprintf(d_seed, sizeof d_seed, "%lu", (unsigned long)dd.seed);
@@ -212,6 +226,10 @@ static int parse_args(int argc, char **argv, resp_args *a) {
        "Hill's stability: auto (dense up to 1200 unknowns of the Hill matrix, else "
        "sparse), dense, sparse, or off",
        NULL},
+      {"--hill-nev", CLI_SIZE, &a->hill_nev, "N",
+       "the most Floquet exponents the sparse Hill method computes at one orbit (all "
+       "within 1.05 omega/2 of 0 are needed; where more lie there, stability is unknown)",
+       d_nev},
       {"--nmx", CLI_SIZE, &a->nmx, "N", "continuation steps per branch", d_nmx},
       {"-o", CLI_STRING, &a->dir, "DIR", "output directory (also --out)", NULL},
       CLI_OPTS_OUT(a->dir, a->noplot, a->quiet)};
@@ -239,6 +257,7 @@ static int check_args(const char *CMD, resp_args *a, const whirl_fe_rotor *r, do
   }
   o->hbm.stability = k == 3 ? -1 : k;
   if (a->nmx) o->nmx = a->nmx;
+  if (a->hill_nev) o->hbm.hill_nev = a->hill_nev;
   o->speed_min = isnan(a->from) ? r->speed_min : a->from * f;
   o->speed_max = isnan(a->to) ? r->speed_max : a->to * f;
   o->unbalance = a->unb, o->clearance = a->clr, o->viscosity = a->visc;
@@ -373,6 +392,7 @@ int cmd_rotor_response(int argc, char **argv) {
     if (!a.quiet)
       fprintf(stderr, "whirl rotor response: %zu points on %d branches in %s\n", t.n,
               t.branch, a.dir);
+    if (!a.quiet && o.hbm.stability != 0) note_unknown_stability(&t, o.hbm.hill_nev);
   }
   free(t.pt);
   whirl_fe_rotor_free(r);

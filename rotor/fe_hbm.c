@@ -17,7 +17,7 @@ void whirl_fe_hbm_options_default(whirl_fe_hbm_options *o) {
   o->harmonics = 5;
   o->nu = 1;
   o->stability = -1;
-  o->hill_nev = 24;
+  o->hill_nev = 48;
 }
 
 void whirl_fe_hbm_params(double Omega, double *p) {

@@ -15,12 +15,16 @@
  * sparsity of K, C + ΩG, M per harmonic, the derivative ∇ coupling a_k with
  * b_k, and a dense (m L)² block of the nonlinear elements.
  *
- * Of the nev eigenvalues nearest σ, those in the strip |Im λ| ≤ ω/2 are
- * one copy each of the exponents of the modes nearest the imaginary axis
- * around 0 (the copies λ + i k ω, k ≠ 0, lie outside the strip): the
- * lightly damped modes that decide stability.  Strongly damped exponents,
- * far from σ, are not computed; nor is an exponent with Re λ ≳ ω/2 unless
- * nev reaches it.
+ * All eigenvalues within R = 1.05 ω/2 of σ are computed (nev grows until
+ * the farthest of the nev nearest σ lies beyond R, up to hill_nev; past
+ * that the stability is unknown, WHIRL_EMAXITER).  Those in the strip
+ * |Im λ| ≤ ω/2 are one copy each of the exponents of the modes nearest the
+ * imaginary axis around 0 (the copies λ + i k ω, k ≠ 0, lie outside the
+ * strip): every exponent with |λ| ≤ ω/2, the lightly damped modes that
+ * decide stability.  Strongly damped exponents, far from σ, are not
+ * computed; nor is an unstable one farther than R (Re λ ≳ ω/2 or, at the
+ * strip's edge, Re λ ≳ 0.3 ω/2), which a branch from a stable start
+ * reaches only by crossing the disk.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include "config.h"
 
@@ -267,6 +271,60 @@ static int arnoldi(hill_op *o, int nev, double *start, int *warm, double *dr,
   return rc;
 }
 
+/* 1/|θ| = |λ − σ| of the farthest Ritz value, and the count of those
+ * within R of σ. */
+static double farthest(const double *dr, const double *di, int nconv, double R,
+                       int *inside) {
+  double far = 0;
+  *inside = 0;
+  for (int j = 0; j < nconv; ++j) {
+    double d = 1 / hypot(dr[j], di[j]);
+    if (d > far) far = d;
+    if (d <= R) ++*inside;
+  }
+  return far;
+}
+
+/* The exponents within R = 1.05 ω/2 of σ, by Arnoldi runs with nev grown
+ * until the farthest of the nev nearest σ lies beyond R (or nev reaches
+ * nev_max).  The disk holds one copy of every exponent with |λ| ≤ ω/2 —
+ * every lightly damped one of the strip, whatever its frequency — and
+ * hardly any copy from outside the strip, so nev follows the count of
+ * such modes, which grows with the speed: the next orbit starts from that
+ * count and a margin (h->hill_nev_cur). */
+static int disk_exponents(whirl_fe_hbm *h, hill_op *o, double w, int nev_max,
+                          double *dr, int *nev_used, int *nconv) {
+  const double R = 1.05 * 0.5 * w;
+  const int margin = 6;
+  int nev = h->hill_nev_cur > 0 ? h->hill_nev_cur : 8, inside = 0, rc;
+  if (nev > nev_max) nev = nev_max;
+  for (;;) {
+    double *di = dr + nev_max + 1;
+    rc = arnoldi(o, nev, h->hill_start, &h->hill_warm, dr, di, nconv);
+    if (rc) {
+      WHIRL_ERRMSG(h->errmsg, sizeof h->errmsg, rc, "sparse Hill (ARPACK, nev "
+                   "%d): %s", nev, whirl_strerror(rc));
+      return rc;
+    }
+    double far = farthest(dr, di, *nconv, R, &inside);
+    if (*nconv >= nev && far >= R) break;
+    if (nev >= nev_max) {
+      WHIRL_ERRMSG(h->errmsg, sizeof h->errmsg, WHIRL_EMAXITER,
+                   "sparse Hill: the %d exponents nearest %.4g lie within "
+                   "1.05 omega/2 = %.4g of it, and more may: stability "
+                   "unknown here (raise hill_nev, --hill-nev)",
+                   nev, o->sigma, R);
+      return WHIRL_EMAXITER;
+    }
+    nev += nev / 2 > 4 ? nev / 2 : 4;
+    if (nev > nev_max) nev = nev_max;
+  }
+  *nev_used = nev;
+  h->hill_nev_cur = inside + margin < nev_max ? inside + margin : nev_max;
+  if (h->hill_nev_cur < margin) h->hill_nev_cur = margin;
+  return WHIRL_OK;
+}
+
 int fe_hill_sparse(whirl_fe_hbm *h, const double *qfull, const double *p,
                    size_t nev, double *re, double *im, size_t *m) {
   int nd = h->r->ndof, nm = h->aft.m, L = h->L;
@@ -281,19 +339,21 @@ int fe_hill_sparse(whirl_fe_hbm *h, const double *qfull, const double *p,
   double sigma = 1e-3 * w; /* just right of 0: P is singular at a fold */
   double *dr = malloc(2 * (nev + 1) * sizeof *dr);
   if (!dr) return WHIRL_ENOMEM;
-  int nconv = 0;
+  int nconv = 0, used = 0;
   rc = op_init(&o, h, Omega, sigma);
   if (!rc && !h->hill_start) {
     h->hill_start = malloc((size_t)o.NH * 2 * sizeof *h->hill_start);
     h->hill_warm = 0;
     if (!h->hill_start) rc = WHIRL_ENOMEM;
   }
-  if (!rc)
-    rc = arnoldi(&o, (int)nev, h->hill_start, &h->hill_warm, dr, dr + nev + 1,
-                 &nconv);
+  if (rc)
+    WHIRL_ERRMSG(h->errmsg, sizeof h->errmsg, rc, "sparse Hill: shift-invert "
+                 "operator: %s", whirl_strerror(rc));
+  else
+    rc = disk_exponents(h, &o, w, (int)nev, dr, &used, &nconv);
   op_free(&o);
   size_t k = 0;
-  for (int j = 0; !rc && j < nconv && j < (int)nev; ++j) {
+  for (int j = 0; !rc && j < nconv && j < used; ++j) {
     double a = dr[j], b = dr[nev + 1 + j], n2 = a * a + b * b;
     double lr = sigma + a / n2, li = -b / n2;
     if (fabs(li) > 0.5 * w * (1 + 1e-9)) continue; /* a copy off the strip */
@@ -301,11 +361,7 @@ int fe_hill_sparse(whirl_fe_hbm *h, const double *qfull, const double *p,
     im[k++] = li;
   }
   free(dr);
-  if (rc) {
-    WHIRL_ERRMSG(h->errmsg, sizeof h->errmsg, rc, "sparse Hill (ARPACK): %s",
-                 whirl_strerror(rc));
-    return rc;
-  }
+  if (rc) return rc;
   for (size_t i = 1; i < k; ++i) /* by decreasing real part */
     for (size_t j = i; j > 0 && re[j] > re[j - 1]; --j) {
       double t = re[j]; re[j] = re[j - 1]; re[j - 1] = t;

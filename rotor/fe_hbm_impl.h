@@ -202,6 +202,7 @@ struct whirl_fe_hbm {
   double *hill_start;      /* 2 ndof L: the sparse Hill method's next
                               Arnoldi start (fe_hbm_hill_sparse.c) */
   int hill_warm;           /* hill_start holds one */
+  int hill_nev_cur;        /* the next orbit's first nev (0: not yet) */
   char errmsg[512];
 };
 

@@ -524,7 +524,10 @@ static void multiplier_tests(cont_state *st, size_t m) {
   if (isfinite(best_pd)) st->has_pd = 1, st->psi_pd = best_pd;
 }
 
-int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
+/* The tangent at st (and the determinant of the extended Jacobian, psi_lp)
+ * without the spectrum: all that the localisation of an LP or a BP needs at
+ * its iterates. */
+int cont_tangent(whirl_cont *c, cont_state *st, const double *dir) {
   const size_t n = c->n, N = c->N;
   if (st->p != c->trial.p) memcpy(st->p, c->trial.p, c->npar * sizeof *st->p);
   for (size_t k = 0; k < c->npar; ++k)
@@ -544,7 +547,14 @@ int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
   else
     whirl_bordered_logdet(c->bd, &st->logdet, &st->sign_det);
   st->psi_lp = st->t[n];
+  st->tests_valid = 0;
+  return 0;
+}
 
+/* The spectrum and the system's test functions at st, whose tangent and
+ * determinant cont_tangent has computed. */
+int cont_tests(whirl_cont *c, cont_state *st) {
+  int rc;
   st->n_unstable = -1;
   st->n_cu = -1;
   st->has_hb = 0;
@@ -580,6 +590,11 @@ int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
   }
   st->tests_valid = 1;
   return 0;
+}
+
+int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
+  int rc = cont_tangent(c, st, dir);
+  return rc ? rc : cont_tests(c, st);
 }
 
 /* ------------------------------------------------------------ output */

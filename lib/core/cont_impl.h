@@ -103,6 +103,8 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
 /* Evaluate the tangent and every test function at st->X, with the border row
  * taken from dir (the predictor direction); st->t is oriented along dir. */
 int cont_analyse(whirl_cont *c, cont_state *st, const double *dir);
+int cont_tangent(whirl_cont *c, cont_state *st, const double *dir);
+int cont_tests(whirl_cont *c, cont_state *st);
 
 /* Weighted inner product of N-vectors: sum of w2[i] a[i] b[i], w2 the
  * squared weights of the components (x_weight, p_weight). */

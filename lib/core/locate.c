@@ -74,6 +74,11 @@ static double ftol(const whirl_cont *c, int ev, size_t k, const cont_state *st) 
   }
 }
 
+/* A trial point's tangent, and its tests unless only the tangent's. */
+static int trial_analyse(whirl_cont *c, cont_state *st, int tangent_only) {
+  return tangent_only ? cont_tangent(c, st, c->dir) : cont_analyse(c, st, c->dir);
+}
+
 int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
                 cont_state *out) {
   const cont_state *a = &c->cur;
@@ -86,7 +91,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
     /* the determinant at the start of the step with this step's border row,
      * so both ends use the same row and the ratio is smooth in σ */
     cont_state_copy(c, out, a);
-    if (cont_analyse(c, out, c->dir) != 0) return 1;
+    if (cont_tangent(c, out, c->dir) != 0) return 1;
     ref = out->logdet;
     fa = out->sign_det;
   } else {
@@ -118,6 +123,11 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   /* the bounds and UZ values need p only: the tangent and the spectrum
    * (a factorisation) are computed at the final point alone */
   const int p_only = ev == EV_PMIN || ev == EV_PMAX || ev == EV_UZ;
+  /* an LP's or a BP's test function is the tangent's or the determinant's:
+   * the spectrum (the costliest part of a point of a large system: a sparse
+   * eigensolver) is computed at the final point alone */
+  const int tangent_only = ev == EV_LP || ev == EV_BP;
+
   for (int it = 0; it < 100; ++it) {
     double sigma = (sa * fb - sb * fa) / (fb - fa);
     const double lo = fmin(sa, sb), hi = fmax(sa, sb);
@@ -136,7 +146,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
       const double u = (sigma - sa) / (sb - sa);
       for (size_t i = 0; i < N; ++i) out->X[i] = Xa[i] + u * (Xb[i] - Xa[i]);
       rc = cont_correct(c, a->X, c->dir, sigma, out->X);
-      if (rc == 0 && !p_only) rc = cont_analyse(c, out, c->dir);
+      if (rc == 0 && !p_only) rc = trial_analyse(c, out, tangent_only);
       if (rc < 0) break;
     }
     if (rc != 0) {
@@ -152,7 +162,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
           memcpy(out->X, Xbest, N * sizeof *Xbest);
           sout = sbest + off[j] * fabs(ds);
           rc = cont_correct(c, a->X, c->dir, sout, out->X);
-          if (rc == 0 && !p_only) rc = cont_analyse(c, out, c->dir);
+          if (rc == 0 && !p_only) rc = trial_analyse(c, out, tangent_only);
           if (rc < 0) break;
         }
       }
@@ -187,6 +197,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   free(Xa);
   if (!found) return 1;
   if (p_only && cont_analyse(c, out, c->dir) != 0) return 1;
+  if (tangent_only && cont_tests(c, out) != 0) return 1;
   if (ev == EV_BP) {
     /* At the branch point [F_x F_p; r^T] is singular and the tangent solved
      * from it is an arbitrary vector of the two-dimensional null space.  The

@@ -732,6 +732,66 @@ static void hill_condensed_shift(whirl_fe_nl_kind kind) {
   fe_chain_free(r);
 }
 
+/* The sparse Hill method returns every exponent within 1.05 ω/2 of its
+ * shift, however many (nev grows to reach the disk's edge), and says
+ * stability is unknown rather than return part of them when hill_nev
+ * cannot hold them all: a 9-node chain at a speed where the disk holds
+ * many of the dense method's exponents, at a state that is not an orbit. */
+static whirl_fe_hbm *make_nev(const whirl_fe_rotor *r, int H, size_t nev) {
+  whirl_fe_hbm_options o;
+  whirl_fe_hbm_options_default(&o);
+  o.harmonics = (size_t)H;
+  o.length_scale = 2e-4;
+  o.stability = 2;
+  if (nev) o.hill_nev = nev;
+  char err[256] = "";
+  whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o, err, sizeof err);
+  if (!h) printf("# alloc: %s\n", err);
+  return h;
+}
+
+static void hill_sparse_complete(void) {
+  fe_chain_opts co;
+  fe_chain_defaults(&co, 9);
+  co.nnl = 1;
+  co.nl[0] = fe_chain_sfd(8, -1);
+  whirl_fe_rotor *r = fe_chain_build(&co);
+  const double Om = 1500.0, w = Om, sigma = 1e-3 * w, R = 1.05 * 0.5 * w;
+  whirl_fe_hbm *hd = make(r, 3, 0, 2e-4, 0, 1), *hs = make_nev(r, 3, 0);
+  whirl_fe_hbm *hf = make_nev(r, 3, 4);
+  const whirl_system *sd = whirl_fe_hbm_system(hd);
+  double *X = calloc(sd->n, sizeof *X), p[4], dre[256], dim[256];
+  double sre[64], sim[64], fre[64], fim[64], worst = 0;
+  size_t md = 256, ms = 64, mf = 64, inside = 0;
+  whirl_fe_hbm_params(Om, p);
+  for (size_t i = 0; i < sd->n; ++i) X[i] = tap_urand(-0.3, 0.3);
+  int rd = whirl_fe_hbm_hill(hd, X, p, dre, dim, &md);
+  int rs = whirl_fe_hbm_hill(hs, X, p, sre, sim, &ms);
+  if (rs == WHIRL_EINVAL && strstr(whirl_fe_hbm_errmsg(hs), "without ARPACK")) {
+    ok(1, "# SKIP sparse Hill completeness: built without ARPACK");
+  } else {
+    for (size_t j = 0; j < md; ++j) {
+      if (!(hypot(dre[j] - sigma, dim[j]) < 0.98 * R)) continue;
+      double best = INFINITY;
+      for (size_t i = 0; i < ms; ++i)
+        best = fmin(best, hypot(sre[i] - dre[j], sim[i] - dim[j]));
+      worst = fmax(worst, best);
+      ++inside;
+    }
+    ok(rd == 0 && rs == 0 && inside >= 8 && worst < 1e-8 * w,
+       "sparse Hill: all %zu dense exponents within 1.05 omega/2 of the shift "
+       "are found (%zu returned, worst %.1e) %s", inside, ms, worst / w,
+       rs ? whirl_fe_hbm_errmsg(hs) : "");
+    int rf = whirl_fe_hbm_hill(hf, X, p, fre, fim, &mf);
+    ok(rf == WHIRL_EMAXITER && strstr(whirl_fe_hbm_errmsg(hf), "stability unknown"),
+       "sparse Hill with hill_nev 4 < %zu: stability unknown, not %zu of them "
+       "(rc %d: %s)", inside, rf ? (size_t)0 : mf, rf, whirl_fe_hbm_errmsg(hf));
+  }
+  free(X);
+  whirl_fe_hbm_free(hd); whirl_fe_hbm_free(hs); whirl_fe_hbm_free(hf);
+  fe_chain_free(r);
+}
+
 static void test_response(void) {
   whirl_fe_rotor *r = duffing3();
   whirl_fe_hbm_response_options o;
@@ -924,6 +984,7 @@ int main(void) {
   test_jacobians(0, 0, WHIRL_FE_SFD_SHORT_2PI);
   hill_condensed_shift(WHIRL_FE_SFD_SHORT_PI);
   hill_condensed_shift(WHIRL_FE_SFD_INERTIA);
+  hill_sparse_complete();
   test_linear();
   test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_PI);
   test_condensed_vs_full(1, 320.0, 4.0, WHIRL_FE_SFD_SHORT_PI);

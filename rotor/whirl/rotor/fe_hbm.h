@@ -82,13 +82,14 @@ typedef struct whirl_fe_hbm_options {
                            × the largest diagonal entry of K) */
   int stability;        /* Hill's multipliers as the system's spectrum:
                            1 dense (all 2 ndof exponents; 2 ndof (2H+1)
-                           eigenvalues per point), 2 sparse (ARPACK: the
-                           exponents in |Im λ| ≤ ω/2 among the hill_nev
-                           nearest the imaginary axis at 0), 0 none;
+                           eigenvalues per point), 2 sparse (ARPACK: every
+                           exponent within 1.05 ω/2 of a small shift near
+                           0, those in |Im λ| ≤ ω/2 returned), 0 none;
                            −1 (default): dense when 2 ndof (2H+1) ≤ 1200,
                            else sparse when built with ARPACK, else none */
-  size_t hill_nev;      /* eigenvalues sought by the sparse Hill method
-                           (default 24) */
+  size_t hill_nev;      /* the most eigenvalues the sparse Hill method
+                           computes at one orbit (default 48); where more
+                           lie within 1.05 ω/2 its stability is unknown */
   int interior_lu;      /* the LU of the held rotor in the condensation:
                            0 (default) banded in a reverse Cuthill–McKee
                            ordering while its kl + ku ≤ 64, else UMFPACK;
@@ -139,9 +140,10 @@ WHIRL_API int whirl_fe_hbm_seed_circular(const whirl_fe_hbm *h, double eps,
 
 /* Hill's Floquet exponents of the solution X at p, by the method of
  * options.stability (dense when 0): dense, the 2 ndof kept eigenvalues;
- * sparse, those of the hill_nev nearest a small shift σ = 10⁻³ ω in the
- * strip |Im λ| ≤ ω/2.  re[], im[] (*m: capacity in, count out), sorted by
- * decreasing real part.  Stable when all re < 0. */
+ * sparse, those within 1.05 ω/2 of a small shift σ = 10⁻³ ω in the strip
+ * |Im λ| ≤ ω/2 (WHIRL_EMAXITER when more than hill_nev lie there).  re[],
+ * im[] (*m: capacity in, at least hill_nev for sparse; count out), sorted
+ * by decreasing real part.  Stable when all re < 0. */
 WHIRL_API int whirl_fe_hbm_hill(whirl_fe_hbm *h, const double *X,
                                 const double *p, double *re, double *im,
                                 size_t *m);
