@@ -308,6 +308,8 @@ void whirl_fe_hbm_free(whirl_fe_hbm *h) {
   free(h->Jnl);
   free(h->qfull);
   free(h->hill_start);
+  free(h->hill_ws);
+  free(h->hill_sel);
   free(h->xsi);
   free(h);
 }
