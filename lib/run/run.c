@@ -592,7 +592,8 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
   /* a point of a locus continues that locus; else the label's own type */
   const char *ty = so->icp2 >= 0 && so->locus[0] ? so->locus : so->ty;
   const int pd = !strcmp(ty, "PD") && b->kind == WHIRL_SOL_COLLOC && O->colloc;
-  if (!strcmp(ty, "LP") || pd) {
+  const int map_pd = !strcmp(ty, "PD") && R->s->ips == WHIRL_IPS_MAP;
+  if (!strcmp(ty, "LP") || pd || map_pd) {
     whirl_fold_options fo;
     whirl_fold_options_default(&fo, (size_t)q);
     whirl_fold_operator op;
@@ -608,6 +609,18 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
       }
       whirl_colloc_pd_operator(O->colloc, &op, ei, ej, ev);
       fo.op = &op;
+    } else if (map_pd) { /* a map's flip: f_x + I = F_x + 2I singular */
+      ei = malloc(R->n * sizeof *ei);
+      ej = malloc(R->n * sizeof *ej);
+      ev = malloc(R->n * sizeof *ev);
+      if (!ei || !ej || !ev) {
+        free(ei), free(ej), free(ev);
+        return -1;
+      }
+      for (size_t j = 0; j < R->n; ++j) ei[j] = ej[j] = j, ev[j] = 2.0;
+      op = (whirl_fold_operator){.na = R->n, .ne = R->n, .ei = ei, .ej = ej, .ev = ev,
+                                 .point_type = WHIRL_PT_PD, .name = "flip curve of a map"};
+      fo.op = &op;
     }
     O->fold = whirl_fold_alloc(base, &fo, err, sizeof err);
     free(ei), free(ej), free(ev);
@@ -615,12 +628,12 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
     O->Z = malloc((whirl_fold_size(O->fold) + 1) * sizeof *O->Z);
     if (!O->Z) return -1;
     if (whirl_fold_init(O->fold, x, p, O->Z) != WHIRL_OK) {
-      run_say(R, "%s locus: %s", pd ? "period-doubling" : "fold", whirl_fold_errmsg(O->fold));
+      run_say(R, "%s locus: %s", pd || map_pd ? "period-doubling" : "fold", whirl_fold_errmsg(O->fold));
       return -1;
     }
     b->fold = O->fold;
     b->sys = whirl_fold_system(O->fold);
-  } else if (!strcmp(ty, "HB") && so->kind == WHIRL_SOL_EQ) {
+  } else if (!strcmp(ty, "HB") && so->kind == WHIRL_SOL_EQ && R->s->ips != WHIRL_IPS_MAP) {
     O->hopf = whirl_hopf_alloc(base, (size_t)q, err, sizeof err);
     if (!O->hopf) goto fail_alloc;
     O->Z = malloc((whirl_hopf_size(O->hopf) + 1) * sizeof *O->Z);
@@ -633,7 +646,7 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
     b->sys = whirl_hopf_system(O->hopf);
   } else {
     run_fail(R, WHIRL_RK_ISW, "ISW = 2 needs an LP (any problem), an HB of "
-             "equilibria or a PD of periodic orbits by collocation; label %d is "
+             "equilibria, a PD of a map or of periodic orbits by collocation; label %d is "
              "%s%s (loci of %s are not available)",
              so->label, so->ty, so->kind == WHIRL_SOL_EQ ? "" : " of periodic orbits",
              so->ty);
@@ -657,7 +670,8 @@ static int start_equilibria(run_ctx *R, run_objects *O, branch_spec *b) {
              "an equilibrium", so->label);
     return -2;
   }
-  O->eq = whirl_equilibrium_alloc(&R->prob);
+  O->eq = R->s->ips == WHIRL_IPS_MAP ? whirl_map_fixed_points_alloc(&R->prob)
+                                     : whirl_equilibrium_alloc(&R->prob);
   if (!O->eq) return -1;
   b->kind = WHIRL_SOL_EQ;
   b->sys = whirl_equilibrium_system(O->eq);
@@ -887,8 +901,9 @@ static int switch_or_locus(run_ctx *R, run_objects *O, branch_spec *b) {
       b->bp = &bp;
     } else if (strcmp(so->ty, "PD") || b->kind != WHIRL_SOL_COLLOC) {
       run_fail(R, WHIRL_RK_ISW, "ISW = -1 switches at a BP, or at a PD of "
-               "periodic orbits by collocation; label %d is %s", so->label,
-               so->ty);
+               "periodic orbits by collocation; label %d is %s%s", so->label,
+               so->ty, R->s->ips == WHIRL_IPS_MAP ? " of a map (the doubled map is not "
+               "in whirl yet)" : "");
       return -2;
     }
   } else if (restart && s->isw == 2) {
@@ -915,7 +930,8 @@ static int run_continuation(run_ctx *R, run_objects *O) {
              "model '%s' is autonomous (its equilibria: IPS = 1)", R->prob.name);
     return -2;
   }
-  int rc = s->ips == WHIRL_IPS_EQUILIBRIA      ? start_equilibria(R, O, &b)
+  const int fixed = s->ips == WHIRL_IPS_EQUILIBRIA || s->ips == WHIRL_IPS_MAP;
+  int rc = fixed                                ? start_equilibria(R, O, &b)
            : s->method == WHIRL_METHOD_COLLOC ? start_colloc(R, O, &b)
                                               : start_hbm(R, O, &b);
   if (!rc) rc = switch_or_locus(R, O, &b);

@@ -674,7 +674,7 @@ static int set_number(whirl_runfile *rf, const key_def *d, const char *where) {
   return WHIRL_OK;
 }
 
-/* IPS: 1 or equilibria, 2 or periodic, basins. */
+/* IPS: 1 or equilibria, 2 or periodic, -1 or map, basins. */
 static int set_ips(whirl_runfile *rf, const key_def *d, const char *where) {
   whirl_run_settings *s = &rf->s;
   const pvalue *v = &rf->v;
@@ -690,15 +690,17 @@ static int set_ips(whirl_runfile *rf, const key_def *d, const char *where) {
     x = WHIRL_IPS_PERIODIC;
   else if (!strcasecmp(t, "basins"))
     x = WHIRL_IPS_BASINS;
+  else if (!strcasecmp(t, "map") || !strcasecmp(t, "maps"))
+    x = WHIRL_IPS_MAP;
   else if (to_int(t, &x))
     return fail(rf, where,
                 "%s: '%s' is not a problem type (1 or equilibria, 2 or "
-                "periodic, basins)",
+                "periodic, -1 or map, basins)",
                 kn, show(t, ITEMLEN, shown, sizeof shown));
-  else if (x != 1 && x != 2)
+  else if (x != 1 && x != 2 && x != -1)
     return fail(rf, where,
                 "%s = %d is not supported (1 equilibria, 2 periodic "
-                "orbits, basins)",
+                "orbits, -1 fixed points of a map, basins)",
                 kn, x);
   s->ips = x;
   return WHIRL_OK;

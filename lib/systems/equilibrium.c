@@ -2,6 +2,13 @@
  * model as an algebraic problem for the continuation core.  The spectrum is
  * the eigenvalues of f_x (LAPACK dgeev), so the core detects Hopf points and
  * reports stability; for non-autonomous models t is fixed at 0.
+ *
+ * The same object serves the fixed points x = f(x, p) of a map (AUTO's
+ * IPS = -1; Kuznetsov, Elements of Applied Bifurcation Theory, 3rd ed.,
+ * 2004, ch. 4): F = f − x, F_x = f_x − I, and the spectrum is the
+ * eigenvalues of f_x as multipliers, so the core's multiplier tests find
+ * the flip (PD, a multiplier −1) and the Neimark–Sacker point (TR, a
+ * complex pair on the unit circle) and the fold is its LP.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +24,7 @@ struct whirl_equilibrium {
   whirl_eig *eig;
   double *J;    /* n*n scratch for the spectrum */
   double *work; /* 2n scratch for finite differences */
+  int map;      /* fixed points of the map x ↦ f(x) */
   int *Jp, *Ji; /* full compressed-column pattern, so the sparse path of the
                    core (UMFPACK) can be used and checked against the dense */
   char errmsg[WHIRL_ERRMSG_SIZE]; /* last message (whirl_equilibrium_errmsg) */
@@ -24,13 +32,26 @@ struct whirl_equilibrium {
 
 static int eq_F(const double *x, const double *p, double *f, void *data) {
   const whirl_equilibrium *eq = data;
-  return eq->prob->rhs(0.0, x, p, f, eq->prob->data);
+  int rc = eq->prob->rhs(0.0, x, p, f, eq->prob->data);
+  if (rc == 0 && eq->map)
+    for (size_t i = 0; i < eq->prob->n; ++i) f[i] -= x[i];
+  return rc;
+}
+
+/* J = f_x, the model's own (or by differences): the Jacobian of the ODE,
+ * the map's derivative */
+static int model_jac(const whirl_equilibrium *eq, const double *x,
+                     const double *p, double *J) {
+  if (eq->prob->jac_x) return eq->prob->jac_x(0.0, x, p, J, eq->prob->data);
+  return whirl_fd_jac_x(eq->prob, 0.0, x, p, J, eq->work);
 }
 
 static int eq_Fx(const double *x, const double *p, double *J, void *data) {
   const whirl_equilibrium *eq = data;
-  if (eq->prob->jac_x) return eq->prob->jac_x(0.0, x, p, J, eq->prob->data);
-  return whirl_fd_jac_x(eq->prob, 0.0, x, p, J, eq->work);
+  int rc = model_jac(eq, x, p, J);
+  if (rc == 0 && eq->map)
+    for (size_t i = 0; i < eq->prob->n; ++i) J[i + eq->prob->n * i] -= 1.0;
+  return rc;
 }
 
 /* dF/dp_k: the model's jac_p gives all parameters at once (n*npar); finite
@@ -64,7 +85,12 @@ static int eq_spectrum(const double *x, const double *p, const double *J,
                       "spectrum: room for %zu of %zu "
                       "eigenvalues",
                       *m, n);
-  if (!J) {
+  if (eq->map) { /* the multipliers: eigenvalues of f_x = F_x + I */
+    int rc = J ? (memcpy(eq->J, J, n * n * sizeof *eq->J), 0) : eq_Fx(x, p, eq->J, data);
+    if (rc != 0) return rc;
+    for (size_t i = 0; i < n; ++i) eq->J[i + n * i] += 1.0;
+    J = eq->J;
+  } else if (!J) {
     int rc = eq_Fx(x, p, eq->J, data);
     if (rc != 0) return rc;
     J = eq->J;
@@ -109,6 +135,14 @@ whirl_equilibrium *whirl_equilibrium_alloc(const whirl_problem *prob) {
   s->x_names = prob->x_names;
   s->p_names = prob->p_names;
   s->data = eq;
+  return eq;
+}
+
+whirl_equilibrium *whirl_map_fixed_points_alloc(const whirl_problem *prob) {
+  whirl_equilibrium *eq = whirl_equilibrium_alloc(prob);
+  if (!eq) return NULL;
+  eq->map = 1;
+  eq->sys.spectrum_kind = WHIRL_SPEC_MULTIPLIERS;
   return eq;
 }
 

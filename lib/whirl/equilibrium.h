@@ -19,6 +19,13 @@ typedef struct whirl_equilibrium whirl_equilibrium;
 WHIRL_API whirl_equilibrium *whirl_equilibrium_alloc(const whirl_problem *prob);
 WHIRL_API void whirl_equilibrium_free(whirl_equilibrium *eq); /* NULL ok */
 
+/* The fixed points x = f(x, p) of the map whose image prob->rhs returns
+ * (prob->jac_x its derivative, or differences): F = f − x, with the
+ * eigenvalues of f_x as the spectrum, kind WHIRL_SPEC_MULTIPLIERS (the
+ * core finds LP at a multiplier +1, PD at −1, TR at a complex pair on the
+ * unit circle).  Freed by whirl_equilibrium_free. */
+WHIRL_API whirl_equilibrium *whirl_map_fixed_points_alloc(const whirl_problem *prob);
+
 /* The algebraic problem; owned by eq. */
 WHIRL_API const whirl_system *whirl_equilibrium_system(
     const whirl_equilibrium *eq);

@@ -54,7 +54,7 @@ typedef enum whirl_run_key {
 } whirl_run_key;
 
 /* Problem types (IPS). */
-enum { WHIRL_IPS_EQUILIBRIA = 1, WHIRL_IPS_PERIODIC = 2,
+enum { WHIRL_IPS_MAP = -1, WHIRL_IPS_EQUILIBRIA = 1, WHIRL_IPS_PERIODIC = 2,
        WHIRL_IPS_BASINS = 11 };
 /* Periodic-orbit methods (METHOD). */
 enum { WHIRL_METHOD_COLLOC = 0, WHIRL_METHOD_HBM = 1 };

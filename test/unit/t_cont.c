@@ -307,6 +307,101 @@ static void test_hopf(void) {
   whirl_equilibrium_free(eq);
 }
 
+/* Fixed points of maps (whirl_map_fixed_points_alloc), against closed
+ * forms.  The logistic map x ↦ μ x (1 − x): the fixed point 1 − 1/μ has the
+ * multiplier 2 − μ, a flip (PD) at μ = 3, and crosses x = 0 at the
+ * transcritical μ = 1 (BP).  The Hénon map (x, y) ↦ (1 − α x² + y, β x) at
+ * α = 1: multipliers μ² + 2αx μ − β = 0, so a flip where x = (1 − β)/(2α)
+ * is a fixed point, (1 − β)² = 4α/3, β = 1 − 2/√3, and a Neimark–Sacker
+ * point (TR) at β = −1, where the complex pair has modulus √−β = 1. */
+static int logistic_rhs(double t, const double *u, const double *p, double *f,
+                        void *data) {
+  (void)t, (void)data;
+  f[0] = p[0] * u[0] * (1.0 - u[0]);
+  return 0;
+}
+static int henon_rhs(double t, const double *u, const double *p, double *f,
+                     void *data) {
+  (void)t, (void)data;
+  f[0] = 1.0 - p[0] * u[0] * u[0] + u[1];
+  f[1] = p[1] * u[0];
+  return 0;
+}
+
+static void test_maps(void) {
+  static const whirl_problem lg = {.name = "logistic", .n = 1, .npar = 1,
+                                   .rhs = logistic_rhs, .autonomous = 1};
+  whirl_equilibrium *eq = whirl_map_fixed_points_alloc(&lg);
+  const whirl_system *s = whirl_equilibrium_system(eq);
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.02;
+  o.ds_max = 0.1;
+  o.p_min = 0.5;
+  o.p_max = 3.5;
+  double p0[1] = {1.5}, x0[1] = {1.0 / 3.0};
+  /* the BP on the trivial branch x = 0 (multiplier μ): approached along
+   * 1 − 1/μ, the localisation's trials jump between the two crossing
+   * branches and the BP lands 5e-4 off, for equilibria alike
+   * (doc/auto-reference.md, "found and left") */
+  double z0[1] = {0.0}, m0[1] = {0.6};
+  o.p_max = 1.5;
+  whirl_branch *b = run(s, &o, z0, m0, +1, NULL);
+  o.p_max = 3.5;
+  whirl_branch *up = run(s, &o, x0, p0, +1, NULL);
+  const whirl_branch_point *bp = b ? nth_type(b, WHIRL_PT_BP, 0) : NULL;
+  ok(b && count_type(b, WHIRL_PT_BP) == 1 && count_type(b, WHIRL_PT_PD) == 0,
+     "logistic map, x = 0 from mu = 0.6: one BP, no PD (%zu, %zu)",
+     b ? count_type(b, WHIRL_PT_BP) : 0, b ? count_type(b, WHIRL_PT_PD) : 0);
+  if (bp) is_abs(bp->p[0], 1.0, 1e-10, "logistic map: BP at mu = 1 (%.12g)", bp->p[0]);
+  whirl_branch_free(b);
+  b = up;
+  const whirl_branch_point *pd = b ? nth_type(b, WHIRL_PT_PD, 0) : NULL;
+  ok(s->spectrum_kind == WHIRL_SPEC_MULTIPLIERS && b &&
+     count_type(b, WHIRL_PT_PD) == 1 && count_type(b, WHIRL_PT_BP) == 0,
+     "logistic map, mu up from 1.5: one PD, no BP (%zu, %zu)",
+     b ? count_type(b, WHIRL_PT_PD) : 0, b ? count_type(b, WHIRL_PT_BP) : 0);
+  if (pd) {
+    is_abs(pd->p[0], 3.0, 1e-10, "logistic map: PD at mu = 3");
+    is_abs(pd->x[0], 2.0 / 3.0, 1e-10, "logistic map: PD at x = 2/3");
+    is_abs(pd->spec_re[0], -1.0, 1e-9, "logistic map: multiplier -1 at the PD");
+  }
+  int mid = -2, past = -2;
+  for (size_t i = 0; b && i < b->len; ++i) {
+    if (fabs(b->pts[i].p[0] - 2.0) < 0.05) mid = b->pts[i].stable;
+    if (b->pts[i].p[0] > 3.1) past = b->pts[i].stable;
+  }
+  ok(mid == 1 && past == 0, "logistic map: stable at mu = 2, unstable past 3");
+  whirl_branch_free(b);
+  whirl_equilibrium_free(eq);
+
+  static const whirl_problem hn = {.name = "henon", .n = 2, .npar = 2,
+                                   .rhs = henon_rhs, .autonomous = 1};
+  eq = whirl_map_fixed_points_alloc(&hn);
+  s = whirl_equilibrium_system(eq);
+  whirl_cont_options_default(&o);
+  o.icp = 1;
+  o.ds = 0.02;
+  o.ds_max = 0.1;
+  o.p_min = -1.5;
+  o.p_max = 0.31;
+  const double beta0 = 0.3, xf = (-(1 - beta0) + sqrt((1 - beta0) * (1 - beta0) + 4)) / 2;
+  double q0[2] = {1.0, beta0}, y0[2] = {xf, beta0 * xf};
+  b = run(s, &o, y0, q0, -1, NULL);
+  pd = b ? nth_type(b, WHIRL_PT_PD, 0) : NULL;
+  const whirl_branch_point *tr = b ? nth_type(b, WHIRL_PT_TR, 0) : NULL;
+  ok(b && count_type(b, WHIRL_PT_PD) == 1 && count_type(b, WHIRL_PT_TR) == 1,
+     "Henon map: one PD and one TR (%zu, %zu)", b ? count_type(b, WHIRL_PT_PD) : 0,
+     b ? count_type(b, WHIRL_PT_TR) : 0);
+  if (pd) is_abs(pd->p[1], 1.0 - 2.0 / sqrt(3.0), 1e-10, "Henon map: PD at beta = 1 - 2/sqrt 3");
+  if (tr) {
+    is_abs(tr->p[1], -1.0, 1e-10, "Henon map: TR at beta = -1");
+    is_abs(tr->x[0], sqrt(2.0) - 1.0, 1e-10, "Henon map: TR at x = sqrt 2 - 1");
+  }
+  whirl_branch_free(b);
+  whirl_equilibrium_free(eq);
+}
+
 /* Two complex pairs, A with real part p - 1 (through the axis at p = 1),
  * B fixed at -0.15: with steps of 0.3 in p the points p = 0.9 (A nearest
  * the axis, -0.1) and 1.2 (A at +0.2, now B nearest, -0.15) bracket the
@@ -674,6 +769,7 @@ int main(void) {
   test_bp_curved(5.0, 0.2);
   test_switch_side();
   test_hopf();
+  test_maps();
   test_hopf_nearest_switch();
   test_loop();
   test_uz();
