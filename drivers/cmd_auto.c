@@ -645,8 +645,9 @@ static int next_switch(auto_job *J, size_t i, size_t at, bp_queue *q, int *nbfc,
   return insert_switch(J, i, at + 1, j, lab, sign, *br, *nbfc) ? -1 : 1;
 }
 
-/* MXBF's queue of run i: set up when run i has ran (IPS = 1, |ISW| <= 1,
- * MXBF not 0).  0 when MXBF does not apply. */
+/* MXBF's queue of run i: set up when run i has ran (IPS = 1 or -1 (AUTO
+ * switches at BPs of maps' fixed points alike), |ISW| <= 1, MXBF not 0).
+ * 0 when MXBF does not apply. */
 static int mxbf_begin(const auto_job *J, size_t i, bp_queue *q) {
   int ips = 1, isw = 1, mxbf = 0;
   const auto_run *r = &J->run[i];
@@ -655,7 +656,7 @@ static int mxbf_begin(const auto_job *J, size_t i, bp_queue *q) {
   whirl_auto_constants_int(r->ac, "MXBF", &mxbf);
   memset(q, 0, sizeof *q);
   q->cap = (size_t)abs(mxbf) < 64 ? (size_t)abs(mxbf) : 64;
-  return ips == 1 && abs(isw) <= 1 && mxbf != 0 && !r->sub;
+  return (ips == 1 || ips == -1) && abs(isw) <= 1 && mxbf != 0 && !r->sub;
 }
 
 /* Write the run files and run them all in order (a run after a failed one

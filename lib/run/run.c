@@ -151,7 +151,10 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
   o->detect_lp = s->ilp;
   o->detect_bp = s->isp != 0;
   o->detect_hb = s->isp != 0;
-  o->detect_pd = s->isp == 2;
+  /* ISP = 1 computes no Floquet multipliers of orbits, but a map's
+   * multipliers are its eigenvalues: PD (and TR) of maps with ISP 1 or 2
+   * (AUTO-07p manual, ISP) */
+  o->detect_pd = s->isp == 2 || (s->ips == WHIRL_IPS_MAP && s->isp != 0);
   if (b->kind != WHIRL_SOL_EQ && s->isp != 2) o->detect_hb = 0; /* TR needs Floquet */
   if (b->sys->Jp && b->sys->n > 400) o->linsol = WHIRL_LINSOL_SPARSE;
   /* user points (UZR) and stops (UZSTOP): values of a parameter, of the
