@@ -353,9 +353,22 @@ static int dat(ctx *c) {
                                    path[1]);
 }
 
+/* STOP: AUTO's stopping points ['TR1', 'LP2'], as whirl's STOP (its types
+ * checked by the run file's reader, at this file's line in its message). */
+static int stops(ctx *c) {
+  size_t n = whirl_auto_constants_count(c->ac, "STOP");
+  for (size_t i = 0; i < n; i++) {
+    whirl_auto_item it;
+    if (whirl_auto_constants_item(c->ac, "STOP", i, &it) || !it.name) continue;
+    put(c->t, "%s%s", i ? ", " : "STOP   = [", it.name);
+  }
+  if (n) put(c->t, "]\n");
+  return WHIRL_OK;
+}
+
 /* Keys whirl has no use for yet: noted. */
 static int unused(ctx *c) {
-  static const char *const noted[] = {"STOP", "SP", "IEQUIB", "ITWIST",
+  static const char *const noted[] = {"SP", "IEQUIB", "ITWIST",
                                       "ISTART", "IREV", "IFIXED", "IPSI", "TY"};
   for (size_t i = 0; i < sizeof noted / sizeof *noted; i++)
     if (whirl_auto_constants_line(c->ac, noted[i]))
@@ -381,6 +394,7 @@ int whirl_auto_constants_runfile(whirl_auto_constants *ac, const whirl_auto_runf
   if (!rc) rc = user_points(&c);
   if (!rc) rc = arclength_weights(&c);
   if (!rc) rc = dat(&c);
+  if (!rc) rc = stops(&c);
   if (!rc) rc = unused(&c);
   if (!rc && t.oom) rc = WHIRL_ENOMEM;
   if (rc) {

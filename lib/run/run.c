@@ -326,8 +326,9 @@ static int branch_end(run_ctx *R, whirl_cont *c, int rc, int stop, size_t npts) 
     rc = 0;
   } else if (rc == WHIRL_DONE || stop) {
     fprintf(R->log, "  ended: %s after %zu points\n",
-            stop == 1 ? "L2-NORM left [A0, A1]"
-            : stop ? "maximum number of points (NMX)"
+            stop == 1   ? "L2-NORM left [A0, A1]"
+            : stop == 3 ? "a STOP point"
+            : stop      ? "maximum number of points (NMX)"
                    : whirl_stop_reason_name(whirl_cont_stop_reason(c)),
             npts);
     rc = 0;
@@ -381,6 +382,17 @@ static void branch_progress(const run_ctx *R, const whirl_cont_options *o, size_
   *prev = p;
   if (f > *best || npts <= 1) *best = npts <= 1 ? f : fmin(f, 1.0);
   R->io.progress((size_t)(1000.0 * *best), 1000, R->io.ctx);
+}
+
+/* AUTO's STOP: is this point of type ty the count-th of its type in the
+ * run that a STOP item names?  Counts every special point. */
+static int at_stop_point(run_ctx *R, const char *ty) {
+  const whirl_run_settings *s = R->s;
+  int hit = 0;
+  for (size_t i = 0; i < s->nstop && i < WHIRL_RUN_MAXITEMS; i++)
+    if (!strcmp(s->stop[i].ref.name, ty) && ++R->stop_seen[i] == (int)s->stop[i].value)
+      hit = 1;
+  return hit;
 }
 
 int run_branch(run_ctx *R, branch_spec *b) {
@@ -465,6 +477,10 @@ int run_branch(run_ctx *R, branch_spec *b) {
     if (!stop && ntot >= (size_t)s->nmx) {
       stop = 2;
       if (type == WHIRL_PT_REGULAR) ty = "EP";
+    }
+    if (!stop && type != WHIRL_PT_REGULAR && at_stop_point(R, ty)) {
+      stop = 3;
+      fprintf(R->log, "  STOP: the %s ends the branch\n", ty);
     }
     int lab = 0, labelled = type != WHIRL_PT_REGULAR || stop ||
                             (s->npr > 0 && ntot % (size_t)s->npr == 0);
@@ -1124,6 +1140,7 @@ int whirl_run_execute(whirl_run *R) {
   if (!R || !R->s) return WHIRL_EINVAL;
   run_objects O;
   memset(&O, 0, sizeof O);
+  memset(R->stop_seen, 0, sizeof R->stop_seen);
   int status = 2;
   if ((R->s->irs > 0 || R->s->irs_type[0]) && restart_solution(R, &O)) goto out;
   status = 1;

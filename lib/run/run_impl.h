@@ -45,6 +45,7 @@ struct whirl_run {
   char spath[4096];        /* S, resolved (run_path) */
   FILE *log, *table, *sols; /* run.log, branches.tsv, solutions in od */
   int label, branch;
+  int stop_seen[WHIRL_RUN_MAXITEMS]; /* points of STOP's item i's type so far */
   int failed;              /* a branch ended in failure (DSMIN reached without
                               convergence, a persisting model domain error):
                               the output is kept, the exit status is 1 */

@@ -23,7 +23,7 @@
 
 typedef enum {
   K_STRING, K_INT, K_REAL, K_IPS, K_METHOD, K_REFLIST, K_VALDICT, K_UZDICT,
-  K_IRS, K_RANGES, K_GRID, K_INTLIST, K_REALLIST, K_IGNORED
+  K_IRS, K_RANGES, K_GRID, K_INTLIST, K_REALLIST, K_STOPLIST, K_IGNORED
 } key_kind;
 
 typedef struct key_def {
@@ -89,6 +89,7 @@ static const key_def keys[] = {
     {WHIRL_RK_BASIN_METHOD, "BASIN_METHOD", "basin_method", NULL, K_METHOD},
     {WHIRL_RK_THL, "THL", "parameter_weights", NULL, K_VALDICT},
     {WHIRL_RK_THU, "THU", "state_weights", NULL, K_VALDICT},
+    {WHIRL_RK_STOP, "STOP", "stop_at_points", NULL, K_STOPLIST},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -97,7 +98,7 @@ static const key_def keys[] = {
  * details or boundary-value problems with none of them set. */
 static const char *const ignored_keys[] = {
     "ITMX", "NWTN", "IID", "NBC", "NINT", "MXBF", "IADS",
-    "NTHL", "NTHU", "NUZR", "NPAR", "SP", "STOP", "UNAMES",
+    "NTHL", "NTHU", "NUZR", "NPAR", "SP", "UNAMES",
     "PARNAMES", "NUNSTAB", "NSTAB", "IIS", "IBR", "LAB", "TY", "EFILE",
     "SFILE", "NPRM", "DATFILE"};
 #define NIGNORED (sizeof ignored_keys / sizeof ignored_keys[0])
@@ -939,6 +940,32 @@ static int set_intlist(whirl_runfile *rf, const key_def *d, const char *where) {
   return WHIRL_OK;
 }
 
+/* STOP: point types with a count, AUTO's ['TR1', 'LP2'] (a type alone
+ * counts 1): the branch ends at the count-th point of that type. */
+static int set_stoplist(whirl_runfile *rf, const key_def *d, const char *where) {
+  static const char *const types[] = {"BP", "LP", "HB", "UZ", "PD", "TR", "EP", "MX"};
+  whirl_run_settings *s = &rf->s;
+  const pvalue *v = &rf->v;
+  char shown[64];
+  if (v->kind == V_DICT) return fail(rf, where, "%s: expected a list like [TR1, LP2]", d->name);
+  if (v->n > WHIRL_RUN_MAXITEMS) return fail(rf, where, "%s: too many points", d->name);
+  for (size_t i = 0; i < v->n; i++) {
+    const char *t = v->it[i].text;
+    size_t k = 0;
+    while (k < sizeof types / sizeof *types && strncasecmp(t, types[k], 2)) k++;
+    int n = 1;
+    if (k == sizeof types / sizeof *types || (t[2] && (to_int(t + 2, &n) || n < 1)))
+      return fail(rf, where, "%s: '%s' is not a point type with a count (BP, LP, HB, UZ, "
+                  "PD, TR, EP or MX, then 1, 2, ...: TR1)", d->name,
+                  show(t, ITEMLEN, shown, sizeof shown));
+    memset(&s->stop[i], 0, sizeof s->stop[i]);
+    snprintf(s->stop[i].ref.name, sizeof s->stop[i].ref.name, "%s", types[k]);
+    s->stop[i].value = n;
+  }
+  s->nstop = v->n;
+  return WHIRL_OK;
+}
+
 /* Convert the value text (already comment-stripped) for key d.  where:
  * "FILE:LINE" for messages. */
 static int set_value(whirl_runfile *rf, const key_def *d, const char *where,
@@ -986,6 +1013,7 @@ static int set_value(whirl_runfile *rf, const key_def *d, const char *where,
     case K_RANGES: return set_ranges(rf, d, where);
     case K_GRID: return set_grid(rf, d, where);
     case K_INTLIST: return set_intlist(rf, d, where);
+    case K_STOPLIST: return set_stoplist(rf, d, where);
     case K_REALLIST: return set_reallist(rf, d, where);
     case K_IGNORED:
     case K_STRING:
@@ -1351,6 +1379,7 @@ size_t whirl_runfile_count(const whirl_runfile *rf, whirl_run_key k) {
     case WHIRL_RK_STUDY: return s->nstudy;
     case WHIRL_RK_THL: return s->nthl;
     case WHIRL_RK_THU: return s->nthu;
+    case WHIRL_RK_STOP: return s->nstop;
     case WHIRL_RK_DISCOVER_BOX: return s->nbox;
     default: return 0;
   }
@@ -1367,6 +1396,7 @@ static const whirl_run_value *value_list(const whirl_run_settings *s,
     case WHIRL_RK_STUDY: return s->study;
     case WHIRL_RK_THL: return s->thl;
     case WHIRL_RK_THU: return s->thu;
+    case WHIRL_RK_STOP: return s->stop;
     default: return NULL;
   }
 }

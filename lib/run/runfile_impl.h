@@ -42,6 +42,9 @@ typedef struct whirl_run_settings {
   size_t nthl;
   whirl_run_value thu[WHIRL_RUN_MAXITEMS]; /* THU: {state component: weight} */
   size_t nthu;
+  whirl_run_value stop[WHIRL_RUN_MAXITEMS]; /* STOP: point type (ref.name)
+                                   and count n: end at the n-th of the type */
+  size_t nstop;
   char plot[WHIRL_RUN_MAXNAME]; /* y axis of the picture: "" L2-NORM */
   whirl_run_range axes[2];      /* basins: two state components and ranges */
   size_t naxes;

@@ -128,7 +128,7 @@ WHIRL_API int whirl_auto_constants_item(const whirl_auto_constants *ac,
  * PAR(11) of orbits as PERIOD), UZR's negative indices as UZSTOP, IRS with
  * S = opts->restart.  What whirl cannot do yet is refused (IPS other than
  * 1 and 2, dat) with the line of the key; what it does not use (THL
- * beyond NPAR, STOP, SP, UZR on PVLS quantities beyond NPAR) is written as a "# note:"
+ * beyond NPAR, SP, UZR on PVLS quantities beyond NPAR) is written as a "# note:"
  * comment, so run.log shows it.  *text is malloc'd (the caller frees). */
 typedef struct whirl_auto_runfile_opts {
   const char *model;   /* `model = ` (a plug-in path) */

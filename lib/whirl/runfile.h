@@ -49,6 +49,7 @@ typedef enum whirl_run_key {
   WHIRL_RK_POINTS, WHIRL_RK_BASIN_SEEDS,
   WHIRL_RK_BASIN_METHOD, /* the integrator of basins (whirl_ode_method) */
   WHIRL_RK_THL, WHIRL_RK_THU, /* AUTO's weights of the arclength norm */
+  WHIRL_RK_STOP,    /* end a branch at the n-th point of a type (AUTO's STOP) */
   WHIRL_RK_IGNORED, /* AUTO keys whirl accepts and ignores (ITMX, NWTN, ...) */
   WHIRL_RK_COUNT
 } whirl_run_key;
@@ -118,10 +119,11 @@ WHIRL_API int whirl_runfile_real(const whirl_runfile *rf, whirl_run_key k,
  * rf; NULL for a key of another type. */
 WHIRL_API const char *whirl_runfile_string(const whirl_runfile *rf,
                                            whirl_run_key k);
-/* List keys — ICP, PAR, U, UZR, UZSTOP, BASIN_AXES, BASIN_GRID,
+/* List keys — ICP, PAR, U, UZR, UZSTOP, STOP, BASIN_AXES, BASIN_GRID,
  * BASIN_ATTRACTORS — the number of items (0 for a key of another type),
  * and item i: ICP's parameter in ref (value 0); PAR's, U's, UZR's and
- * UZSTOP's reference and value; BASIN_GRID's points per axis and
+ * UZSTOP's reference and value; STOP's point type in ref.name and its
+ * count in value; BASIN_GRID's points per axis and
  * BASIN_ATTRACTORS' labels in value (ref index 0, name "").  WHIRL_EINVAL
  * when i is out of range or k is not a list key. */
 WHIRL_API size_t whirl_runfile_count(const whirl_runfile *rf, whirl_run_key k);

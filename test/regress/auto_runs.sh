@@ -241,6 +241,15 @@ apd=$(hyper_labels vhb "$hyper" | awk '$2 == "PD"' | wc -l)
 [ "$npd" -eq 0 ] && [ "$apd" -eq 0 ]
 check $? "vhb: no PD on the family from the Hopf point, as AUTO ($npd, AUTO $apd)"
 
+# hen: a map (IPS = -1), PD and TR detected with ISP = 1, and STOP =
+# ['TR1'] ending the branch at its TR as AUTO's run 1 (without STOP whirl
+# went on to a UZ at beta = 3)
+demo hen
+w=$(labels "$tmp/hen.out/b.hen" | tr '\n' ';')
+a=$(hyper_labels hen "$hyper" | head -3 | tr '\n' ';')
+[ -n "$a" ] && [ "$w" = "$a" ]
+check $? "hen: the map's labels (EP, PD, TR, then STOP) as AUTO's run 1 ($a): $w"
+
 # ppp: c.ppp.4 alone against AUTO's own run of it
 demo ppp --runs=ppp.4
 w=$(labels "$tmp/ppp.out/b.ppp" | tr '\n' ';')

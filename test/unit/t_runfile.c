@@ -145,6 +145,38 @@ static void check_weights(void) {
 }
 
 
+/* STOP: AUTO's stopping points, a type and a count (a type alone: 1),
+ * quoted or not; anything else refused at its line */
+static void check_stop(void) {
+  whirl_runfile *rf = whirl_runfile_alloc();
+  whirl_run_value it;
+  const char good[] = "model = sfd\nSTOP = ['TR1', LP2, hb]\n",
+             bad[] = "model = sfd\n\nSTOP = [TR0]\n", bad2[] = "model = sfd\nSTOP = [XY1]\n";
+  int rc = whirl_runfile_parse(rf, "w.whirl", good, sizeof good - 1);
+  ok(rc == WHIRL_OK && whirl_runfile_count(rf, WHIRL_RK_STOP) == 3,
+     "STOP has 3 points (%s)", whirl_runfile_errmsg(rf));
+  ok(whirl_runfile_item(rf, WHIRL_RK_STOP, 0, &it) == WHIRL_OK &&
+         strcmp(it.ref.name, "TR") == 0 && it.value == 1, "STOP[0] is TR 1");
+  ok(whirl_runfile_item(rf, WHIRL_RK_STOP, 1, &it) == WHIRL_OK &&
+         strcmp(it.ref.name, "LP") == 0 && it.value == 2, "STOP[1] is LP 2");
+  ok(whirl_runfile_item(rf, WHIRL_RK_STOP, 2, &it) == WHIRL_OK &&
+         strcmp(it.ref.name, "HB") == 0 && it.value == 1, "STOP[2] is HB 1 (hb, no count)");
+  ok(strstr(whirl_runfile_ignored(rf) ? whirl_runfile_ignored(rf) : "", "STOP") == NULL,
+     "STOP is not among the ignored keys");
+  whirl_runfile_free(rf);
+  rf = whirl_runfile_alloc();
+  ok(whirl_runfile_parse(rf, "w.whirl", bad, sizeof bad - 1) == WHIRL_EINVAL &&
+         strncmp(whirl_runfile_errmsg(rf), "w.whirl:3: ", 11) == 0 &&
+         strstr(whirl_runfile_errmsg(rf), "'TR0'"),
+     "STOP = [TR0] refused at its line: %s", whirl_runfile_errmsg(rf));
+  whirl_runfile_free(rf);
+  rf = whirl_runfile_alloc();
+  ok(whirl_runfile_parse(rf, "w.whirl", bad2, sizeof bad2 - 1) == WHIRL_EINVAL &&
+         strstr(whirl_runfile_errmsg(rf), "'XY1' is not a point type"),
+     "STOP = [XY1] refused: %s", whirl_runfile_errmsg(rf));
+  whirl_runfile_free(rf);
+}
+
 /* A locus label's LOCUS field: written, read back, optional (older files),
  * and a wrong one refused with the file and line */
 static void check_solution_locus(void) {
@@ -197,6 +229,7 @@ int main(void) {
   check_error();
   check_basin_method();
   check_weights();
+  check_stop();
   check_solution_locus();
   return done_testing();
 }
