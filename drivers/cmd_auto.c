@@ -268,7 +268,8 @@ static int fits(const auto_run *r, const whirl_solution *S) {
     return S->kind == WHIRL_SOL_EQ && (isw == 2 ? !strcmp(t, "LP") || !strcmp(t, "HB")
                                        : isw == -1 ? !strcmp(t, "BP") : 1);
   if (ips == -1) /* fixed points of a map: fold and flip loci */
-    return S->kind == WHIRL_SOL_EQ && (isw == 2 ? !strcmp(t, "LP") || !strcmp(t, "PD")
+    return S->kind == WHIRL_SOL_EQ && (isw == 2 ? !strcmp(t, "LP") || !strcmp(t, "PD") ||
+                                                      !strcmp(t, "TR")
                                        : isw == -1 ? !strcmp(t, "BP") : 1);
   if (S->kind == WHIRL_SOL_EQ) return !strcmp(t, "HB");
   if (isw == -1) return !strcmp(t, "BP") || !strcmp(t, "PD");

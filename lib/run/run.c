@@ -272,7 +272,7 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
     snprintf(so.locus, sizeof so.locus, "%s",
              whirl_fold_point_type(b->fold) == WHIRL_PT_PD ? "PD" : "LP");
   else if (b->hopf)
-    snprintf(so.locus, sizeof so.locus, "HB");
+    snprintf(so.locus, sizeof so.locus, "%s", R->s->ips == WHIRL_IPS_MAP ? "TR" : "HB");
   so.npar = R->npar;
   so.nx = b->nb;
   so.par = pfull;
@@ -652,20 +652,24 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
     }
     b->fold = O->fold;
     b->sys = whirl_fold_system(O->fold);
-  } else if (!strcmp(ty, "HB") && so->kind == WHIRL_SOL_EQ && R->s->ips != WHIRL_IPS_MAP) {
-    O->hopf = whirl_hopf_alloc(base, (size_t)q, err, sizeof err);
+  } else if (so->kind == WHIRL_SOL_EQ &&
+             (R->s->ips == WHIRL_IPS_MAP ? !strcmp(ty, "TR") : !strcmp(ty, "HB"))) {
+    /* a Hopf locus, or a map's Neimark-Sacker locus: the same system */
+    O->hopf = R->s->ips == WHIRL_IPS_MAP ? whirl_hopf_alloc_map(base, (size_t)q, err, sizeof err)
+                                         : whirl_hopf_alloc(base, (size_t)q, err, sizeof err);
     if (!O->hopf) goto fail_alloc;
     O->Z = malloc((whirl_hopf_size(O->hopf) + 1) * sizeof *O->Z);
     if (!O->Z) return -1;
     if (whirl_hopf_init(O->hopf, x, p, O->Z) != WHIRL_OK) {
-      run_say(R, "Hopf locus: %s", whirl_hopf_errmsg(O->hopf));
+      run_say(R, "%s locus: %s", R->s->ips == WHIRL_IPS_MAP ? "Neimark-Sacker" : "Hopf",
+              whirl_hopf_errmsg(O->hopf));
       return -1;
     }
     b->hopf = O->hopf;
     b->sys = whirl_hopf_system(O->hopf);
   } else {
     run_fail(R, WHIRL_RK_ISW, "ISW = 2 needs an LP (any problem), an HB of "
-             "equilibria, a PD of a map or of periodic orbits by collocation; label %d is "
+             "equilibria, a PD or TR of a map, or a PD of periodic orbits by collocation; label %d is "
              "%s%s (loci of %s are not available)",
              so->label, so->ty, so->kind == WHIRL_SOL_EQ ? "" : " of periodic orbits",
              so->ty);

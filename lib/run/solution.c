@@ -199,8 +199,9 @@ static int rd_lab(reader *r, size_t npar, whirl_solution *s) {
   if (!strncmp(p, " LOCUS ", 7)) { /* loci (optional: older files lack it) */
     char loc[8];
     if (lab_word(r, &p, "LOCUS", loc, sizeof loc)) return -1;
-    if (s->icp2 < 0 || (strcmp(loc, "LP") && strcmp(loc, "PD") && strcmp(loc, "HB")))
-      return bad(r, "label %d: LOCUS '%s' (LP, PD or HB, on a locus: ICP2 > 0)",
+    if (s->icp2 < 0 ||
+        (strcmp(loc, "LP") && strcmp(loc, "PD") && strcmp(loc, "HB") && strcmp(loc, "TR")))
+      return bad(r, "label %d: LOCUS '%s' (LP, PD, HB or TR, on a locus: ICP2 > 0)",
                  s->label, shown(loc, b));
     memcpy(s->locus, loc, 3);
   }

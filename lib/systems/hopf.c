@@ -1,6 +1,12 @@
 /* lib/systems/hopf.c — constructor: the minimally augmented Hopf system of
  * an equilibrium problem (squared-Jacobian formulation, Govaerts 2000,
  * ch. 4.4) with its Bogdanov-Takens and zero-Hopf tests.  See whirl/hopf.h.
+ *
+ * The same system follows the Neimark–Sacker points of a map's fixed
+ * points (F = f − x): f_x = F_x + I has the multipliers e^{±iθ} when
+ * f_x² − 2 cos θ f_x + I = F_x² + κ (F_x + I), κ = 2 (1 − cos θ), is
+ * singular with a two-dimensional null space (Govaerts 2000, ch. 10;
+ * Kuznetsov 2004, §10.3): only the operator and κ's start differ.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdio.h>
@@ -19,6 +25,7 @@ struct whirl_hopf {
   double *B, *C;        /* borders n x 2, column-major */
   double *Bn, *Cn;      /* n x 2 each: the new borders of an accepted point */
   int gi[2];            /* entries of G (i + 2j) used as equations */
+  int map;              /* Neimark–Sacker of a map: F_x^2 + kappa (F_x + I) */
   whirl_linsol *ls;
   whirl_eig *eig;
   double *A, *A2, *M;   /* F_x, F_x^2 + kappa I, bordered */
@@ -33,6 +40,18 @@ void whirl_hopf_params(const whirl_hopf *h, const double *Z, const double *p,
   pfull[h->par] = Z[h->n];
 }
 
+/* A2 = F_x^2 + kappa I (a map's: F_x^2 + kappa (F_x + I)) from A = F_x. */
+static void squared(const whirl_hopf *h, double kappa) {
+  const size_t n = h->n;
+  for (size_t j = 0; j < n; ++j)
+    for (size_t i = 0; i < n; ++i) {
+      double s = 0.0;
+      for (size_t k = 0; k < n; ++k) s += h->A[i + n * k] * h->A[k + n * j];
+      if (h->map) s += kappa * h->A[i + n * j];
+      h->A2[i + n * j] = s + (i == j ? kappa : 0.0);
+    }
+}
+
 /* F_x into h->A, the bordered matrix of F_x^2 + kappa I factorised, and the
  * solutions of M [V; G] = [0; I_2] (trans 0) or M^T (trans 1) in h->R. */
 static int solve_G(whirl_hopf *h, const double *x, const double *p,
@@ -40,12 +59,7 @@ static int solve_G(whirl_hopf *h, const double *x, const double *p,
   const size_t n = h->n, m = h->m;
   int rc = whirl_system_jacobian(&h->base, x, p, h->A, h->work);
   if (rc != 0) return rc;
-  for (size_t j = 0; j < n; ++j)
-    for (size_t i = 0; i < n; ++i) {
-      double s = 0.0;
-      for (size_t k = 0; k < n; ++k) s += h->A[i + n * k] * h->A[k + n * j];
-      h->A2[i + n * j] = s + (i == j ? kappa : 0.0);
-    }
+  squared(h, kappa);
   memset(h->M, 0, m * m * sizeof *h->M);
   for (size_t j = 0; j < n; ++j) {
     memcpy(h->M + m * j, h->A2 + n * j, n * sizeof *h->M);
@@ -96,7 +110,10 @@ static int hopf_test(const double *Z, const double *p, double *tau, int *types,
   types[WHIRL_HOPF_TEST_BT] = WHIRL_PT_BT;
   tau[WHIRL_HOPF_TEST_ZH] = 1.0;
   types[WHIRL_HOPF_TEST_ZH] = 0;
-  if (n < 3) return 0;
+  /* a map's κ → 0 is the 1:1 resonance, not a Bogdanov–Takens point, and
+   * its zero-Hopf analogue is another test: none labelled yet */
+  if (h->map) types[WHIRL_HOPF_TEST_BT] = 0, tau[WHIRL_HOPF_TEST_BT] = 1.0;
+  if (n < 3 || h->map) return 0;
   if (whirl_eig_compute(h->eig, h->A, h->er, h->ei) != WHIRL_OK) return 0;
   /* drop the two eigenvalues nearest +-i sqrt(kappa) (or +-sqrt(-kappa)),
    * i.e. the two smallest |l^2 + kappa|; the product of the others changes
@@ -215,6 +232,15 @@ nomem:
   return NULL;
 }
 
+whirl_hopf *whirl_hopf_alloc_map(const whirl_system *base, size_t par, char *errbuf,
+                                 size_t errlen) {
+  whirl_hopf *h = whirl_hopf_alloc(base, par, errbuf, errlen);
+  if (!h) return NULL;
+  h->map = 1;
+  h->sys.name = "Neimark-Sacker curve";
+  return h;
+}
+
 void whirl_hopf_free(whirl_hopf *h) {
   if (!h) return;
   whirl_linsol_free(h->ls);
@@ -237,19 +263,21 @@ int whirl_hopf_init(whirl_hopf *h, const double *x, const double *p, double *Z) 
                       "Hopf start: the Jacobian failed (%d)", rc);
   if ((rc = whirl_eig_compute(h->eig, h->A, h->er, h->ei)) != WHIRL_OK)
     return WHIRL_FAIL(h, rc, "Hopf start: eigenvalues failed");
-  double best = INFINITY, omega = 0.0;
-  for (size_t i = 0; i < n; ++i)
-    if (h->ei[i] > 0 && fabs(h->er[i]) < best) best = fabs(h->er[i]), omega = h->ei[i];
-  if (!(omega > 0))
-    return WHIRL_FAIL(h, WHIRL_EINVAL,
-                      "Hopf start: F_x has no complex pair (not a Hopf point)");
-  const double kappa = omega * omega;
-  for (size_t j = 0; j < n; ++j)
-    for (size_t i = 0; i < n; ++i) {
-      double s = 0.0;
-      for (size_t k = 0; k < n; ++k) s += h->A[i + n * k] * h->A[k + n * j];
-      h->A2[i + n * j] = s + (i == j ? kappa : 0.0);
+  double best = INFINITY, omega = 0.0, kappa = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    if (!(h->ei[i] > 0)) continue;
+    /* a map's multiplier 1 + λ nearest the unit circle: κ = 2 (1 − cos θ) */
+    const double dist = h->map ? fabs(hypot(1.0 + h->er[i], h->ei[i]) - 1.0) : fabs(h->er[i]);
+    if (dist < best) {
+      best = dist, omega = h->ei[i];
+      kappa = h->map ? 2.0 * (1.0 - cos(atan2(h->ei[i], 1.0 + h->er[i]))) : omega * omega;
     }
+  }
+  if (!(omega > 0))
+    return WHIRL_FAIL(h, WHIRL_EINVAL, h->map ? "Neimark-Sacker start: f_x has no complex "
+                      "pair (not a TR point of the map)" : "Hopf start: F_x has no complex "
+                      "pair (not a Hopf point)");
+  squared(h, kappa);
   double sv[2];
   if ((rc = whirl_null_vectors(n, n, h->A2, 2, h->C, sv)) != WHIRL_OK)
     return WHIRL_FAIL(h, rc, "Hopf start: SVD failed");

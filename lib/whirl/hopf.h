@@ -34,6 +34,14 @@ typedef struct whirl_hopf whirl_hopf;
 WHIRL_API whirl_hopf *whirl_hopf_alloc(const whirl_system *base, size_t par,
                                        char *errbuf, size_t errlen);
 WHIRL_API void whirl_hopf_free(whirl_hopf *h); /* accepts NULL */
+
+/* The Neimark–Sacker (torus, TR) points of a map's fixed points, base
+ * from whirl_map_fixed_points_alloc (F = f − x): the same system on
+ * F_x^2 + kappa (F_x + I), kappa = 2 (1 − cos θ) for the multipliers
+ * e^{±iθ}; no codimension-two tests yet.  whirl_hopf_init starts it at a
+ * TR point. */
+WHIRL_API whirl_hopf *whirl_hopf_alloc_map(const whirl_system *base, size_t par,
+                                           char *errbuf, size_t errlen);
 WHIRL_API const whirl_system *whirl_hopf_system(const whirl_hopf *h);
 WHIRL_API size_t whirl_hopf_size(const whirl_hopf *h); /* n + 2 */
 

@@ -328,6 +328,39 @@ static int henon_rhs(double t, const double *u, const double *p, double *f,
   return 0;
 }
 
+/* The Hénon map's Neimark–Sacker locus from its TR: β = −1 for every α
+ * while the pair is complex, where αx = √(1 + α) − 1, so cos θ = −αx and
+ * κ = 2 (1 − cos θ) = 2 √(1 + α) (closed forms). */
+static void henon_ns_locus(const whirl_system *s, const whirl_branch_point *tr) {
+  char err[256] = "";
+  whirl_hopf *h = whirl_hopf_alloc_map(s, 1, err, sizeof err);
+  double Z[4], p[2] = {tr->p[0], tr->p[1]};
+  int rc = h ? whirl_hopf_init(h, tr->x, p, Z) : -1;
+  ok(rc == WHIRL_OK && fabs(Z[3] - 2 * sqrt(2.0)) < 1e-8,
+     "Henon map: Neimark-Sacker system started at the TR, kappa %.10g = 2 sqrt 2 %s",
+     rc == WHIRL_OK ? Z[3] : NAN, h ? whirl_hopf_errmsg(h) : err);
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.icp = 0;
+  o.ds = 0.02;
+  o.ds_max = 0.1;
+  o.p_min = 0.2;
+  o.p_max = 2.0;
+  whirl_branch *b = rc == WHIRL_OK ? run(whirl_hopf_system(h), &o, Z, p, +1, NULL) : NULL;
+  double dev = 0;
+  for (size_t i = 0; b && i < b->len; ++i) {
+    const double a = b->pts[i].p[0], *z = b->pts[i].x;
+    dev = fmax(dev, fabs(z[2] + 1.0));
+    dev = fmax(dev, fabs(z[3] - 2 * sqrt(1 + a)));
+    dev = fmax(dev, fabs(a * z[0] - (sqrt(1 + a) - 1)));
+  }
+  ok(b && b->len > 10 && dev < 1e-9,
+     "Henon map: Neimark-Sacker locus in alpha on beta = -1, kappa = 2 sqrt(1 + alpha) "
+     "(%zu points, max dev %.2g)", b ? b->len : 0, dev);
+  whirl_branch_free(b);
+  whirl_hopf_free(h);
+}
+
 static void test_maps(void) {
   static const whirl_problem lg = {.name = "logistic", .n = 1, .npar = 1,
                                    .rhs = logistic_rhs, .autonomous = 1};
@@ -397,6 +430,7 @@ static void test_maps(void) {
   if (tr) {
     is_abs(tr->p[1], -1.0, 1e-10, "Henon map: TR at beta = -1");
     is_abs(tr->x[0], sqrt(2.0) - 1.0, 1e-10, "Henon map: TR at x = sqrt 2 - 1");
+    henon_ns_locus(s, tr);
   }
   whirl_branch_free(b);
   whirl_equilibrium_free(eq);
