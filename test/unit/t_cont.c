@@ -373,11 +373,17 @@ static void test_maps(void) {
   o.p_min = 0.5;
   o.p_max = 3.5;
   double p0[1] = {1.5}, x0[1] = {1.0 / 3.0};
-  /* the BP on the trivial branch x = 0 (multiplier μ): approached along
-   * 1 − 1/μ, the localisation's trials jump between the two crossing
-   * branches and the BP lands 5e-4 off, for equilibria alike
-   * (doc/auto-reference.md, "found and left") */
+  /* the BP from both branches: along x = 0 (multiplier μ), and along
+   * 1 − 1/μ, where Newton from the chord between the bracket's ends
+   * landed on the crossing branch as often as not and the BP came out
+   * 5e-4 off (the Hermite bend in the start fixes it: locate.c) */
   double z0[1] = {0.0}, m0[1] = {0.6};
+  whirl_branch *down = run(s, &o, x0, p0, -1, NULL);
+  const whirl_branch_point *bpd = down ? nth_type(down, WHIRL_PT_BP, 0) : NULL;
+  ok(bpd && fabs(bpd->p[0] - 1.0) < 1e-10 && fabs(bpd->x[0]) < 1e-10,
+     "logistic map, mu down along 1 - 1/mu: the BP at mu = 1, x = 0 (%.12g, %.3g)",
+     bpd ? bpd->p[0] : NAN, bpd ? bpd->x[0] : NAN);
+  whirl_branch_free(down);
   o.p_max = 1.5;
   whirl_branch *b = run(s, &o, z0, m0, +1, NULL);
   o.p_max = 3.5;
