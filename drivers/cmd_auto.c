@@ -267,10 +267,10 @@ static int fits(const auto_run *r, const whirl_solution *S) {
   if (ips == 1)
     return S->kind == WHIRL_SOL_EQ && (isw == 2 ? !strcmp(t, "LP") || !strcmp(t, "HB")
                                        : isw == -1 ? !strcmp(t, "BP") : 1);
-  if (ips == -1) /* fixed points of a map: fold and flip loci */
+  if (ips == -1) /* fixed points of a map: its loci; switching at a BP or a PD */
     return S->kind == WHIRL_SOL_EQ && (isw == 2 ? !strcmp(t, "LP") || !strcmp(t, "PD") ||
                                                       !strcmp(t, "TR")
-                                       : isw == -1 ? !strcmp(t, "BP") : 1);
+                                       : isw == -1 ? !strcmp(t, "BP") || !strcmp(t, "PD") : 1);
   if (S->kind == WHIRL_SOL_EQ) return !strcmp(t, "HB");
   if (isw == -1) return !strcmp(t, "BP") || !strcmp(t, "PD");
   if (isw == 2) return !strcmp(t, "LP") || !strcmp(t, "PD") || !strcmp(t, "TR");

@@ -266,6 +266,7 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
   so.pt = (int)pt->index;
   snprintf(so.ty, sizeof so.ty, "%s", ty);
   so.kind = b->kind;
+  so.iterate = b->iterate;
   so.icp = b->q >= 0 ? b->q : b->icp;
   so.icp2 = b->q >= 0 ? b->icp : -1;
   if (b->fold)
@@ -693,9 +694,13 @@ static int start_equilibria(run_ctx *R, run_objects *O, branch_spec *b) {
              "an equilibrium", so->label);
     return -2;
   }
-  O->eq = R->s->ips == WHIRL_IPS_MAP ? whirl_map_fixed_points_alloc(&R->prob)
+  /* a map's points of period k (a label's own), 2k switching at its PD */
+  int k = restart && so->iterate > 1 ? so->iterate : 1;
+  if (restart && R->s->isw == -1 && !strcmp(so->ty, "PD")) k *= 2;
+  O->eq = R->s->ips == WHIRL_IPS_MAP ? whirl_map_iterate_fixed_points_alloc(&R->prob, k)
                                      : whirl_equilibrium_alloc(&R->prob);
   if (!O->eq) return -1;
+  b->iterate = R->s->ips == WHIRL_IPS_MAP ? k : 1;
   b->kind = WHIRL_SOL_EQ;
   b->sys = whirl_equilibrium_system(O->eq);
   b->nb = R->n;
@@ -903,11 +908,14 @@ static int switch_or_locus(run_ctx *R, run_objects *O, branch_spec *b) {
   whirl_solution *so = &O->sol;
   const double *p0 = R->par;
   /* switching and loci from the labelled point */
+  const int map_pd = s->ips == WHIRL_IPS_MAP && !strcmp(so->ty, "PD");
   if (restart && s->isw == -1) {
-    if (!strcmp(so->ty, "BP")) {
+    /* a BP; or a map's PD, a pitchfork of the doubled map (start_equilibria
+     * built f^2k), whose branch of period k is the label's own */
+    if (!strcmp(so->ty, "BP") || map_pd) {
       if (!so->tan || so->icp != b->icp) {
-        run_fail(R, WHIRL_RK_ISW, "ISW = -1 at the BP of label %d needs its "
-                 "tangent and the same continuation parameter '%s'", so->label,
+        run_fail(R, WHIRL_RK_ISW, "ISW = -1 at the %s of label %d needs its "
+                 "tangent and the same continuation parameter '%s'", so->ty, so->label,
                  R->pnames[so->icp]);
         return -2;
       }
@@ -923,10 +931,8 @@ static int switch_or_locus(run_ctx *R, run_objects *O, branch_spec *b) {
       bp.n_unstable = -1;
       b->bp = &bp;
     } else if (strcmp(so->ty, "PD") || b->kind != WHIRL_SOL_COLLOC) {
-      run_fail(R, WHIRL_RK_ISW, "ISW = -1 switches at a BP, or at a PD of "
-               "periodic orbits by collocation; label %d is %s%s", so->label,
-               so->ty, R->s->ips == WHIRL_IPS_MAP ? " of a map (the doubled map is not "
-               "in whirl yet)" : "");
+      run_fail(R, WHIRL_RK_ISW, "ISW = -1 switches at a BP, or at a PD of a map or "
+               "of periodic orbits by collocation; label %d is %s", so->label, so->ty);
       return -2;
     }
   } else if (restart && s->isw == 2) {

@@ -164,6 +164,7 @@ typedef struct branch_spec {
                               start; 0: the sign of DS */
   run_trace *trace;        /* record the points here (or NULL) */
   const whirl_model *model; /* its derived parameters (pvls), or NULL */
+  int iterate;             /* maps: fixed points of f^iterate (1: of f) */
 } branch_spec;
 
 /* Continue branch b: its rows, labels, log and summary.  0, -1, -2. */

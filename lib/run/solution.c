@@ -36,6 +36,7 @@ int whirl_solution_write(FILE *f, const whirl_solution *s) {
           s->icp2 + 1, s->nx, s->stable);
   if (s->kind == WHIRL_SOL_COLLOC) fprintf(f, " NTST %d NCOL %d", s->ntst, s->ncol);
   if (s->kind == WHIRL_SOL_HBM) fprintf(f, " NHB %d", s->nhb);
+  if (s->kind == WHIRL_SOL_EQ && s->iterate > 1) fprintf(f, " ITER %d", s->iterate);
   if (s->icp2 >= 0 && s->locus[0]) fprintf(f, " LOCUS %s", s->locus);
   fputc('\n', f);
   put_vec(f, "PAR", s->par, s->npar);
@@ -195,6 +196,11 @@ static int rd_lab(reader *r, size_t npar, whirl_solution *s) {
   } else {
     return bad(r, "label %d: unknown KIND '%s' (eq, colloc or hbm)", s->label,
                shown(kind, b));
+  }
+  s->iterate = 1;
+  if (s->kind == WHIRL_SOL_EQ && !strncmp(p, " ITER ", 6)) { /* a map's period */
+    if (lab_int(r, &p, "ITER", 1, 1 << 20, &v1)) return -1;
+    s->iterate = (int)v1;
   }
   if (!strncmp(p, " LOCUS ", 7)) { /* loci (optional: older files lack it) */
     char loc[8];

@@ -24,15 +24,29 @@ struct whirl_equilibrium {
   whirl_eig *eig;
   double *J;    /* n*n scratch for the spectrum */
   double *work; /* 2n scratch for finite differences */
-  int map;      /* fixed points of the map x ↦ f(x) */
+  int map;      /* fixed points of the map's map-th iterate x ↦ f^k(x) */
+  double *xk, *Jk, *Jt; /* iterates: a point, f_x there, a product (n, n*n each) */
   int *Jp, *Ji; /* full compressed-column pattern, so the sparse path of the
                    core (UMFPACK) can be used and checked against the dense */
   char errmsg[WHIRL_ERRMSG_SIZE]; /* last message (whirl_equilibrium_errmsg) */
 };
 
+/* f^k(x) into f (k >= 1 map applications, through eq->xk) */
+static int iterate(const whirl_equilibrium *eq, int k, const double *x, const double *p,
+                   double *f) {
+  const size_t n = eq->prob->n;
+  int rc = eq->prob->rhs(0.0, x, p, f, eq->prob->data);
+  for (int j = 1; rc == 0 && j < k; ++j) {
+    memcpy(eq->xk, f, n * sizeof *f);
+    rc = eq->prob->rhs(0.0, eq->xk, p, f, eq->prob->data);
+  }
+  return rc;
+}
+
 static int eq_F(const double *x, const double *p, double *f, void *data) {
   const whirl_equilibrium *eq = data;
-  int rc = eq->prob->rhs(0.0, x, p, f, eq->prob->data);
+  int rc = eq->map ? iterate(eq, eq->map, x, p, f)
+                   : eq->prob->rhs(0.0, x, p, f, eq->prob->data);
   if (rc == 0 && eq->map)
     for (size_t i = 0; i < eq->prob->n; ++i) f[i] -= x[i];
   return rc;
@@ -46,9 +60,34 @@ static int model_jac(const whirl_equilibrium *eq, const double *x,
   return whirl_fd_jac_x(eq->prob, 0.0, x, p, J, eq->work);
 }
 
+/* The k-th iterate's derivative by the chain rule: J = f_x(x_{k-1}) ...
+ * f_x(x_0), x_{j+1} = f(x_j). */
+static int iterate_jac(const whirl_equilibrium *eq, const double *x, const double *p,
+                       double *J) {
+  const size_t n = eq->prob->n;
+  int rc = model_jac(eq, x, p, J);
+  double *xj = eq->xk + n; /* xk[n .. 2n): the current iterate */
+  if (rc == 0) rc = eq->prob->rhs(0.0, x, p, xj, eq->prob->data);
+  for (int j = 1; rc == 0 && j < eq->map; ++j) {
+    if ((rc = model_jac(eq, xj, p, eq->Jk)) != 0) break;
+    for (size_t c = 0; c < n; ++c) /* Jt = Jk J */
+      for (size_t r = 0; r < n; ++r) {
+        double s = 0;
+        for (size_t l = 0; l < n; ++l) s += eq->Jk[r + n * l] * J[l + n * c];
+        eq->Jt[r + n * c] = s;
+      }
+    memcpy(J, eq->Jt, n * n * sizeof *J);
+    if (j + 1 < eq->map) {
+      memcpy(eq->xk, xj, n * sizeof *xj);
+      rc = eq->prob->rhs(0.0, eq->xk, p, xj, eq->prob->data);
+    }
+  }
+  return rc;
+}
+
 static int eq_Fx(const double *x, const double *p, double *J, void *data) {
   const whirl_equilibrium *eq = data;
-  int rc = model_jac(eq, x, p, J);
+  int rc = eq->map > 1 ? iterate_jac(eq, x, p, J) : model_jac(eq, x, p, J);
   if (rc == 0 && eq->map)
     for (size_t i = 0; i < eq->prob->n; ++i) J[i + eq->prob->n * i] -= 1.0;
   return rc;
@@ -139,16 +178,35 @@ whirl_equilibrium *whirl_equilibrium_alloc(const whirl_problem *prob) {
 }
 
 whirl_equilibrium *whirl_map_fixed_points_alloc(const whirl_problem *prob) {
+  return whirl_map_iterate_fixed_points_alloc(prob, 1);
+}
+
+whirl_equilibrium *whirl_map_iterate_fixed_points_alloc(const whirl_problem *prob, int k) {
+  if (k < 1) return NULL;
   whirl_equilibrium *eq = whirl_equilibrium_alloc(prob);
   if (!eq) return NULL;
-  eq->map = 1;
+  const size_t n = prob->n;
+  eq->map = k;
   eq->sys.spectrum_kind = WHIRL_SPEC_MULTIPLIERS;
+  if (k > 1) {
+    eq->xk = malloc(2 * n * sizeof *eq->xk);
+    eq->Jk = malloc(n * n * sizeof *eq->Jk);
+    eq->Jt = malloc(n * n * sizeof *eq->Jt);
+    if (!eq->xk || !eq->Jk || !eq->Jt) {
+      whirl_equilibrium_free(eq);
+      return NULL;
+    }
+    eq->sys.Fp = NULL; /* d f^k / dp: by the core's differences */
+  }
   return eq;
 }
 
 void whirl_equilibrium_free(whirl_equilibrium *eq) {
   if (!eq) return;
   whirl_eig_free(eq->eig);
+  free(eq->xk);
+  free(eq->Jk);
+  free(eq->Jt);
   free(eq->J);
   free(eq->work);
   free(eq->Jp);

@@ -26,6 +26,12 @@ WHIRL_API void whirl_equilibrium_free(whirl_equilibrium *eq); /* NULL ok */
  * unit circle).  Freed by whirl_equilibrium_free. */
 WHIRL_API whirl_equilibrium *whirl_map_fixed_points_alloc(const whirl_problem *prob);
 
+/* The same for the k-th iterate f^k (k >= 1): the points of period k of
+ * the map (F = f^k − x, F_x by the chain rule, F_p by differences), the
+ * branch born at a PD of period k / 2.  NULL for k < 1. */
+WHIRL_API whirl_equilibrium *whirl_map_iterate_fixed_points_alloc(const whirl_problem *prob,
+                                                                  int k);
+
 /* The algebraic problem; owned by eq. */
 WHIRL_API const whirl_system *whirl_equilibrium_system(
     const whirl_equilibrium *eq);

@@ -52,6 +52,7 @@ typedef struct whirl_solution {
   size_t nstate;    /* state components: NX (eq), or NX = M nstate + aut
                        for orbits (M nodes or coefficients) */
   int aut;          /* orbits: 1 if the period is the last unknown */
+  int iterate;      /* maps: the fixed point is of f^iterate (0 or 1: of f) */
 } whirl_solution;
 
 /* The model a stored solution must fit (0 / NULL / -1: anything). */

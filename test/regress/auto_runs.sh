@@ -250,6 +250,22 @@ a=$(hyper_labels hen "$hyper" | head -3 | tr '\n' ';')
 [ -n "$a" ] && [ "$w" = "$a" ]
 check $? "hen: the map's labels (EP, PD, TR, then STOP) as AUTO's run 1 ($a): $w"
 
+# log: the logistic map's period doublings, ISW = -1 at a PD of a map (the
+# doubled map f^2k; what log.auto's loop does): from c.log's PD at mu = 3
+# the period-2 points flip at 1 + sqrt 6, the period-4 ones at 3.5440903596
+# (closed form and the known cascade; AUTO's PD 6 and 8: 3.44949, 3.54409)
+demo log
+lw="$tmp/log.out"
+sed -e "s|^OUT .*|OUT = 'p2.out'|" -e "s|^ISW .*|ISW = -1|" "$lw/log.whirl" > "$lw/p2.whirl"
+printf "IRS = 2\nS = 'log.bif1.out'\n" >> "$lw/p2.whirl"
+sed -e "s|^OUT .*|OUT = 'p4.out'|" -e "s|^S = .*|S = 'p2.out'|" "$lw/p2.whirl" > "$lw/p4.whirl"
+(cd "$lw" && "$WHIRL" run p2.whirl --quiet && "$WHIRL" run p4.whirl --quiet) > "$tmp/log2.log" 2>&1
+pd2=$(awk -F'\t' '$3 == "PD" { print $5; exit }' "$lw/p2.out/branches.tsv" 2>/dev/null)
+pd4=$(awk -F'\t' '$3 == "PD" { print $5; exit }' "$lw/p4.out/branches.tsv" 2>/dev/null)
+awk -v a="${pd2:-0}" -v b="${pd4:-0}" 'BEGIN { m = 1 + sqrt(6); d = a - m; e = b - 3.5440903596
+  exit !(d < 1e-9 && d > -1e-9 && e < 1e-9 && e > -1e-9) }'
+check $? "log: PD of the period-2 points at $pd2 (1 + sqrt 6), of the period-4 ones at $pd4 (3.5440903596)"
+
 # ppp: c.ppp.4 alone against AUTO's own run of it
 demo ppp --runs=ppp.4
 w=$(labels "$tmp/ppp.out/b.ppp" | tr '\n' ';')

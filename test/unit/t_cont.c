@@ -361,6 +361,41 @@ static void henon_ns_locus(const whirl_system *s, const whirl_branch_point *tr) 
   whirl_hopf_free(h);
 }
 
+/* The logistic map's period-2 points from its PD at μ = 3: the fixed
+ * points of f² through the pitchfork of f² there (the period-1 branch
+ * x = 1 − 1/μ, tangent (1/μ², 1), is a branch of f² too), switched onto
+ * and followed to their own flip at μ = 1 + √6, where
+ * x = ((μ + 1) ± √((μ + 1)(μ − 3))) / (2μ) (closed forms). */
+static void logistic_period_two(const whirl_problem *lg, double x, double mu,
+                                const whirl_cont_options *o) {
+  whirl_equilibrium *eq = whirl_map_iterate_fixed_points_alloc(lg, 2);
+  const whirl_system *s = whirl_equilibrium_system(eq);
+  char err[256] = "";
+  whirl_cont *c = eq ? whirl_cont_alloc(s, o, err, sizeof err) : NULL;
+  double t[2] = {1.0 / (mu * mu), 1.0}, nt = hypot(t[0], t[1]), px = x, pp = mu;
+  t[0] /= nt, t[1] /= nt;
+  whirl_point bp = {.type = WHIRL_PT_BP, .n = 1, .npar = 1, .x = &px, .p = &pp, .t = t,
+                    .stable = -1, .n_unstable = -1};
+  int rc = c ? whirl_cont_start_switch(c, &bp, +1) : -1;
+  double pd_mu = NAN, pd_x = NAN, x_mid = NAN;
+  while (rc == WHIRL_OK && whirl_cont_step(c) == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(c);
+    if (pt->p[0] > 3.2 && pt->p[0] < 3.3 && isnan(x_mid)) x_mid = pt->x[0], pp = pt->p[0];
+    if (pt->type == WHIRL_PT_PD && isnan(pd_mu)) pd_mu = pt->p[0], pd_x = pt->x[0];
+  }
+  const double m = 1 + sqrt(6.0), r = sqrt((m + 1) * (m - 3));
+  const double xp = (m + 1 + r) / (2 * m), xm = (m + 1 - r) / (2 * m);
+  const double rm = sqrt((pp + 1) * (pp - 3));
+  ok(!isnan(x_mid) && fmin(fabs(x_mid - (pp + 1 + rm) / (2 * pp)),
+                           fabs(x_mid - (pp + 1 - rm) / (2 * pp))) < 1e-10,
+     "logistic map: switched at the PD onto the period-2 points (x %.10g at mu %.4g) %s",
+     x_mid, pp, rc ? whirl_cont_errmsg(c) : "");
+  ok(fabs(pd_mu - m) < 1e-9 && fmin(fabs(pd_x - xp), fabs(pd_x - xm)) < 1e-9,
+     "logistic map: the period-2 points flip at mu = 1 + sqrt 6 (%.12g, x %.10g)", pd_mu, pd_x);
+  whirl_cont_free(c);
+  whirl_equilibrium_free(eq);
+}
+
 static void test_maps(void) {
   static const whirl_problem lg = {.name = "logistic", .n = 1, .npar = 1,
                                    .rhs = logistic_rhs, .autonomous = 1};
@@ -411,6 +446,7 @@ static void test_maps(void) {
     if (b->pts[i].p[0] > 3.1) past = b->pts[i].stable;
   }
   ok(mid == 1 && past == 0, "logistic map: stable at mu = 2, unstable past 3");
+  if (pd) logistic_period_two(&lg, pd->x[0], pd->p[0], &o);
   whirl_branch_free(b);
   whirl_equilibrium_free(eq);
 
