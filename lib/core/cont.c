@@ -28,6 +28,7 @@ const char *whirl_point_type_name(int type) {
   case WHIRL_PT_ZH: return "ZH";
   case WHIRL_PT_IS: return "IS";
   case WHIRL_PT_MG: return "MG";
+  case WHIRL_PT_GH: return "GH";
   default: return "??";
   }
 }

@@ -359,7 +359,7 @@ static void branch_summary(run_ctx *R, const branch_spec *b, whirl_cont *c,
     static const int order[] = {WHIRL_PT_LP, WHIRL_PT_BP, WHIRL_PT_HB,
                                 WHIRL_PT_PD, WHIRL_PT_TR, WHIRL_PT_UZ,
                                 WHIRL_PT_CP, WHIRL_PT_BT, WHIRL_PT_ZH,
-                                WHIRL_PT_MG, WHIRL_PT_IS};
+                                WHIRL_PT_GH, WHIRL_PT_MG, WHIRL_PT_IS};
     for (size_t i = 0; i < sizeof order / sizeof order[0]; i++)
       if (counts[order[i]] && len > 0 && (size_t)len < sizeof line)
         len += snprintf(line + len, sizeof line - (size_t)len, " %d %s", counts[order[i]],

@@ -824,7 +824,7 @@ static int set_irs(whirl_runfile *rf, const key_def *d, const char *where) {
   }
   /* TY[k]: the k-th point of type TY (AUTO: IRS = 'HB1') */
   static const char *const types[] = {"EP", "LP", "BP", "HB", "UZ", "PD",
-                                      "TR", "CP", "BT", "ZH", "IS", "MG", "RG"};
+                                      "TR", "CP", "BT", "ZH", "IS", "MG", "GH", "RG"};
   for (size_t i = 0; i < sizeof types / sizeof types[0]; i++) {
     if (strncasecmp(t, types[i], 2)) continue;
     int k = 1;

@@ -98,6 +98,173 @@ static int hopf_F(const double *Z, const double *p, double *out, void *data) {
   return 0;
 }
 
+extern void dgeev_(const char *jobvl, const char *jobvr, const int *n, double *a,
+                   const int *lda, double *wr, double *wi, double *vl, const int *ldvl,
+                   double *vr, const int *ldvr, double *work, const int *lwork, int *info,
+                   size_t ljobvl, size_t ljobvr);
+extern void dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int *ipiv,
+                   double *b, const int *ldb, int *info);
+
+/* Directional derivatives of F at x by central differences (the base's F
+ * only): B(u, v) = F_xx[u, v] by polarisation of the second difference,
+ * C(u, u, u) = F_xxx[u, u, u] by the five-point third difference.  f1, f2
+ * are n-vectors of scratch, y one more. */
+static int second_diff(whirl_hopf *h, const double *x, const double *p, const double *u,
+                       const double *v, double *out, double *y, double *f1) {
+  const size_t n = h->n;
+  double sc = 1.0;
+  for (size_t i = 0; i < n; ++i) sc = fmax(sc, fabs(x[i]));
+  const double e = 1e-4 * sc;
+  static const double s1[4] = {1, 1, -1, -1}, s2[4] = {1, -1, 1, -1}, w[4] = {1, -1, -1, 1};
+  memset(out, 0, n * sizeof *out);
+  for (int k = 0; k < 4; ++k) {
+    for (size_t i = 0; i < n; ++i) y[i] = x[i] + e * (s1[k] * u[i] + s2[k] * v[i]);
+    int rc = h->base.F(y, p, f1, h->base.data);
+    if (rc) return rc;
+    for (size_t i = 0; i < n; ++i) out[i] += w[k] * f1[i] / (4 * e * e);
+  }
+  return 0;
+}
+
+/* the five-point third difference at step e, added to out times c */
+static int third_step(whirl_hopf *h, const double *x, const double *p, const double *u,
+                      double e, double c, double *out, double *y, double *f1) {
+  const size_t n = h->n;
+  static const double s[4] = {2, 1, -1, -2}, w[4] = {1, -2, 2, -1};
+  for (int k = 0; k < 4; ++k) {
+    for (size_t i = 0; i < n; ++i) y[i] = x[i] + s[k] * e * u[i];
+    int rc = h->base.F(y, p, f1, h->base.data);
+    if (rc) return rc;
+    for (size_t i = 0; i < n; ++i) out[i] += c * w[k] * f1[i] / (2 * e * e * e);
+  }
+  return 0;
+}
+
+/* ... Richardson-extrapolated from steps 2e and e: O(e^4) */
+static int third_diff(whirl_hopf *h, const double *x, const double *p, const double *u,
+                      double *out, double *y, double *f1) {
+  const size_t n = h->n;
+  double sc = 1.0;
+  for (size_t i = 0; i < n; ++i) sc = fmax(sc, fabs(x[i]));
+  const double e = 1e-3 * sc;
+  memset(out, 0, n * sizeof *out);
+  int rc = third_step(h, x, p, u, e, 4.0 / 3.0, out, y, f1);
+  return rc ? rc : third_step(h, x, p, u, 2 * e, -1.0 / 3.0, out, y, f1);
+}
+
+/* Re(p^H v), p = pr + i pi, v = vr + i vi */
+static double ph_re(const double *pr, const double *pi, const double *vr, const double *vi,
+                    size_t n) {
+  double s = 0;
+  for (size_t i = 0; i < n; ++i) s += pr[i] * vr[i] + pi[i] * vi[i];
+  return s;
+}
+
+/* The first Lyapunov coefficient at a Hopf point with F_x = h->A
+ * (Kuznetsov, Elements of Applied Bifurcation Theory, 3rd ed., 2004,
+ * eq. 3.20 and §10.2.1): with A q = iω q, p^H A = iω p^H, p^H q = 1,
+ *   l1 = Re[p^H C(q, q, q̄) − 2 p^H B(q, A⁻¹ B(q, q̄))
+ *           + p^H B(q̄, (2iω − A)⁻¹ B(q, q))] / (2ω),
+ * B and C by differences of F.  Its sign change along a Hopf curve is
+ * the generalised Hopf (Bautin) point GH.  NAN when it cannot be had. */
+static double lyapunov1(whirl_hopf *h, const double *x, const double *p, double kappa) {
+  const int n = (int)h->n, lw = 8 * n + 16;
+  const size_t N = (size_t)n;
+  double *buf = malloc((size_t)(6 * n * n + 30 * n + lw) * sizeof *buf);
+  int *ipiv = malloc(2 * N * sizeof *ipiv);
+  double l1 = NAN;
+  if (!buf || !ipiv) goto out;
+  double *A = buf, *VL = A + N * N, *VR = VL + N * N, *T = VR + N * N; /* T: 2n x 2n */
+  double *wr = T + 4 * N * N, *wi = wr + N, *a = wi + N, *b = a + N, *pr = b + N, *pi = pr + N;
+  double *v1 = pi + N, *v2 = v1 + N, *v3 = v2 + N, *g = v3 + N, *y = g + N, *f1 = y + N;
+  double *br = f1 + N, *bi = br + N, *rr = bi + 2 * N, *work = rr + 8 * N;
+  int info = 0, one = 1, n2 = 2 * n;
+  memcpy(A, h->A, N * N * sizeof *A);
+  dgeev_("V", "V", &n, A, &n, wr, wi, VL, &n, VR, &n, work, &lw, &info, 1, 1);
+  if (info) goto out;
+  /* the pair nearest i sqrt(kappa) */
+  int k = -1;
+  double best = INFINITY, om = sqrt(fmax(kappa, 0.0));
+  for (int i = 0; i < n; ++i)
+    if (wi[i] > 0 && hypot(wr[i], wi[i] - om) < best) best = hypot(wr[i], wi[i] - om), k = i;
+  if (k < 0 || k + 1 >= n) goto out;
+  const double w = wi[k];
+  for (size_t i = 0; i < N; ++i) { /* q = a + i b; left vector u = pr + i pi */
+    a[i] = VR[i + N * k], b[i] = VR[i + N * (k + 1)];
+    pr[i] = VL[i + N * k], pi[i] = VL[i + N * (k + 1)];
+  }
+  /* p^H q = c: p := p / conj(c) so that p^H q = 1 */
+  double cr = 0, ci = 0;
+  for (size_t i = 0; i < N; ++i)
+    cr += pr[i] * a[i] + pi[i] * b[i], ci += pr[i] * b[i] - pi[i] * a[i];
+  const double c2 = cr * cr + ci * ci;
+  if (!(c2 > 0)) goto out;
+  for (size_t i = 0; i < N; ++i) { /* p / conj(c) = p c / |c|^2 */
+    const double r = (pr[i] * cr - pi[i] * ci) / c2, m = (pr[i] * ci + pi[i] * cr) / c2;
+    pr[i] = r, pi[i] = m;
+  }
+  double sum_r = 0;
+  /* C(q, q, q̄) = C(a,a,a) + C(a,b,b) + i [C(a,a,b) + C(b,b,b)] */
+  int rc = 0;
+  double *Caaa = v1, *Cbbb = v2, *Cp = v3, *Cm = g;
+  rc |= third_diff(h, x, p, a, Caaa, y, f1);
+  rc |= third_diff(h, x, p, b, Cbbb, y, f1);
+  for (size_t i = 0; i < N; ++i) br[i] = a[i] + b[i], bi[i] = a[i] - b[i];
+  rc |= third_diff(h, x, p, br, Cp, y, f1);
+  rc |= third_diff(h, x, p, bi, Cm, y, f1);
+  if (rc) goto out;
+  for (size_t i = 0; i < N; ++i) {
+    const double Cabb = (Cp[i] + Cm[i] - 2 * Caaa[i]) / 6, Caab = (Cp[i] - Cm[i] - 2 * Cbbb[i]) / 6;
+    rr[i] = Caaa[i] + Cabb; /* real part */
+    rr[N + i] = Caab + Cbbb[i]; /* imaginary part */
+  }
+  sum_r += ph_re(pr, pi, rr, rr + N, N);
+  /* B(q, q̄) = B(a,a) + B(b,b), real; A^{-1} of it */
+  rc |= second_diff(h, x, p, a, a, v1, y, f1);
+  rc |= second_diff(h, x, p, b, b, v2, y, f1);
+  if (rc) goto out;
+  for (size_t i = 0; i < N; ++i) g[i] = v1[i] + v2[i];
+  memcpy(T, h->A, N * N * sizeof *T);
+  dgesv_(&n, &one, T, &n, ipiv, g, &n, &info);
+  if (info) goto out;
+  /* B(q, g) = B(a, g) + i B(b, g) */
+  rc |= second_diff(h, x, p, a, g, v1, y, f1);
+  rc |= second_diff(h, x, p, b, g, v2, y, f1);
+  if (rc) goto out;
+  sum_r -= 2 * ph_re(pr, pi, v1, v2, N);
+  /* B(q, q) = B(a,a) − B(b,b) + 2i B(a,b); (2iω − A) s = B(q, q) */
+  rc |= second_diff(h, x, p, a, a, v1, y, f1);
+  rc |= second_diff(h, x, p, b, b, v2, y, f1);
+  rc |= second_diff(h, x, p, a, b, v3, y, f1);
+  if (rc) goto out;
+  for (size_t i = 0; i < N; ++i) rr[i] = v1[i] - v2[i], rr[N + i] = 2 * v3[i];
+  memset(T, 0, 4 * N * N * sizeof *T); /* [-A, -2ω I; 2ω I, -A] */
+  for (size_t j = 0; j < N; ++j) {
+    for (size_t i = 0; i < N; ++i) {
+      T[i + 2 * N * j] = -h->A[i + N * j];
+      T[N + i + 2 * N * (N + j)] = -h->A[i + N * j];
+    }
+    T[j + 2 * N * (N + j)] = -2 * w;
+    T[N + j + 2 * N * j] = 2 * w;
+  }
+  dgesv_(&n2, &one, T, &n2, ipiv, rr, &n2, &info);
+  if (info) goto out;
+  /* B(q̄, s) = B(a, sr) + B(b, si) + i [B(a, si) − B(b, sr)] */
+  double *sr = rr, *si = rr + N;
+  rc |= second_diff(h, x, p, a, sr, v1, y, f1);
+  rc |= second_diff(h, x, p, b, si, v2, y, f1);
+  rc |= second_diff(h, x, p, a, si, v3, y, f1);
+  rc |= second_diff(h, x, p, b, sr, g, y, f1);
+  if (rc) goto out;
+  for (size_t i = 0; i < N; ++i) br[i] = v1[i] + v2[i], bi[i] = v3[i] - g[i];
+  sum_r += ph_re(pr, pi, br, bi, N);
+  l1 = sum_r / (2 * w);
+out:
+  free(buf);
+  free(ipiv);
+  return l1;
+}
+
 static int hopf_test(const double *Z, const double *p, double *tau, int *types,
                      void *data) {
   whirl_hopf *h = data;
@@ -110,6 +277,13 @@ static int hopf_test(const double *Z, const double *p, double *tau, int *types,
   types[WHIRL_HOPF_TEST_BT] = WHIRL_PT_BT;
   tau[WHIRL_HOPF_TEST_ZH] = 1.0;
   types[WHIRL_HOPF_TEST_ZH] = 0;
+  /* l1 only where the curve is a Hopf curve (kappa = omega^2 > 0): NAN
+   * (no sign, so no GH sought across) on its neutral-saddle part and where
+   * it cannot be had, else the passage through a BT (l1 ~ 1/omega there)
+   * or onto the saddle part would read as a sign change */
+  tau[WHIRL_HOPF_TEST_GH] = NAN;
+  types[WHIRL_HOPF_TEST_GH] = h->map ? 0 : WHIRL_PT_GH;
+  if (!h->map && kappa > 0) tau[WHIRL_HOPF_TEST_GH] = lyapunov1(h, Z, h->pf, kappa);
   /* a map's κ → 0 is the 1:1 resonance, not a Bogdanov–Takens point, and
    * its zero-Hopf analogue is another test: none labelled yet */
   if (h->map) types[WHIRL_HOPF_TEST_BT] = 0, tau[WHIRL_HOPF_TEST_BT] = 1.0;

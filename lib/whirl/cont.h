@@ -49,9 +49,11 @@ typedef enum whirl_point_type {
   WHIRL_PT_IS = 11,     /* "IS" isola centre: an isolated branch is born
                            (or shrinks to a point) as the second parameter
                            passes an extremum along the fold curve */
-  WHIRL_PT_MG = 12      /* "MG" merge: an isolated branch joins another
+  WHIRL_PT_MG = 12,     /* "MG" merge: an isolated branch joins another
                            branch (two branches cross; extremum of the second
                            parameter along the fold curve) */
+  WHIRL_PT_GH = 13      /* "GH" generalised Hopf (Bautin): the first Lyapunov
+                           coefficient is 0 on a Hopf curve */
 } whirl_point_type;
 
 WHIRL_API const char *whirl_point_type_name(int type);

@@ -25,7 +25,10 @@
 extern "C" {
 #endif
 
-enum { WHIRL_HOPF_TEST_BT = 0, WHIRL_HOPF_TEST_ZH = 1, WHIRL_HOPF_NTEST = 2 };
+/* Test functions: BT (kappa = omega^2 through 0), ZH (a real eigenvalue
+ * through 0), GH (the first Lyapunov coefficient through 0). */
+enum { WHIRL_HOPF_TEST_BT = 0, WHIRL_HOPF_TEST_ZH = 1, WHIRL_HOPF_TEST_GH = 2,
+       WHIRL_HOPF_NTEST = 3 };
 
 typedef struct whirl_hopf whirl_hopf;
 

@@ -710,12 +710,95 @@ static void test_region_limits(void) {
   whirl_sfd_region_free(&r);
 }
 
+/* ------------------------------------------------------------------------
+ * The generalised Hopf (Bautin) point: the normal form
+ *   z' = (b1 + i) z + b2 z |z|^2 - z |z|^4
+ * in x, y has its Hopf curve at b1 = 0 with the first Lyapunov coefficient
+ * (Kuznetsov 2004, eq. 3.20, with |q| = 1: the complex coordinate along q
+ * is (x + iy)/sqrt 2, so its cubic coefficient is 2 b2) l1 = 2 b2, and the
+ * GH at b2 = 0. */
+static int bautin_rhs(double t, const double *x, const double *p, double *f, void *d) {
+  (void)t, (void)d;
+  const double r2 = x[0] * x[0] + x[1] * x[1], g = p[0] + p[1] * r2 - r2 * r2;
+  f[0] = g * x[0] - x[1];
+  f[1] = x[0] + g * x[1];
+  return 0;
+}
+static const whirl_problem bautin = {
+    .name = "bautin", .n = 2, .npar = 2, .rhs = bautin_rhs, .autonomous = 1};
+
+static void test_gh(void) {
+  whirl_equilibrium *eq = whirl_equilibrium_alloc(&bautin);
+  const whirl_system *s = whirl_equilibrium_system(eq);
+  whirl_hopf *h = whirl_hopf_alloc(s, 0, NULL, 0);
+  double x[2] = {0, 0}, p[2] = {0.0, -0.5}, Z[4], tau[WHIRL_HOPF_NTEST];
+  int types[WHIRL_HOPF_NTEST];
+  ok(h && whirl_hopf_init(h, x, p, Z) == WHIRL_OK, "Bautin normal form: Hopf system started");
+  const whirl_system *hs = whirl_hopf_system(h);
+  int rc = hs->test(Z, p, tau, types, hs->data);
+  ok(rc == 0 && types[WHIRL_HOPF_TEST_GH] == WHIRL_PT_GH &&
+         fabs(tau[WHIRL_HOPF_TEST_GH] + 1.0) < 1e-6,
+     "Bautin normal form: first Lyapunov coefficient %.9f = 2 b2 = -1",
+     tau[WHIRL_HOPF_TEST_GH]);
+  p[1] = -1.0;
+  Z[3] = 1.0;
+  run r;
+  rc = trace(hs, Z, p, 1, +1, 0.05, -1.0, 1.0, 500, NULL, &r);
+  ok(rc == 0 && r.ntype[WHIRL_PT_GH] == 1, "Bautin normal form: one GH on the Hopf curve (%d)",
+     r.ntype[WHIRL_PT_GH]);
+  ok(fabs(r.sp[WHIRL_PT_GH][7]) < 1e-6 && fabs(r.sp[WHIRL_PT_GH][2]) < 1e-9,
+     "Bautin normal form: GH at b2 = 0, b1 = 0 (%.2g, %.2g)", r.sp[WHIRL_PT_GH][7],
+     r.sp[WHIRL_PT_GH][2]);
+  whirl_hopf_free(h);
+  whirl_equilibrium_free(eq);
+}
+
+/* FitzHugh-Nagumo as AUTO's fhn demo (x' = c (x - x^3/3 + y),
+ * y' = -(x - a + b y)/c, b = 0.8): on its Hopf curve x^2 = 1 - b/c^2, and
+ * the first Lyapunov coefficient changes sign at x = 1/2 (a = 2/15,
+ * c = sqrt(16/15)), where the planar formula of Guckenheimer & Holmes
+ * (1983, eq. 3.4.11) in the eigenbasis changes sign too (computed
+ * independently with numpy: -1.3e-3 at x = 0.49, +1.3e-3 at 0.51); AUTO's
+ * hyper.all reports no GH on this curve (doc/auto-reference.md). */
+static int fhn_rhs(double t, const double *u, const double *p, double *f, void *d) {
+  (void)t, (void)d;
+  const double b = 0.8;
+  f[0] = p[2] * (u[0] - u[0] * u[0] * u[0] / 3 + u[1]);
+  f[1] = -(u[0] - p[0] + b * u[1]) / p[2];
+  return 0;
+}
+static const whirl_problem fhn = {.name = "fhn", .n = 2, .npar = 3, .rhs = fhn_rhs,
+                                  .autonomous = 1};
+
+static void test_fhn_gh(void) {
+  whirl_equilibrium *eq = whirl_equilibrium_alloc(&fhn);
+  const whirl_system *s = whirl_equilibrium_system(eq);
+  whirl_hopf *h = whirl_hopf_alloc(s, 0, NULL, 0);
+  /* the Hopf point at c = 3: x^2 = 1 - 0.8/9, y = x^3/3 - x, a = x + b y */
+  const double c = 3, x0 = sqrt(1 - 0.8 / 9), y0 = x0 * x0 * x0 / 3 - x0;
+  double x[2] = {x0, y0}, p[3] = {x0 + 0.8 * y0, 0.8, c}, Z[4];
+  ok(h && whirl_hopf_init(h, x, p, Z) == WHIRL_OK, "FHN: Hopf system started at c = 3");
+  run r;
+  int rc = trace(whirl_hopf_system(h), Z, p, 2, -1, 0.05, 0.95, 3.5, 500, NULL, &r);
+  ok(rc == 0 && r.ntype[WHIRL_PT_GH] == 1, "FHN: one GH on the Hopf curve (%d)",
+     r.ntype[WHIRL_PT_GH]);
+  /* trace()'s sp[.][7] is p[1] (b); the GH's c is its p[2], not kept: check
+   * x, y and a */
+  ok(fabs(r.sp[WHIRL_PT_GH][0] - 0.5) < 1e-7 && fabs(r.sp[WHIRL_PT_GH][2] - 2.0 / 15.0) < 1e-7,
+     "FHN: GH at x = 1/2, a = 2/15 (%.10f, %.10f)", r.sp[WHIRL_PT_GH][0],
+     r.sp[WHIRL_PT_GH][2]);
+  whirl_hopf_free(h);
+  whirl_equilibrium_free(eq);
+}
+
 int main(void) {
   test_region_limits();
   test_cusp();
   test_ab();
   test_bt();
   test_zh();
+  test_gh();
+  test_fhn_gh();
   test_jacobian();
   test_sfd_merge();
   test_merge_points();
