@@ -619,7 +619,7 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
     whirl_fold_operator op;
     size_t *ei = NULL, *ej = NULL;
     double *ev = NULL;
-    if (pd) { /* the period-doubling locus: the antiperiodic operator */
+    if (pd || map_pd) { /* the operator's constant entries, n of them */
       ei = malloc(R->n * sizeof *ei);
       ej = malloc(R->n * sizeof *ej);
       ev = malloc(R->n * sizeof *ev);
@@ -627,20 +627,14 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
         free(ei), free(ej), free(ev);
         return -1;
       }
-      whirl_colloc_pd_operator(O->colloc, &op, ei, ej, ev);
       fo.op = &op;
-    } else if (map_pd) { /* a map's flip: f_x + I = F_x + 2I singular */
-      ei = malloc(R->n * sizeof *ei);
-      ej = malloc(R->n * sizeof *ej);
-      ev = malloc(R->n * sizeof *ev);
-      if (!ei || !ej || !ev) {
-        free(ei), free(ej), free(ev);
-        return -1;
-      }
+    }
+    if (pd) /* the period-doubling locus: the antiperiodic operator */
+      whirl_colloc_pd_operator(O->colloc, &op, ei, ej, ev);
+    else if (map_pd) { /* a map's flip: f_x + I = F_x + 2I singular */
       for (size_t j = 0; j < R->n; ++j) ei[j] = ej[j] = j, ev[j] = 2.0;
       op = (whirl_fold_operator){.na = R->n, .ne = R->n, .ei = ei, .ej = ej, .ev = ev,
                                  .point_type = WHIRL_PT_PD, .name = "flip curve of a map"};
-      fo.op = &op;
     }
     O->fold = whirl_fold_alloc(base, &fo, err, sizeof err);
     free(ei), free(ej), free(ev);

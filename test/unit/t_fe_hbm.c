@@ -30,8 +30,11 @@
 
 #define PI 3.14159265358979323846
 
-static whirl_fe_hbm *make(const whirl_fe_rotor *r, int H, int uncondensed,
-                          double Ls, double Fs, int stability) {
+/* The harmonic balance of r (H harmonics, condensed unless uncondensed,
+ * scales Ls, Fs, options.stability), nev the sparse Hill method's cap
+ * hill_nev (0: the default); make() with the default cap. */
+static whirl_fe_hbm *make_capped(const whirl_fe_rotor *r, int H, int uncondensed,
+                                 double Ls, double Fs, int stability, size_t nev) {
   whirl_fe_hbm_options o;
   whirl_fe_hbm_options_default(&o);
   o.harmonics = (size_t)H;
@@ -39,10 +42,16 @@ static whirl_fe_hbm *make(const whirl_fe_rotor *r, int H, int uncondensed,
   o.length_scale = Ls;
   o.force_scale = Fs;
   o.stability = stability;
+  if (nev) o.hill_nev = nev;
   char err[256] = "";
   whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o, err, sizeof err);
   if (!h) printf("# alloc: %s\n", err);
   return h;
+}
+
+static whirl_fe_hbm *make(const whirl_fe_rotor *r, int H, int uncondensed,
+                          double Ls, double Fs, int stability) {
+  return make_capped(r, H, uncondensed, Ls, Fs, stability, 0);
 }
 
 /* ---------------------------------------------------------------- AFT */
@@ -737,19 +746,6 @@ static void hill_condensed_shift(whirl_fe_nl_kind kind) {
  * stability is unknown rather than return part of them when hill_nev
  * cannot hold them all: a 9-node chain at a speed where the disk holds
  * many of the dense method's exponents, at a state that is not an orbit. */
-static whirl_fe_hbm *make_nev(const whirl_fe_rotor *r, int H, size_t nev) {
-  whirl_fe_hbm_options o;
-  whirl_fe_hbm_options_default(&o);
-  o.harmonics = (size_t)H;
-  o.length_scale = 2e-4;
-  o.stability = 2;
-  if (nev) o.hill_nev = nev;
-  char err[256] = "";
-  whirl_fe_hbm *h = whirl_fe_hbm_alloc(r, &o, err, sizeof err);
-  if (!h) printf("# alloc: %s\n", err);
-  return h;
-}
-
 static void hill_sparse_complete(void) {
   fe_chain_opts co;
   fe_chain_defaults(&co, 9);
@@ -757,8 +753,8 @@ static void hill_sparse_complete(void) {
   co.nl[0] = fe_chain_sfd(8, -1);
   whirl_fe_rotor *r = fe_chain_build(&co);
   const double Om = 1500.0, w = Om, sigma = 1e-3 * w, R = 1.05 * 0.5 * w;
-  whirl_fe_hbm *hd = make(r, 3, 0, 2e-4, 0, 1), *hs = make_nev(r, 3, 0);
-  whirl_fe_hbm *hf = make_nev(r, 3, 4);
+  whirl_fe_hbm *hd = make(r, 3, 0, 2e-4, 0, 1), *hs = make_capped(r, 3, 0, 2e-4, 0, 2, 0);
+  whirl_fe_hbm *hf = make_capped(r, 3, 0, 2e-4, 0, 2, 4);
   const whirl_system *sd = whirl_fe_hbm_system(hd);
   double *X = calloc(sd->n, sizeof *X), p[4], dre[256], dim[256];
   double sre[64], sim[64], fre[64], fim[64], worst = 0;
