@@ -181,6 +181,14 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
                u->ref.index ? "(index)" : u->ref.name, R->prob.name);
       return -2;
     }
+    /* a value in both UZR and UZSTOP is one point, which stops (before,
+     * two labels, the second a step after the first at the same value) */
+    size_t j = 0;
+    while (j < nuz && !(uc->what[j] == uc->what[nuz] && uz[j] == u->value)) j++;
+    if (j < nuz) {
+      uz_stop[j] |= is_stop;
+      continue;
+    }
     uz[nuz] = u->value;
     uz_stop[nuz++] = is_stop;
   }
@@ -799,7 +807,11 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
       if (!O->colloc2) return -1;
       whirl_periodic src = whirl_periodic_of_colloc(O->colloc2);
       whirl_periodic_restore(&src, so->mesh, so->x);
-      whirl_colloc_rotations_of(O->colloc, so->x); /* AUTO's SETRTN */
+      /* AUTO's SETRTN: the turns read on the stored mesh (its last node
+       * is at NTST NCOL of that mesh, not of the new one), in force on the
+       * new mesh before the conversion samples the orbit onto it */
+      whirl_colloc_rotations_of(O->colloc2, so->x);
+      whirl_colloc_set_rotations(O->colloc, whirl_colloc_rotations(O->colloc2));
       if (whirl_periodic_convert(&src, so->x, so->par, &dst, 400, O->X))
         return -1;
       whirl_colloc_free(O->colloc2);

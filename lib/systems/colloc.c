@@ -1205,6 +1205,8 @@ size_t whirl_colloc_set_rotations(whirl_colloc *c, const double *jump) {
   return k;
 }
 
+const double *whirl_colloc_rotations(const whirl_colloc *c) { return c ? c->rot : NULL; }
+
 size_t whirl_colloc_rotations_of(whirl_colloc *c, const double *X) {
   if (!c || !X) return 0;
   double jump[64] = {0};

@@ -177,6 +177,11 @@ WHIRL_API int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
  * The number of rotating components. */
 WHIRL_API size_t whirl_colloc_set_rotations(whirl_colloc *c, const double *jump);
 WHIRL_API size_t whirl_colloc_rotations_of(whirl_colloc *c, const double *X);
+/* The rotations in force, rot[n] (2 pi k, or 0 for a periodic component):
+ * what set_rotations of another mesh takes, so an orbit converted to that
+ * mesh (whirl_periodic_convert) keeps its turns.  X of rotations_of must be
+ * in c's own layout (NTST NCOL + 1 nodes). */
+WHIRL_API const double *whirl_colloc_rotations(const whirl_colloc *c);
 
 /* The operator whose singularity is a period doubling, for the
  * period-doubling locus by whirl_fold (op in whirl_fold_options): the
