@@ -98,6 +98,8 @@ static void base_of(const branch_spec *b, const double *Z, const double *p,
     whirl_fold_params(b->fold, Z, p, pfull);
   else if (b->hopf)
     whirl_hopf_params(b->hopf, Z, p, pfull);
+  else if (b->kind == WHIRL_SOL_COLLOC)
+    whirl_colloc_params(b->colloc, Z, p, pfull); /* a fixed period's parameter */
   else
     memcpy(pfull, p, b->sys->npar * sizeof *pfull);
   /* the model's derived parameters (AUTO's PVLS) at an equilibrium */
@@ -216,12 +218,16 @@ static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *
   const int base = (b->kind == WHIRL_SOL_EQ && b->sys->n == R->n) ||
                    (b->kind == WHIRL_SOL_COLLOC && b->sys == whirl_colloc_system(b->colloc));
   const int orbit = b->kind == WHIRL_SOL_COLLOC, aut = orbit && R->model->forcing_param < 0;
+  /* at a fixed period X's last unknown is a parameter: its THL, not PERIOD's */
+  const int fq = orbit ? whirl_colloc_free_param(b->colloc) : -1;
   double wT = 1.0;
   for (size_t i = 0; i < s->nthl; i++) {
     const whirl_run_value *v = &s->thl[i];
     int k = run_par_index(R, &v->ref);
     if (orbit && (v->ref.index == 11 || !strcasecmp(v->ref.name, "PERIOD"))) {
-      if (aut) wT = v->value;
+      if (aut && fq < 0) wT = v->value;
+    } else if (k >= 0 && k == fq) {
+      wT = v->value;
     } else if (k < 0) {
       char nm[32];
       if (v->ref.index) snprintf(nm, sizeof nm, "PAR(%d)", v->ref.index);
@@ -286,13 +292,28 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
   so.nx = b->nb;
   so.par = pfull;
   so.x = (double *)pt->x;
+  /* at a fixed period X's last entry is the free parameter (in pfull): the
+   * file holds the orbit as every other, with T there, and no tangent (its
+   * last entry would be the parameter's) */
+  const int fixed_T = b->kind == WHIRL_SOL_COLLOC && !b->fold && !b->hopf &&
+                      whirl_colloc_free_param(b->colloc) >= 0;
+  double *xT = NULL;
+  if (fixed_T) {
+    if (!(xT = malloc(b->nb * sizeof *xT))) return -1;
+    memcpy(xT, pt->x, b->nb * sizeof *xT);
+    xT[b->nb - 1] = whirl_colloc_period(b->colloc, pt->x, pfull);
+    so.x = xT;
+  }
   /* the tangent in AUTO's convention: the motion along the branch is DS
    * times it, so it is the motion times the sign of this run's DS, and a
    * restart moves along DS times it (run_tangent_start) */
   double *tan = NULL;
-  if (!b->fold && !b->hopf && pt->t) {
+  if (!b->fold && !b->hopf && pt->t && !fixed_T) {
     const double sg = (b->dir_sign ? b->dir_sign : s->ds < 0 ? -1 : 1) < 0 ? -1.0 : 1.0;
-    if (!(tan = malloc((b->nb + 1) * sizeof *tan))) return -1;
+    if (!(tan = malloc((b->nb + 1) * sizeof *tan))) {
+      free(xT);
+      return -1;
+    }
     for (size_t i = 0; i <= b->nb; i++) tan[i] = sg * pt->t[i];
   }
   so.tan = tan;
@@ -305,6 +326,7 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
   if (b->kind == WHIRL_SOL_HBM) so.nhb = s->nhb;
   const int wrc = whirl_solution_write(R->sols, &so);
   free(tan);
+  free(xT);
   if (wrc) return -1;
   if (type != WHIRL_PT_REGULAR && type != WHIRL_PT_EP) {
     fprintf(R->log, "  %s  LAB %d  PT %zu  %s = %.10g", ty, lab, pt->index,
@@ -739,6 +761,19 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
   co.forcing_param = R->model->forcing_param;
   co.adapt_every = s->iad; /* IAD: a new mesh every IAD steps, as AUTO */
   int pd = restart && s->isw == -1 && !strcmp(so->ty, "PD");
+  /* AUTO's fixed-period orbits: IPS 2 with two parameters in ICP and not
+   * PERIOD (11): the label's period kept, ICP(2) free in its place */
+  const int fixed_T = s->isw == 1 && R->prob.autonomous && !R->period_free && R->nicp >= 2;
+  if (fixed_T) {
+    if (!restart || so->kind != WHIRL_SOL_COLLOC) {
+      run_fail(R, WHIRL_RK_ICP, "ICP: orbits at a fixed period (two parameters, "
+               "PERIOD not listed) start from a periodic label (IRS), as they keep "
+               "its period; add PERIOD to ICP for a free period");
+      return -2;
+    }
+    co.free_param = R->icp[1];
+    co.period = so->x[so->nx - 1];
+  }
   if (restart && so->kind == WHIRL_SOL_COLLOC && (pd || s->isw == -1)) {
     co.ntst = (size_t)so->ntst; /* switching happens on the stored mesh */
     co.ncol = (size_t)so->ncol;
@@ -795,7 +830,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
       /* as for equilibria (run_tangent_start): along the stored tangent,
        * which the plain start's Newton at fixed parameter cannot do at an
        * LP of orbits (singular there) */
-      if (s->isw == 1 && so->tan && so->icp == b->icp && !pd) {
+      if (s->isw == 1 && so->tan && so->icp == b->icp && !pd && !fixed_T) {
         memcpy(O->D, so->tan, (b->nb + 1) * sizeof *O->D); /* O->D: nb + 1 */
         b->dir = O->D;
       }
@@ -854,6 +889,11 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
     run_fail(R, WHIRL_RK_IRS, "label %d is a harmonic-balance solution; "
              "restart it with METHOD = hbm", so->label);
     return -2;
+  }
+  if (fixed_T) {
+    O->X[b->nb - 1] = p0[R->icp[1]]; /* T's place: the free parameter */
+    fprintf(R->log, "fixed period %.10g; %s free in its place\n", co.period,
+            R->pnames[R->icp[1]]);
   }
   if (!b->dir && !pd && s->iad > 0 && !restart)
     whirl_colloc_adapt(O->colloc, O->X);

@@ -41,6 +41,7 @@ struct whirl_run {
   double *par, *u;         /* start parameters and state */
   int icp[4];              /* resolved, 0-based; -1 for the period (PAR 11) */
   size_t nicp;
+  int period_free;         /* IPS 2: PERIOD (AUTO's 11) listed in ICP */
   char out[4096], rundir[4096];
   char spath[4096];        /* S, resolved (run_path) */
   FILE *log, *table, *sols; /* run.log, branches.tsv, solutions in od */

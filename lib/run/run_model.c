@@ -307,7 +307,10 @@ int run_resolve(run_ctx *R) {
     int k = run_par_index(R, r);
     if (k < 0 && s->ips == WHIRL_IPS_PERIODIC &&
         ((r->index == 11 && R->npar < 11) || !strcasecmp(r->name, "PERIOD")))
+    {
+      R->period_free = 1;
       continue; /* AUTO's PAR(11): the period is free for autonomous orbits */
+    }
     if (k < 0) {
       run_fail(R, WHIRL_RK_ICP, "ICP: '%s' is not a parameter of model '%s' "
                "(%s)", ref_text(r, t, sizeof t), R->prob.name, list);

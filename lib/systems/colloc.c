@@ -35,6 +35,7 @@ void whirl_colloc_options_default(whirl_colloc_options *o) {
   o->t0 = 0.0;
   o->floquet_rtol = 1e-11;
   o->floquet = WHIRL_COLLOC_FLOQUET_CONDENSED;
+  o->free_param = -1;
 }
 
 /* ------------------------------------------------------------ basis */
@@ -153,9 +154,32 @@ static void eval_poly(size_t n, size_t ntst, size_t m, const double *tau,
 
 double colloc_period_of(const whirl_colloc *c, const double *X,
                         const double *p) {
+  if (c->fq >= 0) return c->Tfix;
   if (c->aut) return X[c->nx - 1];
   return 2.0 * WHIRL_PI * (double)c->nu / p[c->fpar];
 }
+
+/* p with p[fq] = X's last entry in buf (npar), or p itself (T unknown). */
+static const double *par_into(const whirl_colloc *c, const double *X,
+                              const double *p, double *buf) {
+  if (c->fq < 0 || !p) return p;
+  if (p != buf) memcpy(buf, p, c->prob->npar * sizeof *buf);
+  buf[c->fq] = X[c->nx - 1];
+  return buf;
+}
+
+const double *colloc_par(whirl_colloc *c, const double *X, const double *p) {
+  return par_into(c, X, p, c->pq);
+}
+
+void whirl_colloc_params(const whirl_colloc *c, const double *X,
+                         const double *p, double *pfull) {
+  if (!c || !p || !pfull) return;
+  if (pfull != p) memcpy(pfull, p, c->prob->npar * sizeof *pfull);
+  if (c->fq >= 0 && X) pfull[c->fq] = X[c->nx - 1];
+}
+
+int whirl_colloc_free_param(const whirl_colloc *c) { return c ? c->fq : -1; }
 
 static double period_of(const whirl_colloc *c, const double *X,
                         const double *p) {
@@ -223,6 +247,9 @@ static int colloc_F(const double *X, const double *p, double *F, void *data) {
   whirl_colloc *c = data;
   const whirl_problem *pr = c->prob;
   const size_t n = c->n, m = c->ncol, N = c->ntst;
+  /* its own copy: F is what differences of F_p call, from inside the
+   * entry points that hold c->pq (colloc_cond.c's factorisation) */
+  p = par_into(c, X, p, c->pF);
   const double T = period_of(c, X, p);
   /* a non-positive period (a step past ω = 0): recoverable, the core
    * shortens the step */
@@ -256,6 +283,31 @@ static int colloc_F(const double *X, const double *p, double *F, void *data) {
   return 0;
 }
 
+/* At a fixed period the last unknown is the parameter q = c->fq: its
+ * column of the collocation rows at (t, c->xc) is −h T ∂f/∂p_q, from the
+ * model's jac_p or a central difference in p_q (p is colloc_par's). */
+static int free_param_column(whirl_colloc *c, double t, double h, double T,
+                             const double *p, double *dT) {
+  const whirl_problem *pr = c->prob;
+  const size_t n = c->n, q = (size_t)c->fq;
+  int rc;
+  if (pr->jac_p) {
+    if ((rc = pr->jac_p(t, c->xc, p, c->Jpar, pr->data)) != 0) return rc;
+    for (size_t r = 0; r < n; ++r) dT[r] = -h * T * c->Jpar[r + n * q];
+    return 0;
+  }
+  memcpy(c->pw, p, pr->npar * sizeof *c->pw);
+  const double hp = cbrt(DBL_EPSILON) * fmax(1.0, fabs(p[q]));
+  c->pw[q] = p[q] + hp;
+  const double up = c->pw[q];
+  if ((rc = pr->rhs(t, c->xc, c->pw, c->f, pr->data)) != 0) return rc;
+  c->pw[q] = p[q] - hp;
+  const double dn = c->pw[q];
+  if ((rc = pr->rhs(t, c->xc, c->pw, c->f2, pr->data)) != 0) return rc;
+  for (size_t r = 0; r < n; ++r) dT[r] = -h * T * (c->f[r] - c->f2[r]) / (up - dn);
+  return 0;
+}
+
 int colloc_gauss_jac(whirl_colloc *c, const double *X, const double *p,
                      double T, size_t i, size_t g, double *dT) {
   const whirl_problem *pr = c->prob;
@@ -266,6 +318,7 @@ int colloc_gauss_jac(whirl_colloc *c, const double *X, const double *p,
   const double t = c->t0 + T * tau;
   int rc = model_jac(c, t, c->xc, p);
   if (rc != 0 || !dT) return rc;
+  if (c->fq >= 0) return free_param_column(c, t, h, T, p, dT);
   /* dF/dT = −h (f + T τ ∂f/∂t); the time term only for a model not
    * flagged autonomous (central difference in t) */
   if ((rc = pr->rhs(t, c->xc, p, c->f, pr->data)) != 0) return rc;
@@ -287,6 +340,7 @@ static int colloc_Fx_sparse(const double *X, const double *p, double *Jx,
                             void *data) {
   whirl_colloc *c = data;
   const size_t n = c->n, m = c->ncol, N = c->ntst;
+  p = colloc_par(c, X, p);
   const double T = period_of(c, X, p);
   const size_t colT = n * c->nnodes;
   for (size_t i = 0; i < N; ++i) {
@@ -341,6 +395,11 @@ static int colloc_Fp(const double *X, const double *p, size_t k, double *fk,
   const whirl_problem *pr = c->prob;
   const size_t n = c->n, m = c->ncol, N = c->ntst, np = pr->npar;
   if (k >= np) return WHIRL_EINVAL;
+  p = colloc_par(c, X, p);
+  if ((int)k == c->fq) { /* its value is X's: F does not depend on p[k] */
+    memset(fk, 0, c->nx * sizeof *fk);
+    return 0;
+  }
   if (!c->aut && (int)k == c->fpar) {
     const double hp = cbrt(DBL_EPSILON) * fmax(1.0, fabs(p[k]));
     int rc;
@@ -400,6 +459,7 @@ static int colloc_spectrum(const double *X, const double *p, const double *J,
                            double *re, double *im, size_t *mcap, void *data) {
   whirl_colloc *c = data;
   (void)J;
+  p = colloc_par(c, X, p);
   const double T = period_of(c, X, p);
   if (!(T > 0) || !isfinite(T)) return 1; /* recoverable, as in F */
   c->rhs_fail = 0;
@@ -479,6 +539,12 @@ static void check_options(const whirl_problem *prob, const whirl_colloc_options 
              o->forcing_param, prob->name ? prob->name : "?");
   else if (o->forcing_param < 0 && prob->n < 2)
     snprintf(why, len, "an autonomous model needs n >= 2 for a cycle");
+  else if (o->free_param >= 0 &&
+           (o->forcing_param >= 0 || (size_t)o->free_param >= prob->npar ||
+            !(o->period > 0) || !isfinite(o->period)))
+    snprintf(why, len, "a fixed period needs an autonomous orbit, free_param "
+             "a parameter index (got %d of npar %zu) and period > 0 (got %g)",
+             o->free_param, prob->npar, o->period);
   else if (!isfinite(o->t0) || !(o->floquet_rtol >= 0.0))
     snprintf(why, len, "t0 must be finite and floquet_rtol >= 0");
   else if (o->floquet != WHIRL_COLLOC_FLOQUET_CONDENSED &&
@@ -524,11 +590,14 @@ static int alloc_arrays(whirl_colloc *c) {
   c->Jpar = malloc(n * np * sizeof *c->Jpar);
   c->work = malloc(2 * n * sizeof *c->work);
   c->pw = malloc(np * sizeof *c->pw);
+  c->pq = malloc(np * sizeof *c->pq);
+  c->pF = malloc(np * sizeof *c->pF);
   c->r1 = malloc(nx * sizeof *c->r1);
   c->r2 = malloc(nx * sizeof *c->r2);
   if (!c->mesh || !c->old_mesh || !c->Jp || !c->Ji || !c->Jx || !c->ref ||
       !c->phase || !c->old_X || !c->ref_new || !c->xc || !c->dx || !c->f ||
-      !c->f2 || !c->J || !c->Jpar || !c->work || !c->pw || !c->r1 || !c->r2) {
+      !c->f2 || !c->J || !c->Jpar || !c->work || !c->pw || !c->pq || !c->pF || !c->r1 ||
+      !c->r2) {
     return -1;
   }
   return 0;
@@ -657,6 +726,8 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   c->floquet_rtol = o->floquet_rtol > 0 ? o->floquet_rtol : 1e-11;
   c->floquet = o->floquet;
   c->adapt_every = o->adapt_every;
+  c->fq = o->free_param >= 0 ? o->free_param : -1;
+  c->Tfix = o->period;
   if (alloc_arrays(c)) {
     whirl_colloc_free(c);
     return ALLOC_FAIL("out of memory");
@@ -688,6 +759,8 @@ void whirl_colloc_free(whirl_colloc *c) {
   free(c->Jpar);
   free(c->work);
   free(c->pw);
+  free(c->pq);
+  free(c->pF);
   free(c->r1);
   free(c->r2);
   free(c);

@@ -361,6 +361,7 @@ static int factor_colloc(cond_ws *w, const double *X, const double *p,
   const whirl_problem *pr = c->prob;
   const size_t n = w->n, m = w->m, N = w->N, ni = w->ni, nm = w->nm,
                ng = w->ng, wc = w->wc, pc = w->pc;
+  p = colloc_par(c, X, p); /* a fixed period: its free parameter from X */
   const double T = colloc_period_of(c, X, p);
   int rc;
   w->state = 0;
@@ -699,6 +700,7 @@ int colloc_cond_monodromy(whirl_colloc *c, const double *X, const double *p,
    * at this very point (the core factors at every point it analyses, then
    * asks for the spectrum), else a condensation of F_x of our own */
   cond_ws *w = c->last_ws;
+  p = colloc_par(c, X, p);
   if (w && w->jac_ok && memcmp(w->Xf, X, w->nx * sizeof *X) == 0 &&
       memcmp(w->pf, p, w->npar * sizeof *p) == 0)
     return monodromy_of(w, M);

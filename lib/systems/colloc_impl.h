@@ -58,6 +58,12 @@ struct whirl_colloc {
   void *spec_ws; /* colloc_bsolver workspace for the condensed multipliers */
   void *last_ws; /* the workspace factored last (any owner), or NULL */
 
+  int fq;       /* fixed period: the parameter in T's place, or -1 */
+  double Tfix;  /* fixed period: T */
+  double *pq;   /* npar: p with p[fq] from X (colloc_par) */
+  double *pF;   /* npar: the same for colloc_F alone (called inside the
+                   others by differences in p, which would clobber pq) */
+
   int rhs_fail; /* last recoverable model failure seen by the shim */
   char errmsg[WHIRL_ERRMSG_SIZE]; /* last message (whirl_colloc_errmsg) */
 };
@@ -65,6 +71,11 @@ struct whirl_colloc {
 /* colloc.c: the period of X at p (the unknown T, or 2π nu/ω). */
 double colloc_period_of(const whirl_colloc *c, const double *X,
                         const double *p);
+
+/* colloc.c: the parameters the model sees at X: p itself, or at a fixed
+ * period a copy (c->pq) with p[fq] = X's last entry.  Every entry point
+ * taking (X, p) passes p through it before calling the model. */
+const double *colloc_par(whirl_colloc *c, const double *X, const double *p);
 
 /* colloc.c: the model's f_x at Gauss point g of interval i into c->J, and
  * (autonomous orbits, dT not NULL) dF/dT of the n collocation rows there,

@@ -59,6 +59,12 @@ typedef struct whirl_colloc_options {
                         every adapt_every continuation steps, the current
                         point, tangent and previous points carried over by
                         the system's remap hook; 0 (default): fixed mesh */
+  int free_param;    /* autonomous orbits at a fixed period (AUTO: IPS 2 with
+                        11 not in ICP): >= 0, the period is `period` and the
+                        unknown in its place (X's last entry) is this
+                        parameter, the second free one beside the core's
+                        continuation parameter; -1 (default): T unknown */
+  double period;     /* free_param >= 0: the fixed period, > 0 */
 } whirl_colloc_options;
 
 /* The Floquet multipliers of the system's spectrum.  CONDENSED: the
@@ -182,6 +188,13 @@ WHIRL_API size_t whirl_colloc_rotations_of(whirl_colloc *c, const double *X);
  * mesh (whirl_periodic_convert) keeps its turns.  X of rotations_of must be
  * in c's own layout (NTST NCOL + 1 nodes). */
 WHIRL_API const double *whirl_colloc_rotations(const whirl_colloc *c);
+
+/* The parameters of the orbit X: p with, at a fixed period (free_param),
+ * that parameter's value from X's last entry; pfull may be p. */
+WHIRL_API void whirl_colloc_params(const whirl_colloc *c, const double *X,
+                                   const double *p, double *pfull);
+/* The free parameter in the period's place, or -1 (T unknown or forced). */
+WHIRL_API int whirl_colloc_free_param(const whirl_colloc *c);
 
 /* The operator whose singularity is a period doubling, for the
  * period-doubling locus by whirl_fold (op in whirl_fold_options): the

@@ -371,6 +371,68 @@ done:
   free(Jx), free(fk), free(wk), free(r), free(b1), free(b2);
 }
 
+/* ------------------------------------------------------------------------
+ * 1c. A fixed period (free_param): X's last unknown is the parameter rho
+ * in T's place.  The Jacobian (its last column dF/drho from jac_p, or a
+ * difference in rho without it) and F_p against differences of F, the
+ * structured solver against UMFPACK, and the parameters and period the
+ * object reports. */
+static void test_fixed_period(void) {
+  char err[256];
+  const whirl_problem *lp[2] = {&lorenz, &lorenz_fd};
+  for (int v = 0; v < 2; ++v) {
+    whirl_colloc_options o;
+    whirl_colloc_options_default(&o);
+    o.ntst = 10;
+    o.ncol = 4;
+    o.free_param = 1;
+    o.period = 0.7;
+    whirl_colloc *c = whirl_colloc_alloc(lp[v], &o, err, sizeof err);
+    ok(c != NULL, "fixed period: alloc Lorenz (%s): %s", lp[v]->name, err);
+    if (!c) continue;
+    const whirl_system *s = whirl_colloc_system(c);
+    const size_t nx = whirl_colloc_size(c);
+    double smp[3 * 32], *X = malloc(nx * sizeof *X);
+    for (size_t k = 0; k < 32; ++k) {
+      const double th = 2.0 * PI * (double)k / 32.0;
+      smp[3 * k] = 10.0 * cos(th) + 3.0;
+      smp[3 * k + 1] = 15.0 * sin(th);
+      smp[3 * k + 2] = 200.0 + 30.0 * cos(2.0 * th);
+    }
+    whirl_colloc_from_samples(c, smp, 32, 0.7, X);
+    for (size_t q = 0; q + 1 < nx; ++q) X[q] += tap_urand(-1.0, 1.0);
+    X[nx - 1] = 250.0; /* rho */
+    const double p[3] = {10.0, -77.0, 8.0 / 3.0}; /* p[1] is X's */
+    double pf[3];
+    whirl_colloc_params(c, X, p, pf);
+    ok(whirl_colloc_free_param(c) == 1 && pf[1] == 250.0 && pf[0] == 10.0 &&
+           whirl_colloc_period(c, X, p) == 0.7,
+       "fixed period: rho from X (%g), T = 0.7 (%g)", pf[1],
+       whirl_colloc_period(c, X, p));
+    double e_dense = NAN, e_sparse = NAN;
+    int rc1 = whirl_system_check_jacobian(s, X, p, &e_dense);
+    whirl_system sp = *s;
+    sp.Fx = NULL;
+    int rc2 = whirl_system_check_jacobian(&sp, X, p, &e_sparse);
+    ok(rc1 == 0 && e_dense < 1e-6,
+       "fixed period, Lorenz (%s): dense Jacobian (the rho column) and F_p vs "
+       "differences %.2e < 1e-6", lp[v]->name, e_dense);
+    ok(rc2 == 0 && e_sparse < 1e-6,
+       "fixed period, Lorenz (%s): sparse Jacobian vs differences %.2e < 1e-6",
+       lp[v]->name, e_sparse);
+    bsolver_vs_umfpack(v == 0 ? "fixed period, Lorenz" : "fixed period, Lorenz (F_p by differences)", c, X, p, 0);
+    free(X);
+    whirl_colloc_free(c);
+  }
+  whirl_colloc_options o;
+  whirl_colloc_options_default(&o);
+  o.free_param = 1;
+  o.period = 0.0;
+  ok(whirl_colloc_alloc(&lorenz, &o, err, sizeof err) == NULL &&
+         strstr(err, "fixed period"),
+     "fixed period 0 refused: %s", err);
+}
+
 /* Sizes are checked before anything is counted or allocated: NTST =
  * 99999999999 busy-looped over the mesh nodes counting nonzeros before the
  * int-index check; a large model at the largest NTST must be refused by
@@ -1186,6 +1248,7 @@ int main(int argc, char **argv) {
   test_size_limits();
   test_jacobians();
   test_structured();
+  test_fixed_period();
   test_lambda_omega();
   test_forced();
   test_forced_nu2();

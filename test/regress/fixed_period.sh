@@ -1,0 +1,80 @@
+#!/bin/sh
+# test/regress/fixed_period.sh — periodic orbits at a fixed period (AUTO's
+# IPS = 2 with two parameters in ICP and not PERIOD): the label's period
+# kept, ICP(2) free in its place.  Before, ICP(2) was ignored and the period
+# left free (whirl auto's c.chu.4 and c.chu.5 continued the wrong family,
+# issue 18).  Model: the Hopf normal form with a twist, r' = r (mu - r^2),
+# theta' = 1 + b r^2, whose orbits r^2 = mu have the period
+# 2 pi / (1 + b mu) (closed form): from the orbit at mu = 0.5, b = 0.5
+# (T0 = 2 pi / 1.25), the fixed-period family has b = (1.25 - 1) / mu.
+# SPDX-License-Identifier: BSD-3-Clause
+name=fixed_period
+. "${top_srcdir:-.}/test/regress/tap.sh"
+CC=${CC:-cc}
+command -v "$CC" > /dev/null 2>&1 || { echo "1..0 # SKIP no C compiler"; exit 0; }
+cat > "$tmp/twist.c" <<'EOF'
+#include <whirl/model.h>
+static int rhs(double t, const double *u, const double *p, double *f, void *d) {
+  (void)t, (void)d;
+  const double x = u[0], y = u[1], s = x * x + y * y, w = 1 + p[1] * s;
+  f[0] = (p[0] - s) * x - w * y;
+  f[1] = (p[0] - s) * y + w * x;
+  return 0;
+}
+static const char *const xn[] = {"x", "y"};
+static const char *const pn[] = {"mu", "b"};
+static const double par0[] = {-0.5, 0.5};
+static const double u0[] = {0.0, 0.0};
+const whirl_model whirl_model_def = {
+    .abi = WHIRL_MODEL_ABI,
+    .problem = {.name = "twist", .n = 2, .npar = 2, .rhs = rhs, .autonomous = 1,
+                .x_names = xn, .p_names = pn},
+    .par0 = par0, .u0 = u0, .forcing_param = -1,
+    .description = "Hopf normal form, frequency 1 + b r^2"};
+EOF
+$CC -std=c11 -O2 -shared -fPIC -I"$top_srcdir/lib" -o "$tmp/twist.so" "$tmp/twist.c" -lm
+ok $? "twist plug-in builds"
+printf 'model = twist.so\nIPS = 1\nICP = [mu]\nISP = 2\nDS = 0.01\nDSMAX = 0.05\nNMX = 200\nUZSTOP = {mu: [0.5]}\n' > "$tmp/eq.whirl"
+printf 'model = twist.so\nIPS = 2\nICP = [mu, PERIOD]\nS = eq.out\nIRS = HB1\nNTST = 20\nDS = 0.01\nDSMAX = 0.1\nNMX = 300\nUZSTOP = {mu: [0.5]}\n' > "$tmp/po.whirl"
+(cd "$tmp" && "$WHIRL" run eq.whirl --no-plot --quiet > /dev/null 2>&1 &&
+  "$WHIRL" run po.whirl --no-plot --quiet > /dev/null 2> po.err)
+ok $? "orbits with a free period from the Hopf point at mu = 0 ($(head -1 "$tmp/po.err"))"
+# $1: columns mu, b, period of the UZ at mu = $2 in $1/branches.tsv, then
+# b and the period against the closed forms, to 1e-7
+uz() {
+  awk -F '\t' -v m="$2" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+    $3 == "UZ" && $c["mu"] + 0 == m { n++; b = $c["b"]; T = $c["period"] }
+    END { pi = 4 * atan2(1, 1); eb = 0.25 / m; eT = 2 * pi / 1.25
+          printf "b %.10g (closed form %.10g), period %.10g (%.10g)", b, eb, T, eT
+          exit !(n == 1 && (b - eb) ^ 2 < 1e-14 && (T - eT) ^ 2 < 1e-14) }' "$tmp/$1/branches.tsv" 2>/dev/null
+}
+for sign in + -; do
+  printf 'model = twist.so\nIPS = 2\nICP = [mu, b]\nS = po.out\nIRS = UZ1\nNTST = 20\nISP = 2\nDS = %s0.01\nDSMAX = 0.05\nNMX = 400\nUZR = {mu: [1, 0.25]}\nUZSTOP = {mu: [1, 0.25]}\n' "$sign" > "$tmp/fx$sign.whirl"
+  (cd "$tmp" && "$WHIRL" run "fx$sign.whirl" --no-plot --quiet > /dev/null 2> "fx$sign.err")
+  ok $? "fixed period from mu = 0.5, DS ${sign}0.01 ($(head -1 "$tmp/fx$sign.err"))"
+  m=1; [ "$sign" = - ] && m=0.25
+  msg=$(uz "fx$sign.out" $m)
+  ok $? "DS ${sign}0.01: at mu = $m, $msg"
+  # the period column constant, every orbit stable (radial multiplier
+  # exp(-2 mu T) < 1)
+  awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+    { d = $c["period"] - 8 * atan2(1, 1) / 1.25; if (d * d > 1e-14 || $c["stable"] != 1) bad++; n++ }
+    END { exit !(n > 5 && bad == 0) }' "$tmp/fx$sign.out/branches.tsv" 2>/dev/null
+  ok $? "DS ${sign}0.01: every point at the fixed period, stable"
+done
+# the labels hold the orbit as any other: a restart with the period free
+# from the fixed-period UZ at mu = 1 (b = 0.25) goes on at b = 0.25
+printf 'model = twist.so\nIPS = 2\nICP = [mu, PERIOD]\nS = fx+.out\nIRS = UZ1\nNTST = 20\nDS = -0.01\nDSMAX = 0.05\nNMX = 300\nUZSTOP = {mu: [0.5]}\n' > "$tmp/back.whirl"
+(cd "$tmp" && "$WHIRL" run back.whirl --no-plot --quiet > /dev/null 2> back.err)
+ok $? "free period again from the fixed-period label ($(head -1 "$tmp/back.err"))"
+T=$(awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+  $3 == "UZ" { print $c["period"], $c["b"] }' "$tmp/back.out/branches.tsv" 2>/dev/null)
+echo "$T" | awk '{ e = 8 * atan2(1, 1) / (1 + 0.25 * 0.5); exit !(NF == 2 && ($1 - e) ^ 2 < 1e-14 && $2 == 0.25) }'
+ok $? "at mu = 0.5, b = 0.25: period 2 pi / 1.125 ($T)"
+# a fixed period from a Hopf point has no period to keep: said
+printf 'model = twist.so\nIPS = 2\nICP = [mu, b]\nS = eq.out\nIRS = HB1\nNTST = 20\nDS = 0.01\nNMX = 10\n' > "$tmp/hb.whirl"
+(cd "$tmp" && "$WHIRL" run hb.whirl --no-plot --quiet > /dev/null 2> hb.err)
+st=$?
+[ "$st" -eq 2 ] && grep -q "fixed period" "$tmp/hb.err"
+ok $? "a fixed period from an HB label: exit 2 with a message (exit $st: $(head -1 "$tmp/hb.err"))"
+tap_end
