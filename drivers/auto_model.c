@@ -62,6 +62,11 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "           double *, double *, double *);\n"
     "void stpnt_(const int *, double *, double *, const double *);\n"
     "void pvls_(const int *, const double *, double *) __attribute__((weak)); /* optional */\n"
+    "void bcnd_(const int *, const double *, const int *, const int *, const double *,\n"
+    "           const double *, double *, const int *, double *) __attribute__((weak));\n"
+    "void icnd_(const int *, const double *, const int *, const int *, const double *,\n"
+    "           const double *, const double *, const double *, double *, const int *,\n"
+    "           double *) __attribute__((weak));\n"
     "/* PVLS's utility GETP(CODE, IC, U) for equilibria, as AUTO's (support.f90):\n"
     " * NRM |U(IC)|; INT, MAX, MIN, BV0, BV1 U(IC); NDIM for NDI; else 0 */\n"
     "double getp_(const char *c, const int *i, const double *u, size_t l) {\n"
@@ -120,7 +125,22 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "  double par[NPX] = {0};\n  const int n = N;\n  (void)d;\n"
     "  if (!pvls_) return 0;\n"
     "  memcpy(par, p, NP * sizeof *p);\n  pvls_(&n, x, par);\n"
-    "  memcpy(p, par, NP * sizeof *p);\n  return 0;\n}\n",
+    "  memcpy(p, par, NP * sizeof *p);\n  return 0;\n}\n"
+    "/* BCND and ICND (boundary-value problems, IPS = 4), IJAC = 0: whirl\n"
+    " * differentiates them; their DBC, DINT get room for NBC, NINT rows of\n"
+    " * NDIM + NPX columns (2 NDIM for BCND) */\n"
+    "static int bcnd(size_t nbc, const double *u0, const double *u1, const double *p,\n"
+    "                double *fb, void *d) {\n"
+    "  double par[NPX] = {0}, db[1];\n  const int n = N, nb = (int)nbc, ijac = 0;\n  (void)d;\n"
+    "  if (!bcnd_) return -1;\n"
+    "  memcpy(par, p, NP * sizeof *p);\n  bcnd_(&n, par, icp, &nb, u0, u1, fb, &ijac, db);\n"
+    "  return 0;\n}\n"
+    "static int icnd(size_t nint, const double *u, const double *uo, const double *ud,\n"
+    "                const double *upo, const double *p, double *fi, void *d) {\n"
+    "  double par[NPX] = {0}, di[1];\n  const int n = N, ni = (int)nint, ijac = 0;\n  (void)d;\n"
+    "  if (!icnd_) return -1;\n"
+    "  memcpy(par, p, NP * sizeof *p);\n  icnd_(&n, par, icp, &ni, u, uo, ud, upo, fi, &ijac, di);\n"
+    "  return 0;\n}\n",
     m->ndim, m->npar, m->npar > 36 ? m->npar : 36);
   write_names(f, "p_names", m->p_names, m->npar);
   write_names(f, "x_names", m->x_names, (size_t)m->ndim);
@@ -130,6 +150,7 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "  .problem = {.name = \"%s\", .n = N, .npar = NP, .rhs = rhs, .jac_x = jac,\n"
     "              .autonomous = 1, .x_names = x_names, .p_names = p_names},\n"
     "  .par0 = par0, .u0 = u0, .stpnt = stpnt, .forcing_param = -1, .pvls = pvls,\n"
+    "  .bcnd = bcnd, .icnd = icnd,\n"
     "  .description = \"AUTO-07p equations %s\"};\n"
     "/* par0 and u0 from STPNT at T = 0; the period of its orbit, PAR(11) */\n"
     "__attribute__((constructor)) static void init(void) {\n"

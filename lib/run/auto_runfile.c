@@ -124,7 +124,7 @@ static void copy_same(ctx *c) {
   for (size_t i = 0; i < sizeof same_int / sizeof *same_int; i++) {
     if (whirl_auto_constants_int(c->ac, same_int[i], &v) != WHIRL_OK) continue;
     /* equilibria do not use the mesh; AUTO accepts any NTST, NCOL there */
-    if (c->ips != 2 && (!strcmp(same_int[i], "NTST") || !strcmp(same_int[i], "NCOL")) &&
+    if (c->ips != 2 && c->ips != 4 && (!strcmp(same_int[i], "NTST") || !strcmp(same_int[i], "NCOL")) &&
         v < 2)
       put(c->t, "# note: %s = %d (no mesh for equilibria)\n", same_int[i], v);
     else put(c->t, "%-6s = %d\n", same_int[i], v);
@@ -139,10 +139,11 @@ static int problem(ctx *c) {
   int ips = 1, isw = 1, jac = 0;
   whirl_auto_constants_int(c->ac, "IPS", &ips);
   whirl_auto_constants_int(c->ac, "ISW", &isw);
-  if (ips != 1 && ips != 2 && ips != -1)
+  if (ips != 1 && ips != 2 && ips != 4 && ips != -1)
     return whirl_auto_constants_fail(c->ac, whirl_auto_constants_line(c->ac, "IPS"),
                                      "IPS = %d: whirl runs AUTO's equilibria (1), periodic "
-                                     "orbits (2) and fixed points of maps (-1) only", ips);
+                                     "orbits (2), boundary-value problems (4) and fixed "
+                                     "points of maps (-1) only", ips);
   if (isw != 1 && isw != -1 && isw != 2)
     return whirl_auto_constants_fail(c->ac, whirl_auto_constants_line(c->ac, "ISW"),
                                      "ISW = %d: whirl has ISW = 1, -1 and 2 only", isw);

@@ -90,14 +90,16 @@ static const key_def keys[] = {
     {WHIRL_RK_THL, "THL", "parameter_weights", NULL, K_VALDICT},
     {WHIRL_RK_THU, "THU", "state_weights", NULL, K_VALDICT},
     {WHIRL_RK_STOP, "STOP", "stop_at_points", NULL, K_STOPLIST},
+    {WHIRL_RK_NBC, "NBC", "boundary_conditions", NULL, K_INT},
+    {WHIRL_RK_NINT, "NINT", "integral_conditions", NULL, K_INT},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
 /* AUTO constants that whirl accepts for compatibility and ignores (each
  * noted in the run's log): they control output, AUTO's own iteration
- * details or boundary-value problems with none of them set. */
+ * details. */
 static const char *const ignored_keys[] = {
-    "ITMX", "NWTN", "IID", "NBC", "NINT", "MXBF", "IADS",
+    "ITMX", "NWTN", "IID", "MXBF", "IADS",
     "NTHL", "NTHU", "NUZR", "NPAR", "SP", "UNAMES",
     "PARNAMES", "NUNSTAB", "NSTAB", "IIS", "IBR", "LAB", "TY", "EFILE",
     "SFILE", "NPRM", "DATFILE"};
@@ -586,6 +588,8 @@ static const char *check_int(whirl_run_key k, int x) {
     case WHIRL_RK_DISCOVER_STARTS:
       return x < 1 || x > 1000000 ? "must be in [1, 1000000] (the starts tried at each sample value)" : NULL;
     case WHIRL_RK_DISCOVER_SEED: return x < 0 ? "must be >= 0" : NULL;
+    case WHIRL_RK_NBC:
+    case WHIRL_RK_NINT: return x < 0 || x > 1000 ? "must be in [0, 1000]" : NULL;
     default: return NULL;
   }
 }
@@ -604,6 +608,8 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_NMX: return &s->nmx;
     case WHIRL_RK_NPR: return &s->npr;
     case WHIRL_RK_IPLT: return &s->iplt;
+    case WHIRL_RK_NBC: return &s->nbc;
+    case WHIRL_RK_NINT: return &s->nint;
     case WHIRL_RK_ITNW: return &s->itnw;
     case WHIRL_RK_JAC: return &s->jac;
     case WHIRL_RK_BASIN_PERIODS: return &s->basin_periods;
@@ -693,15 +699,18 @@ static int set_ips(whirl_runfile *rf, const key_def *d, const char *where) {
     x = WHIRL_IPS_BASINS;
   else if (!strcasecmp(t, "map") || !strcasecmp(t, "maps"))
     x = WHIRL_IPS_MAP;
+  else if (!strcasecmp(t, "bvp"))
+    x = WHIRL_IPS_BVP;
   else if (to_int(t, &x))
     return fail(rf, where,
                 "%s: '%s' is not a problem type (1 or equilibria, 2 or "
-                "periodic, -1 or map, basins)",
+                "periodic, 4 or bvp, -1 or map, basins)",
                 kn, show(t, ITEMLEN, shown, sizeof shown));
-  else if (x != 1 && x != 2 && x != -1)
+  else if (x != 1 && x != 2 && x != 4 && x != -1)
     return fail(rf, where,
                 "%s = %d is not supported (1 equilibria, 2 periodic "
-                "orbits, -1 fixed points of a map, basins)",
+                "orbits, 4 boundary-value problems, -1 fixed points of a map, "
+                "basins)",
                 kn, x);
   s->ips = x;
   return WHIRL_OK;

@@ -31,6 +31,7 @@ typedef struct whirl_run_settings {
                                    clipped to [DSMIN, DSMAX] as in AUTO */
   int nmx, npr;                 /* defaults 200, 0 (no regular labels) */
   int iplt;                     /* AUTO's IPLT: the L2-NORM column (0) */
+  int nbc, nint;                /* IPS 4: boundary, integral conditions (0) */
   double rl0, rl1, a0, a1;      /* defaults -1e30, 1e30, 0, 1e30 */
   double epsl, epsu, epss;      /* defaults 1e-7, 1e-7, 1e-5 */
   int itnw, jac;                /* defaults 8, 1 */

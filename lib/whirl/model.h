@@ -37,7 +37,7 @@
 extern "C" {
 #endif
 
-#define WHIRL_MODEL_ABI 4
+#define WHIRL_MODEL_ABI 5
 #define WHIRL_MODEL_SYMBOL "whirl_model_def"
 
 typedef struct whirl_model {
@@ -73,6 +73,17 @@ typedef struct whirl_model {
    * point of equilibria; the continuation itself never sees them.  0 on
    * success. */
   int (*pvls)(const double *x, double *par, void *data);
+  /* Optional (ABI 5), AUTO's BCND and ICND, for boundary-value problems
+   * (IPS = 4: u' = f(u, p) on t in [0, 1], the rhs called with t = 0):
+   * fb[nbc] = b(u(0), u(1), par), the boundary conditions; fi[nint] the
+   * integrands g whose integrals over [0, 1] vanish, at a point of the
+   * solution u(t), with the previous solution uold(t) of the branch, u'(t)
+   * and uold'(t) there (AUTO's UOLD, UDOT, UPOLD: for phase conditions).
+   * nbc and nint are the run's (NBC, NINT).  0 on success, > 0 domain. */
+  int (*bcnd)(size_t nbc, const double *u0, const double *u1, const double *par,
+              double *fb, void *data);
+  int (*icnd)(size_t nint, const double *u, const double *uold, const double *udot,
+              const double *upold, const double *par, double *fi, void *data);
 } whirl_model;
 
 /* Check a model description: abi, sizes, required callbacks, parameter

@@ -50,13 +50,14 @@ typedef enum whirl_run_key {
   WHIRL_RK_BASIN_METHOD, /* the integrator of basins (whirl_ode_method) */
   WHIRL_RK_THL, WHIRL_RK_THU, /* AUTO's weights of the arclength norm */
   WHIRL_RK_STOP,    /* end a branch at the n-th point of a type (AUTO's STOP) */
+  WHIRL_RK_NBC, WHIRL_RK_NINT, /* IPS 4: boundary and integral conditions */
   WHIRL_RK_IGNORED, /* AUTO keys whirl accepts and ignores (ITMX, NWTN, ...) */
   WHIRL_RK_COUNT
 } whirl_run_key;
 
 /* Problem types (IPS). */
 enum { WHIRL_IPS_MAP = -1, WHIRL_IPS_EQUILIBRIA = 1, WHIRL_IPS_PERIODIC = 2,
-       WHIRL_IPS_BASINS = 11 };
+       WHIRL_IPS_BVP = 4, WHIRL_IPS_BASINS = 11 };
 /* Periodic-orbit methods (METHOD). */
 enum { WHIRL_METHOD_COLLOC = 0, WHIRL_METHOD_HBM = 1 };
 
@@ -106,7 +107,7 @@ WHIRL_API int whirl_runfile_check(whirl_runfile *rf);
 /* The value of a key, given or its default (doc/run-files.md).
  * Integer keys — NDIM (0: not given), IPS, METHOD, ILP, ISP, ISW, IRS (the
  * label, or the count with a type), NTST, NCOL, IAD, NHB, OVERSAMPLING,
- * NMX, NPR, ITNW, JAC, BASIN_PERIODS, BASIN_SEEDS, BASIN_METHOD (a
+ * NMX, NPR, ITNW, JAC, NBC, NINT, BASIN_PERIODS, BASIN_SEEDS, BASIN_METHOD (a
  * whirl_ode_method) — through _int; real keys — DS, DSMIN,
  * DSMAX, RL0, RL1, A0, A1, EPSL, EPSU, EPSS, BASIN_TOL — through _real;
  * WHIRL_EINVAL for a key of another type, *v untouched. */
