@@ -7,7 +7,9 @@
  *  2. the analytic Jacobian against finite differences of F, the sparse
  *     against the dense, with and without the model's Jacobians;
  *  3. an integral condition with a free parameter: u' = a u, u(0) = 1,
- *     ∫ (u - c) dt = 0, continued in c with a free: (e^a - 1)/a = c;
+ *     ∫ (u - c) dt = 0, continued in c with a free: (e^a - 1)/a = c; and a
+ *     model that depends on t with a free parameter in the boundary
+ *     conditions, u' = a u + sin 3t, u(0) = q, u(1) = B;
  *  4. rejected options.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
@@ -507,6 +509,69 @@ static void test_jacobians(void) {
 }
 
 /* ------------------------------------------------------------------------
+ * 3b. A model that depends on t, a free parameter in the boundary
+ *     conditions: u' = a u + sin 3t, u(0) = q, u(1) = B; p = (a, q, B),
+ *     q free: u = q e^{at} + s(t), s(t) = (3 e^{at} - 3 cos 3t - a sin 3t)
+ *     / (a² + 9), so q = (B - s(1)) e^{-a} */
+
+static int na_rhs(double t, const double *u, const double *p, double *f,
+                  void *data) {
+  (void)data;
+  f[0] = p[0] * u[0] + sin(3.0 * t);
+  return 0;
+}
+static const whirl_problem nonaut = {
+    .name = "nonaut", .n = 1, .npar = 3, .rhs = na_rhs, .autonomous = 0};
+static int na_bc(const double *u0, const double *u1, const double *p,
+                 double *fb, void *data) {
+  (void)data;
+  fb[0] = u0[0] - p[1];
+  fb[1] = u1[0] - p[2];
+  return 0;
+}
+static double na_s(double a, double t) {
+  return (3.0 * exp(a * t) - 3.0 * cos(3.0 * t) - a * sin(3.0 * t)) /
+         (a * a + 9.0);
+}
+
+static void test_nonautonomous(void) {
+  char err[256];
+  const size_t fr[1] = {1};
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = 12;
+  o.ncol = 3;
+  o.nbc = 2;
+  o.bc = na_bc;
+  o.nfree = 1;
+  o.free = fr;
+  whirl_bvp *b = whirl_bvp_alloc(&nonaut, &o, err, sizeof err);
+  ok(b != NULL, "u' = a u + sin 3t, u(0) = q free, u(1) = B: alloc: %s", err);
+  if (!b) return;
+  const size_t nx = whirl_bvp_size(b);
+  double *X = malloc(nx * sizeof *X);
+  for (size_t q = 0; q < nx; ++q) X[q] = tap_urand(-1.0, 1.0);
+  const double p[3] = {-0.8, 0.0 /* ignored */, 1.5};
+  check_jac("nonaut", b, X, p);
+  for (size_t q = 0; q < nx; ++q) X[q] = 0.0;
+  int its = 0;
+  int rc = whirl_newton(whirl_bvp_system(b), X, p, 1e-13, 20, &its);
+  const double a = p[0], qx = (p[2] - na_s(a, 1.0)) * exp(-a);
+  double e = 0.0;
+  for (size_t i = 0; i <= o.ntst; ++i) {
+    const double t = (double)i / (double)o.ntst;
+    e = fmax(e, fabs(X[i * o.ncol] - (qx * exp(a * t) + na_s(a, t))));
+  }
+  printf("# nonaut: q = %.15f, closed form %.15f; error at the mesh points "
+         "%.2e (%d Newton iterations)\n", X[nx - 1], qx, e, its);
+  ok(rc == WHIRL_OK, "nonaut: Newton from 0 converges");
+  is_abs(X[nx - 1], qx, 1e-9, "nonaut: the free q = (B - s(1)) e^{-a}");
+  ok(e < 1e-9, "nonaut: u at the mesh points to 1e-9 (%.2e)", e);
+  free(X);
+  whirl_bvp_free(b);
+}
+
+/* ------------------------------------------------------------------------
  * 4. Rejected options */
 
 static void test_bad_options(void) {
@@ -595,6 +660,7 @@ int main(void) {
   test_bratu_newton();
   test_jacobians();
   test_integral();
+  test_nonautonomous();
   test_bad_options();
   return done_testing();
 }
