@@ -17,6 +17,7 @@
 #include <whirl/floquet.h>
 #include <whirl/hbm.h>
 #include <whirl/colloc.h>
+#include <whirl/bvp.h>
 #include <whirl/periodic.h>
 #include <whirl/fold.h>
 #include <whirl/hopf.h>

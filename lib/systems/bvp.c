@@ -1,0 +1,635 @@
+/* lib/systems/bvp.c — constructor: boundary value problems u' = f(t, u, p)
+ * on [0, 1] with boundary conditions b(u(0), u(1), p) = 0 and integral
+ * conditions ∫ g(u, p) dt = 0 by orthogonal collocation at Gauss–Legendre
+ * points (AUTO-07p's IPS = 4; whirl/bvp.h), the sibling of colloc.c with
+ * T = 1, no phase condition and no periodicity; the basis is colloc_basis.c.
+ *
+ * Rows: n·NTST·NCOL collocation rows (scaled by the interval length h_i,
+ *   sum_k l_k'(σ_c) u_{i,k} − h_i f(τ_{i,c}, u(τ_{i,c}), p~) = 0),
+ * then NBC boundary rows, then NINT integral rows (Gauss quadrature).
+ * Columns: the node values, then the nfree free parameters.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/bvp.h>
+#include <whirl/colloc.h>
+
+#include "colloc_basis.h"
+#include "util/errmsg_impl.h"
+
+struct whirl_bvp {
+  const whirl_problem *prob;
+  whirl_system sys;
+  size_t n, npar, ntst, ncol;
+  size_t nnodes; /* ntst*ncol + 1 */
+  size_t ncoll;  /* collocation rows n*ntst*ncol */
+  size_t nbc, nint, nfree;
+  size_t nx;  /* unknowns = equations */
+  size_t nnz;
+  size_t *free; /* nfree parameter indices */
+  whirl_bvp_bc_fn bc;
+  whirl_bvp_ic_fn ic;
+  void *data;
+
+  double *mesh; /* ntst + 1 */
+  /* Gauss points and weights on [0, 1]; the Lagrange basis and its
+   * derivative there, L[g*(ncol+1) + k] = l_k(σ_g), D likewise l_k' */
+  double gs[COLLOC_BASIS_MAXCOL], gw[COLLOC_BASIS_MAXCOL];
+  double L[COLLOC_BASIS_MAXCOL * (COLLOC_BASIS_MAXCOL + 1)];
+  double D[COLLOC_BASIS_MAXCOL * (COLLOC_BASIS_MAXCOL + 1)];
+
+  int *Jp, *Ji; /* compressed-column pattern, nx + 1 and nnz */
+  double *Jx;   /* nnz, values for the dense callback */
+
+  /* scratch, in one block (buf): u, du, f, fm, uq (n each), J (n*n),
+   * Jpar (n*npar), work (2n), pt, pq (npar), fb, fbm (nbc), gi, gim
+   * (nint), gu (nint*n), cp, cm (nbc + nint) */
+  double *buf;
+  double *u, *du, *f, *fm, *uq, *J, *Jpar, *work, *pt, *pq, *fb, *fbm, *gi,
+      *gim, *gu, *cp, *cm;
+  char errmsg[WHIRL_ERRMSG_SIZE];
+};
+
+void whirl_bvp_options_default(whirl_bvp_options *o) {
+  memset(o, 0, sizeof *o);
+  o->ntst = 20;
+  o->ncol = 4;
+}
+
+/* ------------------------------------------------------------ helpers */
+
+void whirl_bvp_params(const whirl_bvp *b, const double *X, const double *p,
+                      double *pfull) {
+  if (!b || !X || !p || !pfull) return;
+  if (pfull != p) memcpy(pfull, p, b->npar * sizeof *pfull);
+  const double *xf = X + b->n * b->nnodes;
+  for (size_t j = 0; j < b->nfree; ++j) pfull[b->free[j]] = xf[j];
+}
+
+/* u and du/dσ at Gauss point g of interval i into b->u, b->du, node by
+ * node: u = sum_k l_k(σ_g) u_{i,k}. */
+static void gauss_state(whirl_bvp *b, const double *X, size_t i, size_t g) {
+  const size_t n = b->n, m = b->ncol;
+  const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
+  memset(b->u, 0, n * sizeof *b->u);
+  memset(b->du, 0, n * sizeof *b->du);
+  for (size_t k = 0; k <= m; ++k) {
+    const double *node = X + n * (i * m + k);
+    const double a = lv[k], d = dv[k];
+    for (size_t r = 0; r < n; ++r) {
+      b->u[r] += a * node[r];
+      b->du[r] += d * node[r];
+    }
+  }
+}
+
+/* Central-difference step for a value v (as whirl_fd_jac_x). */
+static double fd_step(double v) { return cbrt(DBL_EPSILON) * fmax(1.0, fabs(v)); }
+
+/* The model's f_x at (t, u) into b->J: analytic or differences. */
+static int model_fx(whirl_bvp *b, double t, const double *u, const double *p) {
+  const whirl_problem *pr = b->prob;
+  if (pr->jac_x) return pr->jac_x(t, u, p, b->J, pr->data);
+  return whirl_fd_jac_x(pr, t, u, p, b->J, b->work);
+}
+
+/* df/dp_k at (t, u, p) into out[n]: the model's jac_p, or a central
+ * difference of f in p_k (b->pq, b->f, b->fm are used). */
+static int model_fp(whirl_bvp *b, double t, const double *u, const double *p,
+                    size_t k, double *out) {
+  const whirl_problem *pr = b->prob;
+  const size_t n = b->n;
+  int rc;
+  if (pr->jac_p) {
+    if ((rc = pr->jac_p(t, u, p, b->Jpar, pr->data)) != 0) return rc;
+    memcpy(out, b->Jpar + n * k, n * sizeof *out);
+    return 0;
+  }
+  memcpy(b->pq, p, b->npar * sizeof *b->pq);
+  const double hp = fd_step(p[k]);
+  b->pq[k] = p[k] + hp;
+  const double up = b->pq[k];
+  if ((rc = pr->rhs(t, u, b->pq, b->f, pr->data)) != 0) return rc;
+  b->pq[k] = p[k] - hp;
+  const double dn = b->pq[k];
+  if ((rc = pr->rhs(t, u, b->pq, b->fm, pr->data)) != 0) return rc;
+  for (size_t r = 0; r < n; ++r) out[r] = (b->f[r] - b->fm[r]) / (up - dn);
+  return 0;
+}
+
+/* A user callback's status: a fatal one gets a message. */
+static int user_status(whirl_bvp *b, int rc, const char *what) {
+  if (rc < 0) WHIRL_FAIL(b, WHIRL_EUSER, "%s returned %d (fatal)", what, rc);
+  return rc;
+}
+
+/* The boundary and integral rows c[nbc + nint] at X with the full
+ * parameters pt (not b->pt: the differences in p pass their own). */
+static int cond_rows(whirl_bvp *b, const double *X, const double *pt,
+                     double *c) {
+  const size_t n = b->n, m = b->ncol, N = b->ntst;
+  int rc;
+  if (b->nbc) {
+    rc = b->bc(X, X + n * (b->nnodes - 1), pt, c, b->data);
+    if (rc != 0) return user_status(b, rc, "boundary conditions");
+  }
+  double *I = c + b->nbc;
+  if (!b->nint) return 0;
+  memset(I, 0, b->nint * sizeof *I);
+  for (size_t i = 0; i < N; ++i) {
+    const double h = b->mesh[i + 1] - b->mesh[i];
+    for (size_t g = 0; g < m; ++g) {
+      gauss_state(b, X, i, g);
+      if ((rc = b->ic(b->u, pt, b->gi, b->data)) != 0)
+        return user_status(b, rc, "integral conditions");
+      for (size_t s = 0; s < b->nint; ++s) I[s] += h * b->gw[g] * b->gi[s];
+    }
+  }
+  return 0;
+}
+
+/* ------------------------------------------------------------ system */
+
+static int bvp_F(const double *X, const double *p, double *F, void *data) {
+  whirl_bvp *b = data;
+  const whirl_problem *pr = b->prob;
+  const size_t n = b->n, m = b->ncol, N = b->ntst;
+  whirl_bvp_params(b, X, p, b->pt);
+  for (size_t i = 0; i < N; ++i) {
+    const double h = b->mesh[i + 1] - b->mesh[i];
+    for (size_t g = 0; g < m; ++g) {
+      gauss_state(b, X, i, g);
+      int rc = pr->rhs(b->mesh[i] + h * b->gs[g], b->u, b->pt, b->f, pr->data);
+      if (rc != 0) return user_status(b, rc, "the model's rhs");
+      double *row = F + n * (i * m + g);
+      for (size_t r = 0; r < n; ++r) row[r] = b->du[r] - h * b->f[r];
+    }
+  }
+  return cond_rows(b, X, b->pt, F + b->ncoll);
+}
+
+/* Where the entries of the boundary and integral rows of column col sit:
+ * they are the last nbc + nint (or nint) entries of the column. */
+static double *ic_entries(const whirl_bvp *b, double *Jx, size_t col) {
+  return Jx + (size_t)b->Jp[col + 1] - b->nint;
+}
+static double *bc_entries(const whirl_bvp *b, double *Jx, size_t col) {
+  return Jx + (size_t)b->Jp[col + 1] - b->nint - b->nbc;
+}
+
+/* The collocation rows of the node columns (analytic), of the free
+ * columns (df/dp), and the integral rows' node entries (∂g/∂u by central
+ * differences at every Gauss point, times the quadrature weight and the
+ * basis). */
+static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
+  const size_t n = b->n, m = b->ncol, N = b->ntst, nint = b->nint;
+  const size_t colF = n * b->nnodes;
+  int rc;
+  for (size_t i = 0; i < N; ++i) {
+    const double h = b->mesh[i + 1] - b->mesh[i];
+    for (size_t g = 0; g < m; ++g) {
+      const double t = b->mesh[i] + h * b->gs[g];
+      const size_t R0 = n * (i * m + g);
+      gauss_state(b, X, i, g);
+      if ((rc = model_fx(b, t, b->u, b->pt)) != 0)
+        return user_status(b, rc, "the model's Jacobian");
+      const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
+      for (size_t k = 0; k <= m; ++k) {
+        const size_t node = i * m + k;
+        for (size_t q = 0; q < n; ++q) {
+          const size_t col = n * node + q;
+          /* the column's collocation rows start at row Ji[Jp[col]] */
+          double *v = Jx + (size_t)b->Jp[col] + R0 - (size_t)b->Ji[b->Jp[col]];
+          const double *Jq = b->J + n * q;
+          for (size_t r = 0; r < n; ++r) v[r] = -h * lv[k] * Jq[r];
+          v[q] += dv[k];
+        }
+      }
+      for (size_t j = 0; j < b->nfree; ++j) {
+        double *v = Jx + (size_t)b->Jp[colF + j] + R0;
+        if ((rc = model_fp(b, t, b->u, b->pt, b->free[j], v)) != 0)
+          return user_status(b, rc, "the model's parameter derivative");
+        for (size_t r = 0; r < n; ++r) v[r] *= -h;
+      }
+      if (!nint) continue;
+      /* ∂g/∂u at this point, gu[s + nint*q] */
+      memcpy(b->uq, b->u, n * sizeof *b->uq);
+      for (size_t q = 0; q < n; ++q) {
+        const double hq = fd_step(b->u[q]);
+        b->uq[q] = b->u[q] + hq;
+        const double up = b->uq[q];
+        if ((rc = b->ic(b->uq, b->pt, b->gi, b->data)) != 0)
+          return user_status(b, rc, "integral conditions");
+        b->uq[q] = b->u[q] - hq;
+        const double dn = b->uq[q];
+        if ((rc = b->ic(b->uq, b->pt, b->gim, b->data)) != 0)
+          return user_status(b, rc, "integral conditions");
+        b->uq[q] = b->u[q];
+        for (size_t s = 0; s < nint; ++s)
+          b->gu[s + nint * q] = (b->gi[s] - b->gim[s]) / (up - dn);
+      }
+      for (size_t k = 0; k <= m; ++k) {
+        const double wk = h * b->gw[g] * lv[k];
+        for (size_t q = 0; q < n; ++q) {
+          double *v = ic_entries(b, Jx, n * (i * m + k) + q);
+          for (size_t s = 0; s < nint; ++s) v[s] += wk * b->gu[s + nint * q];
+        }
+      }
+    }
+  }
+  return 0;
+}
+
+/* The boundary rows' entries in the columns of u(0) and u(1), by central
+ * differences of bc. */
+static int fill_boundary(whirl_bvp *b, const double *X, double *Jx) {
+  const size_t n = b->n, nbc = b->nbc, last = b->nnodes - 1;
+  double *w0 = b->work, *w1 = b->work + n; /* copies of u(0), u(1) */
+  memcpy(w0, X, n * sizeof *w0);
+  memcpy(w1, X + n * last, n * sizeof *w1);
+  for (int end = 0; end < 2; ++end) {
+    double *w = end ? w1 : w0;
+    for (size_t q = 0; q < n; ++q) {
+      const double v0 = w[q], hq = fd_step(v0);
+      int rc;
+      w[q] = v0 + hq;
+      const double up = w[q];
+      if ((rc = b->bc(w0, w1, b->pt, b->fb, b->data)) != 0)
+        return user_status(b, rc, "boundary conditions");
+      w[q] = v0 - hq;
+      const double dn = w[q];
+      if ((rc = b->bc(w0, w1, b->pt, b->fbm, b->data)) != 0)
+        return user_status(b, rc, "boundary conditions");
+      w[q] = v0;
+      double *v = bc_entries(b, Jx, n * (end ? last : 0) + q);
+      for (size_t s = 0; s < nbc; ++s) v[s] = (b->fb[s] - b->fbm[s]) / (up - dn);
+    }
+  }
+  return 0;
+}
+
+/* d(boundary and integral rows)/dp_k, central differences of cond_rows in
+ * the full parameter k around b->pt, into out[nbc + nint]. */
+static int cond_dp(whirl_bvp *b, const double *X, size_t k, double *out) {
+  const size_t nc = b->nbc + b->nint;
+  double *pp = b->pq;
+  int rc;
+  memcpy(pp, b->pt, b->npar * sizeof *pp);
+  const double hp = fd_step(b->pt[k]);
+  pp[k] = b->pt[k] + hp;
+  const double up = pp[k];
+  /* cond_rows reads pp, while model_fp is not called in between */
+  if ((rc = cond_rows(b, X, pp, b->cp)) != 0) return rc;
+  memcpy(pp, b->pt, b->npar * sizeof *pp);
+  pp[k] = b->pt[k] - hp;
+  const double dn = pp[k];
+  if ((rc = cond_rows(b, X, pp, b->cm)) != 0) return rc;
+  for (size_t s = 0; s < nc; ++s) out[s] = (b->cp[s] - b->cm[s]) / (up - dn);
+  return 0;
+}
+
+static int bvp_Fx_sparse(const double *X, const double *p, double *Jx,
+                         void *data) {
+  whirl_bvp *b = data;
+  const size_t colF = b->n * b->nnodes;
+  int rc;
+  whirl_bvp_params(b, X, p, b->pt);
+  /* the integral rows accumulate over the intervals holding a node */
+  for (size_t col = 0; col < colF; ++col)
+    memset(ic_entries(b, Jx, col), 0, b->nint * sizeof *Jx);
+  if ((rc = fill_collocation(b, X, Jx)) != 0) return rc;
+  if (b->nbc && (rc = fill_boundary(b, X, Jx)) != 0) return rc;
+  for (size_t j = 0; j < b->nfree; ++j)
+    if ((rc = cond_dp(b, X, b->free[j], bc_entries(b, Jx, colF + j))) != 0)
+      return rc;
+  return 0;
+}
+
+static int bvp_Fx(const double *X, const double *p, double *J, void *data) {
+  whirl_bvp *b = data;
+  int rc = bvp_Fx_sparse(X, p, b->Jx, data);
+  if (rc != 0) return rc;
+  const size_t nx = b->nx;
+  memset(J, 0, nx * nx * sizeof *J);
+  for (size_t col = 0; col < nx; ++col)
+    for (int q = b->Jp[col]; q < b->Jp[col + 1]; ++q)
+      J[(size_t)b->Ji[q] + nx * col] = b->Jx[q];
+  return 0;
+}
+
+/* dF/dp_k: −h df/dp_k in the collocation rows, differences of the
+ * conditions.  A free parameter's entry of p is not read (p~ takes it from
+ * X): its column is 0. */
+static int bvp_Fp(const double *X, const double *p, size_t k, double *fk,
+                  void *data) {
+  whirl_bvp *b = data;
+  const size_t n = b->n, m = b->ncol, N = b->ntst;
+  if (k >= b->npar) return WHIRL_EINVAL;
+  memset(fk, 0, b->nx * sizeof *fk);
+  for (size_t j = 0; j < b->nfree; ++j)
+    if (b->free[j] == k) return 0;
+  whirl_bvp_params(b, X, p, b->pt);
+  for (size_t i = 0; i < N; ++i) {
+    const double h = b->mesh[i + 1] - b->mesh[i];
+    for (size_t g = 0; g < m; ++g) {
+      gauss_state(b, X, i, g);
+      double *v = fk + n * (i * m + g);
+      int rc = model_fp(b, b->mesh[i] + h * b->gs[g], b->u, b->pt, k, v);
+      if (rc != 0) return user_status(b, rc, "the model's parameter derivative");
+      for (size_t r = 0; r < n; ++r) v[r] *= -h;
+    }
+  }
+  return cond_dp(b, X, k, fk + b->ncoll);
+}
+
+/* ------------------------------------------------------------ alloc */
+
+/* The message of a failed whirl_bvp_alloc in errbuf; evaluates to NULL. */
+#define ALLOC_FAIL(...)                           \
+  (WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,     \
+                "whirl_bvp_alloc: " __VA_ARGS__), \
+   NULL)
+
+/* The options' rules: "" when they hold, else why not. */
+static void check_options(const whirl_problem *prob, const whirl_bvp_options *o,
+                          char *why, size_t len) {
+  why[0] = '\0';
+  const size_t n = prob->n;
+  if (o->ntst < 1 || o->ntst > WHIRL_COLLOC_MAX_NTST)
+    snprintf(why, len, "need 1 <= NTST <= %d (got %zu)", WHIRL_COLLOC_MAX_NTST,
+             o->ntst);
+  else if (o->ncol < 2 || o->ncol > COLLOC_BASIS_MAXCOL)
+    snprintf(why, len, "need 2 <= NCOL <= %d (got %zu)", COLLOC_BASIS_MAXCOL,
+             o->ncol);
+  else if (o->nbc > 0 && !o->bc)
+    snprintf(why, len, "NBC = %zu boundary conditions but bc is NULL", o->nbc);
+  else if (o->nint > 0 && !o->ic)
+    snprintf(why, len, "NINT = %zu integral conditions but ic is NULL",
+             o->nint);
+  else if (o->nbc + o->nint < n || o->nbc + o->nint - n != o->nfree)
+    snprintf(why, len,
+             "the counts do not match: NBC + NINT = %zu + %zu conditions on "
+             "n = %zu components need nfree = NBC + NINT - n = %ld free "
+             "parameters besides the continuation parameter (AUTO's NFPR - "
+             "1), got nfree = %zu",
+             o->nbc, o->nint, n, (long)o->nbc + (long)o->nint - (long)n,
+             o->nfree);
+  else if (o->nfree > 0 && !o->free)
+    snprintf(why, len, "nfree = %zu but the list free is NULL", o->nfree);
+  else if (o->adapt_every != 0)
+    snprintf(why, len,
+             "mesh adaptation (adapt_every = %d) is not implemented for "
+             "boundary value problems; use 0",
+             o->adapt_every);
+  if (why[0]) return;
+  for (size_t j = 0; j < o->nfree; ++j) {
+    if (o->free[j] >= prob->npar) {
+      snprintf(why, len, "free[%zu] = %zu is not a parameter index (npar %zu)",
+               j, o->free[j], prob->npar);
+      return;
+    }
+    for (size_t q = 0; q < j; ++q)
+      if (o->free[q] == o->free[j]) {
+        snprintf(why, len, "free parameter %zu listed twice", o->free[j]);
+        return;
+      }
+  }
+}
+
+/* The sparsity pattern, rows sorted within each column: a node's
+ * collocation rows (one or two intervals), the boundary rows for u(0) and
+ * u(1), the integral rows; a free parameter's column is full. */
+static size_t build_pattern(whirl_bvp *b, int count_only) {
+  const size_t n = b->n, m = b->ncol, N = b->ntst, nnodes = b->nnodes;
+  size_t pos = 0;
+  for (size_t j = 0; j < nnodes; ++j) {
+    const size_t i0 = (j % m == 0 && j != 0) ? j / m - 1 : j / m;
+    const size_t i1 = j == nnodes - 1 ? N - 1 : j / m;
+    const int end = j == 0 || j == nnodes - 1;
+    for (size_t q = 0; q < n; ++q) {
+      if (count_only) {
+        pos += n * (i1 + 1 - i0) * m + (end ? b->nbc : 0) + b->nint;
+        continue;
+      }
+      b->Jp[n * j + q] = (int)pos;
+      for (size_t R = n * i0 * m; R < n * (i1 + 1) * m; ++R)
+        b->Ji[pos++] = (int)R;
+      for (size_t s = 0; end && s < b->nbc; ++s)
+        b->Ji[pos++] = (int)(b->ncoll + s);
+      for (size_t s = 0; s < b->nint; ++s)
+        b->Ji[pos++] = (int)(b->ncoll + b->nbc + s);
+    }
+  }
+  for (size_t j = 0; j < b->nfree; ++j) {
+    if (count_only) {
+      pos += b->nx;
+      continue;
+    }
+    b->Jp[n * nnodes + j] = (int)pos;
+    for (size_t R = 0; R < b->nx; ++R) b->Ji[pos++] = (int)R;
+  }
+  if (!count_only) b->Jp[b->nx] = (int)pos;
+  return pos;
+}
+
+/* The work arrays; 0, or -1 out of memory. */
+static int alloc_arrays(whirl_bvp *b) {
+  const size_t n = b->n, np = b->npar ? b->npar : 1, nc = b->nbc + b->nint;
+  b->mesh = malloc((b->ntst + 1) * sizeof *b->mesh);
+  b->free = malloc((b->nfree ? b->nfree : 1) * sizeof *b->free);
+  b->Jp = malloc((b->nx + 1) * sizeof *b->Jp);
+  b->Ji = malloc(b->nnz * sizeof *b->Ji);
+  b->Jx = malloc(b->nnz * sizeof *b->Jx);
+  const size_t sizes[] = {n, n, n, n, n, n * n, n * np, 2 * n, np, np,
+                          b->nbc, b->nbc, b->nint, b->nint, b->nint * n, nc, nc};
+  double **ptrs[] = {&b->u, &b->du, &b->f, &b->fm, &b->uq, &b->J, &b->Jpar,
+                     &b->work, &b->pt, &b->pq, &b->fb, &b->fbm, &b->gi,
+                     &b->gim, &b->gu, &b->cp, &b->cm};
+  const size_t nptr = sizeof sizes / sizeof sizes[0];
+  size_t tot = 0;
+  for (size_t k = 0; k < nptr; ++k) tot += sizes[k] + 1;
+  b->buf = calloc(tot, sizeof *b->buf);
+  if (!b->mesh || !b->free || !b->Jp || !b->Ji || !b->Jx || !b->buf) return -1;
+  double *q = b->buf;
+  for (size_t k = 0; k < nptr; ++k) {
+    *ptrs[k] = q;
+    q += sizes[k] + 1;
+  }
+  return 0;
+}
+
+whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
+                           const whirl_bvp_options *o, char *errbuf,
+                           size_t errlen) {
+  char why[320];
+  if (errbuf && errlen) errbuf[0] = '\0';
+  if (!prob || !prob->rhs || prob->n == 0)
+    return ALLOC_FAIL("model is NULL, has no rhs or n = 0");
+  if (!o) return ALLOC_FAIL("no options");
+  check_options(prob, o, why, sizeof why);
+  if (why[0]) return ALLOC_FAIL("%s", why);
+
+  const size_t n = prob->n, m = o->ncol, N = o->ntst;
+  const size_t nnodes = N * m + 1; /* N, m bounded above */
+  /* sizes in floating point first: nothing overflows on the way */
+  const double dnx = (double)n * (double)nnodes + (double)o->nfree;
+  const double dnnz =
+      (double)n * (double)nnodes *
+          (2.0 * (double)n * (double)m + (double)o->nbc + (double)o->nint) +
+      (double)o->nfree * dnx;
+  if (dnx + 1.0 >= (double)INT_MAX || dnnz >= (double)INT_MAX)
+    return ALLOC_FAIL(
+        "problem too large for int indices "
+        "(reduce NTST, NCOL, the model's dimension or the conditions)");
+
+  whirl_bvp *b = calloc(1, sizeof *b);
+  if (!b) return ALLOC_FAIL("out of memory");
+  b->prob = prob;
+  b->n = n;
+  b->npar = prob->npar;
+  b->ntst = N;
+  b->ncol = m;
+  b->nnodes = nnodes;
+  b->ncoll = n * N * m;
+  b->nbc = o->nbc;
+  b->nint = o->nint;
+  b->nfree = o->nfree;
+  b->nx = n * nnodes + o->nfree;
+  b->bc = o->bc;
+  b->ic = o->ic;
+  b->data = o->data;
+  b->nnz = build_pattern(b, 1);
+  if (alloc_arrays(b)) {
+    whirl_bvp_free(b);
+    return ALLOC_FAIL("out of memory");
+  }
+  if (b->nfree) memcpy(b->free, o->free, b->nfree * sizeof *b->free);
+  build_pattern(b, 0);
+
+  for (size_t i = 0; i <= N; ++i) b->mesh[i] = (double)i / (double)N;
+  b->mesh[N] = 1.0;
+  colloc_basis_gauss_legendre(m, b->gs, b->gw);
+  for (size_t g = 0; g < m; ++g)
+    colloc_basis_lagrange(m, b->gs[g], b->L + g * (m + 1), b->D + g * (m + 1));
+
+  whirl_system *s = &b->sys;
+  s->name = prob->name;
+  s->n = b->nx;
+  s->npar = prob->npar;
+  s->F = bvp_F;
+  s->Fx = bvp_Fx;
+  s->Fp = bvp_Fp;
+  s->nnz = b->nnz;
+  s->Jp = b->Jp;
+  s->Ji = b->Ji;
+  s->Fx_sparse = bvp_Fx_sparse;
+  s->x_names = NULL; /* node-major unknowns have no model names */
+  s->p_names = prob->p_names;
+  s->data = b;
+  return b;
+}
+
+void whirl_bvp_free(whirl_bvp *b) {
+  if (!b) return;
+  free(b->mesh);
+  free(b->free);
+  free(b->Jp);
+  free(b->Ji);
+  free(b->Jx);
+  free(b->buf);
+  free(b);
+}
+
+const whirl_system *whirl_bvp_system(const whirl_bvp *b) {
+  return b ? &b->sys : NULL;
+}
+
+size_t whirl_bvp_size(const whirl_bvp *b) { return b ? b->nx : 0; }
+
+/* ------------------------------------------------------------ solutions */
+
+/* Time of node j on the current mesh. */
+static double node_time(const whirl_bvp *b, size_t j) {
+  if (j == b->nnodes - 1) return 1.0;
+  const size_t i = j / b->ncol, k = j % b->ncol;
+  return b->mesh[i] + (b->mesh[i + 1] - b->mesh[i]) * (double)k / (double)b->ncol;
+}
+
+int whirl_bvp_from_function(whirl_bvp *b,
+                            int (*u)(double t, double *u, double *p, void *d),
+                            void *d, double *X, double *p) {
+  if (!b) return WHIRL_EINVAL;
+  if (!u || !X || (!p && b->npar))
+    return WHIRL_FAIL(b, WHIRL_EINVAL, "from_function: NULL argument");
+  for (size_t j = 0; j < b->nnodes; ++j) {
+    const double t = node_time(b, j);
+    int rc = u(t, X + b->n * j, p, d);
+    if (rc != 0)
+      return WHIRL_FAIL(b, rc, "from_function: the start function returned "
+                               "%d at t = %g", rc, t);
+  }
+  for (size_t j = 0; j < b->nfree; ++j) X[b->n * b->nnodes + j] = p[b->free[j]];
+  return WHIRL_OK;
+}
+
+int whirl_bvp_eval(const whirl_bvp *b, const double *X, double t, double *u) {
+  if (!b || !X || !u || !(t >= 0.0 && t <= 1.0)) return WHIRL_EINVAL;
+  colloc_basis_eval_poly(b->n, b->ntst, b->ncol, b->mesh, X, t, u);
+  return WHIRL_OK;
+}
+
+double whirl_bvp_l2norm(const whirl_bvp *b, const double *X) {
+  if (!b || !X) return NAN;
+  const size_t n = b->n, m = b->ncol;
+  double s = 0.0;
+  for (size_t i = 0; i < b->ntst; ++i) {
+    const double h = b->mesh[i + 1] - b->mesh[i];
+    for (size_t g = 0; g < m; ++g) {
+      const double *lv = b->L + g * (m + 1);
+      double sq = 0.0;
+      for (size_t r = 0; r < n; ++r) {
+        double v = 0.0;
+        for (size_t k = 0; k <= m; ++k) v += lv[k] * X[n * (i * m + k) + r];
+        sq += v * v;
+      }
+      s += h * b->gw[g] * sq;
+    }
+  }
+  return sqrt(s);
+}
+
+int whirl_bvp_max(const whirl_bvp *b, const double *X, double *mx) {
+  if (!b || !X || !mx) return WHIRL_EINVAL;
+  for (size_t r = 0; r < b->n; ++r) mx[r] = X[r];
+  for (size_t j = 1; j < b->nnodes; ++j)
+    for (size_t r = 0; r < b->n; ++r) mx[r] = fmax(mx[r], X[b->n * j + r]);
+  return WHIRL_OK;
+}
+
+const double *whirl_bvp_mesh(const whirl_bvp *b) { return b ? b->mesh : NULL; }
+
+int whirl_bvp_set_mesh(whirl_bvp *b, const double *tau) {
+  if (!b) return WHIRL_EINVAL;
+  if (!tau) return WHIRL_FAIL(b, WHIRL_EINVAL, "set_mesh: no mesh");
+  const size_t N = b->ntst;
+  if (tau[0] != 0.0 || tau[N] != 1.0)
+    return WHIRL_FAIL(b, WHIRL_EINVAL,
+                      "set_mesh: the mesh must run from 0 to 1 (got %g .. %g)",
+                      tau[0], tau[N]);
+  for (size_t k = 1; k <= N; ++k)
+    if (!(tau[k] > tau[k - 1]) || !isfinite(tau[k]))
+      return WHIRL_FAIL(b, WHIRL_EINVAL,
+                        "set_mesh: the mesh is not increasing at point %zu", k);
+  memcpy(b->mesh, tau, (N + 1) * sizeof *tau);
+  return WHIRL_OK;
+}
+
+const char *whirl_bvp_errmsg(const whirl_bvp *b) {
+  return b ? b->errmsg : "whirl_bvp: NULL object";
+}

@@ -1,0 +1,122 @@
+/* lib/systems/colloc_basis.c — the piecewise polynomial basis of the
+ * collocation constructors (colloc.c, bvp.c): Gauss–Legendre points and
+ * weights, the Lagrange basis on equally spaced nodes and its derivative,
+ * the evaluation of a piecewise polynomial on a mesh (colloc_basis.h).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <stddef.h>
+
+#include <whirl/problem.h>
+
+#include "colloc_basis.h"
+
+/* The Legendre polynomial P_m(z) (into *pm, by the three-term recurrence)
+ * and its derivative P_m'(z). */
+double colloc_basis_legendre(size_t m, double z, double *pm) {
+  double p0 = 1.0, p1 = z;
+  for (size_t j = 2; j <= m; ++j) {
+    double p2 = ((2.0 * (double)j - 1.0) * z * p1 - ((double)j - 1.0) * p0) / (double)j;
+    p0 = p1;
+    p1 = p2;
+  }
+  *pm = p1;
+  return (double)m * (z * p1 - p0) / (z * z - 1.0);
+}
+
+/* Gauss–Legendre points and weights on [0, 1] by Newton's method on P_m,
+ * from the asymptotic guesses cos(π(k + 3/4)/(m + 1/2)); converged to
+ * rounding (~1e-16). */
+void colloc_basis_gauss_legendre(size_t m, double *s, double *w) {
+  for (size_t k = 0; k < m; ++k) {
+    double z = cos(WHIRL_PI * ((double)k + 0.75) / ((double)m + 0.5));
+    double dp = 1.0, pm;
+    for (int it = 0; it < 100; ++it) {
+      dp = colloc_basis_legendre(m, z, &pm);
+      double dz = pm / dp;
+      z -= dz;
+      if (fabs(dz) <= 1e-17) break;
+    }
+    dp = colloc_basis_legendre(m, z, &pm); /* derivative at the converged root, for the weight */
+    /* roots come in decreasing z: σ = (1 − z)/2 is increasing */
+    s[k] = 0.5 * (1.0 - z);
+    w[k] = 1.0 / ((1.0 - z * z) * dp * dp); /* 2/((1−z²)P'²) halved */
+  }
+}
+
+/* Lagrange basis on the nodes k/m, k = 0..m, at σ: l[k] = l_k(σ) and, if
+ * dl is not NULL, dl[k] = l_k'(σ). */
+void colloc_basis_lagrange(size_t m, double sigma, double *l, double *dl) {
+  for (size_t k = 0; k <= m; ++k) {
+    const double sk = (double)k / (double)m;
+    double prod = 1.0, der = 0.0;
+    for (size_t j = 0; j <= m; ++j) {
+      if (j == k) continue;
+      const double sj = (double)j / (double)m;
+      prod *= (sigma - sj) / (sk - sj);
+    }
+    l[k] = prod;
+    if (!dl) continue;
+    for (size_t q = 0; q <= m; ++q) {
+      if (q == k) continue;
+      const double sq = (double)q / (double)m;
+      double term = 1.0 / (sk - sq);
+      for (size_t j = 0; j <= m; ++j) {
+        if (j == k || j == q) continue;
+        const double sj = (double)j / (double)m;
+        term *= (sigma - sj) / (sk - sj);
+      }
+      der += term;
+    }
+    dl[k] = der;
+  }
+}
+
+/* The values alone of the Lagrange basis on the nodes k/m at σ, in O(m):
+ * l_k(σ) = prod_{j != k} (mσ − j) / ((−1)^{m−k} k! (m − k)!), from prefix
+ * and suffix products (the evaluation of orbits for output). */
+void colloc_basis_lagrange_values(size_t m, double sigma, double *l) {
+  const double u = (double)m * sigma;
+  double pre[COLLOC_BASIS_MAXCOL + 2], suf[COLLOC_BASIS_MAXCOL + 2];
+  pre[0] = 1.0;
+  for (size_t j = 0; j <= m; ++j) pre[j + 1] = pre[j] * (u - (double)j);
+  suf[m + 1] = 1.0;
+  for (size_t j = m + 1; j-- > 0;) suf[j] = suf[j + 1] * (u - (double)j);
+  double fk = 1.0, fmk = 1.0; /* k!, (m − k)! */
+  for (size_t j = 2; j <= m; ++j) fmk *= (double)j;
+  for (size_t k = 0; k <= m; ++k) {
+    const double den = ((m - k) % 2 ? -1.0 : 1.0) * fk * fmk;
+    l[k] = pre[k] * suf[k + 1] / den;
+    fk *= (double)(k + 1);
+    if (k < m) fmk /= (double)(m - k);
+  }
+}
+
+/* Interval of the mesh tau[0..ntst] containing t ∈ [0, 1] (bisection). */
+size_t colloc_basis_find_interval(const double *tau, size_t ntst, double t) {
+  size_t lo = 0, hi = ntst;
+  while (hi - lo > 1) {
+    size_t mid = (lo + hi) / 2;
+    if (t >= tau[mid])
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return lo;
+}
+
+/* The piecewise polynomial with mesh tau and node values Xn at τ (wrapped
+ * periodically into [0, 1]): x[n]. */
+void colloc_basis_eval_poly(size_t n, size_t ntst, size_t m, const double *tau,
+                            const double *Xn, double t, double *x) {
+  if (t < 0.0 || t > 1.0) t -= floor(t);
+  const size_t i = colloc_basis_find_interval(tau, ntst, t);
+  const double h = tau[i + 1] - tau[i];
+  double l[COLLOC_BASIS_MAXCOL + 1];
+  colloc_basis_lagrange_values(m, (t - tau[i]) / h, l);
+  for (size_t r = 0; r < n; ++r) x[r] = 0.0;
+  for (size_t k = 0; k <= m; ++k) {
+    const double *xk = Xn + n * (i * m + k);
+    for (size_t r = 0; r < n; ++r) x[r] += l[k] * xk[r];
+  }
+}
+

@@ -1,0 +1,152 @@
+/* whirl/bvp.h — constructor: boundary value problems of an ODE model by
+ * orthogonal collocation (AUTO-07p's IPS = 4; de Boor & Swartz 1973;
+ * Doedel, AUTO-07p manual ch. 10), as an algebraic problem F(X, p) = 0 for
+ * the continuation core.  The sibling of whirl/colloc.h (periodic orbits).
+ *
+ * The problem, on t ∈ [0, 1]:
+ *     u'(t) = f(t, u, p)                     (the model, n = NDIM equations)
+ *     b(u(0), u(1), p) = 0                   (NBC boundary conditions)
+ *     ∫_0^1 g(u(t), p) dt = 0                (NINT integral conditions)
+ * The model's time argument is t itself (no period, no shift).
+ *
+ * Discretisation: the mesh 0 = τ_0 < ... < τ_NTST = 1 (uniform unless set
+ * by whirl_bvp_set_mesh) has NTST intervals, each carrying a polynomial of
+ * degree NCOL on NCOL + 1 equally spaced nodes, continuous at the mesh
+ * points; the ODE is imposed at the NCOL Gauss–Legendre points of every
+ * interval, row-scaled by the interval length h_i as in colloc.h:
+ *     sum_k l_k'(σ_c) u_{i,k} − h_i f(τ_{i,c}, u(τ_{i,c}), p~) = 0,
+ * and the integrals are the same Gauss quadrature.
+ *
+ * Parameters.  The free parameters are NFPR = NBC + NINT − NDIM + 1: one is
+ * the continuation core's parameter (whirl_cont_options.icp; a parameter of
+ * the system, not an unknown), the other nfree = NFPR − 1 = NBC + NINT − n
+ * are unknowns of the system, listed in options.free.  p~ denotes the full
+ * parameter vector p with p~[free[j]] = X[n·nnodes + j]: f, b and g are
+ * always called with p~ (whirl_bvp_params computes it).  The entries of p
+ * at the free indices are ignored, so the continuation parameter must not
+ * be one of them (its column would vanish).
+ *
+ * Unknowns X[size], size = n·(NTST·NCOL + 1) + nfree: the values at the
+ * NTST·NCOL + 1 nodes, node-major (X[n*j + i], node j at
+ * τ_{j/NCOL} + (j mod NCOL)/NCOL · h), then the nfree free parameters in the
+ * order of options.free.
+ * Equations, as many: the n·NTST·NCOL collocation equations (interval by
+ * interval, Gauss point by Gauss point, n each), then the NBC boundary
+ * conditions, then the NINT integral conditions.
+ *
+ * Jacobian: the collocation rows analytically from the model's jac_x and
+ * jac_p (central differences of f when NULL), the boundary and integral
+ * rows by central differences of bc and ic (AUTO with JAC = 0 does the
+ * same).  The system has a compressed-column sparse pattern (rows sorted
+ * within a column; usable by UMFPACK on the core's sparse path), a dense
+ * callback built from it, and F_p for any parameter.  It has no spectrum
+ * (a BVP solution has no stability), no structured solver (the core's
+ * dense or sparse LU factors the bordered matrix), no accept hook.
+ *
+ * Mesh adaptation (AUTO's IAD) is not implemented: options.adapt_every must
+ * be 0, the mesh stays as allocated or set by whirl_bvp_set_mesh.
+ *
+ * Callback contract (bc, ic and the model), as in whirl/problem.h: return 0
+ * on success, > 0 for a recoverable failure (outside the domain: the core
+ * shortens its step), < 0 for a fatal error.  Non-finite outputs are
+ * treated as recoverable by the core.
+ *
+ * Ownership: prob and options.free are copied or borrowed as said below;
+ * the library never prints or exits; a failure's message stays in the
+ * object (whirl_bvp_errmsg) or, for whirl_bvp_alloc, in errbuf.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_BVP_H
+#define WHIRL_BVP_H
+
+#include <stddef.h>
+#include <whirl/problem.h>
+#include <whirl/system.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Boundary conditions fb[nbc] = b(u0, u1, p): u0 = u(0), u1 = u(1), each
+ * n values; p the full parameter vector p~ (npar). */
+typedef int (*whirl_bvp_bc_fn)(const double *u0, const double *u1,
+                               const double *p, double *fb, void *data);
+/* Integrands fi[nint] = g(u, p) of the integral conditions at u = u(t). */
+typedef int (*whirl_bvp_ic_fn)(const double *u, const double *p, double *fi,
+                               void *data);
+
+typedef struct whirl_bvp_options {
+  size_t ntst;        /* NTST, mesh intervals, 1..WHIRL_COLLOC_MAX_NTST
+                         (default 20) */
+  size_t ncol;        /* NCOL, collocation points per interval, 2..7
+                         (default 4) */
+  size_t nbc;         /* NBC, number of boundary conditions (default 0) */
+  size_t nint;        /* NINT, number of integral conditions (default 0) */
+  whirl_bvp_bc_fn bc; /* required when nbc > 0 */
+  whirl_bvp_ic_fn ic; /* required when nint > 0 */
+  void *data;         /* passed to bc and ic; borrowed */
+  size_t nfree;       /* parameters that are unknowns: must equal
+                         nbc + nint − n (AUTO's NFPR − 1; checked) */
+  const size_t *free; /* nfree distinct parameter indices < npar; copied
+                         by whirl_bvp_alloc (may be NULL when nfree = 0) */
+  int adapt_every;    /* IAD: not implemented, must be 0 (default) */
+} whirl_bvp_options;
+
+/* Defaults: NTST 20, NCOL 4, no conditions, no free parameters, fixed mesh. */
+WHIRL_API void whirl_bvp_options_default(whirl_bvp_options *o);
+
+typedef struct whirl_bvp whirl_bvp;
+
+/* prob is borrowed and must outlive the object.  NULL on bad options (the
+ * count NBC + NINT = n + nfree, NCOL, NTST, missing callbacks, free indices
+ * out of range or repeated, too large for int indices) or no memory, with
+ * the message in errbuf[errlen] (errbuf may be NULL). */
+WHIRL_API whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
+                                     const whirl_bvp_options *o, char *errbuf,
+                                     size_t errlen);
+WHIRL_API void whirl_bvp_free(whirl_bvp *b); /* accepts NULL */
+
+/* The system F(X, p) = 0 (owned by b, valid while b lives). */
+WHIRL_API const whirl_system *whirl_bvp_system(const whirl_bvp *b);
+/* Unknowns (= equations): n (NTST NCOL + 1) + nfree; 0 for NULL. */
+WHIRL_API size_t whirl_bvp_size(const whirl_bvp *b);
+
+/* pfull[npar] = p with the free parameters taken from X (p~ above); pfull
+ * may be p itself. */
+WHIRL_API void whirl_bvp_params(const whirl_bvp *b, const double *X,
+                                const double *p, double *pfull);
+
+/* Initial guess from a function (AUTO's STPNT(T)): u(t, u, p, d) fills u[n]
+ * at t for every node time t (in increasing order) and may set parameters
+ * in p[npar] (in/out); afterwards X's free entries are p[free[j]].  The
+ * first non-zero status of u is returned (WHIRL_FAIL message). */
+WHIRL_API int whirl_bvp_from_function(whirl_bvp *b,
+                                      int (*u)(double t, double *u, double *p,
+                                               void *d),
+                                      void *d, double *X, double *p);
+
+/* The solution at t ∈ [0, 1]: u[n].  WHIRL_EINVAL outside [0, 1]. */
+WHIRL_API int whirl_bvp_eval(const whirl_bvp *b, const double *X, double t,
+                             double *u);
+
+/* AUTO's L2-NORM: sqrt(∫_0^1 |u(t)|² dt) by the Gauss quadrature of the
+ * mesh; NaN for NULL arguments. */
+WHIRL_API double whirl_bvp_l2norm(const whirl_bvp *b, const double *X);
+
+/* mx[n]: the maximum over the nodes of each component (AUTO's MAX U(i)). */
+WHIRL_API int whirl_bvp_max(const whirl_bvp *b, const double *X, double *mx);
+
+/* Current mesh tau[NTST + 1]. */
+WHIRL_API const double *whirl_bvp_mesh(const whirl_bvp *b);
+/* Set the mesh tau[NTST + 1], 0 = tau_0 < ... < tau_NTST = 1 (copied); X
+ * is not remapped (its node values then sit at the new nodes).
+ * WHIRL_EINVAL for a mesh that is not increasing from 0 to 1. */
+WHIRL_API int whirl_bvp_set_mesh(whirl_bvp *b, const double *tau);
+
+/* The message of the last failure of a function given b, with its origin
+ * "(bvp.c:N)"; "" if none.  Never NULL. */
+WHIRL_API const char *whirl_bvp_errmsg(const whirl_bvp *b);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

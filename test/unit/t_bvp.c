@@ -1,0 +1,666 @@
+/* test/unit/t_bvp.c — boundary value problems by orthogonal collocation
+ * (lib/systems/bvp.c, AUTO-07p's IPS = 4) against closed forms:
+ *  1. Bratu's problem (AUTO's demo exp): u'' = -λ e^u, u(0) = u(1) = 0,
+ *     continued in λ from (0, 0): the solutions at λ = 1 and 3 against
+ *     u(x) = -2 ln[cosh((x - 1/2) θ/2) / cosh(θ/4)], θ = sqrt(2λ) cosh(θ/4)
+ *     (the smaller root), and the fold at λ* = 3.513830719125162;
+ *  2. the analytic Jacobian against finite differences of F, the sparse
+ *     against the dense, with and without the model's Jacobians;
+ *  3. an integral condition with a free parameter: u' = a u, u(0) = 1,
+ *     ∫ (u - c) dt = 0, continued in c with a free: (e^a - 1)/a = c; and a
+ *     model that depends on t with a free parameter in the boundary
+ *     conditions, u' = a u + sin 3t, u(0) = q, u(1) = B;
+ *  4. rejected options.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/bvp.h>
+#include <whirl/cont.h>
+
+#include "../tap.h"
+
+/* ------------------------------------------------------------------------
+ * Bratu: u1' = u2, u2' = -λ e^{u1}, p = (λ) */
+
+static int bratu_rhs(double t, const double *u, const double *p, double *f,
+                     void *data) {
+  (void)t;
+  (void)data;
+  f[0] = u[1];
+  f[1] = -p[0] * exp(u[0]);
+  return 0;
+}
+static int bratu_jac(double t, const double *u, const double *p, double *J,
+                     void *data) {
+  (void)t;
+  (void)data;
+  J[0] = 0.0, J[1] = -p[0] * exp(u[0]);
+  J[2] = 1.0, J[3] = 0.0;
+  return 0;
+}
+static int bratu_jacp(double t, const double *u, const double *p, double *J,
+                      void *data) {
+  (void)t;
+  (void)p;
+  (void)data;
+  J[0] = 0.0, J[1] = -exp(u[0]);
+  return 0;
+}
+static const whirl_problem bratu = {.name = "bratu",
+                                    .n = 2,
+                                    .npar = 1,
+                                    .rhs = bratu_rhs,
+                                    .jac_x = bratu_jac,
+                                    .jac_p = bratu_jacp,
+                                    .autonomous = 1};
+static const whirl_problem bratu_fd = {
+    .name = "bratu-fd", .n = 2, .npar = 1, .rhs = bratu_rhs, .autonomous = 1};
+
+static int bratu_bc(const double *u0, const double *u1, const double *p,
+                    double *fb, void *data) {
+  (void)p;
+  (void)data;
+  fb[0] = u0[0];
+  fb[1] = u1[0];
+  return 0;
+}
+
+/* θ = sqrt(2λ) cosh(θ/4), the smaller root, by bisection on [0, θ_*]:
+ * θ - sqrt(2λ) cosh(θ/4) is negative at 0 and >= 0 at the fold's
+ * θ_* = 4.798714560 for λ <= λ_* (positive between the two roots). */
+static double bratu_theta(double lam) {
+  const double s = sqrt(2.0 * lam);
+  double lo = 0.0, hi = 4.798714560;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid - s * cosh(mid / 4.0) < 0.0)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+static double bratu_u(double lam, double x) {
+  const double th = bratu_theta(lam);
+  return -2.0 * log(cosh((x - 0.5) * th / 2.0) / cosh(th / 4.0));
+}
+static double bratu_du(double lam, double x) {
+  const double th = bratu_theta(lam);
+  return -th * tanh((x - 0.5) * th / 2.0);
+}
+
+/* AUTO's STPNT of exp: λ = 0, u = 0 */
+static int bratu_start(double t, double *u, double *p, void *d) {
+  (void)t;
+  (void)d;
+  u[0] = u[1] = 0.0;
+  p[0] = 0.0;
+  return 0;
+}
+
+/* The compressed-column pattern is well formed: Jp non-decreasing from 0 to
+ * nnz, rows in range and strictly increasing within each column. */
+static int pattern_ok(const whirl_system *s) {
+  if (!s->Jp || !s->Ji || s->Jp[0] != 0 || (size_t)s->Jp[s->n] != s->nnz)
+    return 0;
+  for (size_t j = 0; j < s->n; ++j) {
+    if (s->Jp[j + 1] < s->Jp[j]) return 0;
+    for (int q = s->Jp[j]; q < s->Jp[j + 1]; ++q) {
+      if (s->Ji[q] < 0 || (size_t)s->Ji[q] >= s->n) return 0;
+      if (q > s->Jp[j] && s->Ji[q] <= s->Ji[q - 1]) return 0;
+    }
+  }
+  return 1;
+}
+
+/* max over the mesh points (superconvergent) and over all nodes of the
+ * error of u1 and u2 against the closed form */
+static void bratu_errors(const whirl_bvp *b, const double *X, double lam,
+                         size_t ntst, size_t ncol, double *emesh,
+                         double *enode) {
+  const double *tau = whirl_bvp_mesh(b);
+  *emesh = *enode = 0.0;
+  for (size_t j = 0; j <= ntst * ncol; ++j) {
+    const size_t i = j / ncol, k = j % ncol;
+    const double x = j == ntst * ncol ? 1.0
+                                      : tau[i] + (tau[i + 1] - tau[i]) *
+                                                     (double)k / (double)ncol;
+    const double e = fmax(fabs(X[2 * j] - bratu_u(lam, x)),
+                          fabs(X[2 * j + 1] - bratu_du(lam, x)));
+    *enode = fmax(*enode, e);
+    if (k == 0) *emesh = fmax(*emesh, e);
+  }
+}
+
+/* ------------------------------------------------------------------------
+ * 1. Bratu by the continuation core */
+
+static void test_bratu(whirl_linsol_kind kind) {
+  const char *kn = kind == WHIRL_LINSOL_SPARSE ? "sparse" : "dense";
+  const size_t ntst = 10, ncol = 4;
+  char err[256];
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = ntst;
+  o.ncol = ncol;
+  o.nbc = 2;
+  o.bc = bratu_bc;
+  whirl_bvp *b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  ok(b != NULL, "Bratu (%s): alloc NTST 10 NCOL 4: %s", kn, err);
+  if (!b) return;
+  const whirl_system *s = whirl_bvp_system(b);
+  const size_t nx = whirl_bvp_size(b);
+  ok(nx == 2 * 41 && s->n == nx, "size n (NTST NCOL + 1) = 82 (got %zu)", nx);
+  double *X = malloc(nx * sizeof *X), p[1] = {7.0};
+  int rc = whirl_bvp_from_function(b, bratu_start, NULL, X, p);
+  ok(rc == WHIRL_OK && p[0] == 0.0, "from_function: STPNT sets λ = 0");
+
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = 0;
+  co.linsol = kind;
+  co.ds = 0.1;
+  co.ds_max = 0.25;
+  co.nmx = 200;
+  co.p_min = -0.5;
+  const double uz[2] = {1.0, 3.0};
+  co.uz = uz;
+  co.nuz = 2;
+  whirl_cont *ct = whirl_cont_alloc(s, &co, err, sizeof err);
+  ok(ct != NULL, "Bratu (%s): continuation alloc: %s", kn, err);
+  rc = ct ? whirl_cont_start(ct, X, p, +1) : -1;
+  ok(rc == WHIRL_OK, "Bratu (%s): start at λ = 0, u = 0: %s", kn,
+     ct ? whirl_cont_errmsg(ct) : err);
+  int seen_uz[2] = {0, 0}, seen_lp = 0;
+  double lam_lp = NAN, mx_lp[2] = {NAN, NAN}, l2_lp = NAN;
+  while (rc == WHIRL_OK && !seen_lp && (rc = whirl_cont_step(ct)) == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(ct);
+    if (pt->type == WHIRL_PT_UZ && pt->uz >= 0 && pt->uz < 2 &&
+        !seen_uz[pt->uz]) {
+      const double lam = pt->p[0];
+      double em, en;
+      bratu_errors(b, pt->x, lam, ntst, ncol, &em, &en);
+      printf("# Bratu (%s) UZ λ = %.12g (θ = %.12f): error %.2e at mesh "
+             "points, %.2e at all nodes; L2 %.10f\n",
+             kn, lam, bratu_theta(lam), em, en, whirl_bvp_l2norm(b, pt->x));
+      is_abs(lam, uz[pt->uz], 1e-10, "Bratu (%s): UZ at λ = %g", kn, uz[pt->uz]);
+      ok(em < 1e-9, "Bratu (%s) λ = %g: closed form at the mesh points to "
+                    "1e-9 (%.2e)", kn, lam, em);
+      ok(en < 1e-6, "Bratu (%s) λ = %g: closed form at all nodes to 1e-6 "
+                    "(%.2e)", kn, lam, en);
+      /* between the nodes: the polynomial at t = 0.3137 */
+      double ue[2] = {NAN, NAN};
+      whirl_bvp_eval(b, pt->x, 0.3137, ue);
+      is_abs(ue[0], bratu_u(lam, 0.3137), 1e-6,
+             "Bratu (%s) λ = %g: eval at t = 0.3137 (%.10f)", kn, lam, ue[0]);
+      seen_uz[pt->uz] = 1;
+    }
+    if (pt->type == WHIRL_PT_LP) {
+      seen_lp = 1;
+      lam_lp = pt->p[0];
+      whirl_bvp_max(b, pt->x, mx_lp);
+      l2_lp = whirl_bvp_l2norm(b, pt->x);
+    }
+  }
+  ok(seen_uz[0] && seen_uz[1], "Bratu (%s): UZ points at λ = 1 and 3 on the "
+                               "lower branch", kn);
+  printf("# Bratu (%s): LP at λ = %.15f (closed form 3.513830719125162), "
+         "MAX U1 %.10f, L2 %.10f\n", kn, lam_lp, mx_lp[0], l2_lp);
+  ok(seen_lp, "Bratu (%s): a fold (LP) on the branch: %s", kn,
+     ct ? whirl_cont_errmsg(ct) : "");
+  is_abs(lam_lp, 3.513830719125162, 1e-6, "Bratu (%s): LP at λ* = 3.5138307 "
+                                          "(1e-6)", kn);
+  /* at the fold θ_* = 4.798714560: max u1 = u(1/2) = 2 ln cosh(θ_* / 4) */
+  is_abs(mx_lp[0], 2.0 * log(cosh(4.798714560 / 4.0)), 1e-5,
+         "Bratu (%s): MAX U1 at the fold = 2 ln cosh(θ*/4)", kn);
+  whirl_cont_free(ct);
+  free(X);
+  whirl_bvp_free(b);
+}
+
+/* Newton at fixed λ = 1 from u = 0 on a non-uniform mesh (set_mesh), the
+ * core's dense corrector on the system's F and F_x. */
+static void test_bratu_newton(void) {
+  const size_t ntst = 8, ncol = 5;
+  char err[256];
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = ntst;
+  o.ncol = ncol;
+  o.nbc = 2;
+  o.bc = bratu_bc;
+  whirl_bvp *b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  ok(b != NULL, "Bratu NTST 8 NCOL 5: %s", err);
+  if (!b) return;
+  double tau[9];
+  for (size_t i = 0; i <= ntst; ++i) {
+    const double x = (double)i / (double)ntst;
+    tau[i] = x * x * (3.0 - 2.0 * x); /* denser at both ends */
+  }
+  tau[0] = 0.0, tau[ntst] = 1.0;
+  ok(whirl_bvp_set_mesh(b, tau) == WHIRL_OK && whirl_bvp_mesh(b)[3] == tau[3],
+     "set_mesh: a non-uniform mesh");
+  const double bad[9] = {0, 0.1, 0.3, 0.2, 0.5, 0.6, 0.7, 0.8, 1};
+  ok(whirl_bvp_set_mesh(b, bad) == WHIRL_EINVAL &&
+         strstr(whirl_bvp_errmsg(b), "increasing"),
+     "set_mesh refuses a decreasing mesh: %s", whirl_bvp_errmsg(b));
+  const size_t nx = whirl_bvp_size(b);
+  double *X = calloc(nx, sizeof *X);
+  const double p[1] = {1.0};
+  int its = 0;
+  int rc = whirl_newton(whirl_bvp_system(b), X, p, 1e-12, 20, &its);
+  double em, en;
+  bratu_errors(b, X, 1.0, ntst, ncol, &em, &en);
+  printf("# Bratu λ = 1, Newton from 0 (%d iterations): error %.2e at mesh "
+         "points, %.2e at nodes\n", its, em, en);
+  ok(rc == WHIRL_OK && em < 1e-10 && en < 1e-7,
+     "Bratu λ = 1 by Newton on a non-uniform mesh: mesh points %.2e < 1e-10, "
+     "nodes %.2e < 1e-7", em, en);
+  /* L2-NORM: the quadrature of |u|² of the closed form by Simpson */
+  double q = 0.0;
+  const int M = 2000;
+  for (int k = 0; k <= M; ++k) {
+    const double x = (double)k / M, w = (k == 0 || k == M) ? 1 : (k % 2 ? 4 : 2);
+    const double a = bratu_u(1.0, x), d = bratu_du(1.0, x);
+    q += w * (a * a + d * d);
+  }
+  q = sqrt(q / (3.0 * M));
+  is_abs(whirl_bvp_l2norm(b, X), q, 1e-8, "L2-NORM = sqrt(∫ u1² + u2²) of the "
+                                          "closed form (%.10f)", q);
+  free(X);
+  whirl_bvp_free(b);
+}
+
+/* ------------------------------------------------------------------------
+ * 3. u' = a u, u(0) = 1, ∫ (u - c) dt = 0; p = (a, c), a free, c the
+ *    continuation parameter: u = e^{a t}, (e^a - 1)/a = c */
+
+static int ex_rhs(double t, const double *u, const double *p, double *f,
+                  void *data) {
+  (void)t;
+  (void)data;
+  f[0] = p[0] * u[0];
+  return 0;
+}
+static int ex_jac(double t, const double *u, const double *p, double *J,
+                  void *data) {
+  (void)t;
+  (void)u;
+  (void)data;
+  J[0] = p[0];
+  return 0;
+}
+static int ex_jacp(double t, const double *u, const double *p, double *J,
+                   void *data) {
+  (void)t;
+  (void)p;
+  (void)data;
+  J[0] = u[0];
+  J[1] = 0.0;
+  return 0;
+}
+static const whirl_problem expo = {.name = "expo",
+                                   .n = 1,
+                                   .npar = 2,
+                                   .rhs = ex_rhs,
+                                   .jac_x = ex_jac,
+                                   .jac_p = ex_jacp,
+                                   .autonomous = 1};
+static const whirl_problem expo_fd = {
+    .name = "expo-fd", .n = 1, .npar = 2, .rhs = ex_rhs, .autonomous = 1};
+static int ex_bc(const double *u0, const double *u1, const double *p,
+                 double *fb, void *data) {
+  (void)u1;
+  (void)p;
+  (void)data;
+  fb[0] = u0[0] - 1.0;
+  return 0;
+}
+static int ex_ic(const double *u, const double *p, double *fi, void *data) {
+  (void)data;
+  fi[0] = u[0] - p[1];
+  return 0;
+}
+/* a start that is not a solution: u = 1 + t, a = 0.5, c = 2 */
+static int ex_start(double t, double *u, double *p, void *d) {
+  (void)d;
+  u[0] = 1.0 + t;
+  p[0] = 0.5;
+  p[1] = 2.0;
+  return 0;
+}
+/* a with (e^a - 1)/a = c (c > 1: a > 0), by Newton on the closed form */
+static double ex_a_of_c(double c) {
+  double a = 1.0;
+  for (int it = 0; it < 100; ++it) {
+    const double g = expm1(a) / a - c;
+    const double dg = (a * exp(a) - expm1(a)) / (a * a);
+    const double da = g / dg;
+    a -= da;
+    if (fabs(da) < 1e-16 * fabs(a)) break;
+  }
+  return a;
+}
+
+static void test_integral(void) {
+  const size_t ntst = 10, ncol = 4;
+  char err[256];
+  const size_t fr[1] = {0};
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = ntst;
+  o.ncol = ncol;
+  o.nbc = 1;
+  o.nint = 1;
+  o.bc = ex_bc;
+  o.ic = ex_ic;
+  o.nfree = 1;
+  o.free = fr;
+  whirl_bvp *b = whirl_bvp_alloc(&expo, &o, err, sizeof err);
+  ok(b != NULL, "u' = a u with ∫ u = c, a free: alloc: %s", err);
+  if (!b) return;
+  const whirl_system *s = whirl_bvp_system(b);
+  const size_t nx = whirl_bvp_size(b);
+  ok(nx == 41 + 1, "size n (NTST NCOL + 1) + nfree = 42 (got %zu)", nx);
+  double *X = malloc(nx * sizeof *X), p[2] = {9.0, 9.0};
+  whirl_bvp_from_function(b, ex_start, NULL, X, p);
+  ok(X[nx - 1] == 0.5 && X[40] == 2.0 && p[1] == 2.0,
+     "from_function: the free a = 0.5 into X, u(1) = 2");
+  double pf[2];
+  p[0] = -7.0; /* ignored: a comes from X */
+  whirl_bvp_params(b, X, p, pf);
+  ok(pf[0] == 0.5 && pf[1] == 2.0, "whirl_bvp_params: a from X, c from p");
+
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = 1;
+  co.linsol = WHIRL_LINSOL_SPARSE;
+  co.ds = 0.05;
+  co.ds_max = 0.2;
+  co.p_max = 4.0;
+  co.nmx = 200;
+  const double uz[2] = {2.5, 3.5};
+  co.uz = uz;
+  co.nuz = 2;
+  whirl_cont *ct = whirl_cont_alloc(s, &co, err, sizeof err);
+  int rc = ct ? whirl_cont_start(ct, X, p, +1) : -1;
+  ok(rc == WHIRL_OK, "start from u = 1 + t, a = 0.5 at c = 2 (Newton): %s",
+     ct ? whirl_cont_errmsg(ct) : err);
+  if (rc == WHIRL_OK) rc = whirl_cont_step(ct); /* the corrected start */
+  if (rc == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(ct);
+    const double a = pt->x[nx - 1];
+    printf("# c = 2: a = %.15f, closed form %.15f\n", a, ex_a_of_c(2.0));
+    is_abs(a, ex_a_of_c(2.0), 1e-10, "c = 2: the free a solves (e^a - 1)/a = 2");
+    double mx = NAN;
+    whirl_bvp_max(b, pt->x, &mx);
+    is_abs(mx, exp(a), 1e-10, "MAX U = u(1) = e^a");
+    is_abs(whirl_bvp_l2norm(b, pt->x), sqrt(expm1(2.0 * a) / (2.0 * a)), 1e-10,
+           "L2-NORM = sqrt((e^{2a} - 1)/(2a))");
+    double ue = NAN;
+    whirl_bvp_eval(b, pt->x, 0.77, &ue);
+    is_abs(ue, exp(0.77 * a), 1e-8, "u(0.77) = e^{0.77 a}");
+  }
+  int nuz = 0;
+  while (rc == WHIRL_OK && (rc = whirl_cont_step(ct)) == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(ct);
+    if (pt->type != WHIRL_PT_UZ) continue;
+    ++nuz;
+    const double c = pt->p[1], a = pt->x[nx - 1];
+    printf("# UZ c = %.12g: a = %.15f, closed form %.15f\n", c, a,
+           ex_a_of_c(c));
+    is_abs(a, ex_a_of_c(c), 1e-10, "UZ c = %g: a solves (e^a - 1)/a = c", c);
+  }
+  ok(nuz == 2, "two UZ points, c = 2.5 and 3.5 (got %d); stop: %s", nuz,
+     whirl_stop_reason_name(whirl_cont_stop_reason(ct)));
+  whirl_cont_free(ct);
+  free(X);
+  whirl_bvp_free(b);
+}
+
+/* ------------------------------------------------------------------------
+ * 2. Jacobians */
+
+static void check_jac(const char *name, const whirl_bvp *b, const double *X,
+                      const double *p) {
+  const whirl_system *s = whirl_bvp_system(b);
+  const size_t nx = s->n;
+  ok(pattern_ok(s), "%s: sparse pattern well formed, sorted rows (nnz %zu)",
+     name, s->nnz);
+  double e_dense = NAN, e_sparse = NAN;
+  int rc1 = whirl_system_check_jacobian(s, X, p, &e_dense);
+  whirl_system sp = *s;
+  sp.Fx = NULL; /* the checker then scatters Fx_sparse */
+  int rc2 = whirl_system_check_jacobian(&sp, X, p, &e_sparse);
+  printf("# %s: Jacobian error dense %.2e sparse %.2e\n", name, e_dense,
+         e_sparse);
+  ok(rc1 == 0 && e_dense < 1e-6,
+     "%s: dense F_x and F_p vs differences of F: %.2e < 1e-6", name, e_dense);
+  ok(rc2 == 0 && e_sparse < 1e-6,
+     "%s: sparse F_x vs differences of F: %.2e < 1e-6", name, e_sparse);
+  /* the sparse values scattered are the dense matrix, entry for entry, and
+   * the dense matrix has nothing outside the pattern */
+  double *J = malloc(nx * nx * sizeof *J), *Jx = malloc(s->nnz * sizeof *Jx);
+  int rc = s->Fx(X, p, J, s->data);
+  if (rc == 0) rc = s->Fx_sparse(X, p, Jx, s->data);
+  double diff = 0.0;
+  for (size_t col = 0; rc == 0 && col < nx; ++col)
+    for (int q = s->Jp[col]; q < s->Jp[col + 1]; ++q) {
+      diff = fmax(diff, fabs(J[(size_t)s->Ji[q] + nx * col] - Jx[q]));
+      J[(size_t)s->Ji[q] + nx * col] = 0.0;
+    }
+  double outside = 0.0;
+  for (size_t q = 0; rc == 0 && q < nx * nx; ++q) outside = fmax(outside, fabs(J[q]));
+  ok(rc == 0 && diff == 0.0 && outside == 0.0,
+     "%s: sparse = dense on the pattern (%.1e), dense 0 off it (%.1e)", name,
+     diff, outside);
+  free(J);
+  free(Jx);
+}
+
+static void test_jacobians(void) {
+  char err[256];
+  whirl_bvp_options o;
+  const whirl_problem *bp[2] = {&bratu, &bratu_fd};
+  for (int v = 0; v < 2; ++v) {
+    whirl_bvp_options_default(&o);
+    o.ntst = 6;
+    o.ncol = 3;
+    o.nbc = 2;
+    o.bc = bratu_bc;
+    whirl_bvp *b = whirl_bvp_alloc(bp[v], &o, err, sizeof err);
+    ok(b != NULL, "alloc %s NTST 6 NCOL 3: %s", bp[v]->name, err);
+    if (!b) continue;
+    const size_t nx = whirl_bvp_size(b);
+    double *X = malloc(nx * sizeof *X);
+    for (size_t q = 0; q < nx; ++q) X[q] = tap_urand(-1.0, 1.0);
+    const double p[1] = {2.3};
+    check_jac(bp[v]->name, b, X, p);
+    free(X);
+    whirl_bvp_free(b);
+  }
+  /* the integral condition, the free parameter's column */
+  const whirl_problem *ep[2] = {&expo, &expo_fd};
+  const size_t fr[1] = {0};
+  for (int v = 0; v < 2; ++v) {
+    whirl_bvp_options_default(&o);
+    o.ntst = 5;
+    o.ncol = 4;
+    o.nbc = 1;
+    o.nint = 1;
+    o.bc = ex_bc;
+    o.ic = ex_ic;
+    o.nfree = 1;
+    o.free = fr;
+    whirl_bvp *b = whirl_bvp_alloc(ep[v], &o, err, sizeof err);
+    ok(b != NULL, "alloc %s with NINT 1, a free: %s", ep[v]->name, err);
+    if (!b) continue;
+    const size_t nx = whirl_bvp_size(b);
+    double *X = malloc(nx * sizeof *X);
+    for (size_t q = 0; q < nx; ++q) X[q] = tap_urand(-1.0, 1.0);
+    const double p[2] = {0.0 /* ignored */, 1.7};
+    check_jac(ep[v]->name, b, X, p);
+    free(X);
+    whirl_bvp_free(b);
+  }
+}
+
+/* ------------------------------------------------------------------------
+ * 3b. A model that depends on t, a free parameter in the boundary
+ *     conditions: u' = a u + sin 3t, u(0) = q, u(1) = B; p = (a, q, B),
+ *     q free: u = q e^{at} + s(t), s(t) = (3 e^{at} - 3 cos 3t - a sin 3t)
+ *     / (a² + 9), so q = (B - s(1)) e^{-a} */
+
+static int na_rhs(double t, const double *u, const double *p, double *f,
+                  void *data) {
+  (void)data;
+  f[0] = p[0] * u[0] + sin(3.0 * t);
+  return 0;
+}
+static const whirl_problem nonaut = {
+    .name = "nonaut", .n = 1, .npar = 3, .rhs = na_rhs, .autonomous = 0};
+static int na_bc(const double *u0, const double *u1, const double *p,
+                 double *fb, void *data) {
+  (void)data;
+  fb[0] = u0[0] - p[1];
+  fb[1] = u1[0] - p[2];
+  return 0;
+}
+static double na_s(double a, double t) {
+  return (3.0 * exp(a * t) - 3.0 * cos(3.0 * t) - a * sin(3.0 * t)) /
+         (a * a + 9.0);
+}
+
+static void test_nonautonomous(void) {
+  char err[256];
+  const size_t fr[1] = {1};
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = 12;
+  o.ncol = 3;
+  o.nbc = 2;
+  o.bc = na_bc;
+  o.nfree = 1;
+  o.free = fr;
+  whirl_bvp *b = whirl_bvp_alloc(&nonaut, &o, err, sizeof err);
+  ok(b != NULL, "u' = a u + sin 3t, u(0) = q free, u(1) = B: alloc: %s", err);
+  if (!b) return;
+  const size_t nx = whirl_bvp_size(b);
+  double *X = malloc(nx * sizeof *X);
+  for (size_t q = 0; q < nx; ++q) X[q] = tap_urand(-1.0, 1.0);
+  const double p[3] = {-0.8, 0.0 /* ignored */, 1.5};
+  check_jac("nonaut", b, X, p);
+  for (size_t q = 0; q < nx; ++q) X[q] = 0.0;
+  int its = 0;
+  int rc = whirl_newton(whirl_bvp_system(b), X, p, 1e-13, 20, &its);
+  const double a = p[0], qx = (p[2] - na_s(a, 1.0)) * exp(-a);
+  double e = 0.0;
+  for (size_t i = 0; i <= o.ntst; ++i) {
+    const double t = (double)i / (double)o.ntst;
+    e = fmax(e, fabs(X[i * o.ncol] - (qx * exp(a * t) + na_s(a, t))));
+  }
+  printf("# nonaut: q = %.15f, closed form %.15f; error at the mesh points "
+         "%.2e (%d Newton iterations)\n", X[nx - 1], qx, e, its);
+  ok(rc == WHIRL_OK, "nonaut: Newton from 0 converges");
+  is_abs(X[nx - 1], qx, 1e-9, "nonaut: the free q = (B - s(1)) e^{-a}");
+  ok(e < 1e-9, "nonaut: u at the mesh points to 1e-9 (%.2e)", e);
+  free(X);
+  whirl_bvp_free(b);
+}
+
+/* ------------------------------------------------------------------------
+ * 4. Rejected options */
+
+static void test_bad_options(void) {
+  char err[256];
+  whirl_bvp_options o;
+  whirl_bvp *b;
+  const size_t fr[2] = {0, 0}, fr_out[1] = {5};
+
+  whirl_bvp_options_default(&o);
+  o.nbc = 2;
+  o.bc = bratu_bc;
+  o.nfree = 1;
+  o.free = fr;
+  b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  ok(!b && strstr(err, "nfree"), "Bratu with nfree = 1 refused: %s", err);
+  whirl_bvp_free(b);
+
+  o.nfree = 0;
+  o.nbc = 1;
+  b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  ok(!b && strstr(err, "NBC + NINT"), "NBC = 1 < n = 2 refused: %s", err);
+  whirl_bvp_free(b);
+
+  whirl_bvp_options_default(&o);
+  o.nbc = 2;
+  o.bc = bratu_bc;
+  o.ncol = 8;
+  b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  ok(!b && strstr(err, "NCOL"), "NCOL = 8 refused: %s", err);
+  o.ncol = 1;
+  b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  ok(!b && strstr(err, "NCOL"), "NCOL = 1 refused: %s", err);
+  o.ncol = 4;
+  o.ntst = 0;
+  b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  ok(!b && strstr(err, "NTST"), "NTST = 0 refused: %s", err);
+
+  whirl_bvp_options_default(&o);
+  o.nbc = 2;
+  o.bc = NULL;
+  b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  ok(!b && strstr(err, "bc is NULL"), "NBC = 2 with bc NULL refused: %s", err);
+
+  whirl_bvp_options_default(&o);
+  o.nbc = 1;
+  o.nint = 1;
+  o.bc = ex_bc;
+  o.nfree = 1;
+  o.free = fr;
+  b = whirl_bvp_alloc(&expo, &o, err, sizeof err);
+  ok(!b && strstr(err, "ic is NULL"), "NINT = 1 with ic NULL refused: %s", err);
+  o.ic = ex_ic;
+  o.free = fr_out;
+  b = whirl_bvp_alloc(&expo, &o, err, sizeof err);
+  ok(!b && strstr(err, "free[0] = 5"), "free index out of range refused: %s",
+     err);
+  o.free = NULL;
+  b = whirl_bvp_alloc(&expo, &o, err, sizeof err);
+  ok(!b && strstr(err, "NULL"), "nfree = 1 without a list refused: %s", err);
+  /* two free parameters of the same index (n = 1, NBC 1, NINT 2) */
+  o.nint = 2;
+  o.nfree = 2;
+  o.free = fr;
+  b = whirl_bvp_alloc(&expo, &o, err, sizeof err);
+  ok(!b && strstr(err, "twice"), "a free parameter listed twice refused: %s",
+     err);
+
+  whirl_bvp_options_default(&o);
+  o.nbc = 2;
+  o.bc = bratu_bc;
+  o.adapt_every = 3;
+  b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  ok(!b && strstr(err, "not implemented"),
+     "adapt_every != 0 refused (no mesh adaptation): %s", err);
+  b = whirl_bvp_alloc(NULL, &o, err, sizeof err);
+  ok(!b && err[0], "NULL model refused: %s", err);
+  ok(whirl_bvp_size(NULL) == 0 && whirl_bvp_system(NULL) == NULL &&
+         whirl_bvp_errmsg(NULL) != NULL,
+     "NULL object: size 0, no system, a message");
+  whirl_bvp_free(NULL);
+}
+
+int main(void) {
+  test_bratu(WHIRL_LINSOL_DENSE);
+  test_bratu(WHIRL_LINSOL_SPARSE);
+  test_bratu_newton();
+  test_jacobians();
+  test_integral();
+  test_nonautonomous();
+  test_bad_options();
+  return done_testing();
+}
