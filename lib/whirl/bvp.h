@@ -27,9 +27,10 @@
  * be one of them (its column would vanish).
  *
  * Unknowns X[size], size = n·(NTST·NCOL + 1) + nfree: the values at the
- * NTST·NCOL + 1 nodes, node-major (X[n*j + i], node j at
- * τ_{j/NCOL} + (j mod NCOL)/NCOL · h), then the nfree free parameters in the
- * order of options.free.
+ * NTST·NCOL + 1 nodes, node-major (X[n*j + r] is component r at node j;
+ * node j = i·NCOL + k, k < NCOL, sits at τ_i + k h_i / NCOL, the last node
+ * at t = 1, so the mesh points are the nodes j = i·NCOL), then the nfree
+ * free parameters in the order of options.free.
  * Equations, as many: the n·NTST·NCOL collocation equations (interval by
  * interval, Gauss point by Gauss point, n each), then the NBC boundary
  * conditions, then the NINT integral conditions.
@@ -107,7 +108,8 @@ WHIRL_API void whirl_bvp_free(whirl_bvp *b); /* accepts NULL */
 
 /* The system F(X, p) = 0 (owned by b, valid while b lives). */
 WHIRL_API const whirl_system *whirl_bvp_system(const whirl_bvp *b);
-/* Unknowns (= equations): n (NTST NCOL + 1) + nfree; 0 for NULL. */
+/* Unknowns (= equations): n (NTST NCOL + 1) + nfree; 0 for NULL.  The
+ * system's F_p(k) is 0 for a free k (p~ takes it from X). */
 WHIRL_API size_t whirl_bvp_size(const whirl_bvp *b);
 
 /* pfull[npar] = p with the free parameters taken from X (p~ above); pfull
@@ -116,9 +118,10 @@ WHIRL_API void whirl_bvp_params(const whirl_bvp *b, const double *X,
                                 const double *p, double *pfull);
 
 /* Initial guess from a function (AUTO's STPNT(T)): u(t, u, p, d) fills u[n]
- * at t for every node time t (in increasing order) and may set parameters
- * in p[npar] (in/out); afterwards X's free entries are p[free[j]].  The
- * first non-zero status of u is returned (WHIRL_FAIL message). */
+ * at t for every node time t ∈ [0, 1] (in increasing order) and may set
+ * parameters in p[npar] (in/out, as STPNT's PAR); afterwards X's free
+ * entries are p[free[j]].  u returns 0, or a non-zero status that stops the
+ * filling and is returned (message in whirl_bvp_errmsg). */
 WHIRL_API int whirl_bvp_from_function(whirl_bvp *b,
                                       int (*u)(double t, double *u, double *p,
                                                void *d),
