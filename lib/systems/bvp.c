@@ -53,6 +53,10 @@ struct whirl_bvp {
   double *buf;
   double *u, *du, *f, *fm, *uq, *J, *Jpar, *work, *pt, *pq, *fb, *fbm, *gi,
       *gim, *gu, *cp, *cm;
+  /* the integral conditions' reference (AUTO's UOLD): node values, and at
+   * the current Gauss point uold, upold and u' (ud, udq perturbed) */
+  double *ref;
+  double *uo, *upo, *ud, *udq, *gd;
   char errmsg[WHIRL_ERRMSG_SIZE];
 };
 
@@ -85,6 +89,25 @@ static void gauss_state(whirl_bvp *b, const double *X, size_t i, size_t g) {
     for (size_t r = 0; r < n; ++r) {
       b->u[r] += a * node[r];
       b->du[r] += d * node[r];
+    }
+  }
+}
+
+/* For the integral conditions at Gauss point g of interval i (after
+ * gauss_state): u' = (du/dσ)/h into ud, and the reference and its
+ * derivative into uo, upo. */
+static void gauss_reference(whirl_bvp *b, size_t i, size_t g) {
+  const size_t n = b->n, m = b->ncol;
+  const double h = b->mesh[i + 1] - b->mesh[i];
+  for (size_t r = 0; r < n; ++r) b->ud[r] = b->du[r] / h;
+  const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
+  memset(b->uo, 0, n * sizeof *b->uo);
+  memset(b->upo, 0, n * sizeof *b->upo);
+  for (size_t k = 0; k <= m; ++k) {
+    const double *node = b->ref + n * (i * m + k);
+    for (size_t r = 0; r < n; ++r) {
+      b->uo[r] += lv[k] * node[r];
+      b->upo[r] += dv[k] / h * node[r];
     }
   }
 }
@@ -146,9 +169,39 @@ static int cond_rows(whirl_bvp *b, const double *X, const double *pt,
     const double h = b->mesh[i + 1] - b->mesh[i];
     for (size_t g = 0; g < m; ++g) {
       gauss_state(b, X, i, g);
-      if ((rc = b->ic(b->u, pt, b->gi, b->data)) != 0)
+      gauss_reference(b, i, g);
+      if ((rc = b->ic(b->u, b->uo, b->ud, b->upo, pt, b->gi, b->data)) != 0)
         return user_status(b, rc, "integral conditions");
       for (size_t s = 0; s < b->nint; ++s) I[s] += h * b->gw[g] * b->gi[s];
+    }
+  }
+  return 0;
+}
+
+/* ∂g/∂u into gu[s + nint q] and ∂g/∂u' into gd, by central differences at
+ * the current Gauss point (after gauss_state and gauss_reference). */
+static int ic_partials(whirl_bvp *b) {
+  const size_t n = b->n, nint = b->nint;
+  double *gpart[2] = {b->gu, b->gd};
+  for (int w = 0; w < 2; ++w) {
+    const double *v0 = w ? b->ud : b->u;
+    memcpy(b->uq, b->u, n * sizeof *b->uq);
+    memcpy(b->udq, b->ud, n * sizeof *b->udq);
+    double *vq = w ? b->udq : b->uq;
+    for (size_t q = 0; q < n; ++q) {
+      const double hq = fd_step(v0[q]);
+      int rc;
+      vq[q] = v0[q] + hq;
+      const double up = vq[q];
+      if ((rc = b->ic(b->uq, b->uo, b->udq, b->upo, b->pt, b->gi, b->data)) != 0)
+        return user_status(b, rc, "integral conditions");
+      vq[q] = v0[q] - hq;
+      const double dn = vq[q];
+      if ((rc = b->ic(b->uq, b->uo, b->udq, b->upo, b->pt, b->gim, b->data)) != 0)
+        return user_status(b, rc, "integral conditions");
+      vq[q] = v0[q];
+      for (size_t s = 0; s < nint; ++s)
+        gpart[w][s + nint * q] = (b->gi[s] - b->gim[s]) / (up - dn);
     }
   }
   return 0;
@@ -218,27 +271,16 @@ static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
         for (size_t r = 0; r < n; ++r) v[r] *= -h;
       }
       if (!nint) continue;
-      /* ∂g/∂u at this point, gu[s + nint*q] */
-      memcpy(b->uq, b->u, n * sizeof *b->uq);
-      for (size_t q = 0; q < n; ++q) {
-        const double hq = fd_step(b->u[q]);
-        b->uq[q] = b->u[q] + hq;
-        const double up = b->uq[q];
-        if ((rc = b->ic(b->uq, b->pt, b->gi, b->data)) != 0)
-          return user_status(b, rc, "integral conditions");
-        b->uq[q] = b->u[q] - hq;
-        const double dn = b->uq[q];
-        if ((rc = b->ic(b->uq, b->pt, b->gim, b->data)) != 0)
-          return user_status(b, rc, "integral conditions");
-        b->uq[q] = b->u[q];
-        for (size_t s = 0; s < nint; ++s)
-          b->gu[s + nint * q] = (b->gi[s] - b->gim[s]) / (up - dn);
-      }
+      gauss_reference(b, i, g);
+      if ((rc = ic_partials(b)) != 0) return rc;
+      /* u = sum l_k x_k, u' = sum l_k' x_k / h: node k's entry is
+       * h w_g (l_k ∂g/∂u + l_k'/h ∂g/∂u') */
       for (size_t k = 0; k <= m; ++k) {
-        const double wk = h * b->gw[g] * lv[k];
+        const double wk = h * b->gw[g] * lv[k], wd = b->gw[g] * dv[k];
         for (size_t q = 0; q < n; ++q) {
           double *v = ic_entries(b, Jx, n * (i * m + k) + q);
-          for (size_t s = 0; s < nint; ++s) v[s] += wk * b->gu[s + nint * q];
+          for (size_t s = 0; s < nint; ++s)
+            v[s] += wk * b->gu[s + nint * q] + wd * b->gd[s + nint * q];
         }
       }
     }
@@ -447,10 +489,12 @@ static int alloc_arrays(whirl_bvp *b) {
   b->Ji = malloc(b->nnz * sizeof *b->Ji);
   b->Jx = malloc(b->nnz * sizeof *b->Jx);
   const size_t sizes[] = {n, n, n, n, n, n * n, n * np, 2 * n, np, np,
-                          b->nbc, b->nbc, b->nint, b->nint, b->nint * n, nc, nc};
+                          b->nbc, b->nbc, b->nint, b->nint, b->nint * n, nc, nc,
+                          n * b->nnodes, n, n, n, n, b->nint * n};
   double **ptrs[] = {&b->u, &b->du, &b->f, &b->fm, &b->uq, &b->J, &b->Jpar,
                      &b->work, &b->pt, &b->pq, &b->fb, &b->fbm, &b->gi,
-                     &b->gim, &b->gu, &b->cp, &b->cm};
+                     &b->gim, &b->gu, &b->cp, &b->cm,
+                     &b->ref, &b->uo, &b->upo, &b->ud, &b->udq, &b->gd};
   const size_t nptr = sizeof sizes / sizeof sizes[0];
   size_t tot = 0;
   for (size_t k = 0; k < nptr; ++k) tot += sizes[k] + 1;
@@ -462,6 +506,11 @@ static int alloc_arrays(whirl_bvp *b) {
     q += sizes[k] + 1;
   }
   return 0;
+}
+
+static int bvp_accept(const double *X, const double *p, void *data) {
+  (void)p;
+  return whirl_bvp_set_reference(data, X);
 }
 
 whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
@@ -529,6 +578,7 @@ whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
   s->Jp = b->Jp;
   s->Ji = b->Ji;
   s->Fx_sparse = bvp_Fx_sparse;
+  s->accept = b->nint ? bvp_accept : NULL; /* the reference of ICND */
   s->x_names = NULL; /* node-major unknowns have no model names */
   s->p_names = prob->p_names;
   s->data = b;
@@ -575,7 +625,7 @@ int whirl_bvp_from_function(whirl_bvp *b,
                                "%d at t = %g", rc, t);
   }
   for (size_t j = 0; j < b->nfree; ++j) X[b->n * b->nnodes + j] = p[b->free[j]];
-  return WHIRL_OK;
+  return whirl_bvp_set_reference(b, X); /* AUTO: UOLD is the start at first */
 }
 
 int whirl_bvp_eval(const whirl_bvp *b, const double *X, double t, double *u) {
@@ -609,6 +659,37 @@ int whirl_bvp_max(const whirl_bvp *b, const double *X, double *mx) {
   for (size_t r = 0; r < b->n; ++r) mx[r] = X[r];
   for (size_t j = 1; j < b->nnodes; ++j)
     for (size_t r = 0; r < b->n; ++r) mx[r] = fmax(mx[r], X[b->n * j + r]);
+  return WHIRL_OK;
+}
+
+int whirl_bvp_set_reference(whirl_bvp *b, const double *X) {
+  if (!b || !X) return WHIRL_EINVAL;
+  memcpy(b->ref, X, b->n * b->nnodes * sizeof *b->ref);
+  return WHIRL_OK;
+}
+
+int whirl_bvp_moments(const whirl_bvp *b, const double *X, double *m1, double *m2,
+                      double *mn, double *mx) {
+  if (!b || !X || !m1 || !m2 || !mn || !mx) return WHIRL_EINVAL;
+  const size_t n = b->n;
+  double gx[5], gw[5], u[64], *v = n <= 64 ? u : malloc(n * sizeof *v);
+  if (!v) return WHIRL_ENOMEM;
+  colloc_basis_gauss_legendre(5, gx, gw); /* on [0, 1] */
+  for (size_t r = 0; r < n; ++r) m1[r] = m2[r] = 0.0;
+  for (size_t i = 0; i < b->ntst; ++i) {
+    const double a = b->mesh[i], h = b->mesh[i + 1] - a;
+    for (int g = 0; g < 5; ++g) {
+      colloc_basis_eval_poly(n, b->ntst, b->ncol, b->mesh, X, a + h * gx[g], v);
+      for (size_t r = 0; r < n; ++r) m1[r] += h * gw[g] * v[r], m2[r] += h * gw[g] * v[r] * v[r];
+    }
+  }
+  for (size_t r = 0; r < n; ++r) mn[r] = mx[r] = X[r];
+  for (size_t j = 1; j < b->nnodes; ++j)
+    for (size_t r = 0; r < n; ++r) {
+      mn[r] = fmin(mn[r], X[n * j + r]);
+      mx[r] = fmax(mx[r], X[n * j + r]);
+    }
+  if (v != u) free(v);
   return WHIRL_OK;
 }
 

@@ -71,9 +71,15 @@ extern "C" {
  * n values; p the full parameter vector p~ (npar). */
 typedef int (*whirl_bvp_bc_fn)(const double *u0, const double *u1,
                                const double *p, double *fb, void *data);
-/* Integrands fi[nint] = g(u, p) of the integral conditions at u = u(t). */
-typedef int (*whirl_bvp_ic_fn)(const double *u, const double *p, double *fi,
-                               void *data);
+/* Integrands fi[nint] = g(u, uold, udot, upold, p) of the integral
+ * conditions at a point t: u = u(t), udot = u'(t), and uold, upold the
+ * reference solution and its derivative there (AUTO's ICND arguments: the
+ * reference is the branch's previous point, for phase conditions: the
+ * start (whirl_bvp_from_function, whirl_bvp_set_reference), then every
+ * point the core accepts; zero before any).  Each n values. */
+typedef int (*whirl_bvp_ic_fn)(const double *u, const double *uold,
+                               const double *udot, const double *upold,
+                               const double *p, double *fi, void *data);
 
 typedef struct whirl_bvp_options {
   size_t ntst;        /* NTST, mesh intervals, 1..WHIRL_COLLOC_MAX_NTST
@@ -137,6 +143,18 @@ WHIRL_API double whirl_bvp_l2norm(const whirl_bvp *b, const double *X);
 
 /* mx[n]: the maximum over the nodes of each component (AUTO's MAX U(i)). */
 WHIRL_API int whirl_bvp_max(const whirl_bvp *b, const double *X, double *mx);
+
+/* AUTO's measures of each component: m1[i] = ∫₀¹ u_i, m2[i] = ∫₀¹ u_i²
+ * (5-point Gauss–Legendre on each mesh interval: exact for NCOL <= 4),
+ * mn[i] and mx[i] the minimum and maximum over the nodes.  WHIRL_OK or
+ * WHIRL_EINVAL. */
+WHIRL_API int whirl_bvp_moments(const whirl_bvp *b, const double *X, double *m1,
+                                double *m2, double *mn, double *mx);
+
+/* The reference solution of the integral conditions (uold, upold): the
+ * node values of X (copied).  The system's accept hook sets it to every
+ * point the core accepts, as AUTO's UOLD. */
+WHIRL_API int whirl_bvp_set_reference(whirl_bvp *b, const double *X);
 
 /* Current mesh tau[NTST + 1]. */
 WHIRL_API const double *whirl_bvp_mesh(const whirl_bvp *b);

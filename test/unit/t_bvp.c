@@ -319,9 +319,24 @@ static int ex_bc(const double *u0, const double *u1, const double *p,
   fb[0] = u0[0] - 1.0;
   return 0;
 }
-static int ex_ic(const double *u, const double *p, double *fi, void *data) {
-  (void)data;
+static int ex_ic(const double *u, const double *uo, const double *ud,
+                 const double *upo, const double *p, double *fi, void *data) {
+  (void)data, (void)uo, (void)ud, (void)upo;
   fi[0] = u[0] - p[1];
+  return 0;
+}
+/* ∫ (u' − c) dt = u(1) − u(0) − c: with u' = a u, u(0) = 1, e^a = 1 + c */
+static int ex_ic_dot(const double *u, const double *uo, const double *ud,
+                     const double *upo, const double *p, double *fi, void *data) {
+  (void)data, (void)u, (void)uo, (void)upo;
+  fi[0] = ud[0] - p[1];
+  return 0;
+}
+/* every argument of AUTO's ICND, nonlinearly, for the Jacobian check */
+static int ex_ic_all(const double *u, const double *uo, const double *ud,
+                     const double *upo, const double *p, double *fi, void *data) {
+  (void)data;
+  fi[0] = u[0] * ud[0] + (u[0] - uo[0]) * upo[0] * (1.0 + ud[0] * ud[0]) - p[1];
   return 0;
 }
 /* a start that is not a solution: u = 1 + t, a = 0.5, c = 2 */
@@ -400,6 +415,11 @@ static void test_integral(void) {
     is_abs(mx, exp(a), 1e-10, "MAX U = u(1) = e^a");
     is_abs(whirl_bvp_l2norm(b, pt->x), sqrt(expm1(2.0 * a) / (2.0 * a)), 1e-10,
            "L2-NORM = sqrt((e^{2a} - 1)/(2a))");
+    double m1 = NAN, m2 = NAN, mn = NAN, mxm = NAN;
+    whirl_bvp_moments(b, pt->x, &m1, &m2, &mn, &mxm);
+    is_abs(m1, 2.0, 1e-10, "moments: ∫ u = c = 2 (the integral condition)");
+    is_abs(m2, expm1(2.0 * a) / (2.0 * a), 1e-10, "moments: ∫ u² = (e^{2a} - 1)/(2a)");
+    ok(mn == 1.0 && mxm == mx, "moments: min u = u(0) = 1, max = MAX U");
     double ue = NAN;
     whirl_bvp_eval(b, pt->x, 0.77, &ue);
     is_abs(ue, exp(0.77 * a), 1e-8, "u(0.77) = e^{0.77 a}");
@@ -459,6 +479,78 @@ static void check_jac(const char *name, const whirl_bvp *b, const double *X,
      diff, outside);
   free(J);
   free(Jx);
+}
+
+/* AUTO's ICND arguments: u' (UDOT) and the reference and its derivative
+ * (UOLD, UPOLD).  ∫ (u' − c) = u(1) − u(0) − c with u' = a u, u(0) = 1:
+ * a = ln(1 + c) (closed form); an integrand using all four, with a
+ * reference set, has its Jacobian checked against differences of F; and
+ * the accept hook takes the core's accepted point as the reference. */
+static void test_icnd_arguments(void) {
+  char err[256];
+  const size_t fr[1] = {0};
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = 10;
+  o.ncol = 4;
+  o.nbc = 1;
+  o.nint = 1;
+  o.bc = ex_bc;
+  o.ic = ex_ic_dot;
+  o.nfree = 1;
+  o.free = fr;
+  whirl_bvp *b = whirl_bvp_alloc(&expo, &o, err, sizeof err);
+  ok(b != NULL, "∫ (u' - c) = 0: alloc: %s", err);
+  if (!b) return;
+  const whirl_system *s = whirl_bvp_system(b);
+  const size_t nx = whirl_bvp_size(b);
+  double *X = malloc(nx * sizeof *X), p[2] = {9.0, 9.0};
+  whirl_bvp_from_function(b, ex_start, NULL, X, p);
+  p[1] = 1.5;
+  whirl_cont_options co;
+  whirl_cont_options_default(&co);
+  co.icp = 1;
+  whirl_cont *ct = whirl_cont_alloc(s, &co, err, sizeof err);
+  int rc = ct ? whirl_cont_start(ct, X, p, +1) : -1;
+  if (rc == WHIRL_OK) rc = whirl_cont_step(ct);
+  ok(rc == WHIRL_OK, "∫ (u' - c) = 0 at c = 1.5: Newton converges (%s)",
+     ct ? whirl_cont_errmsg(ct) : err);
+  if (rc == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(ct);
+    is_abs(pt->x[nx - 1], log(2.5), 1e-10, "UDOT: the free a = ln(1 + c) = ln 2.5");
+    ok(s->accept != NULL, "an accept hook keeps the reference (UOLD)");
+  }
+  whirl_cont_free(ct);
+  whirl_bvp_free(b);
+
+  o.ic = ex_ic_all;
+  b = whirl_bvp_alloc(&expo, &o, err, sizeof err);
+  ok(b != NULL, "an integrand of u, UOLD, UDOT, UPOLD: alloc: %s", err);
+  if (!b) return;
+  s = whirl_bvp_system(b);
+  double *R = malloc(nx * sizeof *R);
+  for (size_t j = 0; j < 41; ++j) {
+    const double t = (double)j / 40.0;
+    X[j] = 1.0 + t + 0.3 * sin(5.0 * t);
+    R[j] = cos(2.0 * t);
+  }
+  X[nx - 1] = 0.7;
+  p[0] = 0.7, p[1] = 0.4;
+  double e0 = NAN, e1 = NAN, f0 = NAN, f1 = NAN, *F = malloc(nx * sizeof *F);
+  int r0 = whirl_system_check_jacobian(s, X, p, &e0);
+  s->F(X, p, F, s->data);
+  f0 = F[nx - 1];
+  whirl_bvp_set_reference(b, R);
+  int r1 = whirl_system_check_jacobian(s, X, p, &e1);
+  s->F(X, p, F, s->data);
+  f1 = F[nx - 1];
+  printf("# ICND of u, UOLD, UDOT, UPOLD: Jacobian error %.2e (the start as reference), %.2e (another)\n",
+         e0, e1);
+  ok(r0 == 0 && r1 == 0 && e0 < 1e-6 && e1 < 1e-6,
+     "ICND of u, UOLD, UDOT, UPOLD: Jacobian vs differences %.1e, %.1e < 1e-6", e0, e1);
+  ok(f0 != f1, "the reference enters the integral row (%.6g before, %.6g after)", f0, f1);
+  free(R), free(F), free(X);
+  whirl_bvp_free(b);
 }
 
 static void test_jacobians(void) {
@@ -660,6 +752,7 @@ int main(void) {
   test_bratu_newton();
   test_jacobians();
   test_integral();
+  test_icnd_arguments();
   test_nonautonomous();
   test_bad_options();
   return done_testing();
