@@ -136,6 +136,55 @@ static int default_runs(auto_job *J) {
   return 0;
 }
 
+/* The names (unames, parnames) a constants file without them takes from
+ * the nearest earlier one of the demo that has them, as the demos' later
+ * c-files assume (c.exp.2 names ICP = ['lambda'] of c.exp.1's parnames;
+ * AUTO's scripts carry them from run to run): run i's constants again with
+ * those dictionaries before its own text.  0, 1 (memory) or 2 (said). */
+static int inherit_names(auto_job *J, size_t i, const char *path) {
+  static const char *const keys[] = {"unames", "parnames"};
+  char *text = NULL;
+  size_t len = 0;
+  FILE *m = open_memstream(&text, &len);
+  int added = 0;
+  for (size_t k = 0; m && k < 2; k++) {
+    if (whirl_auto_constants_count(J->run[i].ac, keys[k])) continue;
+    for (size_t j = i; j-- > 0;) {
+      const whirl_auto_constants *e = J->run[j].ac;
+      const size_t n = whirl_auto_constants_count(e, keys[k]);
+      if (!n) continue;
+      fprintf(m, "%s = {", keys[k]);
+      for (size_t q = 0; q < n; q++) {
+        whirl_auto_item it;
+        whirl_auto_constants_item(e, keys[k], q, &it);
+        fprintf(m, "%s%d: '%s'", q ? ", " : "", it.index, it.text);
+      }
+      fputs("}\n", m);
+      added = 1;
+      break;
+    }
+  }
+  FILE *f = added ? fopen(path, "r") : NULL;
+  for (int ch; f && m && (ch = fgetc(f)) != EOF;) fputc(ch, m);
+  if (f) fclose(f);
+  if (!m || fclose(m)) {
+    free(text);
+    return 1;
+  }
+  if (!added) {
+    free(text);
+    return 0;
+  }
+  whirl_auto_constants_free(J->run[i].ac);
+  int rc = (J->run[i].ac = whirl_auto_constants_alloc()) ? 0 : 1;
+  if (!rc && whirl_auto_constants_parse(J->run[i].ac, path, text, len) != WHIRL_OK) {
+    cli_error("auto", "%s", whirl_auto_constants_errmsg(J->run[i].ac));
+    rc = 2;
+  }
+  free(text);
+  return rc;
+}
+
 /* Read every constants file.  0 or 2 (the message printed). */
 static int read_constants(auto_job *J) {
   for (size_t i = 0; i < J->nrun; i++) {
@@ -148,6 +197,8 @@ static int read_constants(auto_job *J) {
       cli_error("auto", "%s", whirl_auto_constants_errmsg(r->ac));
       return 2;
     }
+    int irc = inherit_names(J, i, path);
+    if (irc) return irc;
     int n = 0;
     whirl_auto_constants_int(r->ac, "NPAR", &n);
     if (n > 0 && (size_t)n > J->npar) J->npar = (size_t)n;

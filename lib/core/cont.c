@@ -160,11 +160,15 @@ void cont_state_copy(const whirl_cont *c, cont_state *dst,
 
 /* ------------------------------------------------------------ alloc */
 
-/* The norm stays a norm with every x weight 0, since p_weight > 0. */
-static int weights_valid(const double *w, size_t n) {
-  for (size_t i = 0; i < n; ++i)
+/* Finite weights >= 0, and one of them > 0 when the parameter's is 0
+ * (AUTO's THL = {ICP(1): 0}): the arclength stays a norm on the tangents. */
+static int weights_valid(const double *w, size_t n, double p_weight) {
+  int some = p_weight > 0 || !w;
+  for (size_t i = 0; w && i < n; ++i) {
     if (!(w[i] >= 0) || !isfinite(w[i])) return 0;
-  return 1;
+    some |= w[i] > 0;
+  }
+  return some;
 }
 
 whirl_cont *whirl_cont_alloc(const whirl_system *sys,
@@ -180,9 +184,10 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   else if (!(opt->p_min < opt->p_max)) why = "need RL0 (p_min) < RL1 (p_max)";
   else if (!(opt->newton_tol > 0) || opt->newton_maxit < 1)
     why = "need newton_tol > 0 and newton_maxit >= 1";
-  else if (!(opt->p_weight > 0)) why = "need p_weight > 0";
-  else if (opt->x_weight && !weights_valid(opt->x_weight, sys->n))
-    why = "x_weight: need finite weights >= 0";
+  else if (!(opt->p_weight >= 0) || !isfinite(opt->p_weight))
+    why = "need a finite p_weight >= 0";
+  else if (!weights_valid(opt->x_weight, sys->n, opt->p_weight))
+    why = "x_weight: need finite weights >= 0, one > 0 when p_weight is 0";
   else if (opt->newton_chord && !(opt->chord_theta > 0 && opt->chord_theta < 1))
     why = "chord Newton needs 0 < chord_theta < 1";
   else if (opt->linsol == WHIRL_LINSOL_SPARSE &&
@@ -332,8 +337,16 @@ static int eval_jac(whirl_cont *c, const double *x, const double *p) {
  * weighted direction dir: by the system's structured solver, or by the
  * general (dense or sparse) LU of the assembled matrix.  Returns 0, 2 for a
  * recoverable model failure, 3 for a singular matrix, < 0 fatal. */
+/* The arclength row W dir; dir itself where that vanishes: the start's
+ * Newton at fixed parameter (dir = e_N) when the parameter's weight is 0
+ * (THL = {ICP(1): 0}) is the constraint p = p0, not a length. */
 static void border_row(const whirl_cont *c, const double *dir, double *row) {
-  for (size_t i = 0; i < c->N; ++i) row[i] = c->w2[i] * dir[i];
+  int zero = 1;
+  for (size_t i = 0; i < c->N; ++i) {
+    row[i] = c->w2[i] * dir[i];
+    zero &= row[i] == 0.0;
+  }
+  if (zero) memcpy(row, dir, c->N * sizeof *row);
 }
 
 static int jac_factor(whirl_cont *c, const double *x, const double *p,
@@ -762,6 +775,9 @@ int whirl_cont_start_direction(whirl_cont *c, const double *x0,
                       "start_direction: zero or non-finite direction");
   for (size_t i = 0; i < N; ++i) c->dir[i] = t0[i];
   const double nw = cont_norm(c, c->dir);
+  if (!(nw > 0) || !isfinite(nw))
+    return WHIRL_FAIL(c, WHIRL_EINVAL, "start_direction: the direction has no "
+                      "length in the arclength's weights");
   for (size_t i = 0; i < N; ++i) c->dir[i] /= nw;
   if ((rc = notify_accept(c, &c->cur)) != 0) return rc; /* as in start */
   rc = cont_analyse(c, &c->cur, c->dir);
@@ -956,7 +972,9 @@ static int predict_correct(whirl_cont *c, double *cosang, int *its) {
     if (!o->tangent_predictor && c->have_prev) {
       for (size_t i = 0; i < N; ++i) c->dir[i] = c->cur.X[i] - c->Xprev[i];
       double nd = cont_norm(c, c->dir);
-      for (size_t i = 0; i < N; ++i) c->dir[i] /= nd;
+      if (!(nd > 0) || !isfinite(nd)) memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
+      else
+        for (size_t i = 0; i < N; ++i) c->dir[i] /= nd;
     } else {
       memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
     }

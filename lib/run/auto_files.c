@@ -78,7 +78,9 @@ typedef struct table {
 
 typedef struct run {
   const whirl_auto_output *o;
-  int ips, isw, orbit;
+  int ips, isw, orbit; /* orbit: IPS 2, a period */
+  int mesh;             /* IPS 2 or 4: solutions on a mesh (MAX U(i), AUTO's
+                           type codes of orbits and boundary-value problems) */
   int icp[16]; /* 1-based; 11 of orbits: the period */
   size_t nicp;
   table t;
@@ -106,7 +108,7 @@ static void measure_name(run *R) {
   char x[40];
   if (R->o->x_names) snprintf(x, sizeof x, "%.39s", R->o->x_names[i]);
   else snprintf(x, sizeof x, "U(%ld)", i + 1);
-  const char *pre = ip > 2 * n ? "L2-NORM " : ip > n ? "INTEGRAL " : !R->orbit ? "" : ip > 0 ? "MAX " : "MIN ";
+  const char *pre = ip > 2 * n ? "L2-NORM " : ip > n ? "INTEGRAL " : !R->mesh ? "" : ip > 0 ? "MAX " : "MIN ";
   snprintf(R->mname, sizeof R->mname, "%s%s", pre, x);
 }
 
@@ -116,6 +118,7 @@ static void read_icp(run *R) {
   whirl_auto_constants_int(ac, "IPS", &R->ips);
   whirl_auto_constants_int(ac, "ISW", &R->isw);
   R->orbit = R->ips == 2;
+  R->mesh = R->ips == 2 || R->ips == 4;
   for (size_t i = 0; i < whirl_auto_constants_count(ac, "ICP") && R->nicp < 16; i++) {
     whirl_auto_item it;
     whirl_auto_constants_item(ac, "ICP", i, &it);
@@ -255,7 +258,7 @@ static void columns(const run *R, cols *c) {
     char x[64];
     if (R->o->x_names) snprintf(x, sizeof x, "%s", R->o->x_names[i]);
     else snprintf(x, sizeof x, "U(%d)", i + 1);
-    snprintf(nm, sizeof nm, "%s%s", R->orbit ? "MAX " : "", x);
+    snprintf(nm, sizeof nm, "%s%s", R->mesh ? "MAX " : "", x);
     add_col(c, l2 + 1 + (size_t)i, nm);
   }
   for (size_t j = 1; j < R->nicp; j++) {
@@ -332,7 +335,7 @@ static void b_row(FILE *f, const run *R, const cols *c, const row *r) {
   char b[40];
   const int br = R->orbit ? -branch_of(R, r) : branch_of(R, r),
             pt = r->stab == 1 ? -(r->pt + 1) : r->pt + 1;
-  fprintf(f, "%4d%6d%4d%5d", br, pt, type_code(r->ty, r->lab, R->orbit), r->alab);
+  fprintf(f, "%4d%6d%4d%5d", br, pt, type_code(r->ty, r->lab, R->mesh), r->alab);
   for (size_t j = 0; j < c->n; j++) fputs(es(r->v[c->at[j]], 19, 10, b, sizeof b), f);
   fputc('\n', f);
 }
@@ -371,13 +374,15 @@ static size_t lines_of(size_t n, size_t per) { return n ? (n + per - 1) / per : 
 /* One labelled solution S of table row R as an s-file block. */
 static int write_s_block(FILE *f, const run *R, const whirl_solution *S, const row *r) {
   const size_t n = (size_t)R->o->ndim, nparw = R->o->npar > 11 ? R->o->npar : 11;
-  const int orbit = S->kind == WHIRL_SOL_COLLOC;
-  const size_t ntpl = orbit ? (size_t)S->ntst * (size_t)S->ncol + 1 : 1;
-  int fp[3];
+  const int orbit = S->kind == WHIRL_SOL_COLLOC, bvp = S->kind == WHIRL_SOL_BVP;
+  const int mesh = orbit || bvp;
+  const size_t ntpl = mesh ? (size_t)S->ntst * (size_t)S->ncol + 1 : 1;
+  int fp[3 + WHIRL_SOL_MAXFREE];
   size_t nfpr = 0;
   fp[nfpr++] = S->icp + 1;
   if (S->icp2 >= 0) fp[nfpr++] = S->icp2 + 1;
   if (orbit) fp[nfpr++] = 11;
+  for (int j = 0; bvp && j < S->nfree && j < WHIRL_SOL_MAXFREE; j++) fp[nfpr++] = S->free_par[j] + 1;
   double *par = calloc(nparw, sizeof *par), *v = malloc((n + 1) * sizeof *v);
   if (!par || !v) {
     free(par), free(v);
@@ -388,13 +393,13 @@ static int write_s_block(FILE *f, const run *R, const whirl_solution *S, const r
   const size_t nrow = ntpl * lines_of(n + 1, 7) + lines_of(nfpr, 20) + lines_of(nfpr, 7) +
                       ntpl * lines_of(n, 7) + lines_of(nparw, 7);
   fprintf(f, "%6d%6d%6d%6d%6zu%6d%8zu%6zu%8zu%5d%5d%5zu%5d%5zu%5d%5d\n", branch_of(R, r),
-          r->pt + 1, type_code(r->ty, r->lab, orbit), r->alab, nfpr, R->isw, ntpl,
+          r->pt + 1, type_code(r->ty, r->lab, mesh), r->alab, nfpr, R->isw, ntpl,
           n + 1, nrow,
-          orbit ? S->ntst : 1, orbit ? S->ncol : 0, nparw, 0, n, R->ips, 0);
+          mesh ? S->ntst : 1, mesh ? S->ncol : 0, nparw, 0, n, R->ips, 0);
   for (size_t j = 0; j < ntpl; j++) { /* t and the state at node j */
-    const size_t iv = orbit ? j / (size_t)S->ncol : 0, k = orbit ? j % (size_t)S->ncol : 0;
+    const size_t iv = mesh ? j / (size_t)S->ncol : 0, k = mesh ? j % (size_t)S->ncol : 0;
     v[0] = 0;
-    if (orbit)
+    if (mesh)
       v[0] = iv < (size_t)S->ntst
                  ? S->mesh[iv] + (S->mesh[iv + 1] - S->mesh[iv]) * (double)k / S->ncol
                  : S->mesh[S->ntst];
@@ -403,10 +408,12 @@ static int write_s_block(FILE *f, const run *R, const whirl_solution *S, const r
   }
   for (size_t j = 0; j < nfpr; j++) fprintf(f, "%5d", fp[j]);
   fputc('\n', f);
-  double rl[3] = {0, 0, 0}; /* the tangent's parameter part, in fp's order */
+  double rl[3 + WHIRL_SOL_MAXFREE] = {0}; /* the tangent's parameter part, in fp's order */
   if (S->tan) {
     rl[0] = S->tan[S->nx];
     if (orbit) rl[nfpr - 1] = S->tan[S->nx - 1];
+    for (int j = 0; bvp && j < S->nfree && j < WHIRL_SOL_MAXFREE; j++)
+      rl[1 + j] = S->tan[S->nx - (size_t)S->nfree + (size_t)j];
   }
   put_reals(f, rl, nfpr);
   for (size_t j = 0; j < ntpl; j++) {
@@ -551,7 +558,7 @@ int whirl_auto_labels(const whirl_auto_output *o, whirl_auto_label *lab, size_t 
     if (!r->alab) continue;
     if (*n < max) {
       lab[*n].label = r->alab, lab[*n].whirl = r->lab, lab[*n].br = branch_of(&R, r);
-      lab[*n].type = type_code(r->ty, r->lab, R.orbit);
+      lab[*n].type = type_code(r->ty, r->lab, R.mesh);
       snprintf(lab[*n].ty, sizeof lab[*n].ty, "%s", r->ty);
     }
     ++*n;

@@ -100,6 +100,8 @@ static void base_of(const branch_spec *b, const double *Z, const double *p,
     whirl_hopf_params(b->hopf, Z, p, pfull);
   else if (b->kind == WHIRL_SOL_COLLOC)
     whirl_colloc_params(b->colloc, Z, p, pfull); /* a fixed period's parameter */
+  else if (b->kind == WHIRL_SOL_BVP)
+    whirl_bvp_params(b->bvp, Z, p, pfull); /* the free parameters */
   else
     memcpy(pfull, p, b->sys->npar * sizeof *pfull);
   /* the model's derived parameters (AUTO's PVLS) at an equilibrium */
@@ -122,7 +124,9 @@ static double uz_quantity(size_t k, const double *x, const double *p, void *ctx)
   base_of(b, x, p, u->pfull);
   if (w >= 0) return u->pfull[w];
   if (b->kind == WHIRL_SOL_EQ) return x[-2 - w];
-  const void *obj = b->kind == WHIRL_SOL_COLLOC ? (const void *)b->colloc : (const void *)b->hbm;
+  const void *obj = b->kind == WHIRL_SOL_COLLOC ? (const void *)b->colloc
+                    : b->kind == WHIRL_SOL_BVP  ? (const void *)b->bvp
+                                                : (const void *)b->hbm;
   if (w == -1) {
     const whirl_periodic po = run_periodic(b->kind, obj);
     return whirl_periodic_period(&po, x, u->pfull);
@@ -171,7 +175,8 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
     int k = run_par_index(R, &u->ref), xi;
     if (k >= 0) {
       uc->what[nuz] = k;
-    } else if (b->kind != WHIRL_SOL_EQ && (!strcasecmp(u->ref.name, "PERIOD") ||
+    } else if ((b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_HBM) &&
+               (!strcasecmp(u->ref.name, "PERIOD") ||
                                      u->ref.index == 11)) {
       uc->what[nuz] = -1;
     } else if ((xi = run_state_index(R, &u->ref)) >= 0 && !u->ref.index) {
@@ -235,8 +240,11 @@ static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *
                v->ref.index ? nm : v->ref.name, R->prob.name);
       return -2;
     } else if (k == b->icp) {
-      if (!(v->value > 0)) {
-        run_fail(R, WHIRL_RK_THL, "THL: the continuation parameter's weight must be > 0");
+      /* 0 as AUTO allows (um2: THL = {Period: 0} on ICP(1)): the step is
+       * measured on the unknowns alone, which the core then checks are
+       * weighted */
+      if (!(v->value >= 0)) {
+        run_fail(R, WHIRL_RK_THL, "THL: the continuation parameter's weight must be >= 0");
         return -2;
       }
       o->p_weight = sqrt(v->value);
@@ -324,6 +332,13 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
     so.ntst = (int)((b->nb - (R->prob.autonomous ? 1 : 0)) / R->n - 1) / s->ncol;
   }
   if (b->kind == WHIRL_SOL_HBM) so.nhb = s->nhb;
+  if (b->kind == WHIRL_SOL_BVP) {
+    so.ntst = s->ntst;
+    so.ncol = s->ncol;
+    so.mesh = (double *)whirl_bvp_mesh(b->bvp);
+    so.nfree = (int)(b->nb - R->n * (size_t)(s->ntst * s->ncol + 1));
+    for (int j = 0; j < so.nfree && j < WHIRL_SOL_MAXFREE; j++) so.free_par[j] = R->icp[j + 1];
+  }
   const int wrc = whirl_solution_write(R->sols, &so);
   free(tan);
   free(xT);
@@ -491,10 +506,11 @@ int run_branch(run_ctx *R, branch_spec *b) {
     double l2 = 0.0, period = 0.0;
     const void *obj = b->kind == WHIRL_SOL_COLLOC ? (const void *)b->colloc
                       : b->kind == WHIRL_SOL_HBM  ? (const void *)b->hbm
-                                            : NULL;
+                      : b->kind == WHIRL_SOL_BVP  ? (const void *)b->bvp
+                                                  : NULL;
     /* the first point past A0 or A1 ends the branch, an EP as in AUTO
      * (ae.f90 STPLAE: ITP = 9 where AMP leaves [A0, A1]) */
-    if (pt->index > 0 && (s->a0 > 0.0 || s->a1 < 1e30) &&
+    if (pt->index > 0 && (s->a0 != 0.0 || s->a1 < 1e30) &&
         run_point_measures(R, b->kind, obj, pt->x, pfull, &l2, &period, state) == 0 &&
         (l2 < s->a0 || l2 > s->a1)) {
       stop = 1;
@@ -596,6 +612,7 @@ static int start_samples(run_ctx *R, size_t m, double *xs, double *T) {
 /* Everything a run may allocate, freed in one place. */
 typedef struct run_objects {
   whirl_equilibrium *eq;
+  whirl_bvp *bvp;
   whirl_colloc *colloc, *colloc2;
   whirl_hbm *hbm;
   whirl_fold *fold;
@@ -607,6 +624,7 @@ typedef struct run_objects {
 
 static void objects_free(run_objects *O) {
   whirl_equilibrium_free(O->eq);
+  whirl_bvp_free(O->bvp);
   whirl_colloc_free(O->colloc);
   whirl_colloc_free(O->colloc2);
   whirl_hbm_free(O->hbm);
@@ -985,7 +1003,8 @@ static int switch_or_locus(run_ctx *R, run_objects *O, branch_spec *b) {
     int rc = locus(R, O, b, b->sys, b->x0, p0);
     if (rc) return rc;
     b->ds_scale = 1.0;
-    if (b->kind == WHIRL_SOL_COLLOC) b->ds_scale = sqrt((double)(s->ntst * s->ncol + 1));
+    if (b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP)
+      b->ds_scale = sqrt((double)(s->ntst * s->ncol + 1));
   }
   return 0;
 }
@@ -1007,6 +1026,8 @@ static int run_continuation(run_ctx *R, run_objects *O) {
   }
   const int fixed = s->ips == WHIRL_IPS_EQUILIBRIA || s->ips == WHIRL_IPS_MAP;
   int rc = fixed                                ? start_equilibria(R, O, &b)
+           : s->ips == WHIRL_IPS_BVP          ? run_bvp_start(R, O->have_sol ? &O->sol : NULL,
+                                                              &O->bvp, &O->X, &O->D, &b)
            : s->method == WHIRL_METHOD_COLLOC ? start_colloc(R, O, &b)
                                               : start_hbm(R, O, &b);
   if (!rc) rc = switch_or_locus(R, O, &b);

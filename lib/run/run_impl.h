@@ -11,6 +11,7 @@
 
 #include <whirl/basins.h>
 #include <whirl/branch.h>
+#include <whirl/bvp.h>
 #include <whirl/colloc.h>
 #include <whirl/cont.h>
 #include <whirl/equilibrium.h>
@@ -39,7 +40,7 @@ struct whirl_run {
   size_t n, npar;
   char **pnames, **xnames; /* resolved names (model's or PAR(k)/U(k)) */
   double *par, *u;         /* start parameters and state */
-  int icp[4];              /* resolved, 0-based; -1 for the period (PAR 11) */
+  int icp[WHIRL_RUN_MAXICP]; /* resolved, 0-based; -1 for the period (PAR 11) */
   size_t nicp;
   int period_free;         /* IPS 2: PERIOD (AUTO's 11) listed in ICP */
   char out[4096], rundir[4096];
@@ -150,6 +151,7 @@ typedef struct branch_spec {
   whirl_solution_kind kind;           /* base kind */
   whirl_colloc *colloc;    /* base objects (borrowed) */
   whirl_hbm *hbm;
+  whirl_bvp *bvp;
   whirl_fold *fold;        /* locus layers (borrowed), or NULL */
   whirl_hopf *hopf;
   const whirl_system *sys; /* the system continued */
@@ -167,6 +169,13 @@ typedef struct branch_spec {
   const whirl_model *model; /* its derived parameters (pvls), or NULL */
   int iterate;             /* maps: fixed points of f^iterate (1: of f) */
 } branch_spec;
+
+/* run_bvp.c: the boundary-value problem of the run (IPS = 4) from the
+ * model's start or the label so (NULL: none): *bvp, the start *X and a
+ * direction *D (malloc'd, the caller frees them), and b's system.  0, -1
+ * (failed, said), -2 (bad input, said). */
+int run_bvp_start(run_ctx *R, const whirl_solution *so, whirl_bvp **bvp, double **X,
+                  double **D, branch_spec *b);
 
 /* Continue branch b: its rows, labels, log and summary.  0, -1, -2. */
 int run_branch(run_ctx *R, branch_spec *b);

@@ -50,8 +50,14 @@ static void measure_name(const run_ctx *R, whirl_solution_kind kind, char *buf, 
   else snprintf(buf, len, "%s%s", pre[orbit][k], R->xnames[i]);
 }
 
+/* Does a solution of this kind have a period (a column of its own)? */
+static int has_period(whirl_solution_kind kind) {
+  return kind == WHIRL_SOL_COLLOC || kind == WHIRL_SOL_HBM;
+}
+
 int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q) {
   FILE *f = R->table;
+  const int per = has_period(kind);
   size_t col = 4;
   fprintf(f, "branch\tpt\ttype\tlabel");
   int ycol = 0;
@@ -62,7 +68,7 @@ int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q) {
     if ((int)k == q && R->plot_kind == RUN_PLOT_DEFAULT) ycol = (int)col;
     if (R->plot_kind == RUN_PLOT_PAR && (int)k == R->plot_index) ycol = (int)col;
   }
-  if (kind != WHIRL_SOL_EQ) {
+  if (per) {
     fprintf(f, "\tperiod");
     col++;
     if (R->plot_kind == RUN_PLOT_PERIOD) ycol = (int)col;
@@ -87,13 +93,13 @@ int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q) {
   snprintf(R->plot_x_name, sizeof R->plot_x_name, "%s", R->pnames[R->plot_x - 5]);
   if (ycol >= 5 && ycol < 5 + (int)R->npar)
     snprintf(R->plot_y_name, sizeof R->plot_y_name, "%s", R->pnames[ycol - 5]);
-  else if (kind != WHIRL_SOL_EQ && ycol == 5 + (int)R->npar)
+  else if (per && ycol == 5 + (int)R->npar)
     snprintf(R->plot_y_name, sizeof R->plot_y_name, "PERIOD");
-  else if (ycol == 5 + (int)R->npar + (kind != WHIRL_SOL_EQ))
+  else if (ycol == 5 + (int)R->npar + per)
     snprintf(R->plot_y_name, sizeof R->plot_y_name, "%.*s", (int)sizeof R->plot_y_name - 1, mname);
   else
     snprintf(R->plot_y_name, sizeof R->plot_y_name, "%s%s", kind == WHIRL_SOL_EQ ? "" : "MAX ",
-             R->xnames[ycol - 6 - (int)R->npar - (kind != WHIRL_SOL_EQ)]);
+             R->xnames[ycol - 6 - (int)R->npar - per]);
   return ferror(f) ? -1 : 0;
 }
 
@@ -113,6 +119,8 @@ static int orbit_moments(const run_ctx *R, whirl_solution_kind kind, const void 
   int rc = v ? WHIRL_OK : WHIRL_ENOMEM;
   if (!rc && kind == WHIRL_SOL_COLLOC)
     rc = whirl_colloc_moments(obj, xb, v, v + n, v + 2 * n, v + 3 * n);
+  else if (!rc && kind == WHIRL_SOL_BVP)
+    rc = whirl_bvp_moments(obj, xb, v, v + n, v + 2 * n, v + 3 * n);
   else if (!rc) {
     v[i] = v[n + i] = 0.0, v[2 * n + i] = HUGE_VAL;
     double *u = malloc(n * sizeof *u);
@@ -154,6 +162,12 @@ int run_point_measures(const run_ctx *R, whirl_solution_kind kind, const void *o
     for (size_t i = 0; i < R->n; i++) l2 += xb[i] * xb[i], mx[i] = xb[i];
     *l2out = sqrt(l2);
     *period_out = 0.0;
+    return iplt_measure(R, kind, obj, NULL, xb, mx, l2out);
+  }
+  if (kind == WHIRL_SOL_BVP) { /* AUTO's MAX over the nodes, no period */
+    *period_out = 0.0;
+    *l2out = whirl_bvp_l2norm(obj, xb);
+    if (whirl_bvp_max(obj, xb, mx) != WHIRL_OK || isnan(*l2out)) return -1;
     return iplt_measure(R, kind, obj, NULL, xb, mx, l2out);
   }
   const whirl_periodic po = run_periodic(kind, obj);
@@ -224,7 +238,7 @@ int run_table_row(run_ctx *R, whirl_solution_kind kind, const void *obj, int br,
     free(mx);
     return -1;
   }
-  const int periodic = kind != WHIRL_SOL_EQ;
+  const int periodic = has_period(kind);
   write_row(f, R, br, pt, ty, lab, p, periodic, period, l2, mx, stable);
   fputc('\n', f);
   int rc = 0;

@@ -551,8 +551,8 @@ static const char *check_real(whirl_run_key k, double x) {
     case WHIRL_RK_EPSS:
     case WHIRL_RK_BASIN_TOL: return x <= 0.0 ? "must be > 0" : NULL;
     case WHIRL_RK_DISCOVER_SETTLE: return x < 0.0 ? "must be >= 0 (0: no time integration)" : NULL;
-    case WHIRL_RK_A0: return x < 0.0 ? "must be >= 0 (a norm)" : NULL;
-    case WHIRL_RK_A1: return x <= 0.0 ? "must be > 0 (a norm)" : NULL;
+    case WHIRL_RK_A0: return NULL; /* any (under IPLT the measure may be negative) */
+    case WHIRL_RK_A1: return NULL; /* any above A0 (checked with it) */
     default: return NULL;
   }
 }
@@ -742,7 +742,7 @@ static int set_method(whirl_runfile *rf, const key_def *d, const char *where) {
   return WHIRL_OK;
 }
 
-/* ICP: a list of at most 4 parameters. */
+/* ICP: a list of at most WHIRL_RUN_MAXICP parameters. */
 static int set_reflist(whirl_runfile *rf, const key_def *d, const char *where) {
   whirl_run_settings *s = &rf->s;
   const pvalue *v = &rf->v;
@@ -752,7 +752,8 @@ static int set_reflist(whirl_runfile *rf, const key_def *d, const char *where) {
     return fail(rf, where, "%s: expected a list of parameters, got a "
                 "dictionary", kn);
   if (v->n == 0) return fail(rf, where, "%s: empty list", kn);
-  if (v->n > 4) return fail(rf, where, "%s: at most 4 parameters", kn);
+  if (v->n > WHIRL_RUN_MAXICP)
+    return fail(rf, where, "%s: at most %d parameters", kn, WHIRL_RUN_MAXICP);
   for (size_t i = 0; i < v->n; i++)
     if (to_ref(&v->it[i], &s->icp[i], &msg))
       return fail(rf, where, "%s: '%s' %s", kn,

@@ -16,7 +16,7 @@ typedef struct whirl_run_settings {
   int ndim;                     /* 0: not given */
   int ips;                      /* WHIRL_IPS_* (default 1) */
   int method;                   /* WHIRL_METHOD_* (default colloc) */
-  whirl_run_ref icp[4];
+  whirl_run_ref icp[WHIRL_RUN_MAXICP];
   size_t nicp;
   whirl_run_value par[WHIRL_RUN_MAXITEMS];
   size_t npar;

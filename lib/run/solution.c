@@ -13,7 +13,7 @@
 
 #include <whirl/solution.h>
 
-static const char *kind_name[] = {"eq", "colloc", "hbm"};
+static const char *kind_name[] = {"eq", "colloc", "hbm", "bvp"};
 
 void whirl_solution_free(whirl_solution *s) {
   if (!s) return;
@@ -35,6 +35,10 @@ int whirl_solution_write(FILE *f, const whirl_solution *s) {
           s->label, s->ty, s->br, s->pt, kind_name[s->kind], s->icp + 1,
           s->icp2 + 1, s->nx, s->stable);
   if (s->kind == WHIRL_SOL_COLLOC) fprintf(f, " NTST %d NCOL %d", s->ntst, s->ncol);
+  if (s->kind == WHIRL_SOL_BVP) {
+    fprintf(f, " NTST %d NCOL %d NFREE %d", s->ntst, s->ncol, s->nfree);
+    for (int j = 0; j < s->nfree && j < WHIRL_SOL_MAXFREE; j++) fprintf(f, " FREE %d", s->free_par[j] + 1);
+  }
   if (s->kind == WHIRL_SOL_HBM) fprintf(f, " NHB %d", s->nhb);
   if (s->kind == WHIRL_SOL_EQ && s->iterate > 1) fprintf(f, " ITER %d", s->iterate);
   if (s->icp2 >= 0 && s->locus[0]) fprintf(f, " LOCUS %s", s->locus);
@@ -42,7 +46,8 @@ int whirl_solution_write(FILE *f, const whirl_solution *s) {
   put_vec(f, "PAR", s->par, s->npar);
   put_vec(f, "X", s->x, s->nx);
   if (s->tan) put_vec(f, "TAN", s->tan, s->nx + 1);
-  if (s->kind == WHIRL_SOL_COLLOC && s->mesh) put_vec(f, "MESH", s->mesh, (size_t)s->ntst + 1);
+  if ((s->kind == WHIRL_SOL_COLLOC || s->kind == WHIRL_SOL_BVP) && s->mesh)
+    put_vec(f, "MESH", s->mesh, (size_t)s->ntst + 1);
   fputs("END\n", f);
   return ferror(f) ? -1 : 0;
 }
@@ -139,6 +144,16 @@ static int lab_word(reader *r, char **p, const char *key, char *w, size_t cap) {
  * autonomous model, with M = NTST x NCOL + 1 nodes (colloc) or 2 NHB + 1
  * coefficients (hbm): the state count and the period from NX. */
 static int orbit_size(reader *r, whirl_solution *s) {
+  if (s->kind == WHIRL_SOL_BVP) { /* (NTST NCOL + 1) n node values + NFREE */
+    const size_t m = (size_t)s->ntst * (size_t)s->ncol + 1, nf = (size_t)s->nfree;
+    if (s->nx <= nf || (s->nx - nf) % m)
+      return bad(r, "label %d: NX %zu does not fit NTST %d, NCOL %d, NFREE %d (a "
+                 "boundary-value solution has (NTST x NCOL + 1) x n values, + NFREE)",
+                 s->label, s->nx, s->ntst, s->ncol, s->nfree);
+    s->nstate = (s->nx - nf) / m;
+    s->aut = 0;
+    return 0;
+  }
   const size_t m = s->kind == WHIRL_SOL_COLLOC ? (size_t)s->ntst * (size_t)s->ncol + 1
                                          : 2 * (size_t)s->nhb + 1;
   if (s->nx < m || s->nx % m > 1) {
@@ -189,12 +204,23 @@ static int rd_lab(reader *r, size_t npar, whirl_solution *s) {
     if (lab_int(r, &p, "NTST", 2, 100000, &v1) || lab_int(r, &p, "NCOL", 2, 7, &v2))
       return -1;
     s->ntst = (int)v1, s->ncol = (int)v2;
+  } else if (!strcmp(kind, "bvp")) {
+    long v3;
+    s->kind = WHIRL_SOL_BVP;
+    if (lab_int(r, &p, "NTST", 1, 100000, &v1) || lab_int(r, &p, "NCOL", 2, 7, &v2) ||
+        lab_int(r, &p, "NFREE", 0, WHIRL_SOL_MAXFREE, &v3))
+      return -1;
+    s->ntst = (int)v1, s->ncol = (int)v2, s->nfree = (int)v3;
+    for (int j = 0; j < s->nfree; j++) {
+      if (lab_int(r, &p, "FREE", 1, (long)npar, &v1)) return -1;
+      s->free_par[j] = (int)v1 - 1;
+    }
   } else if (!strcmp(kind, "hbm")) {
     s->kind = WHIRL_SOL_HBM;
     if (lab_int(r, &p, "NHB", 1, 1000, &v1)) return -1;
     s->nhb = (int)v1;
   } else {
-    return bad(r, "label %d: unknown KIND '%s' (eq, colloc or hbm)", s->label,
+    return bad(r, "label %d: unknown KIND '%s' (eq, colloc, hbm or bvp)", s->label,
                shown(kind, b));
   }
   s->iterate = 1;
@@ -268,7 +294,7 @@ static int rd_body(reader *r, whirl_solution *s) {
     double **dst[] = {&s->par, &s->x, &s->tan, &s->mesh};
     int t = 0;
     while (t < 4 && (strlen(tags[t]) != tl || strncmp(r->buf, tags[t], tl))) t++;
-    if (t == 4 || (t == 3 && s->kind != WHIRL_SOL_COLLOC))
+    if (t == 4 || (t == 3 && s->kind != WHIRL_SOL_COLLOC && s->kind != WHIRL_SOL_BVP))
       return bad(r, "label %d: unexpected line '%s' in the block", s->label,
                  shown(r->buf, b));
     if (*dst[t]) return bad(r, "label %d: a second %s line", s->label, tags[t]);
@@ -277,7 +303,7 @@ static int rd_body(reader *r, whirl_solution *s) {
   if (!s->par || !s->x)
     return bad(r, "label %d: the block has no %s line", s->label,
                s->par ? "X" : "PAR");
-  if (s->kind == WHIRL_SOL_COLLOC && !s->mesh)
+  if ((s->kind == WHIRL_SOL_COLLOC || s->kind == WHIRL_SOL_BVP) && !s->mesh)
     return bad(r, "label %d: collocation solution without MESH", s->label);
   if (s->mesh) {
     int ok = s->mesh[0] == 0.0 && s->mesh[s->ntst] == 1.0;
@@ -313,7 +339,8 @@ static int rd_header(reader *r, char *model, size_t cap, size_t *npar) {
 /* Does the solution fit the model of want?  0, or -1 with the message. */
 static int fits(reader *r, const whirl_solution *s, const whirl_solution_shape *want) {
   if (!want->n) return 0;
-  if (s->kind != WHIRL_SOL_EQ && want->forced >= 0 && s->aut == want->forced) {
+  if (s->kind != WHIRL_SOL_EQ && s->kind != WHIRL_SOL_BVP && want->forced >= 0 &&
+      s->aut == want->forced) {
     snprintf(r->msg, r->len, "label %d of %s is an orbit of %s NX %zu "
              "unknowns; model '%s' is %s", s->label, r->path,
              s->aut ? "an autonomous model: its period is the last of its"
@@ -330,6 +357,9 @@ static int fits(reader *r, const whirl_solution *s, const whirl_solution_shape *
   if (s->kind == WHIRL_SOL_HBM)
     snprintf(how, sizeof how, " = (2 x NHB %d + 1) x %zu%s", s->nhb, s->nstate,
              s->aut ? " + 1" : "");
+  if (s->kind == WHIRL_SOL_BVP)
+    snprintf(how, sizeof how, " = (NTST %d x NCOL %d + 1) x %zu + %d", s->ntst, s->ncol,
+             s->nstate, s->nfree);
   snprintf(r->msg, r->len, "label %d of %s %s %zu states (NX %zu%s); model "
            "'%s' has %zu", s->label, r->path,
            s->kind == WHIRL_SOL_EQ ? "has" : "is an orbit of", s->nstate, s->nx, how,

@@ -57,6 +57,12 @@ struct whirl_bvp {
    * the current Gauss point uold, upold and u' (ud, udq perturbed) */
   double *ref;
   double *uo, *upo, *ud, *udq, *gd;
+  /* mesh adaptation (AUTO's IAD): dm the NCOL-th derivative's weights,
+   * the old mesh, a copy of a vector and the density's scratch */
+  int adapt_every, since_adapt;
+  size_t adaptations;
+  double dm[COLLOC_BASIS_MAXCOL + 1];
+  double *old_mesh, *copy, *E, *Q, *Dm;
   char errmsg[WHIRL_ERRMSG_SIZE];
 };
 
@@ -424,11 +430,8 @@ static void check_options(const whirl_problem *prob, const whirl_bvp_options *o,
              o->nfree);
   else if (o->nfree > 0 && !o->free)
     snprintf(why, len, "nfree = %zu but the list free is NULL", o->nfree);
-  else if (o->adapt_every != 0)
-    snprintf(why, len,
-             "mesh adaptation (adapt_every = %d) is not implemented for "
-             "boundary value problems; use 0",
-             o->adapt_every);
+  else if (o->adapt_every < 0)
+    snprintf(why, len, "adapt_every = %d: need >= 0 (0: a fixed mesh)", o->adapt_every);
   if (why[0]) return;
   for (size_t j = 0; j < o->nfree; ++j) {
     if (o->free[j] >= prob->npar) {
@@ -490,11 +493,14 @@ static int alloc_arrays(whirl_bvp *b) {
   b->Jx = malloc(b->nnz * sizeof *b->Jx);
   const size_t sizes[] = {n, n, n, n, n, n * n, n * np, 2 * n, np, np,
                           b->nbc, b->nbc, b->nint, b->nint, b->nint * n, nc, nc,
-                          n * b->nnodes, n, n, n, n, b->nint * n};
+                          n * b->nnodes, n, n, n, n, b->nint * n,
+                          b->ntst + 1, n * b->nnodes, b->ntst, b->ntst + 1,
+                          n * b->ntst};
   double **ptrs[] = {&b->u, &b->du, &b->f, &b->fm, &b->uq, &b->J, &b->Jpar,
                      &b->work, &b->pt, &b->pq, &b->fb, &b->fbm, &b->gi,
                      &b->gim, &b->gu, &b->cp, &b->cm,
-                     &b->ref, &b->uo, &b->upo, &b->ud, &b->udq, &b->gd};
+                     &b->ref, &b->uo, &b->upo, &b->ud, &b->udq, &b->gd,
+                     &b->old_mesh, &b->copy, &b->E, &b->Q, &b->Dm};
   const size_t nptr = sizeof sizes / sizeof sizes[0];
   size_t tot = 0;
   for (size_t k = 0; k < nptr; ++k) tot += sizes[k] + 1;
@@ -507,6 +513,33 @@ static int alloc_arrays(whirl_bvp *b) {
   }
   return 0;
 }
+
+/* The system's remap hook: a new mesh every adapt_every accepted points
+ * (AUTO's IAD), equidistributing the NCOL-th derivative as the periodic
+ * collocation does (colloc_basis_new_mesh), with the current point, the
+ * tangent, the previous points and the integral conditions' reference
+ * carried over (their node values; the free parameters stay). */
+static int bvp_remap(double *const *v, size_t nv, const double *p, void *data) {
+  (void)p;
+  whirl_bvp *b = data;
+  if (b->adapt_every <= 0 || ++b->since_adapt < b->adapt_every) return 0;
+  b->since_adapt = 0;
+  const size_t N = b->ntst;
+  memcpy(b->old_mesh, b->mesh, (N + 1) * sizeof *b->mesh);
+  const int rc = colloc_basis_new_mesh_jumps(b->n, b->ncol, N, b->dm, v[0], b->old_mesh,
+                                             b->mesh, b->E, b->Q, b->Dm);
+  if (rc < 0)
+    return WHIRL_FAIL(b, WHIRL_EINVAL, "mesh adaptation: the solution is not finite "
+                      "or an interval degenerate (%d)", rc);
+  if (rc == 0) return 0;
+  for (size_t k = 0; k < nv; ++k)
+    colloc_basis_map_nodes(b->n, b->ncol, N, b->old_mesh, b->mesh, b->copy, v[k]);
+  colloc_basis_map_nodes(b->n, b->ncol, N, b->old_mesh, b->mesh, b->copy, b->ref);
+  ++b->adaptations;
+  return 1;
+}
+
+size_t whirl_bvp_adaptations(const whirl_bvp *b) { return b ? b->adaptations : 0; }
 
 static int bvp_accept(const double *X, const double *p, void *data) {
   (void)p;
@@ -564,6 +597,8 @@ whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
   for (size_t i = 0; i <= N; ++i) b->mesh[i] = (double)i / (double)N;
   b->mesh[N] = 1.0;
   colloc_basis_gauss_legendre(m, b->gs, b->gw);
+  colloc_basis_derivative_weights(m, b->dm);
+  b->adapt_every = o->adapt_every;
   for (size_t g = 0; g < m; ++g)
     colloc_basis_lagrange(m, b->gs[g], b->L + g * (m + 1), b->D + g * (m + 1));
 
@@ -579,6 +614,7 @@ whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
   s->Ji = b->Ji;
   s->Fx_sparse = bvp_Fx_sparse;
   s->accept = b->nint ? bvp_accept : NULL; /* the reference of ICND */
+  s->remap = bvp_remap;
   s->x_names = NULL; /* node-major unknowns have no model names */
   s->p_names = prob->p_names;
   s->data = b;

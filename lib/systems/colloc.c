@@ -511,16 +511,8 @@ static void init_quadrature(whirl_colloc *c) {
   gauss_legendre(m, c->gs, c->gw);
   for (size_t g = 0; g < m; ++g)
     lagrange(m, c->gs[g], c->L + g * (m + 1), c->D + g * (m + 1));
-  {
-    /* m-th derivative of the interpolant on nodes k/m, in σ: m! times the
-     * leading coefficient = m^m (−1)^{m−k} C(m, k) (m-th forward
-     * difference) */
-    double binom = 1.0, mm = pow((double)m, (double)m);
-    for (size_t k = 0; k <= m; ++k) {
-      c->dm[k] = (((m - k) % 2) ? -1.0 : 1.0) * binom * mm;
-      binom = binom * (double)(m - k) / (double)(k + 1);
-    }
-  }
+  /* m-th derivative of the interpolant on nodes k/m, in σ */
+  colloc_basis_derivative_weights(m, c->dm);
 
 }
 
@@ -768,67 +760,25 @@ int whirl_colloc_eval(const whirl_colloc *c, const double *X, double tau,
  * old_mesh for map_nodes.  Returns 1 when the mesh changed, 0 when it is
  * kept (a constant orbit), WHIRL_EINVAL for a non-finite X. */
 static int new_mesh(whirl_colloc *c, const double *X) {
-  const size_t n = c->n, m = c->ncol, N = c->ntst;
-  const double pwr = 1.0 / ((double)m + 1.0);
-  double *E = c->r1, *Q = c->r2; /* N and N + 1 <= nx */
-  double Emax = 0.0;
-  Q[0] = 0.0;
-  for (size_t i = 0; i < N; ++i) {
-    const double h = c->mesh[i + 1] - c->mesh[i];
-    const double sc = 1.0 / pow(h, (double)m);
-    double e = 0.0;
-    for (size_t r = 0; r < n; ++r) {
-      double d = 0.0;
-      for (size_t k = 0; k <= m; ++k) d += c->dm[k] * X[n * (i * m + k) + r];
-      e += pow(fabs(d * sc), pwr);
-    }
-    if (!isfinite(e))
-      return WHIRL_FAIL(
-          c, WHIRL_EINVAL,
-          "mesh adaptation: the orbit is not finite in interval %zu", i);
-    E[i] = e;
-    Emax = fmax(Emax, e);
-    Q[i + 1] = Q[i] + h * e;
-  }
-  if (!(Emax > 0)) return 0; /* a constant orbit: keep the mesh */
-
+  const size_t N = c->ntst;
   memcpy(c->old_mesh, c->mesh, (N + 1) * sizeof *c->mesh);
-  size_t i = 0;
-  for (size_t k = 1; k < N; ++k) {
-    const double q = Q[N] * (double)k / (double)N;
-    while (i < N - 1 && (Q[i + 1] < q || E[i] <= 0.0)) ++i;
-    double t = c->old_mesh[i] + (E[i] > 0 ? (q - Q[i]) / E[i] : 0.0);
-    t = fmin(fmax(t, c->old_mesh[i]), c->old_mesh[i + 1]);
-    c->mesh[k] = t;
-  }
-  c->mesh[0] = 0.0;
-  c->mesh[N] = 1.0;
-  for (size_t k = 1; k <= N; ++k)
-    if (!(c->mesh[k] > c->mesh[k - 1])) {
-      /* degenerate interval (cannot happen for positive E): give up */
-      memcpy(c->mesh, c->old_mesh, (N + 1) * sizeof *c->mesh);
-      return WHIRL_FAIL(c, WHIRL_EINVAL,
-                        "mesh adaptation: interval %zu degenerate", k);
-    }
-  c->last_ws = NULL; /* factorisations on the old mesh are not reused */
-  return 1;
+  const int rc = colloc_basis_new_mesh(c->n, c->ncol, N, c->dm, X, c->old_mesh,
+                                       c->mesh, c->r1, c->r2); /* N, N + 1 <= nx */
+  if (rc <= -1 - (int)N)
+    return WHIRL_FAIL(c, WHIRL_EINVAL, "mesh adaptation: interval %d degenerate",
+                      -1 - (int)N - rc);
+  if (rc < 0)
+    return WHIRL_FAIL(c, WHIRL_EINVAL,
+                      "mesh adaptation: the orbit is not finite in interval %d", -1 - rc);
+  if (rc == 1) c->last_ws = NULL; /* factorisations on the old mesh are not reused */
+  return rc;
 }
 
 /* The node values of v (a solution or a direction: the map is linear)
  * from the piecewise polynomial on old_mesh to the nodes of mesh, in place;
  * entries past the nodes (the period) are left as they are. */
 static void map_nodes(whirl_colloc *c, double *v) {
-  const size_t n = c->n, m = c->ncol, N = c->ntst, nn = c->nnodes * n;
-  memcpy(c->old_X, v, nn * sizeof *v);
-  for (size_t ii = 0; ii < N; ++ii) {
-    const double h = c->mesh[ii + 1] - c->mesh[ii];
-    for (size_t k = 0; k <= m; ++k) {
-      const size_t j = ii * m + k;
-      double t =
-          j == c->nnodes - 1 ? 1.0 : c->mesh[ii] + h * (double)k / (double)m;
-      eval_poly(n, N, m, c->old_mesh, c->old_X, t, v + n * j);
-    }
-  }
+  colloc_basis_map_nodes(c->n, c->ncol, c->ntst, c->old_mesh, c->mesh, c->old_X, v);
 }
 
 /* The phase reference onto the new mesh. */

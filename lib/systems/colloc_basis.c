@@ -5,6 +5,7 @@
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 #include <whirl/problem.h>
 
@@ -120,3 +121,110 @@ void colloc_basis_eval_poly(size_t n, size_t ntst, size_t m, const double *tau,
   }
 }
 
+
+void colloc_basis_derivative_weights(size_t m, double *dm) {
+  double binom = 1.0, mm = pow((double)m, (double)m);
+  for (size_t k = 0; k <= m; ++k) {
+    dm[k] = (((m - k) % 2) ? -1.0 : 1.0) * binom * mm;
+    binom = binom * (double)(m - k) / (double)(k + 1);
+  }
+}
+
+/* The new mesh equidistributing the density E[N] (Q[N + 1] its integral
+ * on old): 1, 0 (E vanishes: old kept) or -1 - N - k (interval k
+ * degenerate). */
+static int equidistribute(size_t N, const double *old, double *mesh, const double *E,
+                          double *Q) {
+  double Emax = 0.0;
+  Q[0] = 0.0;
+  for (size_t i = 0; i < N; ++i) {
+    Emax = fmax(Emax, E[i]);
+    Q[i + 1] = Q[i] + (old[i + 1] - old[i]) * E[i];
+  }
+  memcpy(mesh, old, (N + 1) * sizeof *mesh);
+  if (!(Emax > 0)) return 0; /* a constant solution: keep the mesh */
+  size_t i = 0;
+  for (size_t k = 1; k < N; ++k) {
+    const double q = Q[N] * (double)k / (double)N;
+    while (i < N - 1 && (Q[i + 1] < q || E[i] <= 0.0)) ++i;
+    double t = old[i] + (E[i] > 0 ? (q - Q[i]) / E[i] : 0.0);
+    t = fmin(fmax(t, old[i]), old[i + 1]);
+    mesh[k] = t;
+  }
+  mesh[0] = 0.0;
+  mesh[N] = 1.0;
+  for (size_t k = 1; k <= N; ++k)
+    if (!(mesh[k] > mesh[k - 1])) {
+      memcpy(mesh, old, (N + 1) * sizeof *mesh);
+      return -1 - (int)N - (int)k;
+    }
+  return 1;
+}
+
+/* x_r^(m) on interval i (constant: the m-th derivative of a degree-m
+ * polynomial), in t. */
+static double mth_derivative(size_t n, size_t m, const double *dm, const double *X,
+                             const double *old, size_t i, size_t r) {
+  const double h = old[i + 1] - old[i];
+  double d = 0.0;
+  for (size_t k = 0; k <= m; ++k) d += dm[k] * X[n * (i * m + k) + r];
+  return d / pow(h, (double)m);
+}
+
+int colloc_basis_new_mesh(size_t n, size_t m, size_t N, const double *dm,
+                          const double *X, const double *old, double *mesh,
+                          double *E, double *Q) {
+  const double pwr = 1.0 / ((double)m + 1.0);
+  for (size_t i = 0; i < N; ++i) {
+    double e = 0.0;
+    for (size_t r = 0; r < n; ++r) e += pow(fabs(mth_derivative(n, m, dm, X, old, i, r)), pwr);
+    if (!isfinite(e)) return -1 - (int)i;
+    E[i] = e;
+  }
+  return equidistribute(N, old, mesh, E, Q);
+}
+
+int colloc_basis_new_mesh_jumps(size_t n, size_t m, size_t N, const double *dm,
+                                const double *X, const double *old, double *mesh,
+                                double *E, double *Q, double *D) {
+  const double pwr = 1.0 / ((double)m + 1.0);
+  for (size_t i = 0; i < N; ++i)
+    for (size_t r = 0; r < n; ++r) {
+      D[n * i + r] = mth_derivative(n, m, dm, X, old, i, r);
+      if (!isfinite(D[n * i + r])) return -1 - (int)i;
+    }
+  for (size_t i = 0; i < N; ++i) {
+    double e = 0.0;
+    for (size_t r = 0; r < n; ++r) {
+      /* the jumps to the neighbours over the distances of the midpoints;
+       * at an end the one neighbour; one interval: none */
+      double s = 0.0;
+      int k = 0;
+      if (i > 0) {
+        s += fabs(D[n * i + r] - D[n * (i - 1) + r]) / (0.5 * (old[i + 1] - old[i - 1]));
+        k++;
+      }
+      if (i + 1 < N) {
+        s += fabs(D[n * (i + 1) + r] - D[n * i + r]) / (0.5 * (old[i + 2] - old[i]));
+        k++;
+      }
+      e += k ? pow(s / k, pwr) : 0.0;
+    }
+    E[i] = e;
+  }
+  return equidistribute(N, old, mesh, E, Q);
+}
+
+void colloc_basis_map_nodes(size_t n, size_t m, size_t N, const double *old,
+                            const double *mesh, double *copy, double *v) {
+  const size_t nnodes = N * m + 1;
+  memcpy(copy, v, nnodes * n * sizeof *v);
+  for (size_t ii = 0; ii < N; ++ii) {
+    const double h = mesh[ii + 1] - mesh[ii];
+    for (size_t k = 0; k <= m; ++k) {
+      const size_t j = ii * m + k;
+      const double t = j == nnodes - 1 ? 1.0 : mesh[ii] + h * (double)k / (double)m;
+      colloc_basis_eval_poly(n, N, m, old, copy, t, v + n * j);
+    }
+  }
+}

@@ -37,4 +37,32 @@ void colloc_basis_eval_poly(size_t n, size_t ntst, size_t m,
                             const double *tau, const double *Xn, double t,
                             double *x);
 
+/* The weights dm[m + 1] of the m-th derivative in σ of the interpolant on
+ * the nodes k/m: m^m (−1)^{m−k} C(m, k) (the m-th forward difference). */
+void colloc_basis_derivative_weights(size_t m, double *dm);
+
+/* Mesh adaptation (AUTO's IAD; de Boor 1973): the new mesh[N + 1] that
+ * equidistributes the error density sum_r |x_r^(m)|^{1/(m+1)} of the
+ * piecewise polynomial with node values X (n components, node-major) on
+ * old[N + 1], x^(m) piecewise constant from dm; scratch E[N], Q[N + 1].
+ * 1: a new mesh; 0: a constant solution (mesh = old); -1 - i: interval i
+ * is not finite; -1 - N - k: interval k of the new mesh degenerate. */
+int colloc_basis_new_mesh(size_t n, size_t m, size_t N, const double *dm,
+                          const double *X, const double *old, double *mesh,
+                          double *E, double *Q);
+
+/* The same with the density of x^(m+1) estimated from the jumps of the
+ * piecewise constant x^(m) between neighbouring intervals (one-sided at
+ * the ends of [0, 1]; Russell & Christiansen 1978, as AUTO-07p's manual
+ * describes its IAD), sum_r |x_r^(m+1)|^{1/(m+1)}; scratch D[n N]. */
+int colloc_basis_new_mesh_jumps(size_t n, size_t m, size_t N, const double *dm,
+                                const double *X, const double *old, double *mesh,
+                                double *E, double *Q, double *D);
+
+/* The node values of v (a solution or a direction: the map is linear)
+ * from the piecewise polynomial on old to the nodes of mesh, in place;
+ * scratch copy[(N m + 1) n].  Entries past the nodes are not touched. */
+void colloc_basis_map_nodes(size_t n, size_t m, size_t N, const double *old,
+                            const double *mesh, double *copy, double *v);
+
 #endif

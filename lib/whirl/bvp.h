@@ -41,11 +41,17 @@
  * same).  The system has a compressed-column sparse pattern (rows sorted
  * within a column; usable by UMFPACK on the core's sparse path), a dense
  * callback built from it, and F_p for any parameter.  It has no spectrum
- * (a BVP solution has no stability), no structured solver (the core's
- * dense or sparse LU factors the bordered matrix), no accept hook.
+ * (a BVP solution has no stability) and no structured solver (the core's
+ * dense or sparse LU factors the bordered matrix); its accept hook keeps
+ * the integral conditions' reference.
  *
- * Mesh adaptation (AUTO's IAD) is not implemented: options.adapt_every must
- * be 0, the mesh stays as allocated or set by whirl_bvp_set_mesh.
+ * Mesh adaptation (AUTO's IAD): with options.adapt_every = k > 0 the
+ * system's remap hook makes a new mesh every k accepted points, which
+ * equidistributes |u^(NCOL)|^{1/(NCOL+1)} as the periodic collocation does
+ * (whirl/colloc.h; de Boor 1973), the node values of the current point,
+ * tangent, previous points and the integral conditions' reference carried
+ * over; whirl_bvp_adaptations counts the new meshes.  0: a fixed mesh (as
+ * allocated, or set by whirl_bvp_set_mesh).
  *
  * Callback contract (bc, ic and the model), as in whirl/problem.h: return 0
  * on success, > 0 for a recoverable failure (outside the domain: the core
@@ -95,7 +101,8 @@ typedef struct whirl_bvp_options {
                          nbc + nint − n (AUTO's NFPR − 1; checked) */
   const size_t *free; /* nfree distinct parameter indices < npar; copied
                          by whirl_bvp_alloc (may be NULL when nfree = 0) */
-  int adapt_every;    /* IAD: not implemented, must be 0 (default) */
+  int adapt_every;    /* IAD: a new mesh every adapt_every accepted points
+                         (above); 0 (default): a fixed mesh */
 } whirl_bvp_options;
 
 /* Defaults: NTST 20, NCOL 4, no conditions, no free parameters, fixed mesh. */
@@ -155,6 +162,9 @@ WHIRL_API int whirl_bvp_moments(const whirl_bvp *b, const double *X, double *m1,
  * node values of X (copied).  The system's accept hook sets it to every
  * point the core accepts, as AUTO's UOLD. */
 WHIRL_API int whirl_bvp_set_reference(whirl_bvp *b, const double *X);
+
+/* The meshes adapted so far (adapt_every > 0). */
+WHIRL_API size_t whirl_bvp_adaptations(const whirl_bvp *b);
 
 /* Current mesh tau[NTST + 1]. */
 WHIRL_API const double *whirl_bvp_mesh(const whirl_bvp *b);

@@ -64,6 +64,7 @@ enum { WHIRL_METHOD_COLLOC = 0, WHIRL_METHOD_HBM = 1 };
 #define WHIRL_RUN_MAXNAME 64
 #define WHIRL_RUN_MAXPATH 1024
 #define WHIRL_RUN_MAXITEMS 64
+#define WHIRL_RUN_MAXICP 16 /* ICP entries (AUTO demos list up to 11) */
 
 /* A reference to a parameter or state component: by 1-based index (index
  * > 0, name empty) or by name (index 0). */

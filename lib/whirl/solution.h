@@ -26,11 +26,15 @@
 extern "C" {
 #endif
 
+#define WHIRL_SOL_MAXFREE 15 /* bvp: free parameters beside the continued one */
+
 /* What the unknowns of a branch's system are (a solution's KIND). */
 typedef enum whirl_solution_kind {
   WHIRL_SOL_EQ = 0,     /* equilibrium: x = state */
   WHIRL_SOL_COLLOC = 1, /* periodic orbit by collocation: x = node values, T */
-  WHIRL_SOL_HBM = 2     /* periodic orbit by harmonic balance */
+  WHIRL_SOL_HBM = 2,    /* periodic orbit by harmonic balance */
+  WHIRL_SOL_BVP = 3     /* boundary-value problem by collocation (IPS 4):
+                           x = node values, then NFREE free parameters */
 } whirl_solution_kind;
 
 /* A labelled solution as stored in OUT/solutions (full precision). */
@@ -45,8 +49,11 @@ typedef struct whirl_solution {
   double *par;      /* npar */
   double *x;        /* nx: base-system unknowns */
   double *tan;      /* nx + 1 or NULL: unit tangent (x, p_icp) */
-  int ntst, ncol;   /* colloc */
-  double *mesh;     /* colloc: ntst + 1 */
+  int ntst, ncol;   /* colloc, bvp */
+  double *mesh;     /* colloc, bvp: ntst + 1 */
+  int nfree;        /* bvp: free parameters after the node values (their
+                       values also in par) */
+  int free_par[WHIRL_SOL_MAXFREE]; /* bvp: their indices (0-based) */
   int nhb;          /* hbm: harmonics */
   int stable;
   size_t nstate;    /* state components: NX (eq), or NX = M nstate + aut

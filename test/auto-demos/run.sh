@@ -1,6 +1,6 @@
 #!/bin/sh
 # test/auto-demos/run.sh [AUTO_DEMOS_DIR] — AUTO-07p's demos of the classes
-# whirl runs (every constants file IPS 1 or 2, or every one -1 (maps),
+# whirl runs (every constants file IPS 1, 2 or 4, or every one -1 (maps),
 # equations in Fortran), each
 # run by `whirl auto DEMO` from its own files, unchanged, in the default
 # order (c.NAME.1, c.NAME.2, ...; doc/auto-files.md), and every special
@@ -120,7 +120,7 @@ for dir in "$demos"/*/; do
   [ -f "$dir/$d.f90" ] || continue
   ls "$dir"/c.* >/dev/null 2>&1 || continue
   cls=$(cat "$dir"/c.* | grep -o 'IPS *= *-\{0,1\}[0-9]*' | grep -o -- '-\{0,1\}[0-9]*$' | sort -u | tr '\n' ' ')
-  case "$cls" in "1 " | "2 " | "1 2 " | "-1 ") ;; *) continue ;; esac
+  case "$cls" in "1 " | "2 " | "4 " | "1 2 " | "1 4 " | "2 4 " | "1 2 4 " | "-1 ") ;; *) continue ;; esac
   total=$((total + 1))
   (cd "$tmp" && timeout 300 "$WHIRL" auto "$dir" --quiet --out="$d.out" > "$d.log" 2>&1)
   rc=$?

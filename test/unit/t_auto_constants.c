@@ -180,9 +180,9 @@ static void runfile(void) {
     const char *text, *msg;
     const char *restart;
   } bad[] = {
-      {"NDIM=1\nIPS = 4\nICP=[1]\n", "c.t:2: IPS = 4: whirl runs AUTO's equilibria (1), "
-                                      "periodic orbits (2) and fixed points of maps (-1) "
-                                      "only", NULL},
+      {"NDIM=1\nIPS = 9\nICP=[1]\n", "c.t:2: IPS = 9: whirl runs AUTO's equilibria (1), "
+                                      "periodic orbits (2), boundary-value problems (4) and "
+                                      "fixed points of maps (-1) only", NULL},
       {"NDIM=1, ICP=[1]\ndat = 'x'\n",
        "c.t:2: dat = 'x': a data file starts periodic orbits (IPS = 2), not IPS = 1", NULL},
       {"NDIM=1, IPS=2, ICP=[1]\ndat = 'nothere'\n",

@@ -727,6 +727,15 @@ static void test_weights(void) {
   ok(!whirl_cont_alloc(&sys, &o, err, sizeof err), "a NaN x_weight is refused");
   is_rel(line_p_after(w_zero, 1.0, 10, &s), 0.1, 1e-10,
          "x_weight all 0: the step is in p alone (natural parameter), p by 0.1");
+  /* p_weight 0 (AUTO's THL = {ICP(1): 0}, demo um2): the step in x alone,
+   * |dx| = sqrt(1 + 1e4) |dp|; the start's Newton at fixed p still has its
+   * constraint row (before: a zero border row, "F_x is singular") */
+  is_rel(line_p_after(NULL, 0.0, 10, &s), 0.1 / sqrt(10001.0), 1e-10,
+         "p_weight 0: the start converges, p by 0.1/sqrt(10001) in 10 steps");
+  o.x_weight = w_zero;
+  o.p_weight = 0.0;
+  ok(!whirl_cont_alloc(&sys, &o, err, sizeof err) && strstr(err, "p_weight"),
+     "every weight 0 is refused: %s", err);
 }
 
 static void test_errors(void) {

@@ -1,0 +1,133 @@
+#!/bin/sh
+# test/regress/bvp_run.sh — boundary-value problems in `whirl run` (IPS =
+# 4, AUTO's class): the model's bcnd and icnd (AUTO's BCND, ICND), NBC and
+# NINT, ICP(2) ... free, labels restarted on their mesh or another.
+# Closed forms: Bratu's u'' + lambda e^u = 0, u(0) = u(1) = 0 (AUTO's demo
+# exp) folds at lambda* = 3.513830719125162, where max u = u(1/2) =
+# 2 ln cosh(theta*/4), theta* = 4.798714560; u' = a u, u(0) = 1 with
+# int_0^1 u = c has (e^a - 1)/a = c, a free.
+# SPDX-License-Identifier: BSD-3-Clause
+name=bvp_run
+. "${top_srcdir:-.}/test/regress/tap.sh"
+CC=${CC:-cc}
+command -v "$CC" > /dev/null 2>&1 || { echo "1..0 # SKIP no C compiler"; exit 0; }
+cat > "$tmp/bratu.c" <<'EOF'
+#include <math.h>
+#include <whirl/model.h>
+static int rhs(double t, const double *u, const double *p, double *f, void *d) {
+  (void)t, (void)d;
+  f[0] = u[1];
+  f[1] = -p[0] * exp(u[0]);
+  return 0;
+}
+static int stpnt(double t, double *u, double *p, void *d) {
+  (void)t, (void)p, (void)d;
+  u[0] = u[1] = 0.0;
+  return 0;
+}
+static int bcnd(size_t nbc, const double *u0, const double *u1, const double *p,
+                double *fb, void *d) {
+  (void)nbc, (void)p, (void)d;
+  fb[0] = u0[0];
+  fb[1] = u1[0];
+  return 0;
+}
+static const char *const xn[] = {"u", "v"};
+static const char *const pn[] = {"lambda"};
+static const double par0[] = {0.0};
+const whirl_model whirl_model_def = {
+    .abi = WHIRL_MODEL_ABI,
+    .problem = {.name = "bratu", .n = 2, .npar = 1, .rhs = rhs, .autonomous = 1,
+                .x_names = xn, .p_names = pn},
+    .par0 = par0, .stpnt = stpnt, .forcing_param = -1, .bcnd = bcnd,
+    .description = "Bratu's problem"};
+EOF
+cat > "$tmp/expo.c" <<'EOF'
+#include <whirl/model.h>
+static int rhs(double t, const double *u, const double *p, double *f, void *d) {
+  (void)t, (void)d;
+  f[0] = p[0] * u[0];
+  return 0;
+}
+static int stpnt(double t, double *u, double *p, void *d) {
+  (void)d;
+  u[0] = 1.0 + t; /* not a solution: a = 0.5, c = 1.5 are corrected */
+  p[0] = 0.5, p[1] = 1.5;
+  return 0;
+}
+static int bcnd(size_t nbc, const double *u0, const double *u1, const double *p,
+                double *fb, void *d) {
+  (void)nbc, (void)u1, (void)p, (void)d;
+  fb[0] = u0[0] - 1.0;
+  return 0;
+}
+static int icnd(size_t nint, const double *u, const double *uo, const double *ud,
+                const double *upo, const double *p, double *fi, void *d) {
+  (void)nint, (void)uo, (void)ud, (void)upo, (void)d;
+  fi[0] = u[0] - p[1];
+  return 0;
+}
+static const char *const xn[] = {"u"};
+static const char *const pn[] = {"a", "c"};
+static const double par0[] = {0.5, 1.5};
+const whirl_model whirl_model_def = {
+    .abi = WHIRL_MODEL_ABI,
+    .problem = {.name = "expo", .n = 1, .npar = 2, .rhs = rhs, .autonomous = 1,
+                .x_names = xn, .p_names = pn},
+    .par0 = par0, .stpnt = stpnt, .forcing_param = -1, .bcnd = bcnd, .icnd = icnd,
+    .description = "u' = a u, u(0) = 1, int u = c"};
+EOF
+for m in bratu expo; do
+  $CC -std=c11 -O2 -shared -fPIC -I"$top_srcdir/lib" -o "$tmp/$m.so" "$tmp/$m.c" -lm
+  ok $? "$m plug-in builds"
+done
+# column $2 of the rows of type $3 (and $4 == column "lambda"/"c" value) in $1
+col() {
+  awk -F '\t' -v c="$2" -v t="$3" -v k="${4:-}" -v v="${5:-}" 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i; next }
+    $3 == t && (k == "" || $h[k] + 0 == v) { print $h[c] }' "$tmp/$1/branches.tsv" 2>/dev/null
+}
+printf 'model = bratu.so\nIPS = 4\nICP = [lambda]\nNBC = 2\nNTST = 10\nNCOL = 4\nISP = 1\nDS = 0.01\nDSMAX = 0.2\nNMX = 100\nUZR = {lambda: [1, 3]}\n' > "$tmp/br.whirl"
+(cd "$tmp" && "$WHIRL" run br.whirl --no-plot --quiet > /dev/null 2> br.err)
+ok $? "Bratu (IPS = 4, NBC = 2) from the model's start ($(head -1 "$tmp/br.err"))"
+head -1 "$tmp/br.out/branches.tsv" | grep -q "lambda	l2_norm	max_u	max_v	stable" &&
+  ! head -1 "$tmp/br.out/branches.tsv" | grep -q period
+ok $? "the table: parameters, l2_norm, max_u, max_v, stable; no period column"
+lp=$(col br.out lambda LP)
+echo "$lp" | awk '{ d = $1 - 3.513830719125162; exit !(NR == 1 && d * d < 1e-14) }'
+ok $? "the fold at lambda* = 3.513830719125162 to 1e-7 ($lp)"
+mx=$(col br.out max_u LP)
+echo "$mx" | awk '{ t = 4.798714560 / 4; e = 2 * log((exp(t) + exp(-t)) / 2); d = $1 - e; exit !(d * d < 1e-12) }'
+ok $? "max u at the fold: 2 ln cosh(theta*/4) = 1.1868421 to 1e-6 ($mx)"
+grep -q "KIND bvp .* NTST 10 NCOL 4 NFREE 0$" "$tmp/br.out/solutions"
+ok $? "labels are stored as KIND bvp with their mesh"
+# restart at the lower branch's UZ lambda = 3 onto NTST 20: on along the
+# stored tangent (towards the fold), which it finds again
+printf 'model = bratu.so\nIPS = 4\nICP = [lambda]\nNBC = 2\nNTST = 20\nNCOL = 4\nS = br.out\nIRS = UZ2\nDS = 0.01\nDSMAX = 0.2\nNMX = 30\n' > "$tmp/re.whirl"
+(cd "$tmp" && "$WHIRL" run re.whirl --no-plot --quiet > /dev/null 2> re.err)
+ok $? "restart at UZ lambda = 3 on NTST 20 ($(head -1 "$tmp/re.err"))"
+lp2=$(col re.out lambda LP)
+echo "$lp2" | awk '{ d = $1 - 3.513830719125162; exit !(NR == 1 && d * d < 1e-16) }'
+ok $? "on along the label's tangent: the fold again, NTST 20 to 1e-8 ($lp2)"
+printf 'model = expo.so\nIPS = 4\nICP = [c, a]\nNBC = 1\nNINT = 1\nNTST = 10\nDS = 0.05\nDSMAX = 0.2\nNMX = 100\nUZR = {c: [2, 3.5]}\nUZSTOP = {c: [3.5]}\n' > "$tmp/ex.whirl"
+(cd "$tmp" && "$WHIRL" run ex.whirl --no-plot --quiet > /dev/null 2> ex.err)
+ok $? "an integral condition with a free parameter (NINT = 1, ICP = [c, a]) ($(head -1 "$tmp/ex.err"))"
+for c in 2 3.5; do
+  a=$(col ex.out a UZ c $c)
+  echo "$a" | awk -v c=$c '{ a = $1; r = (exp(a) - 1) / a - c; exit !(NR == 1 && r * r < 1e-16) }'
+  ok $? "c = $c: the free a solves (e^a - 1)/a = c ($a)"
+done
+grep -q "free a" "$tmp/ex.out/run.log"
+ok $? "run.log names the free parameter"
+# bad input: one message, exit 2
+bad() {
+  printf "$2" > "$tmp/bad.whirl"
+  (cd "$tmp" && "$WHIRL" run bad.whirl --no-plot --quiet > /dev/null 2> bad.err)
+  st=$?
+  [ "$st" -eq 2 ] && grep -q "$3" "$tmp/bad.err" && [ "$(wc -l < "$tmp/bad.err")" -eq 1 ]
+  ok $? "$1: exit 2, one line ($st: $(head -1 "$tmp/bad.err"))"
+}
+bad "NBC + NINT < NDIM" 'model = bratu.so\nIPS = 4\nICP = [lambda]\nNBC = 1\n' "NBC + NINT = 1 is less than NDIM = 2"
+bad "ICP without the free parameter" 'model = expo.so\nIPS = 4\nICP = [c]\nNBC = 1\nNINT = 1\n' "ICP: IPS = 4 with NBC = 1, NINT = 1, NDIM = 1 has NBC + NINT - NDIM + 1 = 2 free parameters; ICP lists 1"
+bad "NINT without icnd" 'model = bratu.so\nIPS = 4\nICP = [lambda]\nNBC = 1\nNINT = 1\n' "has no integral conditions"
+bad "a restart from a label of another class" 'model = bratu.so\nIPS = 4\nICP = [lambda]\nNBC = 2\nS = br.out\nIRS = 99\n' "IRS"
+tap_end
