@@ -763,6 +763,23 @@ static int start_equilibria(run_ctx *R, run_objects *O, branch_spec *b) {
   return 0;
 }
 
+/* The stored tangent of so (on src's mesh) onto dst's, D[nb + 1]: its node
+ * part by the conversion of orbits (linear), dT/ds and dp/ds as stored.
+ * The conversion reads the period from the last entry, which for a tangent
+ * may be 0 or negative: 1 there while converting.  0, or -1. */
+static int resample_tangent(const whirl_solution *so, const whirl_periodic *src,
+                            whirl_periodic *dst, int aut, size_t nb, double *D) {
+  double *t = malloc((so->nx + 1) * sizeof *t);
+  if (!t) return -1;
+  memcpy(t, so->tan, (so->nx + 1) * sizeof *t);
+  if (aut) t[so->nx - 1] = 1.0;
+  const int rc = whirl_periodic_convert(src, t, so->par, dst, 400, D);
+  if (!rc && aut) D[nb - 1] = so->tan[so->nx - 1];
+  if (!rc) D[nb] = so->tan[so->nx];
+  free(t);
+  return rc ? -1 : 0;
+}
+
 /* Periodic orbits by collocation: from the model's start orbit or a
  * settled forced response, a Hopf point (HB label), or a periodic label
  * (on its mesh, resampled to another, or doubled at a PD). */
@@ -863,8 +880,18 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
       /* AUTO's SETRTN: the turns read on the stored mesh (its last node
        * is at NTST NCOL of that mesh, not of the new one), in force on the
        * new mesh before the conversion samples the orbit onto it */
-      whirl_colloc_rotations_of(O->colloc2, so->x);
+      const size_t nrot = whirl_colloc_rotations_of(O->colloc2, so->x);
       whirl_colloc_set_rotations(O->colloc, whirl_colloc_rotations(O->colloc2));
+      /* the stored tangent resampled likewise (the map is linear; its last
+       * entry dT/ds stays), so the restart goes on along the branch as on
+       * the label's own mesh and as AUTO's: before, Newton at fixed
+       * parameter and DS's sign in the parameter, the other way round at
+       * an LP of orbits.  First, as converting sets the phase reference
+       * (then the orbit's); not for turning angles, whose ramp the samples
+       * would take for the tangent's */
+      if (s->isw == 1 && so->tan && so->icp == b->icp && !pd && !fixed_T && !nrot &&
+          resample_tangent(so, &src, &dst, R->prob.autonomous, b->nb, O->D) == 0)
+        b->dir = O->D;
       if (whirl_periodic_convert(&src, so->x, so->par, &dst, 400, O->X))
         return -1;
       whirl_colloc_free(O->colloc2);

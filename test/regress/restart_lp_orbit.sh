@@ -60,4 +60,16 @@ uz re- | awk '{ r = sqrt(1 + sqrt(0.5)); exit !(NF == 2 && ($1 - r) ^ 2 < 1e-12 
 ok $? "DS -0.01: on, to the outer orbit, stable, r = 1.306563 ($(uz re-))"
 uz re+ | awk '{ r = sqrt(1 - sqrt(0.5)); exit !(NF == 2 && ($1 - r) ^ 2 < 1e-12 && $2 == 0) }'
 ok $? "DS +0.01: back to the inner orbit, unstable, r = 0.541196 ($(uz re+))"
+# the same on another mesh (NTST 25, the label's 20): the tangent
+# resampled with the orbit.  Before, the restart onto another mesh took
+# DS's sign in mu instead, so the two directions came out exchanged
+for sign in + -; do
+  sed 's/^NTST = 20/NTST = 25/' "$tmp/re$sign.whirl" > "$tmp/m$sign.whirl"
+  (cd "$tmp" && "$WHIRL" run "m$sign.whirl" --out="m$sign" --no-plot --quiet > /dev/null 2> "m$sign.err")
+  ok $? "NTST 25: restart at the LP with DS ${sign}0.01 runs ($(head -1 "$tmp/m$sign.err"))"
+done
+uz m- | awk '{ r = sqrt(1 + sqrt(0.5)); exit !(NF == 2 && ($1 - r) ^ 2 < 1e-12 && $2 == 1) }'
+ok $? "NTST 25, DS -0.01: on, to the outer orbit, as on the label's mesh ($(uz m-))"
+uz m+ | awk '{ r = sqrt(1 - sqrt(0.5)); exit !(NF == 2 && ($1 - r) ^ 2 < 1e-12 && $2 == 0) }'
+ok $? "NTST 25, DS +0.01: back to the inner orbit, as on the label's mesh ($(uz m+))"
 tap_end
