@@ -246,6 +246,8 @@ static double *bc_entries(const whirl_bvp *b, double *Jx, size_t col) {
  * columns (df/dp), and the integral rows' node entries (∂g/∂u by central
  * differences at every Gauss point, times the quadrature weight and the
  * basis). */
+static int ic_dp_at(whirl_bvp *b, size_t k);
+
 static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
   const size_t n = b->n, m = b->ncol, N = b->ntst, nint = b->nint;
   const size_t colF = n * b->nnodes;
@@ -289,6 +291,13 @@ static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
             v[s] += wk * b->gu[s + nint * q] + wd * b->gd[s + nint * q];
         }
       }
+      /* the free parameters' integral entries: h w_g ∂g/∂p here (before,
+       * two whole quadratures of the conditions per free parameter) */
+      for (size_t j = 0; j < b->nfree; ++j) {
+        if ((rc = ic_dp_at(b, b->free[j])) != 0) return rc;
+        double *v = ic_entries(b, Jx, colF + j);
+        for (size_t s = 0; s < nint; ++s) v[s] += h * b->gw[g] * b->gi[s];
+      }
     }
   }
   return 0;
@@ -322,23 +331,41 @@ static int fill_boundary(whirl_bvp *b, const double *X, double *Jx) {
   return 0;
 }
 
-/* d(boundary and integral rows)/dp_k, central differences of cond_rows in
- * the full parameter k around b->pt, into out[nbc + nint]. */
-static int cond_dp(whirl_bvp *b, const double *X, size_t k, double *out) {
-  const size_t nc = b->nbc + b->nint;
+/* d(boundary rows)/dp_k by central differences of bc alone, out[nbc]. */
+static int bc_dp(whirl_bvp *b, const double *X, size_t k, double *out) {
+  const size_t last = b->nnodes - 1;
   double *pp = b->pq;
   int rc;
   memcpy(pp, b->pt, b->npar * sizeof *pp);
   const double hp = fd_step(b->pt[k]);
   pp[k] = b->pt[k] + hp;
   const double up = pp[k];
-  /* cond_rows reads pp, while model_fp is not called in between */
-  if ((rc = cond_rows(b, X, pp, b->cp)) != 0) return rc;
-  memcpy(pp, b->pt, b->npar * sizeof *pp);
+  if ((rc = b->bc(X, X + b->n * last, pp, b->fb, b->data)) != 0)
+    return user_status(b, rc, "boundary conditions");
   pp[k] = b->pt[k] - hp;
   const double dn = pp[k];
-  if ((rc = cond_rows(b, X, pp, b->cm)) != 0) return rc;
-  for (size_t s = 0; s < nc; ++s) out[s] = (b->cp[s] - b->cm[s]) / (up - dn);
+  if ((rc = b->bc(X, X + b->n * last, pp, b->fbm, b->data)) != 0)
+    return user_status(b, rc, "boundary conditions");
+  for (size_t s = 0; s < b->nbc; ++s) out[s] = (b->fb[s] - b->fbm[s]) / (up - dn);
+  return 0;
+}
+
+/* ∂g/∂p_k at the current Gauss point (after gauss_state and
+ * gauss_reference), by central differences, into b->gi. */
+static int ic_dp_at(whirl_bvp *b, size_t k) {
+  double *pp = b->pq;
+  int rc;
+  memcpy(pp, b->pt, b->npar * sizeof *pp);
+  const double hp = fd_step(b->pt[k]);
+  pp[k] = b->pt[k] + hp;
+  const double up = pp[k];
+  if ((rc = b->ic(b->u, b->uo, b->ud, b->upo, pp, b->gi, b->data)) != 0)
+    return user_status(b, rc, "integral conditions");
+  pp[k] = b->pt[k] - hp;
+  const double dn = pp[k];
+  if ((rc = b->ic(b->u, b->uo, b->ud, b->upo, pp, b->gim, b->data)) != 0)
+    return user_status(b, rc, "integral conditions");
+  for (size_t s = 0; s < b->nint; ++s) b->gi[s] = (b->gi[s] - b->gim[s]) / (up - dn);
   return 0;
 }
 
@@ -348,14 +375,14 @@ static int bvp_Fx_sparse(const double *X, const double *p, double *Jx,
   const size_t colF = b->n * b->nnodes;
   int rc;
   whirl_bvp_params(b, X, p, b->pt);
-  /* the integral rows accumulate over the intervals holding a node */
-  for (size_t col = 0; col < colF; ++col)
+  /* the integral rows accumulate over the intervals holding a node, and
+   * (free columns) over all, in fill_collocation */
+  for (size_t col = 0; col < b->nx; ++col)
     memset(ic_entries(b, Jx, col), 0, b->nint * sizeof *Jx);
   if ((rc = fill_collocation(b, X, Jx)) != 0) return rc;
   if (b->nbc && (rc = fill_boundary(b, X, Jx)) != 0) return rc;
-  for (size_t j = 0; j < b->nfree; ++j)
-    if ((rc = cond_dp(b, X, b->free[j], bc_entries(b, Jx, colF + j))) != 0)
-      return rc;
+  for (size_t j = 0; j < b->nfree && b->nbc; ++j)
+    if ((rc = bc_dp(b, X, b->free[j], bc_entries(b, Jx, colF + j))) != 0) return rc;
   return 0;
 }
 
@@ -391,9 +418,13 @@ static int bvp_Fp(const double *X, const double *p, size_t k, double *fk,
       int rc = model_fp(b, b->mesh[i] + h * b->gs[g], b->u, b->pt, k, v);
       if (rc != 0) return user_status(b, rc, "the model's parameter derivative");
       for (size_t r = 0; r < n; ++r) v[r] *= -h;
+      if (!b->nint) continue;
+      gauss_reference(b, i, g); /* the integral rows at this point */
+      if ((rc = ic_dp_at(b, k)) != 0) return rc;
+      for (size_t s = 0; s < b->nint; ++s) fk[b->ncoll + b->nbc + s] += h * b->gw[g] * b->gi[s];
     }
   }
-  return cond_dp(b, X, k, fk + b->ncoll);
+  return b->nbc ? bc_dp(b, X, k, fk + b->ncoll) : 0;
 }
 
 /* ------------------------------------------------------------ alloc */

@@ -1,7 +1,7 @@
 #!/bin/sh
 # test/bench/auto_demos_speed.sh [AUTO_DEMOS_DIR [REPEAT]] — whole-process
 # time of each AUTO-07p demo that test/auto-demos/run.sh runs (constants
-# files of IPS 1 or 2, equations in Fortran): `whirl auto DEMO` (its
+# files of IPS 1, 2 or 4, or all -1, equations in Fortran): `whirl auto DEMO` (its
 # default order of the c-files, no pictures, as AUTO) against AUTO-07p
 # itself running the demo's own script NAME.auto (Debian's auto-07p, by
 # /usr/bin/python3: its Python, gfortran compiling the demo, then the runs),
@@ -35,7 +35,7 @@ for dir in "$demos"/*/; do
   [ -f "$dir/$d.f90" ] && [ -f "$dir/$d.auto" ] || continue
   ls "$dir"/c.* > /dev/null 2>&1 || continue
   cls=$(cat "$dir"/c.* | grep -o 'IPS *= *-\{0,1\}[0-9]*' | grep -o -- '-\{0,1\}[0-9]*$' | sort -u | tr '\n' ' ')
-  case "$cls" in "1 " | "2 " | "1 2 ") ;; *) continue ;; esac
+  case "$cls" in "1 " | "2 " | "4 " | "1 2 " | "1 4 " | "2 4 " | "1 2 4 " | "-1 ") ;; *) continue ;; esac
   : > "$tmp/w" ; : > "$tmp/a"
   for r in $(seq 1 "$repeat"); do
     rm -rf "$tmp/wd" "$tmp/ad"; mkdir "$tmp/wd" "$tmp/ad"
