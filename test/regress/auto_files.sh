@@ -190,5 +190,39 @@ PY
 else
   n=$((n + 1)); echo "ok $n - # SKIP no AUTO-07p demos at $auto (set AUTO_07P_DIR)"
 fi
+
+# AUTO-07p's demo exp: a boundary-value problem (IPS = 4, Bratu)
+if [ -d "$auto/demos/exp" ]; then
+  py=${AUTO_07P_PYTHON:-/usr/lib/auto-07p/python}
+  (cd "$tmp" && "$WHIRL" auto "$auto/demos/exp" --quiet > exp.log 2>&1)
+  check $? "whirl auto exp (IPS = 4, both c-files) exits 0: $(tail -1 "$tmp/exp.log")"
+  lp=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 5' "$tmp/exp.out/b.exp.1" | head -1)
+  # AUTO's LP 8 (hyper.all): lambda, INTEGRAL u, MAX v (MAX u is taken
+  # over each one's mesh nodes: test/auto-demos/known-gaps)
+  echo "$lp" | awk '{ split("3.51383E+00 7.61901E-01 - 4.00000E+00", a, " ");
+    for (i = 1; i <= 4; i++) { if (a[i] == "-") continue; d = ($(i + 4) - a[i]) / a[i]; if (d < 0) d = -d; if (d > 1e-5) exit 1 } }'
+  check $? "b.exp.1: the fold as AUTO's LP (type 5 of BVPs), lambda, INTEGRAL u, MAX v to its 6 digits: $lp"
+  head -1 "$tmp/exp.out/s.exp.1" | awk '{ exit !($7 == 41 && $8 == 3 && $10 == 10 && $11 == 4 && $15 == 4) }'
+  check $? "s.exp.1: 41 nodes of (t, u, v) on NTST 10, NCOL 4, IPS 4 in the header: $(head -1 "$tmp/exp.out/s.exp.1")"
+  if [ -f "$py/auto/parseB.py" ] && command -v python3 >/dev/null 2>&1; then
+    (cd "$tmp/exp.out" && python3 - "$py" exp.1 exp.2 exp > "$tmp/pye.out" 2>&1 <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+from auto import parseB, parseS, parseD
+for stem in sys.argv[2:]:
+    b = parseB.parseB("b." + stem)
+    s = parseS.parseS("s." + stem)
+    parseD.parseD("d." + stem)
+    bl = sorted(b.getLabels())
+    sl = sorted(x["Label"] for x in s)
+    assert bl == sl and bl, (stem, bl, sl)
+    print(stem, len(bl), "labels", b.branches[0].coordnames)
+PY
+    )
+    check $? "AUTO's parseB, parseS, parseD read exp's b., s., d. (IPS 4): $(tr '\n' ';' < "$tmp/pye.out" | cut -c1-160)"
+  else
+    n=$((n + 1)); echo "ok $n - # SKIP AUTO's Python tools not installed (apt-get install auto-07p)"
+  fi
+fi
 echo "1..$n"
 exit $fail
