@@ -106,7 +106,9 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "      double s = f[i + lf * j];\n"
     "      for (int k = i + 1; k < n; k++) s -= a[i + la * k] * u[k + lu * j];\n"
     "      u[i + lu * j] = a[i + la * i] != 0 ? s / a[i + la * i] : 0;\n    }\n}\n"
-    "static const int icp[NPX];\n"
+    "static const int icp[NPX];\n",
+    m->ndim, m->npar, m->npar > 36 ? m->npar : 36);
+  fputs(
     "static int call(const double *x, const double *p, int ijac, double *f, double *dfdu) {\n"
     "  double par[NPX] = {0}, dfdp[N * NPX], df[N * N];\n  const int n = N;\n"
     "  memcpy(par, p, NP * sizeof *p);\n"
@@ -125,7 +127,9 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "  double par[NPX] = {0};\n  const int n = N;\n  (void)d;\n"
     "  if (!pvls_) return 0;\n"
     "  memcpy(par, p, NP * sizeof *p);\n  pvls_(&n, x, par);\n"
-    "  memcpy(p, par, NP * sizeof *p);\n  return 0;\n}\n"
+    "  memcpy(p, par, NP * sizeof *p);\n  return 0;\n}\n", f);
+  /* literals of at most ISO C's 4095 characters */
+  fputs(
     "/* BCND and ICND (boundary-value problems, IPS = 4), IJAC = 0: whirl\n"
     " * differentiates them; their DBC, DINT get room for NBC, NINT rows of\n"
     " * NDIM + NPX columns (2 NDIM for BCND) */\n"
@@ -140,8 +144,7 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "  double par[NPX] = {0}, di[1];\n  const int n = N, ni = (int)nint, ijac = 0;\n  (void)d;\n"
     "  if (!icnd_) return -1;\n"
     "  memcpy(par, p, NP * sizeof *p);\n  icnd_(&n, par, icp, &ni, u, uo, ud, upo, fi, &ijac, di);\n"
-    "  return 0;\n}\n",
-    m->ndim, m->npar, m->npar > 36 ? m->npar : 36);
+    "  return 0;\n}\n", f);
   write_names(f, "p_names", m->p_names, m->npar);
   write_names(f, "x_names", m->x_names, (size_t)m->ndim);
   fprintf(f,

@@ -68,7 +68,7 @@ static void check_settings(const whirl_run_settings *s) {
   REQUIRE(terminated(s->s, sizeof s->s));
   REQUIRE(terminated(s->plot, sizeof s->plot));
   REQUIRE(terminated(s->irs_type, sizeof s->irs_type));
-  REQUIRE(s->nicp <= 4 && s->npar <= WHIRL_RUN_MAXITEMS &&
+  REQUIRE(s->nicp <= WHIRL_RUN_MAXICP && s->npar <= WHIRL_RUN_MAXITEMS &&
           s->nu <= WHIRL_RUN_MAXITEMS && s->nuzr <= WHIRL_RUN_MAXITEMS &&
           s->nuzstop <= WHIRL_RUN_MAXITEMS && s->naxes <= 2 &&
           s->nattractors <= WHIRL_RUN_MAXITEMS);
