@@ -60,6 +60,14 @@ int whirl_system_fd_param(const whirl_system *sys, const double *x,
   return WHIRL_OK;
 }
 
+void whirl_system_scatter_dense(const whirl_system *sys, const double *Jx,
+                                double *J) {
+  const size_t n = sys->n;
+  memset(J, 0, n * n * sizeof *J);
+  for (size_t j = 0; j < n; ++j)
+    for (int q = sys->Jp[j]; q < sys->Jp[j + 1]; ++q) J[(size_t)sys->Ji[q] + n * j] = Jx[q];
+}
+
 int whirl_system_jacobian(const whirl_system *sys, const double *x,
                           const double *p, double *J, double *work) {
   const size_t n = sys->n;
@@ -71,12 +79,7 @@ int whirl_system_jacobian(const whirl_system *sys, const double *x,
      * doubles here, which the callers guarantee by sizing work as
      * max(2n, nnz). */
     rc = sys->Fx_sparse(x, p, work, sys->data);
-    if (rc == 0) {
-      memset(J, 0, n * n * sizeof *J);
-      for (size_t j = 0; j < n; ++j)
-        for (int q = sys->Jp[j]; q < sys->Jp[j + 1]; ++q)
-          J[(size_t)sys->Ji[q] + n * j] = work[q];
-    }
+    if (rc == 0) whirl_system_scatter_dense(sys, work, J);
   } else {
     return whirl_system_fd_jacobian(sys, x, p, J, work);
   }

@@ -389,13 +389,8 @@ static int bvp_Fx_sparse(const double *X, const double *p, double *Jx,
 static int bvp_Fx(const double *X, const double *p, double *J, void *data) {
   whirl_bvp *b = data;
   int rc = bvp_Fx_sparse(X, p, b->Jx, data);
-  if (rc != 0) return rc;
-  const size_t nx = b->nx;
-  memset(J, 0, nx * nx * sizeof *J);
-  for (size_t col = 0; col < nx; ++col)
-    for (int q = b->Jp[col]; q < b->Jp[col + 1]; ++q)
-      J[(size_t)b->Ji[q] + nx * col] = b->Jx[q];
-  return 0;
+  if (rc == 0) whirl_system_scatter_dense(&b->sys, b->Jx, J);
+  return rc;
 }
 
 /* dF/dp_k: −h df/dp_k in the collocation rows, differences of the

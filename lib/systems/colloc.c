@@ -275,13 +275,8 @@ static int colloc_Fx_sparse(const double *X, const double *p, double *Jx,
 static int colloc_Fx(const double *X, const double *p, double *J, void *data) {
   whirl_colloc *c = data;
   int rc = colloc_Fx_sparse(X, p, c->Jx, data);
-  if (rc != 0) return rc;
-  const size_t nx = c->nx;
-  memset(J, 0, nx * nx * sizeof *J);
-  for (size_t col = 0; col < nx; ++col)
-    for (int q = c->Jp[col]; q < c->Jp[col + 1]; ++q)
-      J[(size_t)c->Ji[q] + nx * col] = c->Jx[q];
-  return 0;
+  if (rc == 0) whirl_system_scatter_dense(&c->sys, c->Jx, J);
+  return rc;
 }
 
 /* dF/dp_k.  The forcing frequency also sets T = 2π nu/ω and the time

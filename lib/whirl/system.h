@@ -152,6 +152,11 @@ WHIRL_API int whirl_system_eval(const whirl_system *sys, const double *x,
 
 /* Dense Jacobian by the analytic callback (Fx, else Fx_sparse scattered),
  * else finite differences.  work[2n]. */
+/* The dense J[n*n] (column-major) of sparse values Jx[nnz] in sys's
+ * pattern (Jp, Ji), zeros elsewhere: what a constructor with only a sparse
+ * Jacobian gives as its dense Fx. */
+WHIRL_API void whirl_system_scatter_dense(const whirl_system *sys, const double *Jx,
+                                          double *J);
 WHIRL_API int whirl_system_jacobian(const whirl_system *sys, const double *x,
                                     const double *p, double *J, double *work);
 

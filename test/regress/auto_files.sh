@@ -150,6 +150,27 @@ cp "$tmp/fold/c.fold.1" "$tmp/b4/c.b4"
 sed '/SUBROUTINE STPNT/,$d' "$tmp/fold/fold.f90" > "$tmp/b4/b4.f90"
 bad b4 'stpnt_' "STPNT missing from the equations"
 
+# AUTO's parseB, parseS and parseD on b., s., d. of the stems $3... in
+# directory $1 (output in $2): the same labels in b. and s., each non-empty
+auto_parse() {
+  dir=$1 out=$2
+  shift 2
+  (cd "$dir" && python3 - "$py" "$@" > "$out" 2>&1 <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+from auto import parseB, parseS, parseD
+for stem in sys.argv[2:]:
+    b = parseB.parseB("b." + stem)
+    s = parseS.parseS("s." + stem)
+    parseD.parseD("d." + stem)
+    bl = sorted(b.getLabels())
+    sl = sorted(x["Label"] for x in s)
+    assert bl == sl and bl, (stem, bl, sl)
+    print(stem, len(bl), "labels", b.branches[0].coordnames)
+PY
+  )
+}
+
 # AUTO-07p's demo ab
 auto=${AUTO_07P_DIR:-$top_srcdir/../shared/auto-07p}
 if [ -d "$auto/demos/ab" ]; then
@@ -169,20 +190,7 @@ if [ -d "$auto/demos/ab" ]; then
   check $? "b.ab: both runs, labels numbered on 1..$((nl + n2 - 1)) as AUTO does, the restart's start unlabelled ($labs)"
   py=${AUTO_07P_PYTHON:-/usr/lib/auto-07p/python}
   if [ -f "$py/auto/parseB.py" ] && command -v python3 >/dev/null 2>&1; then
-    (cd "$tmp/ab.out" && python3 - "$py" ab.1 ab.2@2 ab > "$tmp/py.out" 2>&1 <<'PY'
-import sys
-sys.path.insert(0, sys.argv[1])
-from auto import parseB, parseS, parseD
-for stem in sys.argv[2:]:
-    b = parseB.parseB("b." + stem)
-    s = parseS.parseS("s." + stem)
-    parseD.parseD("d." + stem)
-    bl = sorted(b.getLabels())
-    sl = sorted(x["Label"] for x in s)
-    assert bl == sl and bl, (stem, bl, sl)
-    print(stem, len(bl), "labels", b.branches[0].coordnames)
-PY
-    )
+    auto_parse "$tmp/ab.out" "$tmp/py.out" ab.1 ab.2@2 ab
     check $? "AUTO's parseB, parseS, parseD read b., s., d. of both runs and the merged b.ab, s.ab, d.ab: $(tr '\n' ';' < "$tmp/py.out" | cut -c1-160)"
   else
     n=$((n + 1)); echo "ok $n - # SKIP AUTO's Python tools not installed (apt-get install auto-07p)"
@@ -205,20 +213,7 @@ if [ -d "$auto/demos/exp" ]; then
   head -1 "$tmp/exp.out/s.exp.1" | awk '{ exit !($7 == 41 && $8 == 3 && $10 == 10 && $11 == 4 && $15 == 4) }'
   check $? "s.exp.1: 41 nodes of (t, u, v) on NTST 10, NCOL 4, IPS 4 in the header: $(head -1 "$tmp/exp.out/s.exp.1")"
   if [ -f "$py/auto/parseB.py" ] && command -v python3 >/dev/null 2>&1; then
-    (cd "$tmp/exp.out" && python3 - "$py" exp.1 exp.2 exp > "$tmp/pye.out" 2>&1 <<'PY'
-import sys
-sys.path.insert(0, sys.argv[1])
-from auto import parseB, parseS, parseD
-for stem in sys.argv[2:]:
-    b = parseB.parseB("b." + stem)
-    s = parseS.parseS("s." + stem)
-    parseD.parseD("d." + stem)
-    bl = sorted(b.getLabels())
-    sl = sorted(x["Label"] for x in s)
-    assert bl == sl and bl, (stem, bl, sl)
-    print(stem, len(bl), "labels", b.branches[0].coordnames)
-PY
-    )
+    auto_parse "$tmp/exp.out" "$tmp/pye.out" exp.1 exp.2 exp
     check $? "AUTO's parseB, parseS, parseD read exp's b., s., d. (IPS 4): $(tr '\n' ';' < "$tmp/pye.out" | cut -c1-160)"
   else
     n=$((n + 1)); echo "ok $n - # SKIP AUTO's Python tools not installed (apt-get install auto-07p)"

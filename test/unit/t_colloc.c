@@ -209,6 +209,20 @@ static int correct(whirl_cont *ct, const double *X, const double *p) {
 /* ------------------------------------------------------------------------
  * 1. Jacobians */
 
+/* A closed curve of the Lorenz model, not a solution, plus a random
+ * perturbation of every node: X[nx] (period 0.7) for Jacobian checks. */
+static void lorenz_curve(whirl_colloc *c, size_t nx, double *X) {
+  double smp[3 * 32];
+  for (size_t k = 0; k < 32; ++k) {
+    const double th = 2.0 * PI * (double)k / 32.0;
+    smp[3 * k] = 10.0 * cos(th) + 3.0;
+    smp[3 * k + 1] = 15.0 * sin(th);
+    smp[3 * k + 2] = 200.0 + 30.0 * cos(2.0 * th);
+  }
+  whirl_colloc_from_samples(c, smp, 32, 0.7, X);
+  for (size_t q = 0; q + 1 < nx; ++q) X[q] += tap_urand(-1.0, 1.0);
+}
+
 static void test_jacobians(void) {
   char err[256];
   whirl_colloc_options o;
@@ -229,16 +243,8 @@ static void test_jacobians(void) {
     ok(s->spectrum_kind == WHIRL_SPEC_MULTIPLIERS && s->nspec == 2 &&
            s->accept != NULL,
        "autonomous: multipliers, nspec n-1 = 2, accept hook");
-    /* a closed curve, not a solution, plus a perturbation of every node */
-    double smp[3 * 32], *X = malloc(nx * sizeof *X);
-    for (size_t k = 0; k < 32; ++k) {
-      const double th = 2.0 * PI * (double)k / 32.0;
-      smp[3 * k] = 10.0 * cos(th) + 3.0;
-      smp[3 * k + 1] = 15.0 * sin(th);
-      smp[3 * k + 2] = 200.0 + 30.0 * cos(2.0 * th);
-    }
-    whirl_colloc_from_samples(c, smp, 32, 0.7, X);
-    for (size_t q = 0; q + 1 < nx; ++q) X[q] += tap_urand(-1.0, 1.0);
+    double *X = malloc(nx * sizeof *X);
+    lorenz_curve(c, nx, X);
     const double p[3] = {10.0, 250.0, 8.0 / 3.0};
     double e_dense = NAN, e_sparse = NAN;
     int rc1 = whirl_system_check_jacobian(s, X, p, &e_dense);
@@ -392,15 +398,8 @@ static void test_fixed_period(void) {
     if (!c) continue;
     const whirl_system *s = whirl_colloc_system(c);
     const size_t nx = whirl_colloc_size(c);
-    double smp[3 * 32], *X = malloc(nx * sizeof *X);
-    for (size_t k = 0; k < 32; ++k) {
-      const double th = 2.0 * PI * (double)k / 32.0;
-      smp[3 * k] = 10.0 * cos(th) + 3.0;
-      smp[3 * k + 1] = 15.0 * sin(th);
-      smp[3 * k + 2] = 200.0 + 30.0 * cos(2.0 * th);
-    }
-    whirl_colloc_from_samples(c, smp, 32, 0.7, X);
-    for (size_t q = 0; q + 1 < nx; ++q) X[q] += tap_urand(-1.0, 1.0);
+    double *X = malloc(nx * sizeof *X);
+    lorenz_curve(c, nx, X);
     X[nx - 1] = 250.0; /* rho */
     const double p[3] = {10.0, -77.0, 8.0 / 3.0}; /* p[1] is X's */
     double pf[3];
@@ -467,15 +466,8 @@ static void test_structured(void) {
   whirl_colloc *c = whirl_colloc_alloc(&lorenz, &o, err, sizeof err);
   if (c) {
     const size_t nx = whirl_colloc_size(c);
-    double smp[3 * 32], *X = malloc(nx * sizeof *X);
-    for (size_t k = 0; k < 32; ++k) {
-      const double th = 2.0 * PI * (double)k / 32.0;
-      smp[3 * k] = 10.0 * cos(th) + 3.0;
-      smp[3 * k + 1] = 15.0 * sin(th);
-      smp[3 * k + 2] = 200.0 + 30.0 * cos(2.0 * th);
-    }
-    whirl_colloc_from_samples(c, smp, 32, 0.7, X);
-    for (size_t q = 0; q + 1 < nx; ++q) X[q] += tap_urand(-1.0, 1.0);
+    double *X = malloc(nx * sizeof *X);
+    lorenz_curve(c, nx, X);
     const double p[3] = {10.0, 250.0, 8.0 / 3.0};
     bsolver_vs_umfpack("Lorenz NTST 12 NCOL 4, k = rho", c, X, p, 1);
     free(X);
