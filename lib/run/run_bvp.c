@@ -95,14 +95,28 @@ static void apply_run_file_par(run_ctx *R) {
     R->par[run_par_index(R, &R->s->par[i].ref)] = R->s->par[i].value;
 }
 
+/* Does the label so's branch have the run's free parameters, the
+ * continued one and the others in the same order?  Its tangent is a
+ * direction in (x, those parameters); with another set (c.obv.3 frees
+ * PAR(2) where its label's branch had PAR(16)) it is no direction of the
+ * new problem, and the branch starts from the new problem's null vector,
+ * as AUTO's STPNBV1 decides (NODIR when NFPR or any ICP(i) differs). */
+static int same_free_parameters(const whirl_solution *so, int icp,
+                                const whirl_bvp_options *o) {
+  if (so->icp != icp || (size_t)so->nfree != o->nfree) return 0;
+  for (size_t j = 0; j < o->nfree; j++)
+    if ((size_t)so->free_par[j] != o->free[j]) return 0;
+  return 1;
+}
+
 /* The start X from a label so: on its mesh, or resampled from it — and
  * its tangent into D when it has one fitting the run (*tan set): a restart
  * goes on along the branch as AUTO's does, onto another NTST too. */
 static int start_from_label(run_ctx *R, const whirl_solution *so, whirl_bvp *bvp,
                             const whirl_bvp_options *o, double *X, double *D, int *tan) {
   const size_t nb = whirl_bvp_size(bvp);
-  *tan = R->s->isw == 1 && so->kind == WHIRL_SOL_BVP && so->tan && so->icp == R->icp[0] &&
-         (size_t)so->nfree == o->nfree;
+  *tan = R->s->isw == 1 && so->kind == WHIRL_SOL_BVP && so->tan &&
+         same_free_parameters(so, R->icp[0], o);
   char err[512];
   if (so->kind != WHIRL_SOL_BVP) {
     run_fail(R, WHIRL_RK_IRS, "IRS: label %d is %s; IPS = 4 restarts from a "

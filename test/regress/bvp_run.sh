@@ -77,7 +77,47 @@ const whirl_model whirl_model_def = {
     .par0 = par0, .stpnt = stpnt, .forcing_param = -1, .bcnd = bcnd, .icnd = icnd,
     .description = "u' = a u, u(0) = 1, int u = c"};
 EOF
-for m in bratu expo; do
+# u' = a u - b, u(0) = 1, int u = c: with a = a0 fixed and b free,
+# int u = g(a0) - b K(a0), g(a) = (e^a - 1)/a, K(a) = (e^a - 1 - a)/a^2.
+# The model refuses b < -0.01 (a domain error, recoverable by a shorter
+# step, as obv's overflowing exp).
+cat > "$tmp/expob.c" <<'EOF'
+#include <whirl/model.h>
+static int rhs(double t, const double *u, const double *p, double *f, void *d) {
+  (void)t, (void)d;
+  if (p[2] < -0.01) return 1;
+  f[0] = p[0] * u[0] - p[2];
+  return 0;
+}
+static int stpnt(double t, double *u, double *p, void *d) {
+  (void)d;
+  u[0] = 1.0 + t;
+  p[0] = 0.5, p[1] = 1.5, p[2] = 0;
+  return 0;
+}
+static int bcnd(size_t nbc, const double *u0, const double *u1, const double *p,
+                double *fb, void *d) {
+  (void)nbc, (void)u1, (void)p, (void)d;
+  fb[0] = u0[0] - 1.0;
+  return 0;
+}
+static int icnd(size_t nint, const double *u, const double *uo, const double *ud,
+                const double *upo, const double *p, double *fi, void *d) {
+  (void)nint, (void)uo, (void)ud, (void)upo, (void)d;
+  fi[0] = u[0] - p[1];
+  return 0;
+}
+static const char *const xn[] = {"u"};
+static const char *const pn[] = {"a", "c", "b"};
+static const double par0[] = {0.5, 1.5, 0};
+const whirl_model whirl_model_def = {
+    .abi = WHIRL_MODEL_ABI,
+    .problem = {.name = "expob", .n = 1, .npar = 3, .rhs = rhs, .autonomous = 1,
+                .x_names = xn, .p_names = pn},
+    .par0 = par0, .stpnt = stpnt, .forcing_param = -1, .bcnd = bcnd, .icnd = icnd,
+    .description = "u' = a u - b, u(0) = 1, int u = c"};
+EOF
+for m in bratu expo expob; do
   $CC -std=c11 -O2 -shared -fPIC -I"$top_srcdir/lib" -o "$tmp/$m.so" "$tmp/$m.c" -lm
   ok $? "$m plug-in builds"
 done
@@ -118,6 +158,22 @@ for c in 2 3.5; do
 done
 grep -q "free a" "$tmp/ex.out/run.log"
 ok $? "run.log names the free parameter"
+# A restart that frees another parameter (ICP = [c, b] from a label of
+# ICP = [c, a], AUTO's c.obv.3): the label's tangent is a direction in
+# (u, c, a), none of the new problem; the branch starts from the new null
+# vector (AUTO's NODIR).  Taken as it was, its a-component moved b below
+# -0.01 at the first step, which DSMIN = |DS| (as c.obv.3's) cannot shorten:
+# "model domain error persisted down to DSMIN".
+printf 'model = expob.so\nIPS = 4\nICP = [c, a]\nNBC = 1\nNINT = 1\nNTST = 10\nDS = 0.05\nDSMAX = 0.2\nNMX = 100\nUZR = {c: [2]}\nUZSTOP = {c: [2]}\n' > "$tmp/eb.whirl"
+printf 'model = expob.so\nIPS = 4\nICP = [c, b]\nNBC = 1\nNINT = 1\nNTST = 10\nS = eb.out\nIRS = UZ1\nDS = -0.05\nDSMIN = 0.05\nDSMAX = 0.2\nNMX = 100\nUZR = {c: [1.8]}\nUZSTOP = {c: [1.8]}\n' > "$tmp/eb2.whirl"
+(cd "$tmp" && "$WHIRL" run eb.whirl --no-plot --quiet > /dev/null 2> eb.err &&
+  "$WHIRL" run eb2.whirl --no-plot --quiet > /dev/null 2> eb2.err)
+ok $? "restart with another free parameter, ICP = [c, b] from ICP = [c, a] ($(cat "$tmp/eb.err" "$tmp/eb2.err" | head -1))"
+a0=$(col eb.out a UZ c 2)
+b=$(col eb2.out b UZ c 1.8)
+echo "$a0 $b" | awk '{ a = $1; g = (exp(a) - 1) / a; K = (exp(a) - 1 - a) / (a * a);
+  d = $2 - (g - 1.8) / K; exit !(NF == 2 && d * d < 1e-16) }'
+ok $? "at c = 1.8 the free b = (g(a0) - c)/K(a0) (a0 = $a0, b = $b)"
 # bad input: one message, exit 2
 bad() {
   printf "$2" > "$tmp/bad.whirl"
