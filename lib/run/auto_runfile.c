@@ -289,8 +289,8 @@ static int user_points(ctx *c) {
 
 /* THL = {k: w} (parameters, PERIOD) and THU = {k: w} (state components):
  * the weights of the arclength norm, copied where they name what the model
- * has; THL of a parameter beyond NPAR (e.g. PAR(11) of equilibria) is
- * noted and left out. */
+ * has (an empty THL too); THL of a parameter beyond NPAR (e.g. PAR(11) of
+ * equilibria) is noted and left out. */
 static int arclength_weights(ctx *c) {
   int ndim = 0;
   whirl_auto_constants_int(c->ac, "NDIM", &ndim);
@@ -320,7 +320,10 @@ static int arclength_weights(ctx *c) {
     if (used >= sizeof dict || nleft >= sizeof left)
       return whirl_auto_constants_fail(c->ac, whirl_auto_constants_line(c->ac, keys[k]),
                                        "%s: too many weights", keys[k]);
-    if (used) put(c->t, "%s    = {%s}\n", keys[k], dict);
+    /* THL = {} given is kept: AUTO's default for orbits without a THL
+     * line is THL = {11: 0}, with an empty one the period is weighted 1 */
+    if (used || (!k && !nleft && whirl_auto_constants_line(c->ac, keys[k]) > 0))
+      put(c->t, "%s    = {%s}\n", keys[k], dict);
     if (nleft) put(c->t, "# note: %s on PAR(%s): not a parameter of the model, ignored\n",
                    keys[k], left);
   }

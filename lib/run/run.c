@@ -207,25 +207,46 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
   return 0;
 }
 
-/* AUTO's THL and THU as the weights of the arclength norm (whirl_cont
- * options p_weight, x_weight; AUTO-07p manual, THL, THU): THU on a state
- * component (at every mesh node of an orbit), THL on the continuation
- * parameter and on the period of an autonomous orbit (PERIOD, AUTO's
- * PAR(11): THL = {11: 0} takes it out of the step length).  The weights are
- * of the squares, as AUTO's; the unknowns of fold and Hopf loci and of
- * harmonic balance keep weight 1.  0, -1 (memory), -2 (bad input, said);
- * *xw is NULL or malloc'd (the caller frees it after whirl_cont_alloc). */
+/* THL of parameter k (AUTO's default 1), or -1 when none is given. */
+static double thl_of(const whirl_run_settings *s, run_ctx *R, int k) {
+  for (size_t i = 0; i < s->nthl; i++)
+    if (run_par_index(R, &s->thl[i].ref) == k) return s->thl[i].value;
+  return -1;
+}
+
+/* AUTO's arclength norm (AUTO-07p manual, THL, THU; bvp.f90, RNRMSQP):
+ *   |(u, p)|^2 = sum_i THU_i int_0^1 u_i(t)^2 dt + sum_k THL_k p_k^2
+ * over the state and every free parameter (the period of an autonomous
+ * orbit is PAR(11), the free parameters of a boundary-value problem are
+ * among them), weights of the squares, default 1.  whirl measures a
+ * collocation or BVP step on its M = NTST NCOL + 1 node values, whose sum
+ * of squares is about M times the integral, and scales DS, DSMIN, DSMAX by
+ * sqrt(M) (ds_scale): the parameters' weights are then sqrt(M) sqrt(THL),
+ * the states' sqrt(THU), so that a step moves each as AUTO's does.  (With
+ * weight 1 on the parameters, a step that mostly changes parameters moved
+ * them sqrt(M) times as far as AUTO's: 13 times on kar's NTST 40, NCOL 4,
+ * whose Newton then failed where the parameter crosses 0.)  Equilibria are
+ * measured as AUTO's with no scale; the unknowns of fold and Hopf loci and
+ * of harmonic balance keep weight 1.  0, -1 (memory), -2 (bad input,
+ * said); *xw is NULL or malloc'd (the caller frees it after
+ * whirl_cont_alloc). */
 static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *o,
                           double **xw) {
   const whirl_run_settings *s = R->s;
   *xw = NULL;
-  if (!s->nthl && !s->nthu) return 0;
-  const int base = (b->kind == WHIRL_SOL_EQ && b->sys->n == R->n) ||
-                   (b->kind == WHIRL_SOL_COLLOC && b->sys == whirl_colloc_system(b->colloc));
+  const int orbit_base = b->kind == WHIRL_SOL_COLLOC && b->sys == whirl_colloc_system(b->colloc);
+  const int bvp_base = b->kind == WHIRL_SOL_BVP && b->sys == whirl_bvp_system(b->bvp);
+  if (!s->nthl && !s->nthu && !orbit_base && !bvp_base) return 0;
+  const int base = (b->kind == WHIRL_SOL_EQ && b->sys->n == R->n) || orbit_base || bvp_base;
   const int orbit = b->kind == WHIRL_SOL_COLLOC, aut = orbit && R->model->forcing_param < 0;
   /* at a fixed period X's last unknown is a parameter: its THL, not PERIOD's */
   const int fq = orbit ? whirl_colloc_free_param(b->colloc) : -1;
-  double wT = 1.0;
+  const size_t nfree = bvp_base ? (size_t)(s->nbc + s->nint) - R->n : 0;
+  const double sM = orbit_base || bvp_base ? b->ds_scale : 1.0;
+  /* AUTO's default without a THL line in an autonomous orbit's run is
+   * THL = {11: 0}, the period out of the step (main.f90); a THL given,
+   * even empty (THL = {}), leaves it at 1 */
+  double wT = aut && fq < 0 && !whirl_runfile_given(R->rf, WHIRL_RK_THL) ? 0.0 : 1.0;
   for (size_t i = 0; i < s->nthl; i++) {
     const whirl_run_value *v = &s->thl[i];
     int k = run_par_index(R, &v->ref);
@@ -239,21 +260,21 @@ static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *
       run_fail(R, WHIRL_RK_THL, "THL: '%s' is not a parameter of model '%s'",
                v->ref.index ? nm : v->ref.name, R->prob.name);
       return -2;
-    } else if (k == b->icp) {
-      /* 0 as AUTO allows (um2: THL = {Period: 0} on ICP(1)): the step is
-       * measured on the unknowns alone, which the core then checks are
-       * weighted */
-      if (!(v->value >= 0)) {
-        run_fail(R, WHIRL_RK_THL, "THL: the continuation parameter's weight must be >= 0");
-        return -2;
-      }
-      o->p_weight = sqrt(v->value);
+    } else if (k == b->icp && !(v->value >= 0)) {
+      run_fail(R, WHIRL_RK_THL, "THL: the continuation parameter's weight must be >= 0");
+      return -2;
     }
   }
-  if (!base || (wT == 1.0 && !s->nthu)) return 0;
+  /* 0 as AUTO allows (um2: THL = {Period: 0} on ICP(1)): the step is
+   * measured on the unknowns alone, which the core then checks are
+   * weighted */
+  const double wp = thl_of(s, R, b->icp);
+  o->p_weight = sM * sqrt(wp >= 0 ? wp : 1.0);
+  if (!base || (wT == 1.0 && !s->nthu && sM == 1.0)) return 0;
   *xw = malloc(b->nb * sizeof **xw);
   if (!*xw) return -1;
   for (size_t i = 0; i < b->nb; i++) (*xw)[i] = 1.0;
+  const size_t nodes = b->nb - (size_t)aut - nfree; /* the state's unknowns */
   for (size_t i = 0; i < s->nthu; i++) {
     const int xi = run_state_index(R, &s->thu[i].ref);
     if (xi < 0) {
@@ -264,9 +285,13 @@ static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *
       free(*xw), *xw = NULL;
       return -2;
     }
-    for (size_t j = (size_t)xi; j < b->nb - (size_t)aut; j += R->n) (*xw)[j] = sqrt(s->thu[i].value);
+    for (size_t j = (size_t)xi; j < nodes; j += R->n) (*xw)[j] = sqrt(s->thu[i].value);
   }
-  if (aut) (*xw)[b->nb - 1] = sqrt(wT);
+  if (aut) (*xw)[b->nb - 1] = sM * sqrt(wT);
+  for (size_t j = 0; j < nfree; j++) { /* a BVP's free parameters, ICP(2) ... */
+    const double w = thl_of(s, R, R->icp[j + 1]);
+    (*xw)[nodes + j] = sM * sqrt(w >= 0 ? w : 1.0);
+  }
   o->x_weight = *xw;
   for (size_t i = 0; i < b->nb; i++) if ((*xw)[i] > 0) return 0;
   run_fail(R, s->nthu ? WHIRL_RK_THU : WHIRL_RK_THL, "THL, THU: every weight of the "
@@ -865,9 +890,10 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
       /* as for equilibria (run_tangent_start): along the stored tangent,
        * which the plain start's Newton at fixed parameter cannot do at an
        * LP of orbits (singular there) */
-      if (s->isw == 1 && so->tan && so->icp == b->icp && !pd && !fixed_T) {
+      if (so->tan && so->icp == b->icp && !pd && !fixed_T) {
         memcpy(O->D, so->tan, (b->nb + 1) * sizeof *O->D); /* O->D: nb + 1 */
-        b->dir = O->D;
+        b->tan0 = O->D;
+        if (s->isw == 1) b->dir = O->D;
       }
     } else { /* another mesh: resample the stored orbit */
       whirl_colloc_options c0 = co;
@@ -889,9 +915,11 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
        * an LP of orbits.  First, as converting sets the phase reference
        * (then the orbit's); not for turning angles, whose ramp the samples
        * would take for the tangent's */
-      if (s->isw == 1 && so->tan && so->icp == b->icp && !pd && !fixed_T && !nrot &&
-          resample_tangent(so, &src, &dst, R->prob.autonomous, b->nb, O->D) == 0)
-        b->dir = O->D;
+      if (so->tan && so->icp == b->icp && !pd && !fixed_T && !nrot &&
+          resample_tangent(so, &src, &dst, R->prob.autonomous, b->nb, O->D) == 0) {
+        b->tan0 = O->D;
+        if (s->isw == 1) b->dir = O->D;
+      }
       if (whirl_periodic_convert(&src, so->x, so->par, &dst, 400, O->X))
         return -1;
       whirl_colloc_free(O->colloc2);
@@ -1004,9 +1032,17 @@ static int switch_or_locus(run_ctx *R, run_objects *O, branch_spec *b) {
     /* a BP; or a map's PD, a pitchfork of the doubled map (start_equilibria
      * built f^2k), whose branch of period k is the label's own */
     if (!strcmp(so->ty, "BP") || map_pd) {
-      if (!so->tan || so->icp != b->icp) {
+      /* the label's tangent on this run's unknowns: resampled by the
+       * start onto another mesh (tan0), or the stored one where the
+       * unknowns are the label's own (equilibria, maps) */
+      const double *t0 = b->tan0;
+      if (!t0 && b->kind != WHIRL_SOL_BVP && b->kind != WHIRL_SOL_COLLOC && so->tan &&
+          so->nx == b->nb)
+        t0 = so->tan;
+      if (!t0 || so->icp != b->icp) {
         run_fail(R, WHIRL_RK_ISW, "ISW = -1 at the %s of label %d needs its "
-                 "tangent and the same continuation parameter '%s'", so->ty, so->label,
+                 "tangent, on this run's mesh and free parameters, and the same "
+                 "continuation parameter '%s'", so->ty, so->label,
                  R->pnames[so->icp]);
         return -2;
       }
@@ -1017,7 +1053,7 @@ static int switch_or_locus(run_ctx *R, run_objects *O, branch_spec *b) {
       bp.npar = R->npar;
       bp.x = b->x0;
       bp.p = p0;
-      bp.t = so->tan;
+      bp.t = t0;
       bp.stable = -1;
       bp.n_unstable = -1;
       b->bp = &bp;

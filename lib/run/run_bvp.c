@@ -111,12 +111,12 @@ static int same_free_parameters(const whirl_solution *so, int icp,
 
 /* The start X from a label so: on its mesh, or resampled from it — and
  * its tangent into D when it has one fitting the run (*tan set): a restart
- * goes on along the branch as AUTO's does, onto another NTST too. */
+ * goes on along the branch as AUTO's does, onto another NTST too, and a
+ * switch at a BP (ISW = -1) starts from it. */
 static int start_from_label(run_ctx *R, const whirl_solution *so, whirl_bvp *bvp,
                             const whirl_bvp_options *o, double *X, double *D, int *tan) {
   const size_t nb = whirl_bvp_size(bvp);
-  *tan = R->s->isw == 1 && so->kind == WHIRL_SOL_BVP && so->tan &&
-         same_free_parameters(so, R->icp[0], o);
+  *tan = so->kind == WHIRL_SOL_BVP && so->tan && same_free_parameters(so, R->icp[0], o);
   char err[512];
   if (so->kind != WHIRL_SOL_BVP) {
     run_fail(R, WHIRL_RK_IRS, "IRS: label %d is %s; IPS = 4 restarts from a "
@@ -191,8 +191,12 @@ int run_bvp_start(run_ctx *R, const whirl_solution *so, whirl_bvp **bvp, double 
     for (size_t j = 0; j < o.nfree; j++) (*X)[n0 + j] = R->par[free_par[j]];
     whirl_bvp_set_reference(*bvp, *X);
     /* along the stored tangent, as for the other classes
-     * (run_tangent_start); the sign of DS is applied by the caller */
-    if (tan) b->dir = *D;
+     * (run_tangent_start); the sign of DS is applied by the caller.  At a
+     * BP (ISW = -1) the switch starts from it, resampled onto the run's
+     * mesh (before, the label's own array was read with the run's size:
+     * past its end on another NTST, c.lin.2) */
+    if (tan) b->tan0 = *D;
+    if (tan && s->isw == 1) b->dir = *D;
     b->kind = WHIRL_SOL_BVP;
     b->bvp = *bvp;
     b->sys = whirl_bvp_system(*bvp);

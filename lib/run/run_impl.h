@@ -162,6 +162,10 @@ typedef struct branch_spec {
   /* start: Newton from (x0, p0); or along dir from exact (x0, p0); or a
    * BP switch from `bp` */
   const double *x0, *p0, *dir;
+  /* the label's tangent on the run's unknowns (nb + 1: resampled when the
+   * run has another mesh), where one fits the run (the same free
+   * parameters), else NULL: what ISW = -1 switches from at a BP */
+  const double *tan0;
   const whirl_point *bp;
   int dir_sign;            /* +1 / -1: direction of the parameter at the
                               start; 0: the sign of DS */

@@ -117,7 +117,47 @@ const whirl_model whirl_model_def = {
     .par0 = par0, .stpnt = stpnt, .forcing_param = -1, .bcnd = bcnd, .icnd = icnd,
     .description = "u' = a u - b, u(0) = 1, int u = c"};
 EOF
-for m in bratu expo expob; do
+# u'' = -(pi k)^2 u, u(0) = u(1) = 0, int u^2 = q (AUTO's demo lin): the
+# trivial branch u = 0 has BPs at k = 1, 2, ...; the branch of k = 1 is
+# u = a sin(pi t) at k = 1, q = a^2/2.
+cat > "$tmp/eig.c" <<'EOF'
+#include <whirl/model.h>
+static int rhs(double t, const double *u, const double *p, double *f, void *d) {
+  (void)t, (void)d;
+  f[0] = u[1];
+  f[1] = -(p[0] * WHIRL_PI) * (p[0] * WHIRL_PI) * u[0];
+  return 0;
+}
+static int stpnt(double t, double *u, double *p, void *d) {
+  (void)t, (void)d;
+  u[0] = u[1] = 0.0;
+  p[0] = p[1] = 0.0;
+  return 0;
+}
+static int bcnd(size_t nbc, const double *u0, const double *u1, const double *p,
+                double *fb, void *d) {
+  (void)nbc, (void)p, (void)d;
+  fb[0] = u0[0];
+  fb[1] = u1[0];
+  return 0;
+}
+static int icnd(size_t nint, const double *u, const double *uo, const double *ud,
+                const double *upo, const double *p, double *fi, void *d) {
+  (void)nint, (void)uo, (void)ud, (void)upo, (void)d;
+  fi[0] = u[0] * u[0] - p[1];
+  return 0;
+}
+static const char *const xn[] = {"u", "v"};
+static const char *const pn[] = {"k", "q"};
+static const double par0[] = {0, 0};
+const whirl_model whirl_model_def = {
+    .abi = WHIRL_MODEL_ABI,
+    .problem = {.name = "eig", .n = 2, .npar = 2, .rhs = rhs, .autonomous = 1,
+                .x_names = xn, .p_names = pn},
+    .par0 = par0, .stpnt = stpnt, .forcing_param = -1, .bcnd = bcnd, .icnd = icnd,
+    .description = "u'' = -(pi k)^2 u, u(0) = u(1) = 0, int u^2 = q"};
+EOF
+for m in bratu expo expob eig; do
   $CC -std=c11 -O2 -shared -fPIC -I"$top_srcdir/lib" -o "$tmp/$m.so" "$tmp/$m.c" -lm
   ok $? "$m plug-in builds"
 done
@@ -174,6 +214,23 @@ b=$(col eb2.out b UZ c 1.8)
 echo "$a0 $b" | awk '{ a = $1; g = (exp(a) - 1) / a; K = (exp(a) - 1 - a) / (a * a);
   d = $2 - (g - 1.8) / K; exit !(NF == 2 && d * d < 1e-16) }'
 ok $? "at c = 1.8 the free b = (g(a0) - c)/K(a0) (a0 = $a0, b = $b)"
+# Switching at a BP (ISW = -1) onto another mesh (NTST 5 -> 6, AUTO's
+# c.lin.2): the label's tangent resampled with the solution; before, its
+# array was read with the new mesh's size, past its end (ASan: a heap
+# overflow; without, a start that depended on the heap: "zero or
+# non-finite direction").
+printf 'model = eig.so\nIPS = 4\nICP = [k, q]\nNBC = 2\nNINT = 1\nNTST = 5\nISP = 2\nDS = 0.2\nDSMAX = 0.2\nNMX = 100\nUZSTOP = {k: [1.5]}\n' > "$tmp/lin.whirl"
+printf 'model = eig.so\nIPS = 4\nICP = [k, q]\nNBC = 2\nNINT = 1\nNTST = 6\nISP = 2\nS = lin.out\nIRS = BP1\nISW = -1\nDS = 0.2\nDSMAX = 0.5\nNMX = 100\nUZSTOP = {q: [1]}\n' > "$tmp/lin2.whirl"
+(cd "$tmp" && "$WHIRL" run lin.whirl --no-plot --quiet > /dev/null 2> lin.err &&
+  "$WHIRL" run lin2.whirl --no-plot --quiet > /dev/null 2> lin2.err)
+ok $? "ISW = -1 at the trivial branch's BP onto NTST 6 ($(cat "$tmp/lin.err" "$tmp/lin2.err" | head -1))"
+k1=$(col lin.out k BP | head -1)
+echo "$k1" | awk '{ d = $1 - 1; exit !(d * d < 1e-14) }'
+ok $? "the first BP at k = 1 ($k1)"
+kq=$(col lin2.out k UZ q 1)
+mu=$(col lin2.out max_u UZ q 1)
+echo "$kq $mu" | awk '{ d = $1 - 1; e = $2 - sqrt(2); exit !(NF == 2 && d * d < 1e-14 && e * e < 1e-14) }'
+ok $? "the branch u = a sin(pi t): at q = 1, k = 1 and max u = sqrt 2 ($kq, $mu)"
 # bad input: one message, exit 2
 bad() {
   printf "$2" > "$tmp/bad.whirl"
