@@ -58,6 +58,8 @@ typedef struct pdisc {
   whirl_colloc *c;
   const whirl_system *sys;
   size_t size;
+  double *xw; /* collocation of an autonomous orbit: the arclength weights,
+                 0 on the period (AUTO's default THL = {11: 0}) */
 } pdisc;
 
 static int pd_alloc(pdisc *d, const whirl_problem *prob, int forcing_param,
@@ -90,6 +92,11 @@ static int pd_alloc(pdisc *d, const whirl_problem *prob, int forcing_param,
     if (!d->c) return WHIRL_EINVAL;
     d->sys = whirl_colloc_system(d->c);
     d->size = whirl_colloc_size(d->c);
+    if (forcing_param < 0) { /* the period is the last unknown */
+      if (!(d->xw = malloc(d->size * sizeof *d->xw))) return WHIRL_ENOMEM;
+      for (size_t i = 0; i + 1 < d->size; ++i) d->xw[i] = 1.0;
+      d->xw[d->size - 1] = 0.0;
+    }
   } else {
     return WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL,
                         "periodic orbits need method hbm or colloc (got %d)",
@@ -101,6 +108,7 @@ static int pd_alloc(pdisc *d, const whirl_problem *prob, int forcing_param,
 static void pd_free(pdisc *d) {
   whirl_hbm_free(d->h);
   whirl_colloc_free(d->c);
+  free(d->xw);
   memset(d, 0, sizeof *d);
 }
 
@@ -232,20 +240,18 @@ static int add_branch(whirl_sfd_periodic *out, const pdisc *d,
   return WHIRL_OK;
 }
 
-static void cont_defaults(whirl_cont_options *co,
+static void cont_defaults(whirl_cont_options *co, const pdisc *d,
                           const whirl_sfd_periodic_options *o) {
-  /* The core measures arclength in the Euclidean norm of the unknowns; the
-   * NTST·NCOL + 1 node values of collocation make that norm sqrt(nodes)
-   * times the orbit's L2 norm (which AUTO uses), so the steps are scaled to
-   * mean the same thing for every discretisation. */
-  const double sc = o->method == WHIRL_SFD_METHOD_COLLOC
-                        ? sqrt((double)(o->ntst * o->ncol + 1))
-                        : 1.0;
+  /* Collocation measures a step by the orbit's integral over the period
+   * (its norm weights, as AUTO), harmonic balance by its coefficients: ds
+   * means the same for every discretisation of collocation, with no scale
+   * by the node count. */
   whirl_cont_options_default(co);
   co->icp = WHIRL_SFD_OMEGA;
-  co->ds = o->ds * sc;
+  co->ds = o->ds;
   co->ds_min = 1e-9;
-  co->ds_max = o->ds_max * sc;
+  co->ds_max = o->ds_max;
+  co->x_weight = d->xw;
   co->nmx = o->nmx;
   co->p_min = o->omega_min;
   co->p_max = o->omega_max;
@@ -361,7 +367,7 @@ int whirl_sfd_periodic_response(const double *p0,
   size_t nseen = 0;
   if (!seen || !X || !xs) rc = WHIRL_ENOMEM;
   whirl_cont_options co;
-  cont_defaults(&co, o);
+  cont_defaults(&co, &d, o);
   const double FE = p[WHIRL_SFD_FE];
   if (rc == WHIRL_OK && FE == 0.0) {
     snprintf(out->note, sizeof out->note,
@@ -604,7 +610,7 @@ int whirl_sfd_nonsync(const double *p0, double omega_start,
   if (rc == WHIRL_OK && d.c) {
     /* collocation: correct once, adapt the mesh to the orbit, go on */
     whirl_cont_options co;
-    cont_defaults(&co, o);
+    cont_defaults(&co, &d, o);
     whirl_cont *c = whirl_cont_alloc(d.sys, &co, errbuf, errlen);
     if (c && whirl_cont_start(c, X, p, 1) == WHIRL_OK &&
         whirl_cont_step(c) == WHIRL_OK) {
@@ -615,7 +621,7 @@ int whirl_sfd_nonsync(const double *p0, double omega_start,
   }
   if (rc == WHIRL_OK) {
     whirl_cont_options co;
-    cont_defaults(&co, o);
+    cont_defaults(&co, &d, o);
     co.detect_loop = 0;
     whirl_cont_stats st = {0};
     rc = whirl_trace_branch(d.sys, &co, X, p, &br, &st, errbuf, errlen);

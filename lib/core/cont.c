@@ -93,11 +93,33 @@ double cont_dist2(const whirl_cont *c, const double *A, const double *B) {
   return d2;
 }
 
-/* The squared weights of the arclength norm (AUTO's THU and THL). */
-static void set_weights(whirl_cont *c, const whirl_cont_options *opt) {
+/* The squared weights of the arclength norm: the caller's (AUTO's THU and
+ * THL) times the system's own for its representation (the quadrature
+ * weights of collocation nodes), which a new mesh changes. */
+static int apply_weights(whirl_cont *c) {
+  const size_t n = c->n;
+  if (c->sys.norm_weights) {
+    int rc = c->sys.norm_weights(c->w2, c->sys.data);
+    if (rc)
+      return WHIRL_FAIL(c, rc < 0 ? rc : WHIRL_EINVAL,
+                        "the system's norm weights failed (%d)", rc);
+    for (size_t i = 0; i < n; ++i) {
+      if (!(c->w2[i] >= 0) || !isfinite(c->w2[i]))
+        return WHIRL_FAIL(c, WHIRL_EINVAL, "the system's norm weight of "
+                          "unknown %zu is not finite and >= 0", i);
+      c->w2[i] *= c->xw2[i];
+    }
+  } else {
+    memcpy(c->w2, c->xw2, n * sizeof *c->w2);
+  }
+  return WHIRL_OK;
+}
+
+static int set_weights(whirl_cont *c, const whirl_cont_options *opt) {
   for (size_t i = 0; i < c->n; ++i)
-    c->w2[i] = opt->x_weight ? opt->x_weight[i] * opt->x_weight[i] : 1.0;
+    c->xw2[i] = opt->x_weight ? opt->x_weight[i] * opt->x_weight[i] : 1.0;
   c->w2[c->n] = opt->p_weight * opt->p_weight;
+  return apply_weights(c);
 }
 
 static double cont_norm(const whirl_cont *c, const double *a) {
@@ -230,13 +252,19 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   c->work = calloc(c->wlen, sizeof *c->work);
   c->dir = calloc(c->N, sizeof *c->dir);
   c->w2 = calloc(c->N, sizeof *c->w2);
+  c->xw2 = calloc(c->n ? c->n : 1, sizeof *c->xw2);
   c->Xprev = calloc(c->N, sizeof *c->Xprev);
   c->tprev = calloc(c->N, sizeof *c->tprev);
   c->Xstart = calloc(c->N, sizeof *c->Xstart);
   if (!c->fp || !c->f || !c->rhs || !c->row || !c->row2 || !c->work || !c->dir || !c->w2 ||
-      !c->Xprev || !c->tprev || !c->Xstart)
+      !c->xw2 || !c->Xprev || !c->tprev || !c->Xstart)
     goto nomem;
-  set_weights(c, opt);
+  if (set_weights(c, opt)) {
+    WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "whirl_cont_alloc: %s", c->errmsg);
+    c->opt.nuz = 0; /* uz, uz_stop: still the caller's */
+    whirl_cont_free(c);
+    return NULL;
+  }
   c->opt.x_weight = NULL; /* copied: the caller's array need not outlive c */
   /* a step's events: LP, BP, HB, PD, two bounds, the user values and the
    * system's tests; the queue holds their localisations (tail) and what
@@ -285,6 +313,7 @@ void whirl_cont_free(whirl_cont *c) {
   free(c->work);
   free(c->dir);
   free(c->w2);
+  free(c->xw2);
   free(c->Xprev);
   free(c->tprev);
   free(c->Xstart);
@@ -936,6 +965,7 @@ static int remap_if_asked(whirl_cont *c) {
     return WHIRL_FAIL(c, rc, "the system's remap callback failed (%d)", rc);
   if (rc != 1) return 0;
   c->fact_ok = 0;
+  if ((rc = apply_weights(c)) != 0) return rc; /* on the new mesh */
   /* the unit tangents (current and previous) stay unit */
   double *tangents[2] = {c->cur.t, c->have_tprev ? c->tprev : NULL};
   for (int k = 0; k < 2 && tangents[k]; ++k) {

@@ -72,7 +72,9 @@ struct whirl_cont {
   whirl_point pt;
 
   double *w2;         /* N: weights of the squared components in the
-                         arclength norm (opt.x_weight², opt.p_weight²) */
+                         arclength norm (opt.x_weight² times the system's
+                         norm_weights, opt.p_weight²) */
+  double *xw2;        /* n: opt.x_weight², kept for a new representation */
   double *dir;        /* N: predictor direction of the current step */
   double *Xprev;      /* N: previous accepted point (secant predictor) */
   int have_prev;

@@ -218,18 +218,19 @@ static double thl_of(const whirl_run_settings *s, run_ctx *R, int k) {
  *   |(u, p)|^2 = sum_i THU_i int_0^1 u_i(t)^2 dt + sum_k THL_k p_k^2
  * over the state and every free parameter (the period of an autonomous
  * orbit is PAR(11), the free parameters of a boundary-value problem are
- * among them), weights of the squares, default 1.  whirl measures a
- * collocation or BVP step on its M = NTST NCOL + 1 node values, whose sum
- * of squares is about M times the integral, and scales DS, DSMIN, DSMAX by
- * sqrt(M) (ds_scale): the parameters' weights are then sqrt(M) sqrt(THL),
- * the states' sqrt(THU), so that a step moves each as AUTO's does.  (With
- * weight 1 on the parameters, a step that mostly changes parameters moved
- * them sqrt(M) times as far as AUTO's: 13 times on kar's NTST 40, NCOL 4,
- * whose Newton then failed where the parameter crosses 0.)  Equilibria are
- * measured as AUTO's with no scale; the unknowns of fold and Hopf loci and
- * of harmonic balance keep weight 1.  0, -1 (memory), -2 (bad input,
- * said); *xw is NULL or malloc'd (the caller frees it after
- * whirl_cont_alloc). */
+ * among them), weights of the squares, default 1, and THL = {11: 0} for
+ * orbits without a THL key (AUTO's main.f90).  Collocation and BVP systems
+ * weight their node values by the quadrature of the integral themselves
+ * (whirl_system.norm_weights: on the current mesh, so an adapted mesh is
+ * measured as AUTO measures it); this adds THU on the state and THL on the
+ * continuation parameter, the period and a BVP's free parameters.  (Before,
+ * the node values counted 1 each, about NTST NCOL + 1 times the integral,
+ * with DS scaled by its square root: a step that mostly changes parameters
+ * moved them sqrt(NTST NCOL + 1) times as far as AUTO's, 13 times on kar,
+ * whose Newton then failed where its parameter crosses 0.)  Equilibria are
+ * measured as AUTO's; the unknowns of fold and Hopf loci (ds_scale) and of
+ * harmonic balance keep weight 1.  0, -1 (memory), -2 (bad input, said);
+ * *xw is NULL or malloc'd (the caller frees it after whirl_cont_alloc). */
 static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *o,
                           double **xw) {
   const whirl_run_settings *s = R->s;
@@ -847,7 +848,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
   b->colloc = O->colloc;
   b->sys = whirl_colloc_system(O->colloc);
   b->nb = whirl_colloc_size(O->colloc);
-  b->ds_scale = sqrt((double)(co.ntst * co.ncol + 1));
+  b->ds_scale = 1.0; /* the system's norm weights: AUTO's integral norm */
   O->X = calloc(b->nb + 1, sizeof *O->X);
   O->D = calloc(b->nb + 1, sizeof *O->D);
   if (!O->X || !O->D) return -1;
@@ -954,7 +955,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
       b->colloc = O->colloc;
       b->sys = whirl_colloc_system(O->colloc);
       b->nb = whirl_colloc_size(O->colloc);
-      b->ds_scale = sqrt((double)(co.ntst * co.ncol + 1));
+      b->ds_scale = 1.0;
       b->x0 = O->X;
       b->dir = O->D;
     }

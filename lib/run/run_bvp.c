@@ -203,7 +203,7 @@ int run_bvp_start(run_ctx *R, const whirl_solution *so, whirl_bvp **bvp, double 
     b->nb = nb;
     b->x0 = *X;
     b->p0 = R->par;
-    b->ds_scale = sqrt((double)(s->ntst * s->ncol + 1));
+    b->ds_scale = 1.0; /* the system's norm weights: AUTO's integral norm */
     if (o.nfree) {
       fprintf(R->log, "boundary-value problem: NBC = %d, NINT = %d, free", s->nbc, s->nint);
       for (size_t j = 0; j < o.nfree; j++) fprintf(R->log, " %s", R->pnames[free_par[j]]);

@@ -158,7 +158,8 @@ typedef struct branch_spec {
   size_t nb;               /* unknowns of the base system */
   int icp;                 /* core's continuation parameter */
   int q;                   /* loci: the point's own parameter, else -1 */
-  double ds_scale;         /* arclength scale of the unknowns (colloc) */
+  double ds_scale;         /* arclength scale of DS (loci of orbits: the
+                              square root of their node count) */
   /* start: Newton from (x0, p0); or along dir from exact (x0, p0); or a
    * BP switch from `bp` */
   const double *x0, *p0, *dir;

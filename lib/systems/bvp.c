@@ -540,6 +540,16 @@ static int alloc_arrays(whirl_bvp *b) {
   return 0;
 }
 
+/* The system's norm weights: the quadrature weights of the node values
+ * on the current mesh (the state's part of a step's norm is its integral,
+ * as AUTO-07p's), 1 for the unknowns after them (the free parameters). */
+static int bvp_norm_weights(double *q, void *data) {
+  const whirl_bvp *b = data;
+  colloc_basis_node_weights(b->n, b->ncol, b->ntst, b->mesh, q);
+  for (size_t i = b->nnodes * b->n; i < b->nx; ++i) q[i] = 1.0;
+  return 0;
+}
+
 /* The system's remap hook: a new mesh every adapt_every accepted points
  * (AUTO's IAD), equidistributing the NCOL-th derivative as the periodic
  * collocation does (colloc_basis_new_mesh), with the current point, the
@@ -641,6 +651,7 @@ whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
   s->Fx_sparse = bvp_Fx_sparse;
   s->accept = b->nint ? bvp_accept : NULL; /* the reference of ICND */
   s->remap = bvp_remap;
+  s->norm_weights = bvp_norm_weights;
   s->x_names = NULL; /* node-major unknowns have no model names */
   s->p_names = prob->p_names;
   s->data = b;

@@ -399,6 +399,16 @@ static int colloc_accept(const double *X, const double *p, void *data) {
 static int colloc_remap(double *const *v, size_t nv, const double *p,
                         void *data);
 
+/* The system's norm weights: the quadrature weights of the node values
+ * on the current mesh (the state's part of a step's norm is its integral,
+ * as AUTO-07p's), 1 for the unknowns after them (the period, or the free parameter at a fixed period). */
+static int colloc_norm_weights(double *q, void *data) {
+  const whirl_colloc *c = data;
+  colloc_basis_node_weights(c->n, c->ncol, c->ntst, c->mesh, q);
+  for (size_t i = c->nnodes * c->n; i < c->nx; ++i) q[i] = 1.0;
+  return 0;
+}
+
 /* ------------------------------------------------------------ alloc */
 
 /* The message of a failed whirl_colloc_alloc in errbuf; evaluates to NULL. */
@@ -562,6 +572,7 @@ static void init_system(whirl_colloc *c) {
   s->spectrum_kind = WHIRL_SPEC_MULTIPLIERS;
   s->accept = aut ? colloc_accept : NULL;
   s->remap = colloc_remap;
+  s->norm_weights = colloc_norm_weights;
   s->bsolver = &colloc_bsolver;
   s->x_names = NULL; /* node-major unknowns have no model names */
   s->p_names = prob->p_names;

@@ -37,6 +37,16 @@ void colloc_basis_eval_poly(size_t n, size_t ntst, size_t m,
                             const double *tau, const double *Xn, double t,
                             double *x);
 
+/* The quadrature weights of the node values of a piecewise polynomial of
+ * degree m on mesh[ntst + 1] (ntst m + 1 nodes, n components each,
+ * node-major): q[n (ntst m + 1)] with sum_j q_j x_j^2 = int_0^1 |x|^2 dt
+ * over the node values squared, h_i W_k on node k of interval i (the
+ * shared mesh points summed), W_k = int_0^1 l_k the closed Newton-Cotes
+ * weights of the nodes k/m: the norm of AUTO-07p's steps (mesh.f90,
+ * WINT and RNRMSQ). */
+void colloc_basis_node_weights(size_t n, size_t m, size_t ntst, const double *mesh,
+                               double *q);
+
 /* The weights dm[m + 1] of the m-th derivative in σ of the interpolant on
  * the nodes k/m: m^m (−1)^{m−k} C(m, k) (the m-th forward difference). */
 void colloc_basis_derivative_weights(size_t m, double *dm);

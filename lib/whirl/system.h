@@ -128,6 +128,16 @@ typedef struct whirl_system {
    * vectors in place and returns 1; the core then refactors and reanalyses
    * the current point.  0: nothing changed; < 0: an error. */
   int (*remap)(double *const *v, size_t nv, const double *p, void *data);
+
+  /* Optional: q[n] >= 0, the factors of the unknowns' squared weights in
+   * the arclength norm for the system's current representation, which
+   * multiply the caller's (whirl_cont_options.x_weight²): collocation gives
+   * the quadrature weights of its node values on its mesh, so that a
+   * state's part of the norm is its integral over [0, 1], as AUTO-07p
+   * measures steps (mesh.f90, RNRMSQ), and 1 for the period and free
+   * parameters.  Called by the core at the start and after every remap
+   * that changed the representation.  0, or an error. */
+  int (*norm_weights)(double *q, void *data);
 } whirl_system;
 
 enum { WHIRL_SPEC_EIGENVALUES = 0, WHIRL_SPEC_MULTIPLIERS = 1 };

@@ -346,6 +346,30 @@ static void test_bratu_newton(void) {
   q = sqrt(q / (3.0 * M));
   is_abs(whirl_bvp_l2norm(b, X), q, 1e-8, "L2-NORM = sqrt(∫ u1² + u2²) of the "
                                           "closed form (%.10f)", q);
+  /* the system's norm weights: the quadrature of the node values on this
+   * mesh, exact for f² of degree 4 <= NCOL on every interval (AUTO's
+   * RNRMSQ): f = 1 + 2t + 3t² in u1 and 1 - t in u2 on the non-uniform
+   * mesh: f² = 1 + 4t + 10t² + 12t³ + 9t⁴, int_0^1 f² = 1 + 2 + 10/3 + 3 +
+   * 9/5, and int_0^1 (1 - t)² = 1/3 */
+  const whirl_system *sys = whirl_bvp_system(b);
+  double *qw = malloc(nx * sizeof *qw);
+  int qrc = sys->norm_weights ? sys->norm_weights(qw, sys->data) : -1;
+  double sq = 0.0, tot = 0.0;
+  for (size_t i = 0; qrc == 0 && i < ntst; ++i)
+    for (size_t k = 0; k <= ncol; ++k) {
+      const size_t j = i * ncol + k;
+      if (k == ncol && i + 1 < ntst) continue; /* the next interval's first */
+      const double t = tau[i] + (tau[i + 1] - tau[i]) * (double)k / (double)ncol;
+      const double f = 1 + 2 * t + 3 * t * t, g = 1 - t;
+      sq += qw[2 * j] * f * f + qw[2 * j + 1] * g * g;
+      tot += qw[2 * j];
+    }
+  ok(qrc == 0, "the BVP system has norm weights");
+  is_abs(tot, 1.0, 1e-14, "norm weights: sum 1 over the nodes of a component (%.15g)", tot);
+  is_abs(sq, 1.0 + 2.0 + 10.0 / 3.0 + 3.0 + 9.0 / 5.0 + 1.0 / 3.0, 1e-13,
+         "norm weights on a non-uniform mesh integrate (1 + 2t + 3t²)² + (1 - t)² "
+         "exactly (%.15g)", sq);
+  free(qw);
   free(X);
   whirl_bvp_free(b);
 }

@@ -704,6 +704,55 @@ static double line_p_after(const double *xw, double pw, int nsteps, double *s_ou
   return p;
 }
 
+/* The system's own norm weights (whirl_system.norm_weights, collocation's
+ * quadrature weights of its node values), which multiply x_weight² and
+ * change when the system changes its representation (remap): on the line
+ * x = (p, 100 p) with the factors q = (3, 0) a step of ds moves p by
+ * ds/sqrt(3 + 1) = ds/2; from the remap before the 6th step, q = (8, 0):
+ * ds/3.  10 steps of 0.01 then advance p by 5 (0.01/2 + 0.01/3). */
+typedef struct nw_line {
+  int steps; /* remap calls */
+  double q0;
+} nw_line;
+static int nw_weights(double *q, void *d) {
+  const nw_line *l = d;
+  q[0] = l->q0;
+  q[1] = 0.0;
+  return 0;
+}
+static int nw_remap(double *const *v, size_t nv, const double *p, void *d) {
+  (void)v, (void)nv, (void)p;
+  nw_line *l = d;
+  if (++l->steps != 6) return 0;
+  l->q0 = 8.0; /* a new representation, measured anew */
+  return 1;
+}
+static void test_system_weights(void) {
+  nw_line l = {0, 3.0};
+  whirl_system s = {.name = "line", .n = 2, .npar = 1, .F = line_F,
+                    .norm_weights = nw_weights, .remap = nw_remap, .data = &l};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = o.ds_min = o.ds_max = 0.01;
+  char err[256];
+  whirl_cont *c = whirl_cont_alloc(&s, &o, err, sizeof err);
+  double x0[2] = {0, 0}, p0 = 0, p5 = NAN, p10 = NAN;
+  if (c && whirl_cont_start(c, x0, &p0, +1) == WHIRL_OK)
+    while (whirl_cont_step(c) == WHIRL_OK && whirl_cont_point(c)->index <= 10) {
+      if (whirl_cont_point(c)->index == 5) p5 = whirl_cont_point(c)->p[0];
+      if (whirl_cont_point(c)->index == 10) p10 = whirl_cont_point(c)->p[0];
+    }
+  is_rel(p5, 5 * 0.01 / 2.0, 1e-10, "norm_weights (3, 0): 5 steps of 0.01 move p "
+         "by 0.05/2 (%.12g)", p5);
+  is_rel(p10 - p5, 5 * 0.01 / 3.0, 1e-10, "norm_weights (8, 0) after a remap: "
+         "the next 5 by 0.05/3 (%.12g)", p10 - p5);
+  whirl_cont_free(c);
+  l.steps = 0;
+  l.q0 = NAN;
+  ok(!whirl_cont_alloc(&s, &o, err, sizeof err) && strstr(err, "norm weight"),
+     "a NaN norm weight of the system is refused: %s", err);
+}
+
 static void test_weights(void) {
   double s = NAN;
   const double w_out[2] = {1.0, 0.0}, w_half[2] = {0.5, 0.5};
@@ -862,6 +911,7 @@ int main(void) {
   test_bratu();
   test_two_at_once();
   test_weights();
+  test_system_weights();
   test_errors();
   return done_testing();
 }

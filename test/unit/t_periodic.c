@@ -41,8 +41,13 @@
 #include "../tap.h"
 
 #define PI 3.14159265358979323846
-/* first step after a PD switch, per sqrt(unknowns) (see switch_and_run) */
+/* first step after a PD switch, per sqrt(components) (see switch_and_run) */
 #define DS_SWITCH 0.02
+/* The arclength of collocation is AUTO's: the state's part the integral
+ * over [0, 1] (the system's norm weights), about sqrt(3) for Lorenz's
+ * three components of unit size, where the sum of the node values (before
+ * the norm weights) made it sqrt(unknowns). */
+#define NORM_SCALE 1.7320508075688772
 
 /* ------------------------------------------------------------------------
  * Models */
@@ -365,11 +370,11 @@ static int switch_and_run(const char *what, const whirl_colloc *c,
   }
 
   whirl_cont_options co;
-  /* arclength counts every node value: steps scale with sqrt(size).  The
+  /* steps scale with the norm of a unit state (NORM_SCALE).  The
    * start is a branch point of c2's system (the doubled period-1 orbit
    * crosses there), where the bordered Jacobian is singular: the first step
    * must leave its neighbourhood, a tiny one makes Newton fail. */
-  cont_opts(&co, DS_SWITCH * sqrt((double)nx2), 0.5 * sqrt((double)nx2));
+  cont_opts(&co, DS_SWITCH * NORM_SCALE, 0.5 * NORM_SCALE);
   whirl_cont *ct = whirl_cont_alloc(whirl_colloc_system(c2), &co, err,
                                     sizeof err);
   /* try both signs: first three steps after the start */
@@ -477,7 +482,7 @@ static void switch_general(const whirl_colloc *c, const double *X,
      "pd_switch onto NTST %zu NCOL %zu: interpolated doubled orbit nearly "
      "solves c2's equations (|F| %.1e)", ntst2, ncol2, fr);
   whirl_cont_options co;
-  cont_opts(&co, DS_SWITCH * sqrt((double)nx2), 0.5 * sqrt((double)nx2));
+  cont_opts(&co, DS_SWITCH * NORM_SCALE, 0.5 * NORM_SCALE);
   whirl_cont *ct = whirl_cont_alloc(whirl_colloc_system(c2), &co, err,
                                     sizeof err);
   double r[3] = {NAN, NAN, NAN}, T1 = NAN;
@@ -632,7 +637,7 @@ static void test_lorenz_cascade(int quick) {
   free(smp);
 
   whirl_cont_options co;
-  cont_opts(&co, 0.5, 0.5 * sqrt((double)nx1));
+  cont_opts(&co, 0.5 / sqrt((double)nx1) * NORM_SCALE, 0.5 * NORM_SCALE);
   whirl_cont *ct = whirl_cont_alloc(whirl_colloc_system(c1), &co, err,
                                     sizeof err);
   /* correct, adapt the mesh once, restart from the adapted orbit */
