@@ -823,14 +823,24 @@ int whirl_cont_start_direction(whirl_cont *c, const double *x0,
 }
 
 int whirl_cont_start_switch(whirl_cont *c, const whirl_point *bp, int dir) {
+  double phi[64], *ph = c->N <= 64 ? phi : malloc(c->N * sizeof *ph);
+  if (!ph) return WHIRL_FAIL(c, WHIRL_ENOMEM, "start_switch: out of memory");
+  int rc = whirl_cont_switch_direction(c, bp, dir, ph);
+  if (rc == WHIRL_OK) rc = whirl_cont_start_direction(c, bp->x, bp->p, ph);
+  if (ph != phi) free(ph);
+  return rc;
+}
+
+int whirl_cont_switch_direction(whirl_cont *c, const whirl_point *bp, int dir,
+                                double *ph) {
   const size_t n = c->n, N = c->N;
   if (!bp || bp->n != n || bp->npar != c->npar || !bp->t)
     return WHIRL_FAIL(c, WHIRL_EINVAL,
                       "start_switch: point does not belong to this system");
   double *A = malloc(n * N * sizeof *A), *V = malloc(N * 2 * sizeof *V);
-  double sv[2], phi[64], *ph = N <= 64 ? phi : malloc(N * sizeof *ph);
+  double sv[2];
   int rc = WHIRL_ENOMEM;
-  if (!A || !V || !ph) goto done;
+  if (!A || !V) goto done;
   memcpy(c->cur.p, bp->p, c->npar * sizeof *bp->p);
   rc = eval_jac(c, bp->x, bp->p);
   if (rc != 0) {
@@ -886,12 +896,14 @@ int whirl_cont_start_switch(whirl_cont *c, const whirl_point *bp, int dir) {
     if (fabs(ph[i]) >= (1.0 - 1e-8) * big) lead = ph[i];
   const double key = fabs(ph[n]) > 1e-8 * big ? ph[n] : lead;
   const double sg = (key < 0.0 ? -1.0 : 1.0) * (dir < 0 ? -1.0 : 1.0);
-  for (size_t i = 0; i < N; ++i) ph[i] *= sg;
-  rc = whirl_cont_start_direction(c, bp->x, bp->p, ph);
+  double nph = 0.0;
+  for (size_t i = 0; i < N; ++i) nph += ph[i] * ph[i];
+  nph = sqrt(nph);
+  for (size_t i = 0; i < N; ++i) ph[i] *= sg / (nph > 0 ? nph : 1.0);
+  rc = WHIRL_OK;
 done:
   free(A);
   free(V);
-  if (ph != phi) free(ph);
   return rc;
 }
 

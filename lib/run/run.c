@@ -467,6 +467,20 @@ static int at_stop_point(run_ctx *R, const char *ty) {
   return hit;
 }
 
+/* ISW = -1 at a BP of a boundary-value problem: the second null vector,
+ * oriented as AUTO orients it (run_bvp_orient). */
+static int bvp_switch(run_ctx *R, whirl_cont *c, const branch_spec *b) {
+  double *t = malloc((b->nb + 1) * sizeof *t);
+  if (!t) return WHIRL_ENOMEM;
+  int rc = whirl_cont_switch_direction(c, b->bp, 1, t);
+  if (rc == WHIRL_OK) {
+    run_bvp_orient(R, b, b->bp->x, b->bp->p, t);
+    rc = whirl_cont_start_direction(c, b->bp->x, b->bp->p, t);
+  }
+  free(t);
+  return rc;
+}
+
 int run_branch(run_ctx *R, branch_spec *b) {
   const whirl_run_settings *s = R->s;
   whirl_cont_options o;
@@ -495,7 +509,9 @@ int run_branch(run_ctx *R, branch_spec *b) {
   }
   uc.pfull = pfull; /* scratch shared with the loop below, never in use */
   uc.state = state; /* by both at once */
-  if (b->bp)
+  if (b->bp && b->kind == WHIRL_SOL_BVP)
+    rc = bvp_switch(R, c, b);
+  else if (b->bp)
     rc = whirl_cont_start_switch(c, b->bp, dir);
   else if (b->dir)
     rc = whirl_cont_start_direction(c, b->x0, b->p0, b->dir);

@@ -213,3 +213,18 @@ int run_bvp_start(run_ctx *R, const whirl_solution *so, whirl_bvp **bvp, double 
   free(free_par);
   return rc;
 }
+
+void run_bvp_orient(const run_ctx *R, const branch_spec *b, const double *X,
+                    const double *p, double *t) {
+  const whirl_run_settings *s = R->s;
+  const size_t nb = b->nb, nfree = (size_t)(s->nbc + s->nint) - R->n;
+  const size_t nodes = nb - nfree, last = nodes - R->n; /* u(1) */
+  double key = 0.0;
+  if (fabs(t[nb]) > s->epsl * (1.0 + fabs(p[b->icp]))) key = t[nb];
+  for (size_t j = 0; key == 0.0 && j < nfree; j++)
+    if (fabs(t[nodes + j]) > s->epsl * (1.0 + fabs(X[nodes + j]))) key = t[nodes + j];
+  for (size_t i = 0; key == 0.0 && i < R->n; i++)
+    if (fabs(t[last + i]) > s->epsu * (1.0 + fabs(X[last + i]))) key = t[last + i];
+  const double sg = (key < 0.0 ? -1.0 : 1.0) * (s->ds < 0 ? -1.0 : 1.0);
+  for (size_t i = 0; i <= nb; i++) t[i] *= sg;
+}

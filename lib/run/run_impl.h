@@ -182,6 +182,13 @@ typedef struct branch_spec {
 int run_bvp_start(run_ctx *R, const whirl_solution *so, whirl_bvp **bvp, double **X,
                   double **D, branch_spec *b);
 
+/* run_bvp.c: AUTO's orientation of a start direction t[nb + 1] of a
+ * boundary-value problem (bvp.f90, STDRBV): the first free parameter in
+ * ICP order whose rate is not negligible (> EPSL (1 + |p|)) grows, else
+ * the first component of u(1) (> EPSU (1 + |u|)); times the sign of DS. */
+void run_bvp_orient(const run_ctx *R, const branch_spec *b, const double *X,
+                    const double *p, double *t);
+
 /* Continue branch b: its rows, labels, log and summary.  0, -1, -2. */
 int run_branch(run_ctx *R, branch_spec *b);
 

@@ -214,6 +214,13 @@ WHIRL_API int whirl_cont_start_direction(whirl_cont *c, const double *x0,
 WHIRL_API int whirl_cont_start_switch(whirl_cont *c, const whirl_point *bp,
                                       int dir);
 
+/* The direction whirl_cont_start_switch would start along, into t[n + 1]
+ * (unit in the Euclidean norm), without starting: for a caller that
+ * orients it by a rule of its own (AUTO's for boundary-value problems)
+ * and starts with whirl_cont_start_direction. */
+WHIRL_API int whirl_cont_switch_direction(whirl_cont *c, const whirl_point *bp,
+                                          int dir, double *t);
+
 /* Take one continuation step.  Returns WHIRL_OK when a new point is
  * available (special points are returned in order before the regular point
  * that follows them), WHIRL_DONE when the branch has ended (see

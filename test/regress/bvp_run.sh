@@ -227,10 +227,15 @@ ok $? "ISW = -1 at the trivial branch's BP onto NTST 6 ($(cat "$tmp/lin.err" "$t
 k1=$(col lin.out k BP | head -1)
 echo "$k1" | awk '{ d = $1 - 1; exit !(d * d < 1e-14) }'
 ok $? "the first BP at k = 1 ($k1)"
+# AUTO orients the switch by the first free parameter with a rate, else
+# by u(1) (STDRBV): k and q have none at the BP, u'(1) = -a pi grows, so
+# a = -sqrt 2 at q = 1: MAX u = 0, MAX v = pi sqrt 2, as AUTO's lin.2
+# (hyper.all: 0.00000E+00, 4.44287E+00)
 kq=$(col lin2.out k UZ q 1)
 mu=$(col lin2.out max_u UZ q 1)
-echo "$kq $mu" | awk '{ d = $1 - 1; e = $2 - sqrt(2); exit !(NF == 2 && d * d < 1e-14 && e * e < 1e-14) }'
-ok $? "the branch u = a sin(pi t): at q = 1, k = 1 and max u = sqrt 2 ($kq, $mu)"
+mv=$(col lin2.out max_v UZ q 1)
+echo "$kq $mu $mv" | awk '{ d = $1 - 1; e = $3 - 4 * atan2(1, 1) * sqrt(2); exit !(NF == 3 && d * d < 1e-14 && $2 * $2 < 1e-14 && e * e < 1e-12) }'
+ok $? "the branch u = a sin(pi t), a < 0 as AUTO orients it: at q = 1, k = 1, max u = 0, max v = pi sqrt 2 ($kq, $mu, $mv)"
 # bad input: one message, exit 2
 bad() {
   printf "$2" > "$tmp/bad.whirl"
