@@ -15,29 +15,9 @@ name=arclength
 . "${top_srcdir:-.}/test/regress/tap.sh"
 CC=${CC:-cc}
 command -v "$CC" > /dev/null 2>&1 || { echo "1..0 # SKIP no C compiler"; exit 0; }
-# r' = r (mu - r^2), theta' = 1 + b r^2: the orbit r^2 = mu has the period
-# 2 pi / (1 + b mu); in the scaled time of collocation it does not change
-# with b, so a branch in b moves b and the period alone
-cat > "$tmp/twist.c" <<'EOF'
-#include <whirl/model.h>
-static int rhs(double t, const double *u, const double *p, double *f, void *d) {
-  (void)t, (void)d;
-  const double x = u[0], y = u[1], s = x * x + y * y, w = 1 + p[1] * s;
-  f[0] = (p[0] - s) * x - w * y;
-  f[1] = (p[0] - s) * y + w * x;
-  return 0;
-}
-static const char *const xn[] = {"x", "y"};
-static const char *const pn[] = {"mu", "b"};
-static const double par0[] = {-0.5, 0.5};
-static const double u0[] = {0.0, 0.0};
-const whirl_model whirl_model_def = {
-    .abi = WHIRL_MODEL_ABI,
-    .problem = {.name = "twist", .n = 2, .npar = 2, .rhs = rhs, .autonomous = 1,
-                .x_names = xn, .p_names = pn},
-    .par0 = par0, .u0 = u0, .forcing_param = -1,
-    .description = "Hopf normal form, frequency 1 + b r^2"};
-EOF
+# twist.c: r' = r (mu - r^2), theta' = 1 + b r^2, the orbit r^2 = mu has
+# the period 2 pi / (1 + b mu); in the scaled time of collocation it does
+# not change with b, so a branch in b moves b and the period alone
 # u' = 0, u(0) = 0, int (u + p - q) = 0: u = 0 and q = p, a straight line in
 # the two free parameters
 cat > "$tmp/line.c" <<'EOF'
@@ -75,6 +55,7 @@ const whirl_model whirl_model_def = {
     .par0 = par0, .stpnt = stpnt, .forcing_param = -1, .bcnd = bcnd, .icnd = icnd,
     .description = "u = 0, q = p"};
 EOF
+cp "$top_srcdir/test/regress/twist.c" "$tmp/"
 for m in twist line; do
   $CC -std=c11 -O2 -shared -fPIC -I"$top_srcdir/lib" -o "$tmp/$m.so" "$tmp/$m.c" -lm
   ok $? "$m plug-in builds"

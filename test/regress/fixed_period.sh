@@ -12,27 +12,7 @@ name=fixed_period
 . "${top_srcdir:-.}/test/regress/tap.sh"
 CC=${CC:-cc}
 command -v "$CC" > /dev/null 2>&1 || { echo "1..0 # SKIP no C compiler"; exit 0; }
-cat > "$tmp/twist.c" <<'EOF'
-#include <whirl/model.h>
-static int rhs(double t, const double *u, const double *p, double *f, void *d) {
-  (void)t, (void)d;
-  const double x = u[0], y = u[1], s = x * x + y * y, w = 1 + p[1] * s;
-  f[0] = (p[0] - s) * x - w * y;
-  f[1] = (p[0] - s) * y + w * x;
-  return 0;
-}
-static const char *const xn[] = {"x", "y"};
-static const char *const pn[] = {"mu", "b"};
-static const double par0[] = {-0.5, 0.5};
-static const double u0[] = {0.0, 0.0};
-const whirl_model whirl_model_def = {
-    .abi = WHIRL_MODEL_ABI,
-    .problem = {.name = "twist", .n = 2, .npar = 2, .rhs = rhs, .autonomous = 1,
-                .x_names = xn, .p_names = pn},
-    .par0 = par0, .u0 = u0, .forcing_param = -1,
-    .description = "Hopf normal form, frequency 1 + b r^2"};
-EOF
-$CC -std=c11 -O2 -shared -fPIC -I"$top_srcdir/lib" -o "$tmp/twist.so" "$tmp/twist.c" -lm
+$CC -std=c11 -O2 -shared -fPIC -I"$top_srcdir/lib" -o "$tmp/twist.so" "$top_srcdir/test/regress/twist.c" -lm
 ok $? "twist plug-in builds"
 printf 'model = twist.so\nIPS = 1\nICP = [mu]\nISP = 2\nDS = 0.01\nDSMAX = 0.05\nNMX = 200\nUZSTOP = {mu: [0.5]}\n' > "$tmp/eq.whirl"
 printf 'model = twist.so\nIPS = 2\nICP = [mu, PERIOD]\nS = eq.out\nIRS = HB1\nNTST = 20\nDS = 0.01\nDSMAX = 0.1\nNMX = 300\nUZSTOP = {mu: [0.5]}\n' > "$tmp/po.whirl"
