@@ -46,7 +46,9 @@ for dir in "$demos"/*/; do
     echo "$t1 - $t0" | bc -l >> "$tmp/w"; echo "$t2 - $t1" | bc -l >> "$tmp/a"
   done
   nw=$(ls "$tmp/wd/o"/*.whirl 2> /dev/null | wc -l)
-  na=$(grep -c "^ *BR *PT *TY" "$tmp/ad/log" 2> /dev/null || echo 0)
+  # grep -c prints 0 itself when nothing matches (and exits 1): no "|| echo 0"
+  na=$(grep -c "^ *BR *PT *TY" "$tmp/ad/log" 2> /dev/null)
+  [ -n "$na" ] || na=0
   w=$(median < "$tmp/w"); a=$(median < "$tmp/a")
   printf '%s\t%s\t%s\t%s\t%s\t%.1f\n' "$d" "$nw" "$na" "$w" "$a" "$(echo "$a / $w" | bc -l)"
   tw=$(echo "$tw + $w" | bc -l); ta=$(echo "$ta + $a" | bc -l)
