@@ -243,7 +243,6 @@ static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *
   /* at a fixed period X's last unknown is a parameter: its THL, not PERIOD's */
   const int fq = orbit ? whirl_colloc_free_param(b->colloc) : -1;
   const size_t nfree = bvp_base ? (size_t)(s->nbc + s->nint) - R->n : 0;
-  const double sM = orbit_base || bvp_base ? b->ds_scale : 1.0;
   /* AUTO's default without a THL line in an autonomous orbit's run is
    * THL = {11: 0}, the period out of the step (main.f90); a THL given,
    * even empty (THL = {}), leaves it at 1 */
@@ -270,8 +269,10 @@ static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *
    * measured on the unknowns alone, which the core then checks are
    * weighted */
   const double wp = thl_of(s, R, b->icp);
-  o->p_weight = sM * sqrt(wp >= 0 ? wp : 1.0);
-  if (!base || (wT == 1.0 && !s->nthu && sM == 1.0)) return 0;
+  o->p_weight = sqrt(wp >= 0 ? wp : 1.0);
+  int weighted = wT != 1.0 || s->nthu; /* any unknown's weight other than 1 */
+  for (size_t j = 0; j < nfree; j++) weighted |= thl_of(s, R, R->icp[j + 1]) >= 0;
+  if (!base || !weighted) return 0;
   *xw = malloc(b->nb * sizeof **xw);
   if (!*xw) return -1;
   for (size_t i = 0; i < b->nb; i++) (*xw)[i] = 1.0;
@@ -288,10 +289,10 @@ static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *
     }
     for (size_t j = (size_t)xi; j < nodes; j += R->n) (*xw)[j] = sqrt(s->thu[i].value);
   }
-  if (aut) (*xw)[b->nb - 1] = sM * sqrt(wT);
+  if (aut) (*xw)[b->nb - 1] = sqrt(wT);
   for (size_t j = 0; j < nfree; j++) { /* a BVP's free parameters, ICP(2) ... */
     const double w = thl_of(s, R, R->icp[j + 1]);
-    (*xw)[nodes + j] = sM * sqrt(w >= 0 ? w : 1.0);
+    (*xw)[nodes + j] = sqrt(w >= 0 ? w : 1.0);
   }
   o->x_weight = *xw;
   for (size_t i = 0; i < b->nb; i++) if ((*xw)[i] > 0) return 0;

@@ -97,4 +97,13 @@ p=$(last line.out p)
 q=$(last line.out q)
 echo "$p $q" | awk '{ e = sqrt(0.5); exit !(NF == 2 && ($1 - e) ^ 2 < 1e-16 && ($2 - e) ^ 2 < 1e-16) }'
 ok $? "10 steps of DS = 0.1 reach p = q = 1/sqrt 2 (p $p, q $q; before, sqrt(41) times as far)"
+# THL on a BVP's free parameter (ICP(2)): THL = {q: 0} takes q out of the
+# step (AUTO's c.man.2 does so on PAR(6..9)), so each step moves p by DS
+# (before the fix, a THL on ICP(2) alone was ignored: p by DS/sqrt 2)
+printf 'THL = {q: 0}\n' | cat "$tmp/line.whirl" - > "$tmp/lineq.whirl"
+(cd "$tmp" && "$WHIRL" run lineq.whirl --no-plot --quiet > /dev/null 2> lineq.err)
+ok $? "THL = {q: 0} on the BVP's free parameter ($(head -1 "$tmp/lineq.err"))"
+p=$(last lineq.out p)
+echo "$p" | awk '{ exit !(($1 - 1) ^ 2 < 1e-16) }'
+ok $? "THL = {q: 0}: 10 steps of DS = 0.1 move p by 1 ($p)"
 tap_end
