@@ -65,6 +65,11 @@ last() {
   awk -F '\t' -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i; next }
     { v = $h[c] } END { print v }' "$tmp/$1/branches.tsv" 2>/dev/null
 }
+# run NAME.whirl in tmp: a TAP line TEXT with its first message
+run_ok() {
+  (cd "$tmp" && "$WHIRL" run "$1.whirl" --no-plot --quiet > /dev/null 2> "$1.err")
+  ok $? "$2 ($(head -1 "$tmp/$1.err"))"
+}
 # the orbit r^2 = mu = 0.5 at b = 0.5 (from the Hopf point at mu = 0)
 printf 'model = twist.so\nIPS = 1\nICP = [mu]\nISP = 2\nDS = 0.01\nDSMAX = 0.05\nNMX = 200\nUZSTOP = {mu: [0.5]}\n' > "$tmp/eq.whirl"
 printf 'model = twist.so\nIPS = 2\nICP = [mu, PERIOD]\nS = eq.out\nIRS = HB1\nNTST = 20\nDS = 0.01\nDSMAX = 0.1\nNMX = 300\nUZSTOP = {mu: [0.5]}\n' > "$tmp/po.whirl"
@@ -73,8 +78,7 @@ printf 'model = twist.so\nIPS = 2\nICP = [mu, PERIOD]\nS = eq.out\nIRS = HB1\nNT
 ok $? "the orbit at mu = 0.5 ($(head -1 "$tmp/po.err"))"
 # 10 steps of 0.01 in b (NTST 20, NCOL 4: M = 81; before, 0.09 each)
 printf 'model = twist.so\nIPS = 2\nICP = [b, PERIOD]\nS = po.out\nIRS = UZ1\nNTST = 20\nISP = 0\nDS = 0.01\nDSMIN = 0.01\nDSMAX = 0.01\nNMX = 11\n' > "$tmp/b.whirl"
-(cd "$tmp" && "$WHIRL" run b.whirl --no-plot --quiet > /dev/null 2> b.err)
-ok $? "orbits in b, the period free ($(head -1 "$tmp/b.err"))"
+run_ok b "orbits in b, the period free"
 b=$(last b.out b)
 echo "$b" | awk '{ d = $1 - 0.6; exit !(d * d < 1e-16) }'
 ok $? "THL absent (AUTO's PERIOD weight 0): 10 steps of DS = 0.01 move b by 0.1 ($b)"
@@ -82,8 +86,7 @@ ok $? "THL absent (AUTO's PERIOD weight 0): 10 steps of DS = 0.01 move b by 0.1 
 # along T(b) = 2 pi / (1 + b mu), so b moves less (by the arc length of
 # the curve (b, T(b)) of 0.1, to the secant's accuracy)
 printf 'THL = {PERIOD: 1}\n' | cat "$tmp/b.whirl" - > "$tmp/bt.whirl"
-(cd "$tmp" && "$WHIRL" run bt.whirl --no-plot --quiet > /dev/null 2> bt.err)
-ok $? "orbits in b with THL = {PERIOD: 1} ($(head -1 "$tmp/bt.err"))"
+run_ok bt "orbits in b with THL = {PERIOD: 1}"
 bt=$(last bt.out b)
 echo "$bt" | awk '{ pi = 4 * atan2(1, 1); mu = 0.5; s = 0; n = 200000; h = ($1 - 0.5) / n
   for (i = 0; i < n; i++) { x = 0.5 + (i + 0.5) * h; d = 2 * pi * mu / (1 + x * mu) ^ 2; s += h * sqrt(1 + d * d) }
@@ -91,8 +94,7 @@ echo "$bt" | awk '{ pi = 4 * atan2(1, 1); mu = 0.5; s = 0; n = 200000; h = ($1 -
 ok $? "THL = {PERIOD: 1}: the arc length of (b, T(b)) over the 10 steps is 0.1 to 1e-4 (b = $bt)"
 # a boundary-value problem: p and q free, each step ds^2 = dp^2 + dq^2
 printf 'model = line.so\nIPS = 4\nICP = [p, q]\nNBC = 1\nNINT = 1\nNTST = 10\nNCOL = 4\nDS = 0.1\nDSMIN = 0.1\nDSMAX = 0.1\nNMX = 11\n' > "$tmp/line.whirl"
-(cd "$tmp" && "$WHIRL" run line.whirl --no-plot --quiet > /dev/null 2> line.err)
-ok $? "a boundary-value problem moving its free parameters alone ($(head -1 "$tmp/line.err"))"
+run_ok line "a boundary-value problem moving its free parameters alone"
 p=$(last line.out p)
 q=$(last line.out q)
 echo "$p $q" | awk '{ e = sqrt(0.5); exit !(NF == 2 && ($1 - e) ^ 2 < 1e-16 && ($2 - e) ^ 2 < 1e-16) }'
@@ -101,8 +103,7 @@ ok $? "10 steps of DS = 0.1 reach p = q = 1/sqrt 2 (p $p, q $q; before, sqrt(41)
 # step (AUTO's c.man.2 does so on PAR(6..9)), so each step moves p by DS
 # (before the fix, a THL on ICP(2) alone was ignored: p by DS/sqrt 2)
 printf 'THL = {q: 0}\n' | cat "$tmp/line.whirl" - > "$tmp/lineq.whirl"
-(cd "$tmp" && "$WHIRL" run lineq.whirl --no-plot --quiet > /dev/null 2> lineq.err)
-ok $? "THL = {q: 0} on the BVP's free parameter ($(head -1 "$tmp/lineq.err"))"
+run_ok lineq "THL = {q: 0} on the BVP's free parameter"
 p=$(last lineq.out p)
 echo "$p" | awk '{ exit !(($1 - 1) ^ 2 < 1e-16) }'
 ok $? "THL = {q: 0}: 10 steps of DS = 0.1 move p by 1 ($p)"
