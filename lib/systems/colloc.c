@@ -401,7 +401,8 @@ static int colloc_remap(double *const *v, size_t nv, const double *p,
 
 /* The system's norm weights: the quadrature weights of the node values
  * on the current mesh (the state's part of a step's norm is its integral,
- * as AUTO-07p's), 1 for the unknowns after them (the period, or the free parameter at a fixed period). */
+ * as AUTO-07p's), 1 for the unknowns after them (the period, or the free
+ * parameter at a fixed period). */
 static int colloc_norm_weights(double *q, void *data) {
   const whirl_colloc *c = data;
   colloc_basis_node_weights(c->n, c->ncol, c->ntst, c->mesh, q);

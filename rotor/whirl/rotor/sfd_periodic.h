@@ -30,7 +30,8 @@ typedef struct whirl_sfd_periodic_options {
   size_t oversampling; /* HBM: K (default 10, the paper's) */
   size_t ntst, ncol;   /* collocation: NTST (40), NCOL (4) */
   double omega_min, omega_max; /* defaults 0.05, 20 */
-  double ds, ds_max;   /* arclength steps, defaults 1e-2 (the paper's), 0.2 */
+  double ds, ds_max;   /* arclength steps, defaults 1e-2 (the paper's), 0.2; for
+                          collocation in the orbit's integral norm (AUTO's) */
   size_t nmx;          /* steps per branch half, default 20000 */
   int linsol;          /* whirl_linsol_kind (dense default; collocation
                           always uses the sparse solver) */
