@@ -20,51 +20,7 @@
 #include <whirl/bvp.h>
 #include <whirl/colloc.h>
 
-#include "colloc_basis.h"
-#include "util/errmsg_impl.h"
-
-struct whirl_bvp {
-  const whirl_problem *prob;
-  whirl_system sys;
-  size_t n, npar, ntst, ncol;
-  size_t nnodes; /* ntst*ncol + 1 */
-  size_t ncoll;  /* collocation rows n*ntst*ncol */
-  size_t nbc, nint, nfree;
-  size_t nx;  /* unknowns = equations */
-  size_t nnz;
-  size_t *free; /* nfree parameter indices */
-  whirl_bvp_bc_fn bc;
-  whirl_bvp_ic_fn ic;
-  void *data;
-
-  double *mesh; /* ntst + 1 */
-  /* Gauss points and weights on [0, 1]; the Lagrange basis and its
-   * derivative there, L[g*(ncol+1) + k] = l_k(σ_g), D likewise l_k' */
-  double gs[COLLOC_BASIS_MAXCOL], gw[COLLOC_BASIS_MAXCOL];
-  double L[COLLOC_BASIS_MAXCOL * (COLLOC_BASIS_MAXCOL + 1)];
-  double D[COLLOC_BASIS_MAXCOL * (COLLOC_BASIS_MAXCOL + 1)];
-
-  int *Jp, *Ji; /* compressed-column pattern, nx + 1 and nnz */
-  double *Jx;   /* nnz, values for the dense callback */
-
-  /* scratch, in one block (buf): u, du, f, fm, uq (n each), J (n*n),
-   * Jpar (n*npar), work (2n), pt, pq (npar), fb, fbm (nbc), gi, gim
-   * (nint), gu (nint*n), cp, cm (nbc + nint) */
-  double *buf;
-  double *u, *du, *f, *fm, *uq, *J, *Jpar, *work, *pt, *pq, *fb, *fbm, *gi,
-      *gim, *gu, *cp, *cm;
-  /* the integral conditions' reference (AUTO's UOLD): node values, and at
-   * the current Gauss point uold, upold and u' (ud, udq perturbed) */
-  double *ref;
-  double *uo, *upo, *ud, *udq, *gd;
-  /* mesh adaptation (AUTO's IAD): dm the NCOL-th derivative's weights,
-   * the old mesh, a copy of a vector and the density's scratch */
-  int adapt_every, since_adapt;
-  size_t adaptations;
-  double dm[COLLOC_BASIS_MAXCOL + 1];
-  double *old_mesh, *copy, *E, *Q, *Dm;
-  char errmsg[WHIRL_ERRMSG_SIZE];
-};
+#include "bvp_impl.h"
 
 void whirl_bvp_options_default(whirl_bvp_options *o) {
   memset(o, 0, sizeof *o);
@@ -369,8 +325,7 @@ static int ic_dp_at(whirl_bvp *b, size_t k) {
   return 0;
 }
 
-static int bvp_Fx_sparse(const double *X, const double *p, double *Jx,
-                         void *data) {
+int bvp_Fx_sparse(const double *X, const double *p, double *Jx, void *data) {
   whirl_bvp *b = data;
   const size_t colF = b->n * b->nnodes;
   int rc;
@@ -649,6 +604,8 @@ whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
   s->Jp = b->Jp;
   s->Ji = b->Ji;
   s->Fx_sparse = bvp_Fx_sparse;
+  /* condensation of parameters (bvp_cond.c) wants two intervals or more */
+  s->bsolver = N >= 2 ? &bvp_bsolver : NULL;
   s->accept = b->nint ? bvp_accept : NULL; /* the reference of ICND */
   s->remap = bvp_remap;
   s->norm_weights = bvp_norm_weights;

@@ -41,9 +41,15 @@
  * same).  The system has a compressed-column sparse pattern (rows sorted
  * within a column; usable by UMFPACK on the core's sparse path), a dense
  * callback built from it, and F_p for any parameter.  It has no spectrum
- * (a BVP solution has no stability) and no structured solver (the core's
- * dense or sparse LU factors the bordered matrix); its accept hook keeps
- * the integral conditions' reference.
+ * (a BVP solution has no stability).  With NTST >= 2 it has a structured
+ * solver for the core's bordered matrix (whirl_system bsolver): the
+ * condensation of parameters of the periodic collocation (AUTO-07p's
+ * solver for IPS = 4), each interval's interior values eliminated, then
+ * the mesh points, then a dense system in u(0), u(1), the free parameters
+ * and the continuation parameter with the boundary and integral rows;
+ * with whirl_cont_options.structured = 0 (or NTST = 1) the core's dense or
+ * sparse LU factors it.  Its accept hook keeps the integral conditions'
+ * reference.
  *
  * Mesh adaptation (AUTO's IAD): with options.adapt_every = k > 0 the
  * system's remap hook makes a new mesh every k accepted points, which

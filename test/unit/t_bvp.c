@@ -21,6 +21,7 @@
 #include <whirl/cont.h>
 
 #include "../tap.h"
+#include "bsolver_check.h"
 
 /* ------------------------------------------------------------------------
  * Bratu: u1' = u2, u2' = -λ e^{u1}, p = (λ) */
@@ -138,8 +139,11 @@ static void bratu_errors(const whirl_bvp *b, const double *X, double lam,
 /* ------------------------------------------------------------------------
  * 1. Bratu by the continuation core */
 
-static void test_bratu(whirl_linsol_kind kind) {
-  const char *kn = kind == WHIRL_LINSOL_SPARSE ? "sparse" : "dense";
+/* kind: the core's LU of the bordered matrix (structured = 0), or with
+ * structured = 1 the system's condensation of parameters (bvp_cond.c) */
+static void test_bratu(whirl_linsol_kind kind, int structured) {
+  const char *kn = structured ? "condensed"
+                   : kind == WHIRL_LINSOL_SPARSE ? "sparse" : "dense";
   const size_t ntst = 10, ncol = 4;
   char err[256];
   whirl_bvp_options o;
@@ -162,6 +166,7 @@ static void test_bratu(whirl_linsol_kind kind) {
   whirl_cont_options_default(&co);
   co.icp = 0;
   co.linsol = kind;
+  co.structured = structured;
   co.ds = 0.1;
   co.ds_max = 0.25;
   co.nmx = 200;
@@ -764,6 +769,68 @@ static void test_nonautonomous(void) {
 }
 
 /* ------------------------------------------------------------------------
+ * 3b. The condensation of parameters (bvp_cond.c) against UMFPACK on the
+ * assembled bordered matrix (bsolver_check.h), at random states: boundary
+ * rows alone (Bratu: no free parameter, NBC = n), with an
+ * integral condition and a free parameter (expo), with a free parameter in
+ * the boundary rows (nonaut); NTST 1 has no structured solver. */
+static void bsolver_case(const char *name, const whirl_problem *prob,
+                         whirl_bvp_options *o, const double *p, size_t k) {
+  char err[256];
+  whirl_bvp *b = whirl_bvp_alloc(prob, o, err, sizeof err);
+  ok(b != NULL, "%s: alloc: %s", name, err);
+  if (!b) return;
+  const size_t nx = whirl_bvp_size(b);
+  double *X = malloc(nx * sizeof *X);
+  for (size_t q = 0; q < nx; ++q) X[q] = tap_urand(-1.0, 1.0);
+  if (X) bsolver_check(name, whirl_bvp_system(b), X, p, k);
+  free(X);
+  whirl_bvp_free(b);
+}
+
+static void test_bsolver(void) {
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = 9;
+  o.ncol = 4;
+  o.nbc = 2;
+  o.bc = bratu_bc;
+  const double pb[1] = {2.0};
+  bsolver_case("Bratu NTST 9 NCOL 4, k = lambda", &bratu, &o, pb, 0);
+  o.ntst = 1;
+  char err[256];
+  whirl_bvp *b1 = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  ok(b1 && !whirl_bvp_system(b1)->bsolver,
+     "Bratu NTST 1: no structured solver (the core's LU)");
+  whirl_bvp_free(b1);
+
+  const size_t fa[1] = {0};
+  whirl_bvp_options_default(&o);
+  o.ntst = 6;
+  o.ncol = 3;
+  o.nbc = 1;
+  o.nint = 1;
+  o.bc = ex_bc;
+  o.ic = ex_ic;
+  o.nfree = 1;
+  o.free = fa;
+  const double pe[2] = {0.0 /* a from X */, 2.5};
+  bsolver_case("expo NTST 6 NCOL 3 (NINT 1, a free), k = c", &expo, &o, pe, 1);
+
+  const size_t fq[1] = {1};
+  whirl_bvp_options_default(&o);
+  o.ntst = 5;
+  o.ncol = 2;
+  o.nbc = 2;
+  o.bc = na_bc;
+  o.nfree = 1;
+  o.free = fq;
+  const double pn[3] = {-0.8, 0.0 /* q from X */, 1.5};
+  bsolver_case("nonaut NTST 5 NCOL 2 (q free in the BCs), k = B", &nonaut, &o, pn, 2);
+  bsolver_case("nonaut NTST 5 NCOL 2 (q free in the BCs), k = a", &nonaut, &o, pn, 0);
+}
+
+/* ------------------------------------------------------------------------
  * 4. Rejected options */
 
 static void test_bad_options(void) {
@@ -846,8 +913,10 @@ static void test_bad_options(void) {
 }
 
 int main(void) {
-  test_bratu(WHIRL_LINSOL_DENSE);
-  test_bratu(WHIRL_LINSOL_SPARSE);
+  test_bratu(WHIRL_LINSOL_DENSE, 0);
+  test_bratu(WHIRL_LINSOL_SPARSE, 0);
+  test_bratu(WHIRL_LINSOL_DENSE, 1);
+  test_bsolver();
   test_bratu_newton();
   test_bratu_adapt();
   test_jacobians();

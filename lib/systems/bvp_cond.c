@@ -1,0 +1,162 @@
+/* lib/systems/bvp_cond.c — the structured linear solver of boundary-value
+ * problems (whirl_system bsolver; AUTO-07p's IPS = 4 is solved so): the
+ * condensation of parameters of cond_elim.c with a BVP's rows — the
+ * collocation rows in the node values, the free parameters and p_k; the
+ * NBC boundary conditions (in u(0), u(1) and the globals) as the end rows;
+ * the NINT integral conditions and the core's r as the border rows.
+ * NFREE = NBC + NINT − n makes the final system square, as AUTO's
+ * NFPR = NBC + NINT − NDIM + 1 with the continuation parameter.
+ *
+ * The entries come from the system's own sparse Jacobian (bvp.c), scattered
+ * into the interval blocks, the boundary rows and dense integral rows, and
+ * dF/dp_k from its Fp: the same numbers the sparse LU factors, so the two
+ * solvers agree to rounding (t_bvp checks solutions and determinants).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/status.h>
+
+#include "bvp_impl.h"
+#include "cond_elim.h"
+
+/* A workspace's own rows (the integral and boundary rows of the point it
+ * factored: two workspaces of one BVP may be factored at two points). */
+typedef struct bvp_rows {
+  whirl_bvp *b;
+  size_t nf;    /* 2n + nfree + 1: [x_0 | x_N | free | p_k] */
+  double *ic;   /* nint x (nx + 1): the integral rows over M's columns */
+  double *bcr;  /* nbc x nf: the boundary rows */
+} bvp_rows;
+
+/* Column col of F_x in interval block of row lr: its position. */
+static size_t block_column(const whirl_bvp *b, size_t i, size_t col) {
+  const size_t n = b->n, m = b->ncol, ni = n * (m - 1), nn = n * b->nnodes;
+  if (col >= nn) return ni + 2 * n + (col - nn);
+  const size_t kk = col / n - i * m, q = col % n;
+  return kk == 0 ? ni + q : kk == m ? ni + n + q : (kk - 1) * n + q;
+}
+
+/* The Jacobian's entries into the blocks, boundary and integral rows. */
+static void scatter(cond_ws *w, bvp_rows *R, int mono) {
+  const whirl_bvp *b = R->b;
+  const size_t n = b->n, nm = n * b->ncol, nn = n * b->nnodes, nx = b->nx,
+               last = b->nnodes - 1, wc = cond_block_ld(w);
+  for (size_t col = 0; col < nx; ++col) {
+    if (mono && col >= nn) break; /* F_x alone: the globals' columns 0 */
+    for (int q = b->Jp[col]; q < b->Jp[col + 1]; ++q) {
+      const size_t row = (size_t)b->Ji[q];
+      const double v = b->Jx[q];
+      if (row < b->ncoll) {
+        const size_t i = row / nm;
+        cond_block(w, i)[(row - i * nm) * wc + block_column(b, i, col)] = v;
+      } else if (row < b->ncoll + b->nbc) {
+        const size_t node = col / n;
+        const size_t pos = col >= nn ? 2 * n + (col - nn)
+                           : node == 0 ? col % n : node == last ? n + col % n : R->nf;
+        if (pos < R->nf) R->bcr[(row - b->ncoll) * R->nf + pos] = v;
+      } else {
+        R->ic[(row - b->ncoll - b->nbc) * (nx + 1) + col] = v;
+      }
+    }
+  }
+}
+
+static int bvp_fill(cond_ws *w, const double *X, const double *p, size_t k,
+                    int mono) {
+  bvp_rows *R = cond_sys(w);
+  whirl_bvp *b = R->b;
+  const size_t n = b->n, m = b->ncol, N = b->ntst, nx = b->nx,
+               wc = cond_block_ld(w), nm = n * m, pk = 2 * n + b->nfree;
+  int rc = bvp_Fx_sparse(X, p, b->Jx, b);
+  if (rc != 0) return rc;
+  double *fk = cond_fk(w);
+  if (!mono && (rc = whirl_system_param(&b->sys, X, p, k, fk, cond_work(w))) != 0)
+    return rc;
+  for (size_t i = 0; i < N; ++i) memset(cond_block(w, i), 0, nm * wc * sizeof(double));
+  memset(R->ic, 0, b->nint * (nx + 1) * sizeof *R->ic);
+  memset(R->bcr, 0, b->nbc * R->nf * sizeof *R->bcr);
+  scatter(w, R, mono);
+  if (mono) return 0;
+  for (size_t row = 0; row < b->ncoll; ++row)
+    cond_block(w, row / nm)[(row % nm) * wc + n * (m - 1) + pk] = fk[row];
+  for (size_t e = 0; e < b->nbc; ++e) R->bcr[e * R->nf + pk] = fk[b->ncoll + e];
+  for (size_t t = 0; t < b->nint; ++t)
+    R->ic[t * (nx + 1) + nx] = fk[b->ncoll + b->nbc + t];
+  return 0;
+}
+
+/* Integral condition t < NINT, or the core's r. */
+static const double *bvp_border(cond_ws *w, size_t t, const double *r,
+                                double *g) {
+  const bvp_rows *R = cond_sys(w);
+  const whirl_bvp *b = R->b;
+  const size_t nn = b->n * b->nnodes, nx = b->nx;
+  const double *row = t < b->nint ? R->ic + t * (nx + 1) : r;
+  for (size_t e = 0; e < b->nfree; ++e) g[e] = row[nn + e];
+  g[b->nfree] = row[nx];
+  return row;
+}
+
+static void bvp_end_row(cond_ws *w, size_t e, double *a) {
+  const bvp_rows *R = cond_sys(w);
+  memcpy(a, R->bcr + e * R->nf, R->nf * sizeof *a);
+}
+
+static const cond_ops bvp_ops = {bvp_fill, bvp_border, bvp_end_row};
+
+static void bs_free(void *ws) {
+  if (!ws) return;
+  bvp_rows *R = cond_sys(ws);
+  cond_free(ws);
+  free(R->ic);
+  free(R->bcr);
+  free(R);
+}
+
+static void *bs_alloc(void *data) {
+  whirl_bvp *b = data;
+  const size_t ng = b->nfree + 1, nb = b->nint + 1;
+  bvp_rows *R = calloc(1, sizeof *R);
+  size_t *gcol = malloc(ng * sizeof *gcol);
+  int *blab = malloc(nb * sizeof *blab);
+  cond_ws *w = NULL;
+  if (R && gcol && blab) {
+    R->b = b;
+    R->nf = 2 * b->n + ng;
+    R->ic = malloc((b->nint * (b->nx + 1) + 1) * sizeof *R->ic);
+    R->bcr = malloc((b->nbc * R->nf + 1) * sizeof *R->bcr);
+    for (size_t e = 0; e < b->nfree; ++e) gcol[e] = b->n * b->nnodes + e;
+    gcol[b->nfree] = b->nx;
+    for (size_t t = 0; t < b->nint; ++t) blab[t] = (int)(b->ncoll + b->nbc + t);
+    blab[b->nint] = (int)b->nx;
+    const cond_shape s = {b->n, b->ncol, b->ntst, b->nx, ng, nb, b->npar, gcol, blab};
+    if (R->ic && R->bcr) w = cond_alloc(&s, &bvp_ops, R);
+  }
+  free(gcol);
+  free(blab);
+  if (!w && R) {
+    free(R->ic);
+    free(R->bcr);
+    free(R);
+  }
+  return w;
+}
+
+static int bs_factor(void *ws, const double *X, const double *p, size_t k,
+                     const double *r) {
+  return cond_factor(ws, X, p, k, r);
+}
+
+static int bs_solve(void *ws, double *b, size_t nrhs) {
+  return cond_solve(ws, b, nrhs);
+}
+
+static int bs_logdet(void *ws, double *logabs, int *sign) {
+  return cond_logdet(ws, logabs, sign);
+}
+
+static int bs_reborder(void *ws, const double *r) { return cond_reborder(ws, r); }
+
+const whirl_bsolver bvp_bsolver = {bs_alloc, bs_free,   bs_factor,
+                                   bs_solve, bs_logdet, bs_reborder};

@@ -1,0 +1,626 @@
+/* lib/systems/cond_elim.c — the structured solver of collocation systems
+ * (cond_elim.h): the bordered Newton matrix of the continuation core
+ *     M = [F_x  dF/dp_k; r^T]
+ * factored without assembling it, as AUTO-07p does (Doedel, Keller &
+ * Kernévez, Int. J. Bif. Chaos 1 (1991) 745, §6; AUTO-07p manual ch. 10;
+ * the block elimination of Ascher, Mattheij & Russell, Numerical Solution of
+ * BVPs for ODEs, §7.3):
+ *
+ *  1. Condensation of parameters.  The NCOL·n collocation equations of mesh
+ *     interval i involve its (NCOL − 1)·n interior unknowns, its two mesh
+ *     points and the global unknowns g (the period T of an autonomous orbit,
+ *     a BVP's free parameters, and the continuation parameter).  Gaussian
+ *     elimination with partial pivoting (within the interval's rows) of the
+ *     interior unknowns leaves n equations  A_i x_i + C_i x_{i+1} + G_i g =
+ *     r_i  per interval.  The border rows (phase condition, integral
+ *     conditions, pseudo-arclength) are eliminated with the same pivot rows
+ *     but are never pivots themselves, so they are done after the
+ *     collocation rows and a new border row (chord Newton, the next step's
+ *     arclength row) only redoes them and step 3.
+ *  2. The mesh points x_1 .. x_{NTST−1} are eliminated in turn: x_j from the
+ *     2n rows (the n rows left over so far, in x_0, x_j and g, and the n
+ *     rows of interval j), with partial pivoting among them.  What is left
+ *     are n rows  S_0 x_0 + S_N x_N + S_g g = s.
+ *  3. Those n rows, the system's end rows (periodicity x_N − x_0 = 0, or the
+ *     boundary conditions) and the border rows form a dense system of order
+ *     2n + (number of globals), solved by LU.
+ *
+ * Every step is Gaussian elimination of M with rows and columns taken in a
+ * particular order, so P M Q = L U and det M = sgn(P) sgn(Q) prod U_kk:
+ * the determinant (branch-point test) is that of M, with the sign of the
+ * row and column orders counted from the order in which they were used.
+ *
+ * The n rows of step 2 also give the monodromy matrix of a discretised
+ * orbit, the transfer x_N = −S_N^{-1} S_0 x_0 of the linearised collocation
+ * equations at fixed globals, whose eigenvalues are AUTO's Floquet
+ * multipliers (Fairgrieve & Jepson, SIAM J. Numer. Anal. 28 (1991) 1446,
+ * discuss its accuracy; fine for moderate multipliers).
+ *
+ * Blocks are row-major: the eliminations work on rows.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <whirl/status.h>
+
+#include "cond_elim.h"
+
+typedef cond_det det_acc;
+
+struct cond_ws {
+  const cond_ops *ops;
+  void *sys;
+  size_t n, m, N, nx;
+  size_t ni;  /* interior unknowns per interval, n (NCOL − 1) */
+  size_t nm;  /* collocation rows per interval, n NCOL */
+  size_t ng;  /* global unknowns (the last: p_k) */
+  size_t nb;  /* border rows */
+  size_t ne;  /* end rows: 2n + ng − n − nb */
+  size_t wr, wc; /* interval block: nm + nb rows, ni + 2n + ng columns */
+  size_t pr, pc; /* mesh-point block: 2n + nb rows, 3n + ng columns */
+  size_t nf;     /* final dense system: 2n + ng */
+  size_t bc;     /* reduced border rows: n (NTST + 1) + ng columns */
+  size_t *gcol;  /* ng: M's column of each global */
+  int *blab;     /* nb: M's row of each border row */
+  double *W;     /* NTST interval blocks */
+  int *wpiv;     /* NTST * ni pivot rows */
+  int *wlab;     /* NTST * n: M's row of each condensed row */
+  double *P;     /* NTST − 1 mesh-point blocks (for x_1 .. x_{NTST−1}) */
+  int *ppiv;     /* (NTST − 1) * n */
+  double *B;     /* nb x bc: border rows on the mesh points and globals */
+  double *F;     /* nf x nf */
+  int *fpiv;     /* nf */
+  int *lab;      /* scratch labels, max(nm, 2n, nf) */
+  int *prow, *pcol; /* nx + 1: M's rows and columns in elimination order */
+  int *mark;     /* nx + 1: scratch for the permutation signs */
+  double *fk;    /* nx: dF/dp_k */
+  double *work;  /* nx + npar: the system's scratch in fill */
+  double *loc;   /* NTST * wr: transformed right-hand sides of the intervals */
+  double *ploc;  /* (NTST − 1) * pr: those of the mesh-point blocks */
+  double *xs;    /* n (NTST + 1) + ng: mesh-point values and globals */
+  double *bb;    /* nb */
+  double *tmp;   /* 3 nf: the final right-hand side, solution, back values */
+  det_acc det_c; /* product of the pivots of the collocation rows */
+  size_t npiv_c; /* their number */
+  int sign_c;    /* sign of the row and column orders (see factor_rows) */
+  int jac_ok;    /* the collocation rows are factored (at Xf, pf) */
+  double *Xf, *pf;
+  size_t npar;
+  int *slab;     /* n: M's rows of the n rows left after step 2 */
+  double *mblk;  /* 2n^2 + 2n: the monodromy matrix */
+  int *mpiv, *mlab; /* n each */
+  det_acc det;   /* product of all the pivots */
+  double logabs; /* log|det M| and its sign, when factored */
+  int sign;
+  int state; /* 0 none, 1 factored, 2 singular */
+};
+
+void cond_free(cond_ws *w) {
+  if (!w) return;
+  void *p[] = {w->gcol, w->blab, w->W,    w->wpiv, w->wlab, w->P,   w->ppiv,
+               w->B,    w->F,    w->fpiv, w->lab,  w->prow, w->pcol, w->mark,
+               w->fk,   w->work, w->loc,  w->ploc, w->xs,   w->bb,   w->tmp,
+               w->Xf,   w->pf,   w->slab, w->mblk, w->mpiv, w->mlab};
+  for (size_t i = 0; i < sizeof p / sizeof *p; ++i) free(p[i]);
+  free(w);
+}
+
+cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
+  if (s->ntst < 2 || s->nb + s->n > 2 * s->n + s->ng || s->ng < 1) return NULL;
+  cond_ws *w = calloc(1, sizeof *w);
+  if (!w) return NULL;
+  const size_t n = s->n, m = s->ncol, N = s->ntst;
+  w->ops = ops;
+  w->sys = sys;
+  w->n = n;
+  w->m = m;
+  w->N = N;
+  w->nx = s->nx;
+  w->ni = n * (m - 1);
+  w->nm = n * m;
+  w->ng = s->ng;
+  w->nb = s->nb;
+  w->ne = n + s->ng - s->nb;
+  w->wr = w->nm + w->nb;
+  w->wc = w->ni + 2 * n + w->ng;
+  w->pr = 2 * n + w->nb;
+  w->pc = 3 * n + w->ng;
+  w->nf = 2 * n + w->ng;
+  w->bc = n * (N + 1) + w->ng;
+  size_t nlab = w->nm > w->nf ? w->nm : w->nf;
+  if (2 * n > nlab) nlab = 2 * n;
+  const size_t np = s->npar ? s->npar : 1;
+  w->npar = np;
+  w->gcol = malloc(w->ng * sizeof *w->gcol);
+  w->blab = malloc(w->nb * sizeof *w->blab);
+  w->W = malloc(N * w->wr * w->wc * sizeof *w->W);
+  w->wpiv = malloc((N * w->ni + 1) * sizeof *w->wpiv);
+  w->wlab = malloc(N * n * sizeof *w->wlab);
+  w->P = malloc((N - 1) * w->pr * w->pc * sizeof *w->P);
+  w->ppiv = malloc((N - 1) * n * sizeof *w->ppiv);
+  w->B = malloc(w->nb * w->bc * sizeof *w->B);
+  w->F = malloc(w->nf * w->nf * sizeof *w->F);
+  w->fpiv = malloc(w->nf * sizeof *w->fpiv);
+  w->lab = malloc(nlab * sizeof *w->lab);
+  w->prow = malloc((w->nx + 1) * sizeof *w->prow);
+  w->pcol = malloc((w->nx + 1) * sizeof *w->pcol);
+  w->mark = malloc((w->nx + 1) * sizeof *w->mark);
+  w->fk = malloc(w->nx * sizeof *w->fk);
+  w->work = malloc((w->nx + np) * sizeof *w->work);
+  w->loc = malloc(N * w->wr * sizeof *w->loc);
+  w->ploc = malloc((N - 1) * w->pr * sizeof *w->ploc);
+  w->xs = malloc((n * (N + 1) + w->ng) * sizeof *w->xs);
+  w->bb = malloc(w->nb * sizeof *w->bb);
+  w->tmp = malloc(3 * w->nf * sizeof *w->tmp);
+  w->Xf = malloc(w->nx * sizeof *w->Xf);
+  w->pf = malloc(np * sizeof *w->pf);
+  w->slab = malloc(n * sizeof *w->slab);
+  w->mblk = malloc((2 * n * n + 2 * n) * sizeof *w->mblk);
+  w->mpiv = malloc(n * sizeof *w->mpiv);
+  w->mlab = malloc(n * sizeof *w->mlab);
+  if (!w->gcol || !w->blab || !w->W || !w->wpiv || !w->wlab || !w->P ||
+      !w->ppiv || !w->B || !w->F || !w->fpiv || !w->lab || !w->prow ||
+      !w->pcol || !w->mark || !w->fk || !w->work || !w->loc || !w->ploc ||
+      !w->xs || !w->bb || !w->tmp || !w->Xf || !w->pf || !w->slab ||
+      !w->mblk || !w->mpiv || !w->mlab) {
+    cond_free(w);
+    return NULL;
+  }
+  memcpy(w->gcol, s->gcol, w->ng * sizeof *w->gcol);
+  memcpy(w->blab, s->blab, w->nb * sizeof *w->blab);
+  return w;
+}
+
+void *cond_sys(const cond_ws *w) { return w->sys; }
+double *cond_block(cond_ws *w, size_t i) { return w->W + i * w->wr * w->wc; }
+size_t cond_block_ld(const cond_ws *w) { return w->wc; }
+double *cond_fk(cond_ws *w) { return w->fk; }
+double *cond_work(cond_ws *w) { return w->work; }
+
+/* ------------------------------------------------------------ kernels */
+
+/* a[k] -= l u[k], k < len: the update of every elimination, unrolled by
+ * four so that it runs at full speed without auto-vectorisation (-O2). */
+static inline void row_update(double *restrict a, const double *restrict u,
+                              double l, size_t len) {
+  size_t k = 0;
+  for (; k + 4 <= len; k += 4) {
+    a[k] -= l * u[k];
+    a[k + 1] -= l * u[k + 1];
+    a[k + 2] -= l * u[k + 2];
+    a[k + 3] -= l * u[k + 3];
+  }
+  for (; k < len; ++k) a[k] -= l * u[k];
+}
+
+static void det_mul(det_acc *d, double v) {
+  int e;
+  d->mant = frexp(d->mant * v, &e);
+  d->expo += e;
+}
+
+/* Gaussian elimination with partial pivoting of the first ne columns of the
+ * row-major block A (rows of ld entries): pivots are sought among the first
+ * np rows; the next nextra rows (borders) are eliminated but never pivot.
+ * Whole rows are swapped (LAPACK's convention: P A = L U, apply all the
+ * swaps first when solving); lab[np] follows the swaps.  The diagonal of U
+ * is stored as its reciprocal (the solves multiply).  Multiplies the
+ * pivots into *det; *nswaps (may be NULL) the number of row swaps.  Returns 0, or 1 at a zero pivot column (exactly
+ * singular), or 2 at a non-finite pivot. */
+static int gepp(double *A, size_t ld, size_t np, size_t nextra, size_t ne,
+                int *piv, int *lab, det_acc *det, int *nswaps) {
+  int swaps = 0;
+  for (size_t c = 0; c < ne; ++c) {
+    size_t pr = c;
+    double best = fabs(A[c * ld + c]);
+    for (size_t r = c + 1; r < np; ++r) {
+      const double v = fabs(A[r * ld + c]);
+      if (v > best) best = v, pr = r;
+    }
+    piv[c] = (int)pr;
+    if (!isfinite(best)) return 2;
+    if (!(best > 0.0)) return 1;
+    if (pr != c) {
+      double *a = A + c * ld, *b = A + pr * ld;
+      for (size_t k = 0; k < ld; ++k) {
+        const double t = a[k];
+        a[k] = b[k];
+        b[k] = t;
+      }
+      const int t = lab[c];
+      lab[c] = lab[pr];
+      lab[pr] = t;
+      ++swaps;
+    }
+    double *u = A + c * ld;
+    const double d = u[c], dinv = 1.0 / d;
+    det_mul(det, d);
+    u[c] = dinv; /* U is kept with reciprocal diagonal */
+    for (size_t r = c + 1; r < np + nextra; ++r) {
+      double *a = A + r * ld;
+      const double l = a[c] * dinv;
+      a[c] = l;
+      if (l != 0.0) row_update(a + c + 1, u + c + 1, l, ld - c - 1);
+    }
+  }
+  if (nswaps) *nswaps = swaps;
+  return 0;
+}
+
+/* Dot product of a[k] and b[k], k < len, with four partial sums (the
+ * dependency chain of one sum, not the arithmetic, limits a scalar loop). */
+static inline double dot4(const double *restrict a, const double *restrict b,
+                          size_t len) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  size_t k = 0;
+  for (; k + 4 <= len; k += 4) {
+    s0 += a[k] * b[k];
+    s1 += a[k + 1] * b[k + 1];
+    s2 += a[k + 2] * b[k + 2];
+    s3 += a[k + 3] * b[k + 3];
+  }
+  for (; k < len; ++k) s0 += a[k] * b[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
+/* The forward part of a solve with a gepp block: the swaps, then L, row by
+ * row (contiguous dot products). */
+static void gepp_forward(const double *A, size_t ld, size_t np, size_t nextra,
+                         size_t ne, const int *piv, double *b) {
+  for (size_t c = 0; c < ne; ++c)
+    if ((size_t)piv[c] != c) {
+      const double t = b[c];
+      b[c] = b[piv[c]];
+      b[piv[c]] = t;
+    }
+  for (size_t r = 1; r < np + nextra; ++r)
+    b[r] -= dot4(A + r * ld, b, r < ne ? r : ne);
+}
+
+/* The backward part: the eliminated unknowns x[ne] from the transformed
+ * right-hand side b[ne] and the values y[ny] of the next ny columns. */
+static void gepp_back(const double *A, size_t ld, size_t ne, size_t ny,
+                      const double *b, const double *y, double *x) {
+  for (size_t c = ne; c-- > 0;) {
+    const double *a = A + c * ld;
+    const double s = b[c] - dot4(a + c + 1, x + c + 1, ne - c - 1) -
+                     dot4(a + ne, y, ny);
+    x[c] = s * a[c];
+  }
+}
+
+/* Sign of a permutation perm[len] of 0..len−1 (cycle count); mark[len]. */
+static int perm_sign(const int *perm, size_t len, int *mark) {
+  int s = 1;
+  memset(mark, 0, len * sizeof *mark);
+  for (size_t i = 0; i < len; ++i) {
+    if (mark[i]) continue;
+    size_t j = i, cyc = 0;
+    while (!mark[j]) {
+      mark[j] = 1;
+      j = (size_t)perm[j];
+      ++cyc;
+    }
+    if (cyc % 2 == 0) s = -s;
+  }
+  return s;
+}
+
+/* ------------------------------------------------------------ factor */
+
+/* The n rows left after condensing interval i: its block's rows ni..nm−1,
+ * columns ni.. = [x_i | x_{i+1} | g]. */
+static const double *cond_rows(const cond_ws *w, size_t i) {
+  return w->W + i * w->wr * w->wc + w->ni * w->wc + w->ni;
+}
+
+/* A border row b (ld entries) eliminated by the ne pivot rows of a gepp
+ * block A: its multipliers replace b[0..ne−1], and the rest of b is
+ * updated.  The same arithmetic as gepp applies to its extra rows, so
+ * borders may be (re)done after the collocation rows. */
+static void border_eliminate(const double *A, size_t ld, size_t ne,
+                             double *b) {
+  for (size_t c = 0; c < ne; ++c) {
+    const double *u = A + c * ld;
+    const double l = b[c] * u[c]; /* reciprocal diagonal */
+    b[c] = l;
+    if (l != 0.0) row_update(b + c + 1, u + c + 1, l, ld - c - 1);
+  }
+}
+
+static int singular(cond_ws *w) {
+  w->state = 2;
+  return WHIRL_ESINGULAR;
+}
+
+/* Step 1 on the filled interval blocks. */
+static int condense_intervals(cond_ws *w) {
+  const size_t n = w->n, m = w->m, N = w->N, ni = w->ni, nm = w->nm;
+  for (size_t i = 0; i < N; ++i) {
+    double *Wi = w->W + i * w->wr * w->wc;
+    for (size_t q = 0; q < nm; ++q) w->lab[q] = (int)(n * i * m + q);
+    int rc = gepp(Wi, w->wc, nm, 0, ni, w->wpiv + i * ni, w->lab, &w->det_c, NULL);
+    if (rc == 2) return WHIRL_EBADFUNC;
+    if (rc == 1) return singular(w);
+    for (size_t q = 0; q < ni; ++q) {
+      w->prow[w->npiv_c] = w->lab[q];
+      w->pcol[w->npiv_c++] = (int)(n * (i * m + 1 + q / n) + q % n);
+    }
+    for (size_t q = 0; q < n; ++q) w->wlab[i * n + q] = w->lab[ni + q];
+  }
+  return 0;
+}
+
+/* Step 2: the mesh points x_1 .. x_{N−1}; block columns
+ * [x_j | x_0 | x_{j+1} | g]. */
+static int eliminate_mesh_points(cond_ws *w) {
+  const size_t n = w->n, m = w->m, N = w->N, ng = w->ng, wc = w->wc, pc = w->pc;
+  for (size_t q = 0; q < n; ++q) w->lab[q] = w->wlab[q];
+  for (size_t j = 1; j < N; ++j) {
+    double *Pj = w->P + (j - 1) * w->pr * pc;
+    for (size_t q = 0; q < n; ++q) {
+      double *a = Pj + q * pc;
+      if (j == 1) {
+        const double *s = cond_rows(w, 0) + q * wc; /* [x_0 | x_1 | g] */
+        memcpy(a, s + n, n * sizeof *a);
+        memcpy(a + n, s, n * sizeof *a);
+        memcpy(a + 3 * n, s + 2 * n, ng * sizeof *a);
+      } else {
+        const double *s = w->P + (j - 2) * w->pr * pc + (n + q) * pc;
+        memcpy(a, s + 2 * n, n * sizeof *a); /* x_j */
+        memcpy(a + n, s + n, n * sizeof *a); /* x_0 */
+        memcpy(a + 3 * n, s + 3 * n, ng * sizeof *a);
+      }
+      memset(a + 2 * n, 0, n * sizeof *a);
+      const double *s = cond_rows(w, j) + q * wc; /* [x_j | x_{j+1} | g] */
+      double *b = Pj + (n + q) * pc;
+      memcpy(b, s, n * sizeof *b);
+      memset(b + n, 0, n * sizeof *b);
+      memcpy(b + 2 * n, s + n, n * sizeof *b);
+      memcpy(b + 3 * n, s + 2 * n, ng * sizeof *b);
+      w->lab[n + q] = w->wlab[j * n + q];
+    }
+    int rc = gepp(Pj, pc, 2 * n, 0, n, w->ppiv + (j - 1) * n, w->lab, &w->det_c, NULL);
+    if (rc == 2) return WHIRL_EBADFUNC;
+    if (rc == 1) return singular(w);
+    for (size_t q = 0; q < n; ++q) {
+      w->prow[w->npiv_c] = w->lab[q];
+      w->pcol[w->npiv_c++] = (int)(n * (j * m) + q);
+      w->lab[q] = w->lab[n + q]; /* the rows left over go on */
+    }
+  }
+  for (size_t q = 0; q < n; ++q) w->slab[q] = w->lab[q];
+  return 0;
+}
+
+/* The signs of the row order with the final rows in their order before
+ * the final elimination (whose swaps factor_border counts), and of the
+ * column order: both fixed until the next factor_rows. */
+static void order_signs(cond_ws *w) {
+  const size_t n = w->n, nx = w->nx, nNm = n * w->N * w->m;
+  size_t q = w->npiv_c;
+  for (size_t e = 0; e < n; ++e) w->prow[q++] = w->slab[e];
+  for (size_t e = 0; e < w->ne; ++e) w->prow[q++] = (int)(nNm + e);
+  for (size_t t = 0; t < w->nb; ++t) w->prow[q++] = w->blab[t];
+  q = w->npiv_c;
+  for (size_t e = 0; e < w->nf; ++e)
+    w->pcol[q++] = (int)(e < n ? e : e < 2 * n ? nNm + (e - n) : w->gcol[e - 2 * n]);
+  w->sign_c = perm_sign(w->prow, nx + 1, w->mark) * perm_sign(w->pcol, nx + 1, w->mark);
+}
+
+/* The collocation rows: the system's fill at (X, p) (dF/dp_k unless mono),
+ * the condensation of every interval and the elimination of the inner mesh
+ * points.  mono: F_x only (the global columns 0), for the monodromy. */
+static int factor_rows(cond_ws *w, const double *X, const double *p, size_t k,
+                       int mono) {
+  w->state = 0;
+  w->jac_ok = 0;
+  w->det_c.mant = 1.0;
+  w->det_c.expo = 0;
+  w->npiv_c = 0;
+  int rc = w->ops->fill(w, X, p, k, mono);
+  if (rc != 0) return rc;
+  if ((rc = condense_intervals(w)) != 0 || (rc = eliminate_mesh_points(w)) != 0)
+    return rc;
+  if (!mono) order_signs(w);
+  memcpy(w->Xf, X, w->nx * sizeof *w->Xf);
+  memcpy(w->pf, p, w->npar * sizeof *w->pf);
+  w->jac_ok = mono ? 2 : 1;
+  return 0;
+}
+
+/* Border row t's entries on the mesh points and globals into Bt (bc),
+ * with its interior entries eliminated by each interval (step 1). */
+static void reduce_border_intervals(cond_ws *w, size_t t, const double *r) {
+  const size_t n = w->n, m = w->m, N = w->N, ni = w->ni, nm = w->nm,
+               ng = w->ng, wc = w->wc;
+  double *Bt = w->B + t * w->bc;
+  const double *src = w->ops->border(w, t, r, Bt + n * (N + 1));
+  for (size_t i = 0; i <= N; ++i)
+    for (size_t q = 0; q < n; ++q) Bt[n * i + q] = src[n * (i * m) + q];
+  for (size_t i = 0; i < N; ++i) {
+    double *Wi = w->W + i * w->wr * wc;
+    double *a = Wi + (nm + t) * wc;
+    memcpy(a, src + n * (i * m + 1), ni * sizeof *a);
+    memset(a + ni, 0, (2 * n + ng) * sizeof *a);
+    border_eliminate(Wi, wc, ni, a);
+    for (size_t q = 0; q < n; ++q) {
+      Bt[n * i + q] += a[ni + q];
+      Bt[n * (i + 1) + q] += a[ni + n + q];
+    }
+    for (size_t e = 0; e < ng; ++e) Bt[n * (N + 1) + e] += a[ni + 2 * n + e];
+  }
+}
+
+/* The border rows against the collocation rows of the last factor_rows,
+ * then the final dense system. */
+static int factor_border(cond_ws *w, const double *r) {
+  const size_t n = w->n, N = w->N, ng = w->ng, nb = w->nb, pc = w->pc,
+               bc = w->bc, nf = w->nf;
+  int rc;
+  w->state = 0;
+  if (w->jac_ok != 1) return WHIRL_EINVAL;
+  w->det = w->det_c;
+  /* 1. the interiors */
+  for (size_t t = 0; t < nb; ++t) reduce_border_intervals(w, t, r);
+  /* 2. the inner mesh points */
+  for (size_t j = 1; j < N; ++j) {
+    double *Pj = w->P + (j - 1) * w->pr * pc;
+    for (size_t t = 0; t < nb; ++t) {
+      double *a = Pj + (2 * n + t) * pc, *Bt = w->B + t * bc;
+      memcpy(a, Bt + n * j, n * sizeof *a);
+      memcpy(a + n, Bt, n * sizeof *a);
+      memcpy(a + 2 * n, Bt + n * (j + 1), n * sizeof *a);
+      memcpy(a + 3 * n, Bt + n * (N + 1), ng * sizeof *a);
+      border_eliminate(Pj, pc, n, a);
+      memcpy(Bt, a + n, n * sizeof *a);
+      memcpy(Bt + n * (j + 1), a + 2 * n, n * sizeof *a);
+      memcpy(Bt + n * (N + 1), a + 3 * n, ng * sizeof *a);
+    }
+  }
+  /* 3. the final system in [x_0 | x_N | g] */
+  const double *S = w->P + (N - 2) * w->pr * pc + n * pc; /* [x_0 | x_N | g] at +n */
+  double *F = w->F;
+  const size_t nNm = n * N * w->m;
+  memset(F, 0, nf * nf * sizeof *F);
+  for (size_t q = 0; q < n; ++q) {
+    memcpy(F + q * nf, S + q * pc + n, (2 * n + ng) * sizeof *F);
+    w->lab[q] = w->slab[q];
+  }
+  for (size_t e = 0; e < w->ne; ++e) {
+    w->ops->end_row(w, e, F + (n + e) * nf);
+    w->lab[n + e] = (int)(nNm + e);
+  }
+  for (size_t t = 0; t < nb; ++t) {
+    double *a = F + (n + w->ne + t) * nf;
+    const double *Bt = w->B + t * bc;
+    memcpy(a, Bt, n * sizeof *a);
+    memcpy(a + n, Bt + n * N, n * sizeof *a);
+    memcpy(a + 2 * n, Bt + n * (N + 1), ng * sizeof *a);
+    w->lab[n + w->ne + t] = w->blab[t];
+  }
+  int swaps = 0;
+  rc = gepp(F, nf, nf, 0, nf, w->fpiv, w->lab, &w->det, &swaps);
+  if (rc == 2) return WHIRL_EBADFUNC;
+  if (rc == 1) return singular(w);
+  w->logabs = log(fabs(w->det.mant)) + (double)w->det.expo * log(2.0);
+  if (!isfinite(w->logabs)) return WHIRL_EBADFUNC;
+  w->sign = (w->det.mant < 0.0 ? -1 : 1) * w->sign_c * (swaps % 2 ? -1 : 1);
+  w->state = 1;
+  return 0;
+}
+
+int cond_factor(cond_ws *w, const double *X, const double *p, size_t k,
+                const double *r) {
+  int rc = factor_rows(w, X, p, k, 0);
+  return rc != 0 ? rc : factor_border(w, r);
+}
+
+/* The same F_x and dF/dp_k with a new border row r (and the system's
+ * current border data): only the border rows and the final system are
+ * redone. */
+int cond_reborder(cond_ws *w, const double *r) { return factor_border(w, r); }
+
+int cond_factored_at(const cond_ws *w, const double *X, const double *p) {
+  return w->jac_ok && memcmp(w->Xf, X, w->nx * sizeof *X) == 0 &&
+         memcmp(w->pf, p, w->npar * sizeof *p) == 0;
+}
+
+int cond_factor_rows(cond_ws *w, const double *X, const double *p) {
+  return factor_rows(w, X, p, 0, 1);
+}
+
+/* ------------------------------------------------------------ solve */
+
+static void solve1(cond_ws *w, double *b) {
+  const size_t n = w->n, m = w->m, N = w->N, ni = w->ni, nm = w->nm,
+               ng = w->ng, nb = w->nb, wr = w->wr, wc = w->wc, pr = w->pr,
+               pc = w->pc, nf = w->nf;
+  double *bb = w->bb, *xs = w->xs, *g = xs + n * (N + 1);
+  for (size_t t = 0; t < nb; ++t) bb[t] = b[w->blab[t]];
+  /* 1. */
+  for (size_t i = 0; i < N; ++i) {
+    double *v = w->loc + i * wr;
+    memcpy(v, b + n * i * m, nm * sizeof *v);
+    for (size_t t = 0; t < nb; ++t) v[nm + t] = 0.0;
+    gepp_forward(w->W + i * wr * wc, wc, nm, nb, ni, w->wpiv + i * ni, v);
+    for (size_t t = 0; t < nb; ++t) bb[t] += v[nm + t];
+  }
+  /* 2. */
+  for (size_t j = 1; j < N; ++j) {
+    double *v = w->ploc + (j - 1) * pr;
+    const double *s = j == 1 ? w->loc + ni : w->ploc + (j - 2) * pr + n;
+    memcpy(v, s, n * sizeof *v);
+    memcpy(v + n, w->loc + j * wr + ni, n * sizeof *v);
+    for (size_t t = 0; t < nb; ++t) v[2 * n + t] = 0.0;
+    gepp_forward(w->P + (j - 1) * pr * pc, pc, 2 * n, nb, n, w->ppiv + (j - 1) * n, v);
+    for (size_t t = 0; t < nb; ++t) bb[t] += v[2 * n + t];
+  }
+  /* 3. */
+  double *frp = w->tmp, *zp = frp + nf, *yp = zp + nf;
+  memcpy(frp, w->ploc + (N - 2) * pr + n, n * sizeof *frp);
+  memcpy(frp + n, b + n * N * m, w->ne * sizeof *frp);
+  memcpy(frp + n + w->ne, bb, nb * sizeof *frp);
+  gepp_forward(w->F, nf, nf, 0, nf, w->fpiv, frp);
+  gepp_back(w->F, nf, nf, 0, frp, NULL, zp);
+  memcpy(xs, zp, n * sizeof *xs);
+  memcpy(xs + n * N, zp + n, n * sizeof *xs);
+  memcpy(g, zp + 2 * n, ng * sizeof *g);
+  /* back substitution: the mesh points, then the interiors */
+  for (size_t j = N - 1; j >= 1; --j) {
+    memcpy(yp, xs, n * sizeof *yp);
+    memcpy(yp + n, xs + n * (j + 1), n * sizeof *yp);
+    memcpy(yp + 2 * n, g, ng * sizeof *yp);
+    gepp_back(w->P + (j - 1) * pr * pc, pc, n, 2 * n + ng,
+              w->ploc + (j - 1) * pr, yp, xs + n * j);
+  }
+  for (size_t i = 0; i < N; ++i) {
+    memcpy(yp, xs + n * i, 2 * n * sizeof *yp);
+    memcpy(yp + 2 * n, g, ng * sizeof *yp);
+    gepp_back(w->W + i * wr * wc, wc, ni, 2 * n + ng, w->loc + i * wr, yp,
+              b + n * (i * m + 1));
+  }
+  for (size_t i = 0; i <= N; ++i) memcpy(b + n * i * m, xs + n * i, n * sizeof *b);
+  for (size_t e = 0; e < ng; ++e) b[w->gcol[e]] = g[e];
+}
+
+int cond_solve(cond_ws *w, double *b, size_t nrhs) {
+  if (w->state != 1) return WHIRL_ESINGULAR;
+  for (size_t k = 0; k < nrhs; ++k) solve1(w, b + k * (w->nx + 1));
+  return WHIRL_OK;
+}
+
+int cond_logdet(const cond_ws *w, double *logabs, int *sign) {
+  if (w->state == 0) return WHIRL_EINVAL;
+  *logabs = w->state == 2 ? -INFINITY : w->logabs;
+  *sign = w->state == 2 ? 0 : w->sign;
+  return WHIRL_OK;
+}
+
+/* ------------------------------------------------------------ monodromy */
+
+/* M = −S_N^{-1} S_0 from the n rows S_0 x_0 + S_N x_N + S_g g left after
+ * step 2 of the collocation rows of w (globals fixed). */
+int cond_monodromy(cond_ws *w, double *M) {
+  const size_t n = w->n, N = w->N, pc = w->pc;
+  if (!w->jac_ok) return WHIRL_EINVAL;
+  const double *S = w->P + (N - 2) * w->pr * pc + n * pc; /* [x_0 | x_N | g] at +n */
+  double *A = w->mblk, *col = A + 2 * n * n, *x = col + n;
+  det_acc dt = {1.0, 0};
+  /* the block [S_N | S_0] (n x 2n, row-major); elimination of S_N carries
+   * S_0 along (whole rows swapped and updated), so only U remains */
+  for (size_t q = 0; q < n; ++q) {
+    memcpy(A + q * 2 * n, S + q * pc + 2 * n, n * sizeof *A);
+    memcpy(A + q * 2 * n + n, S + q * pc + n, n * sizeof *A);
+    w->mlab[q] = (int)q;
+  }
+  int rc = gepp(A, 2 * n, n, 0, n, w->mpiv, w->mlab, &dt, NULL);
+  if (rc != 0) return rc == 2 ? WHIRL_EBADFUNC : WHIRL_ESINGULAR;
+  for (size_t j = 0; j < n; ++j) {
+    for (size_t q = 0; q < n; ++q) col[q] = A[q * 2 * n + n + j];
+    gepp_back(A, 2 * n, n, 0, col, NULL, x);
+    for (size_t q = 0; q < n; ++q) M[q + n * j] = -x[q];
+  }
+  return 0;
+}

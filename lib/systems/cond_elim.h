@@ -1,0 +1,85 @@
+/* lib/systems/cond_elim.h — private to lib/systems: the structured
+ * elimination of a collocation system's bordered Newton matrix (the
+ * condensation of parameters of AUTO-07p), shared by the periodic orbits
+ * (colloc_cond.c) and the boundary-value problems (bvp_cond.c).
+ *
+ * The matrix M = [F_x  dF/dp_k; rᵀ] of a collocation system on NTST
+ * intervals of NCOL Gauss points, n states, node-major unknowns
+ * x = (u_{0,0} .. u_{N,0}, globals), has
+ *   - n NCOL collocation rows per interval i, M's rows n (i NCOL) ..,
+ *     in the interval's nodes and the ng global unknowns g (the last is
+ *     the continuation parameter p_k, M's column nx);
+ *   - ne end rows, M's rows n NTST NCOL + e, in u(0), u(1) and g
+ *     (periodicity x_N − x_0; or a BVP's boundary conditions);
+ *   - nb border rows over all unknowns, eliminated with the pivots of the
+ *     collocation rows but never pivots before the last step (a phase
+ *     condition, integral conditions, the core's r).
+ * ne + nb = n + ng, so the final dense system in [x_0 | x_N | g] is square.
+ * cond_elim.c does the three steps (its header comment); the system says
+ * where its rows come from through cond_ops.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_COND_ELIM_H
+#define WHIRL_COND_ELIM_H
+
+#include <stddef.h>
+
+/* The product of the pivots as mantissa * 2^exponent: no overflow, and no
+ * logarithm per pivot. */
+typedef struct cond_det {
+  double mant; /* sign included */
+  long expo;
+} cond_det;
+
+typedef struct cond_ws cond_ws;
+
+typedef struct cond_ops {
+  /* Fill the collocation rows of every interval block (cond_block: rows
+   * 0 .. n NCOL − 1, columns [interior | x_i | x_{i+1} | g]) and the
+   * system's own data for border() and end_row(), at (X, p); dF/dp_k into
+   * cond_fk(w) unless mono (F_x alone: the global columns 0).  Returns 0,
+   * or the model's status. */
+  int (*fill)(cond_ws *w, const double *X, const double *p, size_t k,
+              int mono);
+  /* Border row t: its entries on the node values (node-major as X; the
+   * core's r when the system passes it through) returned, its ng global
+   * entries into g. */
+  const double *(*border)(cond_ws *w, size_t t, const double *r, double *g);
+  /* End row e into a[2n + ng] ([x_0 | x_N | g]), after fill. */
+  void (*end_row)(cond_ws *w, size_t e, double *a);
+} cond_ops;
+
+typedef struct cond_shape {
+  size_t n, ncol, ntst; /* ntst >= 2 */
+  size_t nx;            /* unknowns of F (M has nx + 1) */
+  size_t ng, nb, npar;
+  const size_t *gcol; /* ng: M's column of each global (the last: nx) */
+  const int *blab;    /* nb: M's row of each border row (r: nx) */
+} cond_shape;
+
+cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys);
+void cond_free(cond_ws *w);
+void *cond_sys(const cond_ws *w);
+double *cond_block(cond_ws *w, size_t i); /* interval i's block, rows of */
+size_t cond_block_ld(const cond_ws *w);   /* this many entries */
+double *cond_fk(cond_ws *w);              /* dF/dp_k, nx */
+double *cond_work(cond_ws *w);            /* nx + npar scratch for fill */
+
+/* M at (X, p, k, r) factored: fill, the condensation and the final LU.
+ * 0, the model's status, WHIRL_ESINGULAR, WHIRL_EBADFUNC. */
+int cond_factor(cond_ws *w, const double *X, const double *p, size_t k,
+                const double *r);
+/* The same collocation rows with a new border row r (chord Newton). */
+int cond_reborder(cond_ws *w, const double *r);
+/* M z = b in place, b[(nx + 1) nrhs]. */
+int cond_solve(cond_ws *w, double *b, size_t nrhs);
+int cond_logdet(const cond_ws *w, double *logabs, int *sign);
+
+/* Were the collocation rows last factored at (X, p)? */
+int cond_factored_at(const cond_ws *w, const double *X, const double *p);
+/* The collocation rows alone at (X, p) (mono fill). */
+int cond_factor_rows(cond_ws *w, const double *X, const double *p);
+/* M[n n] = −S_N⁻¹ S_0 from the rows left after step 2 (monodromy of a
+ * periodic orbit), after cond_factor or cond_factor_rows. */
+int cond_monodromy(cond_ws *w, double *M);
+
+#endif

@@ -1,0 +1,78 @@
+/* test/unit/bsolver_check.h — a system's structured bordered solver
+ * (whirl_system bsolver: the condensation of parameters of periodic
+ * collocation and of BVPs) against UMFPACK on the assembled bordered
+ * matrix [F_x F_p; r^T] at (X, p): solutions to 1e-12 relative, log|det|
+ * and its sign (the branch-point test) equal, for a border r, for -r and
+ * for a new r by reborder.  Included by t_colloc.c and t_bvp.c.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#ifndef WHIRL_TEST_BSOLVER_CHECK_H
+#define WHIRL_TEST_BSOLVER_CHECK_H
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include <whirl/linsol.h>
+#include <whirl/system.h>
+
+#include "../tap.h"
+
+static void bsolver_check(const char *name, const whirl_system *s,
+                          const double *X, const double *p, size_t k) {
+  const size_t nx = s->n, N1 = nx + 1;
+  ok(s->bsolver && s->bsolver->factor && s->bsolver->solve &&
+         s->bsolver->logdet && s->bsolver->reborder,
+     "%s: the system has a structured solver", name);
+  if (!s->bsolver) return;
+  double *Jx = malloc(s->nnz * sizeof *Jx), *fk = malloc(nx * sizeof *fk);
+  double *wk = malloc((nx + 16) * sizeof *wk), *r = malloc(N1 * sizeof *r);
+  double *b1 = malloc(2 * N1 * sizeof *b1), *b2 = malloc(2 * N1 * sizeof *b2);
+  void *ws = s->bsolver->alloc(s->data);
+  whirl_bordered *bd = whirl_bordered_alloc(WHIRL_LINSOL_SPARSE, nx, 1, s->Jp, s->Ji);
+  ok(ws && bd && Jx && fk && wk && r && b1 && b2, "%s: allocations", name);
+  if (!ws || !bd || !Jx || !fk || !wk || !r || !b1 || !b2) goto done;
+  int rc = s->Fx_sparse(X, p, Jx, s->data);
+  if (rc == 0) rc = whirl_system_param(s, X, p, k, fk, wk);
+  ok(rc == 0, "%s: Jacobian and F_p", name);
+  for (int pass = 0; pass < 3; ++pass) {
+    /* a border near the parameter direction (well conditioned away from
+     * folds, as the core's tangent rows), then its negative (the
+     * determinant changes sign), then a new border by reborder */
+    for (size_t q = 0; q < N1; ++q)
+      r[q] = pass == 1 ? -r[q]
+                       : 0.3 * tap_urand(-1.0, 1.0) / sqrt((double)N1) +
+                             (q == nx ? 1.0 : 0.0);
+    for (size_t q = 0; q < 2 * N1; ++q) b1[q] = b2[q] = tap_urand(-1.0, 1.0);
+    int r1 = pass == 2 ? s->bsolver->reborder(ws, r)
+                       : s->bsolver->factor(ws, X, p, k, r);
+    int r2 = whirl_bordered_factor(bd, Jx, fk, r, r + nx);
+    if (r1 == 0) r1 = s->bsolver->solve(ws, b1, 2);
+    if (r2 == 0) r2 = whirl_bordered_solve(bd, b2, 2, 0);
+    double la1 = NAN, la2 = NAN, e = 0.0, sc = 0.0;
+    int s1 = 9, s2 = 8;
+    s->bsolver->logdet(ws, &la1, &s1);
+    whirl_bordered_logdet(bd, &la2, &s2);
+    for (size_t q = 0; q < 2 * N1; ++q) {
+      e = fmax(e, fabs(b1[q] - b2[q]));
+      sc = fmax(sc, fabs(b2[q]));
+    }
+    printf("# %s (%s): |z - z_umfpack| / |z| = %.2e, log|det| %.12g vs %.12g, "
+           "sign %d vs %d\n",
+           name, pass == 0 ? "factor" : pass == 1 ? "-r" : "reborder", e / sc,
+           la1, la2, s1, s2);
+    ok(r1 == 0 && r2 == 0 && e <= 1e-12 * sc,
+       "%s (%s): structured solve = UMFPACK solve to %.1e relative (<= 1e-12)",
+       name, pass == 0 ? "factor" : pass == 1 ? "border -r" : "reborder",
+       e / sc);
+    ok(s1 == s2 && s1 != 0 && fabs(la1 - la2) <= 1e-10 * fmax(1.0, fabs(la2)),
+       "%s (%s): determinant sign %d = %d, log|det| %.10g = %.10g", name,
+       pass == 0 ? "factor" : pass == 1 ? "border -r" : "reborder", s1, s2,
+       la1, la2);
+  }
+done:
+  if (ws) s->bsolver->free(ws);
+  whirl_bordered_free(bd);
+  free(Jx), free(fk), free(wk), free(r), free(b1), free(b2);
+}
+
+#endif
