@@ -29,34 +29,39 @@ typedef struct bvp_rows {
   double *bcr;  /* nbc x nf: the boundary rows */
 } bvp_rows;
 
-/* Column col of F_x in interval block of row lr: its position. */
-static size_t block_column(const whirl_bvp *b, size_t i, size_t col) {
-  const size_t n = b->n, m = b->ncol, ni = n * (m - 1), nn = n * b->nnodes;
-  if (col >= nn) return ni + 2 * n + (col - nn);
-  const size_t kk = col / n - i * m, q = col % n;
-  return kk == 0 ? ni + q : kk == m ? ni + n + q : (kk - 1) * n + q;
-}
-
-/* The Jacobian's entries into the blocks, boundary and integral rows. */
+/* The Jacobian's entries into the blocks, boundary and integral rows.  A
+ * node column's collocation rows (sorted) are those of the interval or two
+ * intervals holding the node: the interval and the node's place in it are
+ * followed along the column, without a division per entry. */
 static void scatter(cond_ws *w, bvp_rows *R, int mono) {
   const whirl_bvp *b = R->b;
-  const size_t n = b->n, nm = n * b->ncol, nn = n * b->nnodes, nx = b->nx,
-               last = b->nnodes - 1, wc = cond_block_ld(w);
+  const size_t n = b->n, m = b->ncol, nm = n * m, nn = n * b->nnodes,
+               nx = b->nx, ni = n * (m - 1), last = b->nnodes - 1,
+               wc = cond_block_ld(w), ncoll = b->ncoll;
   for (size_t col = 0; col < nx; ++col) {
     if (mono && col >= nn) break; /* F_x alone: the globals' columns 0 */
-    for (int q = b->Jp[col]; q < b->Jp[col + 1]; ++q) {
-      const size_t row = (size_t)b->Ji[q];
-      const double v = b->Jx[q];
-      if (row < b->ncoll) {
-        const size_t i = row / nm;
-        cond_block(w, i)[(row - i * nm) * wc + block_column(b, i, col)] = v;
-      } else if (row < b->ncoll + b->nbc) {
-        const size_t node = col / n;
-        const size_t pos = col >= nn ? 2 * n + (col - nn)
-                           : node == 0 ? col % n : node == last ? n + col % n : R->nf;
-        if (pos < R->nf) R->bcr[(row - b->ncoll) * R->nf + pos] = v;
+    const size_t node = col / n, q = col % n;
+    const size_t bpos = col >= nn ? 2 * n + (col - nn)
+                        : node == 0 ? q : node == last ? n + q : R->nf;
+    size_t i = (size_t)-1, pos = 0, end = 0; /* rows of interval i: < end */
+    double *Wi = NULL;
+    for (int e = b->Jp[col]; e < b->Jp[col + 1]; ++e) {
+      const size_t row = (size_t)b->Ji[e];
+      const double v = b->Jx[e];
+      if (row < ncoll) {
+        if (row >= end) { /* the next interval of this column */
+          i = row / nm;
+          end = (i + 1) * nm;
+          Wi = cond_block(w, i) - i * nm * wc;
+          const size_t kk = node - i * m;
+          pos = col >= nn ? ni + 2 * n + (col - nn)
+                : kk == 0 ? ni + q : kk == m ? ni + n + q : (kk - 1) * n + q;
+        }
+        Wi[row * wc + pos] = v;
+      } else if (row < ncoll + b->nbc) {
+        if (bpos < R->nf) R->bcr[(row - ncoll) * R->nf + bpos] = v;
       } else {
-        R->ic[(row - b->ncoll - b->nbc) * (nx + 1) + col] = v;
+        R->ic[(row - ncoll - b->nbc) * (nx + 1) + col] = v;
       }
     }
   }
