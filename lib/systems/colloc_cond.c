@@ -140,18 +140,8 @@ static int bs_factor(void *ws, const double *X, const double *p, size_t k,
   return rc;
 }
 
-static int bs_solve(void *ws, double *b, size_t nrhs) {
-  return cond_solve(ws, b, nrhs);
-}
-
-static int bs_logdet(void *ws, double *logabs, int *sign) {
-  return cond_logdet(ws, logabs, sign);
-}
-
-static int bs_reborder(void *ws, const double *r) { return cond_reborder(ws, r); }
-
-const whirl_bsolver colloc_bsolver = {bs_alloc, bs_free,   bs_factor,
-                                      bs_solve, bs_logdet, bs_reborder};
+const whirl_bsolver colloc_bsolver = {bs_alloc,   bs_free,     bs_factor,
+                                      cond_solve, cond_logdet, cond_reborder};
 
 int colloc_cond_monodromy(whirl_colloc *c, const double *X, const double *p,
                           double *M) {

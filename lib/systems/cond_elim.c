@@ -511,8 +511,9 @@ static int factor_border(cond_ws *w, const double *r) {
   return 0;
 }
 
-int cond_factor(cond_ws *w, const double *X, const double *p, size_t k,
+int cond_factor(void *ws, const double *X, const double *p, size_t k,
                 const double *r) {
+  cond_ws *w = ws;
   int rc = factor_rows(w, X, p, k, 0);
   return rc != 0 ? rc : factor_border(w, r);
 }
@@ -520,7 +521,7 @@ int cond_factor(cond_ws *w, const double *X, const double *p, size_t k,
 /* The same F_x and dF/dp_k with a new border row r (and the system's
  * current border data): only the border rows and the final system are
  * redone. */
-int cond_reborder(cond_ws *w, const double *r) { return factor_border(w, r); }
+int cond_reborder(void *ws, const double *r) { return factor_border(ws, r); }
 
 int cond_factored_at(const cond_ws *w, const double *X, const double *p) {
   return w->jac_ok && memcmp(w->Xf, X, w->nx * sizeof *X) == 0 &&
@@ -585,13 +586,15 @@ static void solve1(cond_ws *w, double *b) {
   for (size_t e = 0; e < ng; ++e) b[w->gcol[e]] = g[e];
 }
 
-int cond_solve(cond_ws *w, double *b, size_t nrhs) {
+int cond_solve(void *ws, double *b, size_t nrhs) {
+  cond_ws *w = ws;
   if (w->state != 1) return WHIRL_ESINGULAR;
   for (size_t k = 0; k < nrhs; ++k) solve1(w, b + k * (w->nx + 1));
   return WHIRL_OK;
 }
 
-int cond_logdet(const cond_ws *w, double *logabs, int *sign) {
+int cond_logdet(void *ws, double *logabs, int *sign) {
+  const cond_ws *w = ws;
   if (w->state == 0) return WHIRL_EINVAL;
   *logabs = w->state == 2 ? -INFINITY : w->logabs;
   *sign = w->state == 2 ? 0 : w->sign;

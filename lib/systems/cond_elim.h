@@ -64,15 +64,18 @@ size_t cond_block_ld(const cond_ws *w);   /* this many entries */
 double *cond_fk(cond_ws *w);              /* dF/dp_k, nx */
 double *cond_work(cond_ws *w);            /* nx + npar scratch for fill */
 
+/* The entry points take the workspace as void * so that a system's
+ * whirl_bsolver table holds them as they are. */
+
 /* M at (X, p, k, r) factored: fill, the condensation and the final LU.
  * 0, the model's status, WHIRL_ESINGULAR, WHIRL_EBADFUNC. */
-int cond_factor(cond_ws *w, const double *X, const double *p, size_t k,
+int cond_factor(void *ws, const double *X, const double *p, size_t k,
                 const double *r);
 /* The same collocation rows with a new border row r (chord Newton). */
-int cond_reborder(cond_ws *w, const double *r);
+int cond_reborder(void *ws, const double *r);
 /* M z = b in place, b[(nx + 1) nrhs]. */
-int cond_solve(cond_ws *w, double *b, size_t nrhs);
-int cond_logdet(const cond_ws *w, double *logabs, int *sign);
+int cond_solve(void *ws, double *b, size_t nrhs);
+int cond_logdet(void *ws, double *logabs, int *sign);
 
 /* Were the collocation rows last factored at (X, p)? */
 int cond_factored_at(const cond_ws *w, const double *X, const double *p);
