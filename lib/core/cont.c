@@ -7,6 +7,7 @@
  * tangent, test functions for LP/BP/HB evaluated at every point, and ends at
  * parameter bounds (localised exactly), NMX, closed loops and DSMIN.
  * SPDX-License-Identifier: BSD-3-Clause */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -67,8 +68,10 @@ void whirl_cont_options_default(whirl_cont_options *o) {
   o->chord_theta = 0.25;
   o->max_angle = 0.2;
   o->tangent_predictor = 0;
+  o->tangent_from_newton = 0;
   o->detect_lp = o->detect_bp = o->detect_hb = o->detect_pd = 1;
   o->detect_sys = 1;
+  o->stability = 1;
   o->stop_at_bp = 0;
   o->detect_loop = 1;
   o->loc_tol = 1e-12;
@@ -594,6 +597,61 @@ int cont_tangent(whirl_cont *c, cont_state *st, const double *dir) {
   return 0;
 }
 
+/* The tangent at the corrected point st from the corrector's last
+ * factorisation, made at the iterate before the last correction (AUTO-07p
+ * takes its direction vector and test functions from that factorisation
+ * too).  z0 = A(X_k)⁻¹ e_N is off by O(|X − X_k|) ≤ newton_tol; one step
+ * of iterative refinement against the residual at X, its first n rows the
+ * directional derivative [F_x F_p] z0 by a central difference (two
+ * evaluations of F instead of a Jacobian and a factorisation), leaves
+ * O(|X − X_k|²) and the difference's truncation error.  The determinant's
+ * sign and log|det| are those of the iterate's factorisation: a zero of a
+ * test function within |X − X_k| of X moves by as much, and a located
+ * special point is analysed afresh (locate.c).  1 (a fresh analysis
+ * wanted) when the factorisation is not the corrector's last. */
+static int tangent_from_newton(whirl_cont *c, cont_state *st) {
+  const size_t n = c->n, N = c->N, icp = c->opt.icp;
+  if (!c->fact_ok || c->opt.newton_chord) return 1;
+  double *z = st->t, *Xe = c->work, *fm = c->work + N, *r = c->rhs;
+  memset(z, 0, N * sizeof *z);
+  z[n] = 1.0;
+  int rc = ext_solve(c, z, "tangent solve");
+  if (rc) return rc;
+  double zmax = 0.0, xmax = 0.0;
+  for (size_t i = 0; i < N; ++i) {
+    zmax = fmax(zmax, fabs(z[i]));
+    xmax = fmax(xmax, fabs(st->X[i]));
+  }
+  if (!(zmax > 0) || !isfinite(zmax)) return 1;
+  const double eps = cbrt(DBL_EPSILON) * (1.0 + xmax) / zmax;
+  for (int side = 0; side < 2; ++side) {
+    const double e = side ? -eps : eps;
+    for (size_t i = 0; i < N; ++i) Xe[i] = st->X[i] + e * z[i];
+    st->p[icp] = Xe[n];
+    rc = whirl_system_eval(&c->sys, Xe, st->p, side ? fm : c->f);
+    ++c->stats.f_evals;
+    if (rc) break;
+  }
+  st->p[icp] = st->X[n];
+  if (rc) return 1; /* not fatal here: the fresh analysis says */
+  for (size_t i = 0; i < n; ++i) r[i] = -(c->f[i] - fm[i]) / (2.0 * eps);
+  double rz = 0.0;
+  for (size_t i = 0; i < N; ++i) rz += c->row[i] * z[i];
+  r[n] = 1.0 - rz;
+  if ((rc = ext_solve(c, r, "tangent refinement")) != 0) return rc;
+  for (size_t i = 0; i < N; ++i) z[i] += r[i];
+  const double nz = cont_norm(c, z);
+  if (!(nz > 0) || !isfinite(nz)) return 1;
+  for (size_t i = 0; i < N; ++i) z[i] /= nz;
+  if (c->bs)
+    c->bs->logdet(c->bws, &st->logdet, &st->sign_det);
+  else
+    whirl_bordered_logdet(c->bd, &st->logdet, &st->sign_det);
+  st->psi_lp = z[n];
+  st->tests_valid = 0;
+  return 0;
+}
+
 /* The spectrum and the system's test functions at st, whose tangent and
  * determinant cont_tangent has computed. */
 int cont_tests(whirl_cont *c, cont_state *st) {
@@ -606,7 +664,7 @@ int cont_tests(whirl_cont *c, cont_state *st) {
   st->psi_pd = 0.0;
   st->n_rn = -1;
   st->nspec = 0;
-  if (c->sys.spectrum && c->sys.nspec) {
+  if (c->opt.stability && c->sys.spectrum && c->sys.nspec) {
     size_t m = c->sys.nspec;
     rc = c->sys.spectrum(st->X, st->p, c->sparse || c->bs ? NULL : c->J, st->re, st->im,
                          &m, c->sys.data);
@@ -1026,7 +1084,13 @@ static int predict_correct(whirl_cont *c, double *cosang, int *its) {
     int rc = cont_correct(c, c->cur.X, c->dir, c->ds, c->trial.X);
     if (rc < 0) return rc;
     *its = c->its;
-    if (rc == 0) rc = cont_analyse(c, &c->trial, c->dir);
+    if (rc == 0 && o->tangent_from_newton) {
+      rc = tangent_from_newton(c, &c->trial);
+      if (rc == 0) rc = cont_tests(c, &c->trial);
+      else if (rc > 0) rc = cont_analyse(c, &c->trial, c->dir);
+    } else if (rc == 0) {
+      rc = cont_analyse(c, &c->trial, c->dir);
+    }
     if (rc < 0) return rc;
     if (rc > 0) {
       last_fail = rc;

@@ -54,7 +54,12 @@ static double ftol(const whirl_cont *c, int ev, size_t k, const cont_state *st) 
   case EV_LP:
     return 1e-14;
   case EV_BP:
-    return 0.0;
+    /* psi is det relative to its value at the step's start: 1e-12 is
+     * within about 1e-12 of a step of the branch point.  Iterating on to
+     * a bracket of loc_tol ran Newton into the branch point's shrinking
+     * basin, where it fails (enz's pitchfork by a fold: a secant iterate
+     * at psi = 3e-15, the next one failing, the point lost) */
+    return 1e-12;
   case EV_PD:
     return 1e-12;
   case EV_HB: {

@@ -103,6 +103,14 @@ typedef struct whirl_cont_options {
   double chord_theta;  /* contraction above which chord Newton refactors */
   double max_angle;    /* max turn of the tangent per step, radians */
   int tangent_predictor; /* 0: secant predictor (default), 1: tangent */
+  int tangent_from_newton; /* 0: the tangent and tests of a new point from
+                            a fresh Jacobian there (default); 1: from the
+                            corrector's last factorisation (at the iterate
+                            before the last correction, as AUTO-07p), the
+                            tangent refined once by a directional
+                            derivative: a Jacobian and a factorisation
+                            fewer a step, test functions off by at most
+                            newton_tol; located points analysed afresh */
   int curved_predictor;  /* 1: start the corrector from the second-order
                             predictor X + σ t + σ²/2 κ, κ the change of the
                             unit tangent over the last step per arclength,
@@ -114,6 +122,10 @@ typedef struct whirl_cont_options {
   int detect_hb;       /* ISP (Hopf; needs the system's spectrum); for Floquet
                           multipliers this is the torus point TR */
   int detect_pd;       /* ISP (period doubling; Floquet multipliers only) */
+  int stability;       /* 1: the system's spectrum at every point, for its
+                          stability and the HB/TR/PD tests (default); 0:
+                          none (AUTO's ISP = 0 or 1 on periodic orbits:
+                          no Floquet multipliers), stable = -1 */
   int detect_sys;      /* the system's own test functions (codim-2 points
                           on fold and Hopf curves); on by default */
   int stop_at_bp;      /* end the branch at the first BP */

@@ -640,6 +640,129 @@ static void test_bratu(void) {
   whirl_branch_free(bs);
 }
 
+/* The exact unit tangent of Bratu's branch at (u, p): v = du/dp from
+ * F_u v = -F_p (dense Gaussian elimination on the tridiagonal F_u), t =
+ * (v, 1)/|(v, 1)| oriented as ref.  Returns |t - ref|_inf. */
+static double bratu_tangent_error(const double *u, double p, const double *ref) {
+  double J[BRATU_M * BRATU_M], v[BRATU_M], t[BRATU_M + 1];
+  bratu_Fx(u, &p, J, NULL);
+  bratu_Fp(u, &p, 0, v, NULL);
+  for (int i = 0; i < BRATU_M; ++i) v[i] = -v[i];
+  for (int k = 0; k < BRATU_M; ++k) /* no pivoting: F_u is diagonally dominant here */
+    for (int i = k + 1; i < BRATU_M; ++i) {
+      const double m = J[i + BRATU_M * k] / J[k + BRATU_M * k];
+      for (int j = k; j < BRATU_M; ++j) J[i + BRATU_M * j] -= m * J[k + BRATU_M * j];
+      v[i] -= m * v[k];
+    }
+  for (int i = BRATU_M - 1; i >= 0; --i) {
+    for (int j = i + 1; j < BRATU_M; ++j) v[i] -= J[i + BRATU_M * j] * v[j];
+    v[i] /= J[i + BRATU_M * i];
+  }
+  double nn = 1.0, dot = 0.0, err = 0.0;
+  for (int i = 0; i < BRATU_M; ++i) nn += v[i] * v[i];
+  nn = sqrt(nn);
+  for (int i = 0; i < BRATU_M; ++i) t[i] = v[i] / nn;
+  t[BRATU_M] = 1.0 / nn;
+  for (int i = 0; i <= BRATU_M; ++i) dot += t[i] * ref[i];
+  for (int i = 0; i <= BRATU_M; ++i) err = fmax(err, fabs((dot < 0 ? -t[i] : t[i]) - ref[i]));
+  return err;
+}
+
+/* tangent_from_newton: the tangents of the regular points from the
+ * corrector's last factorisation (at the iterate before the last
+ * correction, a loose EPSL apart) against the exact tangent, the fold
+ * (located afresh) as with fresh Jacobians, and a Jacobian fewer a step. */
+static void test_tangent_from_newton(void) {
+  whirl_system s = {.name = "bratu", .n = BRATU_M, .npar = 1, .F = bratu_F,
+                    .Fx = bratu_Fx, .Fp = bratu_Fp};
+  whirl_cont_options o;
+  double lp[2] = {NAN, NAN}, worst = 0.0;
+  size_t jac[2] = {0, 0}, steps[2] = {0, 0};
+  for (int reuse = 0; reuse < 2; ++reuse) {
+    whirl_cont_options_default(&o);
+    o.ds = 0.1;
+    o.ds_max = 0.3;
+    o.p_min = -0.5;
+    o.p_max = 4.0;
+    o.x_max = 6.0;
+    o.newton_tol = 1e-6; /* the last iterate well apart from the point */
+    o.tangent_from_newton = reuse;
+    char err[256];
+    whirl_cont *c = whirl_cont_alloc(&s, &o, err, sizeof err);
+    double u0[BRATU_M] = {0}, p0 = 0.0;
+    int rc = c ? whirl_cont_start(c, u0, &p0, +1) : -1;
+    while (rc == WHIRL_OK && (rc = whirl_cont_step(c)) == WHIRL_OK) {
+      const whirl_point *pt = whirl_cont_point(c);
+      if (pt->type == WHIRL_PT_LP) lp[reuse] = pt->p[0];
+      if (reuse && pt->type == WHIRL_PT_REGULAR && fabs(pt->t[BRATU_M]) > 0.05)
+        worst = fmax(worst, bratu_tangent_error(pt->x, pt->p[0], pt->t));
+    }
+    if (c) {
+      jac[reuse] = whirl_cont_get_stats(c)->jac_evals;
+      steps[reuse] = whirl_cont_get_stats(c)->steps;
+    }
+    whirl_cont_free(c);
+  }
+  ok(worst > 0 && worst < 1e-9,
+     "tangent_from_newton: regular tangents = the exact tangent (max diff %.2e)", worst);
+  is_rel(lp[1], lp[0], 1e-12, "tangent_from_newton: the fold as with fresh Jacobians");
+  ok(steps[1] > 10 && jac[1] + steps[1] / 2 < jac[0],
+     "tangent_from_newton: %zu Jacobians against %zu (%zu and %zu steps)", jac[1],
+     jac[0], steps[1], steps[0]);
+}
+
+/* AUTO-07p demo enz's equations (two coupled enzyme compartments, p =
+ * (s0, mu, rho, kappa) = (s0, 0, 100, 1)), continued in s0 from 0 with
+ * c.enz.1's constants: the symmetric branch has a pitchfork at s0 =
+ * 22.18, where the asymmetric branch turns (a pitchfork by a fold).  A
+ * secant iterate of the localisation landed within 3e-15 (relative
+ * determinant) of it, the next one failed beside it and the point was
+ * lost, with tangent_from_newton (the run files' setting). */
+static int enz_F(const double *u, const double *p, double *f, void *d) {
+  (void)d;
+  const double k = p[3], r1 = u[0] / (1 + u[0] + k * u[0] * u[0]),
+               r2 = u[1] / (1 + u[1] + k * u[1] * u[1]);
+  f[0] = (p[0] - u[0]) + (u[1] - u[0]) - p[2] * r1;
+  f[1] = (p[0] + p[1] - u[1]) + (u[0] - u[1]) - p[2] * r2;
+  return 0;
+}
+static int enz_rhs(double t, const double *u, const double *p, double *f, void *d) {
+  (void)t;
+  return enz_F(u, p, f, d);
+}
+static void test_bp_at_fold(void) {
+  /* as whirl run builds it: an equilibrium system of the vector field,
+   * its Jacobians by whirl's central differences */
+  whirl_problem pr = {.name = "enz", .n = 2, .npar = 4, .rhs = enz_rhs, .autonomous = 1};
+  whirl_equilibrium *eq = whirl_equilibrium_alloc(&pr);
+  const whirl_system *sp = eq ? whirl_equilibrium_system(eq) : NULL;
+  if (!sp) {
+    ok(0, "enz: equilibrium system");
+    return;
+  }
+  const whirl_system s = *sp;
+  for (int reuse = 0; reuse < 2; ++reuse) {
+    whirl_cont_options o;
+    whirl_cont_options_default(&o);
+    o.ds = 0.1;
+    o.ds_min = 0.01;
+    o.ds_max = 0.25;
+    o.nmx = 250;
+    o.newton_tol = 1e-7;
+    o.newton_maxit = 5;
+    o.tangent_from_newton = reuse;
+    double u0[2] = {0, 0}, p0[4] = {0, 0, 100, 1};
+    whirl_branch *b = run(&s, &o, u0, p0, +1, NULL);
+    size_t nbp = b ? count_type(b, WHIRL_PT_BP) : 0;
+    const whirl_branch_point *bp = b ? nth_type(b, WHIRL_PT_BP, 1) : NULL;
+    ok(nbp == 2 && bp && fabs(bp->p[0] - 22.1816) < 1e-3,
+       "enz (tangent %s): the pitchfork at s0 = 22.18 found (%zu BPs; %.10g)",
+       reuse ? "from Newton" : "fresh", nbp, bp ? bp->p[0] : NAN);
+    whirl_branch_free(b);
+  }
+  whirl_equilibrium_free(eq);
+}
+
 static void test_two_at_once(void) {
   whirl_system s = {.name = "cusp", .n = 1, .npar = 2, .F = cusp_F, .Fx = cusp_Fx, .Fp = cusp_Fp};
   whirl_cont_options o;
@@ -909,6 +1032,8 @@ int main(void) {
   test_uz();
   test_uz_fun();
   test_bratu();
+  test_tangent_from_newton();
+  test_bp_at_fold();
   test_two_at_once();
   test_weights();
   test_system_weights();
