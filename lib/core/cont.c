@@ -278,7 +278,7 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   c->queue = calloc(c->qcap, sizeof *c->queue);
   if (!c->queue || !c->evs) goto nomem;
   if (state_alloc(c, &c->cur) || state_alloc(c, &c->trial) ||
-      state_alloc(c, &c->out))
+      state_alloc(c, &c->out) || state_alloc(c, &c->locbest))
     goto nomem;
   for (size_t i = 0; i < c->qcap; ++i)
     if (state_alloc(c, &c->queue[i])) goto nomem;
@@ -323,6 +323,7 @@ void whirl_cont_free(whirl_cont *c) {
   state_free(&c->cur);
   state_free(&c->trial);
   state_free(&c->out);
+  state_free(&c->locbest);
   if (c->queue)
     for (size_t i = 0; i < c->qcap; ++i) state_free(&c->queue[i]);
   free(c->queue);

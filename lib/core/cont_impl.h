@@ -69,6 +69,7 @@ struct whirl_cont {
   cont_state *queue;  /* special points and the regular point to emit */
   size_t qlen, qhead, qcap;
   cont_state out;     /* storage behind the point returned to the caller */
+  cont_state locbest; /* the localisation's best analysed trial (locate.c) */
   whirl_point pt;
 
   double *w2;         /* N: weights of the squared components in the

@@ -189,7 +189,17 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
       /* Newton fails very close to a singular point (a branch point, where
        * it converges only linearly): keep the best point found so far when
        * the bracket has already shrunk to a small part of the step */
-      if (found && fabs(sb - sa) <= 1e-3 * fabs(ds)) {
+      if (found && fabs(sb - sa) <= 1e-3 * fabs(ds) && fbest <= 1e-6 && ev == EV_BP) {
+        /* a branch point's best trial, already analysed, its determinant
+         * within 1e-6 of its size at the step's start: that point.  Beside
+         * the branch point the bordered Jacobian is nearly singular and
+         * amplifies the residual, so Newton from it fails as well (ext's
+         * BP at 7.3769: a trial at psi 9e-10, the next failing and every
+         * offset below too, and the point lost) */
+        cont_state_copy(c, out, &c->locbest);
+        sout = sbest;
+        rc = 0;
+      } else if (found && fabs(sb - sa) <= 1e-3 * fabs(ds)) {
         /* at the singular point itself the tangent solve may fail too
          * (enz's pitchfork by a fold): then a point a little off it */
         static const double off[] = {0.0, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5};
@@ -216,6 +226,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
       fbest = fabs(f);
       sbest = sigma;
       memcpy(Xbest, out->X, N * sizeof *Xbest);
+      if (ev == EV_BP) cont_state_copy(c, &c->locbest, out);
     }
     if (f == 0.0 || fabs(f) <= ftol(c, ev, k, out)) break;
     if (f * fb < 0.0) {
