@@ -10,6 +10,8 @@
 # a plug-in).  AUTO's script may run more or fewer constants files than
 # whirl's default order (test/auto-demos/known-gaps says where): the
 # column `runs` gives both.  Prints a table and the totals.  Not a test.
+# With BASE=/path/to/another/drivers/whirl the second column is that
+# build's `whirl auto` instead of AUTO: two builds paired demo by demo.
 # SPDX-License-Identifier: BSD-3-Clause
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
@@ -20,7 +22,8 @@ WHIRL=${WHIRL:-${top_builddir:-$top}/drivers/whirl}
 case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
 py=${AUTO_07P_PYTHON:-/usr/lib/auto-07p/python}
 [ -d "$demos" ] || { echo "# no AUTO-07p demos at $demos"; exit 0; }
-[ -f "$py/auto/__main__.py" ] || { echo "# no AUTO-07p at $py (Debian package auto-07p)"; exit 0; }
+BASE=${BASE:-}
+[ -n "$BASE" ] || [ -f "$py/auto/__main__.py" ] || { echo "# no AUTO-07p at $py (Debian package auto-07p)"; exit 0; }
 demos=$(cd "$demos" && pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-autospeed.XXXXXX") || exit 1
 trap 'rm -rf "$tmp"' EXIT
@@ -28,7 +31,8 @@ now() { date +%s.%N; }
 median() { sort -g | awk '{ v[NR] = $1 } END { printf "%.3f", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
 echo "# $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); load $(cut -d' ' -f1-3 /proc/loadavg)"
-printf 'demo\truns_whirl\truns_auto\twhirl_s\tauto_s\tratio\n'
+if [ -n "$BASE" ]; then printf 'demo\truns_whirl\truns_base\twhirl_s\tbase_s\tratio\n'
+else printf 'demo\truns_whirl\truns_auto\twhirl_s\tauto_s\tratio\n'; fi
 tw=0 ta=0 faster=0 total=0
 for dir in "$demos"/*/; do
   d=$(basename "$dir")
@@ -41,13 +45,18 @@ for dir in "$demos"/*/; do
     rm -rf "$tmp/wd" "$tmp/ad"; mkdir "$tmp/wd" "$tmp/ad"
     cp "$dir"/* "$tmp/ad"/ 2> /dev/null
     t0=$(now); (cd "$tmp/wd" && timeout 300 "$WHIRL" auto "$dir" --quiet --out=o > /dev/null 2>&1)
-    t1=$(now); (cd "$tmp/ad" && timeout 300 /usr/bin/python3 "$py/auto/__main__.py" "$d.auto" > log 2>&1)
+    if [ -n "$BASE" ]; then
+      t1=$(now); (cd "$tmp/ad" && timeout 300 "$BASE" auto "$dir" --quiet --out=o > /dev/null 2>&1)
+    else
+      t1=$(now); (cd "$tmp/ad" && timeout 300 /usr/bin/python3 "$py/auto/__main__.py" "$d.auto" > log 2>&1)
+    fi
     t2=$(now)
     echo "$t1 - $t0" | bc -l >> "$tmp/w"; echo "$t2 - $t1" | bc -l >> "$tmp/a"
   done
   nw=$(ls "$tmp/wd/o"/*.whirl 2> /dev/null | wc -l)
   # grep -c prints 0 itself when nothing matches (and exits 1): no "|| echo 0"
-  na=$(grep -c "^ *BR *PT *TY" "$tmp/ad/log" 2> /dev/null)
+  if [ -n "$BASE" ]; then na=$(ls "$tmp/ad/o"/*.whirl 2> /dev/null | wc -l)
+  else na=$(grep -c "^ *BR *PT *TY" "$tmp/ad/log" 2> /dev/null); fi
   [ -n "$na" ] || na=0
   w=$(median < "$tmp/w"); a=$(median < "$tmp/a")
   printf '%s\t%s\t%s\t%s\t%s\t%.1f\n' "$d" "$nw" "$na" "$w" "$a" "$(echo "$a / $w" | bc -l)"
@@ -55,5 +64,6 @@ for dir in "$demos"/*/; do
   total=$((total + 1))
   [ "$(echo "$w < $a" | bc -l)" = 1 ] && faster=$((faster + 1))
 done
-printf '# total: whirl %.2f s, AUTO %.2f s, AUTO / whirl = %.1f; whirl faster on %d of %d demos\n' \
-  "$tw" "$ta" "$(echo "$ta / $tw" | bc -l)" "$faster" "$total"
+other=AUTO; [ -n "$BASE" ] && other=base
+printf '# total: whirl %.2f s, %s %.2f s, %s / whirl = %.2f; whirl faster on %d of %d demos\n' \
+  "$tw" "$other" "$ta" "$other" "$(echo "$ta / $tw" | bc -l)" "$faster" "$total"
