@@ -259,8 +259,10 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   c->Xprev = calloc(c->N, sizeof *c->Xprev);
   c->tprev = calloc(c->N, sizeof *c->tprev);
   c->Xstart = calloc(c->N, sizeof *c->Xstart);
+  c->Xfact = calloc(c->N, sizeof *c->Xfact);
+  c->pfact = calloc(c->npar ? c->npar : 1, sizeof *c->pfact);
   if (!c->fp || !c->f || !c->rhs || !c->row || !c->row2 || !c->work || !c->dir || !c->w2 ||
-      !c->xw2 || !c->Xprev || !c->tprev || !c->Xstart)
+      !c->xw2 || !c->Xprev || !c->tprev || !c->Xstart || !c->Xfact || !c->pfact)
     goto nomem;
   if (set_weights(c, opt)) {
     WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "whirl_cont_alloc: %s", c->errmsg);
@@ -314,6 +316,8 @@ void whirl_cont_free(whirl_cont *c) {
   free(c->row);
   free(c->row2);
   free(c->work);
+  free(c->Xfact);
+  free(c->pfact);
   free(c->dir);
   free(c->w2);
   free(c->xw2);
@@ -387,6 +391,8 @@ static int jac_factor(whirl_cont *c, const double *x, const double *p,
   border_row(c, dir, c->row);
   int rc;
   c->fact_ok = 0;
+  memcpy(c->Xfact, x, c->N * sizeof *c->Xfact);
+  memcpy(c->pfact, p, c->npar * sizeof *c->pfact);
   if (c->bs) {
     ++c->stats.jac_evals;
     ++c->stats.factorizations;
@@ -655,7 +661,12 @@ static int tangent_from_newton(whirl_cont *c, cont_state *st) {
 
 /* The spectrum and the system's test functions at st, whose tangent and
  * determinant cont_tangent has computed. */
-int cont_tests(whirl_cont *c, cont_state *st) {
+/* The spectrum at (Xs, ps), the point itself or, with
+ * tangent_from_newton, the corrector's last iterate (as AUTO takes its
+ * Floquet multipliers from the last Newton iteration's factorisation,
+ * which a structured solver reuses), and the system's tests at st. */
+static int tests_at(whirl_cont *c, cont_state *st, const double *Xs,
+                    const double *ps) {
   int rc;
   st->n_unstable = -1;
   st->n_cu = -1;
@@ -667,7 +678,7 @@ int cont_tests(whirl_cont *c, cont_state *st) {
   st->nspec = 0;
   if (c->opt.stability && c->sys.spectrum && c->sys.nspec) {
     size_t m = c->sys.nspec;
-    rc = c->sys.spectrum(st->X, st->p, c->sparse || c->bs ? NULL : c->J, st->re, st->im,
+    rc = c->sys.spectrum(Xs, ps, c->sparse || c->bs ? NULL : c->J, st->re, st->im,
                          &m, c->sys.data);
     ++c->stats.eig_evals;
     if (rc == WHIRL_ESINGULAR || rc == WHIRL_ELAPACK || rc == WHIRL_EMAXITER) {
@@ -692,6 +703,10 @@ int cont_tests(whirl_cont *c, cont_state *st) {
   }
   st->tests_valid = 1;
   return 0;
+}
+
+int cont_tests(whirl_cont *c, cont_state *st) {
+  return tests_at(c, st, st->X, st->p);
 }
 
 int cont_analyse(whirl_cont *c, cont_state *st, const double *dir) {
@@ -1087,7 +1102,7 @@ static int predict_correct(whirl_cont *c, double *cosang, int *its) {
     *its = c->its;
     if (rc == 0 && o->tangent_from_newton) {
       rc = tangent_from_newton(c, &c->trial);
-      if (rc == 0) rc = cont_tests(c, &c->trial);
+      if (rc == 0) rc = tests_at(c, &c->trial, c->Xfact, c->pfact);
       else if (rc > 0) rc = cont_analyse(c, &c->trial, c->dir);
     } else if (rc == 0) {
       rc = cont_analyse(c, &c->trial, c->dir);

@@ -59,6 +59,10 @@ struct whirl_cont {
   double *row;        /* N: border row of the current factorisation */
   double *row2;       /* N: border row wanted (chord Newton) */
   int fact_ok;        /* a factorisation chord Newton may use is held */
+  double *Xfact;      /* N: the point of the last factorisation ... */
+  double *pfact;      /* npar: ... and its parameters (tangent_from_newton
+                         asks the spectrum there, where the system's
+                         structured solver holds its blocks) */
   double *work;       /* scratch for finite differences */
   size_t wlen;
   whirl_eig *eig;     /* spectrum of F_x when the system has none of its own */

@@ -155,19 +155,21 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
   o->newton_tol = fmin(s->epsl, s->epsu);
   o->newton_maxit = s->itnw;
   /* the tangent and tests from the corrector's last factorisation, as
-   * AUTO: a Jacobian and a factorisation fewer a step (demo pla 18 %) */
+   * AUTO: a Jacobian and a factorisation fewer a step */
   o->tangent_from_newton = 1;
   o->detect_lp = s->ilp;
   o->detect_bp = s->isp != 0;
   o->detect_hb = s->isp != 0;
-  /* ISP = 1 computes no Floquet multipliers of orbits, but a map's
-   * multipliers are its eigenvalues: PD (and TR) of maps with ISP 1 or 2
-   * (AUTO-07p manual, ISP) */
+  /* ISP = 1 detects no PD or TR of orbits (their multipliers are
+   * computed, for the stability), but a map's multipliers are its
+   * eigenvalues: PD (and TR) of maps with ISP 1 or 2 (AUTO-07p manual,
+   * ISP) */
   o->detect_pd = s->isp == 2 || (s->ips == WHIRL_IPS_MAP && s->isp != 0);
   if (b->kind != WHIRL_SOL_EQ && s->isp != 2) o->detect_hb = 0; /* TR needs Floquet */
-  /* ISP 0 and 1: "Floquet multipliers are not computed" (AUTO-07p manual,
-   * ISP), nor then the orbits' stability */
-  if (b->kind == WHIRL_SOL_COLLOC && s->isp < 2) o->stability = 0;
+  /* ISP = 0 disables "the computation of Floquet multipliers" (AUTO-07p
+   * manual, ISP; with ISP = 1 they are computed), nor then the orbits'
+   * stability */
+  if (b->kind == WHIRL_SOL_COLLOC && s->isp == 0) o->stability = 0;
   if (b->sys->Jp && b->sys->n > 400) o->linsol = WHIRL_LINSOL_SPARSE;
   /* user points (UZR) and stops (UZSTOP): values of a parameter, of the
    * period (PERIOD, AUTO's PAR(11)) or of a state component (its MAX for

@@ -19,21 +19,27 @@ printf 'model = twist.so\nIPS = 2\nICP = [mu, PERIOD]\nS = eq.out\nIRS = HB1\nNT
 (cd "$tmp" && "$WHIRL" run eq.whirl --no-plot --quiet > /dev/null 2>&1 &&
   "$WHIRL" run po.whirl --no-plot --quiet > /dev/null 2> po.err)
 ok $? "orbits with a free period from the Hopf point at mu = 0 ($(head -1 "$tmp/po.err"))"
-# ISP = 1: "Floquet multipliers are not computed" (AUTO-07p manual), so
-# no stability of the orbits either (before, whirl computed them anyway:
-# 15 % of demo pla's run); the same branch with ISP = 2 is stable
-printf 'model = twist.so\nIPS = 2\nICP = [mu, PERIOD]\nS = eq.out\nIRS = HB1\nNTST = 20\nISP = 1\nDS = 0.01\nDSMAX = 0.1\nNMX = 300\nUZSTOP = {mu: [0.5]}\n' > "$tmp/po1.whirl"
-(cd "$tmp" && "$WHIRL" run po1.whirl --no-plot --quiet > /dev/null 2> po1.err)
-ok $? "orbits with ISP = 1 ($(head -1 "$tmp/po1.err"))"
+# ISP = 0 disables "the computation of Floquet multipliers" (AUTO-07p
+# manual), so the orbits' stability is unknown (before, whirl computed the
+# multipliers anyway); with ISP = 1 they are computed (the manual: PD and
+# TR are not detected, "however, Floquet multipliers are computed"), and
+# the branch is stable, as with ISP = 2
+for isp in 0 1; do
+  printf 'model = twist.so\nIPS = 2\nICP = [mu, PERIOD]\nS = eq.out\nIRS = HB1\nNTST = 20\nISP = %s\nDS = 0.01\nDSMAX = 0.1\nNMX = 300\nUZSTOP = {mu: [0.5]}\n' "$isp" > "$tmp/po$isp.whirl"
+  (cd "$tmp" && "$WHIRL" run "po$isp.whirl" --no-plot --quiet > /dev/null 2> "po$isp.err")
+  ok $? "orbits with ISP = $isp ($(head -1 "$tmp/po$isp.err"))"
+done
 stab() {
   awk -F '\t' -v want="$2" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
     $3 != "EP" { n++; if ($c["stable"] != want) bad++ }
     END { printf "%d points, %d with stable != %s", n, bad, want; exit !(n > 5 && bad == 0) }' "$tmp/$1/branches.tsv"
 }
-msg=$(stab po1.out -1)
-ok $? "ISP = 1: the orbits' stability unknown, -1 ($msg)"
+msg=$(stab po0.out -1)
+ok $? "ISP = 0: the orbits' stability unknown, -1 ($msg)"
+msg=$(stab po1.out 1)
+ok $? "ISP = 1: the same orbits stable ($msg)"
 msg=$(stab po.out 1)
-ok $? "ISP = 2 (the default): the same orbits stable ($msg)"
+ok $? "ISP = 2 (the default): stable ($msg)"
 # $1: columns mu, b, period of the UZ at mu = $2 in $1/branches.tsv, then
 # b and the period against the closed forms, to 1e-7
 uz() {

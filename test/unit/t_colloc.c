@@ -728,6 +728,64 @@ static int run_lw(whirl_linsol_kind kind, int structured, int chord,
   return rc;
 }
 
+/* tangent_from_newton along the λ-ω branch a: 1 -> 0.3 (EPSL 1e-7): the
+ * multiplier of every regular point, taken from the corrector's last
+ * factorisation (the condensed blocks at its last iterate, as AUTO), is
+ * the closed form exp(-4πa): to 1e-5 relative, since the iterate's a is up
+ * to EPSL (1 + |X|) off and d log mu / da = -4π (2.4e-6 measured; a
+ * stale or foreign factorisation is off by orders more), and the branch
+ * needs a Jacobian fewer a step than with a fresh analysis at every
+ * point. */
+static void test_lw_from_newton(void) {
+  size_t jac[2] = {0, 0}, steps[2] = {0, 0}, pts = 0;
+  double worst = 0.0;
+  for (int reuse = 0; reuse < 2; ++reuse) {
+    char err[256];
+    whirl_colloc_options o;
+    whirl_colloc_options_default(&o);
+    o.ntst = 20;
+    o.ncol = 4;
+    whirl_colloc *c = whirl_colloc_alloc(&lamom, &o, err, sizeof err);
+    if (!c) continue;
+    const whirl_system *s = whirl_colloc_system(c);
+    const size_t nx = whirl_colloc_size(c);
+    double smp[2 * 64], *X = malloc(nx * sizeof *X);
+    circle_samples(1.0, 64, smp);
+    whirl_colloc_from_samples(c, smp, 64, 2.0 * PI, X);
+    whirl_cont_options co;
+    whirl_cont_options_default(&co);
+    co.ds = 0.05;
+    co.ds_max = 0.1;
+    co.p_min = 0.3;
+    co.p_max = 2.0;
+    co.newton_tol = 1e-7;
+    co.tangent_from_newton = reuse;
+    whirl_cont *ct = whirl_cont_alloc(s, &co, err, sizeof err);
+    const double p0[1] = {1.0};
+    int rc = ct ? whirl_cont_start(ct, X, p0, -1) : -1;
+    while (rc == WHIRL_OK && (rc = whirl_cont_step(ct)) == WHIRL_OK) {
+      const whirl_point *pt = whirl_cont_point(ct);
+      s->accept(pt->x, pt->p, s->data);
+      if (!reuse || pt->type != WHIRL_PT_REGULAR || pt->nspec != 1) continue;
+      const double mu = exp(-4.0 * PI * pt->p[0]);
+      worst = fmax(worst, fabs(pt->spec_re[0] / mu - 1.0));
+      ++pts;
+    }
+    if (ct) {
+      jac[reuse] = whirl_cont_get_stats(ct)->jac_evals;
+      steps[reuse] = whirl_cont_get_stats(ct)->steps;
+    }
+    whirl_cont_free(ct);
+    free(X);
+    whirl_colloc_free(c);
+  }
+  ok(pts > 5 && worst < 1e-5,
+     "λ-ω, tangent from Newton: %zu multipliers = exp(-4πa) to %.1e", pts, worst);
+  ok(steps[1] > 5 && jac[1] + steps[1] / 2 < jac[0],
+     "λ-ω, tangent from Newton: %zu Jacobians against %zu (%zu, %zu steps)",
+     jac[1], jac[0], steps[1], steps[0]);
+}
+
 /* Mesh adaptation along a branch (adapt_every, the system's remap hook):
  * the λ-ω branch a: 1 -> 0.3 from a badly clustered mesh (τ_k = (k/N)^3,
  * intervals from 1e-4 to 0.14), once with that mesh fixed and once adapted
@@ -1192,6 +1250,7 @@ int main(int argc, char **argv) {
   test_forced_nu2();
   test_continuation(quick);
   test_adapt_along_branch();
+  test_lw_from_newton();
   if (!quick) test_lorenz();
   if (!quick) test_sfd_floquet();
   test_errors();
