@@ -1060,6 +1060,14 @@ static int remap_if_asked(whirl_cont *c) {
       for (size_t i = 0; i < N; ++i) tangents[k][i] /= nt;
   }
   memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
+  /* the mapped tangent is the tangent on the new mesh (the map is
+   * linear); the determinant and the spectrum are analysed there anew
+   * only when a test compares them with the next point's (whirl's
+   * detection after a mesh change), not for the stability alone */
+  const whirl_cont_options *o = &c->opt;
+  if (!o->detect_lp && !o->detect_bp && !o->detect_hb && !o->detect_pd &&
+      !(o->detect_sys && c->sys.test && c->sys.ntest))
+    return 0;
   rc = cont_analyse(c, &c->cur, c->dir);
   if (rc < 0) return rc;
   if (rc > 0)

@@ -158,7 +158,10 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
    * AUTO: a Jacobian and a factorisation fewer a step */
   o->tangent_from_newton = 1;
   o->detect_lp = s->ilp;
-  o->detect_bp = s->isp != 0;
+  /* ISP = 1: "branch points ... are not detected for periodic solutions
+   * and boundary value problems" (AUTO-07p manual, ISP) */
+  o->detect_bp = s->isp != 0 && !(s->isp == 1 && b->kind != WHIRL_SOL_EQ &&
+                                  s->ips != WHIRL_IPS_MAP);
   o->detect_hb = s->isp != 0;
   /* ISP = 1 detects no PD or TR of orbits (their multipliers are
    * computed, for the stability), but a map's multipliers are its

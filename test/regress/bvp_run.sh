@@ -205,6 +205,16 @@ mu=$(col lin2.out max_u UZ q 1)
 mv=$(col lin2.out max_v UZ q 1)
 echo "$kq $mu $mv" | awk '{ d = $1 - 1; e = $3 - 4 * atan2(1, 1) * sqrt(2); exit !(NF == 3 && d * d < 1e-14 && $2 * $2 < 1e-14 && e * e < 1e-12) }'
 ok $? "the branch u = a sin(pi t), a < 0 as AUTO orients it: at q = 1, k = 1, max u = 0, max v = pi sqrt 2 ($kq, $mu, $mv)"
+# ISP = 1: "branch points ... are not detected for periodic solutions and
+# boundary value problems" (AUTO-07p manual, ISP); whirl detected them
+# (the same trivial branch as lin, its BP at k = 1 found above with ISP 2)
+sed 's/^ISP = 2$/ISP = 1/' "$tmp/lin.whirl" > "$tmp/lin1.whirl"
+(cd "$tmp" && "$WHIRL" run lin1.whirl --no-plot --quiet > /dev/null 2> lin1.err)
+st=$?
+nbp=$(col lin1.out k BP | wc -l)
+npt=$(grep -c . "$tmp/lin1.out/branches.tsv" 2> /dev/null)
+[ "$st" -eq 0 ] && [ "$nbp" -eq 0 ] && [ "${npt:-0}" -gt 5 ]
+ok $? "ISP = 1: no BP detected on the BVP's trivial branch ($nbp BPs, $npt rows, exit $st)"
 # bad input: one message, exit 2
 bad() {
   printf "$2" > "$tmp/bad.whirl"

@@ -870,6 +870,29 @@ static void test_system_weights(void) {
   is_rel(p10 - p5, 5 * 0.01 / 3.0, 1e-10, "norm_weights (8, 0) after a remap: "
          "the next 5 by 0.05/3 (%.12g)", p10 - p5);
   whirl_cont_free(c);
+  /* with every detection off the remapped point is not analysed anew
+   * (its mapped tangent is the tangent): the remap costs no Jacobian;
+   * with detection on it costs one (a factorisation at the point on the
+   * new representation, for the tests) */
+  size_t jac[2][2] = {{0, 0}, {0, 0}}; /* [detection][remap] */
+  for (int det = 0; det < 2; ++det)
+    for (int rm = 0; rm < 2; ++rm) {
+      l.steps = rm ? 0 : -1000; /* the remap at the 6th step, or never */
+      l.q0 = 3.0;
+      o.detect_lp = o.detect_bp = o.detect_hb = o.detect_pd = det;
+      c = whirl_cont_alloc(&s, &o, err, sizeof err);
+      int rs = c ? whirl_cont_start(c, x0, &p0, +1) : -1;
+      if (rs) printf("# start %d: %s\n", rs, c ? whirl_cont_errmsg(c) : err);
+      if (rs == WHIRL_OK)
+        while (whirl_cont_step(c) == WHIRL_OK && whirl_cont_point(c)->index <= 10) {
+        }
+      if (c) jac[det][rm] = whirl_cont_get_stats(c)->jac_evals;
+      whirl_cont_free(c);
+    }
+  ok(jac[0][1] == jac[0][0] && jac[1][1] == jac[1][0] + 1,
+     "a remap costs no Jacobian with no detection on (%zu, %zu without it), "
+     "one with (%zu, %zu)", jac[0][1], jac[0][0], jac[1][1], jac[1][0]);
+  o.detect_lp = o.detect_bp = o.detect_hb = o.detect_pd = 1;
   l.steps = 0;
   l.q0 = NAN;
   ok(!whirl_cont_alloc(&s, &o, err, sizeof err) && strstr(err, "norm weight"),
