@@ -660,8 +660,7 @@ static int tangent_from_newton(whirl_cont *c, cont_state *st) {
 }
 
 /* The spectrum and the system's test functions at st, whose tangent and
- * determinant cont_tangent has computed. */
-/* The spectrum at (Xs, ps), the point itself or, with
+ * determinant are computed: the spectrum at (Xs, ps), the point itself or, with
  * tangent_from_newton, the corrector's last iterate (as AUTO takes its
  * Floquet multipliers from the last Newton iteration's factorisation,
  * which a structured solver reuses), and the system's tests at st. */
