@@ -204,6 +204,34 @@ static void show_log(const char *log) {
   if (f) fclose(f);
 }
 
+/* a modified strictly after b (nanoseconds: POSIX.1-2008's st_mtim) */
+static int newer(const struct stat *a, const struct stat *b) {
+  return a->st_mtim.tv_sec != b->st_mtim.tv_sec ? a->st_mtim.tv_sec > b->st_mtim.tv_sec
+                                                : a->st_mtim.tv_nsec > b->st_mtim.tv_nsec;
+}
+
+int auto_model_current(const char *out, const char *source, const auto_model_info *m) {
+  char adapter[4200], so[4200];
+  snprintf(adapter, sizeof adapter, "%s/auto_model.c", out);
+  snprintf(so, sizeof so, "%s/%s.so", out, m->name);
+  struct stat ss, sa, sl;
+  if (stat(source, &ss) || stat(adapter, &sa) || stat(so, &sl)) return 0;
+  if (!newer(&sl, &ss) || !newer(&sl, &sa)) return 0;
+  char *want = NULL;
+  size_t nwant = 0;
+  FILE *w = open_memstream(&want, &nwant);
+  if (!w) return 0;
+  write_adapter(w, m);
+  int same = !fclose(w) && want != NULL;
+  FILE *f = same ? fopen(adapter, "r") : NULL;
+  size_t k = 0;
+  for (int ch; f && same && (ch = fgetc(f)) != EOF; k++) same = k < nwant && want[k] == ch;
+  same = same && f && k == nwant;
+  if (f) fclose(f);
+  free(want);
+  return same;
+}
+
 int auto_model_build(const char *stage, const char *source, const auto_model_info *m) {
   char adapter[4200], so[4200], log[4200], inc[4200];
   snprintf(adapter, sizeof adapter, "%s/auto_model.c", stage);

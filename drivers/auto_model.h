@@ -24,4 +24,10 @@ int auto_model_source(const char *dir, const char *name, char *path, size_t len)
  * equations do not compile, FUNC or STPNT missing), 1 for I/O errors. */
 int auto_model_build(const char *stage, const char *source, const auto_model_info *m);
 
+/* Is OUT/NAME.so, built by an earlier invocation, still the plug-in of
+ * SOURCE and m: OUT/auto_model.c is the adapter m gives, and NAME.so is
+ * newer than both SOURCE and that adapter?  1 or 0.  A script of runs
+ * (whirl auto --script) calls whirl auto once a run: one compilation. */
+int auto_model_current(const char *out, const char *source, const auto_model_info *m);
+
 #endif

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <whirl/whirl.h>
@@ -48,6 +49,7 @@ typedef struct auto_run {
 typedef struct auto_job {
   const char *dir, *name, *out;
   int quiet, plot; /* --quiet; --plot: each run's diagram */
+  const char *script; /* --script[=FILE]: AUTO's script of runs ("" = NAME.auto) */
   auto_run run[MAXALL];
   size_t nrun;
   size_t npar;
@@ -58,7 +60,8 @@ typedef struct auto_job {
 
 static void usage(FILE *f) {
   fprintf(f,
-          "usage: whirl auto DIR [NAME] [--runs=C1,C2@LABEL,...] [--out=OUT] [--plot] [--quiet]\n"
+          "usage: whirl auto DIR [NAME] [--runs=C1,C2@LABEL,...|--script[=FILE]] [--out=OUT]\n"
+          "                  [--plot] [--quiet]\n"
           "\n"
           "Run an AUTO-07p problem from its own files: the constants files\n"
           "DIR/c.NAME.1, c.NAME.2, ... (or DIR/c.NAME alone) in order, the equations\n"
@@ -69,6 +72,10 @@ static void usage(FILE *f) {
           "Output (default NAME.out): NAME.so, and for each run C its run file\n"
           "C.whirl and output directory C.out (branches.tsv, solutions, run.log).\n"
           "Like AUTO, no pictures unless --plot (then C.out/diagram.png).\n"
+          "--script runs AUTO's script of runs instead (DIR/NAME.auto, or FILE) with\n"
+          "AUTO's commands (run, load, save, relabel, merge; Python 3): each run into\n"
+          "OUT/runs, save(bd, 'x') into OUT/b.x, s.x, d.x, every run's points in\n"
+          "OUT/b.runs.\n"
           "doc/auto-files.md.\n");
 }
 
@@ -247,15 +254,24 @@ static void free_names(char **v, size_t n) {
   free(v);
 }
 
+/* restart_from's answer for @RUN:LABEL when RUN ran in an earlier
+ * invocation of whirl auto into the same OUT (OUT/RUN.out): a script of
+ * runs (--script) calls whirl auto once a run. */
+#define EXTERNAL (-3L)
+
 /* The run that run i restarts from: @RUN:LABEL's RUN; for @LABEL the
  * nearest earlier run of another constants file; else the run before.
- * -1: none (the first run), -2: RUN unknown (said). */
+ * -1: none (the first run), -2: RUN unknown (said), EXTERNAL. */
 static long restart_from(const auto_job *J, size_t i) {
   const auto_run *r = &J->run[i];
   for (size_t k = i; r->from[0] && k-- > 0;)
     if (!strcmp(J->run[k].id, r->from)) return (long)k;
-  if (r->from[0]) {
-    cli_error("auto", "--runs: %s@%s:%s: no earlier run %s", r->c, r->from, r->label, r->from);
+  if (r->from[0]) { /* a run of an earlier invocation into the same OUT */
+    char sol[4400];
+    snprintf(sol, sizeof sol, "%s/%s.out/solutions", J->out, r->from);
+    if (!strchr(r->from, '/') && access(sol, R_OK) == 0) return EXTERNAL;
+    cli_error("auto", "--runs: %s@%s:%s: no earlier run %s (here or in %s)", r->c, r->from,
+              r->label, r->from, J->out);
     return -2;
   }
   for (size_t k = i; r->label[0] && k-- > 0;)
@@ -269,14 +285,16 @@ static int translate_run(auto_job *J, size_t i, long from) {
   char model[400], restart[4400], out[4400];
   snprintf(model, sizeof model, "%s.so", J->name);
   /* beside the run file in J->out, as a run file's paths are (run_path) */
-  if (from >= 0) snprintf(restart, sizeof restart, "%s.out", J->run[from].id);
+  if (from >= 0 || from == EXTERNAL)
+    snprintf(restart, sizeof restart, "%s.out", from >= 0 ? J->run[from].id : r->from);
   snprintf(out, sizeof out, "%s.out", r->id);
   const char *lab = r->irs[0] ? r->irs : r->label[0] ? r->label : NULL;
   /* dat files by an absolute path: the run file is in OUT, DIR relative
    * to the working directory */
-  const whirl_auto_runfile_opts o = {model, from >= 0 ? restart : NULL, lab, out, J->npar,
+  const whirl_auto_runfile_opts o = {model, from >= 0 || from == EXTERNAL ? restart : NULL,
+                                     lab, out, J->npar,
                                      J->absdir[0] ? J->absdir : J->dir};
-  r->src = from;
+  r->src = from >= 0 ? from : -1;
   free(r->text);
   r->text = NULL;
   if (whirl_auto_constants_runfile(r->ac, &o, &r->text) != WHIRL_OK) {
@@ -487,6 +505,10 @@ static int build_model(auto_job *J) {
   if (!J->p_names || !J->x_names) return 1;
   const auto_model_info m = {J->name, J->ndim, J->npar, (const char *const *)J->p_names,
                              (const char *const *)J->x_names};
+  if (auto_model_current(J->out, src, &m)) {
+    rmdir(stage);
+    return 0;
+  }
   rc = auto_model_build(stage, src, &m);
   if (rc) {
     remove_files(stage);
@@ -747,6 +769,74 @@ static int run_all(auto_job *J) {
   return status;
 }
 
+/* ---- AUTO's scripts: python/whirl_auto.py ------------------------------ */
+
+/* The script runner: the source tree's, else the installed one. */
+static const char *script_module(void) {
+  const char *e = getenv("WHIRL_AUTO_SCRIPT_RUNNER");
+  if (e && *e) return e;
+#ifdef WHIRL_SRC_PYTHONDIR
+  if (access(WHIRL_SRC_PYTHONDIR "/whirl_auto.py", R_OK) == 0)
+    return WHIRL_SRC_PYTHONDIR "/whirl_auto.py";
+#endif
+#ifdef WHIRL_PKGDATADIR
+  return WHIRL_PKGDATADIR "/python/whirl_auto.py";
+#else
+  return "/usr/local/share/whirl/python/whirl_auto.py";
+#endif
+}
+
+/* --script: AUTO's script of runs (NAME.auto) executed by whirl_auto.py
+ * with AUTO's commands, each run one `whirl auto` of this executable into
+ * OUT/runs.  Its exit status: 0, 1 (a run failed) or 2 (bad input). */
+static int run_script(auto_job *J) {
+  char script[4400], self[4096], mark[4400];
+  if (J->script[0]) snprintf(script, sizeof script, "%s", J->script);
+  else snprintf(script, sizeof script, "%s/%s.auto", J->dir, J->name);
+  if (access(script, R_OK) != 0) {
+    cli_error("auto", "%s: %s (the script --script runs)", script, strerror(errno));
+    return 2;
+  }
+  if (check_out(J->out)) return 2;
+  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+  if (n <= 0) {
+    cli_error("auto", "--script: cannot find this executable (/proc/self/exe)");
+    return 1;
+  }
+  self[n] = 0;
+  snprintf(mark, sizeof mark, "%s/%s", J->out, MARKER);
+  FILE *f = NULL;
+  if ((mkdir(J->out, 0777) != 0 && errno != EEXIST) || !(f = fopen(mark, "w")) ||
+      fprintf(f, "written by whirl auto --script\n") < 0 || fclose(f)) {
+    cli_error("auto", "%s: cannot write", J->out);
+    return 1;
+  }
+  const char *py = getenv("WHIRL_PYTHON");
+  char whirl_arg[4200], dir_arg[4200], out_arg[4200];
+  snprintf(whirl_arg, sizeof whirl_arg, "--whirl=%s", self);
+  snprintf(dir_arg, sizeof dir_arg, "--dir=%s", J->dir);
+  snprintf(out_arg, sizeof out_arg, "--out=%s", J->out);
+  char *argv[] = {(char *)(py && *py ? py : "python3"), (char *)script_module(), whirl_arg,
+                  dir_arg, out_arg, J->quiet ? "--quiet" : script, J->quiet ? script : NULL,
+                  NULL};
+  fflush(stdout);
+  pid_t pid = fork();
+  if (pid < 0) {
+    cli_error("auto", "--script: cannot start Python: %s", strerror(errno));
+    return 1;
+  }
+  if (pid == 0) {
+    execvp(argv[0], argv);
+    fprintf(stderr, "whirl auto: --script needs Python 3 ('%s': %s; set WHIRL_PYTHON)\n",
+            argv[0], strerror(errno));
+    _exit(2);
+  }
+  int st;
+  while (waitpid(pid, &st, 0) < 0)
+    if (errno != EINTR) return 1;
+  return WIFEXITED(st) ? WEXITSTATUS(st) : 1;
+}
+
 /* ---- the command ------------------------------------------------------- */
 
 static int parse_args(auto_job *J, int argc, char **argv, const char **runs) {
@@ -762,6 +852,8 @@ static int parse_args(auto_job *J, int argc, char **argv, const char **runs) {
     else if (!strcmp(a, "--plot")) J->plot = 1;
     else if (!strncmp(a, "--out=", 6) && a[6]) J->out = a + 6;
     else if (!strncmp(a, "--runs=", 7) && a[7]) *runs = a + 7;
+    else if (!strcmp(a, "--script")) J->script = "";
+    else if (!strncmp(a, "--script=", 9) && a[9]) J->script = a + 9;
     else if (a[0] == '-' || npos == 2) {
       cli_error("auto", "unexpected argument '%s' (see whirl auto --help)", a);
       return 2;
@@ -804,6 +896,13 @@ int cmd_auto(int argc, char **argv) {
   if (!J.out) {
     snprintf(out, sizeof out, "%s.out", J.name);
     J.out = out;
+  }
+  if (J.script) {
+    if (runs) {
+      cli_error("auto", "--script and --runs exclude each other (the script names the runs)");
+      return 2;
+    }
+    return run_script(&J);
   }
   rc = runs ? parse_runs(&J, runs) : default_runs(&J);
   if (!rc) rc = read_constants(&J);

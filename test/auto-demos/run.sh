@@ -24,6 +24,11 @@
 # Default directory: ../shared/auto-07p/demos beside the source tree; a
 # message and exit 0 where it is absent.
 set -u
+# --script: run each demo by its own script (DEMO.auto, as AUTO's demo
+# runner and hyper.all do) with `whirl auto --script` instead of its
+# constants files in their default order; ONLY="ab plp": those demos alone
+script=0
+[ "${1:-}" = --script ] && { script=1; shift; }
 here=$(cd "$(dirname "$0")" && pwd)
 top=${top_srcdir:-$here/../..}
 top=$(cd "$top" && pwd)
@@ -92,7 +97,7 @@ maxref_of() {
   mkdir -p "$tmp/om.$1"
   (cd "$tmp/om.$1" && "${FC:-gfortran}" -O2 -c "$demos/$1/$1.f90" -o eq.o > /dev/null 2>&1 &&
    ${CC:-cc} -O2 -o orbitmax "$here/orbitmax.c" eq.o $cvode_libs -llapack -lgfortran -lm > /dev/null 2>&1 &&
-   ./orbitmax "$tmp/$1.out/s.$1" > "$tmp/$1.ref" 2> /dev/null) || : > "$tmp/$1.ref"
+   ./orbitmax "$tmp/$1.out/s.$stem" > "$tmp/$1.ref" 2> /dev/null) || : > "$tmp/$1.ref"
 }
 cvode_libs="-lsundials_cvode -lsundials_nvecserial -lsundials_sunlinsoldense -lsundials_sunmatrixdense"
 have_cvode=0
@@ -121,10 +126,19 @@ for dir in "$demos"/*/; do
   ls "$dir"/c.* >/dev/null 2>&1 || continue
   cls=$(cat "$dir"/c.* | grep -o 'IPS *= *-\{0,1\}[0-9]*' | grep -o -- '-\{0,1\}[0-9]*$' | sort -u | tr '\n' ' ')
   case "$cls" in "1 " | "2 " | "4 " | "1 2 " | "1 4 " | "2 4 " | "1 2 4 " | "-1 ") ;; *) continue ;; esac
+  [ -n "${ONLY:-}" ] && case " $ONLY " in *" $d "*) ;; *) continue ;; esac
   total=$((total + 1))
-  (cd "$tmp" && timeout 300 "$WHIRL" auto "$dir" --quiet --out="$d.out" > "$d.log" 2>&1)
-  rc=$?
-  nrun=$(ls "$tmp/$d.out"/*.whirl 2>/dev/null | wc -l)
+  if [ $script = 1 ]; then
+    (cd "$tmp" && timeout 300 "$WHIRL" auto "$dir" --script --quiet --out="$d.out" > "$d.log" 2>&1)
+    rc=$?
+    stem=runs
+    nrun=$(ls "$tmp/$d.out"/runs/*.whirl 2>/dev/null | wc -l)
+  else
+    (cd "$tmp" && timeout 300 "$WHIRL" auto "$dir" --quiet --out="$d.out" > "$d.log" 2>&1)
+    rc=$?
+    stem=$d
+    nrun=$(ls "$tmp/$d.out"/*.whirl 2>/dev/null | wc -l)
+  fi
   nbad=$(grep -c 'failed (exit' "$tmp/$d.log")
   ref=hyper
   auto_points "$d" "$hyper" > "$tmp/$d.auto"
@@ -132,15 +146,15 @@ for dir in "$demos"/*/; do
     auto_tight "$d"
     [ -s "$tmp/$d.tight" ] && ref=both && auto_points "$d" "$tmp/$d.tight" >> "$tmp/$d.auto"
   fi
-  whirl_points "$tmp/$d.out" "$d" > "$tmp/$d.whirl"
+  whirl_points "$tmp/$d.out" "$stem" > "$tmp/$d.whirl"
   w=$(wc -l < "$tmp/$d.whirl"); a=$(wc -l < "$tmp/$d.auto")
   match "$tmp/$d.whirl" "$tmp/$d.auto" > "$tmp/$d.m1"; c=$(tail -1 "$tmp/$d.m1")
   match "$tmp/$d.auto" "$tmp/$d.whirl" > "$tmp/$d.m2"; f=$(tail -1 "$tmp/$d.m2")
   note=""
   if [ "$c" != "$w" ]; then
     maxref_of "$d"
-    max_mask "$tmp/$d.out/b.$d" > "$tmp/$d.mask"
-    whirl_points_lab "$tmp/$d.out" "$d" > "$tmp/$d.lab"
+    max_mask "$tmp/$d.out/b.$stem" > "$tmp/$d.mask"
+    whirl_points_lab "$tmp/$d.out" "$stem" > "$tmp/$d.lab"
     awk -f "$here/maxref.awk" "$tmp/$d.mask" "$tmp/$d.lab" "$tmp/$d.auto" "$tmp/$d.ref" "$tmp/$d.m1" > "$tmp/$d.mx"
     set -- $(tail -1 "$tmp/$d.mx")
     mxw=$((mxw + $2)); mxa=$((mxa + $3))

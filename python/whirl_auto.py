@@ -1,0 +1,592 @@
+"""whirl_auto -- AUTO-07p's scripts (NAME.auto) run by whirl.
+
+`whirl auto DIR [NAME] --script[=FILE]` runs this module on an AUTO-07p
+problem directory: the script (default DIR/NAME.auto) is executed as AUTO's
+command-line interface executes it, with AUTO's commands defined here, and
+every `run` is one `whirl auto` run of the directory's equations with the
+constants the script gives (a constants file, a solution's constants, and
+keyword constants on top: AUTO-07p manual, ch. 5 "The AUTO Python CLUI",
+commands run, load, save, relabel, merge).
+
+Each run's constants are written as a constants file of their own into
+OUT/stage (beside links to DIR's files; DIR itself is not written to) and
+run by `whirl auto OUT/stage E --runs=RUN[@FROM:LABEL] --out=OUT/runs`,
+restarting from the run and whirl label of the solution the script names.
+The runs' AUTO files (b., s., d.) are read back into bifurcation diagrams
+the script handles as AUTO's: bd('HB'), bd('HB1'), bd(6), bd + bd, rl(bd),
+save(bd, 'name') writes OUT/b.name, s.name, d.name.  OUT/b.runs and s.runs
+hold the points and labelled solutions of every run in the order they ran
+(what AUTO's terminal shows).
+
+Scripts of AUTO-07p 0.9.2 are Python 2 (`print "..."`): a line that starts
+with `print` and a blank is called as AUTO's console calls it.  Commands
+that draw (plot, wait, savefig) draw nothing; commands this runner lacks
+stop the script with a message naming them and exit status 2.
+
+This is whirl's own code; no AUTO code is used.
+SPDX-License-Identifier: BSD-3-Clause
+"""
+import ast
+import os
+import re
+import subprocess
+import sys
+
+
+class ScriptError(Exception):
+    """Bad input in the script or its files: exit status 2."""
+
+
+# AUTO's type codes in b. files (doc/auto-files.md), as names
+TYPE_NAMES = {1: 'BP', 2: 'LP', 3: 'HB', 4: 'RG', -4: 'UZ', 5: 'LP', 6: 'BP',
+              7: 'PD', 8: 'TR', 9: 'EP', -9: 'MX', -1: 'BT', -2: 'CP',
+              -3: 'ZH', -32: 'GH'}
+
+
+def _relabel_row(row, lab):
+    """A b. row (I4,I6,I4,I5,...) with LAB (columns 15-19) set."""
+    return row[:14] + '%5d' % lab + row[19:]
+
+
+class Solution:
+    """A labelled point: its b. row, its s. block, the run it came from
+    (whirl's run id and label there, for restarts) and its constants."""
+
+    def __init__(self, run_id, wlab, row, block, consts, e):
+        self.run_id, self.wlab = run_id, wlab
+        self.row, self.block = row, list(block)
+        self.c, self.e = list(consts), e
+
+    def copy(self):
+        return Solution(self.run_id, self.wlab, self.row, self.block,
+                        self.c, self.e)
+
+    @property
+    def ty(self):
+        return TYPE_NAMES.get(int(self.row[10:14]), str(int(self.row[10:14])))
+
+    @property
+    def lab(self):
+        return int(self.row[14:19])
+
+    def _names(self, key):
+        """The dictionary KEY (parnames, unames) of the constants."""
+        text = '\n'.join(line.split('#')[0] for line in self.c)
+        found = {}
+        for m in re.finditer(r'(?<![A-Za-z0-9_])%s\s*=\s*\{' % key, text):
+            depth, j = 0, m.end() - 1
+            for j in range(m.end() - 1, len(text)):
+                depth += {'{': 1, '}': -1}.get(text[j], 0)
+                if depth == 0:
+                    break
+            try:
+                found.update(ast.literal_eval(text[m.end() - 1:j + 1]))
+            except (ValueError, SyntaxError):
+                pass
+        return found
+
+    def _ints(self, a, b):
+        return int(self.block[0][a:b])
+
+    @property
+    def PAR(self):
+        """PAR(1..NPAR) from the s. block, a dictionary by index."""
+        if not self.block:
+            raise ScriptError('%r has no solution data' % self)
+        npar, vals = self._ints(68, 73), []
+        for line in reversed(self.block[1:]):
+            vals = [float(v.replace('D', 'E')) for v in line.split()] + vals
+            if len(vals) >= npar:
+                break
+        return {k + 1: v for k, v in enumerate(vals[-npar:])}
+
+    def __getitem__(self, key):
+        """sol['mu'] or sol['PAR(1)']: a parameter; sol['x'] or sol['U(1)']:
+        the state of an equilibrium (or the orbit's first point)."""
+        par = {v: k for k, v in self._names('parnames').items()}
+        m = re.fullmatch(r'PAR\((\d+)\)', str(key))
+        if key in par or m:
+            return self.PAR[par[key] if key in par else int(m.group(1))]
+        uns = {v: k for k, v in self._names('unames').items()}
+        m = re.fullmatch(r'U\((\d+)\)', str(key))
+        if key in uns or m:
+            i = uns[key] if key in uns else int(m.group(1))
+            return float(self.block[1].split()[i].replace('D', 'E'))
+        raise ScriptError('%r: no parameter or state named %r' % (self, key))
+
+    def relabel(self, lab):
+        self.row = _relabel_row(self.row, lab)
+        if self.block:
+            h = self.block[0]
+            self.block[0] = h[:18] + '%6d' % lab + h[24:]
+
+    def __repr__(self):
+        return 'Solution(%s %d, run %s)' % (self.ty, self.lab, self.run_id)
+
+
+def _select(sols, what):
+    """AUTO's selection: None all, a label number, 'HB' all of a type,
+    'HB1' the first of a type."""
+    if what is None:
+        return SolutionList(sols)
+    if isinstance(what, int):
+        for s in sols:
+            if s.lab == what:
+                return s
+        raise ScriptError('there is no solution labelled %d' % what)
+    m = re.fullmatch(r'([A-Za-z]+)(\d*)', str(what))
+    if not m:
+        raise ScriptError('%r is not a label, a type or a type and number' % what)
+    ty = m.group(1).upper()
+    same = [s for s in sols if s.ty == ty]
+    if not m.group(2):
+        return SolutionList(same)
+    k = int(m.group(2))
+    if not 1 <= k <= len(same):
+        raise ScriptError('there is no %s%d (%d points of type %s)' % (ty, k, len(same), ty))
+    return same[k - 1]
+
+
+class SolutionList(list):
+    def __call__(self, what=None):
+        return _select(list(self), what)
+
+
+class Branch:
+    """A branch of a b. file: its header lines and its rows, each row with
+    its Solution where it is labelled."""
+
+    def __init__(self, header, rows, run_id=None):
+        self.header, self.rows = list(header), list(rows)  # rows: (text, Solution|None)
+        self.run_id = run_id  # whirl's run it came from (its d. file)
+
+    def copy(self):
+        return Branch(self.header, [(t, s.copy() if s else None) for t, s in self.rows],
+                      self.run_id)
+
+    def solutions(self):
+        return [s for _, s in self.rows if s is not None]
+
+
+class BifDiag(list):
+    """A bifurcation diagram: a list of branches, called to select
+    solutions as AUTO's: bd(), bd(6), bd('HB'), bd('HB1')."""
+
+    def __call__(self, what=None):
+        return _select([s for b in self for s in b.solutions()], what)
+
+    def __add__(self, other):
+        return BifDiag(list(self) + list(_as_bd(other)))
+
+
+def _as_bd(x):
+    if isinstance(x, BifDiag):
+        return x
+    if isinstance(x, list) and all(isinstance(b, Branch) for b in x):
+        return BifDiag(x)
+    raise ScriptError('expected a bifurcation diagram, got %r' % type(x).__name__)
+
+
+# ---- AUTO's files of a run, read back -------------------------------------
+
+def _read_b(path):
+    branches, header, rows = [], [], []
+    with open(path) as f:
+        for line in f:
+            line = line.rstrip('\n')
+            if line.startswith('   0'):
+                if rows:
+                    branches.append((header, rows))
+                    header, rows = [], []
+                header.append(line)
+            elif line.strip():
+                rows.append(line)
+    if rows or header:
+        branches.append((header, rows))
+    return branches
+
+
+def _read_s(path):
+    """s. blocks by label: the 16-integer header (6I6,I8,I6,I8,7I5) and its
+    NROWPR lines."""
+    blocks = {}
+    if not os.path.exists(path):
+        return blocks
+    with open(path) as f:
+        lines = f.read().split('\n')
+    i = 0
+    while i < len(lines) and lines[i].strip():
+        h = lines[i]
+        nrow = int(h[50:58])
+        blocks[int(h[18:24])] = lines[i:i + 1 + nrow]
+        i += 1 + nrow
+    return blocks
+
+
+def _read_labels(outdir):
+    """whirl's label of each point of branches.tsv, in order."""
+    labs = []
+    with open(os.path.join(outdir, 'branches.tsv')) as f:
+        names = None
+        for line in f:
+            if line.startswith('#'):
+                continue
+            cols = line.rstrip('\n').split('\t')
+            if names is None:
+                names = cols
+                continue
+            labs.append(int(cols[names.index('label')]))
+    return labs
+
+
+class Runner:
+    """AUTO's runner: the equations and constants the next run uses."""
+
+    def __init__(self, whirl, srcdir, out, quiet):
+        self.whirl, self.srcdir, self.out, self.quiet = whirl, srcdir, out, quiet
+        self.stage = os.path.join(out, 'stage')
+        self.runs = os.path.join(out, 'runs')
+        self.e, self.consts, self.start = None, [], None
+        self.last = BifDiag()
+        self.count, self.failed = 0, False
+        self.saved = {}
+        os.makedirs(self.stage, exist_ok=True)
+        for name in os.listdir(srcdir):
+            src = os.path.join(os.path.abspath(srcdir), name)
+            dst = os.path.join(self.stage, name)
+            if os.path.isfile(src) and not os.path.lexists(dst):
+                os.symlink(src, dst)
+        self.all_runs = open(os.path.join(out, 'b.runs'), 'w')
+        self.all_sols = open(os.path.join(out, 's.runs'), 'w')
+
+    # -- constants --
+    def read_c(self, name):
+        path = os.path.join(self.srcdir, 'c.' + name)
+        try:
+            with open(path) as f:
+                return f.read().split('\n')
+        except OSError as e:
+            raise ScriptError('c=%r: %s: %s' % (name, path, e.strerror))
+
+    @staticmethod
+    def current(consts, key):
+        """The last value of KEY in constants text (a later key replaces an
+        earlier one), as text; None if absent."""
+        pat = re.compile(r'(?<![A-Za-z0-9_])%s\s*=\s*([^,\s]+)' % re.escape(key))
+        val = None
+        for line in consts:
+            for m in pat.finditer(line.split('#')[0]):
+                val = m.group(1)
+        return val
+
+    def override(self, consts, kw):
+        consts = list(consts)
+        for key, val in kw.items():
+            if key == 'DS' and val in ('-', '+'):
+                ds = self.current(consts, 'DS')
+                if ds is None:
+                    raise ScriptError("DS=%r: the constants have no DS" % val)
+                if val == '+':
+                    continue
+                val = -float(ds.replace('D', 'E').replace('d', 'e'))
+            consts.append('%s = %r' % (key, val))
+        return consts
+
+    # -- load and run --
+    def load(self, data=None, **kw):
+        e = kw.pop('e', None)
+        c = kw.pop('c', None)
+        if 's' in kw:
+            s = kw.pop('s')
+            if s not in self.saved:
+                raise ScriptError("s=%r: no solutions saved under that name by this script" % s)
+            data = self.saved[s]
+        if isinstance(data, str):
+            e, c = e or data, c or data
+            data = None
+        if data is None:
+            if e:
+                self.e = e
+            if c:
+                self.consts = self.read_c(c)
+            self.consts = self.override(self.consts, kw)
+            return None
+        if isinstance(data, list) and not isinstance(data, Solution):
+            sols = data() if callable(data) else [s for b in data for s in b.solutions()]
+            if 'IRS' in kw:
+                sol = _select(list(sols), kw['IRS'])
+            elif sols:
+                sol = sols[-1]
+            else:
+                raise ScriptError('the bifurcation diagram has no solutions to start from')
+        elif isinstance(data, Solution):
+            sol = data
+        else:
+            raise ScriptError('cannot start from %r' % type(data).__name__)
+        sol = sol.copy()
+        if e:
+            sol.e = e
+        if c:
+            sol.c = self.read_c(c)
+        sol.c = self.override(sol.c, kw)
+        return sol
+
+    def run(self, data=None, sv=None, ap=None, **kw):
+        """AUTO's run: from data (a solution, a diagram, a name) with its
+        constants and kw on top; without data, the runner's last start and
+        constants again (run(DS='-') continues the other way), or with c=
+        a fresh start from those constants."""
+        if data is not None or 's' in kw:
+            sol = self.load(data, **kw)
+            self.start = sol
+            if sol is not None:
+                self.e, self.consts = sol.e or self.e, sol.c
+        else:
+            if 'c' in kw:
+                self.start = None
+            self.load(None, **kw)
+        if not self.e:
+            raise ScriptError('run: no equations (give e=NAME)')
+        self.count += 1
+        rid = 'r%d' % self.count
+        with open(os.path.join(self.stage, 'c.' + rid), 'w') as f:
+            f.write('\n'.join(self.consts) + '\n')
+        start = self.start
+        spec = rid if start is None else '%s@%s:%d' % (rid, start.run_id, start.wlab)
+        ids = self.whirl_auto(self.e, spec)
+        bd = BifDiag()
+        for run_id in ids:
+            bd.extend(self.read_run(run_id, self.consts, self.e))
+        self.last = bd
+        if sv:
+            self.save(bd, sv)
+        if ap:
+            self.append(bd, ap)
+        return bd
+
+    def whirl_auto(self, e, spec):
+        cmd = [self.whirl, 'auto', self.stage, e, '--runs=' + spec, '--out=' + self.runs]
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           universal_newlines=True)
+        ids = []
+        for line in p.stdout.splitlines():
+            m = re.fullmatch(r'== (\S+) \(c\.\S+\)', line)
+            if m:
+                ids.append(m.group(1))
+            elif not self.quiet:
+                print(line)
+        if p.stderr:
+            sys.stderr.write(p.stderr)
+        if p.returncode == 2 and not ids:
+            raise ScriptError('whirl auto failed on run %s (exit 2)' % spec)
+        if p.returncode:
+            self.failed = True
+        return ids
+
+    def read_run(self, run_id, consts, e):
+        bpath = os.path.join(self.runs, 'b.' + run_id)
+        if not os.path.exists(bpath):
+            return []
+        blocks = _read_s(os.path.join(self.runs, 's.' + run_id))
+        wlabs = _read_labels(os.path.join(self.runs, run_id + '.out'))
+        out, k = [], 0
+        for header, rows in _read_b(bpath):
+            brows = []
+            for row in rows:
+                wlab = wlabs[k] if k < len(wlabs) else 0
+                k += 1
+                lab = int(row[14:19])
+                sol = None
+                if lab and wlab:
+                    sol = Solution(run_id, wlab, row, blocks.get(lab, []), consts, e)
+                    self.all_sols.write(''.join(l + '\n' for l in sol.block))
+                brows.append((row, sol))
+                self.all_runs.write(row + '\n')
+            out.append(Branch(header, brows, run_id))
+        if k != len(wlabs):
+            raise ScriptError('%s: %d points in b.%s, %d in branches.tsv'
+                              % (run_id, k, run_id, len(wlabs)))
+        self.all_runs.flush()
+        self.all_sols.flush()
+        return out
+
+    # -- files --
+    def _paths(self, name):
+        return [os.path.join(self.out, '%s.%s' % (k, name)) for k in 'bsd']
+
+    def write(self, bd, name, mode):
+        bd = _as_bd(bd)
+        paths = self._paths(name)
+        texts, runs = ['', '', ''], []
+        for br in bd:
+            if br.run_id and br.run_id not in runs:
+                runs.append(br.run_id)
+                try:  # the runs' diagnostics, as AUTO's d. files
+                    with open(os.path.join(self.runs, 'd.' + br.run_id)) as f:
+                        texts[2] += f.read()
+                except OSError:
+                    pass
+            texts[0] += ''.join(h + '\n' for h in br.header)
+            for row, sol in br.rows:
+                texts[0] += row + '\n'
+                if sol is not None and sol.block:
+                    texts[1] += ''.join(l + '\n' for l in sol.block)
+        for path, text in zip(paths, texts):
+            tmp = path + '.tmp'
+            with open(tmp, 'w') as f:
+                if mode == 'a' and os.path.exists(path):
+                    with open(path) as old:
+                        f.write(old.read())
+                f.write(text)
+            os.replace(tmp, path)
+
+    def diagram(self, x):
+        """A diagram given as itself or by the name it was saved under."""
+        if isinstance(x, str):
+            if x not in self.saved:
+                raise ScriptError("%r: nothing saved under that name" % x)
+            return self.saved[x]
+        return _as_bd(x)
+
+    def save(self, bd, name=None):
+        """save(bd, 'x'), or save('x'): the last run."""
+        if name is None:
+            bd, name = self.last, bd
+        self.write(bd, name, 'w')
+        self.saved[name] = _as_bd(bd)
+
+    def append(self, bd, name=None):
+        """append(bd, 'x'), append('a', 'x'), or append('x'): the last run."""
+        if name is None:
+            bd, name = self.last, bd
+        bd = self.diagram(bd)
+        self.write(bd, name, 'a')
+        self.saved[name] = self.saved.get(name, BifDiag()) + bd
+
+    def in_place(self, f, x):
+        """relabel and merge of a saved name rewrite its files."""
+        out = f(self.diagram(x))
+        if isinstance(x, str):
+            self.save(out, x)
+        return out
+
+
+def relabel(bd, start=1):
+    """Labels 1, 2, ... in order over all branches (AUTO's relabel)."""
+    bd = BifDiag(b.copy() for b in _as_bd(bd))
+    lab = start
+    for br in bd:
+        rows = []
+        for row, sol in br.rows:
+            if sol is not None:
+                sol.relabel(lab)
+                row = sol.row
+                lab += 1
+            rows.append((row, sol))
+        br.rows = rows
+    return bd
+
+
+def merge(bd):
+    """Branches run from one start in both directions as one branch
+    (AUTO's merge): the second's points reversed, then the first's."""
+    bd = _as_bd(bd)
+    out, i = BifDiag(), 0
+    while i < len(bd):
+        a = bd[i]
+        if i + 1 < len(bd) and a.rows and bd[i + 1].rows and \
+                a.rows[0][0][19:] == bd[i + 1].rows[0][0][19:]:
+            b = bd[i + 1]
+            out.append(Branch(a.header, list(reversed(b.rows[1:])) + a.rows, a.run_id))
+            i += 2
+        else:
+            out.append(a.copy())
+            i += 1
+    return out
+
+
+def _py2_prints(source):
+    """AUTO 0.9.2's scripts are Python 2: `print X` becomes print(X), as
+    AUTO's console calls a name followed by arguments."""
+    out = []
+    for line in source.split('\n'):
+        m = re.match(r'^(\s*)print(\s+(?![=(])(.*)|\s*)$', line)
+        if m:
+            arg = (m.group(3) or '').rstrip()
+            line = '%sprint(%s)' % (m.group(1), arg)
+        out.append(line)
+    return '\n'.join(out)
+
+
+def _unsupported(name):
+    def f(*a, **k):
+        raise ScriptError("the script uses '%s', which whirl's script runner does not "
+                          "have yet (doc/auto-files.md)" % name)
+    return f
+
+
+def namespace(R):
+    def nothing(*a, **k):
+        return None
+    ns = {'__name__': '__main__', 'ScriptError': ScriptError}
+    for names, f in ((('run', 'r', 'rn'), R.run), (('load', 'ld'), R.load),
+                     (('save', 'sv'), R.save), (('append', 'ap'), R.append),
+                     (('relabel', 'rl'), lambda x, *a: R.in_place(relabel, x)),
+                     (('merge', 'mb'), lambda x, *a: R.in_place(merge, x)),
+                     (('clean', 'cl', 'wait', 'plot', 'pl', 'savefig', 'config'), nothing)):
+        for n in names:
+            ns[n] = f
+
+    def delete(name):
+        for p in R._paths(name):
+            if os.path.exists(p):
+                os.remove(p)
+        R.saved.pop(name, None)
+    ns['delete'] = ns['dl'] = delete
+    for n in ('cd', 'auto', 'ex', 'loadbd', 'bd', 'demo', 'dm', 'copy', 'cp', 'move', 'mv'):
+        ns[n] = _unsupported(n)
+    return ns
+
+
+def _script_line(script):
+    """':LINE' of the script where the exception being handled arose."""
+    line, tb = '', sys.exc_info()[2]
+    while tb is not None:
+        if tb.tb_frame.f_code.co_filename == script:
+            line = ':%d' % tb.tb_lineno
+        tb = tb.tb_next
+    return line
+
+
+def main(argv):
+    import argparse
+    ap = argparse.ArgumentParser(prog='whirl auto --script')
+    ap.add_argument('--whirl', required=True)
+    ap.add_argument('--dir', required=True)
+    ap.add_argument('--out', required=True)
+    ap.add_argument('--quiet', action='store_true')
+    ap.add_argument('script')
+    a = ap.parse_args(argv)
+    try:
+        with open(a.script) as f:
+            source = _py2_prints(f.read())
+        code = compile(source, a.script, 'exec')
+    except (OSError, SyntaxError) as e:
+        sys.stderr.write('whirl auto: %s: %s\n' % (a.script, e))
+        return 2
+    R = Runner(a.whirl, a.dir, a.out, a.quiet)
+    sys.path.insert(0, os.path.abspath(a.dir))
+    try:
+        exec(code, namespace(R))
+    except Exception as e:  # bad input, or the script's own error as Python says it
+        what = str(e) if isinstance(e, ScriptError) else '%s: %s' % (type(e).__name__, e)
+        sys.stderr.write('whirl auto: %s%s: %s\n' % (a.script, _script_line(a.script), what))
+        return 2
+    finally:
+        R.all_runs.close()
+        R.all_sols.close()
+    return 1 if R.failed else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,122 @@
+#!/bin/sh
+# test/regress/auto_script.sh — `whirl auto DIR --script`: AUTO's script of
+# runs (NAME.auto, Python 2 as AUTO-07p 0.9.2's demos are written) executed
+# with AUTO's commands by python/whirl_auto.py, each run a `whirl auto` run.
+#  1. The logistic map x -> mu x (1 - x), written here in AUTO's form: the
+#     fixed points from mu = 0.5, the period doublings of the cascade by a
+#     loop of run(r('PD1'), ISW=-1) as AUTO's log demo does, the parameter
+#     read back by name (sol['mu']): mu = 3 and 1 + sqrt(6) exactly, and
+#     the period-4 flip at 3.5440903596 (the cascade's third, known to 10
+#     digits); run(DS='-') runs the last start again the other way; save,
+#     append, relabel and merge write b./s./d. files whose labels run 1, 2,
+#     ...; DIR is not written to; a second run into the same OUT works and
+#     reuses the plug-in (no compilation).
+#  2. Bad input: a command the runner lacks, an error of the script's own,
+#     --script with --runs, a missing script: exit 2 with one message naming
+#     the script (and its line), no traceback.
+# TAP output.
+set -u
+: "${top_srcdir:=.}" "${top_builddir:=.}"
+WHIRL="$(cd "$top_builddir" && pwd)/drivers/whirl"
+command -v "${FC:-gfortran}" >/dev/null 2>&1 || { echo "1..0 # SKIP no Fortran compiler"; exit 0; }
+command -v "${WHIRL_PYTHON:-python3}" >/dev/null 2>&1 || { echo "1..0 # SKIP no python3"; exit 0; }
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+n=0 fail=0
+ok() { n=$((n + 1)); echo "ok $n - $*"; }
+nok() { n=$((n + 1)); echo "not ok $n - $*"; fail=1; }
+check() { if [ "$1" = 0 ]; then shift; ok "$@"; else shift; nok "$@"; fi; }
+near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= t) }'; }
+
+mkdir "$tmp/lg"
+cat > "$tmp/lg/lg.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      F(1) = PAR(1) * U(1) * (1 - U(1))
+      IF (IJAC.EQ.0) RETURN
+      DFDU(1,1) = PAR(1) * (1 - 2 * U(1))
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 0.5
+      U(1) = 0
+      END SUBROUTINE STPNT
+F
+cat > "$tmp/lg/c.lg" <<'C'
+unames = {1: 'x'}, parnames = {1: 'mu'}
+NDIM=   1, IPS =  -1, IRS =   0, ILP =   1
+ICP =  ['mu']
+NMX=  400, NPR=    0, MXBF=  -1, ISP = 1, ISW = 1, JAC = 1
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-8
+DS  =  0.001, DSMIN=  0.0001, DSMAX=   0.02
+NPAR = 1
+UZSTOP = {'mu': 3.6}
+C
+cat > "$tmp/lg/lg.auto" <<'A'
+# as AUTO-07p 0.9.2's demos: Python 2 prints
+print "\n***the fixed points***"
+r = run(e='lg', c='lg')
+save('lg')
+for i in range(3):
+    print '%.10f' % r('PD1')['mu']
+    r = run(r('PD1'), ISW=-1)
+    append('lg')
+back = run(DS='-')
+print 'runs back %d' % len(back)
+ab = relabel(merge(r + back))
+save(ab, 'both')
+print 'labels %s' % ' '.join(str(s.lab) for s in ab())
+A
+cp -R "$tmp/lg" "$tmp/lg.orig"
+out=$(cd "$tmp" && "$WHIRL" auto lg --script --quiet --out=lg.out 2> err.txt)
+rc=$?
+check $([ $rc = 0 ] && echo 0 || echo 1) "the script runs (exit $rc$( [ $rc = 0 ] || printf ': %s' "$(head -2 "$tmp/err.txt")"))"
+pd=$(printf '%s\n' "$out" | grep -E '^[0-9]+\.[0-9]{10}$' | tr '\n' ' ')
+set -- $pd
+near "${1:-0}" 3 1e-9; check $? "the first flip at mu = 3 (${1:-none})"
+near "${2:-0}" 3.449489742783178 1e-9; check $? "the period-2 flip at 1 + sqrt(6) (${2:-none})"
+near "${3:-0}" 3.5440903596 1e-9; check $? "the period-4 flip at 3.5440903596 (${3:-none})"
+printf '%s\n' "$out" | grep -q '^runs back [1-9]'; check $? "run(DS='-') runs the last start the other way"
+for f in b.lg s.lg d.lg b.both s.both b.runs s.runs; do
+  [ -s "$tmp/lg.out/$f" ]; check $? "OUT/$f written"
+done
+labs=$(printf '%s\n' "$out" | sed -n 's/^labels //p')
+want=$(echo "$labs" | awk '{ for (i = 1; i <= NF; i++) s = s (i > 1 ? " " : "") i; print s }')
+[ -n "$labs" ] && [ "$labs" = "$want" ]; check $? "relabel numbers 1, 2, ... ($labs)"
+blabs=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 != 0 { printf "%d ", substr($0, 15, 5) }' "$tmp/lg.out/b.both")
+[ "$blabs" = "$want " ]; check $? "b.both's LAB column as relabelled ($blabs)"
+diff -r "$tmp/lg" "$tmp/lg.orig" > /dev/null; check $? "DIR is not written to"
+t0=$(stat -c %Y "$tmp/lg.out/runs/lg.so")
+sleep 1
+out2=$(cd "$tmp" && "$WHIRL" auto lg --script --quiet --out=lg.out 2>&1)
+rc=$?
+[ $rc = 0 ] && [ "$(printf '%s\n' "$out2" | grep -c '^3\.')" = 3 ]; check $? "a second run into the same OUT (exit $rc)"
+[ "$(stat -c %Y "$tmp/lg.out/runs/lg.so")" = "$t0" ]; check $? "the unchanged plug-in is not compiled again"
+
+# 2. bad input
+bad() { # script text, what the message must name, test name
+  printf '%s\n' "$1" > "$tmp/lg/bad.auto"
+  msg=$(cd "$tmp" && "$WHIRL" auto lg --script=lg/bad.auto --quiet --out=bad.out 2>&1 >/dev/null)
+  rc=$?
+  [ $rc = 2 ] && [ "$(printf '%s\n' "$msg" | grep -c .)" = 1 ] &&
+    printf '%s\n' "$msg" | grep -q "$2" && ! printf '%s\n' "$msg" | grep -q Traceback
+  check $? "$3 (exit $rc: $msg)"
+  rm -f "$tmp/lg/bad.auto"
+}
+bad "r = run(e='lg', c='lg')
+cd('elsewhere')" "bad.auto:2: the script uses 'cd'" "a command the runner lacks: exit 2, its line"
+bad "x = undefined_name + 1" "bad.auto:1: NameError" "the script's own error: exit 2, one line"
+bad "r = run(e='lg', c='lg.nothere')" "c.lg.nothere" "a missing constants file: exit 2"
+bad "r = run(e='lg', c='lg')
+r('HB1')" "no HB1" "a label the diagram lacks: exit 2"
+msg=$(cd "$tmp" && "$WHIRL" auto lg --script --runs=lg --out=x.out 2>&1)
+[ $? = 2 ] && printf '%s' "$msg" | grep -q "exclude"; check $? "--script with --runs: exit 2"
+msg=$(cd "$tmp" && "$WHIRL" auto lg --script=nothere.auto --out=y.out 2>&1)
+[ $? = 2 ] && printf '%s' "$msg" | grep -q "nothere.auto"; check $? "a missing script: exit 2"
+[ ! -e "$tmp/y.out" ] && [ ! -e "$tmp/x.out" ]; check $? "nothing written on bad arguments"
+echo "1..$n"
+exit $fail
