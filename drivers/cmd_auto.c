@@ -209,6 +209,14 @@ static int read_constants(auto_job *J) {
     int n = 0;
     whirl_auto_constants_int(r->ac, "NPAR", &n);
     if (n > 0 && (size_t)n > J->npar) J->npar = (size_t)n;
+    /* AUTO's NPAR is at least the largest ICP (main.f90: NPAR =
+     * MAX(MAXVAL(ABS(ICU)), NPAR)); PAR(11) of orbits is whirl's PERIOD */
+    for (size_t k = 0; k < whirl_auto_constants_count(r->ac, "ICP"); k++) {
+      whirl_auto_item it;
+      if (whirl_auto_constants_item(r->ac, "ICP", k, &it) || it.name) continue;
+      const int a = abs(it.index);
+      if (a != 11 && a <= 36 && (size_t)a > J->npar) J->npar = (size_t)a;
+    }
     if (!J->ndim) whirl_auto_constants_int(r->ac, "NDIM", &J->ndim);
   }
   if (J->ndim < 1) {
@@ -640,6 +648,11 @@ static int run_one(auto_job *J, size_t i) {
  * two halves one branch number, with MXBF < 0 once, with DS; at most
  * 2|MXBF| (|MXBF|) branches follow the first.  Labels number on.  whirl
  * auto does the same with a run a branch, inserted after run i. */
+/* AUTO's MXBF where a constants file has none (AUTO-07p main.f90's
+ * defaults): branch switching is on unless a file turns it off (demo
+ * pp2's c.pp2 has MXBF in a comment only: AUTO switches at its BPs). */
+#define AUTO_MXBF 10
+
 typedef struct bp_queue {
   size_t run[64];
   int lab[64];
@@ -700,7 +713,7 @@ static int insert_switch(auto_job *J, size_t i, size_t at, size_t j, int lab, in
  * *pos).  1 when one was inserted, 0 when none is left, -1 on error. */
 static int next_switch(auto_job *J, size_t i, size_t at, bp_queue *q, int *nbfc, int *br,
                        int *pos) {
-  int mxbf = 0;
+  int mxbf = AUTO_MXBF;
   whirl_auto_constants_int(J->run[i].ac, "MXBF", &mxbf);
   const int nbfcs = mxbf > 0 ? 2 * mxbf : -mxbf;
   queue_bps(J, at, q);
@@ -723,7 +736,7 @@ static int next_switch(auto_job *J, size_t i, size_t at, bp_queue *q, int *nbfc,
  * switches at BPs of maps' fixed points alike), |ISW| <= 1, MXBF not 0).
  * 0 when MXBF does not apply. */
 static int mxbf_begin(const auto_job *J, size_t i, bp_queue *q) {
-  int ips = 1, isw = 1, mxbf = 0;
+  int ips = 1, isw = 1, mxbf = AUTO_MXBF;
   const auto_run *r = &J->run[i];
   whirl_auto_constants_int(r->ac, "IPS", &ips);
   whirl_auto_constants_int(r->ac, "ISW", &isw);

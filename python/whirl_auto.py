@@ -37,6 +37,19 @@ class ScriptError(Exception):
     """Bad input in the script or its files: exit status 2."""
 
 
+class RunSkipped(Exception):
+    """A run that cannot start because the run it starts from failed:
+    said, and the script goes on (exit status 1), as AUTO goes on after a
+    run that stopped."""
+
+
+class _Picture:
+    """What plot() returns: AUTO's picture, here drawing nothing."""
+
+    def __getattr__(self, name):
+        return lambda *a, **k: None
+
+
 # AUTO's type codes in b. files (doc/auto-files.md), as names
 TYPE_NAMES = {1: 'BP', 2: 'LP', 3: 'HB', 4: 'RG', -4: 'UZ', 5: 'LP', 6: 'BP',
               7: 'PD', 8: 'TR', 9: 'EP', -9: 'MX', -1: 'BT', -2: 'CP',
@@ -103,6 +116,10 @@ class Solution:
     def __getitem__(self, key):
         """sol['mu'] or sol['PAR(1)']: a parameter; sol['x'] or sol['U(1)']:
         the state of an equilibrium (or the orbit's first point)."""
+        own = {'LAB': lambda: self.lab, 'TY': lambda: self.ty, 'TY name': lambda: self.ty,
+               'BR': lambda: int(self.row[0:4]), 'PT': lambda: abs(int(self.row[4:10]))}
+        if key in own:
+            return own[key]()
         par = {v: k for k, v in self._names('parnames').items()}
         m = re.fullmatch(r'PAR\((\d+)\)', str(key))
         if key in par or m:
@@ -317,6 +334,8 @@ class Runner:
                 sol = _select(list(sols), kw['IRS'])
             elif sols:
                 sol = sols[-1]
+            elif self.failed:  # an earlier run failed: this one cannot start
+                raise RunSkipped('the run it starts from failed')
             else:
                 raise ScriptError('the bifurcation diagram has no solutions to start from')
         elif isinstance(data, Solution):
@@ -337,7 +356,12 @@ class Runner:
         constants again (run(DS='-') continues the other way), or with c=
         a fresh start from those constants."""
         if data is not None or 's' in kw:
-            sol = self.load(data, **kw)
+            try:
+                sol = self.load(data, **kw)
+            except RunSkipped as e:
+                sys.stderr.write('whirl auto: run skipped: %s\n' % e)
+                self.last = BifDiag()
+                return self.last
             self.start = sol
             if sol is not None:
                 self.e, self.consts = sol.e or self.e, sol.c
@@ -377,9 +401,7 @@ class Runner:
                 print(line)
         if p.stderr:
             sys.stderr.write(p.stderr)
-        if p.returncode == 2 and not ids:
-            raise ScriptError('whirl auto failed on run %s (exit 2)' % spec)
-        if p.returncode:
+        if p.returncode:  # said on stderr; the script goes on, as AUTO's
             self.failed = True
         return ids
 
@@ -533,7 +555,8 @@ def namespace(R):
                      (('save', 'sv'), R.save), (('append', 'ap'), R.append),
                      (('relabel', 'rl'), lambda x, *a: R.in_place(relabel, x)),
                      (('merge', 'mb'), lambda x, *a: R.in_place(merge, x)),
-                     (('clean', 'cl', 'wait', 'plot', 'pl', 'savefig', 'config'), nothing)):
+                     (('clean', 'cl', 'wait', 'savefig', 'config'), nothing),
+                     (('plot', 'pl'), lambda *a, **k: _Picture())):
         for n in names:
             ns[n] = f
 

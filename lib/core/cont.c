@@ -30,6 +30,10 @@ const char *whirl_point_type_name(int type) {
   case WHIRL_PT_IS: return "IS";
   case WHIRL_PT_MG: return "MG";
   case WHIRL_PT_GH: return "GH";
+  case WHIRL_PT_R1: return "R1";
+  case WHIRL_PT_R2: return "R2";
+  case WHIRL_PT_R3: return "R3";
+  case WHIRL_PT_R4: return "R4";
   default: return "??";
   }
 }

@@ -213,7 +213,8 @@ static int type_code(const char *ty, int lab, int orbit) {
     int eq, po;
   } map[] = {{"BP", 1, 6}, {"LP", 2, 5}, {"HB", 3, 3}, {"UZ", -4, -4}, {"PD", 7, 7},
              {"TR", 8, 8}, {"EP", 9, 9}, {"MX", -9, -9}, {"BT", -1, -1}, {"CP", -2, -2},
-             {"ZH", -3, -3}, {"GH", -32, -32}};
+             {"ZH", -3, -3}, {"GH", -32, -32}, {"R1", -5, -5}, {"R2", -6, -6},
+             {"R3", -7, -7}, {"R4", -8, -8}};
   for (size_t i = 0; i < sizeof map / sizeof *map; i++)
     if (!strcmp(map[i].ty, ty)) return orbit ? map[i].po : map[i].eq;
   return lab > 0 ? 4 : 0; /* RG; a labelled one every NPR steps */

@@ -442,7 +442,8 @@ static void branch_summary(run_ctx *R, const branch_spec *b, whirl_cont *c,
     static const int order[] = {WHIRL_PT_LP, WHIRL_PT_BP, WHIRL_PT_HB,
                                 WHIRL_PT_PD, WHIRL_PT_TR, WHIRL_PT_UZ,
                                 WHIRL_PT_CP, WHIRL_PT_BT, WHIRL_PT_ZH,
-                                WHIRL_PT_GH, WHIRL_PT_MG, WHIRL_PT_IS};
+                                WHIRL_PT_GH, WHIRL_PT_MG, WHIRL_PT_IS,
+                                WHIRL_PT_R1, WHIRL_PT_R2, WHIRL_PT_R3, WHIRL_PT_R4};
     for (size_t i = 0; i < sizeof order / sizeof order[0]; i++)
       if (counts[order[i]] && len > 0 && (size_t)len < sizeof line)
         len += snprintf(line + len, sizeof line - (size_t)len, " %d %s", counts[order[i]],
@@ -542,7 +543,7 @@ int run_branch(run_ctx *R, branch_spec *b) {
   fprintf(R->log, "branch %d: %s, continuation in %s (%s)\n", R->branch,
           b->sys->name ? b->sys->name : "?", R->pnames[b->icp],
           b->fold ? "fold locus" : b->hopf ? "Hopf locus" : "one parameter");
-  int counts[16] = {0};
+  int counts[WHIRL_PT_NTYPES] = {0};
   int stop = 0;
   size_t npts = 0;
   double pmin = 0.0, pmax = 0.0, pprev = 0.0, done = 0.0;
@@ -586,7 +587,7 @@ int run_branch(run_ctx *R, branch_spec *b) {
     int lab = 0, labelled = type != WHIRL_PT_REGULAR || stop ||
                             (s->npr > 0 && ntot % (size_t)s->npr == 0);
     if (labelled) lab = ++R->label;
-    if (type >= 0 && type < 16) counts[type]++;
+    if (type >= 0 && type < WHIRL_PT_NTYPES) counts[type]++;
     if (b->trace && run_trace_add(b->trace, pt->x, pt->p, b->icp, type, R->branch)) {
       rc = -1;
       break;
@@ -1271,8 +1272,12 @@ static int restart_solution(whirl_run *R, run_objects *O) {
     return -1;
   }
   O->have_sol = 1;
-  /* the run file's PAR overrides the stored parameters (AUTO) */
-  for (size_t k = 0; k < R->npar; k++) R->par[k] = O->sol.par[k];
+  /* the run file's PAR overrides the stored parameters (AUTO); those the
+   * solution has not (a restart with a larger NPAR) keep the model's */
+  for (size_t k = 0; k < R->npar; k++) {
+    if (isnan(O->sol.par[k])) O->sol.par[k] = R->par[k];
+    R->par[k] = O->sol.par[k];
+  }
   for (size_t i = 0; i < R->s->npar; i++)
     R->par[run_par_index(R, &R->s->par[i].ref)] = R->s->par[i].value;
   if (O->sol.kind == WHIRL_SOL_EQ) memcpy(R->u, O->sol.x, R->n * sizeof *R->u);

@@ -834,7 +834,8 @@ static int set_irs(whirl_runfile *rf, const key_def *d, const char *where) {
   }
   /* TY[k]: the k-th point of type TY (AUTO: IRS = 'HB1') */
   static const char *const types[] = {"EP", "LP", "BP", "HB", "UZ", "PD",
-                                      "TR", "CP", "BT", "ZH", "IS", "MG", "GH", "RG"};
+                                      "TR", "CP", "BT", "ZH", "IS", "MG", "GH", "RG",
+                                      "R1", "R2", "R3", "R4"};
   for (size_t i = 0; i < sizeof types / sizeof types[0]; i++) {
     if (strncasecmp(t, types[i], 2)) continue;
     int k = 1;
@@ -953,7 +954,8 @@ static int set_intlist(whirl_runfile *rf, const key_def *d, const char *where) {
 /* STOP: point types with a count, AUTO's ['TR1', 'LP2'] (a type alone
  * counts 1): the branch ends at the count-th point of that type. */
 static int set_stoplist(whirl_runfile *rf, const key_def *d, const char *where) {
-  static const char *const types[] = {"BP", "LP", "HB", "UZ", "PD", "TR", "EP", "MX"};
+  static const char *const types[] = {"BP", "LP", "HB", "UZ", "PD", "TR", "EP", "MX",
+                                      "R1", "R2", "R3", "R4"};
   whirl_run_settings *s = &rf->s;
   const pvalue *v = &rf->v;
   char shown[64];
@@ -966,7 +968,7 @@ static int set_stoplist(whirl_runfile *rf, const key_def *d, const char *where) 
     int n = 1;
     if (k == sizeof types / sizeof *types || (t[2] && (to_int(t + 2, &n) || n < 1)))
       return fail(rf, where, "%s: '%s' is not a point type with a count (BP, LP, HB, UZ, "
-                  "PD, TR, EP or MX, then 1, 2, ...: TR1)", d->name,
+                  "PD, TR, EP, MX or R1-R4, then 1, 2, ...: TR1)", d->name,
                   show(t, ITEMLEN, shown, sizeof shown));
     memset(&s->stop[i], 0, sizeof s->stop[i]);
     snprintf(s->stop[i].ref.name, sizeof s->stop[i].ref.name, "%s", types[k]);

@@ -367,6 +367,18 @@ static int fits(reader *r, const whirl_solution *s, const whirl_solution_shape *
   return -1;
 }
 
+/* s's parameters to npar (when more than it has), the new ones NAN.
+ * 0, or -1 out of memory. */
+static int pad_params(whirl_solution *s, size_t npar) {
+  if (npar <= s->npar) return 0;
+  double *p = realloc(s->par, npar * sizeof *p);
+  if (!p) return -1;
+  for (size_t k = s->npar; k < npar; k++) p[k] = NAN;
+  s->par = p;
+  s->npar = npar;
+  return 0;
+}
+
 int whirl_solution_read(FILE *f, const char *path, const whirl_solution_shape *want,
                       int label, const char *ty, whirl_solution *out, char *msg,
                       size_t len) {
@@ -383,7 +395,10 @@ int whirl_solution_read(FILE *f, const char *path, const whirl_solution_shape *w
         shown(model, b), want->model);
     goto done;
   }
-  if (want->npar && npar != want->npar) {
+  /* fewer parameters than the model: a restart with a larger NPAR, as
+   * AUTO's (main.f90: NPAR = MAX(NPARR, NPAR)); the others are NAN here,
+   * the model's own values for the run (pad_params) */
+  if (want->npar && npar > want->npar) {
     bad(&r, "the solutions have %zu parameters (npar %zu); model '%s' has %zu",
         npar, npar, model, want->npar);
     goto done;
@@ -401,6 +416,11 @@ int whirl_solution_read(FILE *f, const char *path, const whirl_solution_shape *w
     if (ty && ty[0] ? !strcmp(s.ty, ty) && ++count == label : s.label == label) {
       if (fits(&r, &s, want)) {
         whirl_solution_free(&s);
+        goto done;
+      }
+      if (pad_params(&s, want->npar)) {
+        whirl_solution_free(&s);
+        snprintf(msg, len, "%s: out of memory", path);
         goto done;
       }
       *out = s;

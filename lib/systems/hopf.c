@@ -284,8 +284,14 @@ static int hopf_test(const double *Z, const double *p, double *tau, int *types,
   tau[WHIRL_HOPF_TEST_GH] = NAN;
   types[WHIRL_HOPF_TEST_GH] = h->map ? 0 : WHIRL_PT_GH;
   if (!h->map && kappa > 0) tau[WHIRL_HOPF_TEST_GH] = lyapunov1(h, Z, h->pf, kappa);
-  /* a map's κ → 0 is the 1:1 resonance, not a Bogdanov–Takens point, and
-   * its zero-Hopf analogue is another test: none labelled yet */
+  /* a map's κ → 0 is the 1:1 resonance, not a Bogdanov–Takens point (its
+   * zero-Hopf analogue, a multiplier through 1, is not labelled yet); the
+   * strong resonances θ = 0, π, 2π/3, π/2 are κ = 0, 4, 3, 2 */
+  static const double kres[4] = {0.0, 4.0, 3.0, 2.0};
+  for (int r = 0; r < 4; ++r) {
+    tau[WHIRL_HOPF_TEST_R1 + r] = h->map ? kappa - kres[r] : 1.0;
+    types[WHIRL_HOPF_TEST_R1 + r] = h->map ? WHIRL_PT_R1 + r : 0;
+  }
   if (h->map) types[WHIRL_HOPF_TEST_BT] = 0, tau[WHIRL_HOPF_TEST_BT] = 1.0;
   if (n < 3 || h->map) return 0;
   if (whirl_eig_compute(h->eig, h->A, h->er, h->ei) != WHIRL_OK) return 0;

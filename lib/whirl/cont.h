@@ -52,8 +52,16 @@ typedef enum whirl_point_type {
   WHIRL_PT_MG = 12,     /* "MG" merge: an isolated branch joins another
                            branch (two branches cross; extremum of the second
                            parameter along the fold curve) */
-  WHIRL_PT_GH = 13      /* "GH" generalised Hopf (Bautin): the first Lyapunov
+  WHIRL_PT_GH = 13,     /* "GH" generalised Hopf (Bautin): the first Lyapunov
                            coefficient is 0 on a Hopf curve */
+  /* strong resonances on a Neimark-Sacker curve of a map: the multipliers
+   * e^{+-i theta} at theta = 0 (1:1), pi (1:2), 2 pi/3 (1:3), pi/2 (1:4)
+   * (Kuznetsov, Elements of Applied Bifurcation Theory, 3rd ed. 2004, §9.5) */
+  WHIRL_PT_R1 = 14,     /* "R1" 1:1 resonance */
+  WHIRL_PT_R2 = 15,     /* "R2" 1:2 resonance */
+  WHIRL_PT_R3 = 16,     /* "R3" 1:3 resonance */
+  WHIRL_PT_R4 = 17,     /* "R4" 1:4 resonance */
+  WHIRL_PT_NTYPES = 18  /* the number of point types */
 } whirl_point_type;
 
 WHIRL_API const char *whirl_point_type_name(int type);

@@ -26,9 +26,12 @@ extern "C" {
 #endif
 
 /* Test functions: BT (kappa = omega^2 through 0), ZH (a real eigenvalue
- * through 0), GH (the first Lyapunov coefficient through 0). */
+ * through 0), GH (the first Lyapunov coefficient through 0); on a map's
+ * Neimark-Sacker curve, kappa = 2 (1 - cos theta) through 0, 4, 3, 2: the
+ * strong resonances R1, R2, R3, R4 (AUTO's, which its hen demo stops at). */
 enum { WHIRL_HOPF_TEST_BT = 0, WHIRL_HOPF_TEST_ZH = 1, WHIRL_HOPF_TEST_GH = 2,
-       WHIRL_HOPF_NTEST = 3 };
+       WHIRL_HOPF_TEST_R1 = 3, WHIRL_HOPF_TEST_R2 = 4, WHIRL_HOPF_TEST_R3 = 5,
+       WHIRL_HOPF_TEST_R4 = 6, WHIRL_HOPF_NTEST = 7 };
 
 typedef struct whirl_hopf whirl_hopf;
 

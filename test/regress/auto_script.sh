@@ -97,6 +97,21 @@ rc=$?
 [ $rc = 0 ] && [ "$(printf '%s\n' "$out2" | grep -c '^3\.')" = 3 ]; check $? "a second run into the same OUT (exit $rc)"
 [ "$(stat -c %Y "$tmp/lg.out/runs/lg.so")" = "$t0" ]; check $? "the unchanged plug-in is not compiled again"
 
+# a restart with a larger NPAR (AUTO: NPAR = MAX(NPARR, NPAR)): PAR(2) as
+# the model has it, 0 (STPNT leaves it), beside the label's mu
+cat > "$tmp/lg/np.auto" <<'A'
+r = run(e='lg', c='lg')
+r2 = run(r('UZ1'), ICP=['mu', 2], NMX=5, UZSTOP={})
+print('np %s %.10g' % (len(r2()), r2()[-1]['PAR(2)']))
+A
+out=$(cd "$tmp" && "$WHIRL" auto lg --script=lg/np.auto --quiet --out=np.out 2>&1)
+printf '%s\n' "$out" | grep -q '^np [1-9][0-9]* 0$'; check $? "a restart with a larger NPAR: the new parameter the model's ($(printf '%s' "$out" | tail -1))"
+# AUTO's MXBF is 10 where a constants file has none: switching at the BP
+# of the fixed points (mu = 1), both ways
+sed '/MXBF/s/MXBF= *-1, //' "$tmp/lg/c.lg" > "$tmp/lg/c.lg2"
+(cd "$tmp" && "$WHIRL" auto lg lg --runs=lg2 --quiet --out=mx.out > /dev/null 2>&1)
+[ -f "$tmp/mx.out/b.lg2.bif1" ] && [ -f "$tmp/mx.out/b.lg2.bif2" ]; check $? "no MXBF in the constants: AUTO's 10, the BP's branch both ways"
+
 # 2. bad input
 bad() { # script text, what the message must name, test name
   printf '%s\n' "$1" > "$tmp/lg/bad.auto"

@@ -328,6 +328,37 @@ static int henon_rhs(double t, const double *u, const double *p, double *f,
   return 0;
 }
 
+/* The strong resonances on the Hénon map's Neimark–Sacker locus (β = −1,
+ * κ = 2 √(1 + α)): κ = 2 (1:4, θ = π/2) at α = 0, κ = 3 (1:3) at
+ * α = 5/4, κ = 4 (1:2) at α = 3 (closed forms; AUTO's hen demo labels
+ * R4, R3, R2 there), each labelled once, both ways from the TR at α = 1. */
+static void henon_resonances(whirl_hopf *h, const double *Z, const double *p) {
+  static const int type[3] = {WHIRL_PT_R4, WHIRL_PT_R3, WHIRL_PT_R2};
+  static const double alpha[3] = {0.0, 1.25, 3.0};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.icp = 0;
+  o.ds = 0.02;
+  o.ds_max = 0.1;
+  o.p_min = -0.5;
+  o.p_max = 3.5;
+  whirl_branch *up = run(whirl_hopf_system(h), &o, Z, p, +1, NULL);
+  whirl_branch *down = run(whirl_hopf_system(h), &o, Z, p, -1, NULL);
+  for (int r = 0; r < 3; ++r) {
+    size_t n = 0;
+    double dev = INFINITY;
+    for (int side = 0; side < 2; ++side) {
+      const whirl_branch *b = side ? down : up;
+      for (size_t i = 0; b && i < b->len; ++i)
+        if (b->pts[i].type == type[r]) n++, dev = fabs(b->pts[i].p[0] - alpha[r]);
+    }
+    ok(n == 1 && dev < 1e-8, "Henon map: %s on the Neimark-Sacker locus at alpha = %g "
+       "(%zu labelled, |dalpha| %.2g)", whirl_point_type_name(type[r]), alpha[r], n, dev);
+  }
+  whirl_branch_free(up);
+  whirl_branch_free(down);
+}
+
 /* The Hénon map's Neimark–Sacker locus from its TR: β = −1 for every α
  * while the pair is complex, where αx = √(1 + α) − 1, so cos θ = −αx and
  * κ = 2 (1 − cos θ) = 2 √(1 + α) (closed forms). */
@@ -358,6 +389,7 @@ static void henon_ns_locus(const whirl_system *s, const whirl_branch_point *tr) 
      "Henon map: Neimark-Sacker locus in alpha on beta = -1, kappa = 2 sqrt(1 + alpha) "
      "(%zu points, max dev %.2g)", b ? b->len : 0, dev);
   whirl_branch_free(b);
+  henon_resonances(h, Z, p);
   whirl_hopf_free(h);
 }
 
