@@ -340,9 +340,11 @@ static int fits(const auto_run *r, const whirl_solution *S) {
   whirl_auto_constants_int(r->ac, "IPS", &ips);
   whirl_auto_constants_int(r->ac, "ISW", &isw);
   /* a point of a locus restarts that locus (ISW = 2) */
-  const char *t = abs(isw) == 2 && S->icp2 >= 0 && S->locus[0] ? S->locus : S->ty;
+  const char *t = (abs(isw) == 2 || isw == 3) && S->icp2 >= 0 && S->locus[0] ? S->locus : S->ty;
   if (ips == 1)
-    return S->kind == WHIRL_SOL_EQ && (isw == 2 ? !strcmp(t, "LP") || !strcmp(t, "HB")
+    return S->kind == WHIRL_SOL_EQ && (isw == 2 ? !strcmp(t, "LP") || !strcmp(t, "HB") ||
+                                                      !strcmp(t, "BP")
+                                       : isw == 3 ? !strcmp(t, "BP")
                                        : isw == -1 ? !strcmp(t, "BP") : 1);
   if (ips == -1) /* fixed points of a map: its loci; switching at a BP or a PD */
     return S->kind == WHIRL_SOL_EQ && (isw == 2 ? !strcmp(t, "LP") || !strcmp(t, "PD") ||
@@ -565,7 +567,8 @@ static int first_branch(const auto_job *J, size_t i) {
   for (size_t m = 0; r->src >= 0 && m < J->run[r->src].nlabs && !L; m++)
     if (J->run[r->src].labs[m].whirl == want) L = &J->run[r->src].labs[m];
   if (isw < 0 || r->fresh || !L) return mbr + 1;
-  if ((abs(isw) == 2 && abs(L->type) < 10) || (ips == 2 && L->type == 3)) return L->label;
+  if (((abs(isw) == 2 || isw == 3) && abs(L->type) < 10) || (ips == 2 && L->type == 3))
+    return L->label;
   return L->br;
 }
 

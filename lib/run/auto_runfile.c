@@ -144,9 +144,9 @@ static int problem(ctx *c) {
                                      "IPS = %d: whirl runs AUTO's equilibria (1), periodic "
                                      "orbits (2), boundary-value problems (4) and fixed "
                                      "points of maps (-1) only", ips);
-  if (isw != 1 && isw != -1 && isw != 2)
+  if (isw != 1 && isw != -1 && isw != 2 && isw != 3)
     return whirl_auto_constants_fail(c->ac, whirl_auto_constants_line(c->ac, "ISW"),
-                                     "ISW = %d: whirl has ISW = 1, -1 and 2 only", isw);
+                                     "ISW = %d: whirl has ISW = 1, -1, 2 and 3 only", isw);
   c->ips = ips;
   put(c->t, "IPS    = %d\nISW    = %d\n", ips, isw);
   /* AUTO's default JAC is 0 (finite differences), whirl's 1: always said */

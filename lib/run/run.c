@@ -98,6 +98,8 @@ static void base_of(const branch_spec *b, const double *Z, const double *p,
     whirl_fold_params(b->fold, Z, p, pfull);
   else if (b->hopf)
     whirl_hopf_params(b->hopf, Z, p, pfull);
+  else if (b->bploc)
+    whirl_bploc_params(b->bploc, Z, p, pfull);
   else if (b->kind == WHIRL_SOL_COLLOC)
     whirl_colloc_params(b->colloc, Z, p, pfull); /* a fixed period's parameter */
   else if (b->kind == WHIRL_SOL_BVP)
@@ -105,7 +107,8 @@ static void base_of(const branch_spec *b, const double *Z, const double *p,
   else
     memcpy(pfull, p, b->sys->npar * sizeof *pfull);
   /* the model's derived parameters (AUTO's PVLS) at an equilibrium */
-  if (b->kind == WHIRL_SOL_EQ && !b->fold && !b->hopf && b->model && b->model->pvls)
+  if (b->kind == WHIRL_SOL_EQ && !b->fold && !b->hopf && !b->bploc && b->model &&
+      b->model->pvls)
     b->model->pvls(Z, pfull, b->model->problem.data);
 }
 
@@ -334,6 +337,8 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
              whirl_fold_point_type(b->fold) == WHIRL_PT_PD ? "PD" : "LP");
   else if (b->hopf)
     snprintf(so.locus, sizeof so.locus, "%s", R->s->ips == WHIRL_IPS_MAP ? "TR" : "HB");
+  else if (b->bploc)
+    snprintf(so.locus, sizeof so.locus, "BP");
   so.npar = R->npar;
   so.nx = b->nb;
   so.par = pfull;
@@ -354,7 +359,7 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
    * times it, so it is the motion times the sign of this run's DS, and a
    * restart moves along DS times it (run_tangent_start) */
   double *tan = NULL;
-  if (!b->fold && !b->hopf && pt->t && !fixed_T) {
+  if (!b->fold && !b->hopf && !b->bploc && pt->t && !fixed_T) {
     const double sg = (b->dir_sign ? b->dir_sign : s->ds < 0 ? -1 : 1) < 0 ? -1.0 : 1.0;
     if (!(tan = malloc((b->nb + 1) * sizeof *tan))) {
       free(xT);
@@ -542,7 +547,8 @@ int run_branch(run_ctx *R, branch_spec *b) {
   R->branch++;
   fprintf(R->log, "branch %d: %s, continuation in %s (%s)\n", R->branch,
           b->sys->name ? b->sys->name : "?", R->pnames[b->icp],
-          b->fold ? "fold locus" : b->hopf ? "Hopf locus" : "one parameter");
+          b->fold ? "fold locus" : b->hopf ? "Hopf locus" : b->bploc ? "branch-point locus"
+                                                                      : "one parameter");
   int counts[WHIRL_PT_NTYPES] = {0};
   int stop = 0;
   size_t npts = 0;
@@ -672,6 +678,7 @@ typedef struct run_objects {
   whirl_hbm *hbm;
   whirl_fold *fold;
   whirl_hopf *hopf;
+  whirl_bploc *bploc;
   double *X, *D, *Z, *xs;
   whirl_solution sol;
   int have_sol;
@@ -685,6 +692,7 @@ static void objects_free(run_objects *O) {
   whirl_hbm_free(O->hbm);
   whirl_fold_free(O->fold);
   whirl_hopf_free(O->hopf);
+  whirl_bploc_free(O->bploc);
   free(O->X);
   free(O->D);
   free(O->Z);
@@ -765,8 +773,34 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
     }
     b->hopf = O->hopf;
     b->sys = whirl_hopf_system(O->hopf);
+  } else if (so->kind == WHIRL_SOL_EQ && R->s->ips != WHIRL_IPS_MAP && !strcmp(ty, "BP")) {
+    /* a locus of branch points: ISW = 2 symmetric, ISW = 3 generic (a
+     * third parameter, the ICP after the continued one) */
+    const int generic = R->s->isw == 3;
+    int extra = -1;
+    for (size_t i = 0; generic && i < R->nicp; i++)
+      if (R->icp[i] != q && R->icp[i] != other) {
+        extra = R->icp[i];
+        break;
+      }
+    if (generic && extra < 0) {
+      run_fail(R, WHIRL_RK_ICP, "ICP: ISW = 3 (a generic branch-point locus) from the BP at "
+               "label %d needs '%s' and two more parameters", so->label, R->pnames[q]);
+      return -2;
+    }
+    O->bploc = whirl_bploc_alloc(base, (size_t)q, generic, (size_t)(extra < 0 ? 0 : extra),
+                                 err, sizeof err);
+    if (!O->bploc) goto fail_alloc;
+    O->Z = malloc((whirl_bploc_size(O->bploc) + 1) * sizeof *O->Z);
+    if (!O->Z) return -1;
+    if (whirl_bploc_init(O->bploc, x, p, O->Z) != WHIRL_OK) {
+      run_say(R, "branch-point locus: %s", whirl_bploc_errmsg(O->bploc));
+      return -1;
+    }
+    b->bploc = O->bploc;
+    b->sys = whirl_bploc_system(O->bploc);
   } else {
-    run_fail(R, WHIRL_RK_ISW, "ISW = 2 needs an LP (any problem), an HB of "
+    run_fail(R, WHIRL_RK_ISW, "ISW = 2 needs an LP (any problem), an HB or BP of "
              "equilibria, a PD or TR of a map, or a PD of periodic orbits by collocation; label %d is "
              "%s%s (loci of %s are not available)",
              so->label, so->ty, so->kind == WHIRL_SOL_EQ ? "" : " of periodic orbits",
@@ -1092,7 +1126,7 @@ static int switch_or_locus(run_ctx *R, run_objects *O, branch_spec *b) {
                "of periodic orbits by collocation; label %d is %s", so->label, so->ty);
       return -2;
     }
-  } else if (restart && s->isw == 2) {
+  } else if (restart && (s->isw == 2 || s->isw == 3)) {
     int rc = locus(R, O, b, b->sys, b->x0, p0);
     if (rc) return rc;
     b->ds_scale = 1.0;

@@ -18,6 +18,7 @@
 #include <whirl/fold.h>
 #include <whirl/hbm.h>
 #include <whirl/hopf.h>
+#include <whirl/bploc.h>
 #include <whirl/model.h>
 #include <whirl/periodic.h>
 #include "runfile_impl.h"
@@ -154,6 +155,7 @@ typedef struct branch_spec {
   whirl_bvp *bvp;
   whirl_fold *fold;        /* locus layers (borrowed), or NULL */
   whirl_hopf *hopf;
+  whirl_bploc *bploc;
   const whirl_system *sys; /* the system continued */
   size_t nb;               /* unknowns of the base system */
   int icp;                 /* core's continuation parameter */

@@ -566,9 +566,10 @@ static const char *check_int(whirl_run_key k, int x) {
                               "problems, not supported)"
                             : NULL;
     case WHIRL_RK_ISW:
-      return x != 1 && x != -1 && x != 2
-                 ? "must be 1 (same branch), -1 (switch at BP/PD) or 2 "
-                   "(two-parameter continuation from LP/HB)"
+      return x != 1 && x != -1 && x != 2 && x != 3
+                 ? "must be 1 (same branch), -1 (switch at BP/PD), 2 "
+                   "(two-parameter continuation from LP/HB/PD/TR, or a symmetric BP) "
+                   "or 3 (a generic BP's locus in three parameters)"
                  : NULL;
     case WHIRL_RK_NTST: return x < 2 || x > 100000 ? "must be in [2, 100000]" : NULL;
     case WHIRL_RK_NCOL: return x < 2 || x > 7 ? "must be in [2, 7]" : NULL;
@@ -1306,6 +1307,10 @@ int whirl_runfile_check(whirl_runfile *rf) {
   if (s->isw == 2 && s->nicp < 2)
     return fail(rf, where_of(rf, WHIRL_RK_ICP, w, sizeof w),
                 "ISW = 2 (two-parameter continuation) needs two parameters "
+                "in ICP");
+  if (s->isw == 3 && s->nicp < 3)
+    return fail(rf, where_of(rf, WHIRL_RK_ICP, w, sizeof w),
+                "ISW = 3 (a generic branch point's locus) needs three parameters "
                 "in ICP");
   if (s->ndiscover || s->nbox || rf->line[WHIRL_RK_DISCOVER_STARTS] ||
       rf->line[WHIRL_RK_DISCOVER_SEED] || rf->line[WHIRL_RK_DISCOVER_SETTLE]) {

@@ -232,8 +232,9 @@ static int rd_lab(reader *r, size_t npar, whirl_solution *s) {
     char loc[8];
     if (lab_word(r, &p, "LOCUS", loc, sizeof loc)) return -1;
     if (s->icp2 < 0 ||
-        (strcmp(loc, "LP") && strcmp(loc, "PD") && strcmp(loc, "HB") && strcmp(loc, "TR")))
-      return bad(r, "label %d: LOCUS '%s' (LP, PD, HB or TR, on a locus: ICP2 > 0)",
+        (strcmp(loc, "LP") && strcmp(loc, "PD") && strcmp(loc, "HB") && strcmp(loc, "TR") &&
+         strcmp(loc, "BP")))
+      return bad(r, "label %d: LOCUS '%s' (LP, PD, HB, TR or BP, on a locus: ICP2 > 0)",
                  s->label, shown(loc, b));
     memcpy(s->locus, loc, 3);
   }

@@ -21,6 +21,7 @@
 #include <whirl/periodic.h>
 #include <whirl/fold.h>
 #include <whirl/hopf.h>
+#include <whirl/bploc.h>
 #include <whirl/model.h>
 #include <whirl/runfile.h>
 #include <whirl/solution.h>

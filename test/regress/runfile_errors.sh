@@ -261,7 +261,7 @@ c 2 "A0 >= A1" "$F:4: A0 = 5 must be below A1 = 1$" "$B"'A0 = 5\nA1 = 1\n'
 c 2 "NCOL out of range" "$F:3: NCOL = 8: must be in \[2, 7\]$" "$B"'NCOL = 8\n'
 c 2 "JAC out of range" "$F:3: JAC = 2: must be 0" "$B"'JAC = 2\n'
 c 2 "ISP out of range (4)" "$F:3: ISP = 4: must be 0, 1, 2 or 3" "$B"'ISP = 4\n'
-c 2 "ISW out of range" "$F:3: ISW = 3: must be 1" "$B"'ISW = 3\n'
+c 2 "ISW out of range" "$F:3: ISW = 4: must be 1" "$B"'ISW = 4\n'
 c 2 "IPS = 9 unsupported" "$F:3: IPS = 9 is not supported" "$B"'IPS = 9\n'
 c 2 "IPS = 4 with too few conditions" "$F: IPS = 4: NBC \\+ NINT = 0 is less than NDIM = 2" "$B"'IPS = 4\n'
 c 2 "unknown METHOD" "$F:3: METHOD: ${q}rk4$q is not a method" "$B"'METHOD = rk4\n'
@@ -322,6 +322,7 @@ c 2 "S not a whirl output (a file)" "$F:(3|4): IRS: cannot open plain\.out/solut
 c 2 "IRS label not present" "$F:3: IRS: ab-1\.out/solutions: there is no label 99$" "$B"'IRS = 99\nS = ab-1.out\n'
 c 2 "IRS type count not present" "$F:3: IRS: ab-1\.out/solutions: there is no LP number 1" "$B"'IRS = LP1\nS = ab-1.out\n'
 c 2 "ISW = 2 with one ICP" "$F:2: ISW = 2 \(two-parameter continuation\) needs two parameters in ICP$" "$B"'IRS = 2\nS = ab-1.out\nISW = 2\n'
+c 2 "ISW = 3 with one ICP" "$F:2: ISW = 3 \(a generic branch point's locus\) needs three parameters in ICP$" "$B"'IRS = 2\nS = ab-1.out\nISW = 3\n'
 c 2 "ISW = -1 at an HB label" "$F:5: ISW = -1 switches at a BP" "$B"'IRS = 2\nS = ab-1.out\nISW = -1\n'
 # restarts from solutions that do not fit the model (no read past a stored
 # vector): every block read is checked for itself, the label found against

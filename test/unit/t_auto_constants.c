@@ -190,7 +190,7 @@ static void runfile(void) {
       {"NDIM=1, ICP=[1]\n\nIRS = 3\n", "c.t:3: IRS = 3: no earlier run to restart from", NULL},
       {"NDIM=1\nICP=['foo']\n", "c.t:2: ICP: 'foo' is neither in parnames nor PERIOD", NULL},
       {"NDIM=1\nICP=[7]\n", "c.t:2: ICP: PAR(7) beyond NPAR = 3", NULL},
-      {"NDIM=1\nICP=[1], ISW = 3\n", "c.t:2: ISW = 3: whirl has ISW = 1, -1 and 2 only", NULL},
+      {"NDIM=1\nICP=[1], ISW = 4\n", "c.t:2: ISW = 4: whirl has ISW = 1, -1, 2 and 3 only", NULL},
       {"NDIM=1, ICP=[1]\nU = {2: 0}\n", "c.t:2: U: U(2) beyond NDIM = 1", NULL},
   };
   for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
