@@ -65,14 +65,15 @@ class Solution:
     """A labelled point: its b. row, its s. block, the run it came from
     (whirl's run id and label there, for restarts) and its constants."""
 
-    def __init__(self, run_id, wlab, row, block, consts, e):
+    def __init__(self, run_id, wlab, row, block, consts, e, columns=()):
         self.run_id, self.wlab = run_id, wlab
         self.row, self.block = row, list(block)
         self.c, self.e = list(consts), e
+        self.columns = list(columns)  # the b. file's value columns (PAR(1), L2-NORM, ...)
 
     def copy(self):
         return Solution(self.run_id, self.wlab, self.row, self.block,
-                        self.c, self.e)
+                        self.c, self.e, self.columns)
 
     @property
     def ty(self):
@@ -129,6 +130,9 @@ class Solution:
         if key in uns or m:
             i = uns[key] if key in uns else int(m.group(1))
             return float(self.block[1].split()[i].replace('D', 'E'))
+        if key in self.columns:  # a column of the b. row: 'L2-NORM', 'MAX U(1)'
+            k = self.columns.index(key)
+            return float(self.row[19 + 19 * k:38 + 19 * k].replace('D', 'E'))
         raise ScriptError('%r: no parameter or state named %r' % (self, key))
 
     def relabel(self, lab):
@@ -414,13 +418,16 @@ class Runner:
         out, k = [], 0
         for header, rows in _read_b(bpath):
             brows = []
+            names = header[-1][19:] if header else ''
+            columns = [names[i:i + 19].strip() for i in range(0, len(names), 19)]
             for row in rows:
                 wlab = wlabs[k] if k < len(wlabs) else 0
                 k += 1
                 lab = int(row[14:19])
                 sol = None
                 if lab and wlab:
-                    sol = Solution(run_id, wlab, row, blocks.get(lab, []), consts, e)
+                    sol = Solution(run_id, wlab, row, blocks.get(lab, []), consts, e,
+                                   columns)
                     self.all_sols.write(''.join(l + '\n' for l in sol.block))
                 brows.append((row, sol))
                 self.all_runs.write(row + '\n')

@@ -118,14 +118,18 @@ static int start_from_label(run_ctx *R, const whirl_solution *so, whirl_bvp *bvp
   const size_t nb = whirl_bvp_size(bvp);
   *tan = so->kind == WHIRL_SOL_BVP && so->tan && same_free_parameters(so, R->icp[0], o);
   char err[512];
-  if (so->kind != WHIRL_SOL_BVP) {
+  const int orbit = so->kind == WHIRL_SOL_COLLOC && (size_t)so->nstate == R->n;
+  if (so->kind != WHIRL_SOL_BVP && !orbit) {
     run_fail(R, WHIRL_RK_IRS, "IRS: label %d is %s; IPS = 4 restarts from a "
-             "boundary-value solution", so->label,
-             so->kind == WHIRL_SOL_EQ ? "an equilibrium" : "a periodic orbit");
+             "boundary-value solution or a periodic orbit by collocation", so->label,
+             so->kind == WHIRL_SOL_EQ ? "an equilibrium" : "an orbit of another kind");
     return -2;
   }
+  /* an orbit is a solution on [0, 1] like any other (AUTO's ph1, pcl): its
+   * period is AUTO's PAR(11), which the boundary conditions may free */
+  if (orbit && so->aut && R->npar >= 11) R->par[10] = so->x[so->nx - 1];
   if ((size_t)so->ntst == o->ntst && (size_t)so->ncol == o->ncol) {
-    memcpy(X, so->x, (so->nx - (size_t)so->nfree) * sizeof *X);
+    memcpy(X, so->x, R->n * (o->ntst * o->ncol + 1) * sizeof *X);
     if (*tan) memcpy(D, so->tan, (nb + 1) * sizeof *D);
     whirl_bvp_set_mesh(bvp, so->mesh);
     return 0;

@@ -112,6 +112,67 @@ sed '/MXBF/s/MXBF= *-1, //' "$tmp/lg/c.lg" > "$tmp/lg/c.lg2"
 (cd "$tmp" && "$WHIRL" auto lg lg --runs=lg2 --quiet --out=mx.out > /dev/null 2>&1)
 [ -f "$tmp/mx.out/b.lg2.bif1" ] && [ -f "$tmp/mx.out/b.lg2.bif2" ]; check $? "no MXBF in the constants: AUTO's 10, the BP's branch both ways"
 
+# an orbit continued as a boundary-value problem (AUTO's ph1, pcl): the
+# lambda-omega system u1' = a u1 - u2 - u1 r^2, u2' = u1 + a u2 - u2 r^2,
+# whose orbits are circles of radius sqrt(a) and period 2 pi; its orbit
+# at a = 0.25 (IPS = 2) restarts IPS = 4 (periodic boundary conditions,
+# AUTO's integral phase condition, the period PAR(11) free), at a = 0.49
+# its L2-NORM is the radius 0.7 and PAR(11) is 2 pi (closed forms)
+mkdir "$tmp/lw"
+cat > "$tmp/lw/lw.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*), R2, T
+      R2 = U(1)**2 + U(2)**2
+      T = 1
+      IF (PAR(3) .NE. 0) T = PAR(11)
+      F(1) = T * (PAR(1) * U(1) - U(2) - U(1) * R2)
+      F(2) = T * (U(1) + PAR(1) * U(2) - U(2) * R2)
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = -0.5
+      PAR(3) = 0
+      U(1) = 0
+      U(2) = 0
+      END SUBROUTINE STPNT
+      SUBROUTINE BCND(NDIM,PAR,ICP,NBC,U0,U1,FB,IJAC,DBC)
+      IMPLICIT NONE
+      INTEGER NDIM, ICP(*), NBC, IJAC
+      DOUBLE PRECISION PAR(*), U0(NDIM), U1(NDIM), FB(NBC), DBC(NBC,*)
+      FB(1) = U0(1) - U1(1)
+      FB(2) = U0(2) - U1(2)
+      END SUBROUTINE BCND
+      SUBROUTINE ICND(NDIM,PAR,ICP,NINT,U,UOLD,UDOT,UPOLD,FI,IJAC,DINT)
+      IMPLICIT NONE
+      INTEGER NDIM, ICP(*), NINT, IJAC
+      DOUBLE PRECISION PAR(*), U(NDIM), UOLD(NDIM), UDOT(NDIM), UPOLD(NDIM)
+      DOUBLE PRECISION FI(NINT), DINT(NINT,*)
+      FI(1) = U(1) * UPOLD(1) + U(2) * UPOLD(2)
+      END SUBROUTINE ICND
+F
+cat > "$tmp/lw/c.lw" <<'C'
+NDIM = 2, IPS = 1, IRS = 0, ILP = 1, ICP = [1], NTST = 20, NCOL = 4, IAD = 3
+ISP = 1, ISW = 1, NMX = 200, NPR = 0, MXBF = 0, JAC = 0, NPAR = 11
+EPSL = 1e-10, EPSU = 1e-10, EPSS = 1e-8, DS = 0.01, DSMIN = 1e-5, DSMAX = 0.05
+UZSTOP = {1: 0.3}
+C
+cat > "$tmp/lw/lw.auto" <<'A'
+r1 = run(e='lw', c='lw')
+r2 = run(r1('HB1'), IPS=2, ICP=[1, 11], UZR={1: 0.25})
+r3 = run(r2('UZ1'), IPS=4, NBC=2, NINT=1, ICP=[1, 11], PAR={3: 1}, UZR={1: 0.49},
+         UZSTOP={1: 0.5})
+s = r3('UZ1')
+print('bvp %.10f %.10f %.10f' % (s['PAR(1)'], s['L2-NORM'], s['PAR(11)']))
+A
+out=$(cd "$tmp" && "$WHIRL" auto lw --script --quiet --out=lw.out 2>&1)
+set -- $(printf '%s\n' "$out" | sed -n 's/^bvp //p')
+near "${1:-0}" 0.49 1e-9 && near "${2:-0}" 0.7 1e-6 && near "${3:-0}" 6.283185307179586 1e-6
+check $? "an orbit restarted as a boundary-value problem: a ${1:-?}, radius ${2:-?} (0.7), PAR(11) ${3:-?} (2 pi)$( [ -n "${1:-}" ] || printf ': %s' "$(printf '%s' "$out" | tail -1)")"
+
 # 2. bad input
 bad() { # script text, what the message must name, test name
   printf '%s\n' "$1" > "$tmp/lg/bad.auto"
