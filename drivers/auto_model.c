@@ -9,9 +9,10 @@
  * is called once, after STPNT, as AUTO does before the first step (some
  * FUNCs rely on data it sets up: demos brc, brf), and at every point of
  * equilibria, the parameters it sets shown and tested by UZR/UZSTOP (the
- * model's pvls; demo pp3 stops at its PAR(9) = |U(1)|); on orbits its
- * output is not used yet; GETP, the utility PVLS calls, is AUTO's for
- * equilibria (NRM |U(i)|, INT, MAX, MIN, BV0, BV1 U(i)), and
+ * model's pvls; demo pp3 stops at its PAR(9) = |U(1)|), and on solutions
+ * by collocation (orbits, boundary-value problems: the model's
+ * pvls_solution); GETP, the utility PVLS calls, is AUTO's (NRM, INT, MAX,
+ * MIN, BV0, BV1 of U(i) at an equilibrium or over a solution), and
  * GE, AUTO's linear solver that some FUNCs call (demos brc, brf), is
  * written here afresh (Gaussian elimination).  The
  * adapter is generated here and compiled with the user's file; it is
@@ -67,18 +68,6 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "void icnd_(const int *, const double *, const int *, const int *, const double *,\n"
     "           const double *, const double *, const double *, double *, const int *,\n"
     "           double *) __attribute__((weak));\n"
-    "/* PVLS's utility GETP(CODE, IC, U) for equilibria, as AUTO's (support.f90):\n"
-    " * NRM |U(IC)|; INT, MAX, MIN, BV0, BV1 U(IC); NDIM for NDI; else 0 */\n"
-    "double getp_(const char *c, const int *i, const double *u, size_t l) {\n"
-    "  char k[4] = {0};\n"
-    "  for (size_t j = 0; j < 3 && j < l; j++) k[j] = (char)(c[j] >= 'a' && c[j] <= 'z' ? c[j] - 32 : c[j]);\n"
-    "  const int ic = *i;\n"
-    "  if (!strcmp(k, \"NDI\") || !strcmp(k, \"NDX\")) return N;\n"
-    "  if (ic < 1 || ic > N) return 0.0;\n"
-    "  if (!strcmp(k, \"NRM\")) return __builtin_fabs(u[ic - 1]);\n"
-    "  if (!strcmp(k, \"INT\") || !strcmp(k, \"MAX\") || !strcmp(k, \"MIN\") ||\n"
-    "      !strcmp(k, \"BV0\") || !strcmp(k, \"BV1\")) return u[ic - 1];\n"
-    "  return 0.0;\n}\n"
     "/* AUTO's GE(IAM, N, M1A, A, NRHS, NDX, U, M1F, F, IR, IC, DET): U = A^-1 F\n"
     " * for NRHS columns (A(M1A,N), U(NDX,NRHS), F(M1F,NRHS), column-major) by\n"
     " * Gaussian elimination with partial pivoting; DET = det A.  A and F are\n"
@@ -128,6 +117,43 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "  if (!pvls_) return 0;\n"
     "  memcpy(par, p, NP * sizeof *p);\n  pvls_(&n, x, par);\n"
     "  memcpy(p, par, NP * sizeof *p);\n  return 0;\n}\n", f);
+  fputs(
+    "/* PVLS's utility GETP(CODE, IC, U), as AUTO's (support.f90): at an\n"
+    " * equilibrium NRM |U(IC)|, INT, MAX, MIN, BV0, BV1 U(IC); on a solution\n"
+    " * by collocation (sol_u: node values, sol_w: quadrature weights) NRM\n"
+    " * the L2 norm and INT the integral of U(IC) over [0, 1], MAX and MIN\n"
+    " * over the nodes, BV0 and BV1 at t = 0 and 1; NDIM for NDI; else 0 */\n"
+    "static const double *sol_u, *sol_w;\nstatic size_t sol_nn;\n"
+    "double getp_(const char *c, const int *i, const double *u, size_t l) {\n"
+    "  char k[4] = {0};\n"
+    "  for (size_t j = 0; j < 3 && j < l; j++) k[j] = (char)(c[j] >= 'a' && c[j] <= 'z' ? c[j] - 32 : c[j]);\n"
+    "  const int ic = *i;\n"
+    "  if (!strcmp(k, \"NDI\") || !strcmp(k, \"NDX\")) return N;\n"
+    "  if (ic < 1 || ic > N) return 0.0;\n"
+    "  if (sol_u) {\n"
+    "    const double *v = sol_u + ic - 1;\n    double s = 0, m = v[0];\n"
+    "    if (!strcmp(k, \"BV0\")) return v[0];\n"
+    "    if (!strcmp(k, \"BV1\")) return v[N * (sol_nn - 1)];\n"
+    "    for (size_t j = 0; j < sol_nn; j++) {\n"
+    "      const double x = v[N * j];\n"
+    "      if (!strcmp(k, \"MAX\") ? x > m : !strcmp(k, \"MIN\") && x < m) m = x;\n"
+    "      s += sol_w[j] * (!strcmp(k, \"NRM\") ? x * x : x);\n    }\n"
+    "    if (!strcmp(k, \"MAX\") || !strcmp(k, \"MIN\")) return m;\n"
+    "    if (!strcmp(k, \"INT\")) return s;\n"
+    "    if (!strcmp(k, \"NRM\")) return __builtin_sqrt(s);\n"
+    "    return 0.0;\n  }\n"
+    "  if (!strcmp(k, \"NRM\")) return __builtin_fabs(u[ic - 1]);\n"
+    "  if (!strcmp(k, \"INT\") || !strcmp(k, \"MAX\") || !strcmp(k, \"MIN\") ||\n"
+    "      !strcmp(k, \"BV0\") || !strcmp(k, \"BV1\")) return u[ic - 1];\n"
+    "  return 0.0;\n}\n"
+    "/* PVLS on a solution by collocation: U is its node values, node-major,\n"
+    " * which is AUTO's UPS(NDIM*NCOL, NTST+1) in memory */\n"
+    "static int pvls_sol(const double *u, size_t nn, const double *w, double *p, void *d) {\n"
+    "  double par[NPX] = {0};\n  const int n = N;\n  (void)d;\n"
+    "  if (!pvls_) return 0;\n"
+    "  memcpy(par, p, NP * sizeof *p);\n"
+    "  sol_u = u, sol_w = w, sol_nn = nn;\n  pvls_(&n, u, par);\n  sol_u = sol_w = NULL;\n"
+    "  memcpy(p, par, NP * sizeof *p);\n  return 0;\n}\n", f);
   /* literals of at most ISO C's 4095 characters */
   fputs(
     "/* BCND and ICND (boundary-value problems, IPS = 4), IJAC = 0: whirl\n"
@@ -153,7 +179,7 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "  .problem = {.name = \"%s\", .n = N, .npar = NP, .rhs = rhs, .jac_x = jac,\n"
     "              .autonomous = 1, .x_names = x_names, .p_names = p_names},\n"
     "  .par0 = par0, .u0 = u0, .stpnt = stpnt, .forcing_param = -1, .pvls = pvls,\n"
-    "  .bcnd = bcnd, .icnd = icnd,\n"
+    "  .bcnd = bcnd, .icnd = icnd, .pvls_solution = pvls_sol,\n"
     "  .description = \"AUTO-07p equations %s\"};\n"
     "/* par0 and u0 from STPNT at T = 0; the period of its orbit, PAR(11) */\n"
     "__attribute__((constructor)) static void init(void) {\n"

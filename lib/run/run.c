@@ -92,6 +92,20 @@ double run_now(void) {
 /* ---- one branch --------------------------------------------------------- */
 
 
+/* AUTO's PVLS on a collocation solution Z: its node values with the
+ * weights of its quadrature (the system's norm weights: the integral over
+ * [0, 1] of each node value). */
+static void pvls_on_solution(const branch_spec *b, const double *Z, double *pfull) {
+  const size_t n = b->model->problem.n, nnodes = b->nnodes;
+  double *q = malloc(b->nb * sizeof *q), *w = malloc((nnodes ? nnodes : 1) * sizeof *w);
+  if (nnodes && q && w && b->sys->norm_weights(q, b->sys->data) == 0) {
+    for (size_t j = 0; j < nnodes; j++) w[j] = q[n * j]; /* then the period, free parameters */
+    b->model->pvls_solution(Z, nnodes, w, pfull, b->model->problem.data);
+  }
+  free(q);
+  free(w);
+}
+
 static void base_of(const branch_spec *b, const double *Z, const double *p,
                     double *pfull) {
   if (b->fold)
@@ -106,10 +120,14 @@ static void base_of(const branch_spec *b, const double *Z, const double *p,
     whirl_bvp_params(b->bvp, Z, p, pfull); /* the free parameters */
   else
     memcpy(pfull, p, b->sys->npar * sizeof *pfull);
-  /* the model's derived parameters (AUTO's PVLS) at an equilibrium */
-  if (b->kind == WHIRL_SOL_EQ && !b->fold && !b->hopf && !b->bploc && b->model &&
-      b->model->pvls)
+  /* the model's derived parameters (AUTO's PVLS) at an equilibrium, or
+   * on a collocation solution (orbit, boundary-value problem) */
+  if (b->fold || b->hopf || b->bploc || !b->model) return;
+  if (b->kind == WHIRL_SOL_EQ && b->model->pvls)
     b->model->pvls(Z, pfull, b->model->problem.data);
+  else if ((b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP) &&
+           b->model->pvls_solution && b->sys->norm_weights)
+    pvls_on_solution(b, Z, pfull);
 }
 
 /* The quantity a UZR/UZSTOP value refers to (whirl_cont_options.uz_fun). */
@@ -911,6 +929,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
   b->colloc = O->colloc;
   b->sys = whirl_colloc_system(O->colloc);
   b->nb = whirl_colloc_size(O->colloc);
+  b->nnodes = (b->nb - (R->prob.autonomous ? 1 : 0)) / R->n;
   b->ds_scale = 1.0; /* the system's norm weights: AUTO's integral norm */
   O->X = calloc(b->nb + 1, sizeof *O->X);
   O->D = calloc(b->nb + 1, sizeof *O->D);
@@ -1018,6 +1037,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
       b->colloc = O->colloc;
       b->sys = whirl_colloc_system(O->colloc);
       b->nb = whirl_colloc_size(O->colloc);
+      b->nnodes = (b->nb - (R->prob.autonomous ? 1 : 0)) / R->n;
       b->ds_scale = 1.0;
       b->x0 = O->X;
       b->dir = O->D;

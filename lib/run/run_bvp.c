@@ -205,6 +205,7 @@ int run_bvp_start(run_ctx *R, const whirl_solution *so, whirl_bvp **bvp, double 
     b->bvp = *bvp;
     b->sys = whirl_bvp_system(*bvp);
     b->nb = nb;
+    b->nnodes = n0 / R->n;
     b->x0 = *X;
     b->p0 = R->par;
     b->ds_scale = 1.0; /* the system's norm weights: AUTO's integral norm */

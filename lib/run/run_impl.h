@@ -158,6 +158,7 @@ typedef struct branch_spec {
   whirl_bploc *bploc;
   const whirl_system *sys; /* the system continued */
   size_t nb;               /* unknowns of the base system */
+  size_t nnodes;           /* colloc, bvp: the mesh's nodes (node values first) */
   int icp;                 /* core's continuation parameter */
   int q;                   /* loci: the point's own parameter, else -1 */
   double ds_scale;         /* arclength scale of DS (loci of orbits: the

@@ -37,7 +37,7 @@
 extern "C" {
 #endif
 
-#define WHIRL_MODEL_ABI 5
+#define WHIRL_MODEL_ABI 6
 #define WHIRL_MODEL_SYMBOL "whirl_model_def"
 
 typedef struct whirl_model {
@@ -84,6 +84,14 @@ typedef struct whirl_model {
               double *fb, void *data);
   int (*icnd)(size_t nint, const double *u, const double *uold, const double *udot,
               const double *upold, const double *par, double *fi, void *data);
+  /* Optional (ABI 6), AUTO's PVLS on a solution of periodic orbits or of
+   * a boundary-value problem (IPS 2 and 4, by collocation): u[nnodes n]
+   * its values at the mesh's nodes (node-major, t from 0 to 1), w[nnodes]
+   * the weights of the collocation quadrature (the integral over [0, 1]
+   * of a node value), par[npar] as for pvls; AUTO's GETP reads them
+   * ('INT', 'NRM', 'MAX', 'MIN', 'BV0', 'BV1').  0 on success. */
+  int (*pvls_solution)(const double *u, size_t nnodes, const double *w, double *par,
+                       void *data);
 } whirl_model;
 
 /* Check a model description: abi, sizes, required callbacks, parameter

@@ -117,7 +117,8 @@ sed '/MXBF/s/MXBF= *-1, //' "$tmp/lg/c.lg" > "$tmp/lg/c.lg2"
 # whose orbits are circles of radius sqrt(a) and period 2 pi; its orbit
 # at a = 0.25 (IPS = 2) restarts IPS = 4 (periodic boundary conditions,
 # AUTO's integral phase condition, the period PAR(11) free), at a = 0.49
-# its L2-NORM is the radius 0.7 and PAR(11) is 2 pi (closed forms)
+# its L2-NORM is the radius 0.7 and PAR(11) is 2 pi (closed forms); its
+# PVLS (GETP's NRM, INT, MAX of u1) on both
 mkdir "$tmp/lw"
 cat > "$tmp/lw/lw.f90" <<'F'
       SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
@@ -153,6 +154,14 @@ cat > "$tmp/lw/lw.f90" <<'F'
       DOUBLE PRECISION FI(NINT), DINT(NINT,*)
       FI(1) = U(1) * UPOLD(1) + U(2) * UPOLD(2)
       END SUBROUTINE ICND
+      SUBROUTINE PVLS(NDIM,U,PAR)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM,*), PAR(*), GETP
+      PAR(4) = GETP('NRM', 1, U)
+      PAR(5) = GETP('INT', 1, U)
+      PAR(6) = GETP('MAX', 1, U)
+      END SUBROUTINE PVLS
 F
 cat > "$tmp/lw/c.lw" <<'C'
 NDIM = 2, IPS = 1, IRS = 0, ILP = 1, ICP = [1], NTST = 20, NCOL = 4, IAD = 3
@@ -167,11 +176,20 @@ r3 = run(r2('UZ1'), IPS=4, NBC=2, NINT=1, ICP=[1, 11], PAR={3: 1}, UZR={1: 0.49}
          UZSTOP={1: 0.5})
 s = r3('UZ1')
 print('bvp %.10f %.10f %.10f' % (s['PAR(1)'], s['L2-NORM'], s['PAR(11)']))
+o = r2('UZ1')
+print('pvls %.10f %.10f %.10f %.10f %.10f' % (o['PAR(4)'], o['PAR(5)'], o['PAR(6)'], s['PAR(4)'], s['PAR(6)']))
 A
 out=$(cd "$tmp" && "$WHIRL" auto lw --script --quiet --out=lw.out 2>&1)
 set -- $(printf '%s\n' "$out" | sed -n 's/^bvp //p')
 near "${1:-0}" 0.49 1e-9 && near "${2:-0}" 0.7 1e-6 && near "${3:-0}" 6.283185307179586 1e-6
 check $? "an orbit restarted as a boundary-value problem: a ${1:-?}, radius ${2:-?} (0.7), PAR(11) ${3:-?} (2 pi)$( [ -n "${1:-}" ] || printf ': %s' "$(printf '%s' "$out" | tail -1)")"
+# AUTO's PVLS on solutions, GETP over the orbit (IPS = 2, radius 0.5) and
+# the BVP (radius 0.7): NRM of u1 = radius / sqrt 2, INT = 0, MAX = radius
+# (over the nodes: to h^2)
+set -- $(printf '%s\n' "$out" | sed -n 's/^pvls //p')
+near "${1:-0}" 0.3535533906 1e-7 && near "${2:-1}" 0 1e-9 && near "${3:-0}" 0.5 1e-3 &&
+  near "${4:-0}" 0.4949747468 1e-7 && near "${5:-0}" 0.7 1e-3
+check $? "PVLS on an orbit and a BVP: GETP NRM ${1:-?} ${4:-?}, INT ${2:-?}, MAX ${3:-?} ${5:-?}"
 
 # 2. bad input
 bad() { # script text, what the message must name, test name
