@@ -95,7 +95,11 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "      double s = f[i + lf * j];\n"
     "      for (int k = i + 1; k < n; k++) s -= a[i + la * k] * u[k + lu * j];\n"
     "      u[i + lu * j] = a[i + la * i] != 0 ? s / a[i + la * i] : 0;\n    }\n}\n"
-    "static const int icp[NPX];\n",
+    "/* the run's ICP (set_icp), which FUNC, BCND and ICND get as AUTO's do */\n"
+    "static int icp[NPX];\n"
+    "static void set_icp(const int *c, size_t n, void *d) {\n"
+    "  (void)d;\n  memset(icp, 0, sizeof icp);\n"
+    "  for (size_t i = 0; i < n && i < NPX; i++) icp[i] = c[i];\n}\n",
     m->ndim, m->npar, m->npar > 36 ? m->npar : 36);
   fputs(
     "static int call(const double *x, const double *p, int ijac, double *f, double *dfdu) {\n"
@@ -179,7 +183,7 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "  .problem = {.name = \"%s\", .n = N, .npar = NP, .rhs = rhs, .jac_x = jac,\n"
     "              .autonomous = 1, .x_names = x_names, .p_names = p_names},\n"
     "  .par0 = par0, .u0 = u0, .stpnt = stpnt, .forcing_param = -1, .pvls = pvls,\n"
-    "  .bcnd = bcnd, .icnd = icnd, .pvls_solution = pvls_sol,\n"
+    "  .bcnd = bcnd, .icnd = icnd, .pvls_solution = pvls_sol, .set_icp = set_icp,\n"
     "  .description = \"AUTO-07p equations %s\"};\n"
     "/* par0 and u0 from STPNT at T = 0; the period of its orbit, PAR(11) */\n"
     "__attribute__((constructor)) static void init(void) {\n"

@@ -810,6 +810,34 @@ static int check_start(whirl_cont *c, const double *x0, const double *p0) {
   return 0;
 }
 
+/* The start x0 solves F already but F_x is singular there, so Newton at
+ * the fixed parameter fails: a family along which the parameter does not
+ * move (a periodic orbit restarted as a boundary-value problem without a
+ * phase condition slides along its phase at a fixed period, AUTO's ph1).
+ * As AUTO starts from the null vector of [F_x F_p] (STPNBV's NODIR), the
+ * tangent is solved with a generic border instead of the parameter's
+ * (Keller 1977: any border not orthogonal to the null vector), then
+ * turned by the sign of the run's direction.  0 when it worked, else the
+ * failure stays the caller's. */
+static int start_on_solution(whirl_cont *c, int sign) {
+  const size_t n = c->n, N = c->N;
+  double *f = c->trial.X; /* scratch: N >= n */
+  if (c->sys.F(c->cur.X, c->cur.p, f, c->sys.data) != 0) return -1;
+  double r = 0.0, xm = 0.0;
+  for (size_t i = 0; i < n; ++i) r = fmax(r, fabs(f[i])), xm = fmax(xm, fabs(c->cur.X[i]));
+  if (!(r <= c->opt.newton_tol * (1.0 + xm))) return -1;
+  for (size_t i = 0; i < N; ++i) /* fixed, generic: no cancellation with a null vector */
+    c->dir[i] = 1.0 + 0.5 * sin(1.0 + 2.7 * (double)i);
+  const double nw = cont_norm(c, c->dir);
+  if (!(nw > 0)) return -1;
+  for (size_t i = 0; i < N; ++i) c->dir[i] /= nw;
+  if (notify_accept(c, &c->cur) != 0 || cont_analyse(c, &c->cur, c->dir) != 0) return -1;
+  if (sign < 0)
+    for (size_t i = 0; i < N; ++i) c->cur.t[i] = -c->cur.t[i];
+  memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
+  return cont_analyse(c, &c->cur, c->dir) == 0 ? 0 : -1;
+}
+
 int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
                      int dir) {
   reset_run(c);
@@ -830,6 +858,7 @@ int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
   rc = cont_correct(c, c->cur.X, c->dir, 0.0, c->trial.X);
   c->opt.newton_chord = chord;
   if (rc < 0) return rc;
+  if (rc > 0 && rc != 2 && start_on_solution(c, dir) == 0) return begin(c, 1);
   if (rc == 3)
     return WHIRL_FAIL(c, WHIRL_ESINGULAR,
                       "start: F_x is singular at the start point (a fold or "

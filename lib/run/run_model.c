@@ -327,6 +327,15 @@ int run_resolve(run_ctx *R) {
     }
     R->icp[R->nicp++] = k;
   }
+  if (m->set_icp) { /* AUTO's numbers, in the run file's order */
+    int auto_icp[WHIRL_RUN_MAXITEMS];
+    size_t na = 0;
+    for (size_t i = 0; i < s->nicp && na < WHIRL_RUN_MAXITEMS; i++) {
+      const int k = run_par_index(R, &s->icp[i]);
+      auto_icp[na++] = k >= 0 ? k + 1 : 11;
+    }
+    m->set_icp(auto_icp, na, R->prob.data);
+  }
   if (s->ips != WHIRL_IPS_BASINS && R->nicp == 0) {
     run_fail(R, WHIRL_RK_ICP, "ICP: no continuation parameter left (only the "
              "period)");

@@ -92,6 +92,11 @@ typedef struct whirl_model {
    * ('INT', 'NRM', 'MAX', 'MIN', 'BV0', 'BV1').  0 on success. */
   int (*pvls_solution)(const double *u, size_t nnodes, const double *w, double *par,
                        void *data);
+  /* Optional (ABI 6): the run's ICP as AUTO numbers it (1-based; 11 the
+   * period of orbits), given before the run calls the model, for user
+   * routines that read it (AUTO passes ICP to FUNC, BCND and ICND; demo
+   * ph1's FUNC scales by the period only when ICP is [11, 9]). */
+  void (*set_icp)(const int *icp, size_t nicp, void *data);
 } whirl_model;
 
 /* Check a model description: abi, sizes, required callbacks, parameter

@@ -988,9 +988,24 @@ static void test_errors(void) {
   ok(whirl_cont_step(c) == WHIRL_EINVAL, "step after a failed start is an error: %s", whirl_cont_errmsg(c));
   x = 1.0 / sqrt(3.0);
   p[0] = -2.0 / (3.0 * sqrt(3.0));
+  /* exactly at a fold x0 is a solution where F_x is singular: the start
+   * takes the null vector of [F_x F_p] (along x, the parameter stationary)
+   * as AUTO does, and the branch goes on over the fold's side on the curve
+   * mu = x^3 - lam x (before 2026-12-05 this start was refused) */
   int rc = whirl_cont_start(c, &x, p, 1);
-  ok((rc == WHIRL_ESINGULAR || rc == WHIRL_ENOCONV) && whirl_cont_errmsg(c)[0],
-     "start exactly at a fold is an error with a message: %s", whirl_cont_errmsg(c));
+  int rs = rc == WHIRL_OK ? whirl_cont_step(c) : rc;
+  whirl_branch *fb = whirl_branch_alloc(1, 2, 0, 0);
+  if (rs == WHIRL_OK && fb) whirl_cont_run(c, fb);
+  double fdev = 0.0, xmin = x, xmax = x;
+  for (size_t i = 0; fb && i < fb->len; ++i) {
+    const double xi = fb->pts[i].x[0], mu = fb->pts[i].p[0];
+    fdev = fmax(fdev, fabs(mu + 1.0 * xi - xi * xi * xi));
+    xmin = fmin(xmin, xi), xmax = fmax(xmax, xi);
+  }
+  ok(rc == WHIRL_OK && rs == WHIRL_OK && fb && fb->len > 3 && fdev < 1e-9 && xmax - xmin > 0.1,
+     "start exactly at a fold: along its null vector, on mu = x^3 - x (%zu points, dev %.2g) %s",
+     fb ? fb->len : 0, fdev, rc ? whirl_cont_errmsg(c) : "");
+  whirl_branch_free(fb);
   whirl_cont_free(c);
 }
 
@@ -1072,6 +1087,45 @@ static void test_switch_side(void) {
   ok(x < 0 && fabs(x * x - p) < 1e-8, "dir -1: x = -sqrt(p) (x %g, p %g)", x, p);
 }
 
+/* A start that solves F where F_x is singular and the family does not
+ * move the parameter: F = (x1^2 + x2^2 - 1, p - 2), the unit circle at
+ * p = 2 (an orbit's phase family at its fixed period, AUTO's ph1, is the
+ * same).  Newton at the fixed parameter cannot correct it; the start takes
+ * the null vector of [F_x F_p] = the circle's tangent (closed form). */
+static int circle_at_p_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[0] * x[0] + x[1] * x[1] - 1.0;
+  f[1] = p[0] - 2.0;
+  return 0;
+}
+
+static void test_start_on_singular_solution(void) {
+  whirl_system s = {0};
+  s.name = "circle at p = 2";
+  s.n = 2;
+  s.npar = 1;
+  s.F = circle_at_p_F;
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.icp = 0;
+  o.ds = 0.05;
+  o.ds_max = 0.1;
+  o.nmx = 40;
+  const double x0[2] = {1.0, 0.0}, p0[1] = {2.0};
+  whirl_branch *b = run(&s, &o, x0, p0, +1, NULL);
+  double dev = 0.0, ymax = 0.0;
+  for (size_t i = 0; b && i < b->len; ++i) {
+    const double *x = b->pts[i].x;
+    dev = fmax(dev, fmax(fabs(hypot(x[0], x[1]) - 1.0), fabs(b->pts[i].p[0] - 2.0)));
+    ymax = fmax(ymax, fabs(x[1]));
+  }
+  ok(b && b->len > 10 && dev < 1e-9 && ymax > 0.5,
+     "start on a solution with F_x singular, the parameter fixed along the family: the "
+     "unit circle at p = 2 (%zu points, max dev %.2g, |x2| up to %.2f)",
+     b ? b->len : 0, dev, ymax);
+  whirl_branch_free(b);
+}
+
 int main(void) {
   test_start_messages();
   test_cusp(1);
@@ -1093,5 +1147,6 @@ int main(void) {
   test_weights();
   test_system_weights();
   test_errors();
+  test_start_on_singular_solution();
   return done_testing();
 }
