@@ -96,10 +96,20 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "      for (int k = i + 1; k < n; k++) s -= a[i + la * k] * u[k + lu * j];\n"
     "      u[i + lu * j] = a[i + la * i] != 0 ? s / a[i + la * i] : 0;\n    }\n}\n"
     "/* the run's ICP (set_icp), which FUNC, BCND and ICND get as AUTO's do */\n"
-    "static int icp[NPX];\n"
-    "static void set_icp(const int *c, size_t n, void *d) {\n"
+    "static int icp[NPX], counts[4]; /* NTST, NCOL, NBC, NINT for GETP */\n"
+    "static double par0[NP], u0[N]; /* STPNT's at T = 0 (init, below) */\n"
+    "static void set_icp(const int *c, size_t n, const int k[4], void *d) {\n"
     "  (void)d;\n  memset(icp, 0, sizeof icp);\n"
-    "  for (size_t i = 0; i < n && i < NPX; i++) icp[i] = c[i];\n}\n",
+    "  for (size_t i = 0; i < n && i < NPX; i++) icp[i] = c[i];\n"
+    "  memcpy(counts, k, sizeof counts);\n"
+    "  /* PVLS once before the run, as AUTO calls it after the start: some set\n"
+    "   * up data there that FUNC reads (brc, brf); a boundary-value problem's\n"
+    "   * first PVLS gets its solution instead (pcl's GETP reads it), not this */\n"
+    "  static int first = 1;\n"
+    "  if (first && pvls_ && counts[2] + counts[3] == 0) {\n"
+    "    double par[NPX] = {0};\n    const int nd = N;\n"
+    "    memcpy(par, par0, NP * sizeof *par);\n    pvls_(&nd, u0, par);\n  }\n"
+    "  first = 0;\n}\n",
     m->ndim, m->npar, m->npar > 36 ? m->npar : 36);
   fputs(
     "static int call(const double *x, const double *p, int ijac, double *f, double *dfdu) {\n"
@@ -133,6 +143,8 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "  for (size_t j = 0; j < 3 && j < l; j++) k[j] = (char)(c[j] >= 'a' && c[j] <= 'z' ? c[j] - 32 : c[j]);\n"
     "  const int ic = *i;\n"
     "  if (!strcmp(k, \"NDI\") || !strcmp(k, \"NDX\")) return N;\n"
+    "  static const char *const cn[4] = {\"NTS\", \"NCO\", \"NBC\", \"NIN\"};\n"
+    "  for (int q = 0; q < 4; q++) if (!strcmp(k, cn[q])) return counts[q];\n"
     "  if (ic < 1 || ic > N) return 0.0;\n"
     "  if (sol_u) {\n"
     "    const double *v = sol_u + ic - 1;\n    double s = 0, m = v[0];\n"
@@ -189,7 +201,10 @@ static void write_adapter(FILE *f, const auto_model_info *m) {
     "__attribute__((constructor)) static void init(void) {\n"
     "  double par[NPX] = {0}, t = 0;\n  const int n = N;\n"
     "  stpnt_(&n, u0, par, &t);\n  memcpy(par0, par, NP * sizeof *par);\n"
-    "  if (pvls_) pvls_(&n, u0, par); /* as AUTO after the start: some set up data there */\n"
+    "  /* a STPNT that extends a restart (NDIM above the data's: demo pcl)\n"
+    "   * may give NaN here, with no data; a run from STPNT calls it again */\n"
+    "  for (int i = 0; i < N; i++) if (!__builtin_isfinite(u0[i])) u0[i] = 0;\n"
+    "  /* PVLS's first call: set_icp, when the run's class is known */\n"
     "  whirl_model_def.period0 = par[10] > 0 ? par[10] : 0;\n}\n",
     m->name, m->name);
 }

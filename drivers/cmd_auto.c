@@ -389,7 +389,7 @@ static const whirl_auto_label *group_label(const auto_job *J, size_t i, const ch
 static int fits_label(const auto_job *J, size_t i, size_t j, int lab) {
   char dir[4400], msg[512];
   whirl_solution S;
-  const whirl_solution_shape any = {NULL, 0, 0, -1};
+  const whirl_solution_shape any = {NULL, 0, 0, -1, 0};
   snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[j].id);
   if (whirl_solution_find(dir, &any, lab, "", &S, msg, sizeof msg)) return 0;
   const int good = fits(&J->run[i], &S);
@@ -428,7 +428,7 @@ static int pick_source(auto_job *J, size_t i) {
   for (long j = (long)i - 1; j >= 0; j--) {
     char dir[4400], msg[512];
     whirl_solution S;
-    const whirl_solution_shape any = {NULL, 0, 0, -1};
+    const whirl_solution_shape any = {NULL, 0, 0, -1, 0};
     snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[j].id);
     if (whirl_solution_find(dir, &any, k, ty, &S, msg, sizeof msg)) continue;
     const int good = fits(r, &S);

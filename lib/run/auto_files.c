@@ -490,7 +490,7 @@ static int write_s_by_label(FILE *f, const run *R, const char *path, char *msg, 
       return WHIRL_EIO;
     }
     whirl_solution S;
-    const whirl_solution_shape any = {NULL, 0, 0, -1};
+    const whirl_solution_shape any = {NULL, 0, 0, -1, 0};
     int rc = whirl_solution_read(in, path, &any, r->lab, NULL, &S, msg, len);
     fclose(in);
     if (rc) return WHIRL_EINVAL;

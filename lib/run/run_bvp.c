@@ -109,15 +109,46 @@ static int same_free_parameters(const whirl_solution *so, int icp,
   return 1;
 }
 
+/* A label read with more state components than it had (a restart with a
+ * larger NDIM): the new components from the model's stpnt at every node,
+ * called with the stored ones and zeros (AUTO-07p io.f90, READBV: "system
+ * is extended; call STPNT for extension"; demo pcl adds its Floquet
+ * bundle and Lin vectors so), the stored ones and the parameters kept.
+ * The values into x[nx] (a copy of so->x).  0 or -1. */
+static int extend_state(run_ctx *R, const whirl_solution *so, double *x) {
+  memcpy(x, so->x, so->nx * sizeof *x);
+  const size_t k = so->nstate_stored, n = R->n, M = (size_t)so->ncol;
+  if (!k || !R->model->stpnt) return 0;
+  double *u = malloc(n * sizeof *u), *p = malloc(R->npar * sizeof *p);
+  int rc = u && p ? 0 : -1;
+  for (size_t i = 0; !rc && i < (size_t)so->ntst; i++)
+    for (size_t m = 0; m <= M && !rc; m++) {
+      if (m == M && i + 1 < (size_t)so->ntst) continue; /* the next interval's first */
+      const size_t j = i * M + m;
+      const double h = so->mesh[i + 1] - so->mesh[i], t = so->mesh[i] + h * (double)m / (double)M;
+      memcpy(u, x + n * j, n * sizeof *u);
+      memcpy(p, R->par, R->npar * sizeof *p);
+      if (R->model->stpnt(t, u, p, R->prob.data) != 0) rc = -1;
+      for (size_t c = k; !rc && c < n; c++) x[n * j + c] = u[c];
+    }
+  free(u);
+  free(p);
+  if (rc) run_say(R, "IRS: label %d: the model's stpnt failed extending it to NDIM = %zu",
+                  so->label, n);
+  return rc;
+}
+
 /* The start X from a label so: on its mesh, or resampled from it — and
  * its tangent into D when it has one fitting the run (*tan set): a restart
  * goes on along the branch as AUTO's does, onto another NTST too, and a
  * switch at a BP (ISW = -1) starts from it. */
+static int start_on_mesh(run_ctx *R, const whirl_solution *so, const double *x,
+                         whirl_bvp *bvp, const whirl_bvp_options *o, double *X, double *D,
+                         int tan);
+
 static int start_from_label(run_ctx *R, const whirl_solution *so, whirl_bvp *bvp,
                             const whirl_bvp_options *o, double *X, double *D, int *tan) {
-  const size_t nb = whirl_bvp_size(bvp);
   *tan = so->kind == WHIRL_SOL_BVP && so->tan && same_free_parameters(so, R->icp[0], o);
-  char err[512];
   const int orbit = so->kind == WHIRL_SOL_COLLOC && (size_t)so->nstate == R->n;
   if (so->kind != WHIRL_SOL_BVP && !orbit) {
     run_fail(R, WHIRL_RK_IRS, "IRS: label %d is %s; IPS = 4 restarts from a "
@@ -128,9 +159,26 @@ static int start_from_label(run_ctx *R, const whirl_solution *so, whirl_bvp *bvp
   /* an orbit is a solution on [0, 1] like any other (AUTO's ph1, pcl): its
    * period is AUTO's PAR(11), which the boundary conditions may free */
   if (orbit && so->aut && R->npar >= 11) R->par[10] = so->x[so->nx - 1];
+  double *ext = malloc(so->nx * sizeof *ext);
+  if (!ext || extend_state(R, so, ext)) {
+    free(ext);
+    return -1;
+  }
+  int rc = start_on_mesh(R, so, ext, bvp, o, X, D, *tan);
+  free(ext);
+  return rc;
+}
+
+/* start_from_label's copy or resampling of the node values x (so's,
+ * extended).  0 or -1. */
+static int start_on_mesh(run_ctx *R, const whirl_solution *so, const double *x,
+                         whirl_bvp *bvp, const whirl_bvp_options *o, double *X, double *D,
+                         int tan) {
+  const size_t nb = whirl_bvp_size(bvp);
+  char err[512];
   if ((size_t)so->ntst == o->ntst && (size_t)so->ncol == o->ncol) {
-    memcpy(X, so->x, R->n * (o->ntst * o->ncol + 1) * sizeof *X);
-    if (*tan) memcpy(D, so->tan, (nb + 1) * sizeof *D);
+    memcpy(X, x, R->n * (o->ntst * o->ncol + 1) * sizeof *X);
+    if (tan) memcpy(D, so->tan, (nb + 1) * sizeof *D);
     whirl_bvp_set_mesh(bvp, so->mesh);
     return 0;
   }
@@ -143,12 +191,12 @@ static int start_from_label(run_ctx *R, const whirl_solution *so, whirl_bvp *bvp
     return -1;
   }
   whirl_bvp_set_mesh(src, so->mesh);
-  stored_orbit st = {src, so->x};
+  stored_orbit st = {src, x};
   double *p = malloc(R->npar * sizeof *p);
   int rc = p ? WHIRL_OK : WHIRL_ENOMEM;
   if (!rc) memcpy(p, R->par, R->npar * sizeof *p);
   if (!rc) rc = whirl_bvp_from_function(bvp, start_of_label, &st, X, p);
-  if (!rc && *tan) { /* the tangent's node part resampled likewise */
+  if (!rc && tan) { /* the tangent's node part resampled likewise */
     st.x = so->tan;
     rc = whirl_bvp_from_function(bvp, start_of_label, &st, D, p);
     const size_t sn = so->nx - (size_t)so->nfree, dn = nb - o->nfree;
@@ -158,6 +206,23 @@ static int start_from_label(run_ctx *R, const whirl_solution *so, whirl_bvp *bvp
   free(p);
   whirl_bvp_free(src);
   return rc ? -1 : 0;
+}
+
+/* AUTO calls PVLS on the restart solution before the first step, and the
+ * parameters it sets are the run's start values, free ones included: demo
+ * pcl's PVLS puts the Lin gap and vector into eta, Zx, Zy, from which its
+ * run 7 closes the gap (UZR eta = 0). */
+static void start_pvls(run_ctx *R, whirl_bvp *bvp, const double *X, size_t nnodes) {
+  const whirl_system *sys = whirl_bvp_system(bvp);
+  if (!R->model->pvls_solution || !sys->norm_weights) return;
+  double *q = malloc(whirl_bvp_size(bvp) * sizeof *q), *w = malloc(nnodes * sizeof *w);
+  if (q && w && sys->norm_weights(q, sys->data) == 0) {
+    for (size_t j = 0; j < nnodes; j++) w[j] = q[R->n * j];
+    R->model->pvls_solution(X, nnodes, w, R->par, R->prob.data);
+    apply_run_file_par(R); /* the run file's PAR still overrides (AUTO) */
+  }
+  free(q);
+  free(w);
 }
 
 int run_bvp_start(run_ctx *R, const whirl_solution *so, whirl_bvp **bvp, double **X,
@@ -192,6 +257,7 @@ int run_bvp_start(run_ctx *R, const whirl_solution *so, whirl_bvp **bvp, double 
   }
   if (!rc) {
     const size_t n0 = R->n * ((size_t)s->ntst * (size_t)s->ncol + 1);
+    if (so) start_pvls(R, *bvp, *X, n0 / R->n);
     for (size_t j = 0; j < o.nfree; j++) (*X)[n0 + j] = R->par[free_par[j]];
     whirl_bvp_set_reference(*bvp, *X);
     /* along the stored tangent, as for the other classes

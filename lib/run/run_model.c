@@ -334,7 +334,8 @@ int run_resolve(run_ctx *R) {
       const int k = run_par_index(R, &s->icp[i]);
       auto_icp[na++] = k >= 0 ? k + 1 : 11;
     }
-    m->set_icp(auto_icp, na, R->prob.data);
+    const int counts[4] = {s->ntst, s->ncol, s->nbc, s->nint};
+    m->set_icp(auto_icp, na, counts, R->prob.data);
   }
   if (s->ips != WHIRL_IPS_BASINS && R->nicp == 0) {
     run_fail(R, WHIRL_RK_ICP, "ICP: no continuation parameter left (only the "
@@ -393,7 +394,10 @@ int run_resolve(run_ctx *R) {
 
 int run_solution_find(const run_ctx *R, const char *dir, int label,
                       const char *ty, whirl_solution *out, char *msg, size_t len) {
+  /* a boundary-value problem may extend a solution of fewer components
+   * (AUTO pads a restart with a larger NDIM with zeros: demo pcl) */
   const whirl_solution_shape want = {R->prob.name, R->n, R->npar,
-                                     R->model->forcing_param >= 0};
+                                     R->model->forcing_param >= 0,
+                                     R->s->ips == WHIRL_IPS_BVP};
   return whirl_solution_find(dir, &want, label, ty, out, msg, len);
 }

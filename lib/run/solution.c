@@ -351,6 +351,9 @@ static int fits(reader *r, const whirl_solution *s, const whirl_solution_shape *
     return -1;
   }
   if (s->nstate == want->n) return 0;
+  if (want->pad_state && s->nstate < want->n &&
+      (s->kind == WHIRL_SOL_COLLOC || s->kind == WHIRL_SOL_BVP))
+    return 0; /* pad_state adds the components */
   char how[128] = "";
   if (s->kind == WHIRL_SOL_COLLOC)
     snprintf(how, sizeof how, " = (NTST %d x NCOL %d + 1) x %zu%s", s->ntst,
@@ -366,6 +369,26 @@ static int fits(reader *r, const whirl_solution *s, const whirl_solution_shape *
            s->kind == WHIRL_SOL_EQ ? "has" : "is an orbit of", s->nstate, s->nx, how,
            want->model ? want->model : "?", want->n);
   return -1;
+}
+
+/* A collocation solution with fewer state components than want->n (and
+ * want->pad_state): every node's values followed by zeros, the unknowns
+ * after the nodes (period, free parameters) kept; the tangent, of the
+ * other dimension, dropped.  0, or -1 out of memory. */
+static int pad_state(whirl_solution *s, const whirl_solution_shape *want) {
+  if (!want->pad_state || !want->n || s->nstate >= want->n ||
+      (s->kind != WHIRL_SOL_COLLOC && s->kind != WHIRL_SOL_BVP))
+    return 0;
+  const size_t m = (size_t)s->ntst * (size_t)s->ncol + 1, k = s->nstate, n = want->n;
+  const size_t extra = s->nx - m * k, nx = m * n + extra;
+  double *x = calloc(nx, sizeof *x);
+  if (!x) return -1;
+  for (size_t j = 0; j < m; j++) memcpy(x + n * j, s->x + k * j, k * sizeof *x);
+  memcpy(x + m * n, s->x + m * k, extra * sizeof *x);
+  free(s->x);
+  free(s->tan);
+  s->x = x, s->tan = NULL, s->nx = nx, s->nstate_stored = k, s->nstate = n;
+  return 0;
 }
 
 /* s's parameters to npar (when more than it has), the new ones NAN.
@@ -419,7 +442,7 @@ int whirl_solution_read(FILE *f, const char *path, const whirl_solution_shape *w
         whirl_solution_free(&s);
         goto done;
       }
-      if (pad_params(&s, want->npar)) {
+      if (pad_params(&s, want->npar) || pad_state(&s, want)) {
         whirl_solution_free(&s);
         snprintf(msg, len, "%s: out of memory", path);
         goto done;

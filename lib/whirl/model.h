@@ -93,10 +93,11 @@ typedef struct whirl_model {
   int (*pvls_solution)(const double *u, size_t nnodes, const double *w, double *par,
                        void *data);
   /* Optional (ABI 6): the run's ICP as AUTO numbers it (1-based; 11 the
-   * period of orbits), given before the run calls the model, for user
-   * routines that read it (AUTO passes ICP to FUNC, BCND and ICND; demo
-   * ph1's FUNC scales by the period only when ICP is [11, 9]). */
-  void (*set_icp)(const int *icp, size_t nicp, void *data);
+   * period of orbits) and its NTST, NCOL, NBC, NINT, given before the run
+   * calls the model, for user routines that read them (AUTO passes ICP to
+   * FUNC, BCND and ICND, and its GETP returns the others: demo ph1's FUNC
+   * scales by the period only when ICP is [11, 9], pcl's PVLS asks NBC). */
+  void (*set_icp)(const int *icp, size_t nicp, const int counts[4], void *data);
 } whirl_model;
 
 /* Check a model description: abi, sizes, required callbacks, parameter

@@ -60,6 +60,8 @@ typedef struct whirl_solution {
                        for orbits (M nodes or coefficients) */
   int aut;          /* orbits: 1 if the period is the last unknown */
   int iterate;      /* maps: the fixed point is of f^iterate (0 or 1: of f) */
+  size_t nstate_stored; /* read with pad_state: the components the file had
+                           (the others 0), else 0 */
 } whirl_solution;
 
 /* The model a stored solution must fit (0 / NULL / -1: anything). */
@@ -67,6 +69,10 @@ typedef struct whirl_solution_shape {
   const char *model; /* name */
   size_t n, npar;    /* state components, parameters */
   int forced;        /* 1 forced (no period unknown), 0 autonomous */
+  int pad_state;     /* 1: a collocation solution (orbit, boundary-value
+                        problem) with fewer state components is read with
+                        the others 0 at every node, as AUTO restarts with a
+                        larger NDIM (demo pcl extends its system) */
 } whirl_solution_shape;
 
 /* Free the vectors of s and zero it (accepts an empty one). */
