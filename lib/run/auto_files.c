@@ -255,7 +255,11 @@ static void columns(const run *R, cols *c) {
   par_name(R, R->icp[0], nm, sizeof nm);
   add_col(c, par_at(R, R->icp[0]), nm);
   add_col(c, l2, R->mname);
-  for (int i = 0; i < R->o->ndim && i < 7; i++) { /* AUTO shows up to 7 */
+  /* AUTO-07p io.f90, WRLINE: with NICP parameters, U(1..N2) with
+   * N2 = NDIM, 7 - NICP where both exceed 7 columns, 0 past 7 parameters */
+  const int nicp = (int)R->nicp, n2 = nicp > 7 ? 0 : nicp + R->o->ndim > 7 ? 7 - nicp
+                                                                       : R->o->ndim;
+  for (int i = 0; i < n2; i++) {
     char x[64];
     if (R->o->x_names) snprintf(x, sizeof x, "%s", R->o->x_names[i]);
     else snprintf(x, sizeof x, "U(%d)", i + 1);

@@ -26,7 +26,8 @@
 set -u
 # --script: run each demo by its own script (DEMO.auto, as AUTO's demo
 # runner and hyper.all do) with `whirl auto --script` instead of its
-# constants files in their default order; ONLY="ab plp": those demos alone
+# constants files in their default order (known gaps from
+# known-gaps.script, else known-gaps); ONLY="ab plp": those demos alone
 script=0
 [ "${1:-}" = --script ] && { script=1; shift; }
 here=$(cd "$(dirname "$0")" && pwd)
@@ -161,7 +162,9 @@ for dir in "$demos"/*/; do
     [ "$2" -gt 0 ] || [ "$3" -gt 0 ] && note="MAX U(i) alone: $2 nearer the flow than AUTO's, $3 not"
   fi
   [ "$rc" = 0 ] || note="${note:+$note; }exit $rc: $(grep -v '^ ' "$tmp/$d.log" | head -1 | cut -c1-90)"
-  gap=$(awk -F'\t' -v d="$d" '$1 == d { print $2 }' "$here/known-gaps" 2>/dev/null | head -1)
+  gap=
+  [ $script = 1 ] && gap=$(awk -F'\t' -v d="$d" '$1 == d { print $2 }' "$here/known-gaps.script" 2>/dev/null | head -1)
+  [ -n "$gap" ] || gap=$(awk -F'\t' -v d="$d" '$1 == d { print $2 }' "$here/known-gaps" 2>/dev/null | head -1)
   [ -n "$gap" ] && note="${note:+$note; }known: $gap"
   ok=0
   [ "$rc" = 0 ] && [ "$c" = "$w" ] && { [ "$w" -gt 0 ] || [ "$a" = 0 ]; } && ok=1

@@ -130,6 +130,7 @@ cat > "$tmp/lw/lw.f90" <<'F'
       IF (PAR(3) .NE. 0) T = PAR(11)
       F(1) = T * (PAR(1) * U(1) - U(2) - U(1) * R2)
       F(2) = T * (U(1) + PAR(1) * U(2) - U(2) * R2)
+      IF (NDIM .GE. 3) F(3) = T * (U(3)**2 - 1)
       END SUBROUTINE FUNC
       SUBROUTINE STPNT(NDIM,U,PAR,T)
       IMPLICIT NONE
@@ -139,13 +140,16 @@ cat > "$tmp/lw/lw.f90" <<'F'
       PAR(3) = 0
       U(1) = 0
       U(2) = 0
+      IF (NDIM .GE. 3) U(3) = -1
       END SUBROUTINE STPNT
       SUBROUTINE BCND(NDIM,PAR,ICP,NBC,U0,U1,FB,IJAC,DBC)
       IMPLICIT NONE
       INTEGER NDIM, ICP(*), NBC, IJAC
       DOUBLE PRECISION PAR(*), U0(NDIM), U1(NDIM), FB(NBC), DBC(NBC,*)
-      FB(1) = U0(1) - U1(1)
-      FB(2) = U0(2) - U1(2)
+      INTEGER I
+      DO I = 1, NBC
+        FB(I) = U0(I) - U1(I)
+      END DO
       END SUBROUTINE BCND
       SUBROUTINE ICND(NDIM,PAR,ICP,NINT,U,UOLD,UDOT,UPOLD,FI,IJAC,DINT)
       IMPLICIT NONE
@@ -161,6 +165,7 @@ cat > "$tmp/lw/lw.f90" <<'F'
       PAR(4) = GETP('NRM', 1, U)
       PAR(5) = GETP('INT', 1, U)
       PAR(6) = GETP('MAX', 1, U)
+      IF (NDIM .GE. 3) PAR(7) = GETP('BV0', 3, U)
       END SUBROUTINE PVLS
 F
 cat > "$tmp/lw/c.lw" <<'C'
@@ -178,6 +183,14 @@ s = r3('UZ1')
 print('bvp %.10f %.10f %.10f' % (s['PAR(1)'], s['L2-NORM'], s['PAR(11)']))
 o = r2('UZ1')
 print('pvls %.10f %.10f %.10f %.10f %.10f' % (o['PAR(4)'], o['PAR(5)'], o['PAR(6)'], s['PAR(4)'], s['PAR(6)']))
+r4 = run(r2('UZ1'), IPS=4, NDIM=3, NBC=3, NINT=1, ICP=[1, 11], PAR={3: 1}, UZR={1: 0.49},
+         UZSTOP={1: 0.5})
+s = r4('UZ1')
+print('ndim3 %.10f %.10f %.10f %.10f' % (s['PAR(1)'], s['PAR(4)'], s['PAR(11)'], s['PAR(7)']))
+c7 = run(r1('HB1'), IPS=2, ICP=[1, 11, 2, 3, 4, 5, 6], NMX=4, UZR={})
+c6 = run(r1('HB1'), IPS=2, ICP=[1, 11, 2, 3, 4, 5], NMX=4, UZR={})
+print('cols7 %s' % '|'.join(c7()[-1].columns))
+print('cols6 %s' % '|'.join(c6()[-1].columns))
 A
 out=$(cd "$tmp" && "$WHIRL" auto lw --script --quiet --out=lw.out 2>&1)
 set -- $(printf '%s\n' "$out" | sed -n 's/^bvp //p')
@@ -190,6 +203,22 @@ set -- $(printf '%s\n' "$out" | sed -n 's/^pvls //p')
 near "${1:-0}" 0.3535533906 1e-7 && near "${2:-1}" 0 1e-9 && near "${3:-0}" 0.5 1e-3 &&
   near "${4:-0}" 0.4949747468 1e-7 && near "${5:-0}" 0.7 1e-3
 check $? "PVLS on an orbit and a BVP: GETP NRM ${1:-?} ${4:-?}, INT ${2:-?}, MAX ${3:-?} ${5:-?}"
+# a restart with a larger NDIM (AUTO-07p's READBV: STPNT fills the new
+# components at every node; demo pcl): the orbit extended by
+# w' = T (w^2 - 1), whose periodic solutions are w = 1 and w = -1, and
+# STPNT's w = -1 picks the second (from w = 0 Newton's matrix is
+# singular); u is the same circle (NRM of u1 = 0.7/sqrt 2, period 2 pi)
+set -- $(printf '%s\n' "$out" | sed -n 's/^ndim3 //p')
+near "${1:-0}" 0.49 1e-9 && near "${2:-0}" 0.4949747468 1e-7 &&
+  near "${3:-0}" 6.283185307179586 1e-6 && near "${4:-0}" -1 1e-9
+check $? "a boundary-value problem of NDIM 3 from an orbit of NDIM 2, the new component from STPNT: a ${1:-?}, NRM u1 ${2:-?}, PAR(11) ${3:-?}, w ${4:-?} (-1)"
+
+# the b. file's columns as AUTO's (io.f90, WRLINE): U(1..N2) with N2 =
+# NDIM, 7 - NICP where both exceed 7, none past 7 parameters
+c7=$(printf '%s\n' "$out" | sed -n 's/^cols7 //p'); c6=$(printf '%s\n' "$out" | sed -n 's/^cols6 //p')
+[ "$c7" = "PAR(1)|L2-NORM|PERIOD|PAR(2)|PAR(3)|PAR(4)|PAR(5)|PAR(6)" ] &&
+  [ "$c6" = "PAR(1)|L2-NORM|MAX U(1)|PERIOD|PAR(2)|PAR(3)|PAR(4)|PAR(5)" ]
+check $? "b. columns: 7 ICP, no U ($c7); 6 ICP, one ($c6)"
 
 # 2. bad input
 bad() { # script text, what the message must name, test name
