@@ -806,7 +806,7 @@ static const char *script_module(void) {
  * with AUTO's commands, each run one `whirl auto` of this executable into
  * OUT/runs.  Its exit status: 0, 1 (a run failed) or 2 (bad input). */
 static int run_script(auto_job *J) {
-  char script[4400], self[4096], mark[4400];
+  char script[4400], self[4096];
   if (J->script[0]) snprintf(script, sizeof script, "%s", J->script);
   else snprintf(script, sizeof script, "%s/%s.auto", J->dir, J->name);
   if (access(script, R_OK) != 0) {
@@ -820,13 +820,8 @@ static int run_script(auto_job *J) {
     return 1;
   }
   self[n] = 0;
-  snprintf(mark, sizeof mark, "%s/%s", J->out, MARKER);
-  FILE *f = NULL;
-  if ((mkdir(J->out, 0777) != 0 && errno != EEXIST) || !(f = fopen(mark, "w")) ||
-      fprintf(f, "written by whirl auto --script\n") < 0 || fclose(f)) {
-    cli_error("auto", "%s: cannot write", J->out);
-    return 1;
-  }
+  /* OUT and its mark are made by the runner once the script compiles: a
+   * script with a syntax error writes nothing */
   const char *py = getenv("WHIRL_PYTHON");
   char whirl_arg[4200], dir_arg[4200], out_arg[4200];
   snprintf(whirl_arg, sizeof whirl_arg, "--whirl=%s", self);

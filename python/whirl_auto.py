@@ -604,6 +604,13 @@ def main(argv):
     except (OSError, SyntaxError) as e:
         sys.stderr.write('whirl auto: %s: %s\n' % (a.script, e))
         return 2
+    try:  # OUT, marked as whirl auto's (its check_out), once the script compiles
+        os.makedirs(a.out, exist_ok=True)
+        with open(os.path.join(a.out, '.whirl-auto'), 'w') as f:
+            f.write('written by whirl auto --script\n')
+    except OSError as e:
+        sys.stderr.write('whirl auto: %s: %s\n' % (a.out, e.strerror))
+        return 1
     R = Runner(a.whirl, a.dir, a.out, a.quiet)
     sys.path.insert(0, os.path.abspath(a.dir))
     try:

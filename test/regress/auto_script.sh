@@ -233,6 +233,9 @@ bad() { # script text, what the message must name, test name
 bad "r = run(e='lg', c='lg')
 cd('elsewhere')" "bad.auto:2: the script uses 'cd'" "a command the runner lacks: exit 2, its line"
 bad "x = undefined_name + 1" "bad.auto:1: NameError" "the script's own error: exit 2, one line"
+rm -rf "$tmp/bad.out"
+bad "r = run(e='lg', c='lg'" "bad.auto" "a script that does not compile: exit 2, one line"
+[ ! -e "$tmp/bad.out" ]; check $? "a script that does not compile writes nothing (no OUT)"
 bad "r = run(e='lg', c='lg.nothere')" "c.lg.nothere" "a missing constants file: exit 2"
 bad "r = run(e='lg', c='lg')
 r('HB1')" "no HB1" "a label the diagram lacks: exit 2"
