@@ -1329,7 +1329,7 @@ static int restart_solution(whirl_run *R, run_objects *O) {
   /* the run file's PAR overrides the stored parameters (AUTO); those the
    * solution has not (a restart with a larger NPAR) keep the model's */
   for (size_t k = 0; k < R->npar; k++) {
-    if (isnan(O->sol.par[k])) O->sol.par[k] = R->par[k];
+    if (O->sol.npar_stored && k >= O->sol.npar_stored) O->sol.par[k] = R->par[k];
     R->par[k] = O->sol.par[k];
   }
   for (size_t i = 0; i < R->s->npar; i++)

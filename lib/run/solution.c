@@ -391,14 +391,15 @@ static int pad_state(whirl_solution *s, const whirl_solution_shape *want) {
   return 0;
 }
 
-/* s's parameters to npar (when more than it has), the new ones NAN.
- * 0, or -1 out of memory. */
+/* s's parameters to npar (when more than it has), the new ones 0 and
+ * npar_stored the file's count.  0, or -1 out of memory. */
 static int pad_params(whirl_solution *s, size_t npar) {
   if (npar <= s->npar) return 0;
   double *p = realloc(s->par, npar * sizeof *p);
   if (!p) return -1;
-  for (size_t k = s->npar; k < npar; k++) p[k] = NAN;
+  for (size_t k = s->npar; k < npar; k++) p[k] = 0.0;
   s->par = p;
+  s->npar_stored = s->npar;
   s->npar = npar;
   return 0;
 }
@@ -420,8 +421,8 @@ int whirl_solution_read(FILE *f, const char *path, const whirl_solution_shape *w
     goto done;
   }
   /* fewer parameters than the model: a restart with a larger NPAR, as
-   * AUTO's (main.f90: NPAR = MAX(NPARR, NPAR)); the others are NAN here,
-   * the model's own values for the run (pad_params) */
+   * AUTO's (main.f90: NPAR = MAX(NPARR, NPAR)); the others are the
+   * model's own values for the run (pad_params: npar_stored) */
   if (want->npar && npar > want->npar) {
     bad(&r, "the solutions have %zu parameters (npar %zu); model '%s' has %zu",
         npar, npar, model, want->npar);

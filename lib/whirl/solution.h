@@ -62,6 +62,10 @@ typedef struct whirl_solution {
   int iterate;      /* maps: the fixed point is of f^iterate (0 or 1: of f) */
   size_t nstate_stored; /* read with pad_state: the components the file had
                            (the others 0), else 0 */
+  size_t npar_stored;   /* read for a model with more parameters: the ones
+                           the file had (the others 0, for the reader to
+                           take from its model: AUTO's NPAR = MAX(NPARR,
+                           NPAR)), else 0 */
 } whirl_solution;
 
 /* The model a stored solution must fit (0 / NULL / -1: anything). */
