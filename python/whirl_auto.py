@@ -27,6 +27,7 @@ This is whirl's own code; no AUTO code is used.
 SPDX-License-Identifier: BSD-3-Clause
 """
 import ast
+import errno
 import os
 import re
 import subprocess
@@ -208,6 +209,20 @@ def _as_bd(x):
     raise ScriptError('expected a bifurcation diagram, got %r' % type(x).__name__)
 
 
+def _write_whole(path, text):
+    """path replaced by text at once: written to path.tmp and renamed, the
+    temporary removed when that fails (a full disk, Ctrl-C)."""
+    tmp = path + '.tmp'
+    try:
+        with open(tmp, 'w') as f:
+            f.write(text)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        raise
+
+
 # ---- AUTO's files of a run, read back -------------------------------------
 
 def _read_b(path):
@@ -277,8 +292,7 @@ class Runner:
             dst = os.path.join(self.stage, name)
             if os.path.isfile(src) and not os.path.lexists(dst):
                 os.symlink(src, dst)
-        self.all_runs = open(os.path.join(out, 'b.runs'), 'w')
-        self.all_sols = open(os.path.join(out, 's.runs'), 'w')
+        self.all_runs, self.all_sols = [], []  # OUT/b.runs, s.runs (write_runs)
 
     # -- constants --
     def read_c(self, name):
@@ -428,18 +442,23 @@ class Runner:
                 if lab and wlab:
                     sol = Solution(run_id, wlab, row, blocks.get(lab, []), consts, e,
                                    columns)
-                    self.all_sols.write(''.join(l + '\n' for l in sol.block))
+                    self.all_sols.extend(sol.block)
                 brows.append((row, sol))
-                self.all_runs.write(row + '\n')
+                self.all_runs.append(row)
             out.append(Branch(header, brows, run_id))
         if k != len(wlabs):
             raise ScriptError('%s: %d points in b.%s, %d in branches.tsv'
                               % (run_id, k, run_id, len(wlabs)))
-        self.all_runs.flush()
-        self.all_sols.flush()
+        self.write_runs()
         return out
 
     # -- files --
+    def write_runs(self):
+        """OUT/b.runs and s.runs, whole after every run: each replaced at
+        once (a temporary file renamed), never left half written."""
+        for name, lines in (('b.runs', self.all_runs), ('s.runs', self.all_sols)):
+            _write_whole(os.path.join(self.out, name), ''.join(l + '\n' for l in lines))
+
     def _paths(self, name):
         return [os.path.join(self.out, '%s.%s' % (k, name)) for k in 'bsd']
 
@@ -461,13 +480,10 @@ class Runner:
                 if sol is not None and sol.block:
                     texts[1] += ''.join(l + '\n' for l in sol.block)
         for path, text in zip(paths, texts):
-            tmp = path + '.tmp'
-            with open(tmp, 'w') as f:
-                if mode == 'a' and os.path.exists(path):
-                    with open(path) as old:
-                        f.write(old.read())
-                f.write(text)
-            os.replace(tmp, path)
+            if mode == 'a' and os.path.exists(path):
+                with open(path) as old:
+                    text = old.read() + text
+            _write_whole(path, text)
 
     def diagram(self, x):
         """A diagram given as itself or by the name it was saved under."""
@@ -615,13 +631,20 @@ def main(argv):
     sys.path.insert(0, os.path.abspath(a.dir))
     try:
         exec(code, namespace(R))
+    except KeyboardInterrupt:  # Ctrl-C: the runs done so far stay, whole
+        sys.stderr.write('whirl auto: %s%s: interrupted\n' % (a.script, _script_line(a.script)))
+        return 130
+    except OSError as e:
+        if e.errno not in (errno.ENOSPC, errno.EDQUOT, errno.EIO, errno.EROFS):
+            what = '%s: %s' % (type(e).__name__, e)  # the script's own
+            sys.stderr.write('whirl auto: %s%s: %s\n' % (a.script, _script_line(a.script), what))
+            return 2
+        sys.stderr.write('whirl auto: %s: %s\n' % (e.filename or a.out, e.strerror))
+        return 1  # OUT cannot be written (a full disk): the files there are whole
     except Exception as e:  # bad input, or the script's own error as Python says it
         what = str(e) if isinstance(e, ScriptError) else '%s: %s' % (type(e).__name__, e)
         sys.stderr.write('whirl auto: %s%s: %s\n' % (a.script, _script_line(a.script), what))
         return 2
-    finally:
-        R.all_runs.close()
-        R.all_sols.close()
     return 1 if R.failed else 0
 
 

@@ -92,18 +92,19 @@ double run_now(void) {
 /* ---- one branch --------------------------------------------------------- */
 
 
-/* AUTO's PVLS on a collocation solution Z: its node values with the
- * weights of its quadrature (the system's norm weights: the integral over
- * [0, 1] of each node value). */
-static void pvls_on_solution(const branch_spec *b, const double *Z, double *pfull) {
-  const size_t n = b->model->problem.n, nnodes = b->nnodes;
-  double *q = malloc(b->nb * sizeof *q), *w = malloc((nnodes ? nnodes : 1) * sizeof *w);
-  if (nnodes && q && w && b->sys->norm_weights(q, b->sys->data) == 0) {
+int run_pvls_solution(const whirl_model *m, const whirl_system *sys, const double *Z,
+                      size_t nnodes, double *par) {
+  const size_t n = m->problem.n;
+  if (!m->pvls_solution || !sys->norm_weights || !nnodes) return 0;
+  double *q = malloc(sys->n * sizeof *q), *w = malloc(nnodes * sizeof *w);
+  int done = 0;
+  if (q && w && sys->norm_weights(q, sys->data) == 0) {
     for (size_t j = 0; j < nnodes; j++) w[j] = q[n * j]; /* then the period, free parameters */
-    b->model->pvls_solution(Z, nnodes, w, pfull, b->model->problem.data);
+    done = m->pvls_solution(Z, nnodes, w, par, m->problem.data) == 0;
   }
   free(q);
   free(w);
+  return done;
 }
 
 static void base_of(const branch_spec *b, const double *Z, const double *p,
@@ -125,9 +126,8 @@ static void base_of(const branch_spec *b, const double *Z, const double *p,
   if (b->fold || b->hopf || b->bploc || !b->model) return;
   if (b->kind == WHIRL_SOL_EQ && b->model->pvls)
     b->model->pvls(Z, pfull, b->model->problem.data);
-  else if ((b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP) &&
-           b->model->pvls_solution && b->sys->norm_weights)
-    pvls_on_solution(b, Z, pfull);
+  else if (b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP)
+    run_pvls_solution(b->model, b->sys, Z, b->nnodes, pfull);
 }
 
 /* The quantity a UZR/UZSTOP value refers to (whirl_cont_options.uz_fun). */

@@ -213,16 +213,8 @@ static int start_on_mesh(run_ctx *R, const whirl_solution *so, const double *x,
  * pcl's PVLS puts the Lin gap and vector into eta, Zx, Zy, from which its
  * run 7 closes the gap (UZR eta = 0). */
 static void start_pvls(run_ctx *R, whirl_bvp *bvp, const double *X, size_t nnodes) {
-  const whirl_system *sys = whirl_bvp_system(bvp);
-  if (!R->model->pvls_solution || !sys->norm_weights) return;
-  double *q = malloc(whirl_bvp_size(bvp) * sizeof *q), *w = malloc(nnodes * sizeof *w);
-  if (q && w && sys->norm_weights(q, sys->data) == 0) {
-    for (size_t j = 0; j < nnodes; j++) w[j] = q[R->n * j];
-    R->model->pvls_solution(X, nnodes, w, R->par, R->prob.data);
+  if (run_pvls_solution(R->model, whirl_bvp_system(bvp), X, nnodes, R->par))
     apply_run_file_par(R); /* the run file's PAR still overrides (AUTO) */
-  }
-  free(q);
-  free(w);
 }
 
 int run_bvp_start(run_ctx *R, const whirl_solution *so, whirl_bvp **bvp, double **X,

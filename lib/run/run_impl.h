@@ -182,6 +182,13 @@ typedef struct branch_spec {
  * model's start or the label so (NULL: none): *bvp, the start *X and a
  * direction *D (malloc'd, the caller frees them), and b's system.  0, -1
  * (failed, said), -2 (bad input, said). */
+/* run.c: AUTO's PVLS on a collocation solution Z of sys (orbit or
+ * boundary-value problem) with nnodes node values first: the weights of
+ * its quadrature from the system's norm weights, par updated.  1 when
+ * the model has pvls_solution and it ran, else 0. */
+int run_pvls_solution(const whirl_model *m, const whirl_system *sys, const double *Z,
+                      size_t nnodes, double *par);
+
 int run_bvp_start(run_ctx *R, const whirl_solution *so, whirl_bvp **bvp, double **X,
                   double **D, branch_spec *b);
 

@@ -239,6 +239,18 @@ bad "r = run(e='lg', c='lg'" "bad.auto" "a script that does not compile: exit 2,
 bad "r = run(e='lg', c='lg.nothere')" "c.lg.nothere" "a missing constants file: exit 2"
 bad "r = run(e='lg', c='lg')
 r('HB1')" "no HB1" "a label the diagram lacks: exit 2"
+# Ctrl-C inside a script (SIGINT after its first run): one line, exit 130,
+# the first run's files whole, no temporary file left
+printf '%s\n' "import os, signal" "r = run(e='lg', c='lg')" "os.kill(os.getpid(), signal.SIGINT)" \
+  "r = run(e='lg', c='lg')" > "$tmp/lg/int.auto"
+msg=$(cd "$tmp" && "$WHIRL" auto lg --script=lg/int.auto --quiet --out=int.out 2>&1 >/dev/null)
+rc=$?
+nb=$(grep -c . "$tmp/int.out/b.runs" 2>/dev/null)
+nr=$(cat "$tmp/int.out/runs/b.r1" "$tmp/int.out/runs/b.r1".bif* 2>/dev/null | grep -v '^   0' | grep -c .)
+[ $rc = 130 ] && [ "$(printf '%s\n' "$msg" | grep -c .)" = 1 ] &&
+  printf '%s' "$msg" | grep -q "int.auto:3: interrupted" && [ -n "$nb" ] &&
+  [ "$nb" -gt 0 ] && [ "$nb" = "$nr" ] && [ -z "$(find "$tmp/int.out" -name '*.tmp')" ]
+check $? "Ctrl-C in a script: exit $rc, '$msg', b.runs whole ($nb lines, run 1's $nr), no temporary file"
 msg=$(cd "$tmp" && "$WHIRL" auto lg --script --runs=lg --out=x.out 2>&1)
 [ $? = 2 ] && printf '%s' "$msg" | grep -q "exclude"; check $? "--script with --runs: exit 2"
 msg=$(cd "$tmp" && "$WHIRL" auto lg --script=nothere.auto --out=y.out 2>&1)
