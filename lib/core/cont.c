@@ -1074,6 +1074,13 @@ static void curved_guess(whirl_cont *c) {
 /* The system may change the representation of its unknowns between steps
  * (a new collocation mesh), once every point of the last step has been
  * handed out. */
+/* Does the run evaluate any test function (LP, BP, HB, PD, the system's)? */
+static int detects_anything(const whirl_cont *c) {
+  const whirl_cont_options *o = &c->opt;
+  return o->detect_lp || o->detect_bp || o->detect_hb || o->detect_pd ||
+         (o->detect_sys && c->sys.test && c->sys.ntest);
+}
+
 static int remap_if_asked(whirl_cont *c) {
   const size_t N = c->N;
   double *v[5] = {c->cur.X, c->cur.t, c->Xstart, c->Xprev, c->tprev};
@@ -1083,6 +1090,7 @@ static int remap_if_asked(whirl_cont *c) {
     return WHIRL_FAIL(c, rc, "the system's remap callback failed (%d)", rc);
   if (rc != 1) return 0;
   c->fact_ok = 0;
+  c->remapped = 1;
   if ((rc = apply_weights(c)) != 0) return rc; /* on the new mesh */
   /* the unit tangents (current and previous) stay unit */
   double *tangents[2] = {c->cur.t, c->have_tprev ? c->tprev : NULL};
@@ -1096,10 +1104,7 @@ static int remap_if_asked(whirl_cont *c) {
    * linear); the determinant and the spectrum are analysed there anew
    * only when a test compares them with the next point's (whirl's
    * detection after a mesh change), not for the stability alone */
-  const whirl_cont_options *o = &c->opt;
-  if (!o->detect_lp && !o->detect_bp && !o->detect_hb && !o->detect_pd &&
-      !(o->detect_sys && c->sys.test && c->sys.ntest))
-    return 0;
+  if (!detects_anything(c)) return 0;
   rc = cont_analyse(c, &c->cur, c->dir);
   if (rc < 0) return rc;
   if (rc > 0)
@@ -1109,9 +1114,39 @@ static int remap_if_asked(whirl_cont *c) {
   return 0;
 }
 
+/* The current point after a change of representation (a new mesh) is the
+ * old one interpolated, a solution of the new discretisation only to the
+ * interpolation error; where that error is large (an orbit near a
+ * homoclinic one, whose fast excursion the new mesh moves) the next step's
+ * corrector must remove it as well as follow the branch, and fails at every
+ * step length down to DSMIN (AUTO-07p has the same weakness: its ADAPT
+ * interpolates and steps on).  So when a step after a remap fails, the
+ * current point is first corrected on the new representation, on the
+ * hyperplane through it normal to the direction (a step of length 0), with
+ * twice the corrector's iterations; then the step is retried at the same
+ * length.  0: corrected; 1: not (the step is halved as before). */
+static int recorrect_remapped(whirl_cont *c) {
+  const size_t N = c->N;
+  c->remapped = 0;
+  memcpy(c->trial.X, c->cur.X, N * sizeof *c->trial.X);
+  const int maxit = c->opt.newton_maxit;
+  c->opt.newton_maxit = 2 * maxit;
+  int rc = cont_correct(c, c->cur.X, c->dir, 0.0, c->trial.X);
+  c->opt.newton_maxit = maxit;
+  if (rc != 0) return rc < 0 ? rc : 1;
+  memcpy(c->cur.X, c->trial.X, N * sizeof *c->cur.X);
+  c->cur.p[c->opt.icp] = c->cur.X[c->n];
+  ++c->stats.recorrected;
+  if (!detects_anything(c)) return 0;
+  rc = cont_analyse(c, &c->cur, c->dir); /* the tests at the corrected point */
+  return rc < 0 ? rc : rc > 0 ? 1 : 0;
+}
+
 /* Predict along the secant (or the tangent), correct, analyse; halve the
- * step on a failure or a turn sharper than max_angle.  0 with c->trial the
- * new point, WHIRL_DONE at DSMIN (the branch ends there), < 0 fatal. */
+ * step on a failure or a turn sharper than max_angle (after a remap, first
+ * correct the current point on the new representation: recorrect_remapped).
+ * 0 with c->trial the new point, WHIRL_DONE at DSMIN (the branch ends
+ * there), < 0 fatal. */
 static int predict_correct(whirl_cont *c, double *cosang, int *its) {
   const size_t n = c->n, N = c->N;
   const whirl_cont_options *o = &c->opt;
@@ -1148,6 +1183,11 @@ static int predict_correct(whirl_cont *c, double *cosang, int *its) {
       rc = cont_analyse(c, &c->trial, c->dir);
     }
     if (rc < 0) return rc;
+    if (rc > 0 && c->remapped) {
+      if ((rc = recorrect_remapped(c)) < 0) return rc;
+      if (rc == 0) continue;
+      rc = 1;
+    }
     if (rc > 0) {
       last_fail = rc;
       c->ds *= 0.5;
@@ -1460,6 +1500,7 @@ int whirl_cont_step(whirl_cont *c) {
   double cosang = 1.0;
   int its = 0;
   if (!rc) rc = predict_correct(c, &cosang, &its);
+  c->remapped = 0;
   if (rc) return rc;
   if (leaves_its_bound(c)) return WHIRL_DONE;
   const size_t nev = find_events(c);

@@ -59,6 +59,9 @@ struct whirl_cont {
   double *row;        /* N: border row of the current factorisation */
   double *row2;       /* N: border row wanted (chord Newton) */
   int fact_ok;        /* a factorisation chord Newton may use is held */
+  int remapped;       /* the current point was remapped (a new mesh) since
+                         it was corrected: not yet a solution of the new
+                         representation (recorrect_remapped) */
   double *Xfact;      /* N: the point of the last factorisation ... */
   double *pfact;      /* npar: ... and its parameters (tangent_from_newton
                          asks the spectrum there, where the system's

@@ -178,6 +178,11 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
   /* the tangent and tests from the corrector's last factorisation, as
    * AUTO: a Jacobian and a factorisation fewer a step */
   o->tangent_from_newton = 1;
+  /* AUTO's step control has no turn limit; the library's 0.2 rad halves
+   * steps on snaking branches of orbits (pla's c.pla.3: 9 000 steps where
+   * AUTO takes 5 485, 5 382 with 0.5 rad) and missed two of tor's LPs;
+   * 0.5 rad keeps obv's three BPs (doc/auto-reference.md, the turn limit) */
+  o->max_angle = 0.5;
   o->detect_lp = s->ilp;
   /* ISP = 1: "branch points ... are not detected for periodic solutions
    * and boundary value problems" (AUTO-07p manual, ISP) */
@@ -455,6 +460,9 @@ static void branch_summary(run_ctx *R, const branch_spec *b, whirl_cont *c,
   fprintf(R->log, "  %zu steps, %zu rejected, %zu Newton iterations, %zu "
           "Jacobians, %zu special points\n", st->steps, st->rejected,
           st->newton_its, st->jac_evals, st->special);
+  if (st->recorrected)
+    fprintf(R->log, "  %zu points corrected on a new mesh before the step from them "
+            "converged\n", st->recorrected);
   if (st->spectrum_failed)
     fprintf(R->log, "  stability unknown at %zu points: the spectrum could not "
             "be computed there (STAB -1)\n", st->spectrum_failed);

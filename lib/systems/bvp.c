@@ -506,8 +506,8 @@ static int bvp_norm_weights(double *q, void *data) {
 }
 
 /* The system's remap hook: a new mesh every adapt_every accepted points
- * (AUTO's IAD), equidistributing the NCOL-th derivative as the periodic
- * collocation does (colloc_basis_new_mesh), with the current point, the
+ * (AUTO's IAD), equidistributing AUTO's estimate of the (NCOL+1)-th
+ * derivative (colloc_basis_new_mesh_jumps), with the current point, the
  * tangent, the previous points and the integral conditions' reference
  * carried over (their node values; the free parameters stay). */
 static int bvp_remap(double *const *v, size_t nv, const double *p, void *data) {

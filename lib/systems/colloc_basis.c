@@ -184,33 +184,44 @@ int colloc_basis_new_mesh(size_t n, size_t m, size_t N, const double *dm,
   return equidistribute(N, old, mesh, E, Q);
 }
 
+/* The density of x^(m+1) from the jumps of the piecewise constant x^(m)
+ * (D[n N]): interval i takes the jump to interval i + 1 over the distance
+ * of their midpoints, the last interval the jump from the one before it
+ * over its own length.  Returns 0 when every |x^(m)| <= 1e-7 (a solution
+ * too flat to say where the mesh should go). */
+static int jump_density(size_t n, size_t m, size_t N, const double *D, const double *old,
+                        double *E) {
+  const double pwr = 1.0 / ((double)m + 1.0);
+  int flat = 1;
+  for (size_t i = 0; i < n * N; ++i)
+    if (fabs(D[i]) > 1e-7) flat = 0;
+  if (flat) return 0;
+  for (size_t i = 0; i + 1 < N; ++i) {
+    const double mid = 0.5 * (old[i + 2] - old[i]);
+    double e = 0.0;
+    for (size_t r = 0; r < n; ++r) e += pow(fabs(D[n * (i + 1) + r] - D[n * i + r]) / mid, pwr);
+    E[i] = e;
+  }
+  const size_t last = N - 1;
+  const double hl = old[N] - old[N - 1];
+  double e = 0.0;
+  for (size_t r = 0; r < n; ++r)
+    e += pow(fabs(D[n * (last - 1) + r] - D[n * last + r]) / hl, pwr);
+  E[last] = e;
+  return 1;
+}
+
 int colloc_basis_new_mesh_jumps(size_t n, size_t m, size_t N, const double *dm,
                                 const double *X, const double *old, double *mesh,
                                 double *E, double *Q, double *D) {
-  const double pwr = 1.0 / ((double)m + 1.0);
   for (size_t i = 0; i < N; ++i)
     for (size_t r = 0; r < n; ++r) {
       D[n * i + r] = mth_derivative(n, m, dm, X, old, i, r);
       if (!isfinite(D[n * i + r])) return -1 - (int)i;
     }
-  for (size_t i = 0; i < N; ++i) {
-    double e = 0.0;
-    for (size_t r = 0; r < n; ++r) {
-      /* the jumps to the neighbours over the distances of the midpoints;
-       * at an end the one neighbour; one interval: none */
-      double s = 0.0;
-      int k = 0;
-      if (i > 0) {
-        s += fabs(D[n * i + r] - D[n * (i - 1) + r]) / (0.5 * (old[i + 1] - old[i - 1]));
-        k++;
-      }
-      if (i + 1 < N) {
-        s += fabs(D[n * (i + 1) + r] - D[n * i + r]) / (0.5 * (old[i + 2] - old[i]));
-        k++;
-      }
-      e += k ? pow(s / k, pwr) : 0.0;
-    }
-    E[i] = e;
+  if (N < 2 || !jump_density(n, m, N, D, old, E)) {
+    memcpy(mesh, old, (N + 1) * sizeof *mesh);
+    return 0;
   }
   return equidistribute(N, old, mesh, E, Q);
 }

@@ -61,10 +61,13 @@ int colloc_basis_new_mesh(size_t n, size_t m, size_t N, const double *dm,
                           const double *X, const double *old, double *mesh,
                           double *E, double *Q);
 
-/* The same with the density of x^(m+1) estimated from the jumps of the
- * piecewise constant x^(m) between neighbouring intervals (one-sided at
- * the ends of [0, 1]; Russell & Christiansen 1978, as AUTO-07p's manual
- * describes its IAD), sum_r |x_r^(m+1)|^{1/(m+1)}; scratch D[n N]. */
+/* AUTO-07p's IAD for boundary-value problems (its manual; Russell &
+ * Christiansen 1978): the same with the density sum_r |x_r^(m+1)|^{1/(m+1)},
+ * x^(m+1) on interval i estimated by the jump of the piecewise constant
+ * x^(m) to interval i + 1 over the distance of their midpoints, on the last
+ * interval by the jump from the one before over its own length (one-sided:
+ * a symmetric solution gets AUTO's asymmetric mesh).  When every |x^(m)|
+ * <= 1e-7 the mesh is kept (0).  Scratch D[n N]. */
 int colloc_basis_new_mesh_jumps(size_t n, size_t m, size_t N, const double *dm,
                                 const double *X, const double *old, double *mesh,
                                 double *E, double *Q, double *D);

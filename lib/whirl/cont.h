@@ -174,6 +174,8 @@ WHIRL_API void whirl_cont_options_default(whirl_cont_options *opt);
 typedef struct whirl_cont_stats {
   size_t steps;       /* accepted continuation steps */
   size_t rejected;    /* steps rejected (no convergence, angle, domain) */
+  size_t recorrected; /* remapped points corrected on their new
+                         representation before a step could be made */
   size_t newton_its;  /* Newton iterations, all purposes */
   size_t f_evals;     /* F evaluations (including finite differences) */
   size_t jac_evals;   /* Jacobian evaluations */

@@ -141,9 +141,26 @@ ok $? "the table: parameters, l2_norm, max_u, max_v, stable; no period column"
 lp=$(col br.out lambda LP)
 echo "$lp" | awk '{ d = $1 - 3.513830719125162; exit !(NR == 1 && d * d < 1e-14) }'
 ok $? "the fold at lambda* = 3.513830719125162 to 1e-7 ($lp)"
-mx=$(col br.out max_u LP)
+# max u is AUTO's, the largest at the nodes: on a uniform mesh (IAD = 0)
+# one sits at the peak t = 1/2 (on an adapted one AUTO's and whirl's miss it
+# by 5e-5, below)
+sed 's/^NMX = 100$/NMX = 100\nIAD = 0/' "$tmp/br.whirl" > "$tmp/bu.whirl"
+(cd "$tmp" && "$WHIRL" run bu.whirl --no-plot --quiet > /dev/null 2> bu.err)
+mx=$(col bu.out max_u LP)
 echo "$mx" | awk '{ t = 4.798714560 / 4; e = 2 * log((exp(t) + exp(-t)) / 2); d = $1 - e; exit !(d * d < 1e-12) }'
-ok $? "max u at the fold: 2 ln cosh(theta*/4) = 1.1868421 to 1e-6 ($mx)"
+ok $? "max u at the fold on a uniform mesh: 2 ln cosh(theta*/4) = 1.1868421 to 1e-6 ($mx)"
+# The adapted mesh is AUTO's (IAD, mesh.f90's EQDF): AUTO-07p 0.9.2 on its
+# demo exp (these constants) adapts after steps 3, 6 and 9 and stores its
+# UZ lambda = 0.5 on the mesh of step 9, one-sided and so asymmetric on the
+# symmetric solution (its s.exp, label 2); whirl's steps 1-9 are AUTO's
+printf 'model = bratu.so\nIPS = 4\nICP = [lambda]\nNBC = 2\nNTST = 10\nNCOL = 4\nIAD = 3\nISP = 1\nDS = 0.01\nDSMIN = 0.001\nDSMAX = 0.2\nNMX = 12\nEPSL = 1e-7\nEPSU = 1e-7\nEPSS = 1e-4\nUZR = {lambda: [0.5]}\n' > "$tmp/am.whirl"
+(cd "$tmp" && "$WHIRL" run am.whirl --no-plot --quiet > /dev/null 2> am.err)
+awk '$1 == "LAB" && $4 == "UZ" { on = 1; next } on && $1 == "MESH" { for (i = 2; i <= NF; i++) printf "%s ", $i; print ""; exit }' \
+  "$tmp/am.out/solutions" > "$tmp/am.mesh"
+echo "0 0.0958770209 0.1920107166 0.2898821951 0.3925066049 0.5124759076 0.6143268458 0.7121105230 0.8082515058 0.9041331521 1" |
+  awk -v w="$(cat "$tmp/am.mesh")" '{ n = split(w, m, " "); if (n != NF) exit 1
+    for (i = 1; i <= NF; i++) { d = m[i] - $i; if (d * d > 1e-10) exit 1 } }'
+ok $? "the adapted mesh at UZ lambda = 0.5 is AUTO's to 1e-5 (whirl: $(cat "$tmp/am.mesh"))"
 grep -q "KIND bvp .* NTST 10 NCOL 4 NFREE 0$" "$tmp/br.out/solutions"
 ok $? "labels are stored as KIND bvp with their mesh"
 # restart at the lower branch's UZ lambda = 3 onto NTST 20: on along the

@@ -1126,6 +1126,59 @@ static void test_start_on_singular_solution(void) {
   whirl_branch_free(b);
 }
 
+/* A remap that leaves the current point far from a solution of the new
+ * representation (an interpolation onto a new mesh with a large error):
+ * F = (x0 - p, sinh(x1 - p)), the line x0 = x1 = p; before the 5th step
+ * the remap moves x1 of the current point by 2, from where Newton on
+ * sinh needs 5 iterations (2 -> 1.04 -> 0.26 -> 6e-3 -> 7e-8 -> 0), more
+ * than newton_maxit = 3 at any step length: the branch ended at DSMIN.
+ * Now the remapped point is corrected on the new representation first
+ * (with twice the iterations) and the branch goes on along the line. */
+typedef struct bad_remap {
+  int calls;
+} bad_remap;
+static int sinh_line_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[0] - p[0];
+  f[1] = sinh(x[1] - p[0]);
+  return 0;
+}
+static int bad_remap_fn(double *const *v, size_t nv, const double *p, void *d) {
+  (void)nv, (void)p;
+  bad_remap *r = d;
+  if (++r->calls != 5) return 0;
+  v[0][1] += 2.0;
+  return 1;
+}
+static void test_recorrect_after_remap(void) {
+  bad_remap r = {0};
+  whirl_system s = {.name = "sinh line", .n = 2, .npar = 1, .F = sinh_line_F,
+                    .remap = bad_remap_fn, .data = &r};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = o.ds_max = 0.05;
+  o.ds_min = 1e-4;
+  o.newton_maxit = 3;
+  o.nmx = 10;
+  char err[256];
+  whirl_cont *c = whirl_cont_alloc(&s, &o, err, sizeof err);
+  double x0[2] = {0, 0}, p0 = 0, dev = 0.0;
+  size_t last = 0;
+  int rc = c ? whirl_cont_start(c, x0, &p0, +1) : -1;
+  while (rc == WHIRL_OK && (rc = whirl_cont_step(c)) == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(c);
+    dev = fmax(dev, fmax(fabs(pt->x[0] - pt->p[0]), fabs(pt->x[1] - pt->p[0])));
+    last = pt->index;
+  }
+  ok(c && rc == WHIRL_DONE && whirl_cont_stop_reason(c) == WHIRL_STOP_NMX && last >= 10 &&
+         dev < 1e-9 && whirl_cont_get_stats(c)->recorrected == 1,
+     "a remapped point 2 off the branch is corrected on its new representation before "
+     "the next step (stop: %s after point %zu, %zu corrected, max dev %.2g)",
+     c ? whirl_stop_reason_name(whirl_cont_stop_reason(c)) : err, last,
+     c ? whirl_cont_get_stats(c)->recorrected : 0, dev);
+  whirl_cont_free(c);
+}
+
 int main(void) {
   test_start_messages();
   test_cusp(1);
@@ -1146,6 +1199,7 @@ int main(void) {
   test_two_at_once();
   test_weights();
   test_system_weights();
+  test_recorrect_after_remap();
   test_errors();
   test_start_on_singular_solution();
   return done_testing();
