@@ -260,10 +260,21 @@ static int newer(const struct stat *a, const struct stat *b) {
                                                 : a->st_mtim.tv_nsec > b->st_mtim.tv_nsec;
 }
 
+/* DIR's adapter and plug-in files of m. */
+static void model_files(const char *dir, const auto_model_info *m, char *adapter, char *so,
+                        size_t len) {
+  if (m->file) {
+    snprintf(adapter, len, "%s/%s.c", dir, m->file);
+    snprintf(so, len, "%s/%s.so", dir, m->file);
+  } else {
+    snprintf(adapter, len, "%s/auto_model.c", dir);
+    snprintf(so, len, "%s/%s.so", dir, m->name);
+  }
+}
+
 int auto_model_current(const char *out, const char *source, const auto_model_info *m) {
   char adapter[4200], so[4200];
-  snprintf(adapter, sizeof adapter, "%s/auto_model.c", out);
-  snprintf(so, sizeof so, "%s/%s.so", out, m->name);
+  model_files(out, m, adapter, so, sizeof adapter);
   struct stat ss, sa, sl;
   if (stat(source, &ss) || stat(adapter, &sa) || stat(so, &sl)) return 0;
   if (!newer(&sl, &ss) || !newer(&sl, &sa)) return 0;
@@ -284,8 +295,7 @@ int auto_model_current(const char *out, const char *source, const auto_model_inf
 
 int auto_model_build(const char *stage, const char *source, const auto_model_info *m) {
   char adapter[4200], so[4200], log[4200], inc[4200];
-  snprintf(adapter, sizeof adapter, "%s/auto_model.c", stage);
-  snprintf(so, sizeof so, "%s/%s.so", stage, m->name);
+  model_files(stage, m, adapter, so, sizeof adapter);
   snprintf(log, sizeof log, "%s/compile.log", stage);
   snprintf(inc, sizeof inc, "-I%s", include_dir());
   FILE *f = fopen(adapter, "w");

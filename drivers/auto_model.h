@@ -13,13 +13,18 @@ typedef struct auto_model_info {
   size_t npar;                 /* PAR(1..npar) are whirl's parameters */
   const char *const *p_names;  /* npar names */
   const char *const *x_names;  /* ndim names */
+  const char *file;            /* the plug-in's file stem (FILE.so) and its
+                                  adapter's (FILE.c); NULL: NAME.so and
+                                  auto_model.c.  c-files of one problem
+                                  with another NDIM get a plug-in each */
 } auto_model_info;
 
 /* The equations file of demo NAME in DIR (NAME.f90, NAME.f, else NAME.c)
  * into path[len]: 0, or 2 with a message printed (none, or C). */
 int auto_model_source(const char *dir, const char *name, char *path, size_t len);
 
-/* Write STAGE/auto_model.c and compile it with SOURCE into STAGE/NAME.so.
+/* Write STAGE/auto_model.c and compile it with SOURCE into STAGE/NAME.so
+ * (m->file: STAGE/FILE.c into STAGE/FILE.so).
  * 0, or 2 with a message and the compiler's own lines printed (the
  * equations do not compile, FUNC or STPNT missing), 1 for I/O errors. */
 int auto_model_build(const char *stage, const char *source, const auto_model_info *m);

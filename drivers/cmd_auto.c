@@ -44,6 +44,8 @@ typedef struct auto_run {
   int sub;        /* a branch MXBF switches to (no IRS of its own) */
   int br_fixed;   /* its AUTO branch number (0: NEWLAB's) */
   int br_auto;    /* the AUTO branch number its first branch got */
+  int ndim;       /* its NDIM (a plug-in of its own when not the first run's) */
+  char **x_names; /* its ndim state names */
 } auto_run;
 
 typedef struct auto_job {
@@ -217,12 +219,15 @@ static int read_constants(auto_job *J) {
       const int a = abs(it.index);
       if (a != 11 && a <= 36 && (size_t)a > J->npar) J->npar = (size_t)a;
     }
-    if (!J->ndim) whirl_auto_constants_int(r->ac, "NDIM", &J->ndim);
+    whirl_auto_constants_int(r->ac, "NDIM", &r->ndim);
+    if (!J->ndim) J->ndim = r->ndim;
   }
   if (J->ndim < 1) {
     cli_error("auto", "%s/c.%s: NDIM missing", J->dir, J->run[0].c);
     return 2;
   }
+  for (size_t i = 0; i < J->nrun; i++)
+    if (J->run[i].ndim < 1) J->run[i].ndim = J->ndim;
   if (!J->npar) J->npar = 36; /* AUTO's NPARX */
   return 0;
 }
@@ -287,11 +292,17 @@ static long restart_from(const auto_job *J, size_t i) {
   return (long)i - 1;
 }
 
+/* The plug-in file stem of NDIM (not the first run's): NAME.ndimK. */
+static void ndim_file(const auto_job *J, int ndim, char *buf, size_t len) {
+  snprintf(buf, len, "%s.ndim%d", J->name, ndim);
+}
+
 /* Run i's run file, restarting from run FROM (-1: none).  0 or 2. */
 static int translate_run(auto_job *J, size_t i, long from) {
   auto_run *r = &J->run[i];
-  char model[400], restart[4400], out[4400];
-  snprintf(model, sizeof model, "%s.so", J->name);
+  char model[700], restart[4400], out[4400], file[600];
+  ndim_file(J, r->ndim, file, sizeof file);
+  snprintf(model, sizeof model, "%s.so", r->ndim == J->ndim ? J->name : file);
   /* beside the run file in J->out, as a run file's paths are (run_path) */
   if (from >= 0 || from == EXTERNAL)
     snprintf(restart, sizeof restart, "%s.out", from >= 0 ? J->run[from].id : r->from);
@@ -500,29 +511,49 @@ static int install_stage(const char *stage, const char *out) {
   return rc;
 }
 
-/* Compile the plug-in in OUT.tmp.PID, then into OUT.  0, 1 or 2. */
+/* Compile the plug-ins in OUT.tmp.PID, then into OUT: NAME.so for the
+ * first run's NDIM, NAME.ndimK.so for each other NDIM of the c-files (an
+ * extended system in the same equations file, as demo pcl's), the model's
+ * name NAME in all (a run restarts from another NDIM's label as AUTO's
+ * READBV does).  Each run's state names in r->x_names.  0, 1 or 2. */
 static int build_model(auto_job *J) {
-  char src[4400], stage[4400];
+  char src[4400], stage[4400], file[600];
   int rc = auto_model_source(J->dir, J->name, src, sizeof src);
   if (rc) return rc;
+  J->p_names = make_names(J, "parnames", "PAR", J->npar);
+  J->x_names = make_names(J, "unames", "U", (size_t)J->ndim);
+  if (!J->p_names || !J->x_names) return 1;
+  for (size_t i = 0; i < J->nrun; i++) {
+    auto_run *r = &J->run[i];
+    r->x_names = r->ndim == J->ndim ? J->x_names : make_names(J, "unames", "U", (size_t)r->ndim);
+    if (!r->x_names) return 1;
+  }
   snprintf(stage, sizeof stage, "%s.tmp.%ld", J->out, (long)getpid());
   if (mkdir(stage, 0777) != 0) {
     cli_error("auto", "%s: %s", stage, strerror(errno));
     return 1;
   }
-  J->p_names = make_names(J, "parnames", "PAR", J->npar);
-  J->x_names = make_names(J, "unames", "U", (size_t)J->ndim);
-  if (!J->p_names || !J->x_names) return 1;
-  const auto_model_info m = {J->name, J->ndim, J->npar, (const char *const *)J->p_names,
-                             (const char *const *)J->x_names};
-  if (auto_model_current(J->out, src, &m)) {
-    rmdir(stage);
-    return 0;
+  int built = 0;
+  for (size_t i = 0; i < J->nrun && !rc; i++) {
+    const auto_run *r = &J->run[i];
+    size_t first = 0; /* one plug-in an NDIM: the first run with it builds */
+    while (J->run[first].ndim != r->ndim) first++;
+    if (first != i) continue;
+    ndim_file(J, r->ndim, file, sizeof file);
+    const auto_model_info m = {J->name, r->ndim, J->npar, (const char *const *)J->p_names,
+                               (const char *const *)r->x_names,
+                               r->ndim == J->ndim ? NULL : file};
+    if (auto_model_current(J->out, src, &m)) continue;
+    rc = auto_model_build(stage, src, &m);
+    built = 1;
   }
-  rc = auto_model_build(stage, src, &m);
   if (rc) {
     remove_files(stage);
     return rc;
+  }
+  if (!built) {
+    rmdir(stage);
+    return 0;
   }
   return install_stage(stage, J->out);
 }
@@ -585,8 +616,8 @@ static int write_auto_files(auto_job *J, size_t i) {
     for (size_t m = 0; m < J->run[g].nlabs; m++)
       if (J->run[g].labs[m].label > r->offset) r->offset = J->run[g].labs[m].label;
   r->br_auto = first_branch(J, i);
-  whirl_auto_output o = {dir, r->ac, J->ndim, J->npar, (const char *const *)J->p_names,
-                         (const char *const *)J->x_names, r->offset, !r->fresh, r->br_auto};
+  whirl_auto_output o = {dir, r->ac, r->ndim, J->npar, (const char *const *)J->p_names,
+                         (const char *const *)r->x_names, r->offset, !r->fresh, r->br_auto};
   size_t n = 0;
   if (whirl_auto_labels(&o, NULL, 0, &n, msg, sizeof msg) != WHIRL_OK ||
       !(r->labs = calloc(n ? n : 1, sizeof *r->labs)) ||
@@ -690,6 +721,7 @@ static int insert_switch(auto_job *J, size_t i, size_t at, size_t j, int lab, in
   memcpy(r->id, id, sizeof id);
   snprintf(r->irs, sizeof r->irs, "%d", lab);
   r->sub = 1, r->br_fixed = br;
+  r->ndim = p->ndim, r->x_names = p->x_names; /* p's (freed with the runs of its NDIM) */
   /* the constants file again with ISW = -1 and the signed DS last (a later
    * key replaces an earlier one) */
   char path[4400], *text = NULL;
@@ -922,6 +954,8 @@ int cmd_auto(int argc, char **argv) {
   if (!rc) rc = build_model(&J);
   if (!rc) rc = run_all(&J);
   for (size_t i = 0; i < J.nrun; i++) {
+    if (J.run[i].x_names != J.x_names && !J.run[i].sub)
+      free_names(J.run[i].x_names, (size_t)J.run[i].ndim);
     whirl_auto_constants_free(J.run[i].ac);
     free(J.run[i].text);
     free(J.run[i].labs);

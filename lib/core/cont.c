@@ -1383,6 +1383,13 @@ static size_t find_events(whirl_cont *c) {
         if (!K->bound) continue;
         cont_state_copy(c, q, b); /* not localised: end at the trial point */
       }
+      /* a zero at the start point itself, on the first step: the start (a
+       * label of an earlier run, or a point where a test function is zero
+       * to rounding, as the trivial branch of an eigenvalue problem in
+       * its integral condition's parameter) is no special point of this
+       * branch; AUTO labels none there */
+      if (!K->bound && c->stats.steps == 0 && fabs(q->s - a->s) <= 1e-6 * fabs(c->ds))
+        continue;
       if (K->ev == EV_SYS) {
         if (q->ttype[k] == 0) continue;
         drop_lp_at(c, &nev, q);

@@ -213,6 +213,28 @@ near "${1:-0}" 0.49 1e-9 && near "${2:-0}" 0.4949747468 1e-7 &&
   near "${3:-0}" 6.283185307179586 1e-6 && near "${4:-0}" -1 1e-9
 check $? "a boundary-value problem of NDIM 3 from an orbit of NDIM 2, the new component from STPNT: a ${1:-?}, NRM u1 ${2:-?}, PAR(11) ${3:-?}, w ${4:-?} (-1)"
 
+# the same three runs from constants files in the default order (c.lw.1,
+# c.lw.2, c.lw.3), the third of NDIM 3: a plug-in of its own NDIM
+# (lw.ndim3.so) beside lw.so, and the extended orbit's w = -1 at a = 0.49
+mkdir "$tmp/lwd" && cp "$tmp/lw/lw.f90" "$tmp/lwd/lwd.f90" && cp "$tmp/lw/c.lw" "$tmp/lwd/c.lwd.1"
+printf '%s\n' "NDIM = 2, IPS = 2, IRS = 'HB1', ICP = [1, 11], NTST = 20, NCOL = 4, IAD = 3" \
+  "ISP = 1, ISW = 1, NMX = 200, NPR = 0, MXBF = 0, NPAR = 11" \
+  "EPSL = 1e-10, EPSU = 1e-10, EPSS = 1e-8, DS = 0.01, DSMIN = 1e-5, DSMAX = 0.05" \
+  "UZR = {1: 0.25}, UZSTOP = {1: 0.25}" > "$tmp/lwd/c.lwd.2"
+printf '%s\n' "NDIM = 3, IPS = 4, IRS = 'UZ1', ICP = [1, 11], NBC = 3, NINT = 1, PAR = {3: 1}" \
+  "NTST = 20, NCOL = 4, IAD = 3, ISP = 1, ISW = 1, NMX = 200, NPR = 0, NPAR = 11" \
+  "EPSL = 1e-10, EPSU = 1e-10, EPSS = 1e-8, DS = 0.01, DSMIN = 1e-5, DSMAX = 0.05" \
+  "UZR = {1: 0.49}, UZSTOP = {1: 0.5}" > "$tmp/lwd/c.lwd.3"
+msg=$(cd "$tmp" && "$WHIRL" auto lwd --quiet --out=lwd.out 2>&1)
+rc=$?
+w=$(awk '$1 == "LAB" && $4 == "UZ" { u = 1; next } u && $1 == "PAR" { a = $2; w = $8; next }
+         u && $1 == "X" { print a, $4; exit }' "$tmp/lwd.out/lwd.3.out/solutions" 2>/dev/null)
+set -- $w
+[ $rc = 0 ] && [ -f "$tmp/lwd.out/lwd.so" ] && [ -f "$tmp/lwd.out/lwd.ndim3.so" ] &&
+  near "${1:-0}" 0.49 1e-9 && near "${2:-0}" -1 1e-9 &&
+  grep -q "ndim3" "$tmp/lwd.out/lwd.3.whirl" && ! grep -q "ndim" "$tmp/lwd.out/lwd.2.whirl"
+check $? "constants files of NDIM 2 and 3 in the default order: a plug-in for each, the third run's w = ${2:-?} at a = ${1:-?} (exit $rc$( [ $rc = 0 ] || printf ': %s' "$(printf '%s' "$msg" | head -1)"))"
+
 # the b. file's columns as AUTO's (io.f90, WRLINE): U(1..N2) with N2 =
 # NDIM, 7 - NICP where both exceed 7, none past 7 parameters
 c7=$(printf '%s\n' "$out" | sed -n 's/^cols7 //p'); c6=$(printf '%s\n' "$out" | sed -n 's/^cols6 //p')

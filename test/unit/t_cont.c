@@ -1179,6 +1179,37 @@ static void test_recorrect_after_remap(void) {
   whirl_cont_free(c);
 }
 
+/* A zero of a test function at the start point itself is no special
+ * point of the branch (AUTO labels none at its start): the transcritical
+ * x (p - x) = 0 started on x = 0 at p = 1e-13, towards p < 0, crosses its
+ * branch point p = 0 within 1e-13 of the start; further on (p = -1) the
+ * same crossing is a BP.  (Demo pcl's eigenvalue problem on its trivial
+ * branch had such a zero at the start, and a BP there ended its run.) */
+static int transcritical_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[0] * (p[0] - x[0]);
+  return 0;
+}
+static void test_zero_at_start(void) {
+  whirl_system s = {.name = "transcritical", .n = 1, .npar = 1, .F = transcritical_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.05;
+  o.ds_max = 0.1;
+  o.nmx = 10;
+  const double x0[1] = {0.0};
+  size_t nbp[2];
+  const double pstart[2] = {1e-13, 0.3};
+  for (int k = 0; k < 2; ++k) {
+    whirl_branch *b = run(&s, &o, x0, &pstart[k], -1, NULL);
+    nbp[k] = b ? count_type(b, WHIRL_PT_BP) : 99;
+    whirl_branch_free(b);
+  }
+  ok(nbp[0] == 0 && nbp[1] == 1,
+     "a test function's zero at the start point is not labelled (%zu BP from p = 1e-13), one "
+     "further on is (%zu BP from p = 0.3)", nbp[0], nbp[1]);
+}
+
 int main(void) {
   test_start_messages();
   test_cusp(1);
@@ -1200,6 +1231,7 @@ int main(void) {
   test_weights();
   test_system_weights();
   test_recorrect_after_remap();
+  test_zero_at_start();
   test_errors();
   test_start_on_singular_solution();
   return done_testing();
