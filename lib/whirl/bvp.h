@@ -53,8 +53,10 @@
  *
  * Mesh adaptation (AUTO's IAD): with options.adapt_every = k > 0 the
  * system's remap hook makes a new mesh every k accepted points, which
- * equidistributes |u^(NCOL)|^{1/(NCOL+1)} as the periodic collocation does
- * (whirl/colloc.h; de Boor 1973), the node values of the current point,
+ * equidistributes AUTO-07p's estimate of |u^(NCOL+1)|^{1/(NCOL+1)}: the
+ * jump of the piecewise constant u^(NCOL) to the next interval over the
+ * distance of their midpoints (de Boor 1973; Russell & Christiansen 1978;
+ * doc/auto-reference.md), the node values of the current point,
  * tangent, previous points and the integral conditions' reference carried
  * over; whirl_bvp_adaptations counts the new meshes.  0: a fixed mesh (as
  * allocated, or set by whirl_bvp_set_mesh).
