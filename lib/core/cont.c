@@ -71,6 +71,7 @@ void whirl_cont_options_default(whirl_cont_options *o) {
   o->newton_chord = 0;
   o->chord_theta = 0.25;
   o->max_angle = 0.2;
+  o->lead = -1;
   o->tangent_predictor = 0;
   o->tangent_from_newton = 0;
   o->detect_lp = o->detect_bp = o->detect_hb = o->detect_pd = 1;
@@ -217,6 +218,8 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
     why = "need a finite p_weight >= 0";
   else if (!weights_valid(opt->x_weight, sys->n, opt->p_weight))
     why = "x_weight: need finite weights >= 0, one > 0 when p_weight is 0";
+  else if (opt->lead < -1 || opt->lead >= (long)sys->n)
+    why = "lead: -1 (the continuation parameter) or an unknown's index < n";
   else if (opt->newton_chord && !(opt->chord_theta > 0 && opt->chord_theta < 1))
     why = "chord Newton needs 0 < chord_theta < 1";
   else if (opt->linsol == WHIRL_LINSOL_SPARSE &&
@@ -603,7 +606,7 @@ int cont_tangent(whirl_cont *c, cont_state *st, const double *dir) {
     c->bs->logdet(c->bws, &st->logdet, &st->sign_det);
   else
     whirl_bordered_logdet(c->bd, &st->logdet, &st->sign_det);
-  st->psi_lp = st->t[n];
+  st->psi_lp = st->t[cont_lead(c)];
   st->tests_valid = 0;
   return 0;
 }
@@ -658,7 +661,7 @@ static int tangent_from_newton(whirl_cont *c, cont_state *st) {
     c->bs->logdet(c->bws, &st->logdet, &st->sign_det);
   else
     whirl_bordered_logdet(c->bd, &st->logdet, &st->sign_det);
-  st->psi_lp = z[n];
+  st->psi_lp = z[cont_lead(c)];
   st->tests_valid = 0;
   return 0;
 }
@@ -880,7 +883,9 @@ int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
     return WHIRL_FAIL(c, WHIRL_ESINGULAR,
                       "start: F_x is singular at the start point (a fold?); "
                       "start elsewhere or give a direction");
-  if ((dir < 0) == (c->cur.t[n] > 0))
+  size_t k = cont_lead(c); /* the coordinate that moves with dir */
+  if (fabs(c->cur.t[k]) <= c->opt.newton_tol * (1.0 + fabs(c->cur.X[k]))) k = n;
+  if ((dir < 0) == (c->cur.t[k] > 0))
     for (size_t i = 0; i < N; ++i) c->cur.t[i] = -c->cur.t[i];
   /* Re-evaluate the tests with the tangent as border so their signs are
    * consistent with the rows used along the branch. */
@@ -1212,9 +1217,17 @@ static int predict_correct(whirl_cont *c, double *cosang, int *its) {
 typedef int (*crossing_fn)(const whirl_cont *c, size_t k, const cont_state *a,
                            const cont_state *b);
 
+/* A start point where the lead parameter's rate is zero to newton_tol (the
+ * start was oriented by the continuation parameter; AUTO's STPRAE takes
+ * the next coordinate there) is itself the turning point: a locus started
+ * at the vertex of a curve symmetric in its second parameter (demo int's
+ * fold curve at PAR(2) = 0) has no LP in its first step. */
 static int crosses_lp(const whirl_cont *c, size_t k, const cont_state *a,
                       const cont_state *b) {
   (void)k;
+  const size_t l = cont_lead(c);
+  if (c->stats.steps == 0 && fabs(a->psi_lp) <= c->opt.newton_tol * (1.0 + fabs(a->X[l])))
+    return 0;
   return a->tests_valid && c->opt.detect_lp && sgn(a->psi_lp) * sgn(b->psi_lp) < 0;
 }
 static int crosses_bp(const whirl_cont *c, size_t k, const cont_state *a,
@@ -1366,6 +1379,22 @@ static void drop_lp_at(whirl_cont *c, size_t *nev, const cont_state *q) {
     }
 }
 
+/* A codimension-two point of a curve found by a system test (a ZH on a
+ * Hopf curve) at a branch point of that curve is reported as the BP alone,
+ * as AUTO reports one label a point (its first test to change sign; the
+ * others, zero there, change no sign): pp3's Hopf curve through the
+ * invariant plane u3 = 0. */
+static void drop_sys_at_bp(whirl_cont *c, size_t *nev) {
+  for (size_t i = 0; i < *nev;) {
+    int at_bp = 0;
+    for (size_t j = 0; j < *nev && c->evs[i].ev == EV_SYS; ++j)
+      at_bp |= c->evs[j].ev == EV_BP &&
+               fabs(c->evs[i].st->s - c->evs[j].st->s) <= 1e-6 * fabs(c->ds) + 1e-12;
+    if (at_bp) c->evs[i] = c->evs[--*nev];
+    else ++i;
+  }
+}
+
 /* Localise every zero of a test function between cur and trial into the
  * tail of the queue, listed in c->evs in the order of event_kinds, then
  * ordered by arclength.  Returns their number. */
@@ -1397,6 +1426,7 @@ static size_t find_events(whirl_cont *c) {
       add_event(c, &nev, K->ev, k, q);
     }
   }
+  drop_sys_at_bp(c, &nev);
   /* the localisations moved the work parameter vector: restore it */
   c->trial.p[c->opt.icp] = c->trial.X[c->n];
   for (size_t i = 1; i < nev; ++i) /* insertion sort: stable, a handful */

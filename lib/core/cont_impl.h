@@ -158,4 +158,10 @@ double cont_pd_rank_test(const cont_state *st, int k);
 int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
                 cont_state *out);
 
+/* The unknown whose turning points are the LPs (options.lead, else the
+ * continuation parameter X[n]). */
+static inline size_t cont_lead(const whirl_cont *c) {
+  return c->opt.lead >= 0 ? (size_t)c->opt.lead : c->n;
+}
+
 #endif

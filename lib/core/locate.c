@@ -256,7 +256,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
     const double nt = sqrt(cont_dot(c, out->t, out->t));
     if (nt > 0 && isfinite(nt))
       for (size_t i = 0; i < N; ++i) out->t[i] /= nt;
-    out->psi_lp = out->t[c->n];
+    out->psi_lp = out->t[cont_lead(c)];
   }
   out->s = a->s + sqrt(cont_dist2(c, out->X, a->X));
   out->p[c->opt.icp] = out->X[c->n];

@@ -183,6 +183,7 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
    * AUTO takes 5 485, 5 382 with 0.5 rad) and missed two of tor's LPs;
    * 0.5 rad keeps obv's three BPs (doc/auto-reference.md, the turn limit) */
   o->max_angle = 0.5;
+  o->lead = b->lead;
   o->detect_lp = s->ilp;
   /* ISP = 1: "branch points ... are not detected for periodic solutions
    * and boundary value problems" (AUTO-07p manual, ISP) */
@@ -746,6 +747,7 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
   char err[512];
   b->q = q;
   b->icp = other;
+
   /* a point of a locus continues that locus; else the label's own type */
   const char *ty = so->icp2 >= 0 && so->locus[0] ? so->locus : so->ty;
   const int pd = !strcmp(ty, "PD") && b->kind == WHIRL_SOL_COLLOC && O->colloc;
@@ -833,6 +835,14 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
              so->ty);
     return -2;
   }
+  /* AUTO continues a locus in ICP(1) with the others unknowns, and DS > 0
+   * makes ICP(1) grow (ae.f90, STPRAE); whirl continues in `other` with
+   * the label's parameter q an unknown: after the base's unknowns in the
+   * fold and Hopf systems, after the base's and its null vector's in the
+   * branch-point system.  When q is ICP(1), it is the one that grows,
+   * and the locus's LPs are its turning points (AUTO's FNLPAE), not the
+   * continued parameter's. */
+  if (R->icp[0] == q) b->lead = (long)(b->bploc ? 2 * base->n : base->n);
   b->x0 = O->Z;
   b->p0 = p;
   return 0;
@@ -1171,6 +1181,7 @@ static int run_continuation(run_ctx *R, run_objects *O) {
   memset(&b, 0, sizeof b);
   b.icp = R->icp[0];
   b.q = -1;
+  b.lead = -1;
   b.ds_scale = 1.0;
   b.model = R->model;
 

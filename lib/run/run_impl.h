@@ -173,6 +173,9 @@ typedef struct branch_spec {
   const whirl_point *bp;
   int dir_sign;            /* +1 / -1: direction of the parameter at the
                               start; 0: the sign of DS */
+  long lead;               /* whirl_cont_options.lead: the unknown that
+                              moves with DS at the start and whose turning
+                              points are LPs (-1: the continued parameter) */
   run_trace *trace;        /* record the points here (or NULL) */
   const whirl_model *model; /* its derived parameters (pvls), or NULL */
   int iterate;             /* maps: fixed points of f^iterate (1: of f) */

@@ -110,6 +110,15 @@ typedef struct whirl_cont_options {
                           the system's structured solver can (reborder) */
   double chord_theta;  /* contraction above which chord Newton refactors */
   double max_angle;    /* max turn of the tangent per step, radians */
+  long lead;           /* the lead parameter among the unknowns (AUTO's
+                          ICP(1) of a locus whose first listed parameter
+                          is an unknown of the system, a fold or Hopf
+                          curve's): X[lead] (0 <= lead < n) moves in the
+                          direction of sign(dir) at whirl_cont_start (the
+                          continuation parameter where its rate is zero to
+                          newton_tol), and the LP points are its turning
+                          points, as AUTO's (ae.f90: STPRAE, FNLPAE);
+                          -1 (default): the continuation parameter */
   int tangent_predictor; /* 0: secant predictor (default), 1: tangent */
   int tangent_from_newton; /* 0: the tangent and tests of a new point from
                             a fresh Jacobian there (default); 1: from the
@@ -216,8 +225,8 @@ WHIRL_API whirl_cont *whirl_cont_alloc(const whirl_system *sys,
 WHIRL_API void whirl_cont_free(whirl_cont *c); /* accepts NULL */
 
 /* Start a branch at (x0, p0): x0 is corrected by Newton with p fixed, then
- * the tangent is oriented so that the free parameter moves in the direction
- * of sign(dir) (+1 or -1).  The corrected start point is available from
+ * the tangent is oriented so that the free parameter (or the unknown
+ * options.lead) moves in the direction of sign(dir) (+1 or -1).  The corrected start point is available from
  * whirl_cont_point as type EP.  Returns WHIRL_OK or an error. */
 WHIRL_API int whirl_cont_start(whirl_cont *c, const double *x0,
                                const double *p0, int dir);

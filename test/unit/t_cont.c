@@ -1210,6 +1210,44 @@ static void test_zero_at_start(void) {
      "further on is (%zu BP from p = 0.3)", nbp[0], nbp[1]);
 }
 
+/* The lead unknown of a locus (options.lead, AUTO's ICP(1)): the curve
+ * (x, q, p) = (s, 1 - s^2, s) of F = (q - 1 + x^2, x - p), continued in p
+ * with q the lead.  Its LPs are q's turning points, the vertex s = 0 (none
+ * in p, which is monotone); a start at the vertex to newton_tol (q's rate
+ * below it: demo int's fold curve, symmetric in PAR(2)) has none in its
+ * first step, as AUTO's STPRAE starts there by the next coordinate. */
+static int vertex_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[1] - 1.0 + x[0] * x[0];
+  f[1] = x[0] - p[0];
+  return 0;
+}
+static void test_lead(void) {
+  whirl_system s = {.name = "vertex", .n = 2, .npar = 1, .F = vertex_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.01;
+  o.ds_max = 0.05;
+  o.nmx = 40;
+  o.newton_tol = 1e-6;
+  size_t nlp[3];
+  const double p0[3] = {0.5, 0.5, 1e-7};
+  const long lead[3] = {1, -1, 1};
+  /* towards the vertex: q grows (q leads), p falls (p leads, or the start
+   * is the vertex and p orients it) */
+  const int dir[3] = {+1, -1, -1};
+  for (int k = 0; k < 3; ++k) {
+    o.lead = lead[k];
+    const double x0[2] = {p0[k], 1.0 - p0[k] * p0[k]};
+    whirl_branch *b = run(&s, &o, x0, &p0[k], dir[k], NULL);
+    nlp[k] = b ? count_type(b, WHIRL_PT_LP) : 99;
+    whirl_branch_free(b);
+  }
+  ok(nlp[0] == 1 && nlp[1] == 0 && nlp[2] == 0,
+     "the lead unknown's turning point is the LP (%zu through the vertex, %zu when p "
+     "leads), none when the start is the vertex to newton_tol (%zu)", nlp[0], nlp[1], nlp[2]);
+}
+
 int main(void) {
   test_start_messages();
   test_cusp(1);
@@ -1232,6 +1270,7 @@ int main(void) {
   test_system_weights();
   test_recorrect_after_remap();
   test_zero_at_start();
+  test_lead();
   test_errors();
   test_start_on_singular_solution();
   return done_testing();
