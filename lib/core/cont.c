@@ -1420,7 +1420,8 @@ static size_t find_events(whirl_cont *c) {
       if (!K->bound && c->stats.steps == 0 && fabs(q->s - a->s) <= 1e-6 * fabs(c->ds))
         continue;
       if (K->ev == EV_SYS) {
-        if (q->ttype[k] == 0) continue;
+        const int ty = q->ttype[k];
+        if (ty == 0 || (ty > 0 && ty < 32 && (c->opt.sys_skip >> ty & 1u))) continue;
         drop_lp_at(c, &nev, q);
       }
       add_event(c, &nev, K->ev, k, q);

@@ -200,6 +200,13 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
    * manual, ISP; with ISP = 1 they are computed), nor then the orbits'
    * stability */
   if (b->kind == WHIRL_SOL_COLLOC && s->isp == 0) o->stability = 0;
+  /* AUTO's problem classes label as AUTO: a fold curve's isola centre
+   * (IS) or merge (MG), a turning point of the curve in the continued
+   * parameter, is AUTO's LP there (abcb's script restarts from that LP);
+   * harmonic balance, whirl's own, keeps its IS and MG */
+  if (b->kind != WHIRL_SOL_HBM) o->sys_skip = 1u << WHIRL_PT_IS | 1u << WHIRL_PT_MG;
+  if (b->starting_data) /* AUTO's bvp.f90: ISW = -2 sets ILP = ISP = 0 */
+    o->detect_lp = o->detect_bp = o->detect_hb = o->detect_pd = o->detect_sys = 0;
   if (b->sys->Jp && b->sys->n > 400) o->linsol = WHIRL_LINSOL_SPARSE;
   /* user points (UZR) and stops (UZSTOP): values of a parameter, of the
    * period (PERIOD, AUTO's PAR(11)) or of a state component (its MAX for
@@ -454,6 +461,28 @@ static int branch_end(run_ctx *R, whirl_cont *c, int rc, int stop, size_t npts) 
   return rc;
 }
 
+/* AUTO's run of a locus's starting data (b->starting_data): the start
+ * point as a row, then the EP that the next run restarts from, a row and
+ * a label of its own at the same point (AUTO's EP ends 5 steps in the null
+ * vector's norm that leave the point where it is; a restart's first point
+ * is never a label in AUTO's numbering).  0 or -1. */
+static int starting_data_rows(run_ctx *R, const branch_spec *b, const void *obj,
+                              const whirl_point *pt, double *pfull, double *state) {
+  double l2 = 0.0, period = 0.0;
+  whirl_point ep = *pt;
+  ep.index = pt->index + 1;
+  ep.type = WHIRL_PT_EP;
+  const int lab = ++R->label;
+  if (run_table_row(R, b->kind, obj, R->branch, pt->index, "RG", 0, pt->x, pfull,
+                    pt->stable, &l2, &period, state) ||
+      run_table_row(R, b->kind, obj, R->branch, ep.index, "EP", lab, ep.x, pfull,
+                    ep.stable, &l2, &period, state) ||
+      write_label(R, b, &ep, "EP", lab, pfull))
+    return -1;
+  fprintf(R->log, "  EP  LAB %d  PT %zu: the locus's starting data\n", lab, ep.index);
+  return 0;
+}
+
 /* The branch's statistics in the log and its summary line. */
 static void branch_summary(run_ctx *R, const branch_spec *b, whirl_cont *c,
                            const int *counts, size_t npts, double pmin, double pmax) {
@@ -608,6 +637,10 @@ int run_branch(run_ctx *R, branch_spec *b) {
     /* AUTO counts points, the start and the special points included
      * (ae.f90 STPLAE: NTOT, PT = index + 1): the NMX-th ends the branch,
      * an EP, and every NPR-th regular one is labelled */
+    if (b->starting_data) { /* the start, then AUTO's EP at the same point */
+      rc = starting_data_rows(R, b, obj, pt, pfull, state);
+      break;
+    }
     const size_t ntot = pt->index + 1;
     if (!stop && ntot >= (size_t)s->nmx) {
       stop = 2;
@@ -1167,6 +1200,21 @@ static int switch_or_locus(run_ctx *R, run_objects *O, branch_spec *b) {
   } else if (restart && (s->isw == 2 || s->isw == 3)) {
     int rc = locus(R, O, b, b->sys, b->x0, p0);
     if (rc) return rc;
+    /* AUTO starts a locus of orbits or of a BVP at its special point with
+     * a run that generates the extended system's starting data (its
+     * null vectors: periodic.f90 and toolboxbv.f90 set ISW = -2, bvp.f90
+     * then ILP = ISP = 0, NMX = 5: "Generating starting data: Restart at
+     * EP label below"), steps in the null vector's norm that leave the
+     * point where it is.  whirl's minimally augmented locus needs no such
+     * data, but AUTO's scripts and c-files are written for that run
+     * (abcb, int, pen), so here it is the start point alone, an EP the
+     * next run restarts from */
+    if ((b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP) &&
+        !(so->icp2 >= 0 && so->locus[0])) {
+      b->starting_data = 1;
+      fprintf(R->log, "starting data of the locus (AUTO's ISW = -2): the start point, "
+              "an EP; restart at it to continue the locus\n");
+    }
     b->ds_scale = 1.0;
     if (b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP)
       b->ds_scale = sqrt((double)(s->ntst * s->ncol + 1));

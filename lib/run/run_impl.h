@@ -173,6 +173,10 @@ typedef struct branch_spec {
   const whirl_point *bp;
   int dir_sign;            /* +1 / -1: direction of the parameter at the
                               start; 0: the sign of DS */
+  int starting_data;       /* AUTO's first run of a locus of orbits or of
+                              a BVP from its LP, PD or BP (ISW = -2 inside
+                              AUTO): the start point alone, an EP that the
+                              next run restarts from */
   long lead;               /* whirl_cont_options.lead: the unknown that
                               moves with DS at the start and whose turning
                               points are LPs (-1: the continued parameter) */

@@ -145,6 +145,10 @@ typedef struct whirl_cont_options {
                           no Floquet multipliers), stable = -1 */
   int detect_sys;      /* the system's own test functions (codim-2 points
                           on fold and Hopf curves); on by default */
+  unsigned sys_skip;   /* point types of the system's tests not reported,
+                          a mask of 1u << type (0: none): AUTO's problem
+                          classes in run files skip a fold curve's IS and
+                          MG, which AUTO reports as the LP they also are */
   int stop_at_bp;      /* end the branch at the first BP */
   int detect_loop;     /* stop when the branch returns to its start */
   double loc_tol;      /* localisation tolerance in arclength */
