@@ -780,7 +780,6 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
   char err[512];
   b->q = q;
   b->icp = other;
-
   /* a point of a locus continues that locus; else the label's own type */
   const char *ty = so->icp2 >= 0 && so->locus[0] ? so->locus : so->ty;
   const int pd = !strcmp(ty, "PD") && b->kind == WHIRL_SOL_COLLOC && O->colloc;
