@@ -149,12 +149,13 @@ static int default_runs(auto_job *J) {
  * the nearest earlier one of the demo that has them, as the demos' later
  * c-files assume (c.exp.2 names ICP = ['lambda'] of c.exp.1's parnames;
  * AUTO's scripts carry them from run to run): run i's constants again with
- * those dictionaries before its own text.  0, 1 (memory) or 2 (said). */
+ * those dictionaries after its own text (its lines keep their numbers in
+ * messages).  0, 1 (memory) or 2 (said). */
 static int inherit_names(auto_job *J, size_t i, const char *path) {
   static const char *const keys[] = {"unames", "parnames"};
-  char *text = NULL;
-  size_t len = 0;
-  FILE *m = open_memstream(&text, &len);
+  char *names = NULL, *text = NULL;
+  size_t nlen = 0, len = 0;
+  FILE *m = open_memstream(&names, &nlen);
   int added = 0;
   for (size_t k = 0; m && k < 2; k++) {
     if (whirl_auto_constants_count(J->run[i].ac, keys[k])) continue;
@@ -173,16 +174,26 @@ static int inherit_names(auto_job *J, size_t i, const char *path) {
       break;
     }
   }
-  FILE *f = added ? fopen(path, "r") : NULL;
-  for (int ch; f && m && (ch = fgetc(f)) != EOF;) fputc(ch, m);
-  if (f) fclose(f);
   if (!m || fclose(m)) {
-    free(text);
+    free(names);
     return 1;
   }
   if (!added) {
-    free(text);
+    free(names);
     return 0;
+  }
+  /* the file's own lines first, so that messages name their lines; the
+   * names after them (the file has none of these keys) */
+  FILE *t = open_memstream(&text, &len), *f = fopen(path, "r");
+  int last = '\n';
+  for (int ch; t && f && (ch = fgetc(f)) != EOF; last = ch) fputc(ch, t);
+  if (f) fclose(f);
+  if (t && last != '\n') fputc('\n', t);
+  if (t) fputs(names, t);
+  free(names);
+  if (!t || fclose(t)) {
+    free(text);
+    return 1;
   }
   whirl_auto_constants_free(J->run[i].ac);
   int rc = (J->run[i].ac = whirl_auto_constants_alloc()) ? 0 : 1;
@@ -220,6 +231,12 @@ static int read_constants(auto_job *J) {
       if (a != 11 && a <= 36 && (size_t)a > J->npar) J->npar = (size_t)a;
     }
     whirl_auto_constants_int(r->ac, "NDIM", &r->ndim);
+    if (whirl_auto_constants_line(r->ac, "NDIM") > 0 && r->ndim < 1) {
+      /* before any run: a later c-file's bad NDIM writes nothing */
+      cli_error("auto", "%s:%d: NDIM = %d: must be >= 1", path,
+                whirl_auto_constants_line(r->ac, "NDIM"), r->ndim);
+      return 2;
+    }
     if (!J->ndim) J->ndim = r->ndim;
   }
   if (J->ndim < 1) {

@@ -149,6 +149,13 @@ bad b3 'b3.f90:5' "equations that do not compile (the compiler's FILE:LINE)"
 cp "$tmp/fold/c.fold.1" "$tmp/b4/c.b4"
 sed '/SUBROUTINE STPNT/,$d' "$tmp/fold/fold.f90" > "$tmp/b4/b4.f90"
 bad b4 'stpnt_' "STPNT missing from the equations"
+# a later constants file's NDIM out of range: found before any run (each
+# NDIM has a plug-in of its own), so run 1 writes nothing either
+mkdir "$tmp/b5"
+cp "$tmp/fold/fold.f90" "$tmp/b5/b5.f90"
+cp "$tmp/fold/c.fold.1" "$tmp/b5/c.b5.1"
+printf 'NDIM= -1, IPS = 1\nICP = [1]\n' > "$tmp/b5/c.b5.2"
+bad b5 'b5/c.b5.2:1: NDIM = -1: must be >= 1' "a second constants file with NDIM = -1"
 
 # AUTO's parseB, parseS and parseD on b., s., d. of the stems $3... in
 # directory $1 (output in $2): the same labels in b. and s., each non-empty
