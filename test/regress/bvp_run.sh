@@ -4,7 +4,9 @@
 # NINT, ICP(2) ... free, labels restarted on their mesh or another.
 # Closed forms: Bratu's u'' + lambda e^u = 0, u(0) = u(1) = 0 (AUTO's demo
 # exp) folds at lambda* = 3.513830719125162, where max u = u(1/2) =
-# 2 ln cosh(theta*/4), theta* = 4.798714560; u' = a u, u(0) = 1 with
+# 2 ln cosh(theta*/4), theta* = 4.798714560; with the boundary value mu,
+# u(0) = u(1) = mu, v = u - mu is Bratu's with lambda e^mu: the folds are
+# lambda e^mu = lambda*; u' = a u, u(0) = 1 with
 # int_0^1 u = c has (e^a - 1)/a = c, a free.
 # SPDX-License-Identifier: BSD-3-Clause
 name=bvp_run
@@ -27,20 +29,20 @@ static int stpnt(double t, double *u, double *p, void *d) {
 }
 static int bcnd(size_t nbc, const double *u0, const double *u1, const double *p,
                 double *fb, void *d) {
-  (void)nbc, (void)p, (void)d;
-  fb[0] = u0[0];
-  fb[1] = u1[0];
+  (void)nbc, (void)d;
+  fb[0] = u0[0] - p[1];
+  fb[1] = u1[0] - p[1];
   return 0;
 }
 static const char *const xn[] = {"u", "v"};
-static const char *const pn[] = {"lambda"};
-static const double par0[] = {0.0};
+static const char *const pn[] = {"lambda", "mu"};
+static const double par0[] = {0.0, 0.0};
 const whirl_model whirl_model_def = {
     .abi = WHIRL_MODEL_ABI,
-    .problem = {.name = "bratu", .n = 2, .npar = 1, .rhs = rhs, .autonomous = 1,
+    .problem = {.name = "bratu", .n = 2, .npar = 2, .rhs = rhs, .autonomous = 1,
                 .x_names = xn, .p_names = pn},
     .par0 = par0, .stpnt = stpnt, .forcing_param = -1, .bcnd = bcnd,
-    .description = "Bratu's problem"};
+    .description = "Bratu's problem, boundary value mu"};
 EOF
 # u' = a u - b, u(0) = 1, int u = c (b = 0 unless freed): with a = a0
 # fixed and b free, int u = g(a0) - b K(a0), g(a) = (e^a - 1)/a,
@@ -135,7 +137,7 @@ col() {
 printf 'model = bratu.so\nIPS = 4\nICP = [lambda]\nNBC = 2\nNTST = 10\nNCOL = 4\nISP = 1\nDS = 0.01\nDSMAX = 0.2\nNMX = 100\nUZR = {lambda: [1, 3]}\n' > "$tmp/br.whirl"
 (cd "$tmp" && "$WHIRL" run br.whirl --no-plot --quiet > /dev/null 2> br.err)
 ok $? "Bratu (IPS = 4, NBC = 2) from the model's start ($(head -1 "$tmp/br.err"))"
-head -1 "$tmp/br.out/branches.tsv" | grep -q "lambda	l2_norm	max_u	max_v	stable" &&
+head -1 "$tmp/br.out/branches.tsv" | grep -q "lambda	mu	l2_norm	max_u	max_v	stable" &&
   ! head -1 "$tmp/br.out/branches.tsv" | grep -q period
 ok $? "the table: parameters, l2_norm, max_u, max_v, stable; no period column"
 lp=$(col br.out lambda LP)
@@ -171,6 +173,26 @@ ok $? "restart at UZ lambda = 3 on NTST 20 ($(head -1 "$tmp/re.err"))"
 lp2=$(col re.out lambda LP)
 echo "$lp2" | awk '{ d = $1 - 3.513830719125162; exit !(NR == 1 && d * d < 1e-16) }'
 ok $? "on along the label's tangent: the fold again, NTST 20 to 1e-8 ($lp2)"
+# A locus of a BVP from its fold is, as AUTO's, first the starting data
+# (AUTO's ISW = -2: "Generating starting data: Restart at EP label
+# below", steps that leave the point where it is): the start and an EP
+# there; the next run restarts from that EP and follows the folds.
+lp=$(awk -F'\t' 'NR > 1 && $3 == "LP" { print $4; exit }' "$tmp/br.out/branches.tsv")
+printf 'model = bratu.so\nIPS = 4\nISW = 2\nS = br.out\nIRS = %s\nICP = [lambda, mu]\nNBC = 2\nNTST = 10\nDS = 0.05\nDSMAX = 0.2\nNMX = 30\n' "${lp:-0}" > "$tmp/sd.whirl"
+(cd "$tmp" && "$WHIRL" run sd.whirl --no-plot --quiet > /dev/null 2> sd.err)
+nrow=$(($(wc -l < "$tmp/sd.out/branches.tsv") - 1))
+ep=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i; next } $3 == "EP" { print $4, $h["lambda"], $h["mu"] }' "$tmp/sd.out/branches.tsv")
+set -- $ep
+[ "$nrow" = 2 ] && [ $# = 3 ] && awk -v l="$2" -v m="$3" 'BEGIN { d = l - 3.513830719; exit !(d * d < 1e-12 && m == 0) }'
+ok $? "the locus from the fold is AUTO's starting data: the start and an EP there ($nrow rows; EP $ep)"
+printf 'model = bratu.so\nIPS = 4\nISW = 2\nS = sd.out\nIRS = %s\nICP = [lambda, mu]\nNBC = 2\nNTST = 10\nDS = 0.05\nDSMAX = 0.2\nNMX = 30\n' "${1:-0}" > "$tmp/fl.whirl"
+(cd "$tmp" && "$WHIRL" run fl.whirl --no-plot --quiet > /dev/null 2> fl.err)
+dev=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i; next }
+  { d = $h["lambda"] * exp($h["mu"]) - 3.513830719125; if (d < 0) d = -d; if (d > m) m = d; k++ }
+  END { if (k > 20) printf "%.2g %d\n", m, k }' "$tmp/fl.out/branches.tsv" 2>/dev/null)
+set -- $dev
+[ -n "${1:-}" ] && awk -v d="$1" 'BEGIN { exit !(d < 1e-6) }'
+ok $? "restarted at that EP the run follows the folds lambda e^mu = 3.5138307 (max deviation ${1:-?} over ${2:-?} points) ($(head -1 "$tmp/fl.err"))"
 printf 'model = expo.so\nIPS = 4\nICP = [c, a]\nNBC = 1\nNINT = 1\nNTST = 10\nDS = 0.05\nDSMAX = 0.2\nNMX = 100\nUZR = {c: [2, 3.5]}\nUZSTOP = {c: [3.5]}\n' > "$tmp/ex.whirl"
 (cd "$tmp" && "$WHIRL" run ex.whirl --no-plot --quiet > /dev/null 2> ex.err)
 ok $? "an integral condition with a free parameter (NINT = 1, ICP = [c, a]) ($(head -1 "$tmp/ex.err"))"
