@@ -775,6 +775,8 @@ static void reset_run(whirl_cont *c) {
   c->started = 0;
   c->have_prev = 0;
   c->have_tprev = 0;
+  c->nskip = 0;
+  c->first_hidden = 0;
   c->stop_reason = WHIRL_STOP_NONE;
   c->errmsg[0] = '\0';
 }
@@ -1352,7 +1354,22 @@ static void add_event(whirl_cont *c, size_t *nev, int ev, size_t k, cont_state *
   c->evs[*nev].ev = ev;
   c->evs[*nev].k = k;
   c->evs[*nev].st = st;
+  c->evs[*nev].its = c->its;
   ++*nev;
+  if (c->nskip < sizeof c->skip_ev / sizeof *c->skip_ev) { /* before any is dropped */
+    c->skip_ev[c->nskip] = ev;
+    c->skip_k[c->nskip] = k;
+    c->skip_s[c->nskip++] = st->s;
+  }
+}
+
+/* opt.auto_steps: is test (ev, k) zero at this step's start, the special
+ * point the step starts from?  Not tested then, as AUTO sets a located
+ * test function's value to 0, which no sign change follows (LCSPBV). */
+static int skipped(const whirl_cont *c, size_t nskip, int ev, size_t k) {
+  for (size_t i = 0; i < nskip; ++i)
+    if (c->skip_ev[i] == ev && c->skip_k[i] == k) return 1;
+  return 0;
 }
 
 /* A fold and a branch point in the same step at the same point: the
@@ -1401,12 +1418,13 @@ static void drop_sys_at_bp(whirl_cont *c, size_t *nev) {
 static size_t find_events(whirl_cont *c) {
   const cont_state *a = &c->cur, *b = &c->trial;
   size_t nev = 0, nslot = 0; /* queue tail slots used by localisations */
+  const size_t nskip0 = c->nskip; /* the tests zero at a, then those found */
   for (size_t e = 0; e < sizeof event_kinds / sizeof *event_kinds; ++e) {
     const struct event_kind *K = &event_kinds[e];
     const size_t m = instances(c, K->ev);
     if (K->ev == EV_UZ) fold_at_branch_point(c, nev);
     for (size_t k = 0; k < m; ++k) {
-      if (!K->crosses(c, k, a, b)) continue;
+      if (skipped(c, nskip0, K->ev, k) || !K->crosses(c, k, a, b)) continue;
       cont_state *q = &c->queue[c->qcap - 1 - nslot++];
       if (cont_locate(c, K->ev, k, b, q) != 0) {
         if (!K->bound) continue;
@@ -1428,6 +1446,11 @@ static size_t find_events(whirl_cont *c) {
     }
   }
   drop_sys_at_bp(c, &nev);
+  /* the zeros found in this step, after the ones at a */
+  memmove(c->skip_ev, c->skip_ev + nskip0, (c->nskip - nskip0) * sizeof *c->skip_ev);
+  memmove(c->skip_k, c->skip_k + nskip0, (c->nskip - nskip0) * sizeof *c->skip_k);
+  memmove(c->skip_s, c->skip_s + nskip0, (c->nskip - nskip0) * sizeof *c->skip_s);
+  c->nskip -= nskip0;
   /* the localisations moved the work parameter vector: restore it */
   c->trial.p[c->opt.icp] = c->trial.X[c->n];
   for (size_t i = 1; i < nev; ++i) /* insertion sort: stable, a handful */
@@ -1460,6 +1483,33 @@ static int emit_events(whirl_cont *c, size_t nev) {
     }
   }
   return 0;
+}
+
+/* opt.auto_steps: the step ends at its first special point (and those at
+ * the same place), which becomes the trial point the next step starts
+ * from; the later ones are dropped, to be found again from there, and the
+ * tests zero at it are not tested on the next step.  Returns the events
+ * kept; *its, the Newton iterations of the point's last correction, which
+ * AUTO's step control reads (those of its last location step: one when
+ * that step is short, as at AUTO's tight EPSS, where the localisation is
+ * as exact as whirl's; demos abc, int and ezp agree with AUTO so, not when
+ * two are assumed). */
+static size_t end_at_first_event(whirl_cont *c, size_t nev, int *its) {
+  const double s0 = c->evs[0].st->s, tol = 1e-6 * fabs(c->ds) + 1e-12;
+  size_t keep = 1;
+  while (keep < nev && fabs(c->evs[keep].st->s - s0) <= tol) ++keep;
+  /* not tested next: every zero located there, reported or dropped as
+   * coincident (a ZH at a BP: drop_sys_at_bp) */
+  size_t m = 0;
+  for (size_t i = 0; i < c->nskip; ++i)
+    if (fabs(c->skip_s[i] - s0) <= tol) {
+      c->skip_ev[m] = c->skip_ev[i];
+      c->skip_k[m++] = c->skip_k[i];
+    }
+  c->nskip = m;
+  *its = c->evs[0].its;
+  cont_state_copy(c, &c->trial, c->evs[0].st);
+  return keep;
 }
 
 /* A branch started on a bound and heading out ends where it started. */
@@ -1507,8 +1557,17 @@ static void emit_step_point(whirl_cont *c) {
   else if (xmax) finish(c, WHIRL_STOP_XMAX);
 }
 
+/* AUTO-07p's step factor after a step whose corrector took its
+ * iterations of at most itnw (ADPTDS, mesh.f90). */
+static double auto_step_factor(int its, int itnw) {
+  if (its <= 1) return 2.0;
+  if (its == 2) return 1.5;
+  if (its <= itnw / 2) return 1.1;
+  return its >= itnw ? 0.5 : 1.0;
+}
+
 /* Accept the trial point and adapt the step: grow after easy steps,
- * shrink after hard ones. */
+ * shrink after hard ones (its < 0: keep it). */
 static int accept_step(whirl_cont *c, int its, double cosang) {
   const size_t N = c->N;
   const whirl_cont_options *o = &c->opt;
@@ -1520,12 +1579,51 @@ static int accept_step(whirl_cont *c, int its, double cosang) {
   cont_state_copy(c, &c->cur, &c->trial);
   int rc = notify_accept(c, &c->cur);
   if (rc) return rc;
-  if (its <= o->newton_fast && cosang > cos(0.5 * o->max_angle))
+  if (its < 0) /* the same step again */
+    ;
+  else if (o->auto_steps)
+    c->ds = fmin(auto_step_factor(its, o->newton_maxit) * fabs(c->ds), o->ds_max);
+  else if (its <= o->newton_fast && cosang > cos(0.5 * o->max_angle))
     c->ds = fmin(1.5 * fabs(c->ds), o->ds_max);
   else if (its > o->newton_maxit / 2)
     c->ds = fmax(0.7 * fabs(c->ds), o->ds_min);
   pop(c);
   return WHIRL_OK;
+}
+
+/* One step: WHIRL_OK with its points queued, STEP_HIDDEN when it queued
+ * none (opt.hide_first_step), else a status. */
+enum { STEP_HIDDEN = 1000 }; /* not a whirl status */
+static int step_once(whirl_cont *c) {
+  int rc = c->sys.remap ? remap_if_asked(c) : 0;
+  double cosang = 1.0;
+  int its = 0;
+  if (!rc) rc = predict_correct(c, &cosang, &its);
+  c->remapped = 0;
+  if (rc) return rc;
+  if (leaves_its_bound(c)) return WHIRL_DONE;
+  size_t nev = find_events(c);
+  const int at_event = c->opt.auto_steps && nev > 0;
+  if (!at_event) c->nskip = 0; /* the next step tests everything */
+  if (at_event) {
+    nev = end_at_first_event(c, nev, &its);
+    if (c->stats.steps + 1 >= c->opt.nmx) nev = 0; /* AUTO: the end, an EP */
+  }
+  if (c->opt.hide_first_step && !c->first_hidden) {
+    c->first_hidden = 1;
+    if (nev == 0) { /* AUTO's CNRLAE stores its second point only */
+      rc = accept_step(c, -1, cosang);
+      return rc ? rc : STEP_HIDDEN;
+    }
+  }
+  const int ended = emit_events(c, nev) || closes_loop(c);
+  ++c->stats.steps;
+  if (!ended && !(at_event && nev)) emit_step_point(c);
+  rc = accept_step(c, its, cosang);
+  /* the next step leaves the special point along its tangent (AUTO's
+   * secant of its last two location iterates) */
+  if (at_event) c->have_prev = 0;
+  return rc;
 }
 
 int whirl_cont_step(whirl_cont *c) {
@@ -1534,18 +1632,10 @@ int whirl_cont_step(whirl_cont *c) {
                       "whirl_cont_step: continuation not started");
   if (pop(c)) return WHIRL_OK;
   if (c->done) return WHIRL_DONE;
-  int rc = c->sys.remap ? remap_if_asked(c) : 0;
-  double cosang = 1.0;
-  int its = 0;
-  if (!rc) rc = predict_correct(c, &cosang, &its);
-  c->remapped = 0;
-  if (rc) return rc;
-  if (leaves_its_bound(c)) return WHIRL_DONE;
-  const size_t nev = find_events(c);
-  const int ended = emit_events(c, nev) || closes_loop(c);
-  ++c->stats.steps;
-  if (!ended) emit_step_point(c);
-  return accept_step(c, its, cosang);
+  int rc;
+  while ((rc = step_once(c)) == STEP_HIDDEN) {
+  }
+  return rc;
 }
 
 const whirl_point *whirl_cont_point(const whirl_cont *c) { return &c->pt; }

@@ -92,6 +92,11 @@ struct whirl_cont {
   double *Xstart;     /* N: start point, for loop detection */
   double ds;          /* current signed step (> 0 along the tangent) */
   int its;            /* Newton iterations of the last correction */
+  int skip_ev[8];     /* opt.auto_steps: the tests zero at the start of */
+  size_t skip_k[8];   /* this step (the special point it starts from, */
+  double skip_s[8];   /* their ev and k), not tested on it; during */
+  size_t nskip;       /* find_events, every zero located (s: where) */
+  int first_hidden;   /* opt.hide_first_step: done */
   int pd_rank;        /* the PD test: the pd_rank-th most negative real
                          multiplier (cont_pd_rank_test) */
   int hb_rank;        /* 0: the HB/TR test is psi_hb; k > 0: the k-th
@@ -132,6 +137,7 @@ typedef struct cont_event {
   int ev;
   size_t k;
   cont_state *st;
+  int its; /* Newton iterations of its localisation's last correction */
 } cont_event;
 
 /* Event kinds localised by locate.c. */

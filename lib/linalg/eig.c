@@ -3,6 +3,7 @@
  * stability tests; and whirl_null_vectors, the right singular vectors of
  * the smallest singular values (dgesvd), used for branch switching.
  * SPDX-License-Identifier: BSD-3-Clause */
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdint.h>
@@ -169,4 +170,60 @@ cleanup:
   free(s);
   free(a);
   return rc;
+}
+
+/* Gaussian elimination with complete pivoting (Golub & Van Loan §3.4.8)
+ * over the first n - k columns; the k unknowns left free are set to 1 and
+ * the others found by back substitution, then the column exchanges undone.
+ * The pivot is the first entry of largest modulus in a row-by-row scan, so
+ * the vector is a fixed function of A (AUTO-07p's choice in its null
+ * space, NLVC). */
+int whirl_null_vector_pivoted(size_t m, size_t n, size_t k, double *A, double *u) {
+  if (!A || !u || k == 0 || k > n || m + k < n) return WHIRL_EINVAL;
+  for (size_t i = 0; i < m * n; ++i)
+    if (!isfinite(A[i])) return WHIRL_EINVAL;
+  size_t *cpiv = malloc(n * sizeof *cpiv);
+  if (!cpiv) return WHIRL_ENOMEM;
+#define AT(i, j) A[(i) + m * (j)]
+  double amax = 0.0;
+  for (size_t jj = 0; jj < n - k; ++jj) {
+    size_t ip = jj, jp = jj;
+    double piv = 0.0;
+    for (size_t i = jj; i < m; ++i)
+      for (size_t j = jj; j < n; ++j)
+        if (fabs(AT(i, j)) > piv) piv = fabs(AT(i, j)), ip = i, jp = j;
+    if (jj == 0) amax = piv;
+    if (!(piv > amax / DBL_MAX)) { /* a null space of more than k: go on */
+      piv = fmax(amax / DBL_MAX, DBL_MIN);
+      AT(ip, jp) = piv;
+    }
+    for (size_t j = 0; j < n && ip != jj; ++j) {
+      const double t = AT(jj, j);
+      AT(jj, j) = AT(ip, j), AT(ip, j) = t;
+    }
+    cpiv[jj] = jp;
+    for (size_t i = 0; i < m && jp != jj; ++i) {
+      const double t = AT(i, jj);
+      AT(i, jj) = AT(i, jp), AT(i, jp) = t;
+    }
+    for (size_t l = jj + 1; l < m; ++l) {
+      const double r = AT(l, jj) / AT(jj, jj);
+      if (r != 0.0)
+        for (size_t j = jj + 1; j < n; ++j) AT(l, j) -= r * AT(jj, j);
+    }
+  }
+  for (size_t i = n - k; i < n; ++i) u[i] = 1.0;
+  for (size_t i = n - k; i-- > 0;) {
+    double s = 0.0;
+    for (size_t j = i + 1; j < n; ++j) s += AT(i, j) * u[j];
+    u[i] = -s / AT(i, i);
+  }
+  for (size_t i = n - k; i-- > 0;)
+    if (cpiv[i] != i) {
+      const double t = u[i];
+      u[i] = u[cpiv[i]], u[cpiv[i]] = t;
+    }
+#undef AT
+  free(cpiv);
+  return WHIRL_OK;
 }

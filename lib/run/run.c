@@ -183,6 +183,15 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
    * AUTO takes 5 485, 5 382 with 0.5 rad) and missed two of tor's LPs;
    * 0.5 rad keeps obv's three BPs (doc/auto-reference.md, the turn limit) */
   o->max_angle = 0.5;
+  /* AUTO's step sequence: a special point starts the next step, and
+   * AUTO's algebraic problems (equilibria, maps and their loci) list the
+   * point two steps from the start as their second (CNRLAE), unless the
+   * start is a switch at a branch point (ISW = -1 stores it) */
+  o->auto_steps = 1;
+  o->hide_first_step = b->kind == WHIRL_SOL_EQ && !b->bp && s->isw >= 0;
+  /* ... and predict along the tangent (STEPAE), where orbits and BVPs
+   * take the secant of the last two points (CONTBV) */
+  o->tangent_predictor = b->kind == WHIRL_SOL_EQ;
   o->lead = b->lead;
   o->detect_lp = s->ilp;
   /* ISP = 1: "branch points ... are not detected for periodic solutions
@@ -952,6 +961,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
   co.ncol = (size_t)s->ncol;
   co.forcing_param = R->model->forcing_param;
   co.adapt_every = s->iad; /* IAD: a new mesh every IAD steps, as AUTO */
+  co.mesh_jumps = s->mesh_jumps; /* MESH_RULE = jumps: AUTO's meshes */
   int pd = restart && s->isw == -1 && !strcmp(so->ty, "PD");
   /* AUTO's fixed-period orbits: IPS 2 with two parameters in ICP and not
    * PERIOD (11): the label's period kept, ICP(2) free in its place */

@@ -173,7 +173,16 @@ int run_point_measures(const run_ctx *R, whirl_solution_kind kind, const void *o
   const whirl_periodic po = run_periodic(kind, obj);
   *period_out = whirl_periodic_period(&po, xb, p);
   *l2out = whirl_periodic_l2norm(&po, xb);
-  if (whirl_periodic_max(&po, xb, mx) != WHIRL_OK || isnan(*l2out)) return -1;
+  if (isnan(*l2out)) return -1;
+  if (kind == WHIRL_SOL_COLLOC && R->s->orbit_max_nodes) { /* AUTO's, as BVPs' */
+    double *m = malloc(3 * R->n * sizeof *m);
+    const int rc = !m ? WHIRL_ENOMEM
+                      : whirl_colloc_moments(obj, xb, m, m + R->n, m + 2 * R->n, mx);
+    free(m);
+    if (rc != WHIRL_OK) return -1;
+  } else if (whirl_periodic_max(&po, xb, mx) != WHIRL_OK) {
+    return -1;
+  }
   return iplt_measure(R, kind, obj, &po, xb, mx, l2out);
 }
 

@@ -92,6 +92,8 @@ static const key_def keys[] = {
     {WHIRL_RK_STOP, "STOP", "stop_at_points", NULL, K_STOPLIST},
     {WHIRL_RK_NBC, "NBC", "boundary_conditions", NULL, K_INT},
     {WHIRL_RK_NINT, "NINT", "integral_conditions", NULL, K_INT},
+    {WHIRL_RK_ORBIT_MAX, "ORBIT_MAX", "orbit_max", NULL, K_METHOD},
+    {WHIRL_RK_MESH_RULE, "MESH_RULE", "mesh_rule", NULL, K_METHOD},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -616,6 +618,8 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_BASIN_PERIODS: return &s->basin_periods;
     case WHIRL_RK_BASIN_SEEDS: return &s->basin_seeds;
     case WHIRL_RK_BASIN_METHOD: return &s->basin_method;
+    case WHIRL_RK_ORBIT_MAX: return &s->orbit_max_nodes;
+    case WHIRL_RK_MESH_RULE: return &s->mesh_jumps;
     case WHIRL_RK_DISCOVER_STARTS: return &s->discover_starts;
     case WHIRL_RK_DISCOVER_SEED: return &s->discover_seed;
     default: return NULL;
@@ -726,6 +730,20 @@ static int set_method(whirl_runfile *rf, const key_def *d, const char *where) {
   if (v->kind != V_SCALAR)
     return fail(rf, where, "%s: expected one word", kn);
   const char *t = v->it[0].text;
+  if (d->key == WHIRL_RK_MESH_RULE) { /* the density of orbits' meshes */
+    if (strcasecmp(t, "derivative") && strcasecmp(t, "jumps"))
+      return fail(rf, where, "%s: '%s' is neither derivative nor jumps", kn,
+                  show(t, ITEMLEN, shown, sizeof shown));
+    s->mesh_jumps = !strcasecmp(t, "jumps");
+    return WHIRL_OK;
+  }
+  if (d->key == WHIRL_RK_ORBIT_MAX) { /* what MAX U(i) of an orbit is */
+    if (strcasecmp(t, "curve") && strcasecmp(t, "nodes"))
+      return fail(rf, where, "%s: '%s' is neither curve nor nodes", kn,
+                  show(t, ITEMLEN, shown, sizeof shown));
+    s->orbit_max_nodes = !strcasecmp(t, "nodes");
+    return WHIRL_OK;
+  }
   if (d->key == WHIRL_RK_BASIN_METHOD) { /* the explicit integrators */
     if (strcasecmp(t, "dop853") && strcasecmp(t, "dopri5"))
       return fail(rf, where, "%s: '%s' is not an integrator (dop853 or dopri5)",

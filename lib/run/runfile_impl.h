@@ -56,6 +56,11 @@ typedef struct whirl_run_settings {
   double basin_tol;             /* basins: capture radius (1e-3) */
   int basin_seeds;              /* basins: atlas seed stride (0: none) */
   int basin_method;             /* basins: whirl_ode_method (DOP853) */
+  int mesh_jumps;               /* MESH_RULE = jumps: orbits' meshes by
+                                   AUTO's EQDF (0: derivative, whirl's) */
+  int orbit_max_nodes;          /* ORBIT_MAX = nodes: an orbit's MAX U(i) is
+                                   AUTO's, the largest node value (0: the
+                                   maximum of the collocation polynomial) */
   double discover[WHIRL_RUN_MAXITEMS]; /* discovery: sample values of ICP(1) */
   size_t ndiscover;             /* 0: no discovery */
   whirl_run_range box[WHIRL_RUN_MAXITEMS]; /* discovery: box of random starts */

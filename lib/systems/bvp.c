@@ -517,7 +517,7 @@ static int bvp_remap(double *const *v, size_t nv, const double *p, void *data) {
   b->since_adapt = 0;
   const size_t N = b->ntst;
   memcpy(b->old_mesh, b->mesh, (N + 1) * sizeof *b->mesh);
-  const int rc = colloc_basis_new_mesh_jumps(b->n, b->ncol, N, b->dm, v[0], b->old_mesh,
+  const int rc = colloc_basis_new_mesh_jumps(b->n, b->ncol, N, 0, b->dm, v[0], b->old_mesh,
                                              b->mesh, b->E, b->Q, b->Dm);
   if (rc < 0)
     return WHIRL_FAIL(b, WHIRL_EINVAL, "mesh adaptation: the solution is not finite "

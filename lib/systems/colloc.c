@@ -623,6 +623,7 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   c->floquet_rtol = o->floquet_rtol > 0 ? o->floquet_rtol : 1e-11;
   c->floquet = o->floquet;
   c->adapt_every = o->adapt_every;
+  c->mesh_jumps = o->mesh_jumps;
   c->fq = o->free_param >= 0 ? o->free_param : -1;
   c->Tfix = o->period;
   if (alloc_arrays(c)) {
@@ -769,8 +770,14 @@ int whirl_colloc_eval(const whirl_colloc *c, const double *X, double tau,
 static int new_mesh(whirl_colloc *c, const double *X) {
   const size_t N = c->ntst;
   memcpy(c->old_mesh, c->mesh, (N + 1) * sizeof *c->mesh);
-  const int rc = colloc_basis_new_mesh(c->n, c->ncol, N, c->dm, X, c->old_mesh,
-                                       c->mesh, c->r1, c->r2); /* N, N + 1 <= nx */
+  /* E, Q: N, N + 1 <= nx; the jumps' scratch D (n N) is old_X, which
+   * map_nodes fills only after the mesh is made */
+  const int rc = c->mesh_jumps
+                     ? colloc_basis_new_mesh_jumps(c->n, c->ncol, N, 1, c->dm, X,
+                                                   c->old_mesh, c->mesh, c->r1, c->r2,
+                                                   c->old_X)
+                     : colloc_basis_new_mesh(c->n, c->ncol, N, c->dm, X, c->old_mesh,
+                                             c->mesh, c->r1, c->r2);
   if (rc <= -1 - (int)N)
     return WHIRL_FAIL(c, WHIRL_EINVAL, "mesh adaptation: interval %d degenerate",
                       -1 - (int)N - rc);
@@ -1070,18 +1077,28 @@ int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
                     "Hopf start: f_x has no complex pair (not a Hopf point)");
     goto done;
   }
+  /* u(τ) = sin(2πτ) v1 + cos(2πτ) v2 solves u' = f_x u / ω when
+   * [-ωI f_x; f_x ωI] (v1; v2) = 0: a null space of dimension two (the
+   * phase), from which the pivoted elimination takes AUTO-07p's vector
+   * (STHOPF), so orbits start in AUTO's phase and meet AUTO's meshes */
   memset(A, 0, nn * nn * sizeof *A);
   for (size_t j = 0; j < n; ++j)
     for (size_t i = 0; i < n; ++i) {
-      A[i + nn * j] = J[i + n * j];
-      A[(n + i) + nn * (n + j)] = J[i + n * j];
+      A[i + nn * (n + j)] = J[i + n * j];
+      A[(n + i) + nn * j] = J[i + n * j];
     }
   for (size_t i = 0; i < n; ++i) {
-    A[i + nn * (n + i)] = w;
-    A[(n + i) + nn * i] = -w;
+    A[i + nn * i] = -w;
+    A[(n + i) + nn * (n + i)] = w;
   }
-  rc = whirl_null_vectors(nn, nn, A, 1, V, sv);
+  (void)sv;
+  rc = whirl_null_vector_pivoted(nn, nn, 2, A, V);
   if (rc != WHIRL_OK) goto done;
+  for (size_t i = 0; i < n; ++i) { /* D = a cos - b sin: a = v2, b = -v1 */
+    const double v1 = V[i];
+    V[i] = V[n + i];
+    V[n + i] = -v1;
+  }
   const double *a = V, *b = V + n;
   double nrm = 0.0;
   for (size_t j = 0; j < c->nnodes; ++j) {

@@ -189,8 +189,8 @@ int colloc_basis_new_mesh(size_t n, size_t m, size_t N, const double *dm,
  * of their midpoints, the last interval the jump from the one before it
  * over its own length.  Returns 0 when every |x^(m)| <= 1e-7 (a solution
  * too flat to say where the mesh should go). */
-static int jump_density(size_t n, size_t m, size_t N, const double *D, const double *old,
-                        double *E) {
+static int jump_density(size_t n, size_t m, size_t N, int periodic, const double *D,
+                        const double *old, double *E) {
   const double pwr = 1.0 / ((double)m + 1.0);
   int flat = 1;
   for (size_t i = 0; i < n * N; ++i)
@@ -202,24 +202,25 @@ static int jump_density(size_t n, size_t m, size_t N, const double *D, const dou
     for (size_t r = 0; r < n; ++r) e += pow(fabs(D[n * (i + 1) + r] - D[n * i + r]) / mid, pwr);
     E[i] = e;
   }
-  const size_t last = N - 1;
-  const double hl = old[N] - old[N - 1];
+  const size_t last = N - 1, other = periodic ? 0 : last - 1;
+  const double hl = periodic ? 0.5 * (old[N] - old[N - 1] + old[1] - old[0])
+                             : old[N] - old[N - 1];
   double e = 0.0;
   for (size_t r = 0; r < n; ++r)
-    e += pow(fabs(D[n * (last - 1) + r] - D[n * last + r]) / hl, pwr);
+    e += pow(fabs(D[n * other + r] - D[n * last + r]) / hl, pwr);
   E[last] = e;
   return 1;
 }
 
-int colloc_basis_new_mesh_jumps(size_t n, size_t m, size_t N, const double *dm,
-                                const double *X, const double *old, double *mesh,
-                                double *E, double *Q, double *D) {
+int colloc_basis_new_mesh_jumps(size_t n, size_t m, size_t N, int periodic,
+                                const double *dm, const double *X, const double *old,
+                                double *mesh, double *E, double *Q, double *D) {
   for (size_t i = 0; i < N; ++i)
     for (size_t r = 0; r < n; ++r) {
       D[n * i + r] = mth_derivative(n, m, dm, X, old, i, r);
       if (!isfinite(D[n * i + r])) return -1 - (int)i;
     }
-  if (N < 2 || !jump_density(n, m, N, D, old, E)) {
+  if (N < 2 || !jump_density(n, m, N, periodic, D, old, E)) {
     memcpy(mesh, old, (N + 1) * sizeof *mesh);
     return 0;
   }

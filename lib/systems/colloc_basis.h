@@ -66,11 +66,13 @@ int colloc_basis_new_mesh(size_t n, size_t m, size_t N, const double *dm,
  * x^(m+1) on interval i estimated by the jump of the piecewise constant
  * x^(m) to interval i + 1 over the distance of their midpoints, on the last
  * interval by the jump from the one before over its own length (one-sided:
- * a symmetric solution gets AUTO's asymmetric mesh).  When every |x^(m)|
- * <= 1e-7 the mesh is kept (0).  Scratch D[n N]. */
-int colloc_basis_new_mesh_jumps(size_t n, size_t m, size_t N, const double *dm,
-                                const double *X, const double *old, double *mesh,
-                                double *E, double *Q, double *D);
+ * a symmetric solution gets AUTO's asymmetric mesh); periodic: the last
+ * interval takes the jump to the first over their mean length instead
+ * (AUTO's EQDF with IPER, for orbits).  When every |x^(m)| <= 1e-7 the
+ * mesh is kept (0).  Scratch D[n N]. */
+int colloc_basis_new_mesh_jumps(size_t n, size_t m, size_t N, int periodic,
+                                const double *dm, const double *X, const double *old,
+                                double *mesh, double *E, double *Q, double *D);
 
 /* The node values of v (a solution or a direction: the map is linear)
  * from the piecewise polynomial on old to the nodes of mesh, in place;

@@ -51,6 +51,7 @@ struct whirl_colloc {
   double *old_mesh, *old_X; /* ntst + 1, nnodes*n: mesh adaptation */
   double *ref_new;          /* nnodes*n */
   int adapt_every;          /* options.adapt_every (AUTO's IAD) */
+  int mesh_jumps;           /* options.mesh_jumps (AUTO's EQDF) */
   int since_adapt;          /* remap calls since the last adaptation */
   size_t adaptations;       /* meshes adapted along branches */
 

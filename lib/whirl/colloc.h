@@ -59,6 +59,12 @@ typedef struct whirl_colloc_options {
                         every adapt_every continuation steps, the current
                         point, tangent and previous points carried over by
                         the system's remap hook; 0 (default): fixed mesh */
+  int mesh_jumps;    /* the density the adapted mesh equidistributes: 0
+                        (default) |x^(NCOL)|^{1/(NCOL+1)} of the collocation
+                        polynomial; 1: AUTO-07p's |x^(NCOL+1)|^{1/(NCOL+1)}
+                        from the jumps of x^(NCOL) between neighbouring
+                        intervals, the last to the first (its EQDF), so a
+                        run follows AUTO's meshes */
   int free_param;    /* autonomous orbits at a fixed period (AUTO: IPS 2 with
                         11 not in ICP): >= 0, the period is `period` and the
                         unknown in its place (X's last entry) is this

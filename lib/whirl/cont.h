@@ -149,6 +149,22 @@ typedef struct whirl_cont_options {
                           a mask of 1u << type (0: none): AUTO's problem
                           classes in run files skip a fold curve's IS and
                           MG, which AUTO reports as the LP they also are */
+  int auto_steps;      /* AUTO-07p's step sequence (run files set it):
+                          every step yields one point; a step that passes
+                          special points ends at the first of them, which
+                          starts the next step along its own tangent with
+                          the step length unchanged (the points past it
+                          are found again from there; AUTO's LCSPBV), and
+                          the length then follows AUTO's ADPTDS on the
+                          Newton iterations (x2 after 1, x1.5 after 2,
+                          x1.1 up to newton_maxit/2, x0.5 at newton_maxit).
+                          0 (default): the special points are inserted and
+                          the step goes on from the point past them */
+  int hide_first_step; /* AUTO-07p's algebraic problems (its CNRLAE): the
+                          first step's point is not output nor counted
+                          (unless the step passes a special point) and the
+                          next step, at the same length, starts from it:
+                          the branch's second point is two steps out */
   int stop_at_bp;      /* end the branch at the first BP */
   int detect_loop;     /* stop when the branch returns to its start */
   double loc_tol;      /* localisation tolerance in arclength */

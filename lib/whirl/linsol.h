@@ -108,6 +108,15 @@ WHIRL_API int whirl_eig_compute(whirl_eig *e, const double *A, double *re,
 WHIRL_API int whirl_null_vectors(size_t m, size_t k, const double *A,
                                  size_t nvec, double *V, double *sv);
 
+/* A vector u[n] of the null space of the m x n matrix A (column-major,
+ * overwritten), whose dimension is k (m + k >= n), by Gaussian elimination
+ * with complete pivoting: the k unknowns left free are 1 (not normalised).
+ * A fixed choice in a null space of dimension k > 1, AUTO-07p's (NLVC): the
+ * phase of the orbits started at a Hopf point.  WHIRL_EINVAL for bad sizes
+ * or a non-finite A, WHIRL_ENOMEM. */
+WHIRL_API int whirl_null_vector_pivoted(size_t m, size_t n, size_t k, double *A,
+                                        double *u);
+
 #ifdef __cplusplus
 }
 #endif

@@ -163,6 +163,19 @@ echo "0 0.0958770209 0.1920107166 0.2898821951 0.3925066049 0.5124759076 0.61432
   awk -v w="$(cat "$tmp/am.mesh")" '{ n = split(w, m, " "); if (n != NF) exit 1
     for (i = 1; i <= NF; i++) { d = m[i] - $i; if (d * d > 1e-10) exit 1 } }'
 ok $? "the adapted mesh at UZ lambda = 0.5 is AUTO's to 1e-5 (whirl: $(cat "$tmp/am.mesh"))"
+# and on along AUTO's steps: AUTO-07p 0.9.2 on demo exp (c.exp.1: user
+# points at lambda = 0.5, 1, ..., 3) starts each step after a user point
+# from it at the step that passed it, so its PT 11 is at lambda 0.689151
+# (a step from the point past the UZ would give 0.6586), and its LP is PT
+# 33 with MAX u = 1.18679223 over the nodes of the mesh it adapted at PT 30
+# (AUTO's b.exp; the steps, and so the meshes, are AUTO's)
+sed 's/^NMX = 12$/NMX = 40/; s/^UZR = .*$/UZR = {lambda: [0.5, 1, 1.5, 2, 2.5, 3]}/' "$tmp/am.whirl" > "$tmp/ax.whirl"
+(cd "$tmp" && "$WHIRL" run ax.whirl --no-plot --quiet > /dev/null 2> ax.err)
+got=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i; next }
+  $2 == 10 { p11 = $h["lambda"] } $3 == "LP" { lp = $2 + 1 " " $h["max_u"] } END { print p11, lp }' "$tmp/ax.out/branches.tsv")
+# (branches.tsv counts the points from 0, AUTO's PT from 1)
+echo "$got" | awk '{ exit !(($1 - 0.68915094) ^ 2 < 4e-8 && $2 == 33 && ($3 - 1.18679223) ^ 2 < 1e-12) }'
+ok $? "AUTO's steps: PT 11 at lambda 0.689151 (2e-4), the LP at PT 33 with max u = 1.1867922 (1e-6), AUTO's (lambda(11), PT, max u: $got)"
 grep -q "KIND bvp .* NTST 10 NCOL 4 NFREE 0$" "$tmp/br.out/solutions"
 ok $? "labels are stored as KIND bvp with their mesh"
 # restart at the lower branch's UZ lambda = 3 onto NTST 20: on along the

@@ -1248,6 +1248,71 @@ static void test_lead(void) {
      "leads), none when the start is the vertex to newton_tol (%zu)", nlp[0], nlp[1], nlp[2]);
 }
 
+/* AUTO's step sequence (options.auto_steps, run files): a located special
+ * point starts the next step, at the step length that passed it, and the
+ * length follows AUTO's ADPTDS.  On the line x = p, where Newton converges
+ * at its first iteration, each step doubles (ADPTDS after 1 iteration; the
+ * library's own rule grows by 1.5); the UZ at p = 0.3 is followed by a
+ * point twice the passing step beyond it (not the point past it), and
+ * every step yields one point.  On the circle x^2 + p^2 = 1 the fold at
+ * p = 1 starts the next step and is not found again from there. */
+static int line1_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[0] - p[0];
+  return 0;
+}
+static double pt_dist(const whirl_branch *b, size_t i, size_t j) {
+  return hypot(b->pts[i].x[0] - b->pts[j].x[0], b->pts[i].p[0] - b->pts[j].p[0]);
+}
+static void test_auto_steps(void) {
+  whirl_system s = {.name = "line", .n = 1, .npar = 1, .F = line1_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.01;
+  o.ds_max = 10.0;
+  o.nmx = 9;
+  const double uz[1] = {0.3};
+  o.uz = uz;
+  o.nuz = 1;
+  const double x0[1] = {0.0}, p0[1] = {0.0};
+  for (int mode = 0; mode < 2; ++mode) {
+    o.auto_steps = mode;
+    whirl_branch *b = run(&s, &o, x0, p0, +1, NULL);
+    size_t u = 0;
+    while (b && u < b->len && b->pts[u].type != WHIRL_PT_UZ) ++u;
+    if (!b || u < 3 || u + 1 >= b->len) {
+      ok(0, "auto_steps = %d: a UZ inside the branch", mode);
+      whirl_branch_free(b);
+      continue;
+    }
+    const double h1 = pt_dist(b, u - 2, u - 1), h0 = pt_dist(b, u - 3, u - 2);
+    const double pass = (mode ? 2.0 : 1.5) * h1; /* the step that passed 0.3 */
+    if (mode)
+      ok(fabs(h1 / h0 - 2.0) < 1e-9 && fabs(b->pts[u].p[0] - 0.3) < 1e-12 &&
+             fabs(pt_dist(b, u, u + 1) - 2.0 * pass) < 1e-9 * pass && b->len == o.nmx + 1,
+         "auto_steps: steps double after one Newton iteration (%.6g), the UZ at 0.3 starts "
+         "the next step, twice the passing one (%.6g, %.6g), one point a step (%zu points, NMX %zu steps)",
+         h1 / h0, pt_dist(b, u, u + 1), 2.0 * pass, b->len, o.nmx);
+    else
+      ok(fabs(h1 / h0 - 1.5) < 1e-9 && fabs(pt_dist(b, u - 1, u + 1) - pass) < 1e-9 * pass,
+         "the library's steps: x1.5 (%.6g), the point after the UZ is the one past it", h1 / h0);
+    whirl_branch_free(b);
+  }
+  whirl_system cs = {.name = "circle", .n = 1, .npar = 1, .F = circ_F};
+  whirl_cont_options_default(&o);
+  o.auto_steps = 1;
+  o.ds = 0.05;
+  o.ds_max = 0.1;
+  o.nmx = 30; /* past p = 1, not round to p = -1 */
+  const double xc[1] = {-0.8}, pc[1] = {0.6};
+  whirl_branch *b = run(&cs, &o, xc, pc, +1, NULL);
+  const whirl_branch_point *lp = b ? nth_type(b, WHIRL_PT_LP, 0) : NULL;
+  ok(b && count_type(b, WHIRL_PT_LP) == 1 && lp && fabs(lp->p[0] - 1.0) < 1e-10 &&
+         lp + 1 < b->pts + b->len && lp[1].p[0] < 1.0 && lp[1].x[0] > 0.0,
+     "auto_steps: the fold at p = 1 once (%zu LP), the branch on from it", b ? count_type(b, WHIRL_PT_LP) : 0);
+  whirl_branch_free(b);
+}
+
 int main(void) {
   test_start_messages();
   test_cusp(1);
@@ -1271,6 +1336,7 @@ int main(void) {
   test_recorrect_after_remap();
   test_zero_at_start();
   test_lead();
+  test_auto_steps();
   test_errors();
   test_start_on_singular_solution();
   return done_testing();

@@ -509,6 +509,29 @@ static void test_null_vectors(void) {
      "null_vectors nvec > k -> EINVAL");
   ok(whirl_null_vectors(0, 3, A, 1, V, sv) == WHIRL_EINVAL,
      "null_vectors m = 0 -> EINVAL");
+  /* The pivoted choice, by hand: [1 2 3; 2 4 6] (rank 1, k = 2): the
+   * pivot 6 at (2, 3), columns 1 and 3 exchanged; the free unknowns (the
+   * permuted 2 and 3) are 1, the first -(4 + 2)/6 = -1, and the exchange
+   * undone: u = (1, 1, -1).  [1 2 3; 4 5 6] (k = 1): the pivot 6 at
+   * (2, 3), rows and columns 1 and 3 exchanged, [6 5 4; 0 -1/2 -1]; then
+   * -1 at (2, 3), columns 2 and 3 exchanged; the free unknown 1, the
+   * others -1/2 and -(4 (-1/2) + 5)/6 = -1/2, the exchanges undone in
+   * reverse: u = (-1/2, 1, -1/2) */
+  double B[6] = {1, 2, 2, 4, 3, 6}, u[3];
+  rc = whirl_null_vector_pivoted(2, 3, 2, B, u);
+  ok(rc == WHIRL_OK && u[0] == 1.0 && u[1] == 1.0 && u[2] == -1.0,
+     "pivoted null vector of [1 2 3; 2 4 6]: (1, 1, -1) by hand (%g, %g, %g)", u[0], u[1], u[2]);
+  double C[6] = {1, 4, 2, 5, 3, 6};
+  rc = whirl_null_vector_pivoted(2, 3, 1, C, u);
+  ok(rc == WHIRL_OK && fabs(u[0] + 0.5) < 1e-15 && fabs(u[1] - 1.0) < 1e-15 &&
+         fabs(u[2] + 0.5) < 1e-15,
+     "pivoted null vector of [1 2 3; 4 5 6]: (-1/2, 1, -1/2) by hand (%g, %g, %g)",
+     u[0], u[1], u[2]);
+  double D[4] = {1, 0, 0, NAN};
+  ok(whirl_null_vector_pivoted(2, 2, 1, D, u) == WHIRL_EINVAL &&
+         whirl_null_vector_pivoted(2, 3, 0, C, u) == WHIRL_EINVAL &&
+         whirl_null_vector_pivoted(1, 3, 1, C, u) == WHIRL_EINVAL,
+     "pivoted null vector: NaN, k = 0, m + k < n -> EINVAL");
 }
 
 /* ------------------------------------------------------------------------

@@ -1,0 +1,139 @@
+#!/bin/sh
+# test/regress/auto_steps.sh — `whirl auto` takes AUTO-07p's steps, meshes
+# and orbit phase, so its points are AUTO's, point for point; checked
+# against AUTO-07p itself, never against whirl:
+#  the Brusselator u1' = a - (b + 1) u1 + u1^2 u2, u2' = b u1 - u1^2 u2
+#  (a = PAR(2) = 1, b = PAR(1)), written here, run 1 its equilibria from
+#  b = 1.5 through the Hopf point b = 1 + a^2 = 2 to the stop at b = 2.2,
+#  run 2 the orbits from that HB with user points at b = 2.05 and 2.2.
+#  The reference rows are AUTO-07p 0.9.2's (the Debian package auto-07p,
+#  `r1 = run(e='bru', c='bru.1'); run(r1('HB1'), c='bru.2')` on these very
+#  files, b.bru), to 1e-6 relative in every column:
+#  - run 1: AUTO's second point is two steps from the start (its CNRLAE
+#    lists no point after the first step): b = 1.52828 at DS = 0.02 along
+#    the tangent (1 step: 1.51414); the HB at PT 10, the UZ at PT 13;
+#  - run 2: the orbits start in AUTO's phase (its null vector of the Hopf
+#    eigenproblem, STHOPF) on AUTO's adapted meshes (EQDF), MAX U(i) over
+#    the nodes as AUTO's; a user point ends its step and starts the next
+#    at the step that passed it (LCSPBV), the steps grow as AUTO's ADPTDS:
+#    PT 2, 3, 17, the UZ at PT 18, then 19, 20, 27 and the UZ at PT 28.
+#    (Past PT 28 the two step sequences part: AUTO's last location step
+#    there took two Newton iterations, whirl's localisation one.)
+#  And the run-file keys `whirl auto` writes for it (MESH_RULE = jumps,
+#  ORBIT_MAX = nodes), their input errors, and the curve's maximum (the
+#  default) against the nodes'.
+# TAP output.
+set -u
+: "${top_srcdir:=.}" "${top_builddir:=.}"
+WHIRL="$(cd "$top_builddir" && pwd)/drivers/whirl"
+command -v "${FC:-gfortran}" >/dev/null 2>&1 || { echo "1..0 # SKIP no Fortran compiler"; exit 0; }
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+n=0 fail=0
+ok() { n=$((n + 1)); echo "ok $n - $*"; }
+nok() { n=$((n + 1)); echo "not ok $n - $*"; fail=1; }
+check() { if [ "$1" = 0 ]; then shift; ok "$@"; else shift; nok "$@"; fi; }
+
+mkdir "$tmp/bru"
+cat > "$tmp/bru/bru.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      F(1) = PAR(2) - (PAR(1) + 1)*U(1) + U(1)**2*U(2)
+      F(2) = PAR(1)*U(1) - U(1)**2*U(2)
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 1.5D0
+      PAR(2) = 1
+      U(1) = 1
+      U(2) = 1.5D0
+      END SUBROUTINE STPNT
+F
+cat > "$tmp/bru/c.bru.1" <<'C'
+NDIM=   2, IPS =   1, IRS =   0, ILP =   1
+ICP =  [1]
+NTST=  20, NCOL=   4, IAD =   3, ISP =   1, ISW = 1, IPLT= 0, NBC= 0, NINT= 0
+NMX=  20, NPR=  100, MXBF=  10, IID =   2, ITMX= 8, ITNW= 5, NWTN= 3, JAC= 0
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-8
+DS  =  0.02, DSMIN= 0.001, DSMAX=   0.1, IADS=   1
+NPAR = 11, THL =  {}, THU =  {}
+UZSTOP = {1: 2.2}
+C
+cat > "$tmp/bru/c.bru.2" <<'C'
+NDIM=   2, IPS =   2, IRS =   2, ILP =   1
+ICP =  [1, 11]
+NTST=  20, NCOL=   4, IAD =   3, ISP =   1, ISW = 1, IPLT= 0, NBC= 0, NINT= 0
+NMX=  40, NPR=  100, MXBF=  10, IID =   2, ITMX= 8, ITNW= 5, NWTN= 3, JAC= 0
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-8
+DS  =  0.02, DSMIN= 0.001, DSMAX=   0.2, IADS=   1
+NPAR = 11, THL =  {11: 0.0}, THU =  {}
+UZR = {1: [2.05, 2.2]}
+C
+(cd "$tmp" && "$WHIRL" auto bru --runs=bru.1,bru.2@HB1 --quiet > bru.log 2>&1)
+check $? "whirl auto bru (equilibria, then the orbits from the HB) exits 0: $(tail -1 "$tmp/bru.log")"
+
+# compare the rows "PT TY v1 v2 ..." of AUTO (stdin) with b-file $1 of whirl
+# (|PT|, its type code, the values), every value to 1e-6 relative
+rows_agree() {
+  awk -v b="$1" 'BEGIN {
+      while ((getline l < b) > 0) {
+        if (substr(l, 1, 4) + 0 == 0) continue
+        m = split(l, w, " "); pt = w[2] < 0 ? -w[2] : w[2]
+        ty[pt] = w[3]; nv[pt] = m - 4
+        for (i = 5; i <= m; i++) v[pt, i - 4] = w[i]
+      } }
+    { pt = $1; if (!(pt in ty) || ty[pt] != $2) { print "PT " pt ": type " ty[pt] " where AUTO has " $2; bad = 1; next }
+      for (i = 3; i <= NF; i++) { a = $i; x = v[pt, i - 2]; d = (x - a) / a; if (d < 0) d = -d
+        if (d > 1e-6) { print "PT " pt " column " i - 2 ": " x " where AUTO has " a; bad = 1 } } }
+    END { exit bad }'
+}
+out=$(rows_agree "$tmp/bru.out/b.bru.1" <<'R'
+2 0 1.5282842741 1.8263769661 1.0000000000 1.5282842741
+3 0 1.5565685482 1.8501096306 1.0000000000 1.5565685482
+9 0 1.9666905223 2.2063253637 1.0000000000 1.9666905223
+10 3 1.9999999968 2.2360679746 1.0000000000 1.9999999968
+11 0 2.0707106820 2.2995309801 1.0000000000 2.0707106820
+13 -4 2.1999999988 2.4166091936 1.0000000000 2.1999999988
+R
+)
+check $? "run 1 (equilibria): the second point two steps out, the HB at PT 10 and the UZ at PT 13, as AUTO's ${out:+($out)}"
+out=$(rows_agree "$tmp/bru.out/b.bru.2@HB1" <<'R'
+2 0 2.0002000126 2.2363363257 1.0165097130 2.0232038729 6.2832551398
+3 0 2.0007996241 2.2371408356 1.0333748480 2.0466059043 6.2834646685
+17 0 2.0476024891 2.3001199944 1.3001228483 2.3857595601 6.3006753832
+18 -4 2.0500000000 2.3033563864 1.3089999350 2.3961507154 6.3016038419
+19 0 2.0618244484 2.3193335872 1.3509404357 2.4450234646 6.3062520502
+20 0 2.0745880251 2.3366091066 1.3934944576 2.4938511679 6.3114002674
+27 0 2.1831068683 2.4848164918 1.7064760470 2.8290759917 6.3610512528
+28 -4 2.1999999995 2.5081124993 1.7513445765 2.8744535975 6.3697905906
+R
+)
+check $? "run 2 (orbits): PT 2-3, 17-20 and 27-28 with their MAX U(1), MAX U(2) and the UZs at PT 18, 28 as AUTO's ${out:+($out)}"
+
+# the keys whirl auto writes, and the curve's maximum against the nodes'
+w="$tmp/bru.out/bru.2@HB1.whirl"
+grep -q '^MESH_RULE = jumps$' "$w" && grep -q '^ORBIT_MAX = nodes$' "$w"
+check $? "bru.2@HB1.whirl: MESH_RULE = jumps and ORBIT_MAX = nodes, AUTO's"
+sed -e 's/^ORBIT_MAX = nodes$/ORBIT_MAX = curve/' -e 's|^OUT .*$|OUT = curve.out|' "$w" > "$tmp/bru.out/curve.whirl"
+(cd "$tmp/bru.out" && "$WHIRL" run curve.whirl --quiet --no-plot > /dev/null 2>&1)
+check $? "the same run with ORBIT_MAX = curve exits 0"
+paste "$tmp/bru.out/bru.2@HB1.out/branches.tsv" "$tmp/bru.out/curve.out/branches.tsv" 2>/dev/null |
+  awk -F'\t' 'NR == 1 { h = NF / 2; for (i = 1; i <= h; i++) if ($i ~ /^max_/) c[i] = 1; next }
+    { rows++; for (i in c) { d = $(i + h) - $i; if (d < -1e-12 || d > 1e-3 * (1 + ($i < 0 ? -$i : $i))) bad = 1; if (d > 1e-12) above++ } }
+    END { exit !(rows > 30 && !bad && above > 0) }'
+check $? "ORBIT_MAX = curve: every orbit's maximum at or above the largest node value, some above it"
+for kv in "ORBIT_MAX = sideways:ORBIT_MAX: 'sideways' is neither curve nor nodes" \
+          "MESH_RULE = 2:MESH_RULE: '2' is neither derivative nor jumps"; do
+  key=${kv%%:*} msg=${kv#*:}
+  sed -e "s/^${key%% *} = .*\$/$key/" -e 's|^OUT .*$|OUT = bad.out|' "$w" > "$tmp/bru.out/bad.whirl"
+  (cd "$tmp/bru.out" && "$WHIRL" run bad.whirl --quiet --no-plot > bad.log 2>&1)
+  rc=$?
+  [ $rc = 2 ] && grep -q "bad.whirl:[0-9]*: $msg" "$tmp/bru.out/bad.log" && [ ! -e "$tmp/bru.out/bad.out" ]
+  check $? "$key: exit 2 ($rc), the file and line, nothing written: $(head -1 "$tmp/bru.out/bad.log")"
+done
+echo "1..$n"
+exit $fail
