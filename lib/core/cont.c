@@ -998,21 +998,22 @@ int whirl_cont_switch_direction(whirl_cont *c, const whirl_point *bp, int dir,
       for (size_t i = 0; i < N; ++i) ph[i] = v[i] - vt * bp->t[i] / tn;
     }
   }
-  /* dir = +1 is the direction in which the parameter grows, as in AUTO
-   * (AUTO-07p ae.f90, STPRAE: the sign makes PAR(ICP(1))-dot >= 0), so
-   * that the sign of DS chooses the side and not the SVD's sign.  Where the
-   * new branch leaves at a constant parameter (a pitchfork: AUTO's sign is
-   * round-off there), the first of its largest components grows. */
-  double big = 0.0, lead = 0.0;
-  for (size_t i = 0; i < N; ++i) big = fmax(big, fabs(ph[i]));
-  for (size_t i = 0; i < n && lead == 0.0; ++i)
-    if (fabs(ph[i]) >= (1.0 - 1e-8) * big) lead = ph[i];
-  const double key = fabs(ph[n]) > 1e-8 * big ? ph[n] : lead;
-  const double sg = (key < 0.0 ? -1.0 : 1.0) * (dir < 0 ? -1.0 : 1.0);
+  /* dir = +1 is AUTO's direction (AUTO-07p ae.f90, STPRAE), so that the
+   * sign of DS chooses the side and not the SVD's sign: of the unit vector,
+   * the parameter grows where it moves (its rate above newton_tol relative
+   * to 1 + |p|), else (a pitchfork: the new branch leaves at a constant
+   * parameter) the first state component that moves so grows. */
   double nph = 0.0;
   for (size_t i = 0; i < N; ++i) nph += ph[i] * ph[i];
   nph = sqrt(nph);
-  for (size_t i = 0; i < N; ++i) ph[i] *= sg / (nph > 0 ? nph : 1.0);
+  for (size_t i = 0; i < N; ++i) ph[i] /= nph > 0 ? nph : 1.0;
+  const double tol = c->opt.newton_tol;
+  double key = 0.0;
+  if (fabs(ph[n]) > tol * (1.0 + fabs(bp->p[c->opt.icp]))) key = ph[n];
+  for (size_t i = 0; i < n && key == 0.0; ++i)
+    if (fabs(ph[i]) > tol * (1.0 + fabs(bp->x[i]))) key = ph[i];
+  const double sg = (key < 0.0 ? -1.0 : 1.0) * (dir < 0 ? -1.0 : 1.0);
+  for (size_t i = 0; i < N; ++i) ph[i] *= sg;
   rc = WHIRL_OK;
 done:
   free(A);

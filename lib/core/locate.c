@@ -111,6 +111,27 @@ static void trial_start(const whirl_cont *c, const cont_state *a, const cont_sta
   for (size_t i = 0; i < N; ++i) X[i] += H[i] - (Ha[i] + u * (Hb[i] - Ha[i]));
 }
 
+/* Beside a branch point the other branch crosses the hyperplane of the
+ * trial too, a distance of about the square root of the distance to the
+ * point away (a pitchfork), and the bordered Jacobian there is nearly
+ * singular: Newton from the trial start Xs lands on either.  The start is
+ * on the chord of the bracket [Xa, Xb] to its curvature times the span
+ * squared, so a solution X further from Xs than the span (plus Newton's
+ * tolerance) is the other branch (enz's symmetric pitchfork: s1 - s2 =
+ * 1e-5 at |psi| = 5e-8, where the bracket was 1.1e-6 wide); then the start
+ * itself is the point. */
+static void on_the_branch(const whirl_cont *c, const double *Xa, const double *Xb,
+                          const double *Xs, double *X) {
+  double span = 0.0, off = 0.0, size = 0.0;
+  for (size_t i = 0; i < c->N; ++i) {
+    span = fmax(span, fabs(Xb[i] - Xa[i]));
+    off = fmax(off, fabs(X[i] - Xs[i]));
+    size = fmax(size, fabs(X[i]));
+  }
+  if (off > span + c->opt.newton_tol * (1.0 + size))
+    memcpy(X, Xs, c->N * sizeof *X);
+}
+
 /* A trial point's tangent, and its tests unless only the tangent's. */
 static int trial_analyse(whirl_cont *c, cont_state *st, int tangent_only) {
   return tangent_only ? cont_tangent(c, st, c->dir) : cont_analyse(c, st, c->dir);
@@ -151,9 +172,9 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   /* the states at the two ends of the bracket: each trial starts from the
    * chord between them, not between a and b, which near a branch point on
    * a sharply turning branch is too far for Newton (enz's pitchfork) */
-  double *Xa = malloc(6 * N * sizeof *Xa);
+  double *Xa = malloc(7 * N * sizeof *Xa);
   if (!Xa) return 1;
-  double *Xb = Xa + N, *Xbest = Xb + N, *H = Xbest + N; /* not before the check: NULL + N */
+  double *Xb = Xa + N, *Xbest = Xb + N, *Xs = Xbest + N, *H = Xs + N; /* not before the check */
   double sbest = 0.0, fbest = INFINITY, sout = 0.0;
   memcpy(Xa, a->X, N * sizeof *Xa);
   memcpy(Xb, b->X, N * sizeof *Xb);
@@ -181,7 +202,9 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
       if (retry == 3) sigma = mid;
       else if (retry) sigma += 1e-7 * (hi - lo) * (retry == 1 ? 1.0 : -2.0);
       trial_start(c, a, b, ev == EV_BP, ds, sa, sb, Xa, Xb, sigma, out->X, H);
+      memcpy(Xs, out->X, N * sizeof *Xs);
       rc = cont_correct(c, a->X, c->dir, sigma, out->X);
+      if (rc == 0 && ev == EV_BP) on_the_branch(c, Xa, Xb, Xs, out->X);
       if (rc == 0 && !p_only) rc = trial_analyse(c, out, tangent_only);
       if (rc < 0) break;
     }

@@ -953,6 +953,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
   const whirl_run_settings *s = R->s;
   const int restart = O->have_sol;
   whirl_solution *so = &O->sol;
+  int data_mesh = 0; /* the mesh made from the DAT rows (AUTO's ADAPT2) */
   const double *p0 = R->par;
   char err[512];
   whirl_colloc_options co;
@@ -1001,14 +1002,24 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
     double T;
     O->xs = malloc((m + 1) * R->n * sizeof *O->xs);
     if (!O->xs) return -1;
-    if (R->s->dat[0]) { /* the data's jumps over the period: rotations */
+    if (R->s->dat[0] && s->mesh_jumps) { /* AUTO's ADAPT2 of the rows */
       double *jump = O->xs + m * R->n;
-      if (run_dat_samples(R, m, O->xs, &T, jump)) return -2;
+      if (run_dat_adapt(R, O->colloc, O->X, &T, jump)) return -2;
       if (whirl_colloc_set_rotations(O->colloc, jump))
         fprintf(R->log, "rotations: components turning by 2 pi k over a period (AUTO's NRTN)\n");
-    } else if (start_samples(R, m, O->xs, &T))
-      return -2;
-    whirl_colloc_from_samples(O->colloc, O->xs, m, T, O->X);
+      if (R->prob.autonomous) O->X[b->nb - 1] = T;
+      whirl_colloc_set_reference(O->colloc, O->X);
+      data_mesh = 1;
+    } else {
+      if (R->s->dat[0]) { /* the data's jumps over the period: rotations */
+        double *jump = O->xs + m * R->n;
+        if (run_dat_samples(R, m, O->xs, &T, jump)) return -2;
+        if (whirl_colloc_set_rotations(O->colloc, jump))
+          fprintf(R->log, "rotations: components turning by 2 pi k over a period (AUTO's NRTN)\n");
+      } else if (start_samples(R, m, O->xs, &T))
+        return -2;
+      whirl_colloc_from_samples(O->colloc, O->xs, m, T, O->X);
+    }
   } else if (so->kind == WHIRL_SOL_EQ) {
     if (strcmp(so->ty, "HB") || !R->prob.autonomous) {
       run_fail(R, WHIRL_RK_IRS, "IPS = 2 from an equilibrium label needs an "
@@ -1112,7 +1123,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
     fprintf(R->log, "fixed period %.10g; %s free in its place\n", co.period,
             R->pnames[R->icp[1]]);
   }
-  if (!b->dir && !pd && s->iad > 0 && !restart)
+  if (!b->dir && !pd && s->iad > 0 && !restart && !data_mesh)
     whirl_colloc_adapt(O->colloc, O->X);
   return 0;
 }

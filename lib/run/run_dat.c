@@ -5,8 +5,10 @@
  * it (STPNT's PAR(11), whirl's period0), time is rescaled to [0, 1] and
  * the orbit is the piecewise-linear interpolant of the rows (its ADAPT2 of
  * data with NCOL = 1), sampled here at m equally spaced times for the
- * collocation's start (whirl_colloc_from_samples); the first point is then
- * corrected by Newton with the phase condition against this orbit.
+ * collocation's start (whirl_colloc_from_samples), or with MESH_RULE =
+ * jumps evaluated at the nodes of the mesh AUTO's ADAPT2 makes from the
+ * rows (whirl_colloc_adapt_from); the first point is then corrected by
+ * Newton with the phase condition against this orbit.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <stdio.h>
 #include <stdlib.h>
@@ -71,7 +73,9 @@ static int read_rows(run_ctx *R, const char *path, double **t, double **u, size_
   return rc;
 }
 
-int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T, double *jump) {
+/* The rows of the data file, the period and the jumps over it. */
+static int dat_rows(run_ctx *R, double **tp, double **up, size_t *nrp, double *T,
+                    double *jump) {
   const size_t n = R->n;
   double *t = NULL, *u = NULL;
   size_t nr;
@@ -91,6 +95,18 @@ int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T, double *jump) {
    * period0, where it has one, is that value */
   const double tdat = *T;
   if (R->model->period0 > 0) *T = R->model->period0;
+  for (size_t i = 0; jump && i < n; i++) jump[i] = u[(nr - 1) * n + i] - u[i];
+  fprintf(R->log, "start orbit from %s: %zu rows over %.10g, period %.10g\n", path, nr,
+          tdat, *T);
+  *tp = t, *up = u, *nrp = nr;
+  return 0;
+}
+
+int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T, double *jump) {
+  const size_t n = R->n;
+  double *t, *u;
+  size_t nr;
+  if (dat_rows(R, &t, &u, &nr, T, jump)) return -1;
   for (size_t k = 0, j = 0; k < m; k++) { /* the interpolant at k/m */
     const double tk = t[0] + *T * (double)k / (double)m;
     while (j + 2 < nr && t[j + 1] <= tk) j++;
@@ -98,9 +114,20 @@ int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T, double *jump) {
     for (size_t i = 0; i < n; i++)
       xs[k * n + i] = (1.0 - w) * u[j * n + i] + w * u[(j + 1) * n + i];
   }
-  for (size_t i = 0; jump && i < n; i++) jump[i] = u[(nr - 1) * n + i] - u[i];
-  fprintf(R->log, "start orbit from %s: %zu rows over %.10g, period %.10g\n", path, nr,
-          tdat, *T);
   free(t), free(u);
   return 0;
+}
+
+int run_dat_adapt(run_ctx *R, whirl_colloc *colloc, double *X, double *T, double *jump) {
+  double *t, *u;
+  size_t nr;
+  if (dat_rows(R, &t, &u, &nr, T, jump)) return -1;
+  /* AUTO's time of the rows on [0, 1], their mesh of nr - 1 linear pieces */
+  const double t0 = t[0], span = t[nr - 1] - t[0];
+  for (size_t k = 0; k < nr; k++) t[k] = (t[k] - t0) / span;
+  t[nr - 1] = 1.0;
+  const int rc = whirl_colloc_adapt_from(colloc, nr - 1, 1, t, u, X);
+  if (rc != WHIRL_OK) run_say(R, "DAT: %s", whirl_colloc_errmsg(colloc));
+  free(t), free(u);
+  return rc == WHIRL_OK ? 0 : -1;
 }

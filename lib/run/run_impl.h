@@ -114,6 +114,10 @@ int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q);
 /* DAT: m samples xs[m * n] of the data file's orbit, its period *T and
  * (jump not NULL) u_last - u_first, jump[n] (run_dat.c).  0, or -1 (said). */
 int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T, double *jump);
+/* The same start as AUTO makes it (MESH_RULE = jumps): colloc's mesh from
+ * the rows by AUTO's ADAPT2 and X's nodes the rows' interpolant there (the
+ * period in *T, not in X).  0, or -1 said. */
+int run_dat_adapt(run_ctx *R, whirl_colloc *colloc, double *X, double *T, double *jump);
 int run_point_measures(const run_ctx *R, whirl_solution_kind kind, const void *obj,
                        const double *xb, const double *p, double *l2,
                        double *period, double *mx);

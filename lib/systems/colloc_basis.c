@@ -130,35 +130,42 @@ void colloc_basis_derivative_weights(size_t m, double *dm) {
   }
 }
 
-/* The new mesh equidistributing the density E[N] (Q[N + 1] its integral
- * on old): 1, 0 (E vanishes: old kept) or -1 - N - k (interval k
- * degenerate). */
-static int equidistribute(size_t N, const double *old, double *mesh, const double *E,
-                          double *Q) {
+/* The new mesh of Nnew intervals equidistributing the density E[N] on
+ * old (Q[N + 1] its integral): 1, 0 (E vanishes: the uniform mesh, or old
+ * kept when Nnew = N) or -1 - N - k (interval k degenerate). */
+static int equidistribute_to(size_t N, const double *old, const double *E, double *Q,
+                             size_t Nnew, double *mesh) {
   double Emax = 0.0;
   Q[0] = 0.0;
   for (size_t i = 0; i < N; ++i) {
     Emax = fmax(Emax, E[i]);
     Q[i + 1] = Q[i] + (old[i + 1] - old[i]) * E[i];
   }
-  memcpy(mesh, old, (N + 1) * sizeof *mesh);
-  if (!(Emax > 0)) return 0; /* a constant solution: keep the mesh */
+  if (!(Emax > 0)) { /* a constant solution: keep the mesh */
+    for (size_t k = 0; k <= Nnew; ++k) mesh[k] = Nnew == N ? old[k] : (double)k / (double)Nnew;
+    return 0;
+  }
   size_t i = 0;
-  for (size_t k = 1; k < N; ++k) {
-    const double q = Q[N] * (double)k / (double)N;
+  for (size_t k = 1; k < Nnew; ++k) {
+    const double q = Q[N] * (double)k / (double)Nnew;
     while (i < N - 1 && (Q[i + 1] < q || E[i] <= 0.0)) ++i;
     double t = old[i] + (E[i] > 0 ? (q - Q[i]) / E[i] : 0.0);
     t = fmin(fmax(t, old[i]), old[i + 1]);
     mesh[k] = t;
   }
   mesh[0] = 0.0;
-  mesh[N] = 1.0;
-  for (size_t k = 1; k <= N; ++k)
+  mesh[Nnew] = 1.0;
+  for (size_t k = 1; k <= Nnew; ++k)
     if (!(mesh[k] > mesh[k - 1])) {
-      memcpy(mesh, old, (N + 1) * sizeof *mesh);
+      if (Nnew == N) memcpy(mesh, old, (N + 1) * sizeof *mesh);
       return -1 - (int)N - (int)k;
     }
   return 1;
+}
+
+static int equidistribute(size_t N, const double *old, double *mesh, const double *E,
+                          double *Q) {
+  return equidistribute_to(N, old, E, Q, N, mesh);
 }
 
 /* x_r^(m) on interval i (constant: the m-th derivative of a degree-m
@@ -212,19 +219,26 @@ static int jump_density(size_t n, size_t m, size_t N, int periodic, const double
   return 1;
 }
 
-int colloc_basis_new_mesh_jumps(size_t n, size_t m, size_t N, int periodic,
-                                const double *dm, const double *X, const double *old,
-                                double *mesh, double *E, double *Q, double *D) {
+int colloc_basis_mesh_from_jumps(size_t n, size_t m, size_t N, int periodic,
+                                 const double *dm, const double *X, const double *old,
+                                 size_t Nnew, double *mesh, double *E, double *Q,
+                                 double *D) {
   for (size_t i = 0; i < N; ++i)
     for (size_t r = 0; r < n; ++r) {
       D[n * i + r] = mth_derivative(n, m, dm, X, old, i, r);
       if (!isfinite(D[n * i + r])) return -1 - (int)i;
     }
   if (N < 2 || !jump_density(n, m, N, periodic, D, old, E)) {
-    memcpy(mesh, old, (N + 1) * sizeof *mesh);
+    for (size_t k = 0; k <= Nnew; ++k) mesh[k] = Nnew == N ? old[k] : (double)k / (double)Nnew;
     return 0;
   }
-  return equidistribute(N, old, mesh, E, Q);
+  return equidistribute_to(N, old, E, Q, Nnew, mesh);
+}
+
+int colloc_basis_new_mesh_jumps(size_t n, size_t m, size_t N, int periodic,
+                                const double *dm, const double *X, const double *old,
+                                double *mesh, double *E, double *Q, double *D) {
+  return colloc_basis_mesh_from_jumps(n, m, N, periodic, dm, X, old, N, mesh, E, Q, D);
 }
 
 void colloc_basis_map_nodes(size_t n, size_t m, size_t N, const double *old,

@@ -74,6 +74,15 @@ int colloc_basis_new_mesh_jumps(size_t n, size_t m, size_t N, int periodic,
                                 const double *dm, const double *X, const double *old,
                                 double *mesh, double *E, double *Q, double *D);
 
+/* The same from the solution X on old (N intervals of degree m) to a mesh
+ * of Nnew intervals (AUTO-07p's NEWMSH in ADAPT2, a restart on another
+ * NTST or NCOL, or from data: m = 1): mesh[Nnew + 1]; when the density
+ * vanishes the uniform mesh (0). */
+int colloc_basis_mesh_from_jumps(size_t n, size_t m, size_t N, int periodic,
+                                 const double *dm, const double *X, const double *old,
+                                 size_t Nnew, double *mesh, double *E, double *Q,
+                                 double *D);
+
 /* The node values of v (a solution or a direction: the map is linear)
  * from the piecewise polynomial on old to the nodes of mesh, in place;
  * scratch copy[(N m + 1) n].  Entries past the nodes are not touched. */

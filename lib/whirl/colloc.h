@@ -166,6 +166,16 @@ WHIRL_API int whirl_colloc_pd_switch(const whirl_colloc *c, const double *X,
  * ... < tau_NTST = 1) before whirl_colloc_set_reference with the stored X.
  * WHIRL_EINVAL for a mesh that is not increasing from 0 to 1. */
 WHIRL_API int whirl_colloc_set_mesh(whirl_colloc *c, const double *tau);
+/* AUTO-07p's start from a solution on another mesh (its ADAPT2): the
+ * mesh of c becomes the one that equidistributes AUTO's density (EQDF,
+ * periodic: the jumps of the derivative of order mold) of the piecewise
+ * polynomial Xold (node values on nold intervals of degree mold over
+ * old_mesh[nold + 1], from 0 to 1, NTST * NCOL + 1 rows of n; data rows
+ * are mold = 1), and the node part of X is Xold at the new nodes (its
+ * last entry, the period, is left).  WHIRL_EINVAL or WHIRL_ENOMEM. */
+WHIRL_API int whirl_colloc_adapt_from(whirl_colloc *c, size_t nold, size_t mold,
+                                      const double *old_mesh, const double *Xold,
+                                      double *X);
 /* Phase reference of an autonomous orbit (no-op for forced models). */
 WHIRL_API int whirl_colloc_set_reference(whirl_colloc *c, const double *X);
 

@@ -1239,6 +1239,39 @@ static void test_errors(void) {
   whirl_colloc_free(c);
 }
 
+/* AUTO's ADAPT2 from data (whirl_colloc_adapt_from, mold = 1): rows of a
+ * hat u1 = (0, 0, 1, 0, 0) on t = 0, 1/4, ..., 1 (u2 = 0).  By hand, AUTO's
+ * EQDF: slopes 0, 4, -4, 0; the densities |2 jump / (h + h)|^(1/2) of the
+ * first three intervals 4, sqrt(32), 4 and, periodic, |(0 - 0) / h|^(1/2)
+ * = 0 of the last; their integral 1, 2.414, 3.414, 3.414; half of it,
+ * 1.707, is in the second interval at 1/4 + 0.707 / sqrt(32) = 3/8: the
+ * mesh of NTST = 2 is (0, 3/8, 1), and the nodes of NCOL = 2 (0, 3/16,
+ * 3/8, 11/16, 1) take the hat's values (0, 0, 1/2, 1/4, 0). */
+static void test_adapt_from_data(void) {
+  whirl_colloc_options o;
+  whirl_colloc_options_default(&o);
+  o.ntst = 2;
+  o.ncol = 2;
+  char err[256];
+  whirl_colloc *c = whirl_colloc_alloc(&lamom, &o, err, sizeof err);
+  const double t[5] = {0, 0.25, 0.5, 0.75, 1}, u[10] = {0, 0, 0, 0, 1, 0, 0, 0, 0, 0};
+  double X[11] = {0};
+  const int rc = c ? whirl_colloc_adapt_from(c, 4, 1, t, u, X) : -1;
+  const double *m = c ? whirl_colloc_mesh(c) : NULL;
+  const double want[5] = {0, 0, 0.5, 0.25, 0};
+  double err_nodes = 0.0;
+  for (int j = 0; j < 5; ++j) err_nodes = fmax(err_nodes, fabs(X[2 * j] - want[j]) + fabs(X[2 * j + 1]));
+  ok(rc == WHIRL_OK && m && fabs(m[1] - 0.375) < 1e-15 && m[2] == 1.0 && err_nodes < 1e-15,
+     "adapt_from data: AUTO's mesh (0, %.15g, 1) = (0, 3/8, 1) by hand, the hat at its nodes "
+     "(error %.2g)", m ? m[1] : -1.0, err_nodes);
+  const double bad[5] = {0, 0.5, 0.25, 0.75, 1};
+  ok(c && whirl_colloc_adapt_from(c, 4, 1, bad, u, X) == WHIRL_EINVAL &&
+         whirl_colloc_adapt_from(c, 4, 0, t, u, X) == WHIRL_EINVAL,
+     "adapt_from: a mesh not increasing, degree 0: WHIRL_EINVAL (%s)",
+     c ? whirl_colloc_errmsg(c) : "");
+  whirl_colloc_free(c);
+}
+
 int main(int argc, char **argv) {
   const int quick = argc > 1 && strcmp(argv[1], "quick") == 0;
   test_size_limits();
@@ -1250,6 +1283,7 @@ int main(int argc, char **argv) {
   test_forced_nu2();
   test_continuation(quick);
   test_adapt_along_branch();
+  test_adapt_from_data();
   test_lw_from_newton();
   if (!quick) test_lorenz();
   if (!quick) test_sfd_floquet();
