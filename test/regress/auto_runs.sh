@@ -30,7 +30,9 @@
 #     - ppp: c.ppp.4 alone (a fresh start with MXBF = 10), all 20 labels
 #       against AUTO's own run of it (AUTO-07p 0.9.2, `run(e='ppp',
 #       c='ppp.4')`, listed below);
-#     - enz: the BP at s0 = 34.2229 just past the LP is found (AUTO's BP 3);
+#     - enz: the BP at s0 = 34.2229 just past the LP is found (AUTO's BP 3),
+#       on the symmetric branch it lies on, and the branch switched there
+#       (MXBF) on AUTO's side (AUTO's LP 7: s1 > s2);
 #     - lor: dat = 'lor', the PD near rho = 229.4 and the orbit at the UZ
 #       rho = 200 (INTEGRAL U(1) of IPLT = 4 and the period) as AUTO's;
 #     - pp3: PVLS's PAR(9) (the L2-NORM through GETP) stops a branch at
@@ -279,6 +281,15 @@ demo enz --runs=enz.1
 bp=$(awk 'substr($0, 1, 4) + 0 == 1 && substr($0, 11, 4) + 0 == 1 { print substr($0, 20, 19) + 0, substr($0, 39, 19) + 0; exit }' "$tmp/enz.out/b.enz")
 echo "$bp" | awk '{ exit !($1 != "" && (($1 - 34.2229) / 34.2229) ^ 2 < 1e-10 && (($2 - 1.66053) / 1.66053) ^ 2 < 1e-10) }'
 check $? "enz: the first BP of run 1 at s0 = 34.2229, L2-NORM 1.66053 as AUTO's BP 3 (hyper.all): $bp"
+# ... on the symmetric branch it lies on (s1 = s2: AUTO's 1.17417 both;
+# Newton beside the point put whirl's 1e-5 off, onto the other branch), and
+# the switched branch (MXBF) on AUTO's side, s1 > s2 (AUTO's LP 7: 25.3727,
+# s1 5.88408, s2 0.571738; STPRAE: the first component that moves grows)
+got=$(awk 'substr($0, 1, 4) + 0 == 1 && substr($0, 11, 4) + 0 == 1 { b = substr($0, 58, 19) - substr($0, 77, 19); if (b < 0) b = -b }
+  substr($0, 1, 4) + 0 == 2 && substr($0, 11, 4) + 0 == 2 && lp == "" { lp = (substr($0, 20, 19) + 0) " " (substr($0, 58, 19) + 0) " " (substr($0, 77, 19) + 0) }
+  END { print (b == "" ? 1 : b), lp }' "$tmp/enz.out/b.enz")
+echo "$got" | awk '{ exit !($1 < 1e-6 && (($2 - 25.3727) / 25.3727) ^ 2 < 1e-10 && $3 > $4 && (($3 - 5.88408) / 5.88408) ^ 2 < 1e-10) }'
+check $? "enz: its BPs on the symmetric branch (|s1 - s2| < 1e-6), branch 2's first LP on AUTO's side (25.3727, s1 5.88408 > s2): $got"
 
 # lor: dat = 'lor' (AUTO's data file of the demo), IPLT = 4 (INTEGRAL U(1))
 demo lor --runs=lor.1

@@ -1313,6 +1313,46 @@ static void test_auto_steps(void) {
   whirl_branch_free(b);
 }
 
+/* The side of a pitchfork's new branch (whirl_cont_start_switch, dir = +1):
+ * AUTO's STPRAE rule, the first state component that moves grows.  F =
+ * (p x1 - x1^3, 4 x1 + 3 x2): the trivial branch x = 0, the new one x1 =
+ * +-sqrt(p), x2 = -4/3 x1 (direction (3, -4)/5 at the BP, p = 0): +1 is the
+ * side x1 > 0, where before x2, the largest component, grew (x1 < 0). */
+static int pf2_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = p[0] * x[0] - x[0] * x[0] * x[0];
+  f[1] = 4.0 * x[0] + 3.0 * x[1];
+  return 0;
+}
+static void test_switch_orientation(void) {
+  whirl_system s = {.name = "pitchfork2", .n = 2, .npar = 1, .F = pf2_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.03;
+  o.ds_max = 0.1;
+  o.p_min = -1.0;
+  o.p_max = 1.0;
+  const double x0[2] = {0.0, 0.0}, p0[1] = {-0.5};
+  whirl_branch *b = run(&s, &o, x0, p0, +1, NULL);
+  const whirl_branch_point *bp = b ? nth_type(b, WHIRL_PT_BP, 0) : NULL;
+  double x1 = NAN, x2 = NAN;
+  if (bp) {
+    char err[256];
+    whirl_cont *c = whirl_cont_alloc(&s, &o, err, sizeof err);
+    double bt[3] = {0, 0, 1}; /* the trivial branch's tangent: p alone */
+    whirl_point q = {.n = 2, .npar = 1, .x = bp->x, .p = bp->p, .t = bt};
+    whirl_branch *sw = whirl_branch_alloc(2, 1, 0, 0);
+    if (c && whirl_cont_start_switch(c, &q, +1) == WHIRL_OK && whirl_cont_run(c, sw) >= 0 &&
+        sw->len > 3)
+      x1 = sw->pts[3].x[0], x2 = sw->pts[3].x[1];
+    whirl_branch_free(sw);
+    whirl_cont_free(c);
+  }
+  ok(x1 > 0.0 && fabs(x2 + 4.0 / 3.0 * x1) < 1e-9,
+     "pitchfork along (3, -4)/5: dir = +1 is AUTO's side, x1 grows (x1 %.4g, x2 %.4g)", x1, x2);
+  whirl_branch_free(b);
+}
+
 int main(void) {
   test_start_messages();
   test_cusp(1);
@@ -1337,6 +1377,7 @@ int main(void) {
   test_zero_at_start();
   test_lead();
   test_auto_steps();
+  test_switch_orientation();
   test_errors();
   test_start_on_singular_solution();
   return done_testing();
