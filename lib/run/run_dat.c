@@ -10,6 +10,7 @@
  * rows (whirl_colloc_adapt_from); the first point is then corrected by
  * Newton with the phase condition against this orbit.
  * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,6 +28,12 @@ static size_t numbers(char *line, double *v, size_t max) {
     k++;
   }
   return k;
+}
+
+static int all_finite(const double *v, size_t k) {
+  for (size_t i = 0; i < k; i++)
+    if (!isfinite(v[i])) return 0;
+  return 1;
 }
 
 /* The rows of PATH: t[*nr] and u[*nr * n] (allocated).  0, or -1 said. */
@@ -49,6 +56,9 @@ static int read_rows(run_ctx *R, const char *path, double **t, double **u, size_
     if (k < n + 1) {
       run_fail(R, WHIRL_RK_DAT, "%s:%zu: %zu numbers, a row is t and the %zu state components",
                path, lineno, k, n);
+      rc = -1;
+    } else if (!all_finite(v, n + 1)) {
+      run_fail(R, WHIRL_RK_DAT, "%s:%zu: a number is not finite", path, lineno);
       rc = -1;
     } else if (*nr && !(v[0] > (*t)[*nr - 1])) {
       run_fail(R, WHIRL_RK_DAT, "%s:%zu: t = %g does not increase", path, lineno, v[0]);

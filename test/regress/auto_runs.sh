@@ -157,6 +157,13 @@ sed 's/circle/nothere/' "$tmp/hnf/c.hnf.1" > "$tmp/hnf/c.hnf.2"
 rc=$?
 [ $rc = 2 ] && grep -q "c.hnf.2:1: dat = 'nothere': no data file .*nothere or .*nothere.dat" "$tmp/bad.log" && [ ! -e "$tmp/bad.out" ]
 check $? "dat: a missing data file: exit 2 ($rc), the constants file and line, nothing written: $(head -1 "$tmp/bad.log")"
+sed -n '1,12p' "$tmp/hnf/circle.dat" > "$tmp/hnf/nan.dat"
+echo "1.5D+00 nan 0.5D+00" >> "$tmp/hnf/nan.dat"
+sed 's/circle/nan/' "$tmp/hnf/c.hnf.1" > "$tmp/hnf/c.hnf.3"
+(cd "$tmp" && "$WHIRL" auto hnf --runs=hnf.3 --out=nan.out > nan.log 2>&1)
+rc=$?
+[ $rc = 2 ] && grep -q "nan.dat:13: a number is not finite" "$tmp/nan.log"
+check $? "dat: a row with NaN: exit 2 ($rc), the data file and line: $(grep -m1 'not finite' "$tmp/nan.log")"
 
 # ---- rotations (AUTO's NRTN): u1' = u2, u2' = p - u2 is 2 pi-periodic in
 # the angle u1; its orbits u1 = p t, u2 = p turn u1 by 2 pi in the period
