@@ -175,11 +175,11 @@ int run_point_measures(const run_ctx *R, whirl_solution_kind kind, const void *o
   *l2out = whirl_periodic_l2norm(&po, xb);
   if (isnan(*l2out)) return -1;
   if (kind == WHIRL_SOL_COLLOC && R->s->orbit_max_nodes) { /* AUTO's, as BVPs' */
-    double *m = malloc(3 * R->n * sizeof *m);
-    const int rc = !m ? WHIRL_ENOMEM
-                      : whirl_colloc_moments(obj, xb, m, m + R->n, m + 2 * R->n, mx);
-    free(m);
-    if (rc != WHIRL_OK) return -1;
+    /* the node values, then the period (or the free parameter in its place) */
+    const size_t n = R->n, nnodes = (whirl_colloc_size(obj) - (R->prob.autonomous ? 1 : 0)) / n;
+    for (size_t i = 0; i < n; i++) mx[i] = xb[i];
+    for (size_t j = 1; j < nnodes; j++)
+      for (size_t i = 0; i < n; i++) mx[i] = fmax(mx[i], xb[n * j + i]);
   } else if (whirl_periodic_max(&po, xb, mx) != WHIRL_OK) {
     return -1;
   }
