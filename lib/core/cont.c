@@ -857,10 +857,12 @@ int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
   c->dir[n] = 1.0;
   memcpy(c->trial.X, c->cur.X, N * sizeof *c->trial.X);
   /* the start point is corrected by Newton even when the steps use chord
-   * Newton: x0 may be far from the branch */
+   * Newton: x0 may be far from the branch (unless start_as_given: AUTO's
+   * data, point 0 as they are) */
   const int chord = c->opt.newton_chord;
   c->opt.newton_chord = 0;
-  rc = cont_correct(c, c->cur.X, c->dir, 0.0, c->trial.X);
+  if (c->opt.start_as_given) memcpy(c->trial.p, c->cur.p, c->npar * sizeof *p0);
+  rc = c->opt.start_as_given ? 0 : cont_correct(c, c->cur.X, c->dir, 0.0, c->trial.X);
   c->opt.newton_chord = chord;
   if (rc < 0) return rc;
   if (rc > 0 && rc != 2 && start_on_solution(c, dir) == 0) return begin(c, 1);

@@ -192,6 +192,7 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
   /* ... and predict along the tangent (STEPAE), where orbits and BVPs
    * take the secant of the last two points (CONTBV) */
   o->tangent_predictor = b->kind == WHIRL_SOL_EQ;
+  o->start_as_given = b->as_given;
   o->lead = b->lead;
   o->detect_lp = s->ilp;
   /* ISP = 1: "branch points ... are not detected for periodic solutions
@@ -946,6 +947,87 @@ static int resample_tangent(const whirl_solution *so, const whirl_periodic *src,
   return rc ? -1 : 0;
 }
 
+/* AUTO's restart of an orbit on another mesh (STPNPS's ADAPT2): the mesh
+ * of O->colloc equidistributes the stored orbit's jumps (so, restored on
+ * O->colloc2), the orbit and its stored tangent (unless no_tangent)
+ * interpolated onto it, the period and the tangent's last entries kept. */
+static int adapt_restart(run_ctx *R, run_objects *O, branch_spec *b,
+                         const whirl_solution *so, int no_tangent) {
+  const double *m2 = whirl_colloc_mesh(O->colloc2);
+  const size_t nb = b->nb, nt = (size_t)so->ntst, nc = (size_t)so->ncol;
+  if (whirl_colloc_adapt_from(O->colloc, nt, nc, m2, so->x, O->X)) {
+    run_say(R, "label %d onto NTST = %d, NCOL = %d: %s", so->label, R->s->ntst,
+            R->s->ncol, whirl_colloc_errmsg(O->colloc));
+    return -1;
+  }
+  if (R->prob.autonomous) O->X[nb - 1] = so->x[so->nx - 1];
+  whirl_colloc_set_reference(O->colloc, O->X);
+  if (so->tan && so->icp == b->icp && !no_tangent &&
+      whirl_colloc_interp_from(O->colloc, nt, nc, m2, so->tan, O->D) == 0) {
+    if (R->prob.autonomous) O->D[nb - 1] = so->tan[so->nx - 1];
+    O->D[nb] = so->tan[so->nx];
+    b->tan0 = O->D;
+    if (R->s->isw == 1) b->dir = O->D;
+  }
+  fprintf(R->log, "label %d onto NTST = %d, NCOL = %d (AUTO's ADAPT2)\n", so->label,
+          R->s->ntst, R->s->ncol);
+  return 0;
+}
+
+/* AUTO's PD switch onto the run's mesh (STPNPS: PDBLE doubles the orbit and
+ * its direction on the stored mesh, ADAPT2 moves both onto NTST, NCOL of
+ * the run): the doubled orbit O->X, direction O->D on O->colloc (co's
+ * mesh) replaced by their interpolants on the mesh that equidistributes
+ * the doubled orbit's jumps (whirl_colloc_adapt_from, _interp_from). */
+static int pd_to_run_mesh(run_ctx *R, run_objects *O, branch_spec *b,
+                          const whirl_colloc_options *co) {
+  whirl_colloc_options c3o = *co;
+  char err[512];
+  c3o.ntst = (size_t)R->s->ntst;
+  c3o.ncol = (size_t)R->s->ncol;
+  whirl_colloc *c3 = whirl_colloc_alloc(&R->prob, &c3o, err, sizeof err);
+  if (!c3) {
+    run_say(R, "collocation: %s", err);
+    return -1;
+  }
+  const size_t nb3 = whirl_colloc_size(c3), nb = b->nb;
+  double *X3 = calloc(nb3 + 1, sizeof *X3), *D3 = calloc(nb3 + 1, sizeof *D3);
+  const double *mesh = whirl_colloc_mesh(O->colloc);
+  int rc = X3 && D3 ? WHIRL_OK : WHIRL_ENOMEM;
+  if (!rc) rc = whirl_colloc_adapt_from(c3, co->ntst, co->ncol, mesh, O->X, X3);
+  if (!rc) rc = whirl_colloc_interp_from(c3, co->ntst, co->ncol, mesh, O->D, D3);
+  if (!rc) whirl_colloc_set_rotations(c3, whirl_colloc_rotations(O->colloc));
+  if (rc) {
+    run_say(R, "period-doubling switch onto NTST = %d, NCOL = %d: %s", R->s->ntst,
+            R->s->ncol, whirl_colloc_errmsg(c3));
+    free(X3);
+    free(D3);
+    whirl_colloc_free(c3);
+    return -1;
+  }
+  if (R->prob.autonomous) { /* the period and its direction */
+    X3[nb3 - 1] = O->X[nb - 1];
+    D3[nb3 - 1] = O->D[nb - 1];
+  }
+  D3[nb3] = O->D[nb]; /* the parameter's */
+  whirl_colloc_set_reference(c3, X3);
+  fprintf(R->log, "period-doubled orbit onto NTST = %d, NCOL = %d (AUTO's ADAPT2)\n",
+          R->s->ntst, R->s->ncol);
+  free(O->X);
+  free(O->D);
+  whirl_colloc_free(O->colloc);
+  O->X = X3;
+  O->D = D3;
+  O->colloc = c3;
+  b->colloc = c3;
+  b->sys = whirl_colloc_system(c3);
+  b->nb = nb3;
+  b->nnodes = (nb3 - (R->prob.autonomous ? 1 : 0)) / R->n;
+  b->x0 = O->X;
+  b->dir = O->D;
+  return 0;
+}
+
 /* Periodic orbits by collocation: from the model's start orbit or a
  * settled forced response, a Hopf point (HB label), or a periodic label
  * (on its mesh, resampled to another, or doubled at a PD). */
@@ -1069,13 +1151,17 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
        * an LP of orbits.  First, as converting sets the phase reference
        * (then the orbit's); not for turning angles, whose ramp the samples
        * would take for the tangent's */
-      if (so->tan && so->icp == b->icp && !pd && !fixed_T && !nrot &&
-          resample_tangent(so, &src, &dst, R->prob.autonomous, b->nb, O->D) == 0) {
-        b->tan0 = O->D;
-        if (s->isw == 1) b->dir = O->D;
+      if (s->mesh_jumps) { /* AUTO's ADAPT2 (STPNPS) */
+        if (adapt_restart(R, O, b, so, pd || fixed_T)) return -1;
+      } else {
+        if (so->tan && so->icp == b->icp && !pd && !fixed_T && !nrot &&
+            resample_tangent(so, &src, &dst, R->prob.autonomous, b->nb, O->D) == 0) {
+          b->tan0 = O->D;
+          if (s->isw == 1) b->dir = O->D;
+        }
+        if (whirl_periodic_convert(&src, so->x, so->par, &dst, 400, O->X))
+          return -1;
       }
-      if (whirl_periodic_convert(&src, so->x, so->par, &dst, 400, O->X))
-        return -1;
       whirl_colloc_free(O->colloc2);
       O->colloc2 = NULL;
     }
@@ -1112,6 +1198,9 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
       b->ds_scale = 1.0;
       b->x0 = O->X;
       b->dir = O->D;
+      if (s->mesh_jumps && ((size_t)s->ntst != co.ntst || (size_t)s->ncol != co.ncol) &&
+          pd_to_run_mesh(R, O, b, &co))
+        return -1;
     }
   } else {
     run_fail(R, WHIRL_RK_IRS, "label %d is a harmonic-balance solution; "
@@ -1123,6 +1212,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
     fprintf(R->log, "fixed period %.10g; %s free in its place\n", co.period,
             R->pnames[R->icp[1]]);
   }
+  b->as_given = data_mesh && !b->dir; /* AUTO lists the rows as point 1 (CNRLBV) */
   if (!b->dir && !pd && s->iad > 0 && !restart && !data_mesh)
     whirl_colloc_adapt(O->colloc, O->X);
   return 0;

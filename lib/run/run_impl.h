@@ -181,6 +181,9 @@ typedef struct branch_spec {
                               a BVP from its LP, PD or BP (ISW = -2 inside
                               AUTO): the start point alone, an EP that the
                               next run restarts from */
+  int as_given;            /* AUTO's start of an orbit from data rows:
+                              the rows on their mesh are point 1 as they
+                              are (whirl_cont_options.start_as_given) */
   long lead;               /* whirl_cont_options.lead: the unknown that
                               moves with DS at the start and whose turning
                               points are LPs (-1: the continued parameter) */

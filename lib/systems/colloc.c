@@ -1021,6 +1021,21 @@ int whirl_colloc_set_mesh(whirl_colloc *c, const double *tau) {
   return WHIRL_OK;
 }
 
+/* The node part of V: the piecewise polynomial Vold (nold intervals of
+ * degree mold over old_mesh) at c's nodes (AUTO's INTERP). */
+static void interp_nodes(const whirl_colloc *c, size_t nold, size_t mold,
+                         const double *old_mesh, const double *Vold, double *V) {
+  const size_t n = c->n, M = c->ncol;
+  const double *mesh = c->mesh;
+  for (size_t j = 0; j < c->nnodes; ++j) {
+    const size_t i = j / M, k = j % M;
+    const double tau = j == c->nnodes - 1 ? 1.0
+                                          : mesh[i] + (mesh[i + 1] - mesh[i]) * (double)k /
+                                                          (double)M;
+    colloc_basis_eval_poly(n, nold, mold, old_mesh, Vold, tau, V + n * j);
+  }
+}
+
 int whirl_colloc_adapt_from(whirl_colloc *c, size_t nold, size_t mold,
                             const double *old_mesh, const double *Xold, double *X) {
   if (!c) return WHIRL_EINVAL;
@@ -1033,7 +1048,7 @@ int whirl_colloc_adapt_from(whirl_colloc *c, size_t nold, size_t mold,
     if (!(old_mesh[k] > old_mesh[k - 1]))
       return WHIRL_FAIL(c, WHIRL_EINVAL, "adapt_from: the old mesh is not increasing at "
                         "point %zu", k);
-  const size_t n = c->n, N = c->ntst, M = c->ncol;
+  const size_t n = c->n, N = c->ntst;
   double dm[COLLOC_BASIS_MAXCOL + 1];
   colloc_basis_derivative_weights(mold, dm);
   double *w = malloc((nold + nold + 1 + n * nold + N + 1) * sizeof *w);
@@ -1047,15 +1062,21 @@ int whirl_colloc_adapt_from(whirl_colloc *c, size_t nold, size_t mold,
                       "interval degenerate (%d)", rc);
   }
   rc = whirl_colloc_set_mesh(c, mesh);
-  for (size_t j = 0; rc == WHIRL_OK && j < c->nnodes; ++j) {
-    const size_t i = j / M, k = j % M;
-    const double tau = j == c->nnodes - 1 ? 1.0
-                                          : mesh[i] + (mesh[i + 1] - mesh[i]) * (double)k /
-                                                          (double)M;
-    colloc_basis_eval_poly(n, nold, mold, old_mesh, Xold, tau, X + n * j);
-  }
   free(w);
+  if (rc == WHIRL_OK) interp_nodes(c, nold, mold, old_mesh, Xold, X);
   return rc;
+}
+
+int whirl_colloc_interp_from(whirl_colloc *c, size_t nold, size_t mold,
+                             const double *old_mesh, const double *Vold, double *V) {
+  if (!c) return WHIRL_EINVAL;
+  if (!old_mesh || !Vold || !V || nold < 1 || mold < 1 || mold > COLLOC_BASIS_MAXCOL ||
+      old_mesh[0] != 0.0 || old_mesh[nold] != 1.0)
+    return WHIRL_FAIL(c, WHIRL_EINVAL, "interp_from: need a function on %zu intervals "
+                      "of degree %zu (1 to %d) over a mesh from 0 to 1", nold, mold,
+                      COLLOC_BASIS_MAXCOL);
+  interp_nodes(c, nold, mold, old_mesh, Vold, V);
+  return WHIRL_OK;
 }
 
 int whirl_colloc_set_reference(whirl_colloc *c, const double *X) {

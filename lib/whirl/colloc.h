@@ -176,6 +176,12 @@ WHIRL_API int whirl_colloc_set_mesh(whirl_colloc *c, const double *tau);
 WHIRL_API int whirl_colloc_adapt_from(whirl_colloc *c, size_t nold, size_t mold,
                                       const double *old_mesh, const double *Xold,
                                       double *X);
+/* ADAPT2's interpolation of a second function (AUTO's VPS: the direction
+ * of a restart) on c's present mesh: the node part of V is Vold (as Xold
+ * of whirl_colloc_adapt_from) at c's nodes; V's other entries are left. */
+WHIRL_API int whirl_colloc_interp_from(whirl_colloc *c, size_t nold, size_t mold,
+                                       const double *old_mesh, const double *Vold,
+                                       double *V);
 /* Phase reference of an autonomous orbit (no-op for forced models). */
 WHIRL_API int whirl_colloc_set_reference(whirl_colloc *c, const double *X);
 

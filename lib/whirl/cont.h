@@ -165,6 +165,11 @@ typedef struct whirl_cont_options {
                           (unless the step passes a special point) and the
                           next step, at the same length, starts from it:
                           the branch's second point is two steps out */
+  int start_as_given;  /* whirl_cont_start: the start point is point 1 as
+                          given, without Newton, and the tangent is taken
+                          there (AUTO-07p's start of an orbit or a
+                          boundary-value problem from its data, IRS = 0:
+                          CNRLBV lists the data, STDRBV's direction) */
   int stop_at_bp;      /* end the branch at the first BP */
   int detect_loop;     /* stop when the branch returns to its start */
   double loc_tol;      /* localisation tolerance in arclength */

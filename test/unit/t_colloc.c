@@ -1264,6 +1264,23 @@ static void test_adapt_from_data(void) {
   ok(rc == WHIRL_OK && m && fabs(m[1] - 0.375) < 1e-15 && m[2] == 1.0 && err_nodes < 1e-15,
      "adapt_from data: AUTO's mesh (0, %.15g, 1) = (0, 3/8, 1) by hand, the hat at its nodes "
      "(error %.2g)", m ? m[1] : -1.0, err_nodes);
+  /* ADAPT2's second function (the direction): rows t and 1 - t, linear,
+   * so exact at the new nodes 0, 3/16, 3/8, 11/16, 1; the period's entry
+   * left as it was */
+  const double v[10] = {0, 1, 0.25, 0.75, 0.5, 0.5, 0.75, 0.25, 1, 0};
+  const double tau[5] = {0, 0.1875, 0.375, 0.6875, 1};
+  double V[11] = {0};
+  V[10] = 42.0;
+  const int rv = c ? whirl_colloc_interp_from(c, 4, 1, t, v, V) : -1;
+  double err_v = 0.0;
+  for (int j = 0; j < 5; ++j)
+    err_v = fmax(err_v, fabs(V[2 * j] - tau[j]) + fabs(V[2 * j + 1] - (1.0 - tau[j])));
+  ok(rv == WHIRL_OK && err_v < 1e-15 && V[10] == 42.0,
+     "interp_from: t and 1 - t at the nodes of that mesh by hand (error %.2g), the last "
+     "entry left", err_v);
+  ok(c && whirl_colloc_interp_from(c, 4, 0, t, v, V) == WHIRL_EINVAL &&
+         whirl_colloc_interp_from(c, 0, 1, t, v, V) == WHIRL_EINVAL,
+     "interp_from: degree 0, no intervals: WHIRL_EINVAL (%s)", c ? whirl_colloc_errmsg(c) : "");
   const double bad[5] = {0, 0.5, 0.25, 0.75, 1};
   ok(c && whirl_colloc_adapt_from(c, 4, 1, bad, u, X) == WHIRL_EINVAL &&
          whirl_colloc_adapt_from(c, 4, 0, t, u, X) == WHIRL_EINVAL,

@@ -1248,6 +1248,49 @@ static void test_lead(void) {
      "leads), none when the start is the vertex to newton_tol (%zu)", nlp[0], nlp[1], nlp[2]);
 }
 
+/* AUTO's start of an orbit or a BVP from data (options.start_as_given):
+ * the given point is point 0 as it is, off the branch, and the first step
+ * leaves it along the null vector of [F_x F_p] there.  On the circle
+ * x^2 + p^2 = 1 from (0.9, 0.3) (the circle's x there is 0.953939) the
+ * raw tangent is (-p, x)/|(p, x)| = (-0.3, 0.9)/0.948683 with p growing,
+ * and point 1 is on the circle at arclength ds along it; without the
+ * option point 0 is Newton's at p = 0.3. */
+static int circle_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[0] * x[0] + p[0] * p[0] - 1.0;
+  return 0;
+}
+static void test_start_as_given(void) {
+  whirl_system s = {.name = "circle", .n = 1, .npar = 1, .F = circle_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = 0.05;
+  o.ds_max = 0.05;
+  o.nmx = 2;
+  o.newton_tol = 1e-12;
+  const double x0[1] = {0.9}, p0[1] = {0.3};
+  o.start_as_given = 1;
+  whirl_branch *b = run(&s, &o, x0, p0, +1, NULL);
+  if (!b || b->len < 2) {
+    ok(0, "start_as_given: a branch of two points at least");
+  } else {
+    const double nt = hypot(0.3, 0.9), tx = -0.3 / nt, tp = 0.9 / nt;
+    const double x1 = b->pts[1].x[0], p1 = b->pts[1].p[0];
+    const double along = (x1 - 0.9) * tx + (p1 - 0.3) * tp;
+    ok(b->pts[0].x[0] == 0.9 && b->pts[0].p[0] == 0.3 &&
+           fabs(x1 * x1 + p1 * p1 - 1.0) < 1e-10 && fabs(along - 0.05) < 1e-10,
+       "start_as_given: point 0 is the given (%.17g, %.17g); point 1 (%.9g, %.9g) on the "
+       "circle, %.12g along the raw tangent (ds 0.05)", b->pts[0].x[0], b->pts[0].p[0], x1,
+       p1, along);
+  }
+  whirl_branch_free(b);
+  o.start_as_given = 0;
+  b = run(&s, &o, x0, p0, +1, NULL);
+  ok(b && b->len >= 1 && fabs(b->pts[0].x[0] - sqrt(1.0 - 0.09)) < 1e-10,
+     "without it, point 0 is corrected onto the circle (%.9g)", b ? b->pts[0].x[0] : NAN);
+  whirl_branch_free(b);
+}
+
 /* AUTO's step sequence (options.auto_steps, run files): a located special
  * point starts the next step, at the step length that passed it, and the
  * length follows AUTO's ADPTDS.  On the line x = p, where Newton converges
@@ -1377,6 +1420,7 @@ int main(void) {
   test_zero_at_start();
   test_lead();
   test_auto_steps();
+  test_start_as_given();
   test_switch_orientation();
   test_errors();
   test_start_on_singular_solution();
