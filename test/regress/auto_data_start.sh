@@ -29,16 +29,9 @@
 #    downwards): the orbit and its tangent on ADAPT2's mesh (STPNPS), PT
 #    1-5 as AUTO's, the mesh adapted at PT 3 included.
 # TAP output.
-set -u
-: "${top_srcdir:=.}" "${top_builddir:=.}"
-WHIRL="$(cd "$top_builddir" && pwd)/drivers/whirl"
 command -v "${FC:-gfortran}" >/dev/null 2>&1 || { echo "1..0 # SKIP no Fortran compiler"; exit 0; }
-tmp=$(mktemp -d) || exit 1
-trap 'rm -rf "$tmp"' EXIT
-n=0 fail=0
-ok() { n=$((n + 1)); echo "ok $n - $*"; }
-nok() { n=$((n + 1)); echo "not ok $n - $*"; fail=1; }
-check() { if [ "$1" = 0 ]; then shift; ok "$@"; else shift; nok "$@"; fi; }
+name=auto_data_start
+. "${top_srcdir:-.}/test/regress/tap.sh"
 
 mkdir "$tmp/ros"
 cat > "$tmp/ros/ros.f90" <<'F'
@@ -209,23 +202,11 @@ DS  =  -0.02, DSMIN=  0.001, DSMAX=  0.1, IADS=   1
 NPAR = 3, THL =  {11: 0.0}, THU =  {}
 C
 (cd "$tmp" && "$WHIRL" auto ros --quiet > ros.log 2>&1)
-check $? "whirl auto ros (orbits from the rows, then the doubled ones from the PD) exits 0: $(tail -1 "$tmp/ros.log")"
+ok $? "whirl auto ros (orbits from the rows, then the doubled ones from the PD) exits 0: $(tail -1 "$tmp/ros.log")"
 
 # compare the rows "PT TY v1 v2 ..." of AUTO (stdin) with b-file $1 of whirl
 # (|PT|, its type code, the values), every value to 1e-6 relative
-rows_agree() {
-  awk -v b="$1" 'BEGIN {
-      while ((getline l < b) > 0) {
-        if (substr(l, 1, 4) + 0 == 0) continue
-        m = split(l, w, " "); pt = w[2] < 0 ? -w[2] : w[2]
-        ty[pt] = w[3]; nv[pt] = m - 4
-        for (i = 5; i <= m; i++) v[pt, i - 4] = w[i]
-      } }
-    { pt = $1; if (!(pt in ty) || ty[pt] != $2) { print "PT " pt ": type " ty[pt] " where AUTO has " $2; bad = 1; next }
-      for (i = 3; i <= NF; i++) { a = $i; x = v[pt, i - 2]; d = (x - a) / a; if (d < 0) d = -d
-        if (d > 1e-6) { print "PT " pt " column " i - 2 ": " x " where AUTO has " a; bad = 1 } } }
-    END { exit bad }'
-}
+rows_agree() { awk -v b="$1" -f "$top_srcdir/test/regress/auto_rows.awk"; }
 rows_agree "$tmp/ros.out/b.ros.1" > "$tmp/diff1" <<'R'
 1 9 2.5000000000 4.2263831843 4.7293111897 3.0862295382 3.1974693337 5.7490000000
 2 0 2.5110929446 4.2427139330 4.7492296217 3.0997946346 3.2114247255 5.7497400973
@@ -243,19 +224,19 @@ rows_agree "$tmp/ros.out/b.ros.1" > "$tmp/diff1" <<'R'
 14 -4 3.0000000000 4.8994529195 5.5250036287 3.6244885479 3.8255136725 5.7792382734
 R
 rc=$? out=$(head -3 "$tmp/diff1" | tr '\n' ';')
-check $rc "run 1 (from the rows): PT 1 the rows as they are, every point to the PD at PT 11 and the UZ at PT 14 as AUTO's ${out:+($out)}"
+ok $rc "run 1 (from the rows): PT 1 the rows as they are, every point to the PD at PT 11 and the UZ at PT 14 as AUTO's ${out:+($out)}"
 rows_agree "$tmp/ros.out/b.ros.2" > "$tmp/diff2" <<'R'
 1 0 2.8324448995 4.6774542006 5.2637125194 3.4484998381 3.6160002308 11.5396399950
 2 0 2.8325201972 4.6775620990 5.2753434341 3.4583541455 3.6545320410 11.5396338630
 3 0 2.8329163671 4.6781280711 5.2930659919 3.4733133888 3.7128210048 11.5396024560
 R
 rc=$? out=$(head -3 "$tmp/diff2" | tr '\n' ';')
-check $rc "run 2 (the PD switch): PT 1-3 on ADAPT2's mesh of NTST 30, as AUTO's ${out:+($out)}"
+ok $rc "run 2 (the PD switch): PT 1-3 on ADAPT2's mesh of NTST 30, as AUTO's ${out:+($out)}"
 ntst=$(awk 'NF >= 12 && $1 ~ /^-?[0-9]+$/ && $4 == 4 { print $10; exit }' "$tmp/ros.out/s.ros")
 [ "$ntst" = 30 ]
-check $? "run 2's stored orbit (label 4) on NTST 30, the run's, as AUTO's (whirl: ${ntst:-none})"
+ok $? "run 2's stored orbit (label 4) on NTST 30, the run's, as AUTO's (whirl: ${ntst:-none})"
 grep -q "onto NTST = 30, NCOL = 4 (AUTO's ADAPT2)" "$tmp/ros.out/ros.2.out/run.log"
-check $? "run 2's log says the doubled orbit went onto NTST 30"
+ok $? "run 2's log says the doubled orbit went onto NTST 30"
 rows_agree "$tmp/ros.out/b.ros.3" > "$tmp/diff3" <<'R'
 1 0 3.0000000000 4.8994529675 5.5255746995 3.6250478576 3.8274509466 5.7792382734
 2 0 2.9880136928 4.8836680617 5.5069247342 3.6125194145 3.8123617112 5.7785850976
@@ -264,6 +245,5 @@ rows_agree "$tmp/ros.out/b.ros.3" > "$tmp/diff3" <<'R'
 5 9 2.9028171902 4.7710514435 5.3741646419 3.5229971484 3.7042154346 5.7738529631
 R
 rc=$? out=$(head -3 "$tmp/diff3" | tr '\n' ';')
-check $rc "run 3 (the UZ of run 1, NTST 20, restarted on NTST 25): its orbit on ADAPT2's mesh, PT 1-5 as AUTO's ${out:+($out)}"
-echo "1..$n"
-exit $fail
+ok $rc "run 3 (the UZ of run 1, NTST 20, restarted on NTST 25): its orbit on ADAPT2's mesh, PT 1-5 as AUTO's ${out:+($out)}"
+tap_end

@@ -78,19 +78,7 @@ check $? "whirl auto bru (equilibria, then the orbits from the HB) exits 0: $(ta
 
 # compare the rows "PT TY v1 v2 ..." of AUTO (stdin) with b-file $1 of whirl
 # (|PT|, its type code, the values), every value to 1e-6 relative
-rows_agree() {
-  awk -v b="$1" 'BEGIN {
-      while ((getline l < b) > 0) {
-        if (substr(l, 1, 4) + 0 == 0) continue
-        m = split(l, w, " "); pt = w[2] < 0 ? -w[2] : w[2]
-        ty[pt] = w[3]; nv[pt] = m - 4
-        for (i = 5; i <= m; i++) v[pt, i - 4] = w[i]
-      } }
-    { pt = $1; if (!(pt in ty) || ty[pt] != $2) { print "PT " pt ": type " ty[pt] " where AUTO has " $2; bad = 1; next }
-      for (i = 3; i <= NF; i++) { a = $i; x = v[pt, i - 2]; d = (x - a) / a; if (d < 0) d = -d
-        if (d > 1e-6) { print "PT " pt " column " i - 2 ": " x " where AUTO has " a; bad = 1 } } }
-    END { exit bad }'
-}
+rows_agree() { awk -v b="$1" -f "$top_srcdir/test/regress/auto_rows.awk"; }
 out=$(rows_agree "$tmp/bru.out/b.bru.1" <<'R'
 2 0 1.5282842741 1.8263769661 1.0000000000 1.5282842741
 3 0 1.5565685482 1.8501096306 1.0000000000 1.5565685482
