@@ -115,6 +115,8 @@ static void base_of(const branch_spec *b, const double *Z, const double *p,
     whirl_hopf_params(b->hopf, Z, p, pfull);
   else if (b->bploc)
     whirl_bploc_params(b->bploc, Z, p, pfull);
+  else if (b->trloc)
+    whirl_trloc_params(b->trloc, Z, p, pfull);
   else if (b->kind == WHIRL_SOL_COLLOC)
     whirl_colloc_params(b->colloc, Z, p, pfull); /* a fixed period's parameter */
   else if (b->kind == WHIRL_SOL_BVP)
@@ -123,7 +125,7 @@ static void base_of(const branch_spec *b, const double *Z, const double *p,
     memcpy(pfull, p, b->sys->npar * sizeof *pfull);
   /* the model's derived parameters (AUTO's PVLS) at an equilibrium, or
    * on a collocation solution (orbit, boundary-value problem) */
-  if (b->fold || b->hopf || b->bploc || !b->model) return;
+  if (b->fold || b->hopf || b->bploc || b->trloc || !b->model) return;
   if (b->kind == WHIRL_SOL_EQ && b->model->pvls)
     b->model->pvls(Z, pfull, b->model->problem.data);
   else if (b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP)
@@ -380,6 +382,8 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
     snprintf(so.locus, sizeof so.locus, "%s", R->s->ips == WHIRL_IPS_MAP ? "TR" : "HB");
   else if (b->bploc)
     snprintf(so.locus, sizeof so.locus, "BP");
+  else if (b->trloc)
+    snprintf(so.locus, sizeof so.locus, "TR");
   so.npar = R->npar;
   so.nx = b->nb;
   so.par = pfull;
@@ -387,7 +391,7 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
   /* at a fixed period X's last entry is the free parameter (in pfull): the
    * file holds the orbit as every other, with T there, and no tangent (its
    * last entry would be the parameter's) */
-  const int fixed_T = b->kind == WHIRL_SOL_COLLOC && !b->fold && !b->hopf &&
+  const int fixed_T = b->kind == WHIRL_SOL_COLLOC && !b->fold && !b->hopf && !b->trloc &&
                       whirl_colloc_free_param(b->colloc) >= 0;
   double *xT = NULL;
   if (fixed_T) {
@@ -400,7 +404,7 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
    * times it, so it is the motion times the sign of this run's DS, and a
    * restart moves along DS times it (run_tangent_start) */
   double *tan = NULL;
-  if (!b->fold && !b->hopf && !b->bploc && pt->t && !fixed_T) {
+  if (!b->fold && !b->hopf && !b->bploc && !b->trloc && pt->t && !fixed_T) {
     const double sg = (b->dir_sign ? b->dir_sign : s->ds < 0 ? -1 : 1) < 0 ? -1.0 : 1.0;
     if (!(tan = malloc((b->nb + 1) * sizeof *tan))) {
       free(xT);
@@ -614,6 +618,7 @@ int run_branch(run_ctx *R, branch_spec *b) {
   fprintf(R->log, "branch %d: %s, continuation in %s (%s)\n", R->branch,
           b->sys->name ? b->sys->name : "?", R->pnames[b->icp],
           b->fold ? "fold locus" : b->hopf ? "Hopf locus" : b->bploc ? "branch-point locus"
+          : b->trloc ? "torus locus"
                                                                       : "one parameter");
   int counts[WHIRL_PT_NTYPES] = {0};
   int stop = 0;
@@ -749,6 +754,7 @@ typedef struct run_objects {
   whirl_fold *fold;
   whirl_hopf *hopf;
   whirl_bploc *bploc;
+  whirl_trloc *trloc;
   double *X, *D, *Z, *xs;
   whirl_solution sol;
   int have_sol;
@@ -763,11 +769,64 @@ static void objects_free(run_objects *O) {
   whirl_fold_free(O->fold);
   whirl_hopf_free(O->hopf);
   whirl_bploc_free(O->bploc);
+  whirl_trloc_free(O->trloc);
   free(O->X);
   free(O->D);
   free(O->Z);
   free(O->xs);
   if (O->have_sol) whirl_solution_free(&O->sol);
+}
+
+/* The torus (Neimark-Sacker) locus of orbits from a TR label (AUTO's
+ * ISW = 2 at a TR of IPS = 2): whirl_trloc on the orbit's collocation
+ * system, its angle from the label's multiplier pair nearest the unit
+ * circle (Doedel, Govaerts & Kuznetsov 2003). */
+static int torus_locus(run_ctx *R, run_objects *O, branch_spec *b, const whirl_system *base,
+                       const double *x, const double *p, int q, int other) {
+  whirl_periodic po = whirl_periodic_of_colloc(O->colloc);
+  const size_t cap = 2 * R->n + 2;
+  double *re = malloc(2 * cap * sizeof *re), theta = -1.0, best = INFINITY;
+  size_t m = cap;
+  if (!re) return -1;
+  int rc = whirl_periodic_multipliers(&po, x, p, re, re + cap, &m);
+  for (size_t k = 0; rc == WHIRL_OK && k < m; ++k) {
+    const double a = re[k], bi = re[cap + k], r = hypot(a, bi);
+    if (bi > 1e-9 * (1.0 + r) && fabs(r - 1.0) < best) best = fabs(r - 1.0), theta = atan2(bi, a);
+  }
+  free(re);
+  if (rc != WHIRL_OK || theta <= 0.0) {
+    run_say(R, "torus locus: label %d has no complex multiplier pair (%s)",
+            O->sol.label, rc ? whirl_periodic_errmsg(&po) : "all real");
+    return -1;
+  }
+  whirl_fold_operator op;
+  size_t *ei = malloc(R->n * sizeof *ei), *ej = malloc(R->n * sizeof *ej);
+  double *ev = malloc(R->n * sizeof *ev);
+  char err[512] = "";
+  if (ei && ej && ev) {
+    whirl_colloc_pd_operator(O->colloc, &op, ei, ej, ev);
+    /* a third parameter in ICP: free, the angle fixed (AUTO's tor.6) */
+    long par2 = -1;
+    for (size_t i = 0; par2 < 0 && i < R->nicp; i++)
+      if (R->icp[i] != q && R->icp[i] != other) par2 = R->icp[i];
+    O->trloc = whirl_trloc_alloc(base, &op, (size_t)q, par2, err, sizeof err);
+  }
+  free(ei), free(ej), free(ev);
+  if (!O->trloc) {
+    run_say(R, "torus locus: %s", err[0] ? err : "out of memory");
+    return -1;
+  }
+  O->Z = malloc((whirl_trloc_size(O->trloc) + 1) * sizeof *O->Z);
+  if (!O->Z) return -1;
+  if (whirl_trloc_init(O->trloc, x, p, theta, O->Z) != WHIRL_OK) {
+    run_say(R, "torus locus: %s", whirl_trloc_errmsg(O->trloc));
+    return -1;
+  }
+  fprintf(R->log, "torus locus from label %d: multipliers exp(+-i %.10g), |mu| - 1 = %.2g\n",
+          O->sol.label, theta, best);
+  b->trloc = O->trloc;
+  b->sys = whirl_trloc_system(O->trloc);
+  return 0;
 }
 
 static int locus(run_ctx *R, run_objects *O, branch_spec *b,
@@ -869,9 +928,11 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
     }
     b->bploc = O->bploc;
     b->sys = whirl_bploc_system(O->bploc);
+  } else if (!strcmp(ty, "TR") && b->kind == WHIRL_SOL_COLLOC && O->colloc) {
+    if (torus_locus(R, O, b, base, x, p, q, other)) return -1;
   } else {
     run_fail(R, WHIRL_RK_ISW, "ISW = 2 needs an LP (any problem), an HB or BP of "
-             "equilibria, a PD or TR of a map, or a PD of periodic orbits by collocation; label %d is "
+             "equilibria, a PD or TR of a map, or a PD or TR of periodic orbits by collocation; label %d is "
              "%s%s (loci of %s are not available)",
              so->label, so->ty, so->kind == WHIRL_SOL_EQ ? "" : " of periodic orbits",
              so->ty);

@@ -19,6 +19,7 @@
 #include <whirl/hbm.h>
 #include <whirl/hopf.h>
 #include <whirl/bploc.h>
+#include <whirl/trloc.h>
 #include <whirl/model.h>
 #include <whirl/periodic.h>
 #include "runfile_impl.h"
@@ -160,6 +161,7 @@ typedef struct branch_spec {
   whirl_fold *fold;        /* locus layers (borrowed), or NULL */
   whirl_hopf *hopf;
   whirl_bploc *bploc;
+  whirl_trloc *trloc;
   const whirl_system *sys; /* the system continued */
   size_t nb;               /* unknowns of the base system */
   size_t nnodes;           /* colloc, bvp: the mesh's nodes (node values first) */

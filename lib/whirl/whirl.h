@@ -22,6 +22,7 @@
 #include <whirl/fold.h>
 #include <whirl/hopf.h>
 #include <whirl/bploc.h>
+#include <whirl/trloc.h>
 #include <whirl/model.h>
 #include <whirl/runfile.h>
 #include <whirl/solution.h>
