@@ -1317,12 +1317,14 @@ static int crosses_pd(const whirl_cont *c, size_t k, const cont_state *a,
 static int crosses_pmin(const whirl_cont *c, size_t k, const cont_state *a,
                         const cont_state *b) {
   (void)k;
-  return b->X[c->n] < c->opt.p_min && a->X[c->n] >= c->opt.p_min;
+  const size_t j = cont_lead(c);
+  return b->X[j] < c->opt.p_min && a->X[j] >= c->opt.p_min;
 }
 static int crosses_pmax(const whirl_cont *c, size_t k, const cont_state *a,
                         const cont_state *b) {
   (void)k;
-  return b->X[c->n] > c->opt.p_max && a->X[c->n] <= c->opt.p_max;
+  const size_t j = cont_lead(c);
+  return b->X[j] > c->opt.p_max && a->X[j] <= c->opt.p_max;
 }
 static int crosses_uz(const whirl_cont *c, size_t k, const cont_state *a,
                       const cont_state *b) {
@@ -1518,7 +1520,8 @@ static size_t end_at_first_event(whirl_cont *c, size_t nev, int *its) {
 /* A branch started on a bound and heading out ends where it started. */
 static int leaves_its_bound(whirl_cont *c) {
   const whirl_cont_options *o = &c->opt;
-  const double pa = c->cur.X[c->n], pb = c->trial.X[c->n];
+  const size_t j = cont_lead(c);
+  const double pa = c->cur.X[j], pb = c->trial.X[j];
   if (pb > o->p_max && pa <= o->p_max && pa >= o->p_max - 1e-12 * (1.0 + fabs(o->p_max)))
     return finish(c, WHIRL_STOP_PMAX), 1;
   if (pb < o->p_min && pa >= o->p_min && pa <= o->p_min + 1e-12 * (1.0 + fabs(o->p_min)))

@@ -22,7 +22,6 @@ double cont_uz_value(const whirl_cont *c, size_t k, const cont_state *st) {
 
 static double psi(const whirl_cont *c, int ev, size_t k, const cont_state *st,
                   double ref_logdet) {
-  const double pv = st->X[c->n];
   switch (ev) {
   case EV_LP:
     return st->psi_lp;
@@ -38,9 +37,9 @@ static double psi(const whirl_cont *c, int ev, size_t k, const cont_state *st,
     if (c->pd_rank > 0) return cont_pd_rank_test(st, c->pd_rank);
     return st->has_pd ? st->psi_pd : NAN;
   case EV_PMAX:
-    return pv - c->opt.p_max;
+    return st->X[cont_lead(c)] - c->opt.p_max;
   case EV_PMIN:
-    return pv - c->opt.p_min;
+    return st->X[cont_lead(c)] - c->opt.p_min;
   case EV_SYS:
     return st->tau[k];
   default:

@@ -69,8 +69,8 @@ WHIRL_API const char *whirl_point_type_name(int type);
 /* Why a branch ended (whirl_cont_stop_reason). */
 typedef enum whirl_stop_reason {
   WHIRL_STOP_NONE = 0,
-  WHIRL_STOP_PMIN,   /* continuation parameter reached p_min (RL0) */
-  WHIRL_STOP_PMAX,   /* continuation parameter reached p_max (RL1) */
+  WHIRL_STOP_PMIN,   /* continuation parameter (or the lead) reached p_min (RL0) */
+  WHIRL_STOP_PMAX,   /* continuation parameter (or the lead) reached p_max (RL1) */
   WHIRL_STOP_NMX,    /* NMX steps taken */
   WHIRL_STOP_DOMAIN, /* the model reported a domain error (e.g. contact)
                         that persisted down to DSMIN */
@@ -89,7 +89,10 @@ typedef struct whirl_cont_options {
   double ds_min;       /* DSMIN */
   double ds_max;       /* DSMAX */
   size_t nmx;          /* NMX: maximum number of steps */
-  double p_min, p_max; /* RL0, RL1: bounds of the free parameter */
+  double p_min, p_max; /* RL0, RL1: bounds of the free parameter, or of
+                          the lead unknown X[lead] when lead >= 0 (AUTO's
+                          RL0, RL1 bound ICP(1), also on a locus whose
+                          ICP(1) is an unknown) */
   double x_max;        /* A1-like bound on |x|_inf (0: none) */
   double p_weight;     /* weight of the parameter in the arclength norm */
   const double *x_weight; /* NULL (1 each), or n weights of the components

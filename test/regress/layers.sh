@@ -29,7 +29,7 @@ layer_of_header() {
     linsol.h) echo linalg ;;
     problem.h|system.h|cont.h|branch.h) echo core ;;
     ode.h|floquet.h) echo ode ;;
-    equilibrium.h|hbm.h|colloc.h|fold.h|hopf.h|bploc.h|periodic.h|bvp.h) echo systems ;;
+    equilibrium.h|hbm.h|colloc.h|fold.h|hopf.h|bploc.h|trloc.h|periodic.h|bvp.h) echo systems ;;
     spectrum.h|section.h|basins.h|deflate.h) echo analysis ;;
     runfile.h|model.h|run.h|solution.h|auto_constants.h|auto_files.h) echo run ;;
     whirl.h) echo whirl ;;

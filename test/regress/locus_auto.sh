@@ -7,6 +7,8 @@
 # centre at q = 0 (circles born at r = 0).  Before, whirl labelled MG there
 # in either case (abcb's script restarts from AUTO's LP at such a point).
 # (The starting data of a locus of a BVP: test/regress/bvp_run.sh.)
+# And RL0, RL1 bound ICP(1) of the locus when it is the fold's own
+# parameter, as AUTO's (AUTO-07p itself on this problem, below).
 # SPDX-License-Identifier: BSD-3-Clause
 name=locus_auto
 . "${top_srcdir:-.}/test/regress/tap.sh"
@@ -55,4 +57,15 @@ for icp in "q, r" "r, q"; do
     ok $? "ICP = [r, q]: r leads, its turning point at the isola centre is an LP ('$special' at q r = $lpq)"
   fi
 done
+# RL0 and RL1 bound ICP(1) of a locus, as AUTO's (here q, an unknown of the
+# fold system continued in r): AUTO-07p 0.9.2 on this problem (RL1 = 1.5)
+# ends its run at the first point past q = 1.5 (PT 34, q = 1.51186, r =
+# 2.28571; whirl locates the bound itself); before, whirl bounded r there
+printf 'model = circle.so\nIPS = 1\nISW = 2\nS = c1.out\nIRS = %s\nICP = [q, r]\nDS = 0.02\nDSMAX = 0.05\nNMX = 200\nRL0 = -3\nRL1 = 1.5\n' "${lpc:-0}" > c3.whirl
+"$WHIRL" run c3.whirl --no-plot --quiet > /dev/null 2> c3.err
+end=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i; next } { e = $h["q"] " " $h["r"] } END { print e }' c3.out/branches.tsv 2>/dev/null)
+set -- $end
+grep -q "parameter reached its upper bound" c3.out/run.log 2>/dev/null &&
+  awk -v q="${1:-0}" -v r="${2:-0}" 'BEGIN { exit !(q - 1.5 < 1e-12 && 1.5 - q < 1e-12 && r > 2.2) }'
+ok $? "RL1 = 1.5 bounds ICP(1) = q of the locus, not r: it ends at q r = $end"
 tap_end
