@@ -58,6 +58,14 @@ static int has_period(whirl_solution_kind kind) {
 int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q) {
   FILE *f = R->table;
   const int per = has_period(kind);
+  /* the diagram of a locus has ICP(1) across, as AUTO's: when the label's
+   * own parameter q is ICP(1) (an unknown of the locus, continued in
+   * icp), q is the x axis and icp the y axis */
+  if (q >= 0 && R->nicp > 0 && R->icp[0] == q) {
+    const int t = icp;
+    icp = q;
+    q = t;
+  }
   size_t col = 4;
   fprintf(f, "branch\tpt\ttype\tlabel");
   int ycol = 0;

@@ -68,4 +68,11 @@ set -- $end
 grep -q "parameter reached its upper bound" c3.out/run.log 2>/dev/null &&
   awk -v q="${1:-0}" -v r="${2:-0}" 'BEGIN { exit !(q - 1.5 < 1e-12 && 1.5 - q < 1e-12 && r > 2.2) }'
 ok $? "RL1 = 1.5 bounds ICP(1) = q of the locus, not r: it ends at q r = $end"
+"$WHIRL" run c3.whirl --quiet > /dev/null 2> c3p.err
+if [ -f c3.out/diagram.gp ]; then
+  grep -q "^set xlabel 'q'" c3.out/diagram.gp && grep -q "^set ylabel 'r'" c3.out/diagram.gp
+  ok $? "its diagram has ICP(1) = q across and r up, as AUTO's ($(grep -h 'label' c3.out/diagram.gp | tr '\n' ' '))"
+else
+  ok 0 "# SKIP no diagram.gp (built without gnuplot)"
+fi
 tap_end
