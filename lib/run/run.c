@@ -995,6 +995,15 @@ static int start_equilibria(run_ctx *R, run_objects *O, branch_spec *b) {
  * part by the conversion of orbits (linear), dT/ds and dp/ds as stored.
  * The conversion reads the period from the last entry, which for a tangent
  * may be 0 or negative: 1 there while converting.  0, or -1. */
+/* b continues the orbits of collocation c: its system and sizes. */
+static void use_colloc(const run_ctx *R, branch_spec *b, whirl_colloc *c) {
+  b->colloc = c;
+  b->sys = whirl_colloc_system(c);
+  b->nb = whirl_colloc_size(c);
+  b->nnodes = (b->nb - (R->prob.autonomous ? 1 : 0)) / R->n;
+  b->ds_scale = 1.0; /* the system's norm weights: AUTO's integral norm */
+}
+
 static int resample_tangent(const whirl_solution *so, const whirl_periodic *src,
                             whirl_periodic *dst, int aut, size_t nb, double *D) {
   double *t = malloc((so->nx + 1) * sizeof *t);
@@ -1080,10 +1089,7 @@ static int pd_to_run_mesh(run_ctx *R, run_objects *O, branch_spec *b,
   O->X = X3;
   O->D = D3;
   O->colloc = c3;
-  b->colloc = c3;
-  b->sys = whirl_colloc_system(c3);
-  b->nb = nb3;
-  b->nnodes = (nb3 - (R->prob.autonomous ? 1 : 0)) / R->n;
+  use_colloc(R, b, c3);
   b->x0 = O->X;
   b->dir = O->D;
   return 0;
@@ -1130,11 +1136,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
     return -1;
   }
   b->kind = WHIRL_SOL_COLLOC;
-  b->colloc = O->colloc;
-  b->sys = whirl_colloc_system(O->colloc);
-  b->nb = whirl_colloc_size(O->colloc);
-  b->nnodes = (b->nb - (R->prob.autonomous ? 1 : 0)) / R->n;
-  b->ds_scale = 1.0; /* the system's norm weights: AUTO's integral norm */
+  use_colloc(R, b, O->colloc);
   O->X = calloc(b->nb + 1, sizeof *O->X);
   O->D = calloc(b->nb + 1, sizeof *O->D);
   if (!O->X || !O->D) return -1;
@@ -1252,11 +1254,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
       whirl_colloc *t = O->colloc;
       O->colloc = O->colloc2;
       O->colloc2 = t;
-      b->colloc = O->colloc;
-      b->sys = whirl_colloc_system(O->colloc);
-      b->nb = whirl_colloc_size(O->colloc);
-      b->nnodes = (b->nb - (R->prob.autonomous ? 1 : 0)) / R->n;
-      b->ds_scale = 1.0;
+      use_colloc(R, b, O->colloc);
       b->x0 = O->X;
       b->dir = O->D;
       if (s->mesh_jumps && ((size_t)s->ntst != co.ntst || (size_t)s->ncol != co.ncol) &&

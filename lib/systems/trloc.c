@@ -32,6 +32,7 @@ struct whirl_trloc {
   int *Mp, *Mi;            /* R(M)'s pattern, order 2m */
   unsigned char *skind;    /* per entry: S_* */
   long *sidx;              /* per entry: the Jx entry, E entry or row */
+  long *eon;               /* per S_J entry: the E entry on it, or -1 */
   size_t mnz;
   double *Mx;
   whirl_linsol *ls;
@@ -112,8 +113,8 @@ static void diagonal_block(whirl_trloc *t, size_t *q, size_t j, const int *rows,
  * (c^H), the E rows + m (Im E), row na + m; column na: rows < na (Re b),
  * rows m.. (Im b); column m + j: the E rows (−Im E), row na, A's rows + m,
  * row na + m; column m + na: rows < na (−Im b), rows m.. (Re b).  An E
- * entry on a base entry adds to it: both are listed, the base one holding
- * the sum (S_J is filled first, S_ER adds). */
+ * entry on a base entry is not listed again: the base entry holds the sum
+ * (eon, build_pattern). */
 static size_t pattern_pass(whirl_trloc *t, int *rows) {
   const size_t na = t->na, m = t->m;
   size_t q = 0;
@@ -151,12 +152,22 @@ static int build_pattern(whirl_trloc *t) {
   t->skind = malloc(t->mnz);
   t->sidx = malloc(t->mnz * sizeof *t->sidx);
   t->Mx = malloc(t->mnz * sizeof *t->Mx);
-  if (!t->Mp || !t->Mi || !t->skind || !t->sidx || !t->Mx) {
+  t->eon = malloc(t->mnz * sizeof *t->eon);
+  if (!t->Mp || !t->Mi || !t->skind || !t->sidx || !t->Mx || !t->eon) {
     free(rows);
     return -1;
   }
   pattern_pass(t, rows);
   free(rows);
+  /* an E entry on a base entry adds there: found once, not per factor */
+  for (size_t col = 0; col < 2 * t->m; ++col)
+    for (int q = t->Mp[col]; q < t->Mp[col + 1]; ++q) {
+      t->eon[q] = -1;
+      if (t->skind[q] != S_J) continue;
+      const size_t i = (size_t)t->Mi[q] % t->m, j = col % t->m;
+      for (size_t e = 0; e < t->ne; ++e)
+        if (t->ei[e] == i && t->ej[e] == j) t->eon[q] = (long)e;
+    }
   return 0;
 }
 
@@ -170,11 +181,7 @@ static void fill_m(whirl_trloc *t, double theta) {
     double val = 0.0;
     switch (t->skind[q]) {
     case S_J:
-      val = t->Jx[k];
-      for (size_t e = 0; e < t->ne; ++e) /* an E entry on this base entry */
-        if ((long)t->base.Jp[t->ej[e]] <= k && k < (long)t->base.Jp[t->ej[e] + 1] &&
-            (size_t)t->base.Ji[k] == t->ei[e])
-          val += er * t->es[e];
+      val = t->Jx[k] + (t->eon[q] >= 0 ? er * t->es[t->eon[q]] : 0.0);
       break;
     case S_ER: val = er * t->es[k]; break;
     case S_EI: val = ei * t->es[k]; break;
@@ -517,7 +524,7 @@ nomem:
 void whirl_trloc_free(whirl_trloc *t) {
   if (!t) return;
   whirl_linsol_free(t->ls);
-  void *p[] = {t->ei, t->ej, t->eord, t->es, t->Mp, t->Mi, t->skind, t->sidx, t->Mx, t->b, t->c,
+  void *p[] = {t->ei, t->ej, t->eord, t->es, t->Mp, t->Mi, t->skind, t->sidx, t->eon, t->Mx, t->b, t->c,
                t->v, t->w, t->Jx, t->Jp, t->Jm, t->xs, t->pf, t->ps, t->rhs, t->fp,
                t->work, t->Zc, t->pc, t->Sp, t->Si};
   for (size_t i = 0; i < sizeof p / sizeof *p; ++i) free(p[i]);
