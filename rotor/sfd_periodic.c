@@ -439,7 +439,7 @@ int whirl_sfd_periodic_response(const double *p0,
       if (!found) continue; /* the isola does not survive to this F_E */
       int on = 0;
       for (size_t k = 0; k < nseen && !on; ++k)
-        on = whirl_branch_distance(seen[k], X, pf, 1.0, NULL) < 1e-6;
+        on = whirl_branch_within(seen[k], X, pf, 1.0, 1e-6);
       if (on) continue;
       ++carried;
       rc = trace_add(out, &d, &co, X, pf, 1, 1, seen, &nseen, errbuf, errlen);

@@ -155,12 +155,13 @@ int whirl_sfd_response_compute(const double *p0,
   const double tol_on = 0.02; /* seed-to-branch distance counted as "on it" */
 
   for (size_t i = 0; i < seeds.len; ++i) {
-    double x[4], dmin = INFINITY;
+    double x[4];
     whirl_sfd_circ_state(seeds.v[i].eps, seeds.v[i].Omega, lam, del, zet, x);
     p[WHIRL_SFD_OMEGA] = seeds.v[i].Omega;
-    for (size_t b = 0; b < out->nbranch; ++b)
-      dmin = fmin(dmin, whirl_branch_distance(out->branch[b], x, p, 1.0, NULL));
-    if (dmin < tol_on) continue;
+    int on = 0;
+    for (size_t b = 0; b < out->nbranch && !on; ++b)
+      on = whirl_branch_within(out->branch[b], x, p, 1.0, tol_on);
+    if (on) continue;
     whirl_branch *br = NULL;
     whirl_cont_stats st = {0};
     char msg[512];
@@ -183,11 +184,11 @@ int whirl_sfd_response_compute(const double *p0,
      * (a seed that sat between two points of a coarse polyline) */
     int dup = out->nbranch > 0;
     for (size_t k = 0; k < br->len && dup; ++k) {
-      double d = INFINITY;
-      for (size_t b = 0; b < out->nbranch; ++b)
-        d = fmin(d, whirl_branch_distance(out->branch[b], br->pts[k].x,
-                                          br->pts[k].p, 1.0, NULL));
-      if (d > tol_on) dup = 0;
+      int near = 0;
+      for (size_t b = 0; b < out->nbranch && !near; ++b)
+        near = whirl_branch_within(out->branch[b], br->pts[k].x, br->pts[k].p,
+                                   1.0, tol_on);
+      if (!near) dup = 0;
     }
     if (dup) {
       whirl_branch_free(br);

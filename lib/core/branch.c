@@ -117,36 +117,72 @@ int whirl_branch_join(whirl_branch *dst, const whirl_branch *src) {
   return WHIRL_OK;
 }
 
+/* The parameter's distance to the parameter interval of segment A-B: a
+ * lower bound of the distance to the segment in (x, p_icp). */
+static double segment_gap(const whirl_branch_point *A, const whirl_branch_point *B,
+                          double p, size_t icp) {
+  const double a = A->p[icp], b = B->p[icp];
+  const double lo = a < b ? a : b, hi = a < b ? b : a;
+  return p < lo ? lo - p : p > hi ? p - hi : 0.0;
+}
+
+/* The distance from (x, p) to segment A-B, the parameter weighted by w2 =
+ * p_weight^2: the nearest point of the segment by projection, clamped. */
+static double segment_distance(const whirl_branch_point *A,
+                               const whirl_branch_point *B, size_t n,
+                               size_t icp, const double *x, const double *p,
+                               double w2) {
+  double ab = w2 * (B->p[icp] - A->p[icp]) * (B->p[icp] - A->p[icp]);
+  double ap = w2 * (p[icp] - A->p[icp]) * (B->p[icp] - A->p[icp]);
+  for (size_t i = 0; i < n; ++i) {
+    ab += (B->x[i] - A->x[i]) * (B->x[i] - A->x[i]);
+    ap += (x[i] - A->x[i]) * (B->x[i] - A->x[i]);
+  }
+  double u = ab > 0 ? ap / ab : 0.0;
+  u = u < 0 ? 0 : u > 1 ? 1 : u;
+  double r = p[icp] - (A->p[icp] + u * (B->p[icp] - A->p[icp]));
+  double d = w2 * r * r;
+  for (size_t i = 0; i < n; ++i) {
+    r = x[i] - (A->x[i] + u * (B->x[i] - A->x[i]));
+    d += r * r;
+  }
+  return sqrt(d);
+}
+
+/* The segments of b: len - 1 of them, or the one point of a branch of 1. */
+static size_t segment_count(const whirl_branch *b) {
+  return b->len <= 1 ? b->len : b->len - 1;
+}
+
 double whirl_branch_distance(const whirl_branch *b, const double *x,
                              const double *p, double p_weight, size_t *seg) {
   double best = INFINITY;
-  const double w2 = p_weight * p_weight;
-  const size_t n = b->n, icp = b->icp;
-  for (size_t k = 0; k + 1 < b->len || (b->len == 1 && k == 0); ++k) {
+  const double w = fabs(p_weight);
+  for (size_t k = 0; k < segment_count(b); ++k) {
     const whirl_branch_point *A = &b->pts[k];
     const whirl_branch_point *B = b->len == 1 ? A : &b->pts[k + 1];
-    double ab = w2 * (B->p[icp] - A->p[icp]) * (B->p[icp] - A->p[icp]);
-    double ap = w2 * (p[icp] - A->p[icp]) * (B->p[icp] - A->p[icp]);
-    for (size_t i = 0; i < n; ++i) {
-      ab += (B->x[i] - A->x[i]) * (B->x[i] - A->x[i]);
-      ap += (x[i] - A->x[i]) * (B->x[i] - A->x[i]);
-    }
-    double u = ab > 0 ? ap / ab : 0.0;
-    u = u < 0 ? 0 : u > 1 ? 1 : u;
-    double r = p[icp] - (A->p[icp] + u * (B->p[icp] - A->p[icp]));
-    double d = w2 * r * r;
-    for (size_t i = 0; i < n; ++i) {
-      r = x[i] - (A->x[i] + u * (B->x[i] - A->x[i]));
-      d += r * r;
-    }
-    d = sqrt(d);
+    /* a segment whose parameter gap alone cannot beat the best so far is
+     * skipped: the same minimum and segment, fewer segments computed */
+    if (w * segment_gap(A, B, p[b->icp], b->icp) >= best) continue;
+    double d = segment_distance(A, B, b->n, b->icp, x, p, w * w);
     if (d < best) {
       best = d;
       if (seg) *seg = k;
     }
-    if (b->len == 1) break;
   }
   return best;
+}
+
+int whirl_branch_within(const whirl_branch *b, const double *x, const double *p,
+                        double p_weight, double tol) {
+  const double w = fabs(p_weight);
+  for (size_t k = 0; k < segment_count(b); ++k) {
+    const whirl_branch_point *A = &b->pts[k];
+    const whirl_branch_point *B = b->len == 1 ? A : &b->pts[k + 1];
+    if (w * segment_gap(A, B, p[b->icp], b->icp) >= tol) continue;
+    if (segment_distance(A, B, b->n, b->icp, x, p, w * w) < tol) return 1;
+  }
+  return 0;
 }
 
 /* whirl_cont_run, telling opt->progress (if any) of each point; *points

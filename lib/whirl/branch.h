@@ -51,6 +51,12 @@ WHIRL_API double whirl_branch_distance(const whirl_branch *b, const double *x,
                                        const double *p, double p_weight,
                                        size_t *seg);
 
+/* Is (x, p) nearer than tol to the polyline of the branch (the distance of
+ * whirl_branch_distance < tol)?  Stops at the first segment that is; segments
+ * farther than tol in the parameter alone are not computed. */
+WHIRL_API int whirl_branch_within(const whirl_branch *b, const double *x,
+                                  const double *p, double p_weight, double tol);
+
 /* Run the continuation c (already started) to its end, appending every point
  * to b.  Returns WHIRL_DONE at a normal end or the error. */
 WHIRL_API int whirl_cont_run(whirl_cont *c, whirl_branch *b);

@@ -1396,6 +1396,87 @@ static void test_switch_orientation(void) {
   whirl_branch_free(b);
 }
 
+/* whirl_branch_distance against the plain definition (every segment's
+ * nearest point, written out here): polylines that turn back and forth in
+ * the parameter, single points, several weights; the distance and the
+ * nearest segment exactly as from the definition (the pruning by the
+ * parameter's gap must not change either). */
+/* the distance from q to segment k of the polyline xy (a point if len 1) */
+static double ref_segment(size_t len, double (*xy)[3], const double *q, double w,
+                          size_t k) {
+  const double *A = xy[k], *B = xy[len == 1 ? k : k + 1];
+  /* coordinates: x0, x1, w p */
+  double a[3] = {A[0], A[1], w * A[2]}, b[3] = {B[0], B[1], w * B[2]};
+  double z[3] = {q[0], q[1], w * q[2]}, ab = 0, az = 0, d = 0;
+  for (int i = 0; i < 3; ++i) {
+    ab += (b[i] - a[i]) * (b[i] - a[i]);
+    az += (z[i] - a[i]) * (b[i] - a[i]);
+  }
+  double u = ab > 0 ? fmin(1.0, fmax(0.0, az / ab)) : 0.0;
+  for (int i = 0; i < 3; ++i) d += pow(z[i] - (a[i] + u * (b[i] - a[i])), 2);
+  return sqrt(d);
+}
+
+static double ref_distance(size_t len, double (*xy)[3], const double *q, double w) {
+  double best = INFINITY;
+  for (size_t k = 0; k < (len == 1 ? 1 : len - 1); ++k)
+    best = fmin(best, ref_segment(len, xy, q, w, k));
+  return best;
+}
+
+static void test_branch_distance(void) {
+  unsigned seed = 12345u;
+  int bad = 0, bad_within = 0, cases = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    size_t len = 1 + (size_t)(trial % 37);
+    double w = trial % 3 == 0 ? 1.0 : trial % 3 == 1 ? 0.1 : 7.0;
+    whirl_branch *b = whirl_branch_alloc(2, 1, 0, 0);
+    double xy[40][3];
+    double pv = 0;
+    for (size_t k = 0; k < len; ++k) {
+      seed = seed * 1103515245u + 12345u;
+      double r1 = (double)(seed >> 8) / 16777216.0;
+      seed = seed * 1103515245u + 12345u;
+      double r2 = (double)(seed >> 8) / 16777216.0;
+      pv += (r1 - 0.35) * 0.5; /* turns back now and then */
+      xy[k][0] = sin(3 * pv) + 0.1 * r2;
+      xy[k][1] = cos(2 * pv) * r1;
+      xy[k][2] = pv;
+      whirl_point pt = {0};
+      pt.n = 2;
+      pt.npar = 1;
+      pt.x = xy[k];
+      pt.p = &xy[k][2];
+      pt.stable = -1;
+      pt.n_unstable = -1;
+      whirl_branch_append(b, &pt);
+    }
+    for (int t = 0; t < 20; ++t) {
+      double q[3] = {sin((double)t), cos(1.3 * t), -2.0 + 0.25 * t};
+      size_t sgot = 99;
+      double dref = ref_distance(len, xy, q, w);
+      double dgot = whirl_branch_distance(b, q, &q[2], w, &sgot);
+      ++cases;
+      /* the segment named is a nearest one (at a shared vertex two are) */
+      double dseg = sgot < len ? ref_segment(len, xy, q, w, sgot) : INFINITY;
+      if (fabs(dgot - dref) > 1e-12 * (1 + dref) ||
+          fabs(dseg - dref) > 1e-12 * (1 + dref))
+        ++bad;
+      /* within(tol) is distance < tol (no tol equal to it to rounding) */
+      const double tols[3] = {0.05, 0.3, 1.0};
+      for (int j = 0; j < 3; ++j)
+        if (fabs(dref - tols[j]) > 1e-9 &&
+            whirl_branch_within(b, q, &q[2], w, tols[j]) != (dref < tols[j]))
+          ++bad_within;
+    }
+    whirl_branch_free(b);
+  }
+  ok(bad == 0, "branch distance: %d of %d points differ from the definition "
+               "(distance or nearest segment)", bad, cases);
+  ok(bad_within == 0, "branch within: %d of %d answers differ from the "
+                      "definition's distance < tol", bad_within, 3 * cases);
+}
+
 int main(void) {
   test_start_messages();
   test_cusp(1);
@@ -1424,5 +1505,6 @@ int main(void) {
   test_switch_orientation();
   test_errors();
   test_start_on_singular_solution();
+  test_branch_distance();
   return done_testing();
 }
