@@ -160,7 +160,7 @@ printf '\211PNG\r\n\032\n\000\000' > "$out"
 exit 0
 EOF
 chmod +x fakegp
-WHIRL_GNUPLOT="$tmp/fakegp" "$WHIRL" sfd response --out trunc --quiet > /dev/null 2> err.txt
+WHIRL_DRAW=gnuplot WHIRL_GNUPLOT="$tmp/fakegp" "$WHIRL" sfd response --out trunc --quiet > /dev/null 2> err.txt
 rc=$?
 [ $rc -eq 1 ] && [ ! -e trunc/response.png ] && [ -s trunc/special.tsv ] &&
   [ -s trunc/response.gp ] && grep -q "incomplete" err.txt

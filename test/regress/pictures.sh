@@ -82,11 +82,12 @@ real_gp=$(command -v "$GNUPLOT")
 printf '#!/bin/sh\necho "$#" >> "%s/gp-calls"\nexec "%s" "$@"\n' "$tmp" "$real_gp" > "$tmp/gp-count"
 printf '#!/bin/sh\necho "$#" >> "%s/gp-calls2"\n[ $# -gt 1 ] && { echo "batch refused" >&2; exit 1; }\nexec "%s" "$@"\n' "$tmp" "$real_gp" > "$tmp/gp-nobatch"
 chmod +x "$tmp/gp-count" "$tmp/gp-nobatch"
-WHIRL_GNUPLOT="$tmp/gp-count" "$WHIRL" sfd response --out "$tmp/batch" --quiet > /dev/null 2>&1
+# (WHIRL_DRAW=gnuplot: sfd response's PNGs are otherwise drawn by whirl)
+WHIRL_DRAW=gnuplot WHIRL_GNUPLOT="$tmp/gp-count" "$WHIRL" sfd response --out "$tmp/batch" --quiet > /dev/null 2>&1
 rc=$?
 [ $rc -eq 0 ] && [ "$(wc -l < "$tmp/gp-calls")" -eq 1 ] && png_ok "$tmp/batch/response.png" && png_ok "$tmp/batch/multipliers.png"
 ok $? "sfd response: both pictures by one gnuplot process ($(wc -l < "$tmp/gp-calls") started)"
-WHIRL_GNUPLOT="$tmp/gp-nobatch" "$WHIRL" sfd response --out "$tmp/batch2" --quiet > /dev/null 2> "$tmp/batch2.err"
+WHIRL_DRAW=gnuplot WHIRL_GNUPLOT="$tmp/gp-nobatch" "$WHIRL" sfd response --out "$tmp/batch2" --quiet > /dev/null 2> "$tmp/batch2.err"
 rc=$?
 [ $rc -eq 0 ] && [ "$(wc -l < "$tmp/gp-calls2")" -eq 3 ] && png_ok "$tmp/batch2/response.png" && png_ok "$tmp/batch2/multipliers.png" && [ ! -s "$tmp/batch2.err" ]
 ok $? "sfd response: the batch failing, each picture drawn alone ($(wc -l < "$tmp/gp-calls2") gnuplot runs, exit $rc)"

@@ -1,0 +1,529 @@
+/* drivers/gp_draw.c — a gp_figure (gp_figure.h) drawn on a raster canvas
+ * and written as PNG, laid out as gnuplot's pngcairo terminal lays out the
+ * same script (measured on its pictures): the frame inside margins made of
+ * the tick labels, axis labels and title, the key outside on the right in a
+ * box, ticks inside the frame on all four sides, the grid dotted behind
+ * the data, the data cut at the frame.  Tick steps follow gnuplot's rule
+ * (a step of 1, 2 or 5 times a power of ten, about ten a range, from the
+ * range's magnitude); automatic ranges end on a tick (a decade on a log
+ * axis).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include "gp_draw.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "png_write.h"
+#include "raster.h"
+#include "raster_text.h"
+
+enum { MAX_TICKS = 64 };
+
+typedef struct axis_map {
+  double lo, hi;     /* data range (log10 of it on a log axis) */
+  double p0, p1;     /* pixels of lo and hi */
+  int log;
+  double tick[MAX_TICKS], minor[4 * MAX_TICKS];
+  int ntick, nminor;
+} axis_map;
+
+typedef struct frame {
+  double em, vchar, hchar; /* font size in pixels; a line; a character */
+  double L, R, T, B;       /* the frame, pixels */
+  axis_map x, y;
+} frame;
+
+/* gnuplot's default line colours (linetypes 1..8) */
+static const uint32_t default_rgb[8] = {0x9400d3, 0x009e73, 0x56b4e9, 0xe69f00,
+                                        0xf0e442, 0x0072b2, 0xe51e10, 0x000000};
+
+/* ---- ranges and ticks --------------------------------------------------- */
+
+/* The tick step of a range of length ARG: 1, 2, 5 (or 0.5, 0.2 ...) times
+ * a power of ten, about 20 / (ARG / 10^floor(log10 ARG)) ticks a decade
+ * (gnuplot's "quantize_normal_tics" rule, guide 20). */
+static double tick_step(double arg) {
+  const double power = pow(10.0, floor(log10(arg)));
+  const double xnorm = arg / power, posns = 20.0 / xnorm;
+  double t;
+  if (posns > 40) t = 0.05;
+  else if (posns > 20) t = 0.1;
+  else if (posns > 10) t = 0.2;
+  else if (posns > 4) t = 0.5;
+  else if (posns > 2) t = 1;
+  else if (posns > 0.5) t = 2;
+  else t = ceil(xnorm);
+  return t * power;
+}
+
+/* The data's range on one axis (columns of every series), positive values
+ * only on a log axis.  0 when there are none. */
+static int data_range(const gp_figure *f, int ax, int log, double *lo, double *hi) {
+  *lo = INFINITY;
+  *hi = -INFINITY;
+  for (size_t s = 0; s < f->nseries; s++) {
+    const gp_series *S = &f->series[s];
+    const gp_block *B = &f->block[S->block];
+    const int c = (ax ? S->cy : S->cx) - 1;
+    if ((size_t)c >= B->ncol) continue;
+    for (size_t i = 0; i < B->nrow; i++) {
+      const double v = B->v[i * B->ncol + (size_t)c];
+      if (!isfinite(v) || (log && v <= 0)) continue;
+      *lo = fmin(*lo, v);
+      *hi = fmax(*hi, v);
+    }
+  }
+  return *lo <= *hi;
+}
+
+/* The axis's range: as set, or from the data and extended to a tick;
+ * -1 for a range that cannot be drawn (a log axis at or below 0). */
+static int axis_range(const gp_figure *f, const gp_axis *a, int ax, axis_map *m) {
+  double dlo, dhi;
+  int have = data_range(f, ax, a->log, &dlo, &dhi);
+  double lo = a->auto_lo ? (have ? dlo : a->log ? 1 : -10) : a->lo;
+  double hi = a->auto_hi ? (have ? dhi : a->log ? 10 : 10) : a->hi;
+  if (a->log && (lo <= 0 || hi <= 0)) return -1;
+  if (a->log) lo = log10(lo), hi = log10(hi);
+  if (lo > hi && a->auto_lo != a->auto_hi) { /* one end set past the data */
+    if (a->auto_lo) lo = hi - 1;
+    else hi = lo + 1;
+  }
+  if (lo == hi) {
+    const double d = a->log ? 1 : fabs(lo) > 0 ? 0.01 * fabs(lo) : 1;
+    lo -= d;
+    hi += d;
+  }
+  const double step = a->log ? 1.0 : tick_step(fabs(hi - lo));
+  const int rev = lo > hi;
+  if (a->auto_lo) lo = (rev ? ceil(lo / step - 1e-9) : floor(lo / step + 1e-9)) * step;
+  if (a->auto_hi) hi = (rev ? floor(hi / step + 1e-9) : ceil(hi / step - 1e-9)) * step;
+  m->lo = lo;
+  m->hi = hi;
+  m->log = a->log;
+  return 0;
+}
+
+static void axis_ticks(axis_map *m) {
+  const double lo = fmin(m->lo, m->hi), hi = fmax(m->lo, m->hi);
+  /* a log axis: every decade, or whole numbers of decades on a long one */
+  const double step = m->log ? fmax(1.0, ceil(tick_step(hi - lo))) : tick_step(hi - lo);
+  const double tol = 1e-9 * step;
+  m->ntick = m->nminor = 0;
+  for (double k = ceil((lo - tol) / step); k * step <= hi + tol && m->ntick < MAX_TICKS; k++) {
+    double v = k * step;
+    if (fabs(v) < tol) v = 0;
+    m->tick[m->ntick++] = v;
+  }
+  if (!m->log || step > 1) return;
+  for (double d = floor(lo); d <= hi; d++) /* 2..9 times each decade */
+    for (int j = 2; j <= 9 && m->nminor < 4 * MAX_TICKS; j++) {
+      const double v = d + log10((double)j);
+      if (v > lo + tol && v < hi - tol) m->minor[m->nminor++] = v;
+    }
+}
+
+static double to_px(const axis_map *m, double v) {
+  if (m->log) v = v > 0 ? log10(v) : NAN;
+  return m->p0 + (v - m->lo) / (m->hi - m->lo) * (m->p1 - m->p0);
+}
+
+/* a position in the figure's coordinates: first (data) or graph (0..1) */
+static double coord_px(const axis_map *m, gp_coord c) {
+  return c.sys == GP_GRAPH ? m->p0 + c.v * (m->p1 - m->p0) : to_px(m, c.v);
+}
+
+static void tick_label(const axis_map *m, double t, char *buf, size_t len) {
+  double v = m->log ? pow(10.0, t) : t;
+  snprintf(buf, len, "%g", v);
+}
+
+/* ---- text --------------------------------------------------------------- */
+
+typedef struct pen {
+  raster *r;
+  raster_font *font;
+  int failed; /* a string outside the subset was met */
+} pen;
+
+static double text_width(pen *P, const gp_text *t, double size) {
+  raster_extent e;
+  if (!t->s) return 0;
+  if (raster_text_extent(P->font, t->s, size, t->enhanced, &e)) P->failed = 1;
+  return e.width;
+}
+
+/* Draw T aligned (GP_LEFT, GP_CENTRE, GP_RIGHT) on (x, baseline y). */
+static void text_at(pen *P, const gp_text *t, double size, double x, double y,
+                    int align, uint32_t rgb) {
+  if (!t->s || !t->s[0]) return;
+  const double w = text_width(P, t, size);
+  x -= align == GP_CENTRE ? 0.5 * w : align == GP_RIGHT ? w : 0;
+  if (raster_text_draw(P->r, P->font, t->s, size, t->enhanced, x, y, 0, rgb))
+    P->failed = 1;
+}
+
+/* ---- layout ------------------------------------------------------------- */
+
+static double widest_tick_label(pen *P, const axis_map *m, double em) {
+  double w = 0;
+  char buf[64];
+  for (int k = 0; k < m->ntick; k++) {
+    tick_label(m, m->tick[k], buf, sizeof buf);
+    gp_text t = {buf, 0};
+    w = fmax(w, text_width(P, &t, em));
+  }
+  return w;
+}
+
+static double key_width(pen *P, const gp_figure *f, double em) {
+  double w = 0;
+  for (size_t s = 0; s < f->nseries; s++)
+    if (f->series[s].title.s) w = fmax(w, text_width(P, &f->series[s].title, em));
+  return w + 1.0 * em + 0.6 * em + 2.8 * em + 0.6 * em;
+}
+
+static size_t key_rows(const gp_figure *f) {
+  size_t n = 0;
+  for (size_t s = 0; s < f->nseries; s++) n += f->series[s].title.s != NULL;
+  return n;
+}
+
+/* The frame within the margins (gnuplot's, measured at 'Sans,12': a line
+ * is 1.1625 em, the tick labels' tops 0.875 em under the frame, the x
+ * label's 2.56 em, the left margin 0.7 em + the y label + 1.1 em + the
+ * widest tick label + 0.75 em, the key 0.7 em from the right edge and
+ * 1.25 em from the frame). */
+static int lay_out(pen *P, const gp_figure *f, frame *F) {
+  F->em = f->font_pt * 4.0 / 3.0;
+  F->vchar = 1.1625 * F->em;
+  F->hchar = 0.6 * F->em;
+  if (axis_range(f, &f->x, 0, &F->x) || axis_range(f, &f->y, 1, &F->y)) return -1;
+  axis_ticks(&F->x);
+  axis_ticks(&F->y);
+  const double em = F->em;
+  raster_extent e;
+  double ylab = 0;
+  if (f->y.label.s && f->y.label.s[0]) {
+    if (raster_text_extent(P->font, f->y.label.s, em, f->y.label.enhanced, &e)) return -1;
+    ylab = e.ascent + e.descent + 1.1 * em;
+  }
+  const double m[4] = {f->margin[0], f->margin[1], f->margin[2], f->margin[3]};
+  F->T = m[0] >= 0 ? m[0] * F->vchar : (f->title.s && f->title.s[0] ? 3 : 1) * F->vchar;
+  F->B = f->h - (m[1] >= 0 ? m[1] * F->vchar
+                           : (f->x.label.s && f->x.label.s[0] ? 3.8 : 2.3) * em);
+  F->L = m[2] >= 0 ? m[2] * F->hchar
+                   : 0.7 * em + ylab + widest_tick_label(P, &F->y, em) + 0.75 * em;
+  double right = 2.0 * em;
+  if (f->key && key_rows(f)) right = key_width(P, f, em) + 0.7 * em + 1.25 * em;
+  F->R = f->w - (m[3] >= 0 ? m[3] * F->hchar : right);
+  F->L = round(F->L);
+  F->R = round(F->R);
+  F->T = round(F->T);
+  F->B = round(F->B);
+  if (F->R - F->L < 20 || F->B - F->T < 20) return -1;
+  F->x.p0 = F->L + 0.5;
+  F->x.p1 = F->R + 0.5;
+  F->y.p0 = F->B + 0.5;
+  F->y.p1 = F->T + 0.5;
+  return 0;
+}
+
+/* ---- drawing ------------------------------------------------------------ */
+
+/* gnuplot's dash types: 1 solid, 2 dashed, 3 dotted, 4 dash-dot, 5
+ * dash-dot-dot, in units of the line width */
+static int dash_pattern(int dt, double lw, double *d) {
+  const double u = fmax(lw, 1.0);
+  switch (dt) {
+  case 2: d[0] = 4 * u; d[1] = 4 * u; return 2;
+  case 3: d[0] = 1 * u; d[1] = 3 * u; return 2;
+  case 4: d[0] = 5.5 * u; d[1] = 3 * u; d[2] = 1 * u; d[3] = 3 * u; return 4;
+  case 5: d[0] = 5.5 * u; d[1] = 3 * u; d[2] = 1 * u; d[3] = 3 * u;
+          d[4] = 1 * u; d[5] = 3 * u; return 6;
+  default: return 0;
+  }
+}
+
+/* gnuplot's grid: its line type 0, dots half a pixel wide (a light grey) */
+static void draw_grid(raster *r, const frame *F) {
+  const double dots[2] = {1.0, 3.0};
+  for (int k = 0; k < F->x.ntick; k++) {
+    const double x = round(F->x.p0 + (F->x.tick[k] - F->x.lo) / (F->x.hi - F->x.lo) * (F->x.p1 - F->x.p0) - 0.5) + 0.5;
+    if (x > F->L + 1 && x < F->R) raster_line(r, x, F->T, x, F->B, 1.0, dots, 2, 0xd0d0d0);
+  }
+  for (int k = 0; k < F->y.ntick; k++) {
+    const double y = round(F->y.p0 + (F->y.tick[k] - F->y.lo) / (F->y.hi - F->y.lo) * (F->y.p1 - F->y.p0) - 0.5) + 0.5;
+    if (y > F->T + 1 && y < F->B) raster_line(r, F->L, y, F->R, y, 1.0, dots, 2, 0xd0d0d0);
+  }
+}
+
+/* ticks on all four sides, inwards, and the labels left and under */
+static void draw_ticks(pen *P, const frame *F) {
+  raster *r = P->r;
+  const double major = round(0.4 * F->em), minor = round(0.2 * F->em);
+  char buf[64];
+  for (int k = 0; k < F->x.ntick; k++) {
+    const double x = round(F->x.p0 + (F->x.tick[k] - F->x.lo) / (F->x.hi - F->x.lo) * (F->x.p1 - F->x.p0) - 0.5) + 0.5;
+    raster_line(r, x, F->B + 0.5, x, F->B + 0.5 - major, 1.0, NULL, 0, 0);
+    raster_line(r, x, F->T + 0.5, x, F->T + 0.5 + major, 1.0, NULL, 0, 0);
+    tick_label(&F->x, F->x.tick[k], buf, sizeof buf);
+    gp_text t = {buf, 0};
+    text_at(P, &t, F->em, x, F->B + 0.875 * F->em + 0.73 * F->em, GP_CENTRE, 0);
+  }
+  for (int k = 0; k < F->y.ntick; k++) {
+    const double y = round(F->y.p0 + (F->y.tick[k] - F->y.lo) / (F->y.hi - F->y.lo) * (F->y.p1 - F->y.p0) - 0.5) + 0.5;
+    raster_line(r, F->L + 0.5, y, F->L + 0.5 + major, y, 1.0, NULL, 0, 0);
+    raster_line(r, F->R + 0.5, y, F->R + 0.5 - major, y, 1.0, NULL, 0, 0);
+    tick_label(&F->y, F->y.tick[k], buf, sizeof buf);
+    gp_text t = {buf, 0};
+    text_at(P, &t, F->em, F->L - 0.75 * F->em, y + 0.36 * F->em, GP_RIGHT, 0);
+  }
+  for (int k = 0; k < F->y.nminor; k++) {
+    const double y = F->y.p0 + (F->y.minor[k] - F->y.lo) / (F->y.hi - F->y.lo) * (F->y.p1 - F->y.p0);
+    raster_line(r, F->L + 0.5, y, F->L + 0.5 + minor, y, 1.0, NULL, 0, 0);
+    raster_line(r, F->R + 0.5, y, F->R + 0.5 - minor, y, 1.0, NULL, 0, 0);
+  }
+  for (int k = 0; k < F->x.nminor; k++) {
+    const double x = F->x.p0 + (F->x.minor[k] - F->x.lo) / (F->x.hi - F->x.lo) * (F->x.p1 - F->x.p0);
+    raster_line(r, x, F->B + 0.5, x, F->B + 0.5 - minor, 1.0, NULL, 0, 0);
+    raster_line(r, x, F->T + 0.5, x, F->T + 0.5 + minor, 1.0, NULL, 0, 0);
+  }
+}
+
+static uint32_t series_rgb(const gp_series *S, size_t index) {
+  return S->has_rgb ? S->rgb : default_rgb[index % 8];
+}
+
+/* the series' curves (a blank line in the data breaks them) or points */
+static int draw_series(raster *r, const frame *F, const gp_figure *f, size_t s) {
+  const gp_series *S = &f->series[s];
+  const gp_block *B = &f->block[S->block];
+  const uint32_t rgb = series_rgb(S, s);
+  const size_t cx = (size_t)S->cx - 1, cy = (size_t)S->cy - 1;
+  if (cx >= B->ncol || cy >= B->ncol) return 0; /* gnuplot: no valid points */
+  double *x = malloc((B->nrow + 1) * sizeof *x), *y = malloc((B->nrow + 1) * sizeof *y);
+  if (!x || !y) {
+    free(x);
+    free(y);
+    return -1;
+  }
+  double dash[6];
+  const int nd = dash_pattern(S->dt, S->lw, dash);
+  size_t n = 0;
+  for (size_t i = 0; i <= B->nrow; i++) {
+    if (S->style == GP_LINES && n > 0 && (i == B->nrow || B->brk[i])) {
+      raster_polyline(r, x, y, n, S->lw, dash, nd, rgb);
+      n = 0;
+    }
+    if (i == B->nrow) break;
+    x[n] = to_px(&F->x, B->v[i * B->ncol + cx]);
+    y[n] = to_px(&F->y, B->v[i * B->ncol + cy]);
+    if (S->style == GP_POINTS) {
+      if (x[0] >= F->L && x[0] <= F->R + 1 && y[0] >= F->T && y[0] <= F->B + 1)
+        raster_disc(r, x[0], y[0], 3.7 * S->ps, rgb);
+    } else {
+      n++;
+    }
+  }
+  free(x);
+  free(y);
+  return 0;
+}
+
+static void draw_key(pen *P, const frame *F, const gp_figure *f) {
+  const size_t rows = key_rows(f);
+  if (!f->key || !rows) return;
+  const double em = F->em, kw = key_width(P, f, em);
+  const double right = f->w - 0.7 * em, left = right - kw;
+  const double top = F->T, bottom = top + (double)rows * F->vchar + 0.4 * em;
+  if (f->key_box)
+    raster_stroke_rect(P->r, round(left) + 0.5, top + 0.5, round(right) + 0.5,
+                       round(bottom) + 0.5, 1.0, 0);
+  const double tx = right - 0.6 * em - 2.8 * em - 0.6 * em;
+  const double s0 = right - 0.6 * em - 2.8 * em, s1 = right - 0.6 * em;
+  size_t row = 0;
+  for (size_t s = 0; s < f->nseries; s++) {
+    const gp_series *S = &f->series[s];
+    if (!S->title.s) continue;
+    const double yc = top + 0.2 * em + ((double)row + 0.5) * F->vchar;
+    text_at(P, &S->title, em, tx, yc + 0.36 * em, GP_RIGHT, 0);
+    const uint32_t rgb = series_rgb(S, s);
+    if (S->style == GP_POINTS) {
+      raster_disc(P->r, 0.5 * (s0 + s1), yc, 3.7 * S->ps, rgb);
+    } else {
+      double dash[6];
+      const int nd = dash_pattern(S->dt, S->lw, dash);
+      raster_line(P->r, s0, yc, s1, yc, S->lw, dash, nd, rgb);
+    }
+    row++;
+  }
+}
+
+static void draw_labels(pen *P, const frame *F, const gp_figure *f) {
+  for (size_t k = 0; k < f->nlabel; k++) {
+    const gp_label *l = &f->label[k];
+    const double size = l->font_pt > 0 ? l->font_pt * 4.0 / 3.0 : F->em;
+    const double x = coord_px(&F->x, l->x) + l->off_x * F->hchar;
+    const double y = coord_px(&F->y, l->y) - l->off_y * F->vchar;
+    text_at(P, &l->text, size, x, y + 0.36 * size, l->align, l->rgb);
+  }
+}
+
+static void draw_arrows(raster *r, const frame *F, const gp_figure *f) {
+  for (size_t k = 0; k < f->narrow; k++) {
+    const gp_arrow *a = &f->arrow[k];
+    double dash[6];
+    const int nd = dash_pattern(a->dt, a->lw, dash);
+    raster_line(r, coord_px(&F->x, a->x0), coord_px(&F->y, a->y0),
+                coord_px(&F->x, a->x1), coord_px(&F->y, a->y1), a->lw, dash, nd,
+                a->rgb);
+  }
+}
+
+static int draw(pen *P, const gp_figure *f) {
+  frame F;
+  if (lay_out(P, f, &F)) return 1;
+  raster *r = P->r;
+  if (f->grid) draw_grid(r, &F);
+  raster_set_clip(r, F.L, F.T, F.R + 1, F.B + 1);
+  draw_arrows(r, &F, f);
+  for (size_t s = 0; s < f->nseries; s++)
+    if (draw_series(r, &F, f, s)) return -1;
+  raster_clip_all(r);
+  raster_stroke_rect(r, F.L + 0.5, F.T + 0.5, F.R + 0.5, F.B + 0.5, 1.0, 0);
+  draw_ticks(P, &F);
+  const double mid = 0.5 * (F.L + F.R);
+  text_at(P, &f->x.label, F.em, mid, F.B + 2.56 * F.em + 0.75 * F.em, GP_CENTRE, 0);
+  if (f->y.label.s && f->y.label.s[0]) {
+    raster_extent e;
+    const double w = text_width(P, &f->y.label, F.em);
+    if (raster_text_extent(P->font, f->y.label.s, F.em, f->y.label.enhanced, &e) ||
+        raster_text_draw(r, P->font, f->y.label.s, F.em, f->y.label.enhanced,
+                         0.7 * F.em + e.ascent, 0.5 * (F.T + F.B) + 0.5 * w, 1, 0))
+      P->failed = 1;
+  }
+  text_at(P, &f->title, F.em, mid + f->title_off_x * F.hchar,
+          F.T - 1.18 * F.vchar - f->title_off_y * F.vchar, GP_CENTRE, 0);
+  draw_labels(P, &F, f);
+  draw_key(P, &F, f);
+  return P->failed ? 1 : 0;
+}
+
+struct gp_painter {
+  raster_font *font;
+  raster *canvas; /* NULL until the first picture */
+};
+
+gp_painter *gp_painter_new(char *err, size_t len) {
+  gp_painter *p = calloc(1, sizeof *p);
+  if (!p) {
+    snprintf(err, len, "out of memory");
+    return NULL;
+  }
+  p->font = raster_font_open(NULL, err, len);
+  if (!p->font) {
+    free(p);
+    return NULL;
+  }
+  return p;
+}
+
+void gp_painter_free(gp_painter *p) {
+  if (!p) return;
+  raster_font_close(p->font);
+  raster_free(p->canvas);
+  free(p);
+}
+
+/* The painter's canvas, white, of the figure's size. */
+static raster *canvas_for(gp_painter *p, const gp_figure *f) {
+  if (p->canvas && (p->canvas->w != f->w || p->canvas->h != f->h)) {
+    raster_free(p->canvas);
+    p->canvas = NULL;
+  }
+  if (p->canvas) raster_clear(p->canvas, 0xffffff);
+  else p->canvas = raster_new(f->w, f->h, 0xffffff);
+  return p->canvas;
+}
+
+int gp_draw_png(gp_painter *p, const gp_figure *f, const char *path, char *err,
+                size_t len) {
+  raster *r = canvas_for(p, f);
+  if (!r) {
+    snprintf(err, len, "out of memory");
+    return -1;
+  }
+  pen P = {r, p->font, 0};
+  int rc = draw(&P, f);
+  if (rc == 1) snprintf(err, len, "a text or range not drawn here");
+  if (rc == -1) snprintf(err, len, "out of memory");
+  if (rc != 0) return rc;
+  FILE *out = fopen(path, "wb");
+  int werr = 0;
+  if (!out || png_write_indexed(out, r->px, r->w, r->h, r->pal, r->npal) != 0)
+    werr = errno ? errno : EIO;
+  if (out && fclose(out) != 0 && !werr) werr = errno ? errno : EIO;
+  if (werr) {
+    snprintf(err, len, "%s", strerror(werr));
+    if (out) remove(path);
+    return -1;
+  }
+  return 0;
+}
+
+/* The whole of the file PATH, NUL-terminated; NULL if it cannot be read. */
+static char *slurp(const char *path) {
+  FILE *f = fopen(path, "rb");
+  if (!f) return NULL;
+  size_t cap = 1 << 16, n = 0, got;
+  char *buf = malloc(cap);
+  while (buf && (got = fread(buf + n, 1, cap - n - 1, f)) > 0) {
+    n += got;
+    if (n + 1 == cap) {
+      char *b = realloc(buf, 2 * cap);
+      if (!b) {
+        free(buf);
+        buf = NULL;
+        break;
+      }
+      buf = b;
+      cap *= 2;
+    }
+  }
+  if (buf && ferror(f)) {
+    free(buf);
+    buf = NULL;
+  }
+  fclose(f);
+  if (buf) buf[n] = '\0';
+  return buf;
+}
+
+int gp_draw_script(gp_painter *p, const char *dir, const char *name, char *err,
+                   size_t len) {
+  char path[4096];
+  snprintf(path, sizeof path, "%s/%s.gp", dir, name);
+  char *text = slurp(path);
+  if (!text) {
+    snprintf(err, len, "cannot read %s.gp", name);
+    return 1;
+  }
+  gp_figure fig;
+  int rc = gp_parse(text, &fig, err, len);
+  free(text);
+  if (rc == 0 && (strchr(fig.output, '/') || fig.output[0] == '.')) {
+    snprintf(err, len, "output outside the directory");
+    rc = 1;
+  }
+  if (rc == 0) {
+    snprintf(path, sizeof path, "%s/%s", dir, fig.output);
+    rc = gp_draw_png(p, &fig, path, err, len);
+  }
+  if (rc < 0 && !err[0]) snprintf(err, len, "out of memory");
+  gp_figure_free(&fig);
+  return rc;
+}

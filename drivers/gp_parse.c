@@ -1,0 +1,525 @@
+/* drivers/gp_parse.c — the part of gnuplot's language whirl's line and
+ * point pictures use, read into a gp_figure (gp_figure.h):
+ *   set terminal pngcairo size W,H [enhanced] font 'Sans,S'; set output
+ *   $NAME << EOD ... EOD (datablocks of numbers)
+ *   set title|xlabel|ylabel 'T' [offset X,Y] [noenhanced]
+ *   set xrange|yrange [A:B] (A, B numbers or *); set logscale x|y|xy
+ *   set grid; set key outside right top [box] [vertical]
+ *   set tmargin|bmargin|lmargin|rmargin N
+ *   set arrow from P to P nohead [dt N] [lw N] [lc rgb '#rrggbb'] [front|back]
+ *   set label 'T' at P [left|center|right] [font 'Sans,S'] [tc rgb 'C']
+ *             [offset X,Y] [front|back] [noenhanced]
+ *   plot $NAME using I:J with lines|points [dt N] [lw N] [lc rgb 'C']
+ *             [pt 7] [ps N] [title 'T'|notitle], ...
+ * with P = [first|graph] X, [first|graph] Y.  Anything else makes the
+ * script gnuplot's to draw (gp_parse returns 1).
+ * SPDX-License-Identifier: BSD-3-Clause */
+#define _POSIX_C_SOURCE 200809L /* strdup */
+#include "gp_figure.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { TOK_WORD, TOK_STR, TOK_PUNCT };
+enum { MAX_TOK = 256 };
+
+typedef struct token {
+  int kind;
+  char text[512];
+} token;
+
+typedef struct stmt {
+  token t[MAX_TOK];
+  int n, i; /* tokens, the next one */
+} stmt;
+
+/* ---- tokens ------------------------------------------------------------- */
+
+static int is_punct(char c) { return c == ',' || c == ':' || c == '[' || c == ']'; }
+
+/* Split LINE into tokens: quoted strings ('' is a quote inside single
+ * quotes, \" inside double ones), the punctuation , : [ ], and words.
+ * -1 for a line the renderer does not read (too long, an open quote). */
+static int tokenize(const char *line, stmt *S) {
+  S->n = S->i = 0;
+  const char *p = line;
+  while (*p) {
+    if (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n') {
+      p++;
+      continue;
+    }
+    if (*p == '#') break;
+    if (S->n == MAX_TOK) return -1;
+    token *t = &S->t[S->n++];
+    size_t k = 0;
+    if (*p == '\'' || *p == '"') {
+      const char q = *p++;
+      t->kind = TOK_STR;
+      for (;;) {
+        if (!*p) return -1;
+        if (*p == q && q == '\'' && p[1] == '\'') p++;
+        else if (*p == q) break;
+        else if (q == '"' && *p == '\\' && p[1]) {
+          p++;
+          if (*p == 'n') return -1; /* a line break: not drawn here */
+        }
+        if (k + 1 >= sizeof t->text) return -1;
+        t->text[k++] = *p++;
+      }
+      p++;
+    } else if (is_punct(*p)) {
+      t->kind = TOK_PUNCT;
+      t->text[k++] = *p++;
+    } else {
+      t->kind = TOK_WORD;
+      while (*p && !strchr(" \t\r\n'\"#", *p) && !is_punct(*p)) {
+        if (k + 1 >= sizeof t->text) return -1;
+        t->text[k++] = *p++;
+      }
+    }
+    t->text[k] = '\0';
+  }
+  return 0;
+}
+
+static const token *peek(const stmt *S) { return S->i < S->n ? &S->t[S->i] : NULL; }
+
+/* Is the next token the word W (or punctuation)?  Taken if so. */
+static int take(stmt *S, const char *w) {
+  const token *t = peek(S);
+  if (t && t->kind != TOK_STR && !strcmp(t->text, w)) {
+    S->i++;
+    return 1;
+  }
+  return 0;
+}
+
+static int take_number(stmt *S, double *v) {
+  const token *t = peek(S);
+  if (!t || t->kind != TOK_WORD) return 0;
+  char *end;
+  double x = strtod(t->text, &end);
+  if (end == t->text || *end || !isfinite(x)) return 0;
+  *v = x;
+  S->i++;
+  return 1;
+}
+
+static int take_string(stmt *S, char **out) {
+  const token *t = peek(S);
+  if (!t || t->kind != TOK_STR) return 0;
+  char *s = strdup(t->text);
+  if (!s) return 0;
+  free(*out);
+  *out = s;
+  S->i++;
+  return 1;
+}
+
+/* rgb '#rrggbb' */
+static int take_rgb(stmt *S, uint32_t *rgb) {
+  if (!take(S, "rgb")) return 0;
+  const token *t = peek(S);
+  if (!t || t->kind != TOK_STR || t->text[0] != '#' || strlen(t->text) != 7) return 0;
+  char *end;
+  unsigned long v = strtoul(t->text + 1, &end, 16);
+  if (*end) return 0;
+  *rgb = (uint32_t)v;
+  S->i++;
+  return 1;
+}
+
+/* X,Y: an offset in characters */
+static int take_pair(stmt *S, double *x, double *y) {
+  return take_number(S, x) && take(S, ",") && take_number(S, y);
+}
+
+/* [first|graph] V */
+static int take_coord(stmt *S, gp_coord *c) {
+  c->sys = take(S, "graph") ? GP_GRAPH : (take(S, "first"), GP_FIRST);
+  return take_number(S, &c->v);
+}
+
+/* 'Sans,S' or 'Sans': the size S in points (0 when not given) */
+static int font_size(const char *spec, double *pt) {
+  const char *comma = strchr(spec, ',');
+  size_t fam = comma ? (size_t)(comma - spec) : strlen(spec);
+  if (fam && strncmp(spec, "Sans", fam)) return 0; /* another family */
+  *pt = 0;
+  if (!comma) return 1;
+  char *end;
+  *pt = strtod(comma + 1, &end);
+  return !*end && *pt > 0 && *pt < 200;
+}
+
+/* ---- statements --------------------------------------------------------- */
+
+typedef struct parser {
+  gp_figure *fig;
+  char *err;
+  size_t len;
+} parser;
+
+static int unsupported(parser *P, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(P->err, P->len, fmt, ap);
+  va_end(ap);
+  return 1;
+}
+
+static int grow(void **v, size_t n, size_t size) {
+  void *p = realloc(*v, (n + 1) * size);
+  if (!p) return -1;
+  *v = p;
+  memset((char *)p + n * size, 0, size);
+  return 0;
+}
+
+static int set_terminal(parser *P, stmt *S) {
+  gp_figure *f = P->fig;
+  double w, h;
+  char *font = NULL;
+  if (!take(S, "pngcairo")) return unsupported(P, "terminal other than pngcairo");
+  while (peek(S)) {
+    if (take(S, "size") && take_pair(S, &w, &h)) {
+      if (!(w >= 16 && w <= 4096 && h >= 16 && h <= 4096)) /* larger: gnuplot */
+        return unsupported(P, "picture size");
+      f->w = (int)w;
+      f->h = (int)h;
+    } else if (take(S, "enhanced")) {
+      f->enhanced = 1;
+    } else if (take(S, "noenhanced")) {
+      f->enhanced = 0;
+    } else if (take(S, "font") && take_string(S, &font)) {
+      int good = font_size(font, &f->font_pt);
+      free(font);
+      font = NULL;
+      if (!good || f->font_pt <= 0) return unsupported(P, "terminal font");
+    } else {
+      return unsupported(P, "terminal option");
+    }
+  }
+  return 0;
+}
+
+/* set title|xlabel|ylabel 'T' [offset X,Y] [noenhanced] */
+static int set_text(parser *P, stmt *S, gp_text *t, double *ox, double *oy) {
+  if (!take_string(S, &t->s)) return unsupported(P, "text without a string");
+  t->enhanced = P->fig->enhanced;
+  while (peek(S)) {
+    double x, y;
+    if (take(S, "noenhanced")) t->enhanced = 0;
+    else if (take(S, "enhanced")) t->enhanced = 1;
+    else if (ox && take(S, "offset") && take_pair(S, &x, &y)) *ox = x, *oy = y;
+    else return unsupported(P, "text option");
+  }
+  return 0;
+}
+
+/* [A:B] with * for automatic ends */
+static int set_range(parser *P, stmt *S, gp_axis *a) {
+  if (!take(S, "[")) return unsupported(P, "range");
+  a->auto_lo = take(S, "*") || (peek(S) && !strcmp(peek(S)->text, ":"));
+  if (!a->auto_lo && !take_number(S, &a->lo)) return unsupported(P, "range");
+  if (!take(S, ":")) return unsupported(P, "range");
+  a->auto_hi = take(S, "*") || (peek(S) && !strcmp(peek(S)->text, "]"));
+  if (!a->auto_hi && !take_number(S, &a->hi)) return unsupported(P, "range");
+  if (!take(S, "]") || peek(S)) return unsupported(P, "range");
+  return 0;
+}
+
+static int set_key(parser *P, stmt *S) {
+  P->fig->key = 1;
+  int outside = 0, right = 0, top = 0;
+  while (peek(S)) {
+    if (take(S, "outside")) outside = 1;
+    else if (take(S, "right")) right = 1;
+    else if (take(S, "top")) top = 1;
+    else if (take(S, "box")) P->fig->key_box = 1;
+    else if (take(S, "vertical")) continue;
+    else return unsupported(P, "key option");
+  }
+  return outside && right && top ? 0 : unsupported(P, "key placement");
+}
+
+static int set_arrow(parser *P, stmt *S) {
+  gp_figure *f = P->fig;
+  if (grow((void **)&f->arrow, f->narrow, sizeof *f->arrow)) return -1;
+  gp_arrow *a = &f->arrow[f->narrow];
+  a->lw = 1;
+  a->dt = 1;
+  if (!take(S, "from") || !take_coord(S, &a->x0) || !take(S, ",") ||
+      !take_coord(S, &a->y0) || !take(S, "to") || !take_coord(S, &a->x1) ||
+      !take(S, ",") || !take_coord(S, &a->y1))
+    return unsupported(P, "arrow position");
+  int nohead = 0;
+  while (peek(S)) {
+    double v;
+    if (take(S, "nohead")) nohead = 1;
+    else if (take(S, "front") || take(S, "back")) continue;
+    else if (take(S, "dt") && take_number(S, &v)) a->dt = (int)v;
+    else if (take(S, "lw") && take_number(S, &v)) a->lw = v;
+    else if (take(S, "lc") && take_rgb(S, &a->rgb)) continue;
+    else return unsupported(P, "arrow option");
+  }
+  if (!nohead) return unsupported(P, "arrow with a head");
+  f->narrow++;
+  return 0;
+}
+
+static int set_label(parser *P, stmt *S) {
+  gp_figure *f = P->fig;
+  if (grow((void **)&f->label, f->nlabel, sizeof *f->label)) return -1;
+  gp_label *l = &f->label[f->nlabel++]; /* counted now: freed with the rest */
+  l->align = GP_LEFT;
+  l->text.enhanced = f->enhanced;
+  if (!take_string(S, &l->text.s) || !take(S, "at") || !take_coord(S, &l->x) ||
+      !take(S, ",") || !take_coord(S, &l->y))
+    return unsupported(P, "label position");
+  char *font = NULL;
+  while (peek(S)) {
+    double x, y;
+    if (take(S, "left")) l->align = GP_LEFT;
+    else if (take(S, "center") || take(S, "centre")) l->align = GP_CENTRE;
+    else if (take(S, "right")) l->align = GP_RIGHT;
+    else if (take(S, "front") || take(S, "back")) continue;
+    else if (take(S, "noenhanced")) l->text.enhanced = 0;
+    else if (take(S, "tc") && take_rgb(S, &l->rgb)) continue;
+    else if (take(S, "offset") && take_pair(S, &x, &y)) l->off_x = x, l->off_y = y;
+    else if (take(S, "font") && take_string(S, &font)) {
+      int good = font_size(font, &l->font_pt);
+      free(font);
+      font = NULL;
+      if (!good) return unsupported(P, "label font");
+    } else {
+      return unsupported(P, "label option");
+    }
+  }
+  return 0;
+}
+
+static int set_margin(parser *P, stmt *S, int side) {
+  double v;
+  if (!take_number(S, &v) || peek(S) || v < 0 || v > 100)
+    return unsupported(P, "margin");
+  P->fig->margin[side] = v;
+  return 0;
+}
+
+static int set_stmt(parser *P, stmt *S) {
+  gp_figure *f = P->fig;
+  static const char *const margins[4] = {"tmargin", "bmargin", "lmargin", "rmargin"};
+  for (int k = 0; k < 4; k++)
+    if (take(S, margins[k])) return set_margin(P, S, k);
+  if (take(S, "terminal")) return set_terminal(P, S);
+  if (take(S, "output")) {
+    const token *t = peek(S);
+    if (!t || t->kind != TOK_STR || strlen(t->text) >= sizeof f->output)
+      return unsupported(P, "output");
+    strcpy(f->output, t->text);
+    return 0;
+  }
+  if (take(S, "title"))
+    return set_text(P, S, &f->title, &f->title_off_x, &f->title_off_y);
+  if (take(S, "xlabel")) return set_text(P, S, &f->x.label, NULL, NULL);
+  if (take(S, "ylabel")) return set_text(P, S, &f->y.label, NULL, NULL);
+  if (take(S, "xrange")) return set_range(P, S, &f->x);
+  if (take(S, "yrange")) return set_range(P, S, &f->y);
+  if (take(S, "logscale")) {
+    if (take(S, "x")) f->x.log = 1;
+    else if (take(S, "y")) f->y.log = 1;
+    else if (take(S, "xy")) f->x.log = f->y.log = 1;
+    else return unsupported(P, "logscale axes");
+    return peek(S) ? unsupported(P, "logscale base") : 0;
+  }
+  if (take(S, "grid")) return peek(S) ? unsupported(P, "grid options") : (f->grid = 1, 0);
+  if (take(S, "key")) return set_key(P, S);
+  if (take(S, "arrow")) return set_arrow(P, S);
+  if (take(S, "label")) return set_label(P, S);
+  return unsupported(P, "set %s", peek(S) ? peek(S)->text : "");
+}
+
+/* one item of plot: $NAME using I:J with lines|points [options] */
+static int plot_item(parser *P, stmt *S) {
+  gp_figure *f = P->fig;
+  const token *t = peek(S);
+  if (!t || t->kind != TOK_WORD || t->text[0] != '$') return unsupported(P, "plot source");
+  size_t b = 0;
+  while (b < f->nblock && strcmp(f->block[b].name, t->text)) b++;
+  if (b == f->nblock) return unsupported(P, "unknown datablock");
+  S->i++;
+  if (grow((void **)&f->series, f->nseries, sizeof *f->series)) return -1;
+  gp_series *s = &f->series[f->nseries++];
+  s->block = b;
+  s->lw = s->ps = 1;
+  s->dt = 1;
+  s->pt = 7;
+  double cx, cy, v;
+  if (!take(S, "using") || !take_number(S, &cx) || !take(S, ":") ||
+      !take_number(S, &cy) || cx < 1 || cy < 1 || cx > 64 || cy > 64)
+    return unsupported(P, "plot columns");
+  s->cx = (int)cx;
+  s->cy = (int)cy;
+  if (!take(S, "with")) return unsupported(P, "plot style");
+  if (take(S, "lines")) s->style = GP_LINES;
+  else if (take(S, "points")) s->style = GP_POINTS;
+  else return unsupported(P, "plot style");
+  int titled = 0;
+  while (peek(S) && strcmp(peek(S)->text, ",")) {
+    if (take(S, "dt") && take_number(S, &v)) s->dt = (int)v;
+    else if (take(S, "lw") && take_number(S, &v)) s->lw = v;
+    else if (take(S, "ps") && take_number(S, &v)) s->ps = v;
+    else if (take(S, "pt") && take_number(S, &v)) s->pt = (int)v;
+    else if (take(S, "lc") && take_rgb(S, &s->rgb)) s->has_rgb = 1;
+    else if (take(S, "notitle")) titled = 1;
+    else if (take(S, "title") && take_string(S, &s->title.s)) titled = 1;
+    else return unsupported(P, "plot option");
+  }
+  if (!titled) return unsupported(P, "a plot item without its title");
+  if (s->style == GP_POINTS && s->pt != 7) return unsupported(P, "point type");
+  s->title.enhanced = f->enhanced;
+  return 0;
+}
+
+static int plot_stmt(parser *P, stmt *S) {
+  for (;;) {
+    int rc = plot_item(P, S);
+    if (rc) return rc;
+    if (!take(S, ",")) break;
+  }
+  return peek(S) ? unsupported(P, "plot") : 0;
+}
+
+/* ---- datablocks --------------------------------------------------------- */
+
+/* The rows of numbers from *p up to the line TERM; *p moves past it. */
+static int read_block(parser *P, const char **p, const char *name, const char *term) {
+  gp_figure *f = P->fig;
+  if (grow((void **)&f->block, f->nblock, sizeof *f->block)) return -1;
+  gp_block *B = &f->block[f->nblock++];
+  snprintf(B->name, sizeof B->name, "%s", name);
+  size_t cap = 0, blank = 0;
+  while (**p) {
+    const char *eol = strchr(*p, '\n');
+    size_t n = eol ? (size_t)(eol - *p) : strlen(*p);
+    if (n == strlen(term) && !strncmp(*p, term, n)) {
+      *p += n + (eol != NULL);
+      return 0;
+    }
+    double row[64];
+    size_t k = 0;
+    const char *q = *p, *end = *p + n;
+    while (q < end) {
+      while (q < end && (*q == ' ' || *q == '\t' || *q == '\r')) q++;
+      if (q >= end) break;
+      char *e;
+      double v = strtod(q, &e);
+      if (e == q || (e < end && *e != ' ' && *e != '\t' && *e != '\r')) {
+        v = NAN; /* a word: no number there */
+        while (q < end && *q != ' ' && *q != '\t') q++;
+      } else {
+        q = e;
+      }
+      if (k == 64) return unsupported(P, "a datablock row of more than 64 columns");
+      row[k++] = v;
+    }
+    *p += n + (eol != NULL);
+    if (k == 0) {
+      blank = 1;
+      continue;
+    }
+    if (B->nrow == 0) B->ncol = k;
+    if (k != B->ncol) return unsupported(P, "datablock rows of different lengths");
+    if (B->nrow == cap) {
+      cap = cap ? 2 * cap : 256;
+      double *v = realloc(B->v, cap * B->ncol * sizeof *v);
+      unsigned char *br = realloc(B->brk, cap);
+      if (v) B->v = v;
+      if (br) B->brk = br;
+      if (!v || !br) return -1;
+    }
+    memcpy(B->v + B->nrow * B->ncol, row, k * sizeof *row);
+    B->brk[B->nrow++] = (unsigned char)blank;
+    blank = 0;
+  }
+  return unsupported(P, "datablock without its end");
+}
+
+/* ---- the script --------------------------------------------------------- */
+
+/* The next statement: a line, with lines ending in \ joined to it. */
+static int next_line(const char **p, char *buf, size_t len) {
+  size_t k = 0;
+  while (**p) {
+    const char *eol = strchr(*p, '\n');
+    size_t n = eol ? (size_t)(eol - *p) : strlen(*p);
+    const int cont = n > 0 && (*p)[n - 1] == '\\';
+    const size_t take_n = cont ? n - 1 : n;
+    if (k + take_n + 1 >= len) return -1;
+    memcpy(buf + k, *p, take_n);
+    k += take_n;
+    *p += n + (eol != NULL);
+    if (!cont) break;
+  }
+  buf[k] = '\0';
+  return 0;
+}
+
+static int statement(parser *P, const char **p, const char *line) {
+  static stmt S; /* 130 KB: not on the stack */
+  char name[64], term[16];
+  int used = 0;
+  if (sscanf(line, " %63[$A-Za-z0-9_] << %15s %n", name, term, &used) == 2 &&
+      name[0] == '$' && line[used] == '\0')
+    return read_block(P, p, name, term);
+  if (tokenize(line, &S)) return unsupported(P, "a line not read here");
+  if (S.n == 0) return 0;
+  if (take(&S, "set")) return set_stmt(P, &S);
+  if (take(&S, "plot")) return plot_stmt(P, &S);
+  return unsupported(P, "statement %s", S.t[0].text);
+}
+
+int gp_parse(const char *text, gp_figure *fig, char *err, size_t len) {
+  memset(fig, 0, sizeof *fig);
+  fig->w = 640;
+  fig->h = 480;
+  fig->font_pt = 12;
+  fig->enhanced = 1;
+  fig->x.auto_lo = fig->x.auto_hi = fig->y.auto_lo = fig->y.auto_hi = 1;
+  for (int k = 0; k < 4; k++) fig->margin[k] = -1;
+  parser P = {fig, err, len};
+  err[0] = '\0';
+  static char line[1 << 16];
+  const char *p = text;
+  int plotted = 0, rc = 0;
+  while (*p && rc == 0) {
+    if (next_line(&p, line, sizeof line)) return unsupported(&P, "a line too long");
+    if (plotted && line[strspn(line, " \t\r")]) rc = unsupported(&P, "after plot");
+    else rc = statement(&P, &p, line);
+    plotted = fig->nseries > 0;
+  }
+  if (rc == 0 && !fig->nseries) rc = unsupported(&P, "no plot");
+  if (rc == 0 && !fig->output[0]) rc = unsupported(&P, "no output");
+  return rc;
+}
+
+void gp_figure_free(gp_figure *fig) {
+  free(fig->title.s);
+  free(fig->x.label.s);
+  free(fig->y.label.s);
+  free(fig->arrow);
+  for (size_t i = 0; i < fig->nlabel; i++) free(fig->label[i].text.s);
+  free(fig->label);
+  for (size_t i = 0; i < fig->nblock; i++) {
+    free(fig->block[i].v);
+    free(fig->block[i].brk);
+  }
+  free(fig->block);
+  for (size_t i = 0; i < fig->nseries; i++) free(fig->series[i].title.s);
+  free(fig->series);
+  memset(fig, 0, sizeof *fig);
+}
