@@ -161,6 +161,8 @@ typedef struct parser {
   gp_figure *fig;
   char *err;
   size_t len;
+  stmt S;              /* the statement being read (130 KB: not on the stack) */
+  char line[1 << 16];  /* its text, continuation lines joined */
 } parser;
 
 static int unsupported(parser *P, const char *fmt, ...) {
@@ -470,17 +472,17 @@ static int next_line(const char **p, char *buf, size_t len) {
 }
 
 static int statement(parser *P, const char **p, const char *line) {
-  static stmt S; /* 130 KB: not on the stack */
+  stmt *const S = &P->S;
   char name[64], term[16];
   int used = 0;
   if (sscanf(line, " %63[$A-Za-z0-9_] << %15s %n", name, term, &used) == 2 &&
       name[0] == '$' && line[used] == '\0')
     return read_block(P, p, name, term);
-  if (tokenize(line, &S)) return unsupported(P, "a line not read here");
-  if (S.n == 0) return 0;
-  if (take(&S, "set")) return set_stmt(P, &S);
-  if (take(&S, "plot")) return plot_stmt(P, &S);
-  return unsupported(P, "statement %s", S.t[0].text);
+  if (tokenize(line, S)) return unsupported(P, "a line not read here");
+  if (S->n == 0) return 0;
+  if (take(S, "set")) return set_stmt(P, S);
+  if (take(S, "plot")) return plot_stmt(P, S);
+  return unsupported(P, "statement %s", S->t[0].text);
 }
 
 int gp_parse(const char *text, gp_figure *fig, char *err, size_t len) {
@@ -491,19 +493,23 @@ int gp_parse(const char *text, gp_figure *fig, char *err, size_t len) {
   fig->enhanced = 1;
   fig->x.auto_lo = fig->x.auto_hi = fig->y.auto_lo = fig->y.auto_hi = 1;
   for (int k = 0; k < 4; k++) fig->margin[k] = -1;
-  parser P = {fig, err, len};
+  parser *P = malloc(sizeof *P);
+  if (!P) return -1;
+  P->fig = fig;
+  P->err = err;
+  P->len = len;
   err[0] = '\0';
-  static char line[1 << 16];
   const char *p = text;
   int plotted = 0, rc = 0;
   while (*p && rc == 0) {
-    if (next_line(&p, line, sizeof line)) return unsupported(&P, "a line too long");
-    if (plotted && line[strspn(line, " \t\r")]) rc = unsupported(&P, "after plot");
-    else rc = statement(&P, &p, line);
+    if (next_line(&p, P->line, sizeof P->line)) rc = unsupported(P, "a line too long");
+    else if (plotted && P->line[strspn(P->line, " \t\r")]) rc = unsupported(P, "after plot");
+    else rc = statement(P, &p, P->line);
     plotted = fig->nseries > 0;
   }
-  if (rc == 0 && !fig->nseries) rc = unsupported(&P, "no plot");
-  if (rc == 0 && !fig->output[0]) rc = unsupported(&P, "no output");
+  if (rc == 0 && !fig->nseries) rc = unsupported(P, "no plot");
+  if (rc == 0 && !fig->output[0]) rc = unsupported(P, "no output");
+  free(P);
   return rc;
 }
 

@@ -16,8 +16,8 @@
 
 #include "config.h"
 #include "cli.h"
-#include "gp_draw.h"
 #include "outdir.h"
+#include "plot_here.h"
 
 extern volatile pid_t cli_outdir_child; /* outdir.c: killed on a signal */
 
@@ -182,38 +182,6 @@ static int run_gnuplot(const char *dir, const char *script, char *err, size_t le
   return run_gnuplot_args(dir, args, err, len);
 }
 
-/* ---- PNGs drawn in-process ---------------------------------------------- */
-
-/* The font and canvas of the pictures drawn here: made at the first, kept
- * for the rest of the run, freed at exit. */
-static gp_painter *painter;
-static int painter_tried;
-
-static void painter_free(void) { gp_painter_free(painter); }
-
-/* Draw NAME's PNG here (gp_draw.c) rather than by gnuplot, when its script
- * is one drawn here and neither --format nor WHIRL_DRAW=gnuplot says
- * otherwise.  0: drawn and recorded; 1: gnuplot's to draw; -1: the picture
- * could not be written (reported). */
-static int draw_here(cli_outdir *d, const char *name) {
-  const char *how = getenv("WHIRL_DRAW");
-  char err[300], png[300], shown[4400];
-  if (strcmp(cli_picture_format, "png") || (how && !strcmp(how, "gnuplot"))) return 1;
-  if (!painter_tried) {
-    painter_tried = 1;
-    painter = gp_painter_new(err, sizeof err);
-    if (painter) atexit(painter_free);
-  }
-  if (!painter) return 1;
-  int rc = gp_draw_script(painter, d->stage, name, err, sizeof err);
-  if (rc == 1) return 1;
-  snprintf(png, sizeof png, "%s.png", name);
-  if (rc == 0) return cli_outdir_record(d, png) == 0 ? 0 : -1;
-  cli_outdir_shown(d, png, shown, sizeof shown);
-  cli_error(d->cmd, "the picture %s could not be written: %s", shown, err);
-  return -1;
-}
-
 /* NAME's picture by gnuplot (one process for it alone) */
 static int plot_by_gnuplot(cli_outdir *d, const char *name) {
   char script[300], png[300], p[8600], shown[4400], err[300];
@@ -244,7 +212,7 @@ static int plot_by_gnuplot(cli_outdir *d, const char *name) {
 }
 
 int cli_outdir_plot(cli_outdir *d, const char *name) {
-  const int here = draw_here(d, name);
+  const int here = cli_draw_here(d, name);
   return here == 1 ? plot_by_gnuplot(d, name) : here;
 }
 
@@ -291,17 +259,20 @@ int cli_outdir_finish(cli_outdir *d, int bad, const char *const *pics) {
     cli_outdir_abort(d);
     return 1;
   }
-  int pic = 0;
-  size_t n = 0;
-  const char *rest[CLI_MAX_PICTURES + 1]; /* the pictures left to gnuplot */
-  for (size_t i = 0; pics && pics[i] && !pic; i++) {
-    const int here = draw_here(d, pics[i]);
-    if (here == 1 && n < CLI_MAX_PICTURES) rest[n++] = pics[i];
-    else if (here == 1) pic = plot_by_gnuplot(d, pics[i]);
-    else pic = here;
+  size_t npics = 0;
+  while (pics && pics[npics]) npics++;
+  const char **rest = malloc((npics + 1) * sizeof *rest); /* gnuplot's */
+  if (!rest) {
+    cli_error(d->cmd, "out of memory");
+    cli_outdir_abort(d);
+    return 1;
   }
+  int failed = 0;
+  const size_t n = cli_draw_here_all(d, pics, rest, &failed);
   rest[n] = NULL;
+  int pic = failed ? -1 : 0;
   for (size_t i = pic ? n : plot_batch(d, rest, n); i < n && !pic; i++)
     pic = plot_by_gnuplot(d, rest[i]);
+  free(rest);
   return cli_outdir_commit(d) || pic;
 }

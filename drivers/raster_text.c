@@ -32,16 +32,6 @@ typedef struct glyph {
   uint8_t *bits;       /* w * h coverage */
 } glyph;
 
-struct raster_font {
-#ifdef WHIRL_HAVE_FREETYPE
-  FT_Library lib;
-  FT_Face face;
-#endif
-  int size64; /* the size the face is set to */
-  glyph cache[CACHE];
-  int ncache;
-};
-
 typedef struct item {
   uint32_t cp;
   double size, dy; /* pixels per em; baseline shift, down positive */
@@ -51,6 +41,17 @@ typedef struct layout {
   item v[MAX_ITEMS];
   int n;
 } layout;
+
+struct raster_font {
+#ifdef WHIRL_HAVE_FREETYPE
+  FT_Library lib;
+  FT_Face face;
+#endif
+  int size64; /* the size the face is set to */
+  glyph cache[CACHE];
+  int ncache;
+  layout lay; /* the string being measured or drawn */
+};
 
 raster_font *raster_font_open(const char *path, char *err, size_t len) {
 #ifdef WHIRL_HAVE_FREETYPE
@@ -262,17 +263,17 @@ static int lay_out(const char *s, double size, int enhanced, layout *L) {
 
 int raster_text_extent(raster_font *f, const char *s, double size, int enhanced,
                        raster_extent *e) {
-  static layout L; /* pictures are drawn one at a time */
+  layout *L = &f->lay;
   e->width = 0;
   e->ascent = 0.75 * size; /* DejaVu's digits and capitals, for empty text */
   e->descent = 0.24 * size;
-  if (lay_out(s, size, enhanced, &L)) return -1;
-  for (int i = 0; i < L.n; i++) {
-    const glyph *g = glyph_get(f, L.v[i].cp, L.v[i].size);
+  if (lay_out(s, size, enhanced, L)) return -1;
+  for (int i = 0; i < L->n; i++) {
+    const glyph *g = glyph_get(f, L->v[i].cp, L->v[i].size);
     if (!g) continue;
     e->width += g->advance;
-    e->ascent = fmax(e->ascent, 0.75 * L.v[i].size - L.v[i].dy);
-    e->descent = fmax(e->descent, 0.24 * L.v[i].size + L.v[i].dy);
+    e->ascent = fmax(e->ascent, 0.75 * L->v[i].size - L->v[i].dy);
+    e->descent = fmax(e->descent, 0.24 * L->v[i].size + L->v[i].dy);
   }
   return 0;
 }
@@ -316,10 +317,10 @@ static uint8_t *text_mask(raster_font *f, const layout *L, int *mw, int *mh,
 
 int raster_text_draw(raster *r, raster_font *f, const char *s, double size,
                      int enhanced, double x, double y, int rotated, uint32_t rgb) {
-  static layout L;
-  if (lay_out(s, size, enhanced, &L)) return -1;
+  layout *L = &f->lay;
+  if (lay_out(s, size, enhanced, L)) return -1;
   int mw, mh, ox, oy;
-  uint8_t *m = text_mask(f, &L, &mw, &mh, &ox, &oy);
+  uint8_t *m = text_mask(f, L, &mw, &mh, &ox, &oy);
   if (!m) return -1;
   const int X = (int)lround(x), Y = (int)lround(y);
   if (!rotated) {
