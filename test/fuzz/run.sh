@@ -12,6 +12,9 @@
 #               with the Matrix Market reader, CHOLMOD)
 #   auto        AUTO-07p constants files and their run files
 #               (fuzz_auto_constants.c, lib/run/auto_constants.c, auto_runfile.c)
+#   picture     the gnuplot scripts whirl draws itself, drawn (fuzz_picture.c,
+#               drivers/gp_parse.c, gp_draw.c, raster*.c, png_write.c; needs
+#               FreeType and DejaVu Sans)
 # (default: all).  Each target prints one line
 #   fuzz_NAME: RUNS runs requested, exit RC, N s wall
 # Environment: CLANG (default clang), FUZZ_JOBS (parallel workers, default 1),
@@ -29,7 +32,7 @@
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
-all="runfile solutions rotorfile auto"
+all="runfile solutions rotorfile auto picture"
 usage() { echo "usage: $0 [RUNS] [TARGET ...]   (targets: $all)" >&2; exit 2; }
 runs=1000000
 case ${1:-} in
@@ -68,6 +71,8 @@ sources() {
     solutions) echo "$here/fuzz_solutions.c $top/lib/run/solution.c $top/lib/util/errmsg.c" ;;
     auto) echo "$here/fuzz_auto_constants.c $top/lib/run/auto_constants.c $top/lib/run/auto_runfile.c $top/lib/run/runfile.c $top/lib/util/errmsg.c" ;;
     rotorfile) echo "$here/fuzz_rotorfile.c $top/rotor/fe_file.c $top/rotor/fe_sparse.c $top/rotor/fe_matrix.c $top/lib/run/runfile.c $top/lib/util/errmsg.c -lcholmod" ;;
+    picture) d=$top/drivers
+      echo "$here/fuzz_picture.c $d/gp_parse.c $d/gp_draw.c $d/raster.c $d/raster_text.c $d/png_write.c -I $d -I $work/picture-config $(pkg-config --cflags --libs freetype2)" ;;
   esac
 }
 corpus() {
@@ -77,9 +82,24 @@ corpus() {
   esac
 }
 
+# The pictures' target takes the font and FreeType as configure would: a
+# config.h of its own.  Without them it is skipped (said, and counted as
+# passed: there is nothing of it to test).
+picture_config() {
+  font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
+  pkg-config --exists freetype2 2> /dev/null && [ -r "$font" ] || return 1
+  mkdir -p "$work/picture-config"
+  printf '#define WHIRL_HAVE_FREETYPE 1\n#define WHIRL_FONT "%s"\n' "$font" \
+    > "$work/picture-config/config.h"
+}
+
 # fuzz NAME: build fuzz_NAME, run it on a copy of its corpus; its exit status
 fuzz() {
   name=$1 dir="$work/$1"
+  if [ "$name" = picture ] && ! picture_config; then
+    echo "fuzz_picture: skipped (no FreeType or no DejaVuSans.ttf), exit 0"
+    return 0
+  fi
   mkdir -p "$dir/corpus" "$dir/artifacts"
   san=-fsanitize=fuzzer,address,undefined
   # shellcheck disable=SC2046 # the list of sources
