@@ -109,6 +109,15 @@ of range, a malformed file), with one message on stderr.
 .TP
 .B WHIRL_GNUPLOT
 the gnuplot program that draws the pictures (default: gnuplot on PATH).
+.TP
+.B WHIRL_DRAW
+.B gnuplot
+has gnuplot draw every PNG; otherwise whirl draws the PNGs of its line and
+point pictures itself, from the scripts written beside them.
+.TP
+.B WHIRL_FONT
+the TrueType font of the PNGs whirl draws (default: the DejaVu Sans that
+configure found).
 .SH FILES
 The user's guides are installed in
 .IR $DOCDIR :
