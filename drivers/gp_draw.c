@@ -131,6 +131,12 @@ static double to_px(const axis_map *m, double v) {
   return m->p0 + (v - m->lo) / (m->hi - m->lo) * (m->p1 - m->p0);
 }
 
+/* The pixel of tick position T (log10 of the value on a log axis), on a
+ * pixel's centre so that one-pixel lines there are sharp. */
+static double tick_px(const axis_map *m, double t) {
+  return round(m->p0 + (t - m->lo) / (m->hi - m->lo) * (m->p1 - m->p0) - 0.5) + 0.5;
+}
+
 /* a position in the figure's coordinates: first (data) or graph (0..1) */
 static double coord_px(const axis_map *m, gp_coord c) {
   return c.sys == GP_GRAPH ? m->p0 + c.v * (m->p1 - m->p0) : to_px(m, c.v);
@@ -248,15 +254,15 @@ static int dash_pattern(int dt, double lw, double *d) {
   }
 }
 
-/* gnuplot's grid: its line type 0, dots half a pixel wide (a light grey) */
+/* gnuplot's grid: dotted light grey lines at the major ticks */
 static void draw_grid(raster *r, const frame *F) {
   const double dots[2] = {1.0, 3.0};
   for (int k = 0; k < F->x.ntick; k++) {
-    const double x = round(F->x.p0 + (F->x.tick[k] - F->x.lo) / (F->x.hi - F->x.lo) * (F->x.p1 - F->x.p0) - 0.5) + 0.5;
+    const double x = tick_px(&F->x, F->x.tick[k]);
     if (x > F->L + 1 && x < F->R) raster_line(r, x, F->T, x, F->B, 1.0, dots, 2, 0xd0d0d0);
   }
   for (int k = 0; k < F->y.ntick; k++) {
-    const double y = round(F->y.p0 + (F->y.tick[k] - F->y.lo) / (F->y.hi - F->y.lo) * (F->y.p1 - F->y.p0) - 0.5) + 0.5;
+    const double y = tick_px(&F->y, F->y.tick[k]);
     if (y > F->T + 1 && y < F->B) raster_line(r, F->L, y, F->R, y, 1.0, dots, 2, 0xd0d0d0);
   }
 }
@@ -267,7 +273,7 @@ static void draw_ticks(pen *P, const frame *F) {
   const double major = round(0.4 * F->em), minor = round(0.2 * F->em);
   char buf[64];
   for (int k = 0; k < F->x.ntick; k++) {
-    const double x = round(F->x.p0 + (F->x.tick[k] - F->x.lo) / (F->x.hi - F->x.lo) * (F->x.p1 - F->x.p0) - 0.5) + 0.5;
+    const double x = tick_px(&F->x, F->x.tick[k]);
     raster_line(r, x, F->B + 0.5, x, F->B + 0.5 - major, 1.0, NULL, 0, 0);
     raster_line(r, x, F->T + 0.5, x, F->T + 0.5 + major, 1.0, NULL, 0, 0);
     tick_label(&F->x, F->x.tick[k], buf, sizeof buf);
@@ -275,7 +281,7 @@ static void draw_ticks(pen *P, const frame *F) {
     text_at(P, &t, F->em, x, F->B + 0.875 * F->em + 0.73 * F->em, GP_CENTRE, 0);
   }
   for (int k = 0; k < F->y.ntick; k++) {
-    const double y = round(F->y.p0 + (F->y.tick[k] - F->y.lo) / (F->y.hi - F->y.lo) * (F->y.p1 - F->y.p0) - 0.5) + 0.5;
+    const double y = tick_px(&F->y, F->y.tick[k]);
     raster_line(r, F->L + 0.5, y, F->L + 0.5 + major, y, 1.0, NULL, 0, 0);
     raster_line(r, F->R + 0.5, y, F->R + 0.5 - major, y, 1.0, NULL, 0, 0);
     tick_label(&F->y, F->y.tick[k], buf, sizeof buf);
@@ -283,12 +289,12 @@ static void draw_ticks(pen *P, const frame *F) {
     text_at(P, &t, F->em, F->L - 0.75 * F->em, y + 0.36 * F->em, GP_RIGHT, 0);
   }
   for (int k = 0; k < F->y.nminor; k++) {
-    const double y = F->y.p0 + (F->y.minor[k] - F->y.lo) / (F->y.hi - F->y.lo) * (F->y.p1 - F->y.p0);
+    const double y = tick_px(&F->y, F->y.minor[k]);
     raster_line(r, F->L + 0.5, y, F->L + 0.5 + minor, y, 1.0, NULL, 0, 0);
     raster_line(r, F->R + 0.5, y, F->R + 0.5 - minor, y, 1.0, NULL, 0, 0);
   }
   for (int k = 0; k < F->x.nminor; k++) {
-    const double x = F->x.p0 + (F->x.minor[k] - F->x.lo) / (F->x.hi - F->x.lo) * (F->x.p1 - F->x.p0);
+    const double x = tick_px(&F->x, F->x.minor[k]);
     raster_line(r, x, F->B + 0.5, x, F->B + 0.5 - minor, 1.0, NULL, 0, 0);
     raster_line(r, x, F->T + 0.5, x, F->T + 0.5 + minor, 1.0, NULL, 0, 0);
   }
