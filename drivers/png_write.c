@@ -498,60 +498,65 @@ static int encode(png_enc *e, const uint32_t *pix, int w, int h) {
   return put_flush(e->f);
 }
 
-int png_write_rgb(FILE *f, const uint32_t *pix, int w, int h) {
-  if (!f || !pix || w < 1 || w > 65535 || h < 1 || h > 65535) {
-    errno = EINVAL;
-    return -1;
-  }
+/* An encoder writing to F with room for CAP runs; NULL (errno ENOMEM). */
+static png_enc *enc_new(FILE *f, size_t cap) {
   png_enc *e = malloc(sizeof *e);
   if (!e) {
     errno = ENOMEM;
-    return -1;
+    return NULL;
   }
   e->f = f;
-  e->cap = runs_room((size_t)w, (size_t)h);
-  e->runs = malloc(e->cap * sizeof *e->runs);
+  e->cap = cap;
+  e->runs = malloc(cap * sizeof *e->runs);
   e->buf = NULL;
-  int r = -1;
-  if (!e->runs)
+  if (!e->runs) {
+    free(e);
     errno = ENOMEM;
-  else
-    r = encode(e, pix, w, h);
+    return NULL;
+  }
+  return e;
+}
+
+static void enc_free(png_enc *e) {
   free(e->buf);
   free(e->runs);
   free(e);
+}
+
+static int size_ok(int w, int h) { return w >= 1 && w <= 65535 && h >= 1 && h <= 65535; }
+
+int png_write_rgb(FILE *f, const uint32_t *pix, int w, int h) {
+  if (!f || !pix || !size_ok(w, h)) {
+    errno = EINVAL;
+    return -1;
+  }
+  png_enc *e = enc_new(f, runs_room((size_t)w, (size_t)h));
+  if (!e) return -1;
+  const int r = encode(e, pix, w, h);
+  enc_free(e);
   return r;
 }
 
 int png_write_indexed(FILE *f, const uint8_t *idx, int w, int h, const uint32_t *pal,
                       int npal) {
-  if (!f || !idx || !pal || w < 1 || w > 65535 || h < 1 || h > 65535 || npal < 1 ||
-      npal > 256) {
+  if (!f || !idx || !pal || !size_ok(w, h) || npal < 1 || npal > 256) {
     errno = EINVAL;
     return -1;
   }
-  png_enc *e = malloc(sizeof *e);
-  if (!e) {
-    errno = ENOMEM;
-    return -1;
-  }
-  e->f = f;
+  png_enc *e = enc_new(f, (size_t)w + 1); /* one row's runs at a time */
+  if (!e) return -1;
   e->ncol = (unsigned)npal;
   for (int i = 0; i < npal; ++i) e->pal[i] = pal[i] & RGB_MASK;
   e->rows_kept = e->nruns = 0;
-  e->cap = (size_t)w + 1; /* one row's runs at a time */
-  e->runs = malloc(e->cap * sizeof *e->runs);
   e->buf = malloc(8 + IDAT_CAP + (1 + (size_t)w) * 9 / 8 + 32);
   int r = -1;
-  if (!e->runs || !e->buf) {
+  if (!e->buf) {
     errno = ENOMEM;
   } else {
     tables_init(e, 1);
     if (put_head(e, w, h, 1) == 0 && put_image(e, NULL, idx, (size_t)w, (size_t)h, 1) == 0)
       r = put_flush(f);
   }
-  free(e->buf);
-  free(e->runs);
-  free(e);
+  enc_free(e);
   return r;
 }

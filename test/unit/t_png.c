@@ -399,6 +399,54 @@ static void test_errors(void) {
   if (f) fclose(f);
 }
 
+/* png_write_indexed: indices and a palette of the caller's (the pictures
+ * whirl draws itself), decoded here: every pixel is its palette colour,
+ * the palette the caller's in its order; with runs of every length, widths
+ * around the 8-index scan, all 256 entries, and the refusals. */
+static void test_indexed(void) {
+  static const int widths[] = {1, 7, 8, 9, 17, 1100};
+  uint32_t pal[256];
+  for (int i = 0; i < 256; ++i) pal[i] = rnd32() & 0xFFFFFF;
+  for (size_t k = 0; k < sizeof widths / sizeof *widths; ++k) {
+    const int w = widths[k], h = 37;
+    uint8_t *idx = malloc((size_t)w * h);
+    size_t i = 0;
+    while (i < (size_t)w * h) { /* runs of 1..300 of one index */
+      size_t run = 1 + (size_t)tap_urand(0, 300), v = (size_t)tap_urand(0, 256);
+      for (; run-- && i < (size_t)w * h; ++i) idx[i] = (uint8_t)v;
+    }
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    const int rc = f ? png_write_indexed(f, idx, w, h, pal, 256) : -1;
+    if (f) fclose(f);
+    png_img im = {0};
+    const char *err = rc ? "png_write_indexed failed" : png_read((uint8_t *)buf, len, &im);
+    if (!err && (im.ctype != 3 || im.npal != 256)) err = "not a palette of 256";
+    for (size_t j = 0; !err && j < (size_t)w * h; ++j)
+      if (im.pix[j] != pal[idx[j]]) err = "a pixel differs";
+    ok(!err, "indexed %dx%d, runs of 1..300, 256 entries (%zu bytes)", w, h, len);
+    if (err) printf("#   %s\n", err);
+    free(im.pix);
+    free(buf);
+    free(idx);
+  }
+  const uint8_t idx[4] = {0, 1, 1, 0};
+  FILE *f = fopen("/dev/null", "w");
+  errno = 0;
+  ok(f && png_write_indexed(f, idx, 2, 2, pal, 0) == -1 && errno == EINVAL &&
+         png_write_indexed(f, idx, 2, 2, pal, 257) == -1 &&
+         png_write_indexed(f, idx, 0, 2, pal, 2) == -1 &&
+         png_write_indexed(f, NULL, 2, 2, pal, 2) == -1,
+     "indexed: a palette of 0 or 257, w = 0, no indices refused (EINVAL)");
+  if (f) fclose(f);
+  f = fopen("/dev/full", "w");
+  errno = 0;
+  ok(f && png_write_indexed(f, idx, 2, 2, pal, 2) == -1 && errno == ENOSPC,
+     "indexed to /dev/full: -1, ENOSPC");
+  if (f) fclose(f);
+}
+
 int main(void) {
   test_small();
   test_lines();
@@ -409,5 +457,6 @@ int main(void) {
   test_256();
   test_big();
   test_errors();
+  test_indexed();
   return done_testing();
 }
