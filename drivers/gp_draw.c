@@ -12,6 +12,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,6 +25,7 @@ enum { MAX_TICKS = 64 };
 
 typedef struct axis_map {
   double lo, hi;     /* data range (log10 of it on a log axis) */
+  double step;       /* between major ticks (decades on a log axis) */
   double p0, p1;     /* pixels of lo and hi */
   int log;
   double tick[MAX_TICKS], minor[4 * MAX_TICKS];
@@ -66,6 +68,7 @@ static int data_range(const gp_figure *f, int ax, int log, double *lo, double *h
   *hi = -INFINITY;
   for (size_t s = 0; s < f->nseries; s++) {
     const gp_series *S = &f->series[s];
+    if (S->block == SIZE_MAX) continue; /* a key entry alone */
     const gp_block *B = &f->block[S->block];
     const int c = (ax ? S->cy : S->cx) - 1;
     if ((size_t)c >= B->ncol) continue;
@@ -97,20 +100,24 @@ static int axis_range(const gp_figure *f, const gp_axis *a, int ax, axis_map *m)
     lo -= d;
     hi += d;
   }
-  const double step = a->log ? 1.0 : tick_step(fabs(hi - lo));
+  /* the step from the range before it is extended to ticks, as gnuplot's
+   * (the data's 0.01..20 gives a step of 2, the set [0:20] one of 5) */
+  const double span = fabs(hi - lo);
+  const double step = a->log ? fmax(1.0, ceil(tick_step(span))) : tick_step(span);
   const int rev = lo > hi;
   if (a->auto_lo) lo = (rev ? ceil(lo / step - 1e-9) : floor(lo / step + 1e-9)) * step;
   if (a->auto_hi) hi = (rev ? floor(hi / step + 1e-9) : ceil(hi / step - 1e-9)) * step;
   m->lo = lo;
   m->hi = hi;
   m->log = a->log;
+  m->step = step;
   return 0;
 }
 
 static void axis_ticks(axis_map *m) {
   const double lo = fmin(m->lo, m->hi), hi = fmax(m->lo, m->hi);
   /* a log axis: every decade, or whole numbers of decades on a long one */
-  const double step = m->log ? fmax(1.0, ceil(tick_step(hi - lo))) : tick_step(hi - lo);
+  const double step = m->step;
   const double tol = 1e-9 * step;
   m->ntick = m->nminor = 0;
   for (double k = ceil((lo - tol) / step); k * step <= hi + tol && m->ntick < MAX_TICKS; k++) {
@@ -185,11 +192,18 @@ static double widest_tick_label(pen *P, const axis_map *m, double em) {
   return w;
 }
 
-static double key_width(pen *P, const gp_figure *f, double em) {
+/* The key's widest entry text. */
+static double key_text_width(pen *P, const gp_figure *f, double em) {
   double w = 0;
   for (size_t s = 0; s < f->nseries; s++)
     if (f->series[s].title.s) w = fmax(w, text_width(P, &f->series[s].title, em));
-  return w + 1.0 * em + 0.6 * em + 2.8 * em + 0.6 * em;
+  return w;
+}
+
+/* The key box: a margin, the text, a gap, the sample (4.67 characters),
+ * a margin, and `width N` characters more. */
+static double key_width(pen *P, const gp_figure *f, double em) {
+  return key_text_width(P, f, em) + (1.6 + 2.8 + 0.6 + 0.6 * f->key_width) * em;
 }
 
 static size_t key_rows(const gp_figure *f) {
@@ -307,6 +321,7 @@ static uint32_t series_rgb(const gp_series *S, size_t index) {
 /* the series' curves (a blank line in the data breaks them) or points */
 static int draw_series(raster *r, const frame *F, const gp_figure *f, size_t s) {
   const gp_series *S = &f->series[s];
+  if (S->block == SIZE_MAX) return 0; /* a key entry alone */
   const gp_block *B = &f->block[S->block];
   const uint32_t rgb = series_rgb(S, s);
   const size_t cx = (size_t)S->cx - 1, cy = (size_t)S->cy - 1;
@@ -349,14 +364,24 @@ static void draw_key(pen *P, const frame *F, const gp_figure *f) {
   if (f->key_box)
     raster_stroke_rect(P->r, round(left) + 0.5, top + 0.5, round(right) + 0.5,
                        round(bottom) + 0.5, 1.0, 0);
-  const double tx = right - 0.6 * em - 2.8 * em - 0.6 * em;
-  const double s0 = right - 0.6 * em - 2.8 * em, s1 = right - 0.6 * em;
+  /* text then sample, or (reverse) sample then text; the text flush
+   * right against the sample, or (Left) flush left */
+  const double tw = key_text_width(P, f, em); /* `width N` adds to the far end */
+  double s0, s1, tx;
+  int align;
+  if (f->key_reverse) {
+    s0 = left + 0.6 * em, s1 = s0 + 2.8 * em;
+    tx = s1 + 0.6 * em + (f->key_left ? 0 : tw), align = f->key_left ? GP_LEFT : GP_RIGHT;
+  } else {
+    s1 = right - 0.6 * em, s0 = s1 - 2.8 * em;
+    tx = s0 - 0.6 * em - (f->key_left ? tw : 0), align = f->key_left ? GP_LEFT : GP_RIGHT;
+  }
   size_t row = 0;
   for (size_t s = 0; s < f->nseries; s++) {
     const gp_series *S = &f->series[s];
     if (!S->title.s) continue;
     const double yc = top + 0.2 * em + ((double)row + 0.5) * F->vchar;
-    text_at(P, &S->title, em, tx, yc + 0.36 * em, GP_RIGHT, 0);
+    text_at(P, &S->title, em, tx, yc + 0.36 * em, align, 0);
     const uint32_t rgb = series_rgb(S, s);
     if (S->style == GP_POINTS) {
       raster_disc(P->r, 0.5 * (s0 + s1), yc, 3.7 * S->ps, rgb);

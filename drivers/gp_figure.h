@@ -49,7 +49,7 @@ typedef struct gp_block { /* a datablock $NAME << EOD */
 } gp_block;
 
 typedef struct gp_series { /* one item of the plot command */
-  size_t block;
+  size_t block;  /* SIZE_MAX: no data (NaN, 1/0: a key entry alone) */
   int cx, cy;  /* columns, 1-based */
   int style;   /* GP_LINES, GP_POINTS */
   double lw, ps;
@@ -75,6 +75,9 @@ typedef struct gp_figure {
   gp_text title;
   double title_off_x, title_off_y;
   int grid, key, key_box; /* key: outside right top */
+  int key_left;           /* its text left-justified (Left), else right */
+  int key_reverse;        /* the sample before the text (reverse) */
+  double key_width;       /* extra width, in characters (width N) */
   double margin[4]; /* t, b, l, r in characters; < 0: automatic */
   gp_arrow *arrow;
   size_t narrow;

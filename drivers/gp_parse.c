@@ -4,20 +4,24 @@
  *   $NAME << EOD ... EOD (datablocks of numbers)
  *   set title|xlabel|ylabel 'T' [offset X,Y] [noenhanced]
  *   set xrange|yrange [A:B] (A, B numbers or *); set logscale x|y|xy
- *   set grid; set key outside right top [box] [vertical]
+ *   set grid; set key outside right top [box] [vertical] [Left|Right]
+ *             [reverse] [width N]
  *   set tmargin|bmargin|lmargin|rmargin N
  *   set arrow from P to P nohead [dt N] [lw N] [lc rgb '#rrggbb'] [front|back]
  *   set label 'T' at P [left|center|right] [font 'Sans,S'] [tc rgb 'C']
  *             [offset X,Y] [front|back] [noenhanced]
  *   plot $NAME using I:J with lines|points [dt N] [lw N] [lc rgb 'C']
- *             [pt 7] [ps N] [title 'T'|notitle], ...
- * with P = [first|graph] X, [first|graph] Y.  Anything else makes the
+ *             [pt 7] [ps N] [title 'T' [noenhanced]|notitle], ...
+ *   (NaN or 1/0 in place of $NAME using I:J: a key entry alone)
+ * with P = [first|graph] X, [first|graph] Y, and C '#rrggbb' or one of
+ * gnuplot's names black, white, red, green, blue, gray, grey.  Anything else makes the
  * script gnuplot's to draw (gp_parse returns 1).
  * SPDX-License-Identifier: BSD-3-Clause */
 #define _POSIX_C_SOURCE 200809L /* strdup */
 #include "gp_figure.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -119,10 +123,30 @@ static int take_string(stmt *S, char **out) {
   return 1;
 }
 
-/* rgb '#rrggbb' */
+/* gnuplot's colour names that whirl's scripts use, and their values */
+static int named_rgb(const char *name, uint32_t *rgb) {
+  static const struct {
+    const char *name;
+    uint32_t rgb;
+  } names[] = {{"black", 0x000000}, {"white", 0xffffff}, {"red", 0xff0000},
+               {"green", 0x00ff00}, {"blue", 0x0000ff}, {"gray", 0xc0c0c0},
+               {"grey", 0xc0c0c0}};
+  for (size_t i = 0; i < sizeof names / sizeof *names; i++)
+    if (!strcmp(name, names[i].name)) {
+      *rgb = names[i].rgb;
+      return 1;
+    }
+  return 0;
+}
+
+/* rgb '#rrggbb' or rgb 'NAME' */
 static int take_rgb(stmt *S, uint32_t *rgb) {
   if (!take(S, "rgb")) return 0;
   const token *t = peek(S);
+  if (t && t->kind == TOK_STR && named_rgb(t->text, rgb)) {
+    S->i++;
+    return 1;
+  }
   if (!t || t->kind != TOK_STR || t->text[0] != '#' || strlen(t->text) != 7) return 0;
   char *end;
   unsigned long v = strtoul(t->text + 1, &end, 16);
@@ -243,6 +267,11 @@ static int set_key(parser *P, stmt *S) {
     else if (take(S, "top")) top = 1;
     else if (take(S, "box")) P->fig->key_box = 1;
     else if (take(S, "vertical")) continue;
+    else if (take(S, "Left")) P->fig->key_left = 1;
+    else if (take(S, "Right")) P->fig->key_left = 0;
+    else if (take(S, "reverse")) P->fig->key_reverse = 1;
+    else if (take(S, "noreverse")) P->fig->key_reverse = 0;
+    else if (take(S, "width") && take_number(S, &P->fig->key_width)) continue;
     else return unsupported(P, "key option");
   }
   return outside && right && top ? 0 : unsupported(P, "key placement");
@@ -345,27 +374,43 @@ static int set_stmt(parser *P, stmt *S) {
   return unsupported(P, "set %s", peek(S) ? peek(S)->text : "");
 }
 
-/* one item of plot: $NAME using I:J with lines|points [options] */
-static int plot_item(parser *P, stmt *S) {
+/* The source of a plot item: a datablock and its columns (using I:J), or
+ * NaN or 1/0, no data (the item is there for its key entry). */
+static int plot_source(parser *P, stmt *S, gp_series *s) {
   gp_figure *f = P->fig;
   const token *t = peek(S);
+  if (take(S, "NaN") || take(S, "1/0")) {
+    s->block = SIZE_MAX;
+    s->cx = s->cy = 1;
+    return 0;
+  }
   if (!t || t->kind != TOK_WORD || t->text[0] != '$') return unsupported(P, "plot source");
   size_t b = 0;
   while (b < f->nblock && strcmp(f->block[b].name, t->text)) b++;
   if (b == f->nblock) return unsupported(P, "unknown datablock");
   S->i++;
-  if (grow((void **)&f->series, f->nseries, sizeof *f->series)) return -1;
-  gp_series *s = &f->series[f->nseries++];
   s->block = b;
-  s->lw = s->ps = 1;
-  s->dt = 1;
-  s->pt = 7;
-  double cx, cy, v;
+  double cx, cy;
   if (!take(S, "using") || !take_number(S, &cx) || !take(S, ":") ||
       !take_number(S, &cy) || cx < 1 || cy < 1 || cx > 64 || cy > 64)
     return unsupported(P, "plot columns");
   s->cx = (int)cx;
   s->cy = (int)cy;
+  return 0;
+}
+
+/* one item of the plot command: $NAME using I:J with lines|points [options] */
+static int plot_item(parser *P, stmt *S) {
+  gp_figure *f = P->fig;
+  if (grow((void **)&f->series, f->nseries, sizeof *f->series)) return -1;
+  gp_series *s = &f->series[f->nseries++];
+  s->lw = s->ps = 1;
+  s->dt = 1;
+  s->pt = 7;
+  s->title.enhanced = f->enhanced;
+  double v;
+  const int src = plot_source(P, S, s);
+  if (src) return src;
   if (!take(S, "with")) return unsupported(P, "plot style");
   if (take(S, "lines")) s->style = GP_LINES;
   else if (take(S, "points")) s->style = GP_POINTS;
@@ -379,11 +424,12 @@ static int plot_item(parser *P, stmt *S) {
     else if (take(S, "lc") && take_rgb(S, &s->rgb)) s->has_rgb = 1;
     else if (take(S, "notitle")) titled = 1;
     else if (take(S, "title") && take_string(S, &s->title.s)) titled = 1;
+    else if (titled && take(S, "noenhanced")) s->title.enhanced = 0;
+    else if (titled && take(S, "enhanced")) s->title.enhanced = 1;
     else return unsupported(P, "plot option");
   }
   if (!titled) return unsupported(P, "a plot item without its title");
   if (s->style == GP_POINTS && s->pt != 7) return unsupported(P, "point type");
-  s->title.enhanced = f->enhanced;
   return 0;
 }
 

@@ -11,11 +11,25 @@
 #include "run_cmd.h"
 #include "run_plot_impl.h"
 
-/* Stable parts solid, unstable dashed, unknown thin; labelled special
- * points marked and named.  Each series is NaN where the STAB column
- * differs: gnuplot breaks a line at an undefined point, so a stable
- * stretch is not joined across an unstable one (no 'set datafile missing',
- * which would make it skip those points and join them). */
+/* One series of the diagram: the rows of branch BR whose STAB column
+ * (gnuplot variable S) is K, NaN elsewhere: gnuplot breaks a line at an
+ * undefined point, so a stable stretch is not joined across an unstable
+ * one (no 'set datafile missing', which would make it skip those points
+ * and join them), and, each branch its own series, the end of one branch
+ * is not joined to the start of the next.  TITLED: the key's entry. */
+static void diagram_series(FILE *f, int x, int y, int br, int k, int titled) {
+  static const char *const cond[3] = {"< 0", "== 0", "== 1"};
+  static const char *const style[3] = {
+      "lw 1 lc rgb '#777777'", "lw 2 dt 2 lc rgb '#c0392b'", "lw 2 lc rgb '#1f4e9c'"};
+  static const char *const name[3] = {"stability unknown", "unstable", "stable"};
+  fprintf(f, "'branches.tsv' using %d:(column(1) == %d && column(S) %s ? column(%d) : NaN) "
+          "with lines %s ", x, br, cond[k], y, style[k]);
+  if (titled) fprintf(f, "title '%s'", name[k]);
+  else fprintf(f, "notitle");
+}
+
+/* Stable parts solid, unstable dashed, unknown thin, each branch on its
+ * own; labelled special points marked and named. */
 static int write_diagram(cli_outdir *od, const whirl_run *r, const whirl_run_plot *pl) {
   FILE *f = cli_outdir_fopen(od, "diagram.gp");
   if (!f) return -1;
@@ -26,7 +40,7 @@ static int write_diagram(cli_outdir *od, const whirl_run *r, const whirl_run_plo
   cli_gp_preamble(f, "run", "diagram", 900, 650, "Sans,11");
   if (pl->seen_special) run_plot_labels(f, od, r, pl);
   fprintf(f,
-          "set datafile separator '\\t'\n"
+          "set datafile separator '\t'\n"
           "set key outside bottom center horizontal\nset bmargin 5\n" /* off the curves, under the x label */
           "set grid lc rgb '#dddddd'\n"
           "set title %s noenhanced\n"
@@ -39,18 +53,14 @@ static int write_diagram(cli_outdir *od, const whirl_run *r, const whirl_run_plo
   /* only the series that have points (gnuplot warns about empty ones) */
   int first = 1;
   for (int k = 2; k >= 0; k--) {
-    if (!pl->seen_stab[k]) continue;
-    fprintf(f, "%s'branches.tsv' using %d:", first ? "" : ", \\\n     ", x);
-    if (k == 2)
-      fprintf(f, "(column(S) == 1 ? column(%d) : NaN) with lines lw 2 lc rgb "
-              "'#1f4e9c' title 'stable'", y);
-    else if (k == 1)
-      fprintf(f, "(column(S) == 0 ? column(%d) : NaN) with lines lw 2 dt 2 lc "
-              "rgb '#c0392b' title 'unstable'", y);
-    else
-      fprintf(f, "(column(S) < 0 ? column(%d) : NaN) with lines lw 1 lc rgb "
-              "'#777777' title 'stability unknown'", y);
-    first = 0;
+    int titled = 0;
+    for (size_t b = 0; b < pl->nbranches; b++) {
+      if (!(pl->branch_stab[b] & 1 << k)) continue;
+      fprintf(f, "%s", first ? "" : ", \\\n     ");
+      diagram_series(f, x, y, pl->branches[b], k, !titled);
+      first = 0;
+      titled = 1;
+    }
   }
   if (pl->seen_special)
     fprintf(f, ", \\\n     'branches.tsv' using %d:(strcol(3) ne '-' && "

@@ -1448,6 +1448,8 @@ void whirl_run_free(whirl_run *r) {
     free((void *)r->special[i].row);
   }
   free(r->special);
+  free(r->branch_ids);
+  free(r->branch_stab);
   for (size_t i = 0; i < r->noverrides; i++) free(r->overrides[i]);
   free(r->overrides);
   free(r);
@@ -1545,6 +1547,9 @@ const whirl_run_plot *whirl_run_plot_info(const whirl_run *r) {
   }
   memcpy(w->plot.seen_stab, r->seen_stab, sizeof w->plot.seen_stab);
   w->plot.seen_special = r->seen_special;
+  w->plot.branches = r->branch_ids;
+  w->plot.branch_stab = r->branch_stab;
+  w->plot.nbranches = r->nbranch_ids;
   return &r->plot;
 }
 const char *whirl_run_model_name(const whirl_run *r) { return r->prob.name; }

@@ -59,6 +59,9 @@ struct whirl_run {
   char plot_x_name[80], plot_y_name[80];
   int seen_stab[3];         /* rows with STAB -1, 0, 1 */
   int seen_special;
+  int *branch_ids;          /* the BR of branches.tsv's rows, each once */
+  int *branch_stab;         /* for each: bit k set when it has STAB k - 1 */
+  size_t nbranch_ids, capbranch_ids;
   size_t ncols;
   /* the library object (whirl/run.h) */
   whirl_run_io io;

@@ -242,6 +242,32 @@ int run_keep_special(run_ctx *R, int br, size_t pt, const char *ty, int lab,
   return 0;
 }
 
+/* Keep BR among the branches of the table (in order of their first row),
+ * with the stabilities of its rows: the picture draws each branch on its
+ * own, so that no line joins the end of one to the start of the next.
+ * -1 when out of memory. */
+static int note_branch(run_ctx *R, int br, int stable) {
+  const int bit = stable >= -1 && stable <= 1 ? 1 << (stable + 1) : 0;
+  for (size_t i = R->nbranch_ids; i-- > 0;)
+    if (R->branch_ids[i] == br) {
+      R->branch_stab[i] |= bit;
+      return 0;
+    }
+  if (R->nbranch_ids == R->capbranch_ids) {
+    const size_t cap = R->capbranch_ids ? 2 * R->capbranch_ids : 8;
+    int *v = realloc(R->branch_ids, cap * sizeof *v);
+    if (!v) return -1;
+    R->branch_ids = v;
+    int *m = realloc(R->branch_stab, cap * sizeof *m);
+    if (!m) return -1;
+    R->branch_stab = m;
+    R->capbranch_ids = cap;
+  }
+  R->branch_stab[R->nbranch_ids] = bit;
+  R->branch_ids[R->nbranch_ids++] = br;
+  return 0;
+}
+
 int run_table_row(run_ctx *R, whirl_solution_kind kind, const void *obj, int br,
                   size_t pt, const char *ty, int lab, const double *xb,
                   const double *p, int stable, double *l2out, double *period_out,
@@ -270,6 +296,7 @@ int run_table_row(run_ctx *R, whirl_solution_kind kind, const void *obj, int br,
   }
   if (stable >= -1 && stable <= 1) R->seen_stab[stable + 1] = 1;
   if (strcmp(ty, "RG") && strcmp(ty, "EP")) R->seen_special = 1;
+  if (note_branch(R, br, stable)) rc = -1;
   *l2out = l2;
   *period_out = period;
   memcpy(state, mx, n * sizeof *state);

@@ -70,6 +70,9 @@ typedef struct whirl_run_plot {
   const char *x_name, *y_name; /* axis names */
   int seen_stab[3];           /* rows with STAB -1, 0, 1 exist */
   int seen_special;           /* labelled points exist */
+  const int *branches;        /* the BR column's values, each once, in order */
+  const int *branch_stab;     /* for each: bit k set when it has rows of STAB k - 1 */
+  size_t nbranches;
   const int *attractors;      /* basins: the attractors' labels */
   size_t nattractors;
 } whirl_run_plot;

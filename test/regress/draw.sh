@@ -7,7 +7,10 @@
 # points of branches.tsv blue, the dashed unstable ones near blue, the red
 # region lines at the folds' speeds, text above and below the frame) and
 # multipliers.png (a log axis: each branch's max |multiplier| on its
-# colour).  Drawn with no gnuplot at all, so no gnuplot drew them; the
+# colour), and whirl plot overlay's picture of two responses (automatic
+# ranges, each run on its colour; the same check passes on gnuplot's
+# picture of the same script).  Drawn with no gnuplot at all, so no
+# gnuplot drew them; the
 # pictures whirl does not draw (sfd basins), WHIRL_DRAW=gnuplot, and a font
 # that cannot be read still come from gnuplot (an RGB PNG, not a palette).
 # SPDX-License-Identifier: BSD-3-Clause
@@ -98,8 +101,33 @@ WHIRL_GNUPLOT="$tmp/no/such/gnuplot" "$WHIRL" sfd response --out r2 --quiet > /d
 cmp -s r/response.png r2/response.png && cmp -s r/multipliers.png r2/multipliers.png
 ok $? "drawn twice, byte-identical PNGs"
 
+# whirl plot overlay of two responses (delta 0.1 and 0.3): automatic ranges
+# (gnuplot's: x from the data 0.01..20 with a step of 2 to [0:20], y from 0
+# to the data's 0.953 with a step of 0.1 to 1), each run's stable points on
+# its colour; the same check on gnuplot's picture of the same script below
+# says the ranges are gnuplot's
+WHIRL_GNUPLOT="$tmp/no/such/gnuplot" "$WHIRL" sfd response --delta 0.1 --out d1 --no-plot --quiet > /dev/null 2>&1
+overlay_ok() { # PNG: both runs' stable points (every 7th) on their colours
+  awk -F'\t' 'NR > 1 && $1 !~ /^#/ && $10 == 1 && NR % 7 == 0 {print $5, $6}' d1/branches.tsv > s1.txt
+  awk -F'\t' 'NR > 1 && $1 !~ /^#/ && $10 == 1 && NR % 7 == 0 && $6 < 0.9 {print $5, $6}' r/branches.tsv > s3.txt
+  o1=$("$PY" "$check" points "$1" 0 20 0 1 0 '#1f77b4' 2 s1.txt)
+  o3=$("$PY" "$check" points "$1" 0 20 0 1 0 '#d62728' 2 s3.txt)
+  t1=$(echo "$o1" | awk '{print $4}') h1=$(echo "$o1" | awk '{print $2}')
+  t3=$(echo "$o3" | awk '{print $4}') h3=$(echo "$o3" | awk '{print $2}')
+  [ "$t1" -ge 20 ] && [ "$t3" -ge 20 ] && [ $((h1 * 100)) -ge $((t1 * 93)) ] &&
+    [ $((h3 * 100)) -ge $((t3 * 93)) ]
+}
+WHIRL_GNUPLOT="$tmp/no/such/gnuplot" "$WHIRL" plot overlay d1 r --out ov --quiet > /dev/null 2>&1
+info=$("$PY" "$check" info ov/overlay.png 2>&1)
+[ "$info" = "1100 700 3" ] && overlay_ok ov/overlay.png
+ok $? "plot overlay drawn by whirl ($info): delta 0.1 $o1 (blue), delta 0.3 $o3 (red)"
+
 GNUPLOT=${WHIRL_GNUPLOT:-gnuplot}
 if command -v "$GNUPLOT" > /dev/null 2>&1; then
+  WHIRL_DRAW=gnuplot "$WHIRL" plot overlay d1 r --out ovg --quiet > /dev/null 2>&1
+  info=$("$PY" "$check" info ovg/overlay.png 2>&1)
+  [ "$info" = "1100 700 2" ] && overlay_ok ovg/overlay.png
+  ok $? "the same overlay by gnuplot ($info): the same ranges, delta 0.1 $o1, delta 0.3 $o3"
   WHIRL_DRAW=gnuplot "$WHIRL" sfd response --out g --quiet > /dev/null 2>&1
   info=$("$PY" "$check" info g/response.png 2>&1)
   [ "$info" = "1100 750 2" ]
@@ -114,6 +142,7 @@ if command -v "$GNUPLOT" > /dev/null 2>&1; then
   [ "$info" != "${info#* * 2}" ] || [ "$info" != "${info#* * 6}" ]
   ok $? "sfd basins (an image plot, not drawn by whirl): gnuplot's basins.png ($info)"
 else
+  ok 0 "# SKIP gnuplot is not installed (overlay)"
   ok 0 "# SKIP gnuplot is not installed (WHIRL_DRAW=gnuplot)"
   ok 0 "# SKIP gnuplot is not installed (font)"
   ok 0 "# SKIP gnuplot is not installed (basins)"

@@ -106,10 +106,19 @@ bad "--format gif" d0.1 d0.3 --format gif
 [ $? -eq 2 ] && [ -f d0.3/branches.tsv ] && [ ! -e d0.3/overlay.gp ]
 ok $? "--out one of the runs: refused, the run kept: $(cat same.stderr)"
 
-# without gnuplot: the script written, no picture claimed, exit 0 as with one
-WHIRL_GNUPLOT=/nonexistent/gnuplot "$WHIRL" plot overlay d0.1 d0.3 --out nogp > /dev/null 2> nogp.stderr
+# without gnuplot, the PNG whirl draws itself (doc/output-directories.md):
+# drawn, a palette PNG, and claimed
+WHIRL_GNUPLOT=/nonexistent/gnuplot "$WHIRL" plot overlay d0.1 d0.3 --out here > /dev/null 2> here.stderr
+rc=$?
+[ $rc -eq 0 ] && [ -s here/overlay.gp ] && ! grep -q 'skipped' here.stderr &&
+  grep -q 'overlay.png' here.stderr &&
+  [ "$(od -An -tu1 -j25 -N1 here/overlay.png | tr -d ' ')" = 3 ]
+ok $? "no gnuplot: exit 0, overlay.png drawn by whirl itself (a palette PNG), claimed: $(tr '\n' ' ' < here.stderr)"
+# without gnuplot and with WHIRL_DRAW=gnuplot: the script written, no
+# picture claimed, exit 0 as with one
+WHIRL_DRAW=gnuplot WHIRL_GNUPLOT=/nonexistent/gnuplot "$WHIRL" plot overlay d0.1 d0.3 --out nogp > /dev/null 2> nogp.stderr
 rc=$?
 [ $rc -eq 0 ] && [ -s nogp/overlay.gp ] && [ ! -e nogp/overlay.png ] &&
   [ "$(grep -c 'pictures skipped' nogp.stderr)" -eq 1 ] && ! grep -q 'overlay.png' nogp.stderr
-ok $? "no gnuplot: exit 0, the script kept, the picture said skipped once, not claimed: $(tr '\n' ' ' < nogp.stderr)"
+ok $? "no gnuplot, WHIRL_DRAW=gnuplot: exit 0, the script kept, the picture said skipped once, not claimed: $(tr '\n' ' ' < nogp.stderr)"
 tap_end

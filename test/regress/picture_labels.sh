@@ -8,7 +8,8 @@
 # window of the last 10 periods (gnuplot computes it: 10 T = 20 pi / Omega);
 # whirl run's diagram: every special point named "TY LAB", no two names
 # overlapping and none leaving the axes (boxes from the script's ranges and
-# offsets, at a glyph's size); the legends outside the axes.
+# offsets, at a glyph's size), and no line joining one branch's end to the
+# next one's start; the legends outside the axes.
 # SPDX-License-Identifier: BSD-3-Clause
 name=picture_labels
 . "${top_srcdir:-.}/test/regress/tap.sh"
@@ -57,6 +58,34 @@ echo "$w $last" | awk '{ T = 2 * atan2(0, -1) / 8.7; d = $2 - $1 - 10 * T; e = $
   exit !(NF == 3 && d < 1e-9 && d > -1e-9 && e < 1e-6 && e > -1e-6) }' &&
   grep -q "^set xrange \[t0:t1\]$" sim/history.gp && grep -q "^plot 'poincare.tsv' using 2:" sim/history.gp
 ok $? "history.png: the whole run once a period, and the window [t0, t1] = [$w] of the last 10 periods (last t $last)"
+
+# ---- whirl run: no line joins the end of one branch to the start of the
+# next (they are rows one after the other in branches.tsv).  The discovery
+# example traces three branches; its diagram, decoded by draw_check.py, has
+# the branches' colour at their points and none on the straight segment
+# from the last point of branch 1 to the first of branch 2.
+PY=/usr/bin/python3
+"$WHIRL" run "$top_srcdir/examples/discover/sfd-rotating.whirl" --out=disc --quiet > /dev/null 2> disc.err
+rc=$?
+if [ $rc -eq 0 ] && [ -x "$PY" ]; then
+  check="$top_srcdir/test/regress/draw_check.py"
+  xr=$(sed -n 's/^set xrange \[\(.*\):\(.*\)\]$/\1 \2/p' disc/diagram.gp)
+  yr=$(sed -n 's/^set yrange \[\(.*\):\(.*\)\]$/\1 \2/p' disc/diagram.gp)
+  awk -F'\t' 'NR > 1 && !/^#/ { if (b != "" && $1 != b) { print x, y; print $5, $10; exit } b = $1; x = $5; y = $10 }' \
+    disc/branches.tsv > ends.txt
+  awk 'NR == 1 { x0 = $1; y0 = $2 } NR == 2 { for (t = 0.2; t < 0.85; t += 0.15) print x0 + t * ($1 - x0), y0 + t * ($2 - y0) }' \
+    ends.txt > gap.txt
+  awk -F'\t' 'NR > 1 && !/^#/ && $15 == 1 && NR % 9 == 0 { print $5, $10 }' disc/branches.tsv > on.txt
+  # shellcheck disable=SC2086 # the ranges: two numbers each
+  gap=$("$PY" "$check" points disc/diagram.png $xr $yr 0 '#1f4e9c' 2 gap.txt)
+  # shellcheck disable=SC2086
+  on=$("$PY" "$check" points disc/diagram.png $xr $yr 0 '#1f4e9c' 2 on.txt)
+  tot=$(echo "$on" | awk '{print $4}') hit=$(echo "$on" | awk '{print $2}')
+  [ "$gap" = "found 0 of 5" ] && [ "$tot" -ge 20 ] && [ $((hit * 100)) -ge $((tot * 90)) ]
+  ok $? "whirl run's diagram: nothing between branch 1's end and branch 2's start ($gap), the stable points on their curve ($on)"
+else
+  ok $rc "# SKIP whirl run (exit $rc) or /usr/bin/python3 missing $(head -c 200 disc.err)"
+fi
 
 # ---- whirl run: the names of the special points (AUTO's demo ab, a plug-in)
 cp "$top_srcdir/examples/auto/ab.c" "$top_srcdir/examples/auto/ab-1.whirl" "$top_srcdir/examples/auto/ab-7.whirl" .
