@@ -86,7 +86,24 @@ static void write_table(FILE *f, const resp_table *t, double wref, int special_o
     if (!special_only || is_special(t->pt[i].type)) print_point(f, &t->pt[i], wref);
 }
 
-static void write_gp(FILE *f, const whirl_fe_rotor *r, const char *file, int node) {
+/* Stable stretches solid, unstable ones dashed, and (--stability off, or
+ * where it could not be judged) stability unknown thin grey: each series
+ * only when the table has its points. */
+static void write_gp(FILE *f, const whirl_fe_rotor *r, const char *file, int node,
+                     const resp_table *tb) {
+  static const char *const series[3] = {
+      "'branches.tsv' using 4:($7<0 ? 1e3*$6 : 1/0) with lines lw 1 lc rgb '#777777' "
+      "title 'stability not computed'",
+      "'branches.tsv' using 4:($7==0 ? 1e3*$6 : 1/0) with lines lw 2 dt 2 lc rgb '#c0392b' "
+      "title 'unstable'",
+      "'branches.tsv' using 4:($7==1 ? 1e3*$6 : 1/0) with lines lw 2 lc rgb '#1f4e9c' "
+      "title 'stable'"};
+  int seen[3] = {0, 0, 0}, lp = 0, other = 0;
+  for (size_t i = 0; i < tb->n; i++) {
+    seen[tb->pt[i].stable < 0 ? 0 : tb->pt[i].stable ? 2 : 1] = 1;
+    lp |= tb->pt[i].type == WHIRL_PT_LP;
+    other |= is_special(tb->pt[i].type) && tb->pt[i].type != WHIRL_PT_LP;
+  }
   char t[600], q[640];
   cli_gp_preamble(f, "rotor response", "response", 1100, 750, "Sans,12");
   snprintf(t, sizeof t, "unbalance response at node %d: %s", node,
@@ -94,17 +111,18 @@ static void write_gp(FILE *f, const whirl_fe_rotor *r, const char *file, int nod
   fprintf(f,
           "set title %s noenhanced\nset xlabel 'speed (rev/min)'\n"
           "set ylabel 'amplitude at node %d (mm)'\nset grid\nset key outside right top box\n"
-          "set datafile separator '\\t'\n",
+          "set datafile separator '\\t'\nplot ",
           cli_gp_quote(t, q, sizeof q), node);
-  fprintf(f,
-          "plot 'branches.tsv' using 4:($7==1 ? 1e3*$6 : 1/0) with lines lw 2 lc rgb '#1f4e9c' "
-          "title 'stable', \\\n"
-          "  'branches.tsv' using 4:($7!=1 ? 1e3*$6 : 1/0) with lines lw 2 dt 2 lc rgb "
-          "'#c0392b' title 'unstable', \\\n"
-          "  'special.tsv' using 4:(strcol(1) eq 'LP' ? 1e3*$6 : 1/0) with points pt 7 ps 1.4 "
-          "lc rgb 'black' title 'LP', \\\n"
-          "  'special.tsv' using 4:(strcol(1) ne 'LP' ? 1e3*$6 : 1/0) with points pt 6 ps 1.6 "
-          "lc rgb '#2d8f3c' title 'BP, PD, TR'\n");
+  const char *sep = "";
+  for (int k = 2; k >= 0; k--)
+    if (seen[k]) fprintf(f, "%s%s", sep, series[k]), sep = ", \\\n  ";
+  if (lp)
+    fprintf(f, "%s'special.tsv' using 4:(strcol(1) eq 'LP' ? 1e3*$6 : 1/0) with points "
+            "pt 7 ps 1.4 lc rgb 'black' title 'LP'", sep), sep = ", \\\n  ";
+  if (other)
+    fprintf(f, "%s'special.tsv' using 4:(strcol(1) ne 'LP' ? 1e3*$6 : 1/0) with points "
+            "pt 6 ps 1.6 lc rgb '#2d8f3c' title 'BP, PD, TR'", sep);
+  fputc('\n', f);
 }
 
 /* Breaks between branches (and between the stable and unstable parts)
@@ -128,7 +146,7 @@ static int response_out(const char *dir, int noplot, const whirl_fe_rotor *r,
   if (!bad && !(bad = out_open(&b, &od, "special.tsv")))
     write_table(b.fp, t, r->omega_ref, 1), bad = out_commit(&b);
   if (!bad && !noplot && !(bad = out_open(&g, &od, "response.gp")))
-    write_gp(g.fp, r, file, node), bad = out_commit(&g);
+    write_gp(g.fp, r, file, node, t), bad = out_commit(&g);
   static const char *const pics[] = {"response", NULL};
   return cli_outdir_finish(&od, bad, noplot ? NULL : pics);
 }

@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gp_data.h"
 #include "png_write.h"
 #include "raster.h"
 #include "raster_text.h"
@@ -61,32 +62,28 @@ static double tick_step(double arg) {
   return t * power;
 }
 
-/* The data's range on one axis (columns of every series), positive values
- * only on a log axis.  0 when there are none. */
-static int data_range(const gp_figure *f, int ax, int log, double *lo, double *hi) {
+/* The data's range on one axis (the points of every series), positive
+ * values only on a log axis.  0 when there are none. */
+static int data_range(const gp_figure *f, const gp_points *pts, int ax, int log,
+                      double *lo, double *hi) {
   *lo = INFINITY;
   *hi = -INFINITY;
-  for (size_t s = 0; s < f->nseries; s++) {
-    const gp_series *S = &f->series[s];
-    if (S->block == SIZE_MAX) continue; /* a key entry alone */
-    const gp_block *B = &f->block[S->block];
-    const int c = (ax ? S->cy : S->cx) - 1;
-    if ((size_t)c >= B->ncol) continue;
-    for (size_t i = 0; i < B->nrow; i++) {
-      const double v = B->v[i * B->ncol + (size_t)c];
+  for (size_t s = 0; s < f->nseries; s++)
+    for (size_t i = 0; i < pts[s].n; i++) {
+      const double v = ax ? pts[s].y[i] : pts[s].x[i];
       if (!isfinite(v) || (log && v <= 0)) continue;
       *lo = fmin(*lo, v);
       *hi = fmax(*hi, v);
     }
-  }
   return *lo <= *hi;
 }
 
 /* The axis's range: as set, or from the data and extended to a tick;
  * -1 for a range that cannot be drawn (a log axis at or below 0). */
-static int axis_range(const gp_figure *f, const gp_axis *a, int ax, axis_map *m) {
+static int axis_range(const gp_figure *f, const gp_points *pts, const gp_axis *a, int ax,
+                      axis_map *m) {
   double dlo, dhi;
-  int have = data_range(f, ax, a->log, &dlo, &dhi);
+  int have = data_range(f, pts, ax, a->log, &dlo, &dhi);
   double lo = a->auto_lo ? (have ? dlo : a->log ? 1 : -10) : a->lo;
   double hi = a->auto_hi ? (have ? dhi : a->log ? 10 : 10) : a->hi;
   if (a->log && (lo <= 0 || hi <= 0)) return -1;
@@ -125,12 +122,18 @@ static void axis_ticks(axis_map *m) {
     if (fabs(v) < tol) v = 0;
     m->tick[m->ntick++] = v;
   }
-  if (!m->log || step > 1) return;
-  for (double d = floor(lo); d <= hi; d++) /* 2..9 times each decade */
-    for (int j = 2; j <= 9 && m->nminor < 4 * MAX_TICKS; j++) {
+  if (!m->log) return;
+  for (double d = floor(lo); d <= hi; d++) {
+    if (step > 1) { /* ticks every few decades: the decades between */
+      if (d > lo + tol && d < hi - tol && fmod(d, step) != 0 && m->nminor < 4 * MAX_TICKS)
+        m->minor[m->nminor++] = d;
+      continue;
+    }
+    for (int j = 2; j <= 9 && m->nminor < 4 * MAX_TICKS; j++) { /* 2..9 times each */
       const double v = d + log10((double)j);
       if (v > lo + tol && v < hi - tol) m->minor[m->nminor++] = v;
     }
+  }
 }
 
 static double to_px(const axis_map *m, double v) {
@@ -149,9 +152,19 @@ static double coord_px(const axis_map *m, gp_coord c) {
   return c.sys == GP_GRAPH ? m->p0 + c.v * (m->p1 - m->p0) : to_px(m, c.v);
 }
 
+/* The label of tick T in gnuplot's default format "% h": %g, its
+ * exponent written 1x10^{-6} (enhanced text) rather than 1e-06. */
 static void tick_label(const axis_map *m, double t, char *buf, size_t len) {
   double v = m->log ? pow(10.0, t) : t;
-  snprintf(buf, len, "%g", v);
+  char g[24]; /* %g of a double: at most 13 characters */
+  snprintf(g, sizeof g, "%g", v);
+  char *e = strchr(g, 'e');
+  if (!e) {
+    snprintf(buf, len, "%s", g);
+    return;
+  }
+  *e = '\0';
+  snprintf(buf, len, "%sx10^{%d}", g, atoi(e + 1));
 }
 
 /* ---- text --------------------------------------------------------------- */
@@ -159,7 +172,8 @@ static void tick_label(const axis_map *m, double t, char *buf, size_t len) {
 typedef struct pen {
   raster *r;
   raster_font *font;
-  int failed; /* a string outside the subset was met */
+  const gp_points *pts; /* each series' points */
+  int failed;           /* a string outside the subset was met */
 } pen;
 
 static double text_width(pen *P, const gp_text *t, double size) {
@@ -186,7 +200,7 @@ static double widest_tick_label(pen *P, const axis_map *m, double em) {
   char buf[64];
   for (int k = 0; k < m->ntick; k++) {
     tick_label(m, m->tick[k], buf, sizeof buf);
-    gp_text t = {buf, 0};
+    gp_text t = {buf, 1};
     w = fmax(w, text_width(P, &t, em));
   }
   return w;
@@ -221,7 +235,8 @@ static int lay_out(pen *P, const gp_figure *f, frame *F) {
   F->em = f->font_pt * 4.0 / 3.0;
   F->vchar = 1.1625 * F->em;
   F->hchar = 0.6 * F->em;
-  if (axis_range(f, &f->x, 0, &F->x) || axis_range(f, &f->y, 1, &F->y)) return -1;
+  if (axis_range(f, P->pts, &f->x, 0, &F->x) || axis_range(f, P->pts, &f->y, 1, &F->y))
+    return -1;
   axis_ticks(&F->x);
   axis_ticks(&F->y);
   const double em = F->em;
@@ -234,11 +249,13 @@ static int lay_out(pen *P, const gp_figure *f, frame *F) {
   const double m[4] = {f->margin[0], f->margin[1], f->margin[2], f->margin[3]};
   F->T = m[0] >= 0 ? m[0] * F->vchar : (f->title.s && f->title.s[0] ? 3 : 1) * F->vchar;
   F->B = f->h - (m[1] >= 0 ? m[1] * F->vchar
-                           : (f->x.label.s && f->x.label.s[0] ? 3.8 : 2.3) * em);
+                           : (f->x.label.s && f->x.label.s[0] ? 3.8 : 2.3) * em +
+                                 (f->key_bottom ? F->vchar : 0));
   F->L = m[2] >= 0 ? m[2] * F->hchar
                    : 0.7 * em + ylab + widest_tick_label(P, &F->y, em) + 0.75 * em;
   double right = 2.0 * em;
-  if (f->key && key_rows(f)) right = key_width(P, f, em) + 0.7 * em + 1.25 * em;
+  if (f->key && !f->key_bottom && key_rows(f))
+    right = key_width(P, f, em) + 0.7 * em + 1.25 * em;
   F->R = f->w - (m[3] >= 0 ? m[3] * F->hchar : right);
   F->L = round(F->L);
   F->R = round(F->R);
@@ -269,15 +286,15 @@ static int dash_pattern(int dt, double lw, double *d) {
 }
 
 /* gnuplot's grid: dotted light grey lines at the major ticks */
-static void draw_grid(raster *r, const frame *F) {
+static void draw_grid(raster *r, const frame *F, uint32_t rgb) {
   const double dots[2] = {1.0, 3.0};
   for (int k = 0; k < F->x.ntick; k++) {
     const double x = tick_px(&F->x, F->x.tick[k]);
-    if (x > F->L + 1 && x < F->R) raster_line(r, x, F->T, x, F->B, 1.0, dots, 2, 0xd0d0d0);
+    if (x > F->L + 1 && x < F->R) raster_line(r, x, F->T, x, F->B, 1.0, dots, 2, rgb);
   }
   for (int k = 0; k < F->y.ntick; k++) {
     const double y = tick_px(&F->y, F->y.tick[k]);
-    if (y > F->T + 1 && y < F->B) raster_line(r, F->L, y, F->R, y, 1.0, dots, 2, 0xd0d0d0);
+    if (y > F->T + 1 && y < F->B) raster_line(r, F->L, y, F->R, y, 1.0, dots, 2, rgb);
   }
 }
 
@@ -291,7 +308,7 @@ static void draw_ticks(pen *P, const frame *F) {
     raster_line(r, x, F->B + 0.5, x, F->B + 0.5 - major, 1.0, NULL, 0, 0);
     raster_line(r, x, F->T + 0.5, x, F->T + 0.5 + major, 1.0, NULL, 0, 0);
     tick_label(&F->x, F->x.tick[k], buf, sizeof buf);
-    gp_text t = {buf, 0};
+    gp_text t = {buf, 1};
     text_at(P, &t, F->em, x, F->B + 0.875 * F->em + 0.73 * F->em, GP_CENTRE, 0);
   }
   for (int k = 0; k < F->y.ntick; k++) {
@@ -299,7 +316,7 @@ static void draw_ticks(pen *P, const frame *F) {
     raster_line(r, F->L + 0.5, y, F->L + 0.5 + major, y, 1.0, NULL, 0, 0);
     raster_line(r, F->R + 0.5, y, F->R + 0.5 - major, y, 1.0, NULL, 0, 0);
     tick_label(&F->y, F->y.tick[k], buf, sizeof buf);
-    gp_text t = {buf, 0};
+    gp_text t = {buf, 1};
     text_at(P, &t, F->em, F->L - 0.75 * F->em, y + 0.36 * F->em, GP_RIGHT, 0);
   }
   for (int k = 0; k < F->y.nminor; k++) {
@@ -318,15 +335,21 @@ static uint32_t series_rgb(const gp_series *S, size_t index) {
   return S->has_rgb ? S->rgb : default_rgb[index % 8];
 }
 
-/* the series' curves (a blank line in the data breaks them) or points */
-static int draw_series(raster *r, const frame *F, const gp_figure *f, size_t s) {
+/* a point of type PT (7: a disc, 6: a circle) at (x, y), inside the frame */
+static void draw_point(raster *r, const frame *F, double x, double y, int pt, double ps,
+                       uint32_t rgb) {
+  if (!(x >= F->L && x <= F->R + 1 && y >= F->T && y <= F->B + 1)) return;
+  if (pt == 6) raster_ring(r, x, y, 3.7 * ps, 1.0, rgb);
+  else raster_disc(r, x, y, 3.7 * ps, rgb);
+}
+
+/* the series' curves (a blank line in the data breaks them, as does an
+ * undefined point) or points */
+static int draw_series(raster *r, const frame *F, const gp_figure *f, const gp_points *p,
+                       size_t s) {
   const gp_series *S = &f->series[s];
-  if (S->block == SIZE_MAX) return 0; /* a key entry alone */
-  const gp_block *B = &f->block[S->block];
   const uint32_t rgb = series_rgb(S, s);
-  const size_t cx = (size_t)S->cx - 1, cy = (size_t)S->cy - 1;
-  if (cx >= B->ncol || cy >= B->ncol) return 0; /* gnuplot: no valid points */
-  double *x = malloc((B->nrow + 1) * sizeof *x), *y = malloc((B->nrow + 1) * sizeof *y);
+  double *x = malloc((p->n + 1) * sizeof *x), *y = malloc((p->n + 1) * sizeof *y);
   if (!x || !y) {
     free(x);
     free(y);
@@ -335,29 +358,63 @@ static int draw_series(raster *r, const frame *F, const gp_figure *f, size_t s) 
   double dash[6];
   const int nd = dash_pattern(S->dt, S->lw, dash);
   size_t n = 0;
-  for (size_t i = 0; i <= B->nrow; i++) {
-    if (S->style == GP_LINES && n > 0 && (i == B->nrow || B->brk[i])) {
+  for (size_t i = 0; i <= p->n; i++) {
+    if (S->style == GP_LINES && n > 0 && (i == p->n || p->brk[i])) {
       raster_polyline(r, x, y, n, S->lw, dash, nd, rgb);
       n = 0;
     }
-    if (i == B->nrow) break;
-    x[n] = to_px(&F->x, B->v[i * B->ncol + cx]);
-    y[n] = to_px(&F->y, B->v[i * B->ncol + cy]);
-    if (S->style == GP_POINTS) {
-      if (x[0] >= F->L && x[0] <= F->R + 1 && y[0] >= F->T && y[0] <= F->B + 1)
-        raster_disc(r, x[0], y[0], 3.7 * S->ps, rgb);
-    } else {
-      n++;
-    }
+    if (i == p->n) break;
+    x[n] = to_px(&F->x, p->x[i]);
+    y[n] = to_px(&F->y, p->y[i]);
+    if (S->style == GP_POINTS) draw_point(r, F, x[n], y[n], S->pt, S->ps, rgb);
+    else n++;
   }
   free(x);
   free(y);
   return 0;
 }
 
+/* A key entry's sample, from s0 to s1 on the line yc */
+static void key_sample(pen *P, const gp_series *S, size_t s, double s0, double s1,
+                       double yc) {
+  const uint32_t rgb = series_rgb(S, s);
+  if (S->style == GP_POINTS) {
+    const frame all = {.L = 0, .R = P->r->w, .T = 0, .B = P->r->h};
+    draw_point(P->r, &all, 0.5 * (s0 + s1), yc, S->pt, S->ps, rgb);
+  } else {
+    double dash[6];
+    const int nd = dash_pattern(S->dt, S->lw, dash);
+    raster_line(P->r, s0, yc, s1, yc, S->lw, dash, nd, rgb);
+  }
+}
+
+/* The key under the axes, its entries side by side (text, then sample),
+ * centred under the frame. */
+static void draw_key_bottom(pen *P, const frame *F, const gp_figure *f) {
+  const double em = F->em, gap = 1.5 * em, sample = 2.8 * em, pad = 0.6 * em;
+  double total = 0;
+  for (size_t s = 0; s < f->nseries; s++)
+    if (f->series[s].title.s)
+      total += text_width(P, &f->series[s].title, em) + pad + sample + gap;
+  double x = 0.5 * (F->L + F->R) - 0.5 * (total - gap);
+  const double yc = f->h - 0.95 * F->vchar;
+  for (size_t s = 0; s < f->nseries; s++) {
+    const gp_series *S = &f->series[s];
+    if (!S->title.s) continue;
+    const double w = text_width(P, &S->title, em);
+    text_at(P, &S->title, em, x, yc + 0.36 * em, GP_LEFT, 0);
+    key_sample(P, S, s, x + w + pad, x + w + pad + sample, yc);
+    x += w + pad + sample + gap;
+  }
+}
+
 static void draw_key(pen *P, const frame *F, const gp_figure *f) {
   const size_t rows = key_rows(f);
   if (!f->key || !rows) return;
+  if (f->key_bottom) {
+    draw_key_bottom(P, F, f);
+    return;
+  }
   const double em = F->em, kw = key_width(P, f, em);
   const double right = f->w - 0.7 * em, left = right - kw;
   const double top = F->T, bottom = top + (double)rows * F->vchar + 0.4 * em;
@@ -382,14 +439,7 @@ static void draw_key(pen *P, const frame *F, const gp_figure *f) {
     if (!S->title.s) continue;
     const double yc = top + 0.2 * em + ((double)row + 0.5) * F->vchar;
     text_at(P, &S->title, em, tx, yc + 0.36 * em, align, 0);
-    const uint32_t rgb = series_rgb(S, s);
-    if (S->style == GP_POINTS) {
-      raster_disc(P->r, 0.5 * (s0 + s1), yc, 3.7 * S->ps, rgb);
-    } else {
-      double dash[6];
-      const int nd = dash_pattern(S->dt, S->lw, dash);
-      raster_line(P->r, s0, yc, s1, yc, S->lw, dash, nd, rgb);
-    }
+    key_sample(P, S, s, s0, s1, yc);
     row++;
   }
 }
@@ -419,11 +469,11 @@ static int draw(pen *P, const gp_figure *f) {
   frame F;
   if (lay_out(P, f, &F)) return 1;
   raster *r = P->r;
-  if (f->grid) draw_grid(r, &F);
+  if (f->grid) draw_grid(r, &F, f->grid_rgb);
   raster_set_clip(r, F.L, F.T, F.R + 1, F.B + 1);
   draw_arrows(r, &F, f);
   for (size_t s = 0; s < f->nseries; s++)
-    if (draw_series(r, &F, f, s)) return -1;
+    if (draw_series(r, &F, f, &P->pts[s], s)) return -1;
   raster_clip_all(r);
   raster_stroke_rect(r, F.L + 0.5, F.T + 0.5, F.R + 0.5, F.B + 0.5, 1.0, 0);
   draw_ticks(P, &F);
@@ -481,15 +531,20 @@ static raster *canvas_for(gp_painter *p, const gp_figure *f) {
   return p->canvas;
 }
 
-int gp_draw_png(gp_painter *p, const gp_figure *f, const char *path, char *err,
-                size_t len) {
+int gp_draw_png(gp_painter *p, const gp_figure *f, const char *dir, const char *path,
+                char *err, size_t len) {
+  gp_points *pts = NULL;
+  int rc = gp_series_points(f, dir, &pts, err, len);
+  if (rc) return rc;
   raster *r = canvas_for(p, f);
   if (!r) {
+    gp_points_free(pts, f->nseries);
     snprintf(err, len, "out of memory");
     return -1;
   }
-  pen P = {r, p->font, 0};
-  int rc = draw(&P, f);
+  pen P = {r, p->font, pts, 0};
+  rc = draw(&P, f);
+  gp_points_free(pts, f->nseries);
   if (rc == 1) snprintf(err, len, "a text or range not drawn here");
   if (rc == -1) snprintf(err, len, "out of memory");
   if (rc != 0) return rc;
@@ -506,39 +561,11 @@ int gp_draw_png(gp_painter *p, const gp_figure *f, const char *path, char *err,
   return 0;
 }
 
-/* The whole of the file PATH, NUL-terminated; NULL if it cannot be read. */
-static char *slurp(const char *path) {
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  size_t cap = 1 << 16, n = 0, got;
-  char *buf = malloc(cap);
-  while (buf && (got = fread(buf + n, 1, cap - n - 1, f)) > 0) {
-    n += got;
-    if (n + 1 == cap) {
-      char *b = realloc(buf, 2 * cap);
-      if (!b) {
-        free(buf);
-        buf = NULL;
-        break;
-      }
-      buf = b;
-      cap *= 2;
-    }
-  }
-  if (buf && ferror(f)) {
-    free(buf);
-    buf = NULL;
-  }
-  fclose(f);
-  if (buf) buf[n] = '\0';
-  return buf;
-}
-
 int gp_draw_script(gp_painter *p, const char *dir, const char *name, char *err,
                    size_t len) {
   char path[4096];
   snprintf(path, sizeof path, "%s/%s.gp", dir, name);
-  char *text = slurp(path);
+  char *text = gp_slurp(path, NULL);
   if (!text) {
     snprintf(err, len, "cannot read %s.gp", name);
     return 1;
@@ -552,7 +579,7 @@ int gp_draw_script(gp_painter *p, const char *dir, const char *name, char *err,
   }
   if (rc == 0) {
     snprintf(path, sizeof path, "%s/%s", dir, fig.output);
-    rc = gp_draw_png(p, &fig, path, err, len);
+    rc = gp_draw_png(p, &fig, dir, path, err, len);
   }
   if (rc < 0 && !err[0]) snprintf(err, len, "out of memory");
   gp_figure_free(&fig);

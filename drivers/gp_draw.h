@@ -18,11 +18,12 @@ typedef struct gp_painter gp_painter;
 gp_painter *gp_painter_new(char *err, size_t len);
 void gp_painter_free(gp_painter *p); /* accepts NULL */
 
-/* Draw the figure F as a PNG at PATH.  0: written; 1: F holds something
- * not drawn here (nothing written); -1: the file could not be written
- * (removed; the reason in err). */
-int gp_draw_png(gp_painter *p, const gp_figure *f, const char *path, char *err,
-                size_t len);
+/* Draw the figure F (its data files in DIR) as a PNG at PATH.  0: written;
+ * 1: F holds something not drawn here, or a data file cannot be read
+ * (nothing written); -1: the file could not be written (removed; the
+ * reason in err). */
+int gp_draw_png(gp_painter *p, const gp_figure *f, const char *dir, const char *path,
+                char *err, size_t len);
 
 /* Draw the picture of the script DIR/NAME.gp where the script says (its
  * `set output`, a file name in DIR).  0: drawn; 1: the script is not one

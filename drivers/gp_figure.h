@@ -11,6 +11,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "gp_expr.h"
+
 enum { GP_FIRST = 0, GP_GRAPH = 1 };             /* coordinate systems */
 enum { GP_LEFT = -1, GP_CENTRE = 0, GP_RIGHT = 1 }; /* text alignment */
 enum { GP_LINES = 0, GP_POINTS = 1 };
@@ -49,8 +51,11 @@ typedef struct gp_block { /* a datablock $NAME << EOD */
 } gp_block;
 
 typedef struct gp_series { /* one item of the plot command */
-  size_t block;  /* SIZE_MAX: no data (NaN, 1/0: a key entry alone) */
-  int cx, cy;  /* columns, 1-based */
+  size_t block;  /* a datablock; SIZE_MAX: a file, or no data (NaN, 1/0:
+                    a key entry alone, file NULL) */
+  char *file;    /* a table in the script's directory ('branches.tsv') */
+  int cx, cy;    /* columns, 1-based, where ux, uy are NULL */
+  gp_expr *ux, *uy; /* using (expression): x and y from a file's rows */
   int style;   /* GP_LINES, GP_POINTS */
   double lw, ps;
   int dt, pt;
@@ -74,7 +79,10 @@ typedef struct gp_figure {
   gp_axis x, y;
   gp_text title;
   double title_off_x, title_off_y;
-  int grid, key, key_box; /* key: outside right top */
+  int grid, key, key_box; /* key: outside right top, or (key_bottom) under
+                             the axes, its entries side by side */
+  int key_bottom;
+  uint32_t grid_rgb;
   int key_left;           /* its text left-justified (Left), else right */
   int key_reverse;        /* the sample before the text (reverse) */
   double key_width;       /* extra width, in characters (width N) */
@@ -87,6 +95,9 @@ typedef struct gp_figure {
   size_t nblock;
   gp_series *series;
   size_t nseries;
+  char sep;           /* the data files' separator: '\t', or 0 (blanks) */
+  gp_var var[16];     /* NAME = value */
+  size_t nvar;
 } gp_figure;
 
 /* Parse the script TEXT into *fig.  0: parsed; 1: it uses something not

@@ -11,8 +11,12 @@
  *   set label 'T' at P [left|center|right] [font 'Sans,S'] [tc rgb 'C']
  *             [offset X,Y] [front|back] [noenhanced]
  *   plot $NAME using I:J with lines|points [dt N] [lw N] [lc rgb 'C']
- *             [pt 7] [ps N] [title 'T' [noenhanced]|notitle], ...
- *   (NaN or 1/0 in place of $NAME using I:J: a key entry alone)
+ *             [pt 7|6] [ps N] [title 'T' [noenhanced]|notitle], ...
+ *   (NaN or 1/0 in place of $NAME using I:J: a key entry alone; 'FILE'
+ *   using X:Y, X and Y a column or a (gp_expr.h expression), a table in
+ *   the script's directory)
+ *   set datafile separator '\t'; NAME = expression; set grid lc rgb C;
+ *   set key outside bottom center horizontal
  * with P = [first|graph] X, [first|graph] Y, and C '#rrggbb' or one of
  * gnuplot's names black, white, red, green, blue, gray, grey.  Anything else makes the
  * script gnuplot's to draw (gp_parse returns 1).
@@ -32,6 +36,7 @@ enum { MAX_TOK = 256 };
 
 typedef struct token {
   int kind;
+  size_t pos; /* where it starts in the line */
   char text[512];
 } token;
 
@@ -59,6 +64,7 @@ static int tokenize(const char *line, stmt *S) {
     if (S->n == MAX_TOK) return -1;
     token *t = &S->t[S->n++];
     size_t k = 0;
+    t->pos = (size_t)(p - line);
     if (*p == '\'' || *p == '"') {
       const char q = *p++;
       t->kind = TOK_STR;
@@ -69,6 +75,12 @@ static int tokenize(const char *line, stmt *S) {
         else if (q == '"' && *p == '\\' && p[1]) {
           p++;
           if (*p == 'n') return -1; /* a line break: not drawn here */
+          if (*p == 't') { /* "\t": a tab */
+            if (k + 1 >= sizeof t->text) return -1;
+            t->text[k++] = '\t';
+            p++;
+            continue;
+          }
         }
         if (k + 1 >= sizeof t->text) return -1;
         t->text[k++] = *p++;
@@ -260,11 +272,14 @@ static int set_range(parser *P, stmt *S, gp_axis *a) {
 
 static int set_key(parser *P, stmt *S) {
   P->fig->key = 1;
-  int outside = 0, right = 0, top = 0;
+  int outside = 0, right = 0, top = 0, bottom = 0, center = 0, horizontal = 0;
   while (peek(S)) {
     if (take(S, "outside")) outside = 1;
     else if (take(S, "right")) right = 1;
     else if (take(S, "top")) top = 1;
+    else if (take(S, "bottom")) bottom = 1;
+    else if (take(S, "center") || take(S, "centre")) center = 1;
+    else if (take(S, "horizontal")) horizontal = 1;
     else if (take(S, "box")) P->fig->key_box = 1;
     else if (take(S, "vertical")) continue;
     else if (take(S, "Left")) P->fig->key_left = 1;
@@ -274,7 +289,10 @@ static int set_key(parser *P, stmt *S) {
     else if (take(S, "width") && take_number(S, &P->fig->key_width)) continue;
     else return unsupported(P, "key option");
   }
-  return outside && right && top ? 0 : unsupported(P, "key placement");
+  P->fig->key_bottom = outside && bottom && center && horizontal && !right && !top;
+  return outside && ((right && top && !bottom && !horizontal) || P->fig->key_bottom)
+             ? 0
+             : unsupported(P, "key placement");
 }
 
 static int set_arrow(parser *P, stmt *S) {
@@ -367,11 +385,93 @@ static int set_stmt(parser *P, stmt *S) {
     else return unsupported(P, "logscale axes");
     return peek(S) ? unsupported(P, "logscale base") : 0;
   }
-  if (take(S, "grid")) return peek(S) ? unsupported(P, "grid options") : (f->grid = 1, 0);
+  if (take(S, "grid")) {
+    f->grid = 1;
+    if (peek(S) && !(take(S, "lc") && take_rgb(S, &f->grid_rgb) && !peek(S)))
+      return unsupported(P, "grid options");
+    return 0;
+  }
+  if (take(S, "datafile")) {
+    const token *t = peek(S);
+    if (!take(S, "separator") || !(t = peek(S))) return unsupported(P, "datafile");
+    if (t->kind == TOK_STR && (!strcmp(t->text, "\\t") || !strcmp(t->text, "\t")))
+      f->sep = '\t';
+    else if (t->kind == TOK_WORD && !strcmp(t->text, "tab")) f->sep = '\t';
+    else if (t->kind == TOK_WORD && !strcmp(t->text, "whitespace")) f->sep = 0;
+    else return unsupported(P, "datafile separator");
+    S->i++;
+    return peek(S) ? unsupported(P, "datafile") : 0;
+  }
   if (take(S, "key")) return set_key(P, S);
   if (take(S, "arrow")) return set_arrow(P, S);
   if (take(S, "label")) return set_label(P, S);
   return unsupported(P, "set %s", peek(S) ? peek(S)->text : "");
+}
+
+/* One side of `using X:Y` (TEXT, trimmed): a column number, or an
+ * expression. */
+static int using_part(parser *P, const char *text, int *col, gp_expr **e) {
+  char *end;
+  const long c = strtol(text, &end, 10);
+  if (end != text && !*end) {
+    if (c < 1 || c > 1000) return unsupported(P, "a using column");
+    *col = (int)c;
+    return 0;
+  }
+  char why[128];
+  *e = gp_expr_parse(text, P->fig->var, P->fig->nvar, why, sizeof why);
+  return *e ? 0 : unsupported(P, "using: %s", why);
+}
+
+/* The first ':' of S at depth 0 outside quotes that is not a ?: one; NULL
+ * if none. */
+static char *top_colon(char *s) {
+  int depth = 0, tern = 0;
+  char q = 0;
+  for (char *c = s; *c; c++) {
+    if (q) q = *c == q ? 0 : q;
+    else if (*c == '\'' || *c == '"') q = *c;
+    else if (*c == '(') depth++;
+    else if (*c == ')') depth--;
+    else if (*c == '?' && depth == 0) tern++;
+    else if (*c == ':' && depth == 0 && tern) tern--;
+    else if (*c == ':' && depth == 0) return c;
+  }
+  return NULL;
+}
+
+/* S without the blanks at its ends */
+static char *trim(char *s) {
+  while (*s == ' ' || *s == '\t') s++;
+  for (char *e = s + strlen(s); e > s && (e[-1] == ' ' || e[-1] == '\t');) *--e = '\0';
+  return s;
+}
+
+/* 'FILE' using X:Y: the file's name, and X and Y from the raw text of the
+ * line up to `with`. */
+static int file_source(parser *P, stmt *S, gp_series *s) {
+  const token *t = peek(S);
+  if (!t->text[0] || strchr(t->text, '/') || t->text[0] == '.' || !strcmp(t->text, "-"))
+    return unsupported(P, "a data file outside the directory");
+  if (!(s->file = strdup(t->text))) return -1;
+  s->block = SIZE_MAX;
+  S->i++;
+  if (!take(S, "using") || !peek(S)) return unsupported(P, "a file without using");
+  int w = S->i;
+  while (w < S->n && !(S->t[w].kind == TOK_WORD && !strcmp(S->t[w].text, "with"))) w++;
+  const size_t from = S->t[S->i].pos, to = w < S->n ? S->t[w].pos : strlen(P->line);
+  char spec[1024];
+  if (to - from >= sizeof spec) return unsupported(P, "a long using");
+  memcpy(spec, P->line + from, to - from);
+  spec[to - from] = '\0';
+  S->i = w;
+  char *colon = top_colon(spec);
+  if (!colon) return unsupported(P, "using without X:Y");
+  *colon = '\0';
+  char *x = trim(spec), *y = trim(colon + 1);
+  if (top_colon(y)) return unsupported(P, "using X:Y:Z");
+  const int rc = using_part(P, x, &s->cx, &s->ux);
+  return rc ? rc : using_part(P, y, &s->cy, &s->uy);
 }
 
 /* The source of a plot item: a datablock and its columns (using I:J), or
@@ -384,6 +484,7 @@ static int plot_source(parser *P, stmt *S, gp_series *s) {
     s->cx = s->cy = 1;
     return 0;
   }
+  if (t && t->kind == TOK_STR) return file_source(P, S, s);
   if (!t || t->kind != TOK_WORD || t->text[0] != '$') return unsupported(P, "plot source");
   size_t b = 0;
   while (b < f->nblock && strcmp(f->block[b].name, t->text)) b++;
@@ -429,7 +530,7 @@ static int plot_item(parser *P, stmt *S) {
     else return unsupported(P, "plot option");
   }
   if (!titled) return unsupported(P, "a plot item without its title");
-  if (s->style == GP_POINTS && s->pt != 7) return unsupported(P, "point type");
+  if (s->style == GP_POINTS && s->pt != 7 && s->pt != 6) return unsupported(P, "point type");
   return 0;
 }
 
@@ -517,6 +618,24 @@ static int next_line(const char **p, char *buf, size_t len) {
   return 0;
 }
 
+/* NAME = expression: a variable for the expressions after it */
+static int assignment(parser *P, stmt *S) {
+  gp_figure *f = P->fig;
+  const char *name = S->t[0].text;
+  char why[128];
+  if (strlen(name) >= sizeof f->var[0].name || strspn(name, "abcdefghijklmnopqrstuvwxyz"
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZ_0123456789") != strlen(name) || f->nvar == 16)
+    return unsupported(P, "a variable");
+  gp_expr *e = gp_expr_parse(P->line + S->t[2].pos, f->var, f->nvar, why, sizeof why);
+  if (!e) return unsupported(P, "%s = : %s", name, why);
+  gp_var *v = &f->var[f->nvar++];
+  snprintf(v->name, sizeof v->name, "%s", name);
+  const gp_row none = {NULL, NULL, 0};
+  v->value = gp_expr_value(e, &none, &v->is_int);
+  gp_expr_free(e);
+  return 0;
+}
+
 static int statement(parser *P, const char **p, const char *line) {
   stmt *const S = &P->S;
   char name[64], term[16];
@@ -526,6 +645,9 @@ static int statement(parser *P, const char **p, const char *line) {
     return read_block(P, p, name, term);
   if (tokenize(line, S)) return unsupported(P, "a line not read here");
   if (S->n == 0) return 0;
+  if (S->n >= 3 && S->t[0].kind == TOK_WORD && S->t[1].kind == TOK_WORD &&
+      !strcmp(S->t[1].text, "="))
+    return assignment(P, S);
   if (take(S, "set")) return set_stmt(P, S);
   if (take(S, "plot")) return plot_stmt(P, S);
   return unsupported(P, "statement %s", S->t[0].text);
@@ -537,6 +659,7 @@ int gp_parse(const char *text, gp_figure *fig, char *err, size_t len) {
   fig->h = 480;
   fig->font_pt = 12;
   fig->enhanced = 1;
+  fig->grid_rgb = 0xd0d0d0;
   fig->x.auto_lo = fig->x.auto_hi = fig->y.auto_lo = fig->y.auto_hi = 1;
   for (int k = 0; k < 4; k++) fig->margin[k] = -1;
   parser *P = malloc(sizeof *P);
@@ -571,7 +694,12 @@ void gp_figure_free(gp_figure *fig) {
     free(fig->block[i].brk);
   }
   free(fig->block);
-  for (size_t i = 0; i < fig->nseries; i++) free(fig->series[i].title.s);
+  for (size_t i = 0; i < fig->nseries; i++) {
+    free(fig->series[i].title.s);
+    free(fig->series[i].file);
+    gp_expr_free(fig->series[i].ux);
+    gp_expr_free(fig->series[i].uy);
+  }
   free(fig->series);
   memset(fig, 0, sizeof *fig);
 }

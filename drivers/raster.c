@@ -294,6 +294,20 @@ void raster_disc(raster *r, double cx, double cy, double radius, uint32_t rgb) {
   flush(r, rgb);
 }
 
+void raster_ring(raster *r, double cx, double cy, double radius, double width,
+                 uint32_t rgb) {
+  const double R = radius + 0.5 * width + 0.5, hw = 0.5 * width;
+  int i0, i1, j0, j1;
+  clip_pixels(r, &i0, &i1, &j0, &j1);
+  for (int j = clampi(floor(cy - R), j0, j1); j <= clampi(ceil(cy + R), j0, j1); j++)
+    for (int i = clampi(floor(cx - R), i0, i1); i <= clampi(ceil(cx + R), i0, i1); i++) {
+      const double d = hypot(i + 0.5 - cx, j + 0.5 - cy);
+      const double c = hw + 0.5 - fabs(d - radius);
+      if (c > 0) cover_in(r, i, j, c);
+    }
+  flush(r, rgb);
+}
+
 /* the length of [a, a + 1] inside [lo, hi] */
 static double overlap(double a, double lo, double hi) {
   return greater(0.0, lesser(a + 1, hi) - greater(a, lo));

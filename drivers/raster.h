@@ -48,6 +48,9 @@ void raster_polyline(raster *r, const double *x, const double *y, size_t n,
 void raster_line(raster *r, double x0, double y0, double x1, double y1,
                  double width, const double *dash, int ndash, uint32_t rgb);
 void raster_disc(raster *r, double cx, double cy, double radius, uint32_t rgb);
+/* a circle of RADIUS, its line WIDTH wide */
+void raster_ring(raster *r, double cx, double cy, double radius, double width,
+                 uint32_t rgb);
 void raster_fill_rect(raster *r, double x0, double y0, double x1, double y1,
                       uint32_t rgb);
 /* the outline of a rectangle, WIDTH wide, centred on its edges */

@@ -9,7 +9,8 @@
 # multipliers.png (a log axis: each branch's max |multiplier| on its
 # colour), and whirl plot overlay's picture of two responses (automatic
 # ranges, each run on its colour; the same check passes on gnuplot's
-# picture of the same script).  Drawn with no gnuplot at all, so no
+# picture of the same script), and rotor response's (a data file and
+# expressions in using; likewise against gnuplot's).  Drawn with no gnuplot at all, so no
 # gnuplot drew them; the
 # pictures whirl does not draw (sfd basins), WHIRL_DRAW=gnuplot, and a font
 # that cannot be read still come from gnuplot (an RGB PNG, not a palette).
@@ -122,8 +123,40 @@ info=$("$PY" "$check" info ov/overlay.png 2>&1)
 [ "$info" = "1100 700 3" ] && overlay_ok ov/overlay.png
 ok $? "plot overlay drawn by whirl ($info): delta 0.1 $o1 (blue), delta 0.3 $o3 (red)"
 
+# rotor response (a data file, expressions in using: x the speed in rev/min,
+# y 1e3 times the amplitude): automatic ranges by gnuplot's rule (a step of
+# 1, 2 or 5 times a power of ten, about 20 / mantissa a decade; the ends
+# extended to a step), computed here; the points on the grey line of
+# 'stability not computed'
+"$WHIRL" rotor response "$top_srcdir/examples/rotor/rigid-limit.rotor" --harmonics 3 \
+  --stability off --out rr --quiet > /dev/null 2> rr.err
+range() { # column COL (times SCALE) of rr/branches.tsv: lo hi, gnuplot's
+  awk -F'\t' -v c="$1" -v k="$2" 'NR > 1 && $1 !~ /^#/ && NF > 1 {
+      v = $c * k; if (n++ == 0 || v < lo) lo = v; if (n == 1 || v > hi) hi = v }
+    END { r = hi - lo; p = exp(log(10) * int(log(r) / log(10) - (r < 1)))
+      x = r / p; s = 20 / x
+      t = s > 40 ? 0.05 : s > 20 ? 0.1 : s > 10 ? 0.2 : s > 4 ? 0.5 : s > 2 ? 1 : s > 0.5 ? 2 : int(x + 0.999999)
+      t *= p; a = int(lo / t + 1e-9) * t; if (a > lo) a -= t
+      b = int(hi / t - 1e-9) * t; if (b < hi) b += t; print a, b }' rr/branches.tsv
+}
+rx=$(range 4 1) ry=$(range 6 1000)
+awk -F'\t' 'NR > 1 && $1 !~ /^#/ && NF > 1 && NR % 3 == 0 { print $4, 1000 * $6 }' rr/branches.tsv > rr.txt
+rotor_ok() { # PNG
+  # shellcheck disable=SC2086 # the ranges: two numbers each
+  got=$("$PY" "$check" points "$1" $rx $ry 0 '#777777' 2 rr.txt)
+  tot=$(echo "$got" | awk '{print $4}') hit=$(echo "$got" | awk '{print $2}')
+  [ "$tot" -ge 20 ] && [ $((hit * 100)) -ge $((tot * 95)) ]
+}
+info=$("$PY" "$check" info rr/response.png 2>&1)
+[ "$info" = "1100 750 3" ] && rotor_ok rr/response.png
+ok $? "rotor response drawn by whirl ($info; x $rx, y $ry): $got $(head -c 200 rr.err)"
+
 GNUPLOT=${WHIRL_GNUPLOT:-gnuplot}
 if command -v "$GNUPLOT" > /dev/null 2>&1; then
+  (cd rr && rm -f response.png && "$GNUPLOT" response.gp > /dev/null 2>&1)
+  info=$("$PY" "$check" info rr/response.png 2>&1)
+  [ "$info" = "1100 750 2" ] && rotor_ok rr/response.png
+  ok $? "the same script drawn by gnuplot ($info): the same ranges, $got"
   WHIRL_DRAW=gnuplot "$WHIRL" plot overlay d1 r --out ovg --quiet > /dev/null 2>&1
   info=$("$PY" "$check" info ovg/overlay.png 2>&1)
   [ "$info" = "1100 700 2" ] && overlay_ok ovg/overlay.png
@@ -142,6 +175,7 @@ if command -v "$GNUPLOT" > /dev/null 2>&1; then
   [ "$info" != "${info#* * 2}" ] || [ "$info" != "${info#* * 6}" ]
   ok $? "sfd basins (an image plot, not drawn by whirl): gnuplot's basins.png ($info)"
 else
+  ok 0 "# SKIP gnuplot is not installed (rotor response)"
   ok 0 "# SKIP gnuplot is not installed (overlay)"
   ok 0 "# SKIP gnuplot is not installed (WHIRL_DRAW=gnuplot)"
   ok 0 "# SKIP gnuplot is not installed (font)"

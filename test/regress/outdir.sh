@@ -165,7 +165,7 @@ rc=$?
 [ $rc -eq 1 ] && [ ! -e trunc/response.png ] && [ -s trunc/special.tsv ] &&
   [ -s trunc/response.gp ] && grep -q "incomplete" err.txt
 ok $? "gnuplot exits 0 but writes a truncated PNG: exit $rc, no picture kept, tables kept: $(head -n 1 err.txt)"
-WHIRL_GNUPLOT="$tmp/fakegp" "$WHIRL" run small.whirl --OUT=trunc-run --quiet > /dev/null 2> err.txt
+WHIRL_DRAW=gnuplot WHIRL_GNUPLOT="$tmp/fakegp" "$WHIRL" run small.whirl --OUT=trunc-run --quiet > /dev/null 2> err.txt
 rc=$?
 [ $rc -eq 1 ] && [ ! -e trunc-run/diagram.png ] && [ -s trunc-run/branches.tsv ] && grep -q "incomplete" err.txt
 ok $? "whirl run likewise: exit $rc, no picture: $(head -n 1 err.txt)"
