@@ -339,8 +339,8 @@ static uint32_t series_rgb(const gp_series *S, size_t index) {
 static void draw_point(raster *r, const frame *F, double x, double y, int pt, double ps,
                        uint32_t rgb) {
   if (!(x >= F->L && x <= F->R + 1 && y >= F->T && y <= F->B + 1)) return;
-  if (pt == 6) raster_ring(r, x, y, 3.7 * ps, 1.0, rgb);
-  else raster_disc(r, x, y, 3.7 * ps, rgb);
+  if (pt == 6) raster_ring(r, x, y, 3.4 * ps, 1.0, rgb);
+  else raster_disc(r, x, y, 3.4 * ps, rgb);
 }
 
 /* the series' curves (a blank line in the data breaks them, as does an

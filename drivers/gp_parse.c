@@ -316,6 +316,7 @@ static int set_arrow(parser *P, stmt *S) {
     else return unsupported(P, "arrow option");
   }
   if (!nohead) return unsupported(P, "arrow with a head");
+  if (!(a->lw >= 0 && a->lw <= 100)) return unsupported(P, "an arrow's width");
   f->narrow++;
   return 0;
 }
@@ -531,6 +532,8 @@ static int plot_item(parser *P, stmt *S) {
   }
   if (!titled) return unsupported(P, "a plot item without its title");
   if (s->style == GP_POINTS && s->pt != 7 && s->pt != 6) return unsupported(P, "point type");
+  if (!(s->lw >= 0 && s->lw <= 100 && s->ps >= 0 && s->ps <= 100))
+    return unsupported(P, "a line width or point size");
   return 0;
 }
 

@@ -121,6 +121,7 @@ static int colour_index(raster *r, uint32_t c) {
 /* Keep coverage C (0..1) of pixel (i, j), inside the canvas and the clip,
  * if it exceeds what the shape has there already. */
 static inline void cover_in(raster *r, int i, int j, double c) {
+  if (!(c > 0)) return; /* none (a negative width covers nothing) */
   const size_t k = (size_t)j * (size_t)r->w + (size_t)i;
   /* 16 levels of coverage (17 with none): shades enough for the eye, and a
    * picture's inks, their shades and where two meet stay within the
@@ -242,16 +243,50 @@ static void cover_segment(raster *r, double x0, double y0, double x1, double y1,
 
 /* The "on" pieces of a dashed segment from (x0, y0) to (x1, y1); *phase is
  * the position in the pattern (of total length period) where it starts. */
+/* The part [*t0, *t1] (of [0, 1]) of the segment (x0, y0)-(x1, y1) that
+ * lies within M pixels of the clip (Liang and Barsky's clipping); 0 when
+ * none does. */
+static int clip_segment(const raster *r, double x0, double y0, double x1, double y1,
+                        double m, double *t0, double *t1) {
+  const double dx = x1 - x0, dy = y1 - y0;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {x0 - (r->clip[0] - m), r->clip[2] + m - x0, y0 - (r->clip[1] - m),
+                       r->clip[3] + m - y0};
+  *t0 = 0;
+  *t1 = 1;
+  for (int k = 0; k < 4; k++) {
+    if (p[k] == 0) {
+      if (q[k] < 0) return 0;
+      continue;
+    }
+    const double t = q[k] / p[k];
+    if (p[k] < 0 && t > *t0) *t0 = t;
+    if (p[k] > 0 && t < *t1) *t1 = t;
+  }
+  return *t0 < *t1;
+}
+
+/* The "on" pieces of a dashed segment from (x0, y0) to (x1, y1); *phase is
+ * the position in the pattern (of total length period) where it starts.
+ * Only its part near the clip is walked (a segment of a curve running far
+ * out of the frame would take as many pieces as its length). */
 static void cover_dashed(raster *r, double x0, double y0, double x1, double y1,
                          double hw, const double *dash, int ndash, double period,
                          double *phase) {
   const double L = hypot(x1 - x0, y1 - y0);
-  double s = 0;
-  while (s < L) {
+  double t0, t1;
+  if (!isfinite(L) || !clip_segment(r, x0, y0, x1, y1, hw + 1, &t0, &t1)) {
+    *phase = isfinite(L) ? fmod(*phase + L, period) : 0;
+    return;
+  }
+  double s = t0 * L;
+  const double end = t1 * L;
+  *phase = fmod(*phase + s, period);
+  while (s < end) {
     double p = fmod(*phase, period), acc = 0;
     int k = 0;
     while (k < ndash - 1 && p >= acc + dash[k]) acc += dash[k++];
-    const double left = acc + dash[k] - p, step = fmin(left, L - s);
+    const double left = acc + dash[k] - p, step = fmin(left, end - s);
     if (k % 2 == 0 && step > 0) {
       const double u0 = s / L, u1 = (s + step) / L;
       cover_segment(r, x0 + u0 * (x1 - x0), y0 + u0 * (y1 - y0),
@@ -261,6 +296,7 @@ static void cover_dashed(raster *r, double x0, double y0, double x1, double y1,
     *phase = p + step;
     if (step <= 0) break;
   }
+  *phase = fmod(*phase + (L - end), period);
 }
 
 void raster_polyline(raster *r, const double *x, const double *y, size_t n,
@@ -290,7 +326,7 @@ void raster_line(raster *r, double x0, double y0, double x1, double y1,
 }
 
 void raster_disc(raster *r, double cx, double cy, double radius, uint32_t rgb) {
-  cover_segment(r, cx, cy, cx, cy, radius - 0.5);
+  cover_segment(r, cx, cy, cx, cy, radius); /* the ramp centred on the edge */
   flush(r, rgb);
 }
 
