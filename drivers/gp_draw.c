@@ -3,10 +3,8 @@
  * same script (measured on its pictures): the frame inside margins made of
  * the tick labels, axis labels and title, the key outside on the right in a
  * box, ticks inside the frame on all four sides, the grid dotted behind
- * the data, the data cut at the frame.  Tick steps follow gnuplot's rule
- * (a step of 1, 2 or 5 times a power of ten, about ten a range, from the
- * range's magnitude); automatic ranges end on a tick (a decade on a log
- * axis).
+ * the data, the data cut at the frame; the axes' ranges and ticks are
+ * gp_axis.c's.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include "gp_draw.h"
 
@@ -17,21 +15,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gp_axis.h"
 #include "gp_data.h"
 #include "png_write.h"
 #include "raster.h"
 #include "raster_text.h"
-
-enum { MAX_TICKS = 64 };
-
-typedef struct axis_map {
-  double lo, hi;     /* data range (log10 of it on a log axis) */
-  double step;       /* between major ticks (decades on a log axis) */
-  double p0, p1;     /* pixels of lo and hi */
-  int log;
-  double tick[MAX_TICKS], minor[4 * MAX_TICKS];
-  int ntick, nminor;
-} axis_map;
 
 typedef struct frame {
   double em, vchar, hchar; /* font size in pixels; a line; a character */
@@ -42,130 +30,6 @@ typedef struct frame {
 /* gnuplot's default line colours (linetypes 1..8) */
 static const uint32_t default_rgb[8] = {0x9400d3, 0x009e73, 0x56b4e9, 0xe69f00,
                                         0xf0e442, 0x0072b2, 0xe51e10, 0x000000};
-
-/* ---- ranges and ticks --------------------------------------------------- */
-
-/* The tick step of a range of length ARG: 1, 2, 5 (or 0.5, 0.2 ...) times
- * a power of ten, about 20 / (ARG / 10^floor(log10 ARG)) ticks a decade
- * (gnuplot's "quantize_normal_tics" rule, guide 20). */
-static double tick_step(double arg) {
-  const double power = pow(10.0, floor(log10(arg)));
-  const double xnorm = arg / power, posns = 20.0 / xnorm;
-  double t;
-  if (posns > 40) t = 0.05;
-  else if (posns > 20) t = 0.1;
-  else if (posns > 10) t = 0.2;
-  else if (posns > 4) t = 0.5;
-  else if (posns > 2) t = 1;
-  else if (posns > 0.5) t = 2;
-  else t = ceil(xnorm);
-  return t * power;
-}
-
-/* The data's range on one axis (the points of every series), positive
- * values only on a log axis.  0 when there are none. */
-static int data_range(const gp_figure *f, const gp_points *pts, int ax, int log,
-                      double *lo, double *hi) {
-  *lo = INFINITY;
-  *hi = -INFINITY;
-  for (size_t s = 0; s < f->nseries; s++)
-    for (size_t i = 0; i < pts[s].n; i++) {
-      const double v = ax ? pts[s].y[i] : pts[s].x[i];
-      if (!isfinite(v) || (log && v <= 0)) continue;
-      *lo = fmin(*lo, v);
-      *hi = fmax(*hi, v);
-    }
-  return *lo <= *hi;
-}
-
-/* The axis's range: as set, or from the data and extended to a tick;
- * -1 for a range that cannot be drawn (a log axis at or below 0). */
-static int axis_range(const gp_figure *f, const gp_points *pts, const gp_axis *a, int ax,
-                      axis_map *m) {
-  double dlo, dhi;
-  int have = data_range(f, pts, ax, a->log, &dlo, &dhi);
-  double lo = a->auto_lo ? (have ? dlo : a->log ? 1 : -10) : a->lo;
-  double hi = a->auto_hi ? (have ? dhi : a->log ? 10 : 10) : a->hi;
-  if (a->log && (lo <= 0 || hi <= 0)) return -1;
-  if (a->log) lo = log10(lo), hi = log10(hi);
-  if (lo > hi && a->auto_lo != a->auto_hi) { /* one end set past the data */
-    if (a->auto_lo) lo = hi - 1;
-    else hi = lo + 1;
-  }
-  if (lo == hi) {
-    const double d = a->log ? 1 : fabs(lo) > 0 ? 0.01 * fabs(lo) : 1;
-    lo -= d;
-    hi += d;
-  }
-  /* the step from the range before it is extended to ticks, as gnuplot's
-   * (the data's 0.01..20 gives a step of 2, the set [0:20] one of 5) */
-  const double span = fabs(hi - lo);
-  const double step = a->log ? fmax(1.0, ceil(tick_step(span))) : tick_step(span);
-  const int rev = lo > hi;
-  if (a->auto_lo) lo = (rev ? ceil(lo / step - 1e-9) : floor(lo / step + 1e-9)) * step;
-  if (a->auto_hi) hi = (rev ? floor(hi / step + 1e-9) : ceil(hi / step - 1e-9)) * step;
-  m->lo = lo;
-  m->hi = hi;
-  m->log = a->log;
-  m->step = step;
-  return 0;
-}
-
-static void axis_ticks(axis_map *m) {
-  const double lo = fmin(m->lo, m->hi), hi = fmax(m->lo, m->hi);
-  /* a log axis: every decade, or whole numbers of decades on a long one */
-  const double step = m->step;
-  const double tol = 1e-9 * step;
-  m->ntick = m->nminor = 0;
-  for (double k = ceil((lo - tol) / step); k * step <= hi + tol && m->ntick < MAX_TICKS; k++) {
-    double v = k * step;
-    if (fabs(v) < tol) v = 0;
-    m->tick[m->ntick++] = v;
-  }
-  if (!m->log) return;
-  for (double d = floor(lo); d <= hi; d++) {
-    if (step > 1) { /* ticks every few decades: the decades between */
-      if (d > lo + tol && d < hi - tol && fmod(d, step) != 0 && m->nminor < 4 * MAX_TICKS)
-        m->minor[m->nminor++] = d;
-      continue;
-    }
-    for (int j = 2; j <= 9 && m->nminor < 4 * MAX_TICKS; j++) { /* 2..9 times each */
-      const double v = d + log10((double)j);
-      if (v > lo + tol && v < hi - tol) m->minor[m->nminor++] = v;
-    }
-  }
-}
-
-static double to_px(const axis_map *m, double v) {
-  if (m->log) v = v > 0 ? log10(v) : NAN;
-  return m->p0 + (v - m->lo) / (m->hi - m->lo) * (m->p1 - m->p0);
-}
-
-/* The pixel of tick position T (log10 of the value on a log axis), on a
- * pixel's centre so that one-pixel lines there are sharp. */
-static double tick_px(const axis_map *m, double t) {
-  return round(m->p0 + (t - m->lo) / (m->hi - m->lo) * (m->p1 - m->p0) - 0.5) + 0.5;
-}
-
-/* a position in the figure's coordinates: first (data) or graph (0..1) */
-static double coord_px(const axis_map *m, gp_coord c) {
-  return c.sys == GP_GRAPH ? m->p0 + c.v * (m->p1 - m->p0) : to_px(m, c.v);
-}
-
-/* The label of tick T in gnuplot's default format "% h": %g, its
- * exponent written 1x10^{-6} (enhanced text) rather than 1e-06. */
-static void tick_label(const axis_map *m, double t, char *buf, size_t len) {
-  double v = m->log ? pow(10.0, t) : t;
-  char g[24]; /* %g of a double: at most 13 characters */
-  snprintf(g, sizeof g, "%g", v);
-  char *e = strchr(g, 'e');
-  if (!e) {
-    snprintf(buf, len, "%s", g);
-    return;
-  }
-  *e = '\0';
-  snprintf(buf, len, "%sx10^{%d}", g, atoi(e + 1));
-}
 
 /* ---- text --------------------------------------------------------------- */
 
@@ -199,7 +63,7 @@ static double widest_tick_label(pen *P, const axis_map *m, double em) {
   double w = 0;
   char buf[64];
   for (int k = 0; k < m->ntick; k++) {
-    tick_label(m, m->tick[k], buf, sizeof buf);
+    gp_axis_tick_label(m, m->tick[k], buf, sizeof buf);
     gp_text t = {buf, 1};
     w = fmax(w, text_width(P, &t, em));
   }
@@ -235,10 +99,8 @@ static int lay_out(pen *P, const gp_figure *f, frame *F) {
   F->em = f->font_pt * 4.0 / 3.0;
   F->vchar = 1.1625 * F->em;
   F->hchar = 0.6 * F->em;
-  if (axis_range(f, P->pts, &f->x, 0, &F->x) || axis_range(f, P->pts, &f->y, 1, &F->y))
+  if (gp_axis_range(f, P->pts, &f->x, 0, &F->x) || gp_axis_range(f, P->pts, &f->y, 1, &F->y))
     return -1;
-  axis_ticks(&F->x);
-  axis_ticks(&F->y);
   const double em = F->em;
   raster_extent e;
   double ylab = 0;
@@ -289,11 +151,11 @@ static int dash_pattern(int dt, double lw, double *d) {
 static void draw_grid(raster *r, const frame *F, uint32_t rgb) {
   const double dots[2] = {1.0, 3.0};
   for (int k = 0; k < F->x.ntick; k++) {
-    const double x = tick_px(&F->x, F->x.tick[k]);
+    const double x = gp_axis_tick_px(&F->x, F->x.tick[k]);
     if (x > F->L + 1 && x < F->R) raster_line(r, x, F->T, x, F->B, 1.0, dots, 2, rgb);
   }
   for (int k = 0; k < F->y.ntick; k++) {
-    const double y = tick_px(&F->y, F->y.tick[k]);
+    const double y = gp_axis_tick_px(&F->y, F->y.tick[k]);
     if (y > F->T + 1 && y < F->B) raster_line(r, F->L, y, F->R, y, 1.0, dots, 2, rgb);
   }
 }
@@ -304,28 +166,28 @@ static void draw_ticks(pen *P, const frame *F) {
   const double major = round(0.4 * F->em), minor = round(0.2 * F->em);
   char buf[64];
   for (int k = 0; k < F->x.ntick; k++) {
-    const double x = tick_px(&F->x, F->x.tick[k]);
+    const double x = gp_axis_tick_px(&F->x, F->x.tick[k]);
     raster_line(r, x, F->B + 0.5, x, F->B + 0.5 - major, 1.0, NULL, 0, 0);
     raster_line(r, x, F->T + 0.5, x, F->T + 0.5 + major, 1.0, NULL, 0, 0);
-    tick_label(&F->x, F->x.tick[k], buf, sizeof buf);
+    gp_axis_tick_label(&F->x, F->x.tick[k], buf, sizeof buf);
     gp_text t = {buf, 1};
     text_at(P, &t, F->em, x, F->B + 0.875 * F->em + 0.73 * F->em, GP_CENTRE, 0);
   }
   for (int k = 0; k < F->y.ntick; k++) {
-    const double y = tick_px(&F->y, F->y.tick[k]);
+    const double y = gp_axis_tick_px(&F->y, F->y.tick[k]);
     raster_line(r, F->L + 0.5, y, F->L + 0.5 + major, y, 1.0, NULL, 0, 0);
     raster_line(r, F->R + 0.5, y, F->R + 0.5 - major, y, 1.0, NULL, 0, 0);
-    tick_label(&F->y, F->y.tick[k], buf, sizeof buf);
+    gp_axis_tick_label(&F->y, F->y.tick[k], buf, sizeof buf);
     gp_text t = {buf, 1};
     text_at(P, &t, F->em, F->L - 0.75 * F->em, y + 0.36 * F->em, GP_RIGHT, 0);
   }
   for (int k = 0; k < F->y.nminor; k++) {
-    const double y = tick_px(&F->y, F->y.minor[k]);
+    const double y = gp_axis_tick_px(&F->y, F->y.minor[k]);
     raster_line(r, F->L + 0.5, y, F->L + 0.5 + minor, y, 1.0, NULL, 0, 0);
     raster_line(r, F->R + 0.5, y, F->R + 0.5 - minor, y, 1.0, NULL, 0, 0);
   }
   for (int k = 0; k < F->x.nminor; k++) {
-    const double x = tick_px(&F->x, F->x.minor[k]);
+    const double x = gp_axis_tick_px(&F->x, F->x.minor[k]);
     raster_line(r, x, F->B + 0.5, x, F->B + 0.5 - minor, 1.0, NULL, 0, 0);
     raster_line(r, x, F->T + 0.5, x, F->T + 0.5 + minor, 1.0, NULL, 0, 0);
   }
@@ -364,8 +226,8 @@ static int draw_series(raster *r, const frame *F, const gp_figure *f, const gp_p
       n = 0;
     }
     if (i == p->n) break;
-    x[n] = to_px(&F->x, p->x[i]);
-    y[n] = to_px(&F->y, p->y[i]);
+    x[n] = gp_axis_px(&F->x, p->x[i]);
+    y[n] = gp_axis_px(&F->y, p->y[i]);
     if (S->style == GP_POINTS) draw_point(r, F, x[n], y[n], S->pt, S->ps, rgb);
     else n++;
   }
@@ -448,8 +310,8 @@ static void draw_labels(pen *P, const frame *F, const gp_figure *f) {
   for (size_t k = 0; k < f->nlabel; k++) {
     const gp_label *l = &f->label[k];
     const double size = l->font_pt > 0 ? l->font_pt * 4.0 / 3.0 : F->em;
-    const double x = coord_px(&F->x, l->x) + l->off_x * F->hchar;
-    const double y = coord_px(&F->y, l->y) - l->off_y * F->vchar;
+    const double x = gp_axis_coord_px(&F->x, l->x) + l->off_x * F->hchar;
+    const double y = gp_axis_coord_px(&F->y, l->y) - l->off_y * F->vchar;
     text_at(P, &l->text, size, x, y + 0.36 * size, l->align, l->rgb);
   }
 }
@@ -459,8 +321,8 @@ static void draw_arrows(raster *r, const frame *F, const gp_figure *f) {
     const gp_arrow *a = &f->arrow[k];
     double dash[6];
     const int nd = dash_pattern(a->dt, a->lw, dash);
-    raster_line(r, coord_px(&F->x, a->x0), coord_px(&F->y, a->y0),
-                coord_px(&F->x, a->x1), coord_px(&F->y, a->y1), a->lw, dash, nd,
+    raster_line(r, gp_axis_coord_px(&F->x, a->x0), gp_axis_coord_px(&F->y, a->y0),
+                gp_axis_coord_px(&F->x, a->x1), gp_axis_coord_px(&F->y, a->y1), a->lw, dash, nd,
                 a->rgb);
   }
 }
