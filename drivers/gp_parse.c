@@ -632,7 +632,7 @@ static int assignment(parser *P, stmt *S) {
   gp_expr *e = gp_expr_parse(P->line + S->t[2].pos, f->var, f->nvar, why, sizeof why);
   if (!e) return unsupported(P, "%s = : %s", name, why);
   gp_var *v = &f->var[f->nvar++];
-  snprintf(v->name, sizeof v->name, "%s", name);
+  memcpy(v->name, name, strlen(name) + 1); /* it fits: checked above */
   const gp_row none = {NULL, NULL, 0};
   v->value = gp_expr_value(e, &none, &v->is_int);
   gp_expr_free(e);
