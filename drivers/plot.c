@@ -1,7 +1,9 @@
 /* drivers/plot.c — pictures through gnuplot (pngcairo, or pdfcairo and svg
  * with --format): the driver writes a self-contained script (data in
  * datablocks or the tables beside it) into the output directory, so a user
- * can edit and re-run it as it is, and runs gnuplot on it there.  gnuplot
+ * can edit and re-run it as it is, and runs gnuplot on it there — unless
+ * the picture is a PNG whirl draws itself from that script (plot_here.c:
+ * tried first).  gnuplot
  * exits 0 even when it could not write the picture (a full disk), so the
  * picture is checked to be complete (PNG: its IEND chunk; PDF: the %%EOF
  * trailer; SVG: the closing </svg>).
