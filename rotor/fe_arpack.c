@@ -28,16 +28,7 @@ int fe_eig_arpack(const whirl_fe_rotor *r, double Omega, double shift, double to
 }
 #else
 
-extern void dnaupd_(int *ido, const char *bmat, const int *n, const char *which, const int *nev,
-                    const double *tol, double *resid, const int *ncv, double *v, const int *ldv,
-                    int *iparam, int *ipntr, double *workd, double *workl, const int *lworkl,
-                    int *info, size_t lbmat, size_t lwhich);
-extern void dneupd_(const int *rvec, const char *howmny, int *select, double *dr, double *di,
-                    double *z, const int *ldz, const double *sigmar, const double *sigmai,
-                    double *workev, const char *bmat, const int *n, const char *which,
-                    const int *nev, const double *tol, double *resid, const int *ncv, double *v,
-                    const int *ldv, int *iparam, int *ipntr, double *workd, double *workl,
-                    const int *lworkl, int *info, size_t lhowmny, size_t lbmat, size_t lwhich);
+#include "fe_arpack_lib.h"
 
 typedef struct op {
   const whirl_fe_rotor *r;
@@ -135,7 +126,7 @@ static int arnoldi(op *o, work *w, double tol, int *nconv, char *msg, size_t len
   iparam[2] = 1000; /* restarts */
   iparam[6] = 1;    /* mode 1 on OP */
   for (;;) {
-    dnaupd_(&ido, "I", &w->N, "LM", &w->nev, &tol, w->resid, &w->ncv, w->v, &w->N, iparam, ipntr,
+    fe_dnaupd(&ido, "I", &w->N, "LM", &w->nev, &tol, w->resid, &w->ncv, w->v, &w->N, iparam, ipntr,
             w->workd, w->workl, &w->lworkl, &info, 1, 2);
     if (ido != -1 && ido != 1) break;
     if (op_apply(o, w->workd + ipntr[0] - 1, w->workd + ipntr[1] - 1)) {
@@ -149,7 +140,7 @@ static int arnoldi(op *o, work *w, double tol, int *nconv, char *msg, size_t len
   }
   const int rvec = 1;
   const double sr = 0, si = 0;
-  dneupd_(&rvec, "A", w->select, w->dr, w->di, w->z, &w->N, &sr, &si, w->workev, "I", &w->N, "LM",
+  fe_dneupd(&rvec, "A", w->select, w->dr, w->di, w->z, &w->N, &sr, &si, w->workev, "I", &w->N, "LM",
           &w->nev, &tol, w->resid, &w->ncv, w->v, &w->N, iparam, ipntr, w->workd, w->workl,
           &w->lworkl, &info, 1, 1, 2);
   if (info != 0) {
@@ -197,6 +188,7 @@ int fe_eig_arpack(const whirl_fe_rotor *r, double Omega, double shift, double to
     if (msg && len) snprintf(msg, len, "ARPACK: the rotor is too small (use the dense method)");
     return WHIRL_EINVAL;
   }
+  if (fe_arpack_open(msg, len) != WHIRL_OK) return WHIRL_ENOLIB;
   op o;
   work w;
   memset(&w, 0, sizeof w);

@@ -18,7 +18,22 @@
 #include <stdlib.h>
 #include <string.h>
 
+#ifdef HAVE_CONFIG_H
+#include "config.h"
+#endif
+#include <whirl/dynlib.h>
+
 #include "fe_hbm_impl.h"
+
+/* FFTW, opened at the first harmonic balance of a rotor (whirl/dynlib.h) */
+#define FFTW_FUNCS(X)                                                          \
+  X(fftw_malloc) X(fftw_free) X(fftw_plan_many_dft_c2r) X(fftw_plan_many_dft_r2c) \
+  X(fftw_execute) X(fftw_destroy_plan)
+#ifdef WHIRL_SONAMES_FFTW3
+WHIRL_DYNLIB(fftw, FFTW_FUNCS, WHIRL_SONAMES_FFTW3)
+#else
+WHIRL_DYNLIB_LINKED(fftw, FFTW_FUNCS)
+#endif
 
 static int is_film(whirl_fe_nl_kind k) {
   return k == WHIRL_FE_SFD_SHORT_PI || k == WHIRL_FE_SFD_SHORT_2PI ||
@@ -64,19 +79,19 @@ static int collect_dofs(fe_aft *a, const whirl_fe_rotor *r) {
 
 static int make_plans(fe_aft *a) {
   int N = a->N, nc = N / 2 + 1, m = a->m, nj = 12 * a->nnl;
-  a->cq = fftw_malloc(sizeof *a->cq * (size_t)(3 * m * nc));
-  a->tq = fftw_malloc(sizeof *a->tq * (size_t)(3 * m * N));
-  a->cf = fftw_malloc(sizeof *a->cf * (size_t)(m * nc));
-  a->tf = fftw_malloc(sizeof *a->tf * (size_t)(m * N));
-  a->cj = fftw_malloc(sizeof *a->cj * (size_t)(nj * nc));
-  a->tj = fftw_malloc(sizeof *a->tj * (size_t)(nj * N));
+  a->cq = fftw.fftw_malloc(sizeof *a->cq * (size_t)(3 * m * nc));
+  a->tq = fftw.fftw_malloc(sizeof *a->tq * (size_t)(3 * m * N));
+  a->cf = fftw.fftw_malloc(sizeof *a->cf * (size_t)(m * nc));
+  a->tf = fftw.fftw_malloc(sizeof *a->tf * (size_t)(m * N));
+  a->cj = fftw.fftw_malloc(sizeof *a->cj * (size_t)(nj * nc));
+  a->tj = fftw.fftw_malloc(sizeof *a->tj * (size_t)(nj * N));
   if (!a->cq || !a->tq || !a->cf || !a->tf || !a->cj || !a->tj)
     return WHIRL_ENOMEM;
-  a->p_q = fftw_plan_many_dft_c2r(1, &N, 3 * m, a->cq, NULL, 1, nc, a->tq,
+  a->p_q = fftw.fftw_plan_many_dft_c2r(1, &N, 3 * m, a->cq, NULL, 1, nc, a->tq,
                                   NULL, 1, N, FFTW_ESTIMATE);
-  a->p_f = fftw_plan_many_dft_r2c(1, &N, m, a->tf, NULL, 1, N, a->cf, NULL,
+  a->p_f = fftw.fftw_plan_many_dft_r2c(1, &N, m, a->tf, NULL, 1, N, a->cf, NULL,
                                   1, nc, FFTW_ESTIMATE);
-  a->p_j = fftw_plan_many_dft_r2c(1, &N, nj, a->tj, NULL, 1, N, a->cj, NULL,
+  a->p_j = fftw.fftw_plan_many_dft_r2c(1, &N, nj, a->tj, NULL, 1, N, a->cj, NULL,
                                   1, nc, FFTW_ESTIMATE);
   return a->p_q && a->p_f && a->p_j ? WHIRL_OK : WHIRL_ENOMEM;
 }
@@ -84,6 +99,7 @@ static int make_plans(fe_aft *a) {
 int fe_aft_init(fe_aft *a, const whirl_fe_rotor *r, int H, int N, char *err,
                 size_t errlen) {
   memset(a, 0, sizeof *a);
+  if (fftw_bind(err, errlen) != WHIRL_OK) return WHIRL_ENOLIB;
   a->H = H;
   a->N = N;
   a->nnl = r->nnl;
@@ -110,15 +126,17 @@ nomem:
 }
 
 void fe_aft_free(fe_aft *a) {
-  if (a->p_q) fftw_destroy_plan(a->p_q);
-  if (a->p_f) fftw_destroy_plan(a->p_f);
-  if (a->p_j) fftw_destroy_plan(a->p_j);
-  fftw_free(a->cq);
-  fftw_free(a->tq);
-  fftw_free(a->cf);
-  fftw_free(a->tf);
-  fftw_free(a->cj);
-  fftw_free(a->tj);
+  if (fftw_bind(NULL, 0) == WHIRL_OK) { /* else FFTW made nothing to free */
+    if (a->p_q) fftw.fftw_destroy_plan(a->p_q);
+    if (a->p_f) fftw.fftw_destroy_plan(a->p_f);
+    if (a->p_j) fftw.fftw_destroy_plan(a->p_j);
+    fftw.fftw_free(a->cq);
+    fftw.fftw_free(a->tq);
+    fftw.fftw_free(a->cf);
+    fftw.fftw_free(a->tf);
+    fftw.fftw_free(a->cj);
+    fftw.fftw_free(a->tj);
+  }
   free(a->dof);
   free(a->el);
   free(a->clear0);
@@ -151,7 +169,7 @@ static void to_time(fe_aft *a, const double *q, double w) {
       ac[k] = -(k * w) * (k * w) * x;
     }
   }
-  fftw_execute(a->p_q);
+  fftw.fftw_execute(a->p_q);
 }
 
 /* The forces and Jacobians of every element at every sample. */
@@ -263,7 +281,7 @@ int fe_aft_eval(fe_aft *a, const double *q, double w, double Omega, double *f,
   to_time(a, q, w);
   int rc = sample_forces(a, Omega, mode != FE_AFT_FORCE);
   if (rc) return rc;
-  fftw_execute(a->p_f);
+  fftw.fftw_execute(a->p_f);
   for (int j = 0; j < m; ++j) {
     const double complex *c = a->cf + (size_t)j * nc;
     f[j] = creal(c[0]) / N;
@@ -273,7 +291,7 @@ int fe_aft_eval(fe_aft *a, const double *q, double w, double Omega, double *f,
     }
   }
   if (mode == FE_AFT_FORCE) return 0;
-  fftw_execute(a->p_j);
+  fftw.fftw_execute(a->p_j);
   assemble_jac(a, w, J, mode);
   return 0;
 }

@@ -46,20 +46,7 @@ int fe_hill_sparse(whirl_fe_hbm *h, const double *qfull, const double *p,
 }
 #else
 
-extern void dnaupd_(int *ido, const char *bmat, const int *n, const char *which,
-                    const int *nev, const double *tol, double *resid,
-                    const int *ncv, double *v, const int *ldv, int *iparam,
-                    int *ipntr, double *workd, double *workl,
-                    const int *lworkl, int *info, size_t lbmat, size_t lwhich);
-extern void dneupd_(const int *rvec, const char *howmny, int *select,
-                    double *dr, double *di, double *z, const int *ldz,
-                    const double *sigmar, const double *sigmai, double *workev,
-                    const char *bmat, const int *n, const char *which,
-                    const int *nev, const double *tol, double *resid,
-                    const int *ncv, double *v, const int *ldv, int *iparam,
-                    int *ipntr, double *workd, double *workl,
-                    const int *lworkl, int *info, size_t lhowmny,
-                    size_t lbmat, size_t lwhich);
+#include "fe_arpack_lib.h"
 
 typedef struct hill_op {
   whirl_fe_hbm *h;       /* its ARPACK workspace */
@@ -277,7 +264,7 @@ static int arnoldi(hill_op *o, int nev, double *start, int *warm, double *dr,
   iparam[2] = 1000; /* restarts */
   iparam[6] = 1;    /* mode 1 on OP */
   while (!rc) {
-    dnaupd_(&ido, "I", &N, "LM", &nev, &tol, resid, &ncv, v, &N, iparam,
+    fe_dnaupd(&ido, "I", &N, "LM", &nev, &tol, resid, &ncv, v, &N, iparam,
             ipntr, workd, workl, &lworkl, &info, 1, 2);
     if (ido != -1 && ido != 1) break;
     rc = op_apply(o, workd + ipntr[0] - 1, workd + ipntr[1] - 1);
@@ -287,7 +274,7 @@ static int arnoldi(hill_op *o, int nev, double *start, int *warm, double *dr,
   if (!rc) {
     const int rvec = 1;
     const double sr = 0, si = 0;
-    dneupd_(&rvec, "A", select, dr, di, z, &N, &sr, &si, workev, "I", &N,
+    fe_dneupd(&rvec, "A", select, dr, di, z, &N, &sr, &si, workev, "I", &N,
             "LM", &nev, &tol, resid, &ncv, v, &N, iparam, ipntr, workd, workl,
             &lworkl, &info, 1, 1, 2);
     if (info != 0) rc = WHIRL_ELAPACK;
@@ -360,6 +347,7 @@ int fe_hill_sparse(whirl_fe_hbm *h, const double *qfull, const double *p,
   int nd = h->r->ndof, nm = h->aft.m, L = h->L;
   double Omega = p[WHIRL_FE_P_OMEGA], w = Omega / h->o.nu;
   if ((size_t)(2 * nd * L) < nev + 4 || *m < nev) return WHIRL_EINVAL;
+  if (fe_arpack_open(h->errmsg, sizeof h->errmsg) != WHIRL_OK) return WHIRL_ENOLIB;
   for (int blk = 0; blk < L; ++blk)
     for (int j = 0; j < nm; ++j) h->q[blk * nm + j] = qfull[blk * nd + h->aft.dof[j]];
   fe_aft_set_scales(&h->aft, p[WHIRL_FE_P_CLEARANCE], p[WHIRL_FE_P_VISCOSITY]);

@@ -20,7 +20,23 @@
 
 _Static_assert(UMFPACK_CONTROL == 20, "fe_lin.control has UMFPACK_CONTROL entries");
 
+#ifdef HAVE_CONFIG_H
+#include "config.h"
+#endif
+#include <whirl/dynlib.h>
+
 #include "fe_hbm_impl.h"
+
+/* UMFPACK, opened at the first interior block too wide for the banded LU
+ * (whirl/dynlib.h) */
+#define UMF_FUNCS(X)                                                           \
+  X(umfpack_zi_defaults) X(umfpack_zi_symbolic) X(umfpack_zi_numeric)           \
+  X(umfpack_zi_solve) X(umfpack_zi_free_numeric) X(umfpack_zi_free_symbolic)
+#ifdef WHIRL_SONAMES_UMFPACK
+WHIRL_DYNLIB(umf, UMF_FUNCS, WHIRL_SONAMES_UMFPACK)
+#else
+WHIRL_DYNLIB_LINKED(umf, UMF_FUNCS)
+#endif
 
 /* ------------------------------------------------------------ patterns */
 
@@ -100,13 +116,18 @@ static int interior_pattern(fe_lin *l) {
                 (l->interior_lu == 0 && l->lu.band.kl + l->lu.band.ku <= FE_BAND_MAX);
   if (l->use_band) return WHIRL_OK;
   fe_band_free(&l->lu.band);
+  char why[200];
+  if (umf_bind(why, sizeof why) != WHIRL_OK) {
+    snprintf(l->err, sizeof l->err, "UMFPACK (the interior block): %s", why);
+    return WHIRL_ENOLIB;
+  }
   /* UMFPACK's default two steps of iterative refinement per solve cost more
    * than the solve; the interior block is well conditioned away from the
    * held rotor's resonances, and condensed = uncondensed to 1e-14 without
    * them (t_fe_hbm) */
-  umfpack_zi_defaults(l->control);
+  umf.umfpack_zi_defaults(l->control);
   l->control[UMFPACK_IRSTEP] = 0;
-  int st = umfpack_zi_symbolic(ni, ni, l->Lp, l->Li, NULL, NULL, &l->symbolic,
+  int st = umf.umfpack_zi_symbolic(ni, ni, l->Lp, l->Li, NULL, NULL, &l->symbolic,
                                l->control, NULL);
   if (st != UMFPACK_OK) {
     snprintf(l->err, sizeof l->err,
@@ -173,7 +194,7 @@ int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed,
 
 void fe_lin_free(fe_lin *l) {
   fe_ilu_free(&l->lu);
-  if (l->symbolic) umfpack_zi_free_symbolic(&l->symbolic);
+  if (l->symbolic) umf.umfpack_zi_free_symbolic(&l->symbolic);
   void *p[] = {l->nlq, l->nlcol, l->Dv, l->dDv, l->Lv, l->rhs, l->pos, l->Z, l->dZ, l->gu, l->dgu, l->g0, l->Up, l->Ui,
                l->Kx, l->Mx, l->Cx, l->Gx, l->inv, l->Lp, l->Li, l->Lmap,
                l->Lx, l->Lz, l->Xk, l->yk, l->w1, l->w2, l->w3, l->br};
@@ -229,7 +250,7 @@ int fe_ilu_init(const fe_lin *l, fe_ilu *f) {
 }
 
 void fe_ilu_free(fe_ilu *f) {
-  if (f->numeric) umfpack_zi_free_numeric(&f->numeric);
+  if (f->numeric) umf.umfpack_zi_free_numeric(&f->numeric);
   fe_band_free(&f->band);
   memset(f, 0, sizeof *f);
 }
@@ -245,8 +266,8 @@ int fe_ilu_factor(fe_lin *l, fe_ilu *f, const double complex *Dv) {
     l->Lx[q] = creal(Dv[l->Lmap[q]]);
     l->Lz[q] = cimag(Dv[l->Lmap[q]]);
   }
-  if (f->numeric) umfpack_zi_free_numeric(&f->numeric);
-  st = umfpack_zi_numeric(l->Lp, l->Li, l->Lx, l->Lz, l->symbolic,
+  if (f->numeric) umf.umfpack_zi_free_numeric(&f->numeric);
+  st = umf.umfpack_zi_numeric(l->Lp, l->Li, l->Lx, l->Lz, l->symbolic,
                           &f->numeric, l->control, NULL);
   if (st == UMFPACK_OK) return WHIRL_OK;
   return st == UMFPACK_WARNING_singular_matrix ? WHIRL_ESINGULAR : WHIRL_ESPARSE;
@@ -262,7 +283,7 @@ int fe_ilu_solve(fe_lin *l, fe_ilu *f, int transpose, int nrhs,
     for (int i = 0; i < ni; ++i) { l->br[i] = creal(x[i]); l->bz[i] = cimag(x[i]); }
     /* without iterative refinement (control) UMFPACK reads only the
      * numeric factors, not the values: other factorisations may reuse Lx */
-    int st = umfpack_zi_solve(sys, l->Lp, l->Li, l->Lx, l->Lz, l->xr, l->xz,
+    int st = umf.umfpack_zi_solve(sys, l->Lp, l->Li, l->Lx, l->Lz, l->xr, l->xz,
                               l->br, l->bz, f->numeric, l->control, NULL);
     if (st != UMFPACK_OK && st != UMFPACK_WARNING_singular_matrix) {
       snprintf(l->err, sizeof l->err, "UMFPACK solve: status %d", st);

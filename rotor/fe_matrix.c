@@ -14,9 +14,31 @@
 
 #include <cholmod.h>
 
+#ifdef HAVE_CONFIG_H
+#include "config.h"
+#endif
+#include <whirl/dynlib.h>
 #include <whirl/rotor/fe_linear.h>
 
 #include "fe_impl.h"
+
+/* CHOLMOD, opened at the first matrix read or written (whirl/dynlib.h) */
+#define CHOLMOD_FUNCS(X)                                                       \
+  X(cholmod_start) X(cholmod_finish) X(cholmod_read_sparse) X(cholmod_write_sparse) \
+  X(cholmod_allocate_sparse) X(cholmod_free_sparse)
+#ifdef WHIRL_SONAMES_CHOLMOD
+WHIRL_DYNLIB(chol, CHOLMOD_FUNCS, WHIRL_SONAMES_CHOLMOD)
+#else
+WHIRL_DYNLIB_LINKED(chol, CHOLMOD_FUNCS)
+#endif
+
+/* CHOLMOD bound, or −1 with the reason in msg */
+static int cholmod_here(char *msg, size_t len) {
+  char why[256];
+  if (chol_bind(why, sizeof why) == WHIRL_OK) return 0;
+  snprintf(msg, len, "CHOLMOD (Matrix Market files): %s", why);
+  return -1;
+}
 
 /* Read the real square matrix of PATH, n×n, into T (added to it): both
  * triangles of a symmetric (or skew-symmetric) file.  0, or −1 with the
@@ -27,15 +49,16 @@ int fe_matrix_read(const char *path, int n, fe_trip *T, char *msg, size_t len) {
     snprintf(msg, len, "'%s' is not a regular file", path);
     return -1;
   }
+  if (cholmod_here(msg, len)) return -1;
   FILE *f = fopen(path, "r");
   if (!f) {
     snprintf(msg, len, "cannot open '%s': %s", path, strerror(errno));
     return -1;
   }
   cholmod_common cc;
-  cholmod_start(&cc);
+  chol.cholmod_start(&cc);
   cc.print = 0;
-  cholmod_sparse *A = cholmod_read_sparse(f, &cc);
+  cholmod_sparse *A = chol.cholmod_read_sparse(f, &cc);
   fclose(f);
   int rc = 0;
   if (!A) {
@@ -62,8 +85,8 @@ int fe_matrix_read(const char *path, int n, fe_trip *T, char *msg, size_t len) {
       rc = -1;
     }
   }
-  cholmod_free_sparse(&A, &cc);
-  cholmod_finish(&cc);
+  chol.cholmod_free_sparse(&A, &cc);
+  chol.cholmod_finish(&cc);
   return rc;
 }
 
@@ -71,11 +94,12 @@ int fe_matrix_read(const char *path, int n, fe_trip *T, char *msg, size_t len) {
  * coordinate form.  0, or −1 with the reason in msg. */
 static int fe_matrix_write(const whirl_fe_csc *A, FILE *f, const char *name, char *msg,
                            size_t len) {
+  if (cholmod_here(msg, len)) return -1;
   cholmod_common cc;
-  cholmod_start(&cc);
+  chol.cholmod_start(&cc);
   cc.print = 0;
   const int nnz = A->p[A->n];
-  cholmod_sparse *S = cholmod_allocate_sparse((size_t)A->n, (size_t)A->n, (size_t)nnz, 1, 1, 0,
+  cholmod_sparse *S = chol.cholmod_allocate_sparse((size_t)A->n, (size_t)A->n, (size_t)nnz, 1, 1, 0,
                                               CHOLMOD_REAL, &cc);
   int rc = 0;
   if (!S) {
@@ -85,13 +109,13 @@ static int fe_matrix_write(const whirl_fe_csc *A, FILE *f, const char *name, cha
     memcpy(S->p, A->p, (size_t)(A->n + 1) * sizeof *A->p);
     memcpy(S->i, A->i, (size_t)nnz * sizeof *A->i);
     memcpy(S->x, A->x, (size_t)nnz * sizeof *A->x);
-    if (cholmod_write_sparse(f, S, NULL, NULL, &cc) < 0) {
+    if (chol.cholmod_write_sparse(f, S, NULL, NULL, &cc) < 0) {
       snprintf(msg, len, "%s: cannot write (CHOLMOD status %d)", name, cc.status);
       rc = -1;
     }
   }
-  cholmod_free_sparse(&S, &cc);
-  cholmod_finish(&cc);
+  chol.cholmod_free_sparse(&S, &cc);
+  chol.cholmod_finish(&cc);
   return rc;
 }
 

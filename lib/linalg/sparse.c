@@ -16,7 +16,23 @@
 #include <suitesparse/umfpack.h>
 #endif
 
+#ifdef HAVE_CONFIG_H
+#include "config.h"
+#endif
+#include <whirl/dynlib.h>
+
 #include "linsol_impl.h"
+
+/* UMFPACK, opened at the first sparse matrix (whirl/dynlib.h) */
+#define UMF_FUNCS(X)                                                           \
+  X(umfpack_di_defaults) X(umfpack_di_symbolic) X(umfpack_di_numeric)           \
+  X(umfpack_di_wsolve) X(umfpack_di_get_determinant) X(umfpack_di_free_numeric) \
+  X(umfpack_di_free_symbolic)
+#ifdef WHIRL_SONAMES_UMFPACK
+WHIRL_DYNLIB(umf, UMF_FUNCS, WHIRL_SONAMES_UMFPACK)
+#else
+WHIRL_DYNLIB_LINKED(umf, UMF_FUNCS)
+#endif
 
 typedef struct sparse_backend {
   int n, nnz;
@@ -28,6 +44,7 @@ typedef struct sparse_backend {
   int *Wi;         /* wsolve workspace Wi[n] */
   double *W;       /* wsolve workspace W[5n] (iterative refinement on) */
   double *x;       /* x[n]: wsolve needs distinct right-hand side and result */
+  char unbound[200]; /* why UMFPACK could not be opened ("" when it was) */
 } sparse_backend;
 
 int whirl_csc_check(size_t n, const int *Ap, const int *Ai) {
@@ -51,8 +68,8 @@ int whirl_csc_check(size_t n, const int *Ap, const int *Ai) {
 static void sparse_free(void *backend) {
   sparse_backend *s = backend;
   if (!s) return;
-  if (s->numeric) umfpack_di_free_numeric(&s->numeric);
-  if (s->symbolic) umfpack_di_free_symbolic(&s->symbolic);
+  if (s->numeric) umf.umfpack_di_free_numeric(&s->numeric);
+  if (s->symbolic) umf.umfpack_di_free_symbolic(&s->symbolic);
   free(s->Ap);
   free(s->Ai);
   free(s->Wi);
@@ -64,8 +81,9 @@ static void sparse_free(void *backend) {
 static int sparse_factor(whirl_linsol *ls) {
   sparse_backend *s = ls->backend;
   int status;
-  if (s->numeric) umfpack_di_free_numeric(&s->numeric);
-  status = umfpack_di_numeric(s->Ap, s->Ai, ls->vals, s->symbolic, &s->numeric,
+  if (s->unbound[0]) return WHIRL_FAIL(ls, WHIRL_ENOLIB, "UMFPACK: %s", s->unbound);
+  if (s->numeric) umf.umfpack_di_free_numeric(&s->numeric);
+  status = umf.umfpack_di_numeric(s->Ap, s->Ai, ls->vals, s->symbolic, &s->numeric,
                               s->control, s->info);
   if (status == UMFPACK_OK) return WHIRL_OK;
   if (status == UMFPACK_WARNING_singular_matrix)
@@ -73,7 +91,7 @@ static int sparse_factor(whirl_linsol *ls) {
     return WHIRL_FAIL(ls, WHIRL_ESINGULAR,
                       "umfpack_di_numeric: matrix is exactly singular "
                       "(n = %d, nnz = %d)", s->n, s->nnz);
-  if (s->numeric) umfpack_di_free_numeric(&s->numeric);
+  if (s->numeric) umf.umfpack_di_free_numeric(&s->numeric);
   if (status == UMFPACK_ERROR_out_of_memory)
     return WHIRL_FAIL(ls, WHIRL_ENOMEM,
                       "umfpack_di_numeric: out of memory (n = %d, nnz = %d)",
@@ -96,11 +114,12 @@ static int sparse_solve(whirl_linsol *ls, double *B, size_t nrhs, int trans) {
   const int sys = trans ? UMFPACK_At : UMFPACK_A;
   const size_t n = ls->n;
   size_t k;
+  if (s->unbound[0]) return WHIRL_FAIL(ls, WHIRL_ENOLIB, "UMFPACK: %s", s->unbound);
   for (k = 0; k < nrhs; ++k) {
     double *b = B + k * n;
     int status;
     memcpy(s->x, b, n * sizeof *b);
-    status = umfpack_di_wsolve(sys, s->Ap, s->Ai, ls->vals, b, s->x,
+    status = umf.umfpack_di_wsolve(sys, s->Ap, s->Ai, ls->vals, b, s->x,
                                s->numeric, s->control, s->info, s->Wi, s->W);
     if (status == UMFPACK_WARNING_singular_matrix)
       return WHIRL_FAIL(ls, WHIRL_ESINGULAR,
@@ -118,7 +137,12 @@ static int sparse_solve(whirl_linsol *ls, double *B, size_t nrhs, int trans) {
 static int sparse_logdet(const whirl_linsol *ls, double *logabs, int *sign) {
   const sparse_backend *s = ls->backend;
   double mx = 0.0, ex = 0.0, info[UMFPACK_INFO];
-  int status = umfpack_di_get_determinant(&mx, &ex, s->numeric, info);
+  if (s->unbound[0]) { /* never factored */
+    *logabs = 0.0;
+    *sign = 0;
+    return WHIRL_ENOLIB;
+  }
+  int status = umf.umfpack_di_get_determinant(&mx, &ex, s->numeric, info);
   if (status != UMFPACK_OK && status != UMFPACK_WARNING_singular_matrix) {
     *logabs = 0.0;
     *sign = 0;
@@ -158,11 +182,13 @@ whirl_linsol *whirl_linsol_alloc_sparse(size_t n, const int *Ap,
   if (!s->Ap || !s->Ai || !s->Wi || !s->W || !s->x) goto fail;
   memcpy(s->Ap, Ap, (n + 1) * sizeof *Ap);
   if (nnz) memcpy(s->Ai, Ai, nnz * sizeof *Ai);
-  umfpack_di_defaults(s->control);
+  /* without UMFPACK the object is made, and its first factor says why */
+  if (umf_bind(s->unbound, sizeof s->unbound) != WHIRL_OK) return ls;
+  umf.umfpack_di_defaults(s->control);
   /* Symbolic analysis (column ordering, supernodes) depends on the pattern
    * only; Ax = NULL makes UMFPACK treat every stored entry as nonzero, so
    * the analysis stays valid for all later values on this pattern. */
-  status = umfpack_di_symbolic(s->n, s->n, s->Ap, s->Ai, NULL, &s->symbolic,
+  status = umf.umfpack_di_symbolic(s->n, s->n, s->Ap, s->Ai, NULL, &s->symbolic,
                                s->control, s->info);
   if (status != UMFPACK_OK) goto fail;
   return ls;

@@ -27,9 +27,39 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
+#ifdef HAVE_CONFIG_H
+#include "config.h"
+#endif
+#include <whirl/dynlib.h>
 #include <whirl/ode.h>
 
 #include "ode_impl.h"
+
+/* SUNDIALS (CVODE, its vectors, matrices and linear solvers, KLU), opened
+ * at the first BDF integration (whirl/dynlib.h) */
+#define SUN_FUNCS(X) \
+  X(CVode) X(CVodeCreate) X(CVodeFree) X(CVodeGetCurrentStep) X(CVodeGetDky) \
+  X(CVodeGetNonlinSolvStats) X(CVodeGetNumErrTestFails) \
+  X(CVodeGetNumJacEvals) X(CVodeGetNumLinSolvSetups) \
+  X(CVodeGetNumStepSolveFails) X(CVodeGetNumSteps) X(CVodeGetReturnFlagName) \
+  X(CVodeInit) X(CVodeReInit) X(CVodeSStolerances) X(CVodeSetErrHandlerFn) \
+  X(CVodeSetInitStep) X(CVodeSetJacFn) X(CVodeSetLinSysFn) \
+  X(CVodeSetLinearSolver) X(CVodeSetMaxStep) X(CVodeSetMinStep) \
+  X(CVodeSetStopTime) X(CVodeSetUserData) X(N_VClone) X(N_VDestroy) \
+  X(N_VGetArrayPointer) X(N_VMake_Serial) X(N_VSetArrayPointer) \
+  X(SUNContext_Create) X(SUNContext_Free) X(SUNDenseMatrix) \
+  X(SUNDenseMatrix_Data) X(SUNLinSolFree) X(SUNLinSolFreeEmpty) \
+  X(SUNLinSolInitialize) X(SUNLinSolLastFlag) X(SUNLinSolNewEmpty) \
+  X(SUNLinSolSetup) X(SUNLinSolSolve) X(SUNLinSol_Dense) X(SUNLinSol_KLU) \
+  X(SUNMatDestroy) X(SUNSparseMatrix) X(SUNSparseMatrix_Data) \
+  X(SUNSparseMatrix_IndexPointers) X(SUNSparseMatrix_IndexValues) \
+  X(SUNSparseMatrix_NNZ) X(SUNSparseMatrix_Reallocate)
+#ifdef WHIRL_SONAMES_SUNDIALS
+WHIRL_DYNLIB(sun, SUN_FUNCS, WHIRL_SONAMES_SUNDIALS)
+#else
+WHIRL_DYNLIB_LINKED(sun, SUN_FUNCS)
+#endif
+
 
 struct whirl_bdf {
   SUNContext ctx;
@@ -58,8 +88,8 @@ struct whirl_bdf {
  * problem.h's. */
 
 static int rhs_cb(sunrealtype t, N_Vector y, N_Vector f, void *ud) {
-  const int r = whirl_ode_eval_(ud, t, N_VGetArrayPointer(y),
-                                N_VGetArrayPointer(f));
+  const int r = whirl_ode_eval_(ud, t, sun.N_VGetArrayPointer(y),
+                                sun.N_VGetArrayPointer(f));
   return r > 0 ? 1 : r < 0 ? -1 : 0;
 }
 
@@ -76,8 +106,8 @@ static int jac_dense_cb(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J,
                         void *ud, N_Vector t1, N_Vector t2, N_Vector t3) {
   (void)fy, (void)t1, (void)t2, (void)t3;
   whirl_ode *o = ud;
-  double *Jd = SUNDenseMatrix_Data(J);
-  const int r = o->prob.jac_x(t, N_VGetArrayPointer(y), o->p, Jd,
+  double *Jd = sun.SUNDenseMatrix_Data(J);
+  const int r = o->prob.jac_x(t, sun.N_VGetArrayPointer(y), o->p, Jd,
                               o->prob.data);
   return jac_status(o->bdf, r, Jd, o->n * o->n);
 }
@@ -89,13 +119,13 @@ static int jac_sparse_cb(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J,
   (void)fy, (void)t1, (void)t2, (void)t3;
   whirl_ode *o = ud;
   struct whirl_bdf *b = o->bdf;
-  if ((size_t)SUNSparseMatrix_NNZ(J) < b->nnz &&
-      SUNSparseMatrix_Reallocate(J, (sunindextype)b->nnz) != 0)
+  if ((size_t)sun.SUNSparseMatrix_NNZ(J) < b->nnz &&
+      sun.SUNSparseMatrix_Reallocate(J, (sunindextype)b->nnz) != 0)
     return -1;
-  memcpy(SUNSparseMatrix_IndexPointers(J), b->Jp, (o->n + 1) * sizeof *b->Jp);
-  memcpy(SUNSparseMatrix_IndexValues(J), b->Ji, b->nnz * sizeof *b->Ji);
-  double *v = SUNSparseMatrix_Data(J);
-  const int r = b->fill(t, N_VGetArrayPointer(y), o->p, v, b->fill_data);
+  memcpy(sun.SUNSparseMatrix_IndexPointers(J), b->Jp, (o->n + 1) * sizeof *b->Jp);
+  memcpy(sun.SUNSparseMatrix_IndexValues(J), b->Ji, b->nnz * sizeof *b->Ji);
+  double *v = sun.SUNSparseMatrix_Data(J);
+  const int r = b->fill(t, sun.N_VGetArrayPointer(y), o->p, v, b->fill_data);
   return jac_status(b, r, v, b->nnz);
 }
 
@@ -114,14 +144,17 @@ static void err_cb(int code, const char *module, const char *function,
 /* o->bdf with its context and vectors; WHIRL_ENOMEM */
 static int bdf_get(whirl_ode *o) {
   if (o->bdf != NULL) return WHIRL_OK;
+  char why[256];
+  if (sun_bind(why, sizeof why) != WHIRL_OK)
+    return ODE_FAIL(o, WHIRL_ENOLIB, "BDF: SUNDIALS: %s", why);
   struct whirl_bdf *b = calloc(1, sizeof *b);
-  if (b == NULL || SUNContext_Create(NULL, &b->ctx) != 0) {
+  if (b == NULL || sun.SUNContext_Create(NULL, &b->ctx) != 0) {
     free(b);
     return ODE_FAIL(o, WHIRL_ENOMEM, "out of memory (SUNDIALS context)");
   }
   o->bdf = b;
-  b->y = N_VMake_Serial((sunindextype)o->n, o->xnew, b->ctx);
-  b->dky = N_VMake_Serial((sunindextype)o->n, o->xs, b->ctx);
+  b->y = sun.N_VMake_Serial((sunindextype)o->n, o->xnew, b->ctx);
+  b->dky = sun.N_VMake_Serial((sunindextype)o->n, o->xs, b->ctx);
   b->ls_dirty = 1;
   if (b->y == NULL || b->dky == NULL)
     return ODE_FAIL(o, WHIRL_ENOMEM, "out of memory (SUNDIALS vectors)");
@@ -130,15 +163,15 @@ static int bdf_get(whirl_ode *o) {
 
 void whirl_bdf_free_(struct whirl_bdf *b) {
   if (b == NULL) return;
-  CVodeFree(&b->cv);
-  SUNLinSolFree(b->LS);
-  SUNMatDestroy(b->A);
-  N_VDestroy(b->y);
-  N_VDestroy(b->dky);
+  sun.CVodeFree(&b->cv);
+  sun.SUNLinSolFree(b->LS);
+  sun.SUNMatDestroy(b->A);
+  sun.N_VDestroy(b->y);
+  sun.N_VDestroy(b->dky);
   free(b->Jp);
   free(b->Ji);
   free(b->Mp); free(b->Mi); free(b->Mx); free(b->Mpos); free(b->G);
-  SUNContext_Free(&b->ctx);
+  sun.SUNContext_Free(&b->ctx);
   free(b);
 }
 
@@ -154,18 +187,18 @@ static int mass_linsys(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix A,
   (void)fy, (void)t1, (void)t2, (void)t3;
   whirl_ode *o = ud;
   struct whirl_bdf *b = o->bdf;
-  if ((size_t)SUNSparseMatrix_NNZ(A) < b->nnz &&
-      SUNSparseMatrix_Reallocate(A, (sunindextype)b->nnz) != 0)
+  if ((size_t)sun.SUNSparseMatrix_NNZ(A) < b->nnz &&
+      sun.SUNSparseMatrix_Reallocate(A, (sunindextype)b->nnz) != 0)
     return -1;
-  memcpy(SUNSparseMatrix_IndexPointers(A), b->Jp, (o->n + 1) * sizeof *b->Jp);
-  memcpy(SUNSparseMatrix_IndexValues(A), b->Ji, b->nnz * sizeof *b->Ji);
+  memcpy(sun.SUNSparseMatrix_IndexPointers(A), b->Jp, (o->n + 1) * sizeof *b->Jp);
+  memcpy(sun.SUNSparseMatrix_IndexValues(A), b->Ji, b->nnz * sizeof *b->Ji);
   *jcur = SUNFALSE;
   if (!jok) {
-    int r = b->fill(t, N_VGetArrayPointer(y), o->p, b->G, b->fill_data);
+    int r = b->fill(t, sun.N_VGetArrayPointer(y), o->p, b->G, b->fill_data);
     *jcur = SUNTRUE;
     if ((r = jac_status(b, r, b->G, b->nnz)) != 0) return r;
   }
-  double *v = SUNSparseMatrix_Data(A);
+  double *v = sun.SUNSparseMatrix_Data(A);
   for (size_t k = 0; k < b->nnz; ++k) v[k] = -gamma * b->G[k];
   for (size_t k = 0; k < b->mnnz; ++k) v[b->Mpos[k]] += b->Mx[k];
   return 0;
@@ -188,40 +221,40 @@ static SUNLinearSolver_ID mls_id(SUNLinearSolver S) {
   (void)S;
   return SUNLINEARSOLVER_CUSTOM;
 }
-static int mls_init(SUNLinearSolver S) { return SUNLinSolInitialize(MLS(S)->klu); }
-static int mls_setup(SUNLinearSolver S, SUNMatrix A) { return SUNLinSolSetup(MLS(S)->klu, A); }
-static sunindextype mls_lastflag(SUNLinearSolver S) { return SUNLinSolLastFlag(MLS(S)->klu); }
+static int mls_init(SUNLinearSolver S) { return sun.SUNLinSolInitialize(MLS(S)->klu); }
+static int mls_setup(SUNLinearSolver S, SUNMatrix A) { return sun.SUNLinSolSetup(MLS(S)->klu, A); }
+static sunindextype mls_lastflag(SUNLinearSolver S) { return sun.SUNLinSolLastFlag(MLS(S)->klu); }
 
 /* x = (B − γG)⁻¹ B r */
 static int mls_solve(SUNLinearSolver S, SUNMatrix A, N_Vector x, N_Vector r,
                      sunrealtype tol) {
   const mass_ls *c = MLS(S);
   const struct whirl_bdf *b = c->b;
-  const double *rv = N_VGetArrayPointer(r);
-  double *w = N_VGetArrayPointer(c->tmp);
+  const double *rv = sun.N_VGetArrayPointer(r);
+  double *w = sun.N_VGetArrayPointer(c->tmp);
   memset(w, 0, c->n * sizeof *w);
   for (size_t j = 0; j < c->n; ++j)
     for (int k = b->Mp[j]; k < b->Mp[j + 1]; ++k) w[b->Mi[k]] += b->Mx[k] * rv[j];
-  return SUNLinSolSolve(c->klu, A, x, c->tmp, tol);
+  return sun.SUNLinSolSolve(c->klu, A, x, c->tmp, tol);
 }
 
 static int mls_free(SUNLinearSolver S) {
   if (S == NULL) return 0;
   if (S->content != NULL) {
-    SUNLinSolFree(MLS(S)->klu);
-    N_VDestroy(MLS(S)->tmp);
+    sun.SUNLinSolFree(MLS(S)->klu);
+    sun.N_VDestroy(MLS(S)->tmp);
     free(S->content);
     S->content = NULL;
   }
-  SUNLinSolFreeEmpty(S);
+  sun.SUNLinSolFreeEmpty(S);
   return 0;
 }
 
 static SUNLinearSolver mass_solver(struct whirl_bdf *b, SUNMatrix A, size_t n) {
-  SUNLinearSolver S = SUNLinSolNewEmpty(b->ctx);
+  SUNLinearSolver S = sun.SUNLinSolNewEmpty(b->ctx);
   mass_ls *c = S ? calloc(1, sizeof *c) : NULL;
   if (c == NULL) {
-    SUNLinSolFreeEmpty(S);
+    sun.SUNLinSolFreeEmpty(S);
     return NULL;
   }
   S->content = c;
@@ -234,8 +267,8 @@ static SUNLinearSolver mass_solver(struct whirl_bdf *b, SUNMatrix A, size_t n) {
   S->ops->free = mls_free;
   c->b = b;
   c->n = n;
-  c->klu = SUNLinSol_KLU(b->y, A, b->ctx);
-  c->tmp = N_VClone(b->y);
+  c->klu = sun.SUNLinSol_KLU(b->y, A, b->ctx);
+  c->tmp = sun.N_VClone(b->y);
   if (c->klu == NULL || c->tmp == NULL) {
     mls_free(S);
     return NULL;
@@ -273,29 +306,29 @@ static int new_linear_solver(whirl_ode *o) {
     if (r != WHIRL_OK)
       return ODE_FAIL(o, r, r == WHIRL_ENOMEM ? "out of memory" :
                       "BDF: the mass matrix needs a sparse Jacobian whose pattern holds its own");
-    A = SUNSparseMatrix(n, n, (sunindextype)b->nnz, CSC_MAT, b->ctx);
+    A = sun.SUNSparseMatrix(n, n, (sunindextype)b->nnz, CSC_MAT, b->ctx);
     LS = A ? mass_solver(b, A, o->n) : NULL;
   } else if (b->nnz > 0) {
-    A = SUNSparseMatrix(n, n, (sunindextype)b->nnz, CSC_MAT, b->ctx);
-    LS = A ? SUNLinSol_KLU(b->y, A, b->ctx) : NULL;
+    A = sun.SUNSparseMatrix(n, n, (sunindextype)b->nnz, CSC_MAT, b->ctx);
+    LS = A ? sun.SUNLinSol_KLU(b->y, A, b->ctx) : NULL;
   } else {
-    A = SUNDenseMatrix(n, n, b->ctx);
-    LS = A ? SUNLinSol_Dense(b->y, A, b->ctx) : NULL;
+    A = sun.SUNDenseMatrix(n, n, b->ctx);
+    LS = A ? sun.SUNLinSol_Dense(b->y, A, b->ctx) : NULL;
   }
-  if (LS == NULL || CVodeSetLinearSolver(b->cv, LS, A) != CVLS_SUCCESS) {
-    SUNLinSolFree(LS);
-    SUNMatDestroy(A);
+  if (LS == NULL || sun.CVodeSetLinearSolver(b->cv, LS, A) != CVLS_SUCCESS) {
+    sun.SUNLinSolFree(LS);
+    sun.SUNMatDestroy(A);
     return ODE_FAIL(o, WHIRL_ENOMEM, "BDF: no linear solver: %s", b->msg);
   }
-  SUNLinSolFree(b->LS); /* the old ones, now detached */
-  SUNMatDestroy(b->A);
+  sun.SUNLinSolFree(b->LS); /* the old ones, now detached */
+  sun.SUNMatDestroy(b->A);
   b->LS = LS;
   b->A = A;
   CVLsJacFn jac = b->nnz > 0 ? jac_sparse_cb
                   : o->prob.jac_x != NULL ? jac_dense_cb
                                          : NULL;
-  if (b->mnnz > 0 ? CVodeSetLinSysFn(b->cv, mass_linsys) != CVLS_SUCCESS
-                  : CVodeSetJacFn(b->cv, jac) != CVLS_SUCCESS)
+  if (b->mnnz > 0 ? sun.CVodeSetLinSysFn(b->cv, mass_linsys) != CVLS_SUCCESS
+                  : sun.CVodeSetJacFn(b->cv, jac) != CVLS_SUCCESS)
     return ODE_FAIL(o, WHIRL_EINVAL, "BDF: %s", b->msg);
   b->ls_dirty = 0;
   return WHIRL_OK;
@@ -306,9 +339,9 @@ static int new_linear_solver(whirl_ode *o) {
  * step limits, as given to CVODE. */
 static int apply_settings(whirl_ode *o) {
   struct whirl_bdf *b = o->bdf;
-  if (CVodeSStolerances(b->cv, o->rtol, o->atol) != CV_SUCCESS ||
-      CVodeSetMinStep(b->cv, o->h_min) != CV_SUCCESS ||
-      CVodeSetMaxStep(b->cv, o->h_max) != CV_SUCCESS)
+  if (sun.CVodeSStolerances(b->cv, o->rtol, o->atol) != CV_SUCCESS ||
+      sun.CVodeSetMinStep(b->cv, o->h_min) != CV_SUCCESS ||
+      sun.CVodeSetMaxStep(b->cv, o->h_max) != CV_SUCCESS)
     return ODE_FAIL(o, WHIRL_EINVAL, "BDF: %s", b->msg);
   b->rtol = o->rtol;
   b->atol = o->atol;
@@ -323,21 +356,21 @@ static int restart(whirl_ode *o) {
   memcpy(o->xnew, o->x, o->n * sizeof *o->x);
   int f;
   if (b->cv == NULL) {
-    b->cv = CVodeCreate(CV_BDF, b->ctx);
+    b->cv = sun.CVodeCreate(CV_BDF, b->ctx);
     if (b->cv == NULL)
       return ODE_FAIL(o, WHIRL_ENOMEM, "out of memory (CVODE)");
-    CVodeSetErrHandlerFn(b->cv, err_cb, b);
-    f = CVodeInit(b->cv, rhs_cb, o->t, b->y);
-    if (f == CV_SUCCESS) f = CVodeSetUserData(b->cv, o);
+    sun.CVodeSetErrHandlerFn(b->cv, err_cb, b);
+    f = sun.CVodeInit(b->cv, rhs_cb, o->t, b->y);
+    if (f == CV_SUCCESS) f = sun.CVodeSetUserData(b->cv, o);
     b->ls_dirty = 1;
   } else {
-    f = CVodeReInit(b->cv, o->t, b->y);
+    f = sun.CVodeReInit(b->cv, o->t, b->y);
   }
   if (f != CV_SUCCESS)
     return ODE_FAIL(o, f == CV_MEM_FAIL ? WHIRL_ENOMEM : WHIRL_EINVAL,
                     "BDF: %s", b->msg);
   if (b->ls_dirty && (f = new_linear_solver(o)) != WHIRL_OK) return f;
-  if (CVodeSetInitStep(b->cv, o->h_init) != CV_SUCCESS)
+  if (sun.CVodeSetInitStep(b->cv, o->h_init) != CV_SUCCESS)
     return ODE_FAIL(o, WHIRL_EINVAL, "BDF: %s", b->msg);
   b->nst = b->netf = b->nncf = b->nje = b->nsetups = b->nni = b->nnf = 0;
   b->dir = 0.0;
@@ -364,12 +397,12 @@ static size_t since(long now, long *last) {
 static void add_stats(whirl_ode *o) {
   struct whirl_bdf *b = o->bdf;
   long nst = 0, netf = 0, nncf = 0, nje = 0, nsetups = 0, nni = 0, nnf = 0;
-  CVodeGetNumSteps(b->cv, &nst);
-  CVodeGetNumErrTestFails(b->cv, &netf);
-  CVodeGetNumStepSolveFails(b->cv, &nncf);
-  CVodeGetNumJacEvals(b->cv, &nje);
-  CVodeGetNumLinSolvSetups(b->cv, &nsetups);
-  CVodeGetNonlinSolvStats(b->cv, &nni, &nnf);
+  sun.CVodeGetNumSteps(b->cv, &nst);
+  sun.CVodeGetNumErrTestFails(b->cv, &netf);
+  sun.CVodeGetNumStepSolveFails(b->cv, &nncf);
+  sun.CVodeGetNumJacEvals(b->cv, &nje);
+  sun.CVodeGetNumLinSolvSetups(b->cv, &nsetups);
+  sun.CVodeGetNonlinSolvStats(b->cv, &nni, &nnf);
   o->st.steps += since(nst, &b->nst);
   const size_t ef = since(netf, &b->netf), cf = since(nncf, &b->nncf);
   o->st.rejected += ef + cf;
@@ -386,7 +419,7 @@ static void add_stats(whirl_ode *o) {
 /* whirl's status and message for CVODE's failure flag in a step from t0 */
 static int step_failed(whirl_ode *o, int flag, double t0) {
   struct whirl_bdf *b = o->bdf;
-  const char *cv = b->msg[0] ? b->msg : CVodeGetReturnFlagName(flag);
+  const char *cv = b->msg[0] ? b->msg : sun.CVodeGetReturnFlagName(flag);
   char what[64] = "";
   if (o->last_rhs != 0) whirl_ode_rhs_said_(o, what, sizeof what);
   switch (flag) {
@@ -428,17 +461,17 @@ int whirl_bdf_step_(whirl_ode *o, double t_end) {
       (r = restart(o)) != WHIRL_OK)
     return r;
   if ((o->h_min != b->h_min || o->h_max != b->h_max) &&
-      (CVodeSetMinStep(b->cv, o->h_min) != CV_SUCCESS ||
-       CVodeSetMaxStep(b->cv, o->h_max) != CV_SUCCESS))
+      (sun.CVodeSetMinStep(b->cv, o->h_min) != CV_SUCCESS ||
+       sun.CVodeSetMaxStep(b->cv, o->h_max) != CV_SUCCESS))
     return ODE_FAIL(o, WHIRL_EINVAL, "BDF: %s", b->msg);
   b->h_min = o->h_min;
   b->h_max = o->h_max;
   b->msg[0] = '\0';
   b->jac_status = 0;
-  if (CVodeSetStopTime(b->cv, t_end) != CV_SUCCESS)
+  if (sun.CVodeSetStopTime(b->cv, t_end) != CV_SUCCESS)
     return ODE_FAIL(o, WHIRL_EINVAL, "BDF: %s", b->msg);
   sunrealtype tret = t0;
-  const int flag = CVode(b->cv, t_end, b->y, &tret, CV_ONE_STEP);
+  const int flag = sun.CVode(b->cv, t_end, b->y, &tret, CV_ONE_STEP);
   add_stats(o);
   if (flag < 0) return step_failed(o, flag, t0);
   memcpy(o->x_prev, o->x, o->n * sizeof *o->x);
@@ -455,15 +488,15 @@ int whirl_bdf_step_(whirl_ode *o, double t_end) {
 
 int whirl_bdf_dense_(const whirl_ode *o, double t, double *x) {
   struct whirl_bdf *b = o->bdf;
-  N_VSetArrayPointer(x, b->dky);
-  if (CVodeGetDky(b->cv, t, 0, b->dky) == CV_SUCCESS) return WHIRL_OK;
+  sun.N_VSetArrayPointer(x, b->dky);
+  if (sun.CVodeGetDky(b->cv, t, 0, b->dky) == CV_SUCCESS) return WHIRL_OK;
   for (size_t i = 0; i < o->n; ++i) x[i] = NAN;
   return WHIRL_EINVAL;
 }
 
 double whirl_bdf_h_(const whirl_ode *o) {
   sunrealtype h = 0.0;
-  if (!o->have_step || CVodeGetCurrentStep(o->bdf->cv, &h) != CV_SUCCESS)
+  if (!o->have_step || sun.CVodeGetCurrentStep(o->bdf->cv, &h) != CV_SUCCESS)
     return o->h_init;
   return fabs(h);
 }

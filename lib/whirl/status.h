@@ -34,7 +34,8 @@ extern "C" {
   X(WHIRL_EDOMAIN, -9, "state outside the model's domain")                     \
   X(WHIRL_ESINGULAR, -10, "singular matrix")                                   \
   X(WHIRL_EBADFUNC, -11, "a callback returned NaN or Inf")                     \
-  X(WHIRL_EMAXITER, -12, "iteration limit reached")
+  X(WHIRL_EMAXITER, -12, "iteration limit reached")                           \
+  X(WHIRL_ENOLIB, -13, "a library whirl needs could not be loaded")
 
 typedef enum whirl_status {
 #define WHIRL_X_ENUM(name, value, msg) name = value,

@@ -25,7 +25,7 @@ rank_of_layer() {
 # the layer of each public header
 layer_of_header() {
   case $1 in
-    status.h|points.h) echo util ;;
+    status.h|points.h|dynlib.h) echo util ;;
     linsol.h) echo linalg ;;
     problem.h|system.h|cont.h|branch.h) echo core ;;
     ode.h|floquet.h) echo ode ;;
