@@ -130,6 +130,65 @@ static double polish(const double *c, int deg, double x, double *res,
   return x;
 }
 
+/* The root of p in [a, b], where p(a) and p(b) differ in sign: Newton
+ * steps kept inside the bracket, which each step halves at least (a
+ * bisection where Newton would leave it or gain too little; Press et al.,
+ * Numerical Recipes, 3rd ed., 2007, §9.4, rtsafe). */
+static double bracketed_root(const double *c, int deg, double a, double b) {
+  double pa = poly(c, deg, a, NULL, NULL);
+  double x = 0.5 * (a + b), dp, px = poly(c, deg, x, &dp, NULL);
+  for (int it = 0; it < 200 && px != 0.0; ++it) {
+    if ((px < 0.0) == (pa < 0.0)) {
+      a = x;
+      pa = px;
+    } else {
+      b = x;
+    }
+    if (b - a <= 2.0 * DBL_EPSILON * fmax(fabs(a), fabs(b))) break;
+    const double xn = dp != 0.0 ? x - px / dp : a;
+    const double width = b - a;
+    const int newton = xn > a && xn < b && fabs(xn - x) < 0.5 * width;
+    if (newton && fabs(xn - x) <= 2.0 * DBL_EPSILON * fabs(x)) return xn; /* converged */
+    x = newton ? xn : a + 0.5 * width;
+    px = poly(c, deg, x, &dp, NULL);
+  }
+  return x;
+}
+
+/* The real roots of p (degree deg <= 4, c[deg] != 0) in ascending order,
+ * *m of them.  Between neighbouring real roots of p' (and the Cauchy bound
+ * 1 + max |c_k / c_deg| beyond them) p is monotone: at most one root
+ * there, found from a change of sign; a root of p' where |p| is at the
+ * level of rounding (a double root: a fold of eq. 15) is one too.  p' is
+ * solved the same way, down to degree 1. */
+static void real_roots(const double *c, int deg, double *r, int *m) {
+  *m = 0;
+  if (deg == 1) {
+    r[(*m)++] = -c[0] / c[1];
+    return;
+  }
+  double d[4] = {0}, crit[4], bound = 0.0;
+  int nc;
+  for (int k = 0; k < deg; ++k) d[k] = (double)(k + 1) * c[k + 1];
+  real_roots(d, deg - 1, crit, &nc);
+  for (int k = 0; k < deg; ++k) bound = fmax(bound, fabs(c[k] / c[deg]));
+  bound += 1.0;
+  double x[6];
+  int nx = 0;
+  x[nx++] = -bound;
+  for (int i = 0; i < nc; ++i)
+    if (crit[i] > -bound && crit[i] < bound) x[nx++] = crit[i];
+  x[nx++] = bound;
+  for (int i = 0; i + 1 < nx; ++i) {
+    double sc;
+    const double pa = poly(c, deg, x[i], NULL, &sc), pb = poly(c, deg, x[i + 1], NULL, NULL);
+    if (i > 0 && fabs(pa) <= 1e-10 * sc) /* at a root of p' */
+      r[(*m)++] = x[i];
+    else if ((pa < 0.0) != (pb < 0.0) && pb != 0.0)
+      r[(*m)++] = bracketed_root(c, deg, x[i], x[i + 1]);
+  }
+}
+
 int whirl_sfd_circ_roots(double eps, double lambda, double delta, double zeta,
                          double *Omega, int *nroots) {
   if (Omega == NULL || nroots == NULL) return WHIRL_EINVAL;
@@ -150,36 +209,14 @@ int whirl_sfd_circ_roots(double eps, double lambda, double delta, double zeta,
   const int deg = hi - lo;
   if (deg == 0) return WHIRL_OK;
 
-  double wr[4], wi[4];
-  if (deg == 1) {
-    wr[0] = -q[0] / q[1];
-    wi[0] = 0.0;
-  } else {
-    /* companion matrix of the monic polynomial, column-major; dgeev
-     * balances it, which copes with the wide root spread near ε = δ.
-     * Through whirl_eig, so that LAPACK's complaints (overflowing
-     * coefficients) come back as a status, never as text on stdout. */
-    double A[16] = {0};
-    const int n = deg;
-    for (int j = 0; j < n; ++j) A[0 + n * j] = -q[deg - 1 - j] / q[deg];
-    for (int i = 1; i < n; ++i) A[i + n * (i - 1)] = 1.0;
-    whirl_eig *e = whirl_eig_alloc((size_t)n);
-    if (!e) return WHIRL_ENOMEM;
-    rc = whirl_eig_compute(e, A, wr, wi);
-    whirl_eig_free(e);
-    if (rc != WHIRL_OK) return rc;
-  }
-
-  double r[4];
-  int m = 0;
-  for (int k = 0; k < deg; ++k) {
-    /* a complex pair comes as (wi > 0, wi < 0): look at it once */
-    if (wi[k] < 0.0) continue;
-    if (!(fabs(wi[k]) <= 1e-6 * fmax(1.0, fabs(wr[k])))) continue;
+  double root[4], r[4];
+  int nr = 0, m = 0;
+  real_roots(q, deg, root, &nr);
+  for (int k = 0; k < nr; ++k) {
     double res, sc;
-    const double x = polish(q, deg, wr[k], &res, &sc);
+    const double x = polish(q, deg, root[k], &res, &sc);
     if (!(x > 0.0) || !isfinite(x)) continue;
-    if (!(res <= 1e-10 * sc)) continue; /* a genuinely complex pair */
+    if (!(res <= 1e-10 * sc)) continue;
     r[m++] = x;
   }
   /* ascending; merge roots that polished onto the same value */
