@@ -16,6 +16,7 @@
 #include <whirl/rotor.h>
 
 #include "cli.h"
+#include "fmt_num.h"
 #include "sfd_common.h"
 
 #define CMD "sfd response"
@@ -218,6 +219,14 @@ static void region_letters(FILE *f, const double *lp, double wmax) {
             'A' + i, xs[i]);
 }
 
+/* a data line of a script: "%.8g %.8g\n" (fmt_num.h) */
+static void put_pair(FILE *f, double x, double y) {
+  fmt_put_g(f, x, 8);
+  fputc(' ', f);
+  fmt_put_g(f, y, 8);
+  fputc('\n', f);
+}
+
 /* Gnuplot script for ε against Ω: stable solid, unstable dashed, LP marked,
  * red dashed region borders at the LPs (Fig. 3). */
 static int write_response_gp(cli_outdir *od, const tab *res,
@@ -237,8 +246,8 @@ static int write_response_gp(cli_outdir *od, const tab *res,
         int st = br[i].stable == 1;
         int want = pass == 0;
         if (st == want) {
-          if (!open && i > 0) fprintf(f, "%.8g %.8g\n", br[i - 1].Om, br[i - 1].eps);
-          fprintf(f, "%.8g %.8g\n", br[i].Om, br[i].eps);
+          if (!open && i > 0) put_pair(f, br[i - 1].Om, br[i - 1].eps);
+          put_pair(f, br[i].Om, br[i].eps);
           open = 1;
         } else if (open) {
           fprintf(f, "\n");
@@ -297,7 +306,7 @@ static int write_multipliers_gp(cli_outdir *od, const tab *res,
   for (size_t b = 0; b < res->nbranch; ++b) {
     fprintf(f, "$b%zu << EOD\n", b + 1);
     for (size_t i = 0; i < res->len[b]; ++i)
-      fprintf(f, "%.8g %.8g\n", res->rows[b][i].Om, res->rows[b][i].maxmult);
+      put_pair(f, res->rows[b][i].Om, res->rows[b][i].maxmult);
     fprintf(f, "EOD\n");
   }
   fprintf(f,
@@ -513,9 +522,13 @@ int cmd_sfd_response(int argc, char **argv) {
   for (size_t b = 0; b < T.nbranch; ++b) {
     for (size_t i = 0; i < T.len[b]; ++i) {
       const row *r = &T.rows[b][i];
-      fprintf(fb.fp, "%d\t%d\t%s\t%d\t%.10e\t%.10e\t%.10e\t%.10e\t%.10e\t%d\t%d\t%.10e\t%.10e\t%.10e",
-              r->branch, r->pt, r->itype ? r->type : "-", r->label, r->Om, r->eps, r->phase,
-              r->u, r->v, r->stable, r->nu, r->maxmult, r->mure, r->muim);
+      /* %.10e by fmt_num.h: the same text, a fifth of printf's time */
+      const double state[] = {r->Om, r->eps, r->phase, r->u, r->v};
+      const double mult[] = {r->maxmult, r->mure, r->muim};
+      fprintf(fb.fp, "%d\t%d\t%s\t%d", r->branch, r->pt, r->itype ? r->type : "-", r->label);
+      for (size_t k = 0; k < 5; ++k) fputc('\t', fb.fp), fmt_put_e(fb.fp, state[k], 10);
+      fprintf(fb.fp, "\t%d\t%d", r->stable, r->nu);
+      for (size_t k = 0; k < 3; ++k) fputc('\t', fb.fp), fmt_put_e(fb.fp, mult[k], 10);
       if (periodic) fprintf(fb.fp, "\t%.10e\t%.10e\t%.3e", r->eps_min, r->period, r->residual);
       fprintf(fb.fp, "\n");
       if (is_special(r->itype)) {
