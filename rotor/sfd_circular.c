@@ -160,11 +160,25 @@ static double bracketed_root(const double *c, int deg, double a, double b) {
  * 1 + max |c_k / c_deg| beyond them) p is monotone: at most one root
  * there, found from a change of sign; a root of p' where |p| is at the
  * level of rounding (a double root: a fold of eq. 15) is one too.  p' is
- * solved the same way, down to degree 1. */
+ * solved the same way, down to the quadratic formula. */
 static void real_roots(const double *c, int deg, double *r, int *m) {
   *m = 0;
   if (deg == 1) {
     r[(*m)++] = -c[0] / c[1];
+    return;
+  }
+  if (deg == 2) { /* the quadratic formula without cancellation */
+    const double disc = c[1] * c[1] - 4.0 * c[2] * c[0];
+    if (disc < 0.0) { /* complex, or a double root lost to rounding */
+      const double v = -c[1] / (2.0 * c[2]);
+      double sc;
+      if (fabs(poly(c, 2, v, NULL, &sc)) <= 1e-10 * sc) r[(*m)++] = v;
+      return;
+    }
+    const double q = -0.5 * (c[1] + copysign(sqrt(disc), c[1]));
+    const double x1 = q / c[2], x2 = q != 0.0 ? c[0] / q : x1;
+    r[(*m)++] = fmin(x1, x2);
+    if (x2 != x1) r[(*m)++] = fmax(x1, x2);
     return;
   }
   double d[4] = {0}, crit[4], bound = 0.0;
