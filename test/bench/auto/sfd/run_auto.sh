@@ -3,13 +3,17 @@
 # the complete synchronous response of the SFD rotor at Table 1
 # (λ = 0.0503, δ = 0.3, ζ = 0) for 0.01 <= Ω <= 20, main branch and isola.
 #
-# usage: test/bench/auto/sfd/run_auto.sh [-n N] [--tight] [--iid0] [--keep]
+# usage: test/bench/auto/sfd/run_auto.sh [-n N] [--tight] [--iid0] [--keep] [--cold-only]
 #   -n N     repetitions per timing (default 5; the median is reported)
+#   --cold-only  only the cold runs, printed as "cold SECONDS ..." (one
+#            round of test/bench/compare_auto.sh)
 #   --tight  EPSL = EPSU = 1e-10, EPSS = 1e-8 instead of AUTO's defaults
 #            (EPSL = EPSU = 1e-7, EPSS = 1e-5)
 #   --iid0   IID = 0: no per-step diagnostics file (AUTO's default IID = 2
 #            writes eigenvalues etc. of every step to fort.9)
 #   --keep   keep the work directory (b.*, auto.log, ...) and print its path
+# BENCH_WALL: test/bench/bench_wall of a build, which times a process
+# without starting a `date` for it (else `date +%s%N` around it).
 # Needs /usr/bin/python3 (not a pyenv python), AUTO-07p (AUTO_DIR, default
 # /usr/lib/auto-07p) with gcc and gfortran.  Runs in a fresh temporary
 # directory; exits non-zero with a message on any failure.
@@ -28,6 +32,7 @@ N=5
 TIGHT=
 IID0=
 KEEP=
+COLD_ONLY=
 while [ $# -gt 0 ]; do
   case "$1" in
     -n) [ $# -ge 2 ] || { echo "run_auto.sh: -n needs a value" >&2; exit 2; }
@@ -35,7 +40,8 @@ while [ $# -gt 0 ]; do
     --tight) TIGHT=--tight; shift ;;
     --iid0) IID0=--iid0; shift ;;
     --keep) KEEP=1; shift ;;
-    -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
+    --cold-only) COLD_ONLY=1; shift ;;
+    -h|--help) sed -n '2,29p' "$0"; exit 0 ;;
     *) echo "run_auto.sh: unknown argument: $1" >&2; exit 2 ;;
   esac
 done
@@ -62,6 +68,16 @@ cp "$SRC/sfd.c" "$SRC/c.sfd" "$SRC/circ.py" "$SRC/run_sfd.py" "$WORK/"
 cd "$WORK"
 
 now() { date +%s%N; }
+# timed FILE CMD ARG...: run CMD, append its wall time in seconds to FILE
+timed() {
+  if [ -n "${BENCH_WALL:-}" ]; then "$BENCH_WALL" "$@"; return; fi
+  t_file=$1
+  shift
+  t0=$(now)
+  "$@" || return
+  t1=$(now)
+  echo "$t0 $t1" | awk '{ printf "%.6f\n", ($2 - $1) / 1e9 }' >> "$t_file"
+}
 median() { sort -g | awk '{ a[NR] = $1 } END {
   if (NR == 0) exit 1
   if (NR % 2) m = a[(NR + 1) / 2]; else m = (a[NR / 2] + a[NR / 2 + 1]) / 2
@@ -73,14 +89,15 @@ RUNS="main iso_fw iso_bw"
 i=0
 while [ $i -lt "$N" ]; do
   rm -f sfd.o sfd.exe fort.* b.* auto.log
-  t0=$(now)
-  "$PY" run_sfd.py run $TIGHT $IID0 > summary.txt 2> err.txt \
+  timed t_cold "$PY" run_sfd.py run $TIGHT $IID0 > summary.txt 2> err.txt \
     || die "AUTO run failed: $(cat err.txt) (log: $WORK/auto.log; use --keep)"
-  t1=$(now)
-  echo "$t0 $t1" | awk '{ printf "%.6f\n", ($2 - $1) / 1e9 }' >> t_cold
   i=$((i + 1))
 done
 grep -q "^gcc" auto.log || die "cold run did not compile sfd.c (see auto.log)"
+if [ -n "$COLD_ONLY" ]; then
+  echo "cold $(tr '\n' ' ' < t_cold)"
+  exit 0
+fi
 cpu=$(awk '/Total Time/ { s += $3 } END { printf "%.4f", s }' auto.log)
 
 # 2. whole process, warm (AUTO reuses sfd.exe)
@@ -88,11 +105,8 @@ cpu=$(awk '/Total Time/ { s += $3 } END { printf "%.4f", s }' auto.log)
 i=0
 while [ $i -lt "$N" ]; do
   rm -f fort.* b.* auto.log
-  t0=$(now)
-  "$PY" run_sfd.py run $TIGHT $IID0 > summary.txt 2> err.txt \
+  timed t_warm "$PY" run_sfd.py run $TIGHT $IID0 > summary.txt 2> err.txt \
     || die "AUTO run failed: $(cat err.txt)"
-  t1=$(now)
-  echo "$t0 $t1" | awk '{ printf "%.6f\n", ($2 - $1) / 1e9 }' >> t_warm
   i=$((i + 1))
 done
 if grep -q "^gcc" auto.log; then die "warm run recompiled sfd.c"; fi
