@@ -393,6 +393,25 @@ static raster *canvas_for(gp_painter *p, const gp_figure *f) {
   return p->canvas;
 }
 
+/* rows of pixels into the PNG's code */
+static int to_png(void *ctx, const uint8_t *rows, int y0, int n) {
+  (void)y0;
+  return png_rows_add(ctx, rows, n);
+}
+
+/* The picture drawn on R, in bands of rows as they are coded, written to
+ * OUT as a PNG: 0, or -1 with errno set. */
+static int write_png(raster *r, FILE *out) {
+  enum { BAND = 64 }; /* rows: 140 kB of band for 1100-pixel rows */
+  png_rows *s = png_rows_new(r->w, r->h);
+  if (!s) return -1;
+  const int rc = raster_render(r, BAND, to_png, s);
+  if (rc == -1 && !errno) errno = ENOMEM;
+  const int bad = rc != 0 || png_rows_write(s, out, r->pal, r->npal) != 0;
+  png_rows_free(s);
+  return bad ? -1 : 0;
+}
+
 int gp_draw_png(gp_painter *p, const gp_figure *f, const char *dir, const char *path,
                 char *err, size_t len) {
   gp_points *pts = NULL;
@@ -412,8 +431,7 @@ int gp_draw_png(gp_painter *p, const gp_figure *f, const char *dir, const char *
   if (rc != 0) return rc;
   FILE *out = fopen(path, "wb");
   int werr = 0;
-  if (!out || png_write_indexed(out, r->px, r->w, r->h, r->pal, r->npal) != 0)
-    werr = errno ? errno : EIO;
+  if (!out || write_png(r, out) != 0) werr = errno ? errno : EIO;
   if (out && fclose(out) != 0 && !werr) werr = errno ? errno : EIO;
   if (werr) {
     snprintf(err, len, "%s", strerror(werr));

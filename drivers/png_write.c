@@ -537,26 +537,128 @@ int png_write_rgb(FILE *f, const uint32_t *pix, int w, int h) {
   return r;
 }
 
+/* ---- palette images coded row by row, the palette given at the end */
+
+struct png_rows {
+  png_enc *e;
+  bitw b;     /* the DEFLATE block's bits, in z */
+  uint8_t *z; /* the zlib stream so far */
+  size_t cap; /* bytes of z */
+  int w, h, y; /* size; rows coded */
+};
+
+/* the most bytes one row's code takes, with the bit writer's 8 of slack */
+static size_t row_room(size_t w) { return (1 + w) * 9 / 8 + 32; }
+
+png_rows *png_rows_new(int w, int h) {
+  if (!size_ok(w, h)) {
+    errno = EINVAL;
+    return NULL;
+  }
+  png_rows *s = calloc(1, sizeof *s);
+  png_enc *e = s ? enc_new(NULL, (size_t)w + 1) : NULL; /* one row's runs at a time */
+  if (!e) {
+    free(s);
+    errno = ENOMEM;
+    return NULL;
+  }
+  s->e = e;
+  s->w = w;
+  s->h = h;
+  s->cap = 4096 + 2 * row_room((size_t)w);
+  s->z = malloc(s->cap);
+  if (!s->z) {
+    png_rows_free(s);
+    errno = ENOMEM;
+    return NULL;
+  }
+  tables_init(e, 1);
+  e->rows_kept = e->nruns = 0;
+  e->s1 = 1;
+  e->s2 = 0;
+  s->z[0] = 0x78; /* deflate, 32 KiB window; FLEVEL 0, no dictionary */
+  s->z[1] = 0x01; /* so that 0x7801 % 31 == 0 */
+  s->b.p = s->z + 2;
+  put(&s->b, PACK(3, 3)); /* BFINAL = 1, BTYPE = 01 (fixed Huffman) */
+  return s;
+}
+
+void png_rows_free(png_rows *s) {
+  if (!s) return;
+  if (s->e) enc_free(s->e);
+  free(s->z);
+  free(s);
+}
+
+/* room in z for one more row's code (and the stream's end) */
+static int rows_room(png_rows *s) {
+  const size_t used = (size_t)(s->b.p - s->z), need = row_room((size_t)s->w);
+  if (used + need <= s->cap) return 0;
+  size_t cap = 2 * s->cap;
+  while (cap < used + need) cap *= 2;
+  uint8_t *z = realloc(s->z, cap);
+  if (!z) {
+    errno = ENOMEM;
+    return -1;
+  }
+  s->z = z;
+  s->b.p = z + used;
+  s->cap = cap;
+  return 0;
+}
+
+int png_rows_add(png_rows *s, const uint8_t *idx, int n) {
+  if (!s || !idx || n < 0 || n > s->h - s->y) {
+    errno = EINVAL;
+    return -1;
+  }
+  for (int j = 0; j < n; ++j) {
+    if (rows_room(s)) return -1;
+    split_row8(idx + (size_t)j * (size_t)s->w, (size_t)s->w, s->e->runs);
+    row_palette(s->e, &s->b, s->e->runs, (size_t)s->w);
+  }
+  s->y += n;
+  return 0;
+}
+
+int png_rows_write(png_rows *s, FILE *f, const uint32_t *pal, int npal) {
+  if (!s || !f || !pal || npal < 1 || npal > 256 || s->y != s->h) {
+    errno = EINVAL;
+    return -1;
+  }
+  png_enc *e = s->e;
+  e->f = f;
+  e->ncol = (unsigned)npal;
+  for (int i = 0; i < npal; ++i) e->pal[i] = pal[i] & RGB_MASK;
+  /* the end of the block and the Adler-32 (row_room left space for them) */
+  bitw b = s->b;
+  put(&b, e->lit[256]);
+  b.p += b.n > 0; /* the last, incomplete byte (already stored) */
+  put32be(b.p, (uint32_t)(e->s2 << 16 | e->s1));
+  const size_t len = (size_t)(b.p + 4 - s->z);
+  if (!e->buf && !(e->buf = malloc(8 + IDAT_CAP + 4))) {
+    errno = ENOMEM;
+    return -1;
+  }
+  if (put_head(e, s->w, s->h, 1)) return -1;
+  for (size_t at = 0; at < len; at += IDAT_CAP) {
+    const size_t n = len - at < IDAT_CAP ? len - at : IDAT_CAP;
+    memcpy(e->buf + 8, s->z + at, n);
+    if (idat_flush(e, e->buf + 8 + n)) return -1;
+  }
+  if (put_chunk(e, "IEND", NULL, 0)) return -1;
+  return put_flush(f);
+}
+
 int png_write_indexed(FILE *f, const uint8_t *idx, int w, int h, const uint32_t *pal,
                       int npal) {
   if (!f || !idx || !pal || !size_ok(w, h) || npal < 1 || npal > 256) {
     errno = EINVAL;
     return -1;
   }
-  png_enc *e = enc_new(f, (size_t)w + 1); /* one row's runs at a time */
-  if (!e) return -1;
-  e->ncol = (unsigned)npal;
-  for (int i = 0; i < npal; ++i) e->pal[i] = pal[i] & RGB_MASK;
-  e->rows_kept = e->nruns = 0;
-  e->buf = malloc(8 + IDAT_CAP + (1 + (size_t)w) * 9 / 8 + 32);
-  int r = -1;
-  if (!e->buf) {
-    errno = ENOMEM;
-  } else {
-    tables_init(e, 1);
-    if (put_head(e, w, h, 1) == 0 && put_image(e, NULL, idx, (size_t)w, (size_t)h, 1) == 0)
-      r = put_flush(f);
-  }
-  enc_free(e);
+  png_rows *s = png_rows_new(w, h);
+  if (!s) return -1;
+  const int r = png_rows_add(s, idx, h) || png_rows_write(s, f, pal, npal) ? -1 : 0;
+  png_rows_free(s);
   return r;
 }

@@ -23,4 +23,15 @@ int png_write_rgb(FILE *f, const uint32_t *pix, int w, int h);
 int png_write_indexed(FILE *f, const uint8_t *idx, int w, int h, const uint32_t *pal,
                       int npal);
 
+/* The same, coded as the rows come (raster.h draws a picture in bands)
+ * and written with the palette, which is complete only at the end: NEW
+ * (NULL with errno EINVAL or ENOMEM), ADD N more rows of W palette
+ * indices, WRITE once all H rows are in (then the palette: every index
+ * < NPAL), FREE.  ADD and WRITE return 0, or -1 with errno set. */
+typedef struct png_rows png_rows;
+png_rows *png_rows_new(int w, int h);
+int png_rows_add(png_rows *s, const uint8_t *idx, int n);
+int png_rows_write(png_rows *s, FILE *f, const uint32_t *pal, int npal);
+void png_rows_free(png_rows *s); /* accepts NULL */
+
 #endif

@@ -1,58 +1,45 @@
-/* drivers/raster.c — the canvas of raster.h.  A shape's coverage of each
- * pixel is the box filter of its distance: a pixel whose centre lies d from
- * a stroke of half-width hw is covered min(1, max(0, hw + 0.5 - d)) (the
- * usual one-pixel ramp of distance-based anti-aliasing).  Coverage is kept
- * per shape as the maximum over its parts, in cov[], with the pixels it
- * touched listed, and blended into the picture once (flush).
+/* drivers/raster.c — the canvas of raster.h: each shape is recorded with
+ * the clip it was given and the rows it can reach; raster_render then
+ * draws the record band by band (raster_draw.c), each band only the
+ * shapes that reach it, cut to the band, and hands the band's rows on.
+ * The palette is built as the bands are drawn, so it is complete only
+ * when the last band is (the PNG writes it after the image's data).
  * SPDX-License-Identifier: BSD-3-Clause */
-#define _DEFAULT_SOURCE /* MAP_ANONYMOUS, MAP_POPULATE */
 #include "raster.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
 
-static int colour_index(raster *r, uint32_t c);
+#include "raster_impl.h"
 
-/* fmin and fmax of numbers known not to be NaN, inline */
-static inline double lesser(double a, double b) { return a < b ? a : b; }
-static inline double greater(double a, double b) { return a > b ? a : b; }
+typedef enum op_kind { OP_POLYLINE, OP_DISC, OP_RING, OP_RECT, OP_MASK } op_kind;
 
-/* N zeroed bytes, mapped at once: a picture's canvas is touched all over,
- * and a page fault each of its 400 pages cost more than drawing it. */
-static void *zeroed_pages(size_t n) {
-#if defined(MAP_ANONYMOUS) && defined(MAP_POPULATE)
-  void *p = mmap(NULL, n, PROT_READ | PROT_WRITE,
-                 MAP_PRIVATE | MAP_ANONYMOUS | MAP_POPULATE, -1, 0);
-  return p == MAP_FAILED ? NULL : p;
-#else
-  return calloc(n, 1);
-#endif
-}
-
-static void free_pages(void *p, size_t n) {
-#if defined(MAP_ANONYMOUS) && defined(MAP_POPULATE)
-  if (p) munmap(p, n);
-#else
-  (void)n;
-  free(p);
-#endif
-}
+/* A recorded shape: its kind and colour, the clip it was drawn with, the
+ * rows it can reach (j0..j1: none when j0 > j1), its numbers (a polyline's
+ * x[n], y[n] and dash[ndash] at nums + at; a mask's bytes at bytes + at)
+ * and its scalars v[] (polyline: width; disc: cx, cy, radius; ring: cx,
+ * cy, radius, width; rectangle: x0, y0, x1, y1; mask: x, y, w, h). */
+struct raster_op {
+  op_kind kind;
+  uint32_t rgb;
+  double clip[4];
+  int j0, j1;
+  size_t at, n;
+  int ndash;
+  double v[4];
+};
 
 raster *raster_new(int w, int h, uint32_t bg) {
   if (w < 1 || h < 1 || w > 16384 || h > 16384) return NULL;
   raster *r = calloc(1, sizeof *r);
   if (!r) return NULL;
-  const size_t n = (size_t)w * (size_t)h;
   r->w = w;
   r->h = h;
-  r->px = zeroed_pages(2 * n); /* the pixels, then the coverage */
-  r->cov = r->px ? r->px + n : NULL;
   r->cap = 4096;
   r->touch = malloc(r->cap * sizeof *r->touch);
-  if (!r->px || !r->touch) {
-    raster_free(r);
+  if (!r->touch) {
+    free(r);
     return NULL;
   }
   raster_clear(r, bg);
@@ -60,18 +47,21 @@ raster *raster_new(int w, int h, uint32_t bg) {
 }
 
 void raster_clear(raster *r, uint32_t bg) {
-  if (r->npal > 1 || r->ntouch) memset(r->px, 0, (size_t)r->w * (size_t)r->h);
-  memset(r->slot, 0xff, sizeof r->slot);
-  r->npal = 0;
-  r->ntouch = 0;
+  r->bg = bg;
+  r->nops = r->nnums = r->nbytes = 0;
+  r->failed = 0;
   raster_clip_all(r);
-  (void)colour_index(r, bg); /* index 0: the zeroed pixels are background */
 }
 
 void raster_free(raster *r) {
   if (!r) return;
-  free_pages(r->px, 2 * (size_t)r->w * (size_t)r->h);
+  free(r->px);
+  free(r->cov);
   free(r->touch);
+  free(r->ops);
+  free(r->nums);
+  free(r->bytes);
+  free(r->all);
   free(r);
 }
 
@@ -84,239 +74,66 @@ void raster_set_clip(raster *r, double x0, double y0, double x1, double y1) {
 
 void raster_clip_all(raster *r) { raster_set_clip(r, 0, 0, r->w, r->h); }
 
-static uint32_t blend(uint32_t old, uint32_t ink, unsigned a) {
-  uint32_t out = 0;
-  for (int s = 0; s <= 16; s += 8) {
-    unsigned o = (old >> s) & 255u, k = (ink >> s) & 255u;
-    out |= ((k * a + o * (255u - a) + 127u) / 255u) << s;
-  }
-  return out;
+/* ---- the record ---------------------------------------------------------- */
+
+/* Room for N more items of SIZE bytes in *P (*len used, *cap allocated). */
+static int grow(void **p, size_t *cap, size_t len, size_t n, size_t size) {
+  if (len + n <= *cap) return 0;
+  size_t c = *cap ? 2 * *cap : 256;
+  while (c < len + n) c *= 2;
+  void *q = realloc(*p, c * size);
+  if (!q) return -1;
+  *p = q;
+  *cap = c;
+  return 0;
 }
 
-/* The palette index of colour C: found, added, or (the palette full) the
- * nearest colour's. */
-static int colour_index(raster *r, uint32_t c) {
-  const size_t mask = sizeof r->slot / sizeof *r->slot - 1;
-  size_t h = (c * 2654435761u) >> 22 & mask;
-  for (; r->slot[h] >= 0; h = (h + 1) & mask)
-    if (r->pal[r->slot[h]] == c) return r->slot[h];
-  if (r->npal < 256) {
-    r->pal[r->npal] = c;
-    r->slot[h] = (int16_t)r->npal;
-    return r->npal++;
+/* A new shape of KIND and colour RGB reaching rows ylo..yhi (pixels, any
+ * order of magnitude), with the current clip; NULL when out of memory or
+ * when it reaches no row of the clip. */
+static raster_op *add_op(raster *r, op_kind kind, uint32_t rgb, double ylo, double yhi) {
+  const double lo = fmax(ylo, r->clip[1]), hi = fmin(yhi, r->clip[3]);
+  if (!(lo <= hi)) return NULL;
+  if (grow((void **)&r->ops, &r->opcap, r->nops, 1, sizeof *r->ops)) {
+    r->failed = 1;
+    return NULL;
   }
-  int best = 0;
-  long bd = -1;
-  for (int i = 0; i < r->npal; i++) {
-    long d = 0;
-    for (int s = 0; s <= 16; s += 8) {
-      long e = (long)((c >> s) & 255u) - (long)((r->pal[i] >> s) & 255u);
-      d += e * e;
-    }
-    if (bd < 0 || d < bd) bd = d, best = i;
-  }
-  return best;
-}
-
-/* Keep coverage C (0..1) of pixel (i, j), inside the canvas and the clip,
- * if it exceeds what the shape has there already. */
-static inline void cover_in(raster *r, int i, int j, double c) {
-  if (!(c > 0)) return; /* none (a negative width covers nothing) */
-  const size_t k = (size_t)j * (size_t)r->w + (size_t)i;
-  /* 16 levels of coverage (17 with none): shades enough for the eye, and a
-   * picture's inks, their shades and where two meet stay within the
-   * palette's 256 colours */
-  const unsigned v = c >= 1 ? 255u : 17u * (unsigned)(c * 15.0 + 0.5);
-  if (v <= r->cov[k]) return;
-  if (r->cov[k] == 0) {
-    if (r->ntouch == r->cap) {
-      uint32_t *t = realloc(r->touch, 2 * r->cap * sizeof *t);
-      if (!t) return; /* out of memory: the pixel stays as it was */
-      r->touch = t;
-      r->cap *= 2;
-    }
-    r->touch[r->ntouch++] = (uint32_t)k;
-  }
-  r->cov[k] = (uint8_t)v;
-}
-
-/* The pixels whose centres lie in the clip: columns i0..i1, rows j0..j1. */
-static void clip_pixels(const raster *r, int *i0, int *i1, int *j0, int *j1) {
-  *i0 = (int)ceil(r->clip[0] - 0.5);
-  *i1 = (int)floor(r->clip[2] - 0.5);
-  *j0 = (int)ceil(r->clip[1] - 0.5);
-  *j1 = (int)floor(r->clip[3] - 0.5);
-}
-
-/* cover_in for a pixel anywhere: nothing outside the canvas or the clip */
-static void cover(raster *r, int i, int j, double c) {
-  int i0, i1, j0, j1;
-  clip_pixels(r, &i0, &i1, &j0, &j1);
-  if (c > 0 && i >= i0 && i <= i1 && j >= j0 && j <= j1) cover_in(r, i, j, c);
-}
-
-/* Blend the shape's coverage in RGB and clear it.  Neighbouring pixels
- * mostly share their colour and coverage: the last blend is reused. */
-static void flush(raster *r, uint32_t rgb) {
-  int last_old = -1, last_new = 0;
-  unsigned last_a = 0;
-  for (size_t t = 0; t < r->ntouch; t++) {
-    const uint32_t k = r->touch[t];
-    const unsigned a = r->cov[k];
-    if (r->px[k] != last_old || a != last_a) {
-      last_old = r->px[k];
-      last_a = a;
-      last_new = colour_index(r, blend(r->pal[last_old], rgb, a));
-    }
-    r->px[k] = (uint8_t)last_new;
-    r->cov[k] = 0;
-  }
-  r->ntouch = 0;
-}
-
-static int clampi(double v, int lo, int hi) {
-  if (!(v > lo)) return lo;
-  if (v > hi) return hi;
-  return (int)v;
-}
-
-/* A line one pixel wide along a row or column of pixel centres (the
- * frame, ticks, the grid's dots) covers the pixels it runs through by the
- * length it runs in each: done here without the distance of each pixel.
- * 0 for any other segment. */
-static int cover_crisp(raster *r, double x0, double y0, double x1, double y1,
-                       double hw) {
-  const int vertical = x0 == x1, horizontal = y0 == y1;
-  const double fixed = vertical ? x0 : y0;
-  if (hw != 0.5 || vertical == horizontal || fixed - floor(fixed) != 0.5) return 0;
-  int i0, i1, j0, j1;
-  clip_pixels(r, &i0, &i1, &j0, &j1);
-  const int k = (int)floor(fixed);
-  const double lo = vertical ? fmin(y0, y1) : fmin(x0, x1);
-  const double hi = vertical ? fmax(y0, y1) : fmax(x0, x1);
-  if (vertical ? (k < i0 || k > i1) : (k < j0 || k > j1)) return 1;
-  const int m0 = vertical ? j0 : i0, m1 = vertical ? j1 : i1;
-  for (int m = clampi(floor(lo), m0, m1); m <= clampi(ceil(hi), m0, m1); m++) {
-    const double c = fmin(m + 1.0, hi) - fmax((double)m, lo);
-    if (c > 0) cover_in(r, vertical ? k : m, vertical ? m : k, c);
-  }
-  return 1;
-}
-
-/* The coverage of a round-capped segment of half-width hw: a pixel whose
- * centre lies d from it is covered R - d, R = hw + 0.5.  Rows (steep
- * segments) or columns (shallow ones) are scanned over the band where the
- * segment crosses them, not over its whole bounding box. */
-static void cover_segment(raster *r, double x0, double y0, double x1, double y1,
-                          double hw) {
-  if (cover_crisp(r, x0, y0, x1, y1, hw)) return;
-  const double R = hw + 0.5, R2 = R * R, dx = x1 - x0, dy = y1 - y0;
-  const double l2 = dx * dx + dy * dy, il2 = l2 > 0 ? 1.0 / l2 : 0.0;
-  const int steep = fabs(dy) >= fabs(dx);
-  int ci0, ci1, cj0, cj1;
-  clip_pixels(r, &ci0, &ci1, &cj0, &cj1);
-  /* scan along the major axis a; the minor axis b spans a band */
-  const double a0 = steep ? lesser(y0, y1) : lesser(x0, x1);
-  const double a1 = steep ? greater(y0, y1) : greater(x0, x1);
-  const double b0 = steep ? lesser(x0, x1) : lesser(y0, y1);
-  const double b1 = steep ? greater(x0, x1) : greater(y0, y1);
-  const double da = steep ? dy : dx, db = steep ? dx : dy;
-  const double as = steep ? y0 : x0, bs = steep ? x0 : y0;
-  const double slope = fabs(da) > 0 ? db / da : 0.0;
-  const double half = fabs(da) > 0 ? R * sqrt(l2) / fabs(da) : R;
-  const int alo = steep ? cj0 : ci0, ahi = steep ? cj1 : ci1;
-  const int blo = steep ? ci0 : cj0, bhi = steep ? ci1 : cj1;
-  if (alo > ahi || blo > bhi) return;
-  for (int a = clampi(floor(a0 - R), alo, ahi); a <= clampi(ceil(a1 + R), alo, ahi); a++) {
-    const double ac = a + 0.5, bc = bs + (ac - as) * slope;
-    const double lo = greater(b0 - R, bc - half - 1), hi = lesser(b1 + R, bc + half + 1);
-    for (int b = clampi(floor(lo), blo, bhi); b <= clampi(ceil(hi), blo, bhi); b++) {
-      const int i = steep ? b : a, j = steep ? a : b;
-      const double px = i + 0.5 - x0, py = j + 0.5 - y0;
-      double u = (px * dx + py * dy) * il2;
-      u = u < 0 ? 0 : u > 1 ? 1 : u;
-      const double ex = px - u * dx, ey = py - u * dy, d2 = ex * ex + ey * ey;
-      if (d2 < R2) cover_in(r, i, j, R - sqrt(d2));
-    }
-  }
-}
-
-/* The "on" pieces of a dashed segment from (x0, y0) to (x1, y1); *phase is
- * the position in the pattern (of total length period) where it starts. */
-/* The part [*t0, *t1] (of [0, 1]) of the segment (x0, y0)-(x1, y1) that
- * lies within M pixels of the clip (Liang and Barsky's clipping); 0 when
- * none does. */
-static int clip_segment(const raster *r, double x0, double y0, double x1, double y1,
-                        double m, double *t0, double *t1) {
-  const double dx = x1 - x0, dy = y1 - y0;
-  const double p[4] = {-dx, dx, -dy, dy};
-  const double q[4] = {x0 - (r->clip[0] - m), r->clip[2] + m - x0, y0 - (r->clip[1] - m),
-                       r->clip[3] + m - y0};
-  *t0 = 0;
-  *t1 = 1;
-  for (int k = 0; k < 4; k++) {
-    if (p[k] == 0) {
-      if (q[k] < 0) return 0;
-      continue;
-    }
-    const double t = q[k] / p[k];
-    if (p[k] < 0 && t > *t0) *t0 = t;
-    if (p[k] > 0 && t < *t1) *t1 = t;
-  }
-  return *t0 < *t1;
-}
-
-/* The "on" pieces of a dashed segment from (x0, y0) to (x1, y1); *phase is
- * the position in the pattern (of total length period) where it starts.
- * Only its part near the clip is walked (a segment of a curve running far
- * out of the frame would take as many pieces as its length). */
-static void cover_dashed(raster *r, double x0, double y0, double x1, double y1,
-                         double hw, const double *dash, int ndash, double period,
-                         double *phase) {
-  const double L = hypot(x1 - x0, y1 - y0);
-  double t0, t1;
-  if (!isfinite(L) || !clip_segment(r, x0, y0, x1, y1, hw + 1, &t0, &t1)) {
-    *phase = isfinite(L) ? fmod(*phase + L, period) : 0;
-    return;
-  }
-  double s = t0 * L;
-  const double end = t1 * L;
-  *phase = fmod(*phase + s, period);
-  while (s < end) {
-    double p = fmod(*phase, period), acc = 0;
-    int k = 0;
-    while (k < ndash - 1 && p >= acc + dash[k]) acc += dash[k++];
-    const double left = acc + dash[k] - p, step = fmin(left, end - s);
-    if (k % 2 == 0 && step > 0) {
-      const double u0 = s / L, u1 = (s + step) / L;
-      cover_segment(r, x0 + u0 * (x1 - x0), y0 + u0 * (y1 - y0),
-                    x0 + u1 * (x1 - x0), y0 + u1 * (y1 - y0), hw);
-    }
-    s += step;
-    *phase = p + step;
-    if (step <= 0) break;
-  }
-  *phase = fmod(*phase + (L - end), period);
+  raster_op *op = &r->ops[r->nops++];
+  memset(op, 0, sizeof *op);
+  op->kind = kind;
+  op->rgb = rgb;
+  memcpy(op->clip, r->clip, sizeof op->clip);
+  op->j0 = (int)floor(lo) - 1;
+  op->j1 = (int)ceil(hi) + 1;
+  return op;
 }
 
 void raster_polyline(raster *r, const double *x, const double *y, size_t n,
                      double width, const double *dash, int ndash, uint32_t rgb) {
-  double period = 0, phase = 0;
-  for (int k = 0; k < ndash; k++) period += dash[k];
-  const int dashed = ndash >= 2 && period > 0;
-  const double hw = 0.5 * width;
-  for (size_t i = 0; i + 1 < n; i++) {
-    if (!isfinite(x[i]) || !isfinite(y[i]) || !isfinite(x[i + 1]) ||
-        !isfinite(y[i + 1]))
-      continue;
-    if (dashed)
-      cover_dashed(r, x[i], y[i], x[i + 1], y[i + 1], hw, dash, ndash, period, &phase);
-    else
-      cover_segment(r, x[i], y[i], x[i + 1], y[i + 1], hw);
+  double ylo = INFINITY, yhi = -INFINITY;
+  for (size_t i = 0; i < n; i++)
+    if (isfinite(x[i]) && isfinite(y[i])) {
+      ylo = fmin(ylo, y[i]);
+      yhi = fmax(yhi, y[i]);
+    }
+  const double reach = fabs(0.5 * width) + 1.0;
+  if (ndash < 0) ndash = 0;
+  if (grow((void **)&r->nums, &r->numcap, r->nnums, 2 * n + (size_t)ndash, sizeof *r->nums)) {
+    r->failed = 1;
+    return;
   }
-  if (n == 1 && isfinite(x[0]) && isfinite(y[0]))
-    cover_segment(r, x[0], y[0], x[0], y[0], hw);
-  flush(r, rgb);
+  raster_op *op = add_op(r, OP_POLYLINE, rgb, ylo - reach, yhi + reach);
+  if (!op) return;
+  op->at = r->nnums;
+  op->n = n;
+  op->ndash = ndash;
+  op->v[0] = width;
+  if (n) {
+    memcpy(r->nums + r->nnums, x, n * sizeof *x);
+    memcpy(r->nums + r->nnums + n, y, n * sizeof *y);
+  }
+  if (ndash) memcpy(r->nums + r->nnums + 2 * n, dash, (size_t)ndash * sizeof *dash);
+  r->nnums += 2 * n + (size_t)ndash;
 }
 
 void raster_line(raster *r, double x0, double y0, double x1, double y1,
@@ -326,43 +143,33 @@ void raster_line(raster *r, double x0, double y0, double x1, double y1,
 }
 
 void raster_disc(raster *r, double cx, double cy, double radius, uint32_t rgb) {
-  cover_segment(r, cx, cy, cx, cy, radius); /* the ramp centred on the edge */
-  flush(r, rgb);
+  const double reach = fabs(radius) + 1.0;
+  raster_op *op = add_op(r, OP_DISC, rgb, cy - reach, cy + reach);
+  if (!op) return;
+  op->v[0] = cx;
+  op->v[1] = cy;
+  op->v[2] = radius;
 }
 
 void raster_ring(raster *r, double cx, double cy, double radius, double width,
                  uint32_t rgb) {
-  const double R = radius + 0.5 * width + 0.5, hw = 0.5 * width;
-  int i0, i1, j0, j1;
-  clip_pixels(r, &i0, &i1, &j0, &j1);
-  for (int j = clampi(floor(cy - R), j0, j1); j <= clampi(ceil(cy + R), j0, j1); j++)
-    for (int i = clampi(floor(cx - R), i0, i1); i <= clampi(ceil(cx + R), i0, i1); i++) {
-      const double d = hypot(i + 0.5 - cx, j + 0.5 - cy);
-      const double c = hw + 0.5 - fabs(d - radius);
-      if (c > 0) cover_in(r, i, j, c);
-    }
-  flush(r, rgb);
-}
-
-/* the length of [a, a + 1] inside [lo, hi] */
-static double overlap(double a, double lo, double hi) {
-  return greater(0.0, lesser(a + 1, hi) - greater(a, lo));
+  const double reach = fabs(radius) + fabs(0.5 * width) + 1.0;
+  raster_op *op = add_op(r, OP_RING, rgb, cy - reach, cy + reach);
+  if (!op) return;
+  op->v[0] = cx;
+  op->v[1] = cy;
+  op->v[2] = radius;
+  op->v[3] = width;
 }
 
 void raster_fill_rect(raster *r, double x0, double y0, double x1, double y1,
                       uint32_t rgb) {
-  const double xl = fmin(x0, x1), xh = fmax(x0, x1);
-  const double yl = fmin(y0, y1), yh = fmax(y0, y1);
-  int i0, i1, j0, j1;
-  clip_pixels(r, &i0, &i1, &j0, &j1);
-  for (int j = clampi(floor(yl), j0, j1); j <= clampi(ceil(yh), j0, j1); j++) {
-    const double cy = overlap(j, yl, yh);
-    for (int i = clampi(floor(xl), i0, i1); i <= clampi(ceil(xh), i0, i1); i++) {
-      const double c = cy * overlap(i, xl, xh);
-      if (c > 0) cover_in(r, i, j, c);
-    }
-  }
-  flush(r, rgb);
+  raster_op *op = add_op(r, OP_RECT, rgb, fmin(y0, y1), fmax(y0, y1));
+  if (!op) return;
+  op->v[0] = x0;
+  op->v[1] = y0;
+  op->v[2] = x1;
+  op->v[3] = y1;
 }
 
 void raster_stroke_rect(raster *r, double x0, double y0, double x1, double y1,
@@ -376,9 +183,106 @@ void raster_stroke_rect(raster *r, double x0, double y0, double x1, double y1,
 
 void raster_mask(raster *r, const uint8_t *mask, int w, int h, int stride,
                  int x, int y, uint32_t rgb) {
+  if (w < 1 || h < 1) return;
+  const size_t size = (size_t)w * (size_t)h;
+  if (grow((void **)&r->bytes, &r->bytecap, r->nbytes, size, 1)) {
+    r->failed = 1;
+    return;
+  }
+  raster_op *op = add_op(r, OP_MASK, rgb, y, (double)y + h);
+  if (!op) return;
+  op->at = r->nbytes;
+  op->v[0] = x;
+  op->v[1] = y;
+  op->v[2] = w;
+  op->v[3] = h;
   for (int j = 0; j < h; j++)
-    for (int i = 0; i < w; i++)
-      if (mask[(size_t)j * (size_t)stride + (size_t)i])
-        cover(r, x + i, y + j, mask[(size_t)j * (size_t)stride + (size_t)i] / 255.0);
-  flush(r, rgb);
+    memcpy(r->bytes + r->nbytes + (size_t)j * (size_t)w, mask + (size_t)j * (size_t)stride,
+           (size_t)w);
+  r->nbytes += size;
+}
+
+/* ---- drawing the record ---------------------------------------------------- */
+
+static void draw_op(raster *r, const raster_op *op) {
+  const double *v = op->v;
+  switch (op->kind) {
+  case OP_POLYLINE: {
+    const double *x = r->nums + op->at, *y = x + op->n;
+    band_polyline(r, x, y, op->n, v[0], op->ndash ? y + op->n : NULL, op->ndash, op->rgb);
+    break;
+  }
+  case OP_DISC: band_disc(r, v[0], v[1], v[2], op->rgb); break;
+  case OP_RING: band_ring(r, v[0], v[1], v[2], v[3], op->rgb); break;
+  case OP_RECT: band_fill_rect(r, v[0], v[1], v[2], v[3], op->rgb); break;
+  case OP_MASK:
+    band_mask(r, r->bytes + op->at, (int)v[2], (int)v[3], (int)v[2], (int)v[0], (int)v[1],
+              op->rgb);
+    break;
+  }
+}
+
+/* Draw the record on the band of rows row0 .. row0 + rows - 1. */
+static void draw_band(raster *r, int row0, int rows) {
+  r->row0 = row0;
+  r->rows = rows;
+  memset(r->px, 0, (size_t)rows * (size_t)r->w); /* palette index 0: background */
+  for (size_t k = 0; k < r->nops; k++) {
+    const raster_op *op = &r->ops[k];
+    if (op->j1 < row0 || op->j0 >= row0 + rows) continue;
+    r->clip[0] = op->clip[0];
+    r->clip[1] = fmax(op->clip[1], (double)row0);
+    r->clip[2] = op->clip[2];
+    r->clip[3] = fmin(op->clip[3], (double)(row0 + rows));
+    draw_op(r, op);
+  }
+}
+
+/* Band buffers of ROWS rows; -1 when out of memory. */
+static int band_memory(raster *r, int rows) {
+  const size_t need = (size_t)rows * (size_t)r->w;
+  if (need <= r->band_cap) return 0;
+  uint8_t *px = malloc(need), *cov = calloc(need, 1);
+  if (!px || !cov) {
+    free(px);
+    free(cov);
+    return -1;
+  }
+  free(r->px);
+  free(r->cov);
+  r->px = px;
+  r->cov = cov;
+  r->band_cap = need;
+  return 0;
+}
+
+int raster_render(raster *r, int band,
+                  int (*sink)(void *ctx, const uint8_t *rows, int y0, int n), void *ctx) {
+  if (band < 1) band = 1;
+  if (band > r->h) band = r->h;
+  if (r->failed || band_memory(r, band)) return -1;
+  const double clip[4] = {r->clip[0], r->clip[1], r->clip[2], r->clip[3]};
+  memset(r->slot, 0xff, sizeof r->slot);
+  r->npal = 0;
+  r->ntouch = 0;
+  (void)band_colour_index(r, r->bg); /* index 0: the cleared band is background */
+  int rc = 0;
+  for (int y = 0; y < r->h && !rc; y += band) {
+    const int rows = r->h - y < band ? r->h - y : band;
+    draw_band(r, y, rows);
+    rc = sink(ctx, r->px, y, rows);
+  }
+  memcpy(r->clip, clip, sizeof clip); /* the recording's clip, for shapes to come */
+  return rc;
+}
+
+static int into_all(void *ctx, const uint8_t *rows, int y0, int n) {
+  raster *r = ctx;
+  memcpy(r->all + (size_t)y0 * (size_t)r->w, rows, (size_t)n * (size_t)r->w);
+  return 0;
+}
+
+const uint8_t *raster_pixels(raster *r) {
+  if (!r->all && !(r->all = malloc((size_t)r->w * (size_t)r->h))) return NULL;
+  return raster_render(r, r->h, into_all, r) ? NULL : r->all;
 }

@@ -72,7 +72,7 @@ sources() {
     auto) echo "$here/fuzz_auto_constants.c $top/lib/run/auto_constants.c $top/lib/run/auto_runfile.c $top/lib/run/runfile.c $top/lib/util/errmsg.c" ;;
     rotorfile) echo "$here/fuzz_rotorfile.c $top/rotor/fe_file.c $top/rotor/fe_sparse.c $top/rotor/fe_matrix.c $top/lib/run/runfile.c $top/lib/util/errmsg.c -lcholmod" ;;
     picture) d=$top/drivers
-      echo "$here/fuzz_picture.c $d/gp_parse.c $d/gp_expr.c $d/gp_data.c $d/gp_axis.c $d/gp_draw.c $d/raster.c $d/raster_text.c $d/png_write.c -I $d -I $work/picture-config $(pkg-config --cflags --libs freetype2)" ;;
+      echo "$here/fuzz_picture.c $d/gp_parse.c $d/gp_expr.c $d/gp_data.c $d/gp_axis.c $d/gp_draw.c $d/raster.c $d/raster_draw.c $d/raster_text.c $d/png_write.c -I $d -I $work/picture-config $(pkg-config --cflags --libs freetype2)" ;;
   esac
 }
 corpus() {

@@ -447,6 +447,46 @@ static void test_indexed(void) {
   if (f) fclose(f);
 }
 
+/* png_rows: rows added in bands of uneven height give the very bytes of
+ * png_write_indexed in one go, also past 64 KiB of code (several IDAT
+ * chunks); writing before the last row, or adding past it, is refused. */
+static void test_rows(void) {
+  uint32_t pal[256];
+  for (int i = 0; i < 256; ++i) pal[i] = rnd32() & 0xFFFFFF;
+  const int w = 300, h = 400; /* noise: ~120 kB of code */
+  uint8_t *idx = malloc((size_t)w * h);
+  for (size_t i = 0; i < (size_t)w * h; ++i) idx[i] = (uint8_t)tap_urand(0, 256);
+  char *one = NULL, *bands = NULL;
+  size_t n1 = 0, n2 = 0;
+  FILE *f = open_memstream(&one, &n1);
+  const int r1 = png_write_indexed(f, idx, w, h, pal, 256);
+  fclose(f);
+  f = open_memstream(&bands, &n2);
+  png_rows *s = png_rows_new(w, h);
+  int r2 = s ? 0 : -1;
+  for (int y = 0, band = 1; !r2 && y < h; y += band, band = band % 7 + 3)
+    r2 = png_rows_add(s, idx + (size_t)y * w, y + band <= h ? band : h - y);
+  r2 = r2 || png_rows_write(s, f, pal, 256);
+  png_rows_free(s);
+  fclose(f);
+  ok(!r1 && !r2 && n1 == n2 && n1 > 65536 && !memcmp(one, bands, n1),
+     "rows in bands of 1..9: the same %zu bytes as in one go", n1);
+  free(one);
+  free(bands);
+  s = png_rows_new(w, h);
+  f = fopen("/dev/null", "w");
+  errno = 0;
+  int early = s && png_rows_add(s, idx, h - 1) == 0 && png_rows_write(s, f, pal, 256) == -1 &&
+              errno == EINVAL;
+  errno = 0;
+  int past = s && png_rows_add(s, idx, 2) == -1 && errno == EINVAL;
+  ok(early && past, "png_rows: writing before the last row and adding past it refused (EINVAL)");
+  ok(png_rows_new(0, 5) == NULL && errno == EINVAL, "png_rows_new(0, 5): NULL, EINVAL");
+  png_rows_free(s);
+  if (f) fclose(f);
+  free(idx);
+}
+
 int main(void) {
   test_small();
   test_lines();
@@ -458,5 +498,6 @@ int main(void) {
   test_big();
   test_errors();
   test_indexed();
+  test_rows();
   return done_testing();
 }

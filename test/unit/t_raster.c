@@ -16,25 +16,55 @@
 #include "raster.h"
 
 /* The ink of the canvas (black on white), in pixels: the sum of 1 - grey. */
-static double ink(const raster *r) {
+static double ink(raster *r) {
+  const uint8_t *px = raster_pixels(r);
   double s = 0;
-  for (size_t k = 0; k < (size_t)r->w * (size_t)r->h; k++)
-    s += 1.0 - (double)(r->pal[r->px[k]] & 0xff) / 255.0;
-  return s;
+  for (size_t k = 0; px && k < (size_t)r->w * (size_t)r->h; k++)
+    s += 1.0 - (double)(r->pal[px[k]] & 0xff) / 255.0;
+  return px ? s : -1;
 }
 
 /* the ink's centre */
-static void centre(const raster *r, double *cx, double *cy) {
+static void centre(raster *r, double *cx, double *cy) {
+  const uint8_t *px = raster_pixels(r);
   double s = 0, sx = 0, sy = 0;
-  for (int j = 0; j < r->h; j++)
+  for (int j = 0; px && j < r->h; j++)
     for (int i = 0; i < r->w; i++) {
-      const double a = 1.0 - (double)(r->pal[r->px[(size_t)j * (size_t)r->w + (size_t)i]] & 0xff) / 255.0;
+      const double a = 1.0 - (double)(r->pal[px[(size_t)j * (size_t)r->w + (size_t)i]] & 0xff) / 255.0;
       s += a;
       sx += a * (i + 0.5);
       sy += a * (j + 0.5);
     }
   *cx = sx / s;
   *cy = sy / s;
+}
+
+/* raster_render's sink: the band's colours into the picture CTX */
+typedef struct picture {
+  raster *r;
+  uint32_t *rgb;
+} picture;
+
+static int into_rgb(void *ctx, const uint8_t *rows, int y0, int n) {
+  picture *p = ctx;
+  for (size_t k = 0; k < (size_t)n * (size_t)p->r->w; k++)
+    p->rgb[(size_t)y0 * (size_t)p->r->w + k] = p->r->pal[rows[k]];
+  return 0;
+}
+
+/* Drawn in bands of BAND rows and drawn whole: the same colour in every
+ * pixel (the palettes' orders may differ). */
+static int same_in_bands(raster *r, int band) {
+  const size_t n = (size_t)r->w * (size_t)r->h;
+  uint32_t *banded = malloc(n * sizeof *banded), *whole = malloc(n * sizeof *whole);
+  picture p = {r, banded};
+  int same = banded && whole && raster_render(r, band, into_rgb, &p) == 0;
+  const uint8_t *px = same ? raster_pixels(r) : NULL;
+  for (size_t k = 0; px && k < n; k++) whole[k] = r->pal[px[k]];
+  for (size_t k = 0; px && k < n && same; k++) same = banded[k] == whole[k];
+  free(banded);
+  free(whole);
+  return same && px;
 }
 
 static void on_alarm(int sig) {
@@ -93,6 +123,25 @@ int main(void) {
   a = ink(r);
   ok(fabs(a - pi * 100) < 0.05 * pi * 100, "a disc on the clip's corner: a quarter inked (%.1f, %.1f)",
      a, pi * 100);
+
+  /* every kind of shape, across bands, clipped and not */
+  raster_clear(r, 0xffffff);
+  raster_disc(r, 100, 100, 33.3, 0xd62728);
+  raster_ring(r, 60, 140, 25, 2, 0x1f4e9c);
+  raster_stroke_rect(r, 10.5, 10.5, 189.5, 189.5, 1, 0);
+  raster_line(r, 10, 50.5, 190, 50.5, 1, dash, 2, 0x808080);
+  raster_set_clip(r, 20, 20, 180, 180);
+  raster_polyline(r, x, y, 5, 2.5, NULL, 0, 0x2ca02c);
+  raster_fill_rect(r, 30.3, 150.7, 170.2, 175.1, 0x9400d3);
+  uint8_t mask[9 * 13];
+  for (int k = 0; k < 9 * 13; k++) mask[k] = (uint8_t)(k * 37);
+  raster_mask(r, mask, 9, 13, 9, 150, 27, 0x000000);
+  raster_clip_all(r);
+  int bands_ok = 1;
+  static const int bands[] = {1, 7, 64, 200};
+  for (size_t b = 0; b < sizeof bands / sizeof *bands; b++) bands_ok &= same_in_bands(r, bands[b]);
+  ok(bands_ok, "discs, rings, rectangles, dashes, polylines and masks, clipped: drawn in bands "
+     "of 1, 7, 64 and 200 rows, every pixel as drawn whole");
   raster_free(r);
   return done_testing();
 }
