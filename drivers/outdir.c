@@ -484,7 +484,11 @@ FILE *cli_outdir_fopen(cli_outdir *d, const char *name) {
     say(d, "cannot write %s: %s", cli_outdir_shown(d, name, s, sizeof s),
               strerror(errno ? errno : ENOMEM));
     d->failed = 1;
+    return NULL;
   }
+  /* written in pieces of 64 KiB, not stdio's 4 KiB: a response's table
+   * in two system calls instead of eighteen */
+  setvbuf(f, NULL, _IOFBF, (size_t)1 << 16);
   return f;
 }
 
