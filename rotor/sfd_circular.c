@@ -146,9 +146,9 @@ static double bracketed_root(const double *c, int deg, double a, double b) {
     }
     if (b - a <= 2.0 * DBL_EPSILON * fmax(fabs(a), fabs(b))) break;
     const double xn = dp != 0.0 ? x - px / dp : a;
+    if (dp != 0.0 && fabs(xn - x) <= 2.0 * DBL_EPSILON * fabs(x)) return xn; /* converged */
     const double width = b - a;
     const int newton = xn > a && xn < b && fabs(xn - x) < 0.5 * width;
-    if (newton && fabs(xn - x) <= 2.0 * DBL_EPSILON * fabs(x)) return xn; /* converged */
     x = newton ? xn : a + 0.5 * width;
     px = poly(c, deg, x, &dp, NULL);
   }
