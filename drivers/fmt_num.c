@@ -139,6 +139,20 @@ int fmt_g(char *out, size_t size, double x, int prec) {
   return len;
 }
 
+int fmt_d(char *out, long v) {
+  char d[24];
+  int n = 0, len = 0;
+  unsigned long u = v < 0 ? 0ul - (unsigned long)v : (unsigned long)v;
+  do {
+    d[n++] = (char)('0' + u % 10);
+    u /= 10;
+  } while (u);
+  if (v < 0) out[len++] = '-';
+  while (n) out[len++] = d[--n];
+  out[len] = '\0';
+  return len;
+}
+
 void fmt_put_e(FILE *f, double x, int prec) {
   char buf[FMT_NUM_SIZE + 16];
   fmt_e(buf, sizeof buf, x, prec);

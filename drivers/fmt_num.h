@@ -17,6 +17,9 @@ int fmt_e(char *out, size_t size, double x, int prec);
 /* ... as snprintf(out, size, "%.*g", prec, x) would */
 int fmt_g(char *out, size_t size, double x, int prec);
 
+/* Write v to out (room for 21 bytes) as "%ld" would; the length. */
+int fmt_d(char *out, long v);
+
 /* fprintf(f, "%.*e", prec, x) and fprintf(f, "%.*g", prec, x) by the above */
 void fmt_put_e(FILE *f, double x, int prec);
 void fmt_put_g(FILE *f, double x, int prec);
