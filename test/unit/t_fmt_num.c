@@ -5,6 +5,7 @@
  * special values, and where rounding carries into a new exponent.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -76,6 +77,16 @@ int main(void) {
     ok(mismatches == 0, "random doubles of kind %d as snprintf (%ld of %ld differ)%s%s", mode,
        mismatches, compared, mismatches ? ": " : "", first_bad);
   }
+  long dbad = 0;
+  char da[32], db[32];
+  static const long edge[] = {0, 1, -1, 9, 10, -10, 99, 100, LONG_MAX, LONG_MIN, LONG_MIN + 1};
+  for (size_t i = 0; i < sizeof edge / sizeof *edge + 100000; i++) {
+    const long v = i < sizeof edge / sizeof *edge ? edge[i] : (long)next();
+    const int la = fmt_d(da, v), lb = snprintf(db, sizeof db, "%ld", v);
+    dbad += la != lb || strcmp(da, db);
+  }
+  ok(dbad == 0, "fmt_d as %%ld: 0, +-1, 9/10, 99/100, LONG_MIN/MAX and 100000 random (%ld differ)",
+     dbad);
   char small[8];
   const int n = fmt_e(small, sizeof small, 1.25, 3);
   ok(n == 9 && !strcmp(small, "1.250e+"), "a buffer too small: snprintf's truncation and length");
