@@ -3,8 +3,10 @@
 # than at every start.  Their sonames are read from a program linked with
 # them (objdump -p: its NEEDED entries); when every one is found,
 # WHIRL_SONAMES_NAME is defined to their ':'-separated list and NAME_LINK
-# is empty, else (or with --disable-lazy-libraries) NAME_LINK is LIBS and
-# the backend is linked as usual.
+# is empty, and WHIRL_DYNLIB_NAME(T, L) declares a table T of the functions
+# L bound from them; else (or with --disable-lazy-libraries) NAME_LINK is
+# LIBS, the backend is linked as usual, and whirl/dynlib.h's
+# WHIRL_DYNLIB_NAME makes T the functions' own addresses.
 # SPDX-License-Identifier: BSD-3-Clause
 AC_DEFUN([WHIRL_LAZY_INIT], [
   AC_ARG_ENABLE([lazy-libraries],
@@ -42,6 +44,8 @@ AC_DEFUN([WHIRL_LAZY], [
     AS_IF([test "x$whirl_sonames" != xnone], [
       AC_DEFINE_UNQUOTED([WHIRL_SONAMES_$1], ["$whirl_sonames"],
         [the libraries of $1, opened at their first use (whirl/dynlib.h)])
+      AC_DEFINE_UNQUOTED([WHIRL_DYNLIB_$1(T, L)], [WHIRL_DYNLIB(T, L, "$whirl_sonames")],
+        [the table T of $1's functions L, bound at their first use (whirl/dynlib.h)])
       $1_LINK=
     ])
   ])

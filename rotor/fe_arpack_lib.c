@@ -19,11 +19,7 @@ extern void dneupd_(const int *rvec, const char *howmny, int *select, double *dr
                     const int *lworkl, int *info, size_t lhowmny, size_t lbmat, size_t lwhich);
 
 #define ARPACK_FUNCS(X) X(dnaupd_) X(dneupd_)
-#ifdef WHIRL_SONAMES_ARPACK
-WHIRL_DYNLIB(arp, ARPACK_FUNCS, WHIRL_SONAMES_ARPACK)
-#else
-WHIRL_DYNLIB_LINKED(arp, ARPACK_FUNCS)
-#endif
+WHIRL_DYNLIB_ARPACK(arp, ARPACK_FUNCS)
 
 int fe_arpack_open(char *msg, size_t len) {
   char why[256];

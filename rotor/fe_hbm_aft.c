@@ -29,11 +29,7 @@
 #define FFTW_FUNCS(X)                                                          \
   X(fftw_malloc) X(fftw_free) X(fftw_plan_many_dft_c2r) X(fftw_plan_many_dft_r2c) \
   X(fftw_execute) X(fftw_destroy_plan)
-#ifdef WHIRL_SONAMES_FFTW3
-WHIRL_DYNLIB(fftw, FFTW_FUNCS, WHIRL_SONAMES_FFTW3)
-#else
-WHIRL_DYNLIB_LINKED(fftw, FFTW_FUNCS)
-#endif
+WHIRL_DYNLIB_FFTW3(fftw, FFTW_FUNCS)
 
 static int is_film(whirl_fe_nl_kind k) {
   return k == WHIRL_FE_SFD_SHORT_PI || k == WHIRL_FE_SFD_SHORT_2PI ||

@@ -32,11 +32,7 @@ _Static_assert(UMFPACK_CONTROL == 20, "fe_lin.control has UMFPACK_CONTROL entrie
 #define UMF_FUNCS(X)                                                           \
   X(umfpack_zi_defaults) X(umfpack_zi_symbolic) X(umfpack_zi_numeric)           \
   X(umfpack_zi_solve) X(umfpack_zi_free_numeric) X(umfpack_zi_free_symbolic)
-#ifdef WHIRL_SONAMES_UMFPACK
-WHIRL_DYNLIB(umf, UMF_FUNCS, WHIRL_SONAMES_UMFPACK)
-#else
-WHIRL_DYNLIB_LINKED(umf, UMF_FUNCS)
-#endif
+WHIRL_DYNLIB_UMFPACK(umf, UMF_FUNCS)
 
 /* ------------------------------------------------------------ patterns */
 

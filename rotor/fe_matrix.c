@@ -26,11 +26,7 @@
 #define CHOLMOD_FUNCS(X)                                                       \
   X(cholmod_start) X(cholmod_finish) X(cholmod_read_sparse) X(cholmod_write_sparse) \
   X(cholmod_allocate_sparse) X(cholmod_free_sparse)
-#ifdef WHIRL_SONAMES_CHOLMOD
-WHIRL_DYNLIB(chol, CHOLMOD_FUNCS, WHIRL_SONAMES_CHOLMOD)
-#else
-WHIRL_DYNLIB_LINKED(chol, CHOLMOD_FUNCS)
-#endif
+WHIRL_DYNLIB_CHOLMOD(chol, CHOLMOD_FUNCS)
 
 /* CHOLMOD bound, or −1 with the reason in msg */
 static int cholmod_here(char *msg, size_t len) {

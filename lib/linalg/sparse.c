@@ -28,11 +28,7 @@
   X(umfpack_di_defaults) X(umfpack_di_symbolic) X(umfpack_di_numeric)           \
   X(umfpack_di_wsolve) X(umfpack_di_get_determinant) X(umfpack_di_free_numeric) \
   X(umfpack_di_free_symbolic)
-#ifdef WHIRL_SONAMES_UMFPACK
-WHIRL_DYNLIB(umf, UMF_FUNCS, WHIRL_SONAMES_UMFPACK)
-#else
-WHIRL_DYNLIB_LINKED(umf, UMF_FUNCS)
-#endif
+WHIRL_DYNLIB_UMFPACK(umf, UMF_FUNCS)
 
 typedef struct sparse_backend {
   int n, nnz;

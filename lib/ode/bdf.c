@@ -54,11 +54,7 @@
   X(SUNMatDestroy) X(SUNSparseMatrix) X(SUNSparseMatrix_Data) \
   X(SUNSparseMatrix_IndexPointers) X(SUNSparseMatrix_IndexValues) \
   X(SUNSparseMatrix_NNZ) X(SUNSparseMatrix_Reallocate)
-#ifdef WHIRL_SONAMES_SUNDIALS
-WHIRL_DYNLIB(sun, SUN_FUNCS, WHIRL_SONAMES_SUNDIALS)
-#else
-WHIRL_DYNLIB_LINKED(sun, SUN_FUNCS)
-#endif
+WHIRL_DYNLIB_SUNDIALS(sun, SUN_FUNCS)
 
 
 struct whirl_bdf {

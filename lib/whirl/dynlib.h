@@ -7,14 +7,11 @@
  * would load); where it cannot, the library is linked as usual and the
  * table below holds the functions themselves.
  *
- * A file using, say, UMFPACK writes
+ * A file using, say, UMFPACK includes config.h first, then this header,
+ * and writes
  *
  *   #define UMF_FUNCS(X) X(umfpack_di_symbolic) X(umfpack_di_numeric)
- *   #ifdef WHIRL_SONAMES_UMFPACK
- *   WHIRL_DYNLIB(umf, UMF_FUNCS, WHIRL_SONAMES_UMFPACK)
- *   #else
- *   WHIRL_DYNLIB_LINKED(umf, UMF_FUNCS)
- *   #endif
+ *   WHIRL_DYNLIB_UMFPACK(umf, UMF_FUNCS)
  *
  * and calls umf.umfpack_di_symbolic(...) after umf_bind(err, len) returned
  * WHIRL_OK (the first call binds, under a lock; later ones only look).
@@ -84,6 +81,25 @@ WHIRL_API int whirl_dynlib_bind(const char *sonames, const char *const *names, s
     (void)err, (void)len;                                                      \
     return WHIRL_OK;                                                           \
   }
+
+/* whirl's optional libraries: config.h defines WHIRL_DYNLIB_NAME(T, L) as
+ * WHIRL_DYNLIB(T, L, sonames) for those it found the sonames of; the
+ * others are linked */
+#ifndef WHIRL_DYNLIB_UMFPACK
+#define WHIRL_DYNLIB_UMFPACK(T, L) WHIRL_DYNLIB_LINKED(T, L)
+#endif
+#ifndef WHIRL_DYNLIB_SUNDIALS
+#define WHIRL_DYNLIB_SUNDIALS(T, L) WHIRL_DYNLIB_LINKED(T, L)
+#endif
+#ifndef WHIRL_DYNLIB_ARPACK
+#define WHIRL_DYNLIB_ARPACK(T, L) WHIRL_DYNLIB_LINKED(T, L)
+#endif
+#ifndef WHIRL_DYNLIB_CHOLMOD
+#define WHIRL_DYNLIB_CHOLMOD(T, L) WHIRL_DYNLIB_LINKED(T, L)
+#endif
+#ifndef WHIRL_DYNLIB_FFTW3
+#define WHIRL_DYNLIB_FFTW3(T, L) WHIRL_DYNLIB_LINKED(T, L)
+#endif
 
 #ifdef __cplusplus
 }
