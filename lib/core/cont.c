@@ -66,6 +66,7 @@ void whirl_cont_options_default(whirl_cont_options *o) {
   o->x_max = 0.0;
   o->p_weight = 1.0;
   o->newton_tol = 1e-10;
+  o->newton_tol_par = 0.0;
   o->newton_maxit = 12;
   o->newton_fast = 3;
   o->newton_chord = 0;
@@ -212,8 +213,8 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
            !(fabs(opt->ds) >= opt->ds_min) || !(fabs(opt->ds) <= opt->ds_max))
     why = "need 0 < DSMIN <= |DS| <= DSMAX";
   else if (!(opt->p_min < opt->p_max)) why = "need RL0 (p_min) < RL1 (p_max)";
-  else if (!(opt->newton_tol > 0) || opt->newton_maxit < 1)
-    why = "need newton_tol > 0 and newton_maxit >= 1";
+  else if (!(opt->newton_tol > 0) || opt->newton_maxit < 1 || !(opt->newton_tol_par >= 0))
+    why = "need newton_tol > 0, newton_tol_par >= 0 and newton_maxit >= 1";
   else if (!(opt->p_weight >= 0) || !isfinite(opt->p_weight))
     why = "need a finite p_weight >= 0";
   else if (!weights_valid(opt->x_weight, sys->n, opt->p_weight))
@@ -496,13 +497,21 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
     for (size_t i = 0; i < N; ++i) {
       X[i] -= c->rhs[i];
       if (!isfinite(X[i])) return 1;
-      /* comparisons, not fmax: a library call per entry at -O2 */
+    }
+    /* comparisons, not fmax: a library call per entry at -O2 */
+    const size_t nx = c->opt.newton_tol_par > 0 ? n : N; /* the part to newton_tol */
+    for (size_t i = 0; i < nx; ++i) {
       const double d = fabs(c->rhs[i]), x = fabs(X[i]);
       if (d > dmax) dmax = d;
       if (x > xmax) xmax = x;
     }
     c->its = it; /* iterations used, read by the step control */
+    /* the parameter to its own scale (AUTO's EPSL), scaled onto x's test */
     const double tolx = c->opt.newton_tol * (1.0 + xmax);
+    if (nx == n) {
+      const double dp = fabs(c->rhs[n]) / (c->opt.newton_tol_par * (1.0 + fabs(X[n])));
+      if (dp * tolx > dmax) dmax = dp * tolx;
+    }
     int conv = dmax <= tolx;
     if (!conv && chord && isfinite(prev) && dmax < 0.5 * prev) {
       /* chord Newton converges linearly: the error left after this

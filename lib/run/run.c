@@ -175,7 +175,10 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
   o->nmx = (size_t)s->nmx;
   o->p_min = s->rl0;
   o->p_max = s->rl1;
-  o->newton_tol = fmin(s->epsl, s->epsu);
+  /* AUTO's test: the state to EPSU and its own scale, the parameter to
+   * EPSL and its own */
+  o->newton_tol = s->epsu;
+  o->newton_tol_par = s->epsl;
   o->newton_maxit = s->itnw;
   /* the tangent and tests from the corrector's last factorisation, as
    * AUTO: a Jacobian and a factorisation fewer a step */

@@ -101,7 +101,11 @@ typedef struct whirl_cont_options {
                           THU and THL (0 takes a component out of the
                           step length, e.g. the period: THL = {11: 0});
                           copied by whirl_cont_alloc */
-  double newton_tol;   /* EPSL/EPSU: |dx|_inf <= tol*(1+|x|_inf), |F| <= tol */
+  double newton_tol;   /* EPSU: |dx|_inf <= tol*(1+|x|_inf), |F| <= tol */
+  double newton_tol_par; /* EPSL: the continuation parameter's correction
+                          |dp| <= tol_par*(1+|p|), each part to its own
+                          scale, as AUTO; 0: p with x, to newton_tol and
+                          the scale of both */
   int newton_maxit;    /* ITNW */
   int newton_fast;     /* iterations at or below which the step may grow */
   int newton_chord;    /* 0: Newton, a new Jacobian at every iteration;
