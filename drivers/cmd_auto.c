@@ -929,9 +929,9 @@ static int parse_args(auto_job *J, int argc, char **argv, const char **runs) {
   J->dir = dir;
   if (!realpath(dir, J->absdir)) J->absdir[0] = '\0';
   if (pos[1]) J->name = pos[1];
-  else { /* DIR's last component */
+  else { /* DIR's last component, of its real path (".", "..", "demo/.") */
     static char base[256];
-    const char *d = J->dir;
+    const char *d = J->absdir[0] ? J->absdir : J->dir;
     size_t n = strlen(d);
     while (n > 1 && d[n - 1] == '/') n--;
     size_t b = n;

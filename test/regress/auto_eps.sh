@@ -90,5 +90,11 @@ bad=$(awk 'NR == FNR { a[$1] = $2; next }
     if (d > 1e-6 * (1 + ($2 < 0 ? -$2 : $2))) { print "PT " $1 ": whirl " a[$1] ", AUTO " $2; exit } }' \
   "$tmp/whirl" "$tmp/auto")
 ok "$([ -z "$bad" ] && echo 0 || echo 1)" "every one of AUTO's 20 points at AUTO's PAR(1) to 1e-6 relative${bad:+ ($bad)}"
+# the problem's name from the directory's real name: `whirl auto .` in it
+# (it looked for c.. and c...1)
+(cd "$tmp/brt" && "$WHIRL" auto . --quiet --out="$tmp/dot.out" > "$tmp/dot.log" 2>&1)
+rc=$?
+[ $rc -eq 0 ] && [ -f "$tmp/dot.out/b.brt" ]
+ok $? "whirl auto . in the demo's directory runs brt: exit $rc $(head -c 200 "$tmp/dot.log")"
 echo "1..$n"
 [ "$fails" -eq 0 ]
