@@ -14,6 +14,7 @@
 # `run(e='brt', c='brt')`, fort.7); whirl's points must be AUTO's to 1e-6
 # relative, the Newton tolerance.  (With the old test PT 12 was at
 # PAR(1) = 1.6038 where AUTO's is 1.42795, and every later point apart.)
+# And `whirl auto .` in the problem's directory takes its real name.
 # TAP output.
 set -u
 : "${top_srcdir:=.}" "${top_builddir:=.}"
