@@ -176,7 +176,8 @@ static int classify(const bas_args *a, const whirl_fe_rotor *r, double Om, orbit
   double p[WHIRL_FE_NPAR], *z0 = malloc(4 * (size_t)r->ndof * sizeof *z0);
   double *f = z0 ? z0 + 2 * r->ndof : NULL; /* scratch: the rhs at the start */
   whirl_fe_hbm_params(Om, p);
-  whirl_ode *ode = m && z0 ? rotor_time_ode(CMD, m, p, WHIRL_ODE_BDF, a->rtol, a->atol) : NULL;
+  int code = 1;
+  whirl_ode *ode = m && z0 ? rotor_time_ode(CMD, m, p, WHIRL_ODE_BDF, a->rtol, a->atol, &code) : NULL;
   whirl_attractor att[MAXATT];
   for (int k = 0; k < no; ++k)
     att[k] = (whirl_attractor){"orbit", near_orbit, &o[k], 3};
@@ -186,7 +187,7 @@ static int classify(const bas_args *a, const whirl_fe_rotor *r, double Om, orbit
   bo.max_periods = a->periods;
   cli_progress prog;
   cli_progress_init(&prog, "whirl rotor basins", a->quiet);
-  int rc = ode ? 0 : 1;
+  int rc = ode ? 0 : code;
   for (size_t i = 0; !rc && i < g->n; ++i) {
     rotor_time_start(r, g->y0[i], g->z0[i], z0);
     int w = WHIRL_BASIN_DOMAIN;

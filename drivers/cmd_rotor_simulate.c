@@ -171,8 +171,9 @@ static int run(const sim_args *a, const whirl_fe_rotor *r, int method, double Om
   double p[WHIRL_FE_NPAR], *z0 = malloc(2 * (size_t)r->ndof * sizeof *z0);
   whirl_fe_hbm_params(Om, p);
   p[WHIRL_FE_P_UNBALANCE] = a->unb;
-  whirl_ode *ode = z0 ? rotor_time_ode(CMD, m, p, method, a->rtol, a->atol) : NULL;
-  int rc = ode ? 0 : 2;
+  int rc = 1; /* out of memory */
+  whirl_ode *ode = z0 ? rotor_time_ode(CMD, m, p, method, a->rtol, a->atol, &rc) : NULL;
+  if (ode) rc = 0;
   if (ode) {
     rotor_time_start(r, a->y0, a->z0, z0);
     rc = rotor_time_inside(CMD, m, p, z0);

@@ -8,7 +8,8 @@
 #include "rotor_time.h"
 
 whirl_ode *rotor_time_ode(const char *cmd, whirl_fe_ode *m, const double *p,
-                          int method, double rtol, double atol) {
+                          int method, double rtol, double atol, int *exit_code) {
+  *exit_code = 1;
   whirl_ode *ode = whirl_ode_alloc(whirl_fe_ode_problem(m), p);
   if (!ode) {
     cli_error(cmd, "out of memory");
@@ -24,6 +25,7 @@ whirl_ode *rotor_time_ode(const char *cmd, whirl_fe_ode *m, const double *p,
     cli_error(cmd, "bad tolerances: --rtol %g (>= 100 machine epsilon), --atol %g (> 0)",
               rtol, atol);
     whirl_ode_free(ode);
+    *exit_code = 2;
     return NULL;
   }
   return ode;

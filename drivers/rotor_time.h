@@ -11,10 +11,11 @@
 
 /* An integrator of m at p (whirl_fe_hbm_params layout) with the method
  * (WHIRL_ODE_BDF: the mass matrix on the left, KLU; whirl_fe_ode_use_mass)
- * and tolerances; NULL with a
- * message when out of memory or the tolerances are bad. */
+ * and tolerances; NULL with a message and *exit_code 2 when the
+ * tolerances are bad, 1 when out of memory or the BDF cannot be set up
+ * (SUNDIALS not loaded). */
 whirl_ode *rotor_time_ode(const char *cmd, whirl_fe_ode *m, const double *p,
-                          int method, double rtol, double atol);
+                          int method, double rtol, double atol, int *exit_code);
 
 /* The state z[2 ndof] of the shaft translated rigidly by (y0, z0) (every
  * node's y, z; pedestals and rotations 0), at rest. */

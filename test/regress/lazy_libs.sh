@@ -4,8 +4,9 @@
 # WHIRL_SONAMES_*) are opened at their first use (whirl/dynlib.h), so the
 # program and its two libraries must not list them as NEEDED: a process
 # that never calls them does not load them (doc/benchmarks.md).  Then
-# commands that do call them: a Campbell diagram by ARPACK from a rotor
-# whose matrices are read by CHOLMOD, and a stiff integration by CVODE.
+# commands that do call them (eigenvalues by ARPACK, Matrix Market files
+# by CHOLMOD), and with ARPACK and CVODE not loadable: the runs needing
+# them fail cleanly (exit 1, the library named), the others run.
 # SPDX-License-Identifier: BSD-3-Clause
 name=lazy_libs
 . "${top_srcdir:-.}/test/regress/tap.sh"
@@ -44,4 +45,30 @@ ok $? "the first frequency by ARPACK equals the dense one ($a, $d)"
 rc=$?
 [ $rc -eq 0 ] && head -1 mtx/K.mtx | grep -q '^%%MatrixMarket'
 ok $? "rotor export by CHOLMOD: exit $rc, mtx/K.mtx a Matrix Market file $(head -c 200 err.txt)"
+
+# a library that cannot be opened fails the runs that need it, with its
+# name, exit 1 and nothing written, and no other run: a file that is no
+# library first on the loader's path under the sonames of ARPACK and CVODE
+arpack=$(echo "$sonames" | tr ' ' '\n' | grep '^libarpack' | head -1)
+cvode=$(echo "$sonames" | tr ' ' '\n' | grep '^libsundials_cvode' | head -1)
+if [ -n "$arpack" ] && [ -n "$cvode" ]; then
+  mkdir broken
+  echo "not a shared object" > "broken/$arpack"
+  echo "not a shared object" > "broken/$cvode"
+  LD_LIBRARY_PATH=$(pwd)/broken${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} \
+    "$WHIRL" rotor modes "$rotor" --speed 0 --method arpack > b1.out 2> b1.err
+  rc=$?
+  [ $rc -eq 1 ] && [ ! -s b1.out ] && grep -q "$arpack could not be loaded" b1.err
+  ok $? "ARPACK not loadable: rotor modes --method arpack exits 1, says so, prints nothing (exit $rc: $(head -c 160 b1.err))"
+  LD_LIBRARY_PATH=$(pwd)/broken${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} \
+    "$WHIRL" rotor simulate "$rotor" --speed 1000 --periods 2 --out sim --quiet > b2.out 2> b2.err
+  rc=$?
+  [ $rc -eq 1 ] && [ ! -e sim ] && grep -q "$cvode could not be loaded" b2.err
+  ok $? "CVODE not loadable: rotor simulate (BDF) exits 1, says so, writes nothing (exit $rc: $(head -c 160 b2.err))"
+  LD_LIBRARY_PATH=$(pwd)/broken${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} \
+    "$WHIRL" sfd response --out resp --quiet > b3.out 2> b3.err
+  rc=$?
+  [ $rc -eq 0 ] && [ -s resp/branches.tsv ]
+  ok $? "neither loadable: sfd response, which needs neither, runs (exit $rc)"
+fi
 tap_end
