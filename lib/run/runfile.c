@@ -94,6 +94,7 @@ static const key_def keys[] = {
     {WHIRL_RK_NINT, "NINT", "integral_conditions", NULL, K_INT},
     {WHIRL_RK_ORBIT_MAX, "ORBIT_MAX", "orbit_max", NULL, K_METHOD},
     {WHIRL_RK_MESH_RULE, "MESH_RULE", "mesh_rule", NULL, K_METHOD},
+    {WHIRL_RK_THREADS, "THREADS", "threads", NULL, K_INT},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -579,6 +580,8 @@ static const char *check_int(whirl_run_key k, int x) {
     case WHIRL_RK_NHB: return x < 1 || x > 1000 ? "must be in [1, 1000]" : NULL;
     case WHIRL_RK_OVERSAMPLING: return x < 2 || x > 64 ? "must be in [2, 64]" : NULL;
     case WHIRL_RK_NMX: return x < 1 ? "must be >= 1" : NULL;
+    case WHIRL_RK_THREADS:
+      return x < 0 || x > 256 ? "must be in [0, 256] (0: as many as OpenMP offers)" : NULL;
     case WHIRL_RK_NPR: return x < 0 ? "must be >= 0" : NULL;
     case WHIRL_RK_ITNW: return x < 1 || x > 1000 ? "must be in [1, 1000]" : NULL;
     case WHIRL_RK_JAC:
@@ -620,6 +623,7 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_BASIN_METHOD: return &s->basin_method;
     case WHIRL_RK_ORBIT_MAX: return &s->orbit_max_nodes;
     case WHIRL_RK_MESH_RULE: return &s->mesh_jumps;
+    case WHIRL_RK_THREADS: return &s->threads;
     case WHIRL_RK_DISCOVER_STARTS: return &s->discover_starts;
     case WHIRL_RK_DISCOVER_SEED: return &s->discover_seed;
     default: return NULL;

@@ -56,6 +56,8 @@ typedef struct whirl_run_settings {
   double basin_tol;             /* basins: capture radius (1e-3) */
   int basin_seeds;              /* basins: atlas seed stride (0: none) */
   int basin_method;             /* basins: whirl_ode_method (DOP853) */
+  int threads;                  /* THREADS: the collocation's threads (0:
+                                   OpenMP's default, OMP_NUM_THREADS) */
   int mesh_jumps;               /* MESH_RULE = jumps: orbits' meshes by
                                    AUTO's EQDF (0: derivative, whirl's) */
   int orbit_max_nodes;          /* ORBIT_MAX = nodes: an orbit's MAX U(i) is

@@ -135,7 +135,7 @@ static void *bs_alloc(void *data) {
     gcol[b->nfree] = b->nx;
     for (size_t t = 0; t < b->nint; ++t) blab[t] = (int)(b->ncoll + b->nbc + t);
     blab[b->nint] = (int)b->nx;
-    const cond_shape s = {b->n, b->ncol, b->ntst, b->nx, ng, nb, b->npar, gcol, blab};
+    const cond_shape s = {b->n, b->ncol, b->ntst, b->nx, ng, nb, b->npar, gcol, blab, 1};
     if (R->ic && R->bcr) w = cond_alloc(&s, &bvp_ops, R);
   }
   free(gcol);

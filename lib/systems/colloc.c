@@ -25,6 +25,7 @@
 
 #include "colloc_basis.h"
 #include "colloc_impl.h"
+#include "util/threads_impl.h"
 #include <whirl/linsol.h>
 
 void whirl_colloc_options_default(whirl_colloc_options *o) {
@@ -37,6 +38,7 @@ void whirl_colloc_options_default(whirl_colloc_options *o) {
   o->floquet_rtol = 1e-11;
   o->floquet = WHIRL_COLLOC_FLOQUET_CONDENSED;
   o->free_param = -1;
+  o->threads = 1;
 }
 
 /* ------------------------------------------------------------ basis */
@@ -84,21 +86,22 @@ static double period_of(const whirl_colloc *c, const double *X,
   return colloc_period_of(c, X, p);
 }
 
-/* x and dx/dσ of interval i at Gauss point g into c->xc, c->dx (sums in
- * registers: c->xc, c->dx might alias X as far as the compiler knows). */
-static void at_gauss(whirl_colloc *c, const double *X, size_t i, size_t g) {
+/* x and dx/dσ of interval i at Gauss point g into s->xc, s->dx (sums in
+ * registers: s->xc, s->dx might alias X as far as the compiler knows). */
+static void at_gauss(const whirl_colloc *c, colloc_scratch *s, const double *X,
+                     size_t i, size_t g) {
   const size_t n = c->n, m = c->ncol;
   const double *l = c->L + g * (m + 1), *dl = c->D + g * (m + 1);
   const double *xi = X + n * i * m;
   for (size_t r = 0; r < n; ++r) {
-    double s = 0.0, d = 0.0;
+    double v0 = 0.0, d = 0.0;
     for (size_t k = 0; k <= m; ++k) {
       const double v = xi[n * k + r];
-      s += l[k] * v;
+      v0 += l[k] * v;
       d += dl[k] * v;
     }
-    c->xc[r] = s;
-    c->dx[r] = d;
+    s->xc[r] = v0;
+    s->dx[r] = d;
   }
 }
 
@@ -108,6 +111,7 @@ static void at_gauss(whirl_colloc *c, const double *X, size_t i, size_t g) {
  * ∫ <x, x_ref'> dτ is <phase, X>. */
 static void set_reference(whirl_colloc *c, const double *Xn) {
   const size_t n = c->n, m = c->ncol;
+  double *dx = c->scr[0].dx;
   if (Xn != c->ref) memcpy(c->ref, Xn, c->nnodes * n * sizeof *c->ref);
   memset(c->phase, 0, c->nnodes * n * sizeof *c->phase);
   for (size_t i = 0; i < c->ntst; ++i) {
@@ -118,11 +122,11 @@ static void set_reference(whirl_colloc *c, const double *Xn) {
         double d = 0.0;
         for (size_t k = 0; k <= m; ++k)
           d += dl[k] * c->ref[n * (i * m + k) + r];
-        c->dx[r] = c->gw[g] * d;
+        dx[r] = c->gw[g] * d;
       }
       for (size_t k = 0; k <= m; ++k)
         for (size_t r = 0; r < n; ++r)
-          c->phase[n * (i * m + k) + r] += l[k] * c->dx[r];
+          c->phase[n * (i * m + k) + r] += l[k] * dx[r];
     }
   }
   double s = 0.0;
@@ -131,19 +135,41 @@ static void set_reference(whirl_colloc *c, const double *Xn) {
   c->have_ref = 1;
 }
 
-/* The model's f_x at (t, x): analytic or central differences. */
-static int model_jac(whirl_colloc *c, double t, const double *x,
+/* The model's f_x at (t, s->xc) into s->J: analytic or central
+ * differences. */
+static int model_jac(const whirl_colloc *c, colloc_scratch *s, double t,
                      const double *p) {
   const whirl_problem *pr = c->prob;
-  if (pr->jac_x) return pr->jac_x(t, x, p, c->J, pr->data);
-  return whirl_fd_jac_x(pr, t, x, p, c->J, c->work);
+  if (pr->jac_x) return pr->jac_x(t, s->xc, p, s->J, pr->data);
+  return whirl_fd_jac_x(pr, t, s->xc, p, s->J, s->work);
+}
+
+int colloc_threads(const whirl_colloc *c) {
+  return c->nthreads > 1 && c->ntst * c->ncol * c->n >= COLLOC_PAR_MIN
+             ? c->nthreads : 1;
+}
+
+/* The residual rows of interval i at (X, p), T, with scratch s. */
+static int interval_F(whirl_colloc *c, colloc_scratch *s, const double *X,
+                      const double *p, double T, size_t i, double *F) {
+  const whirl_problem *pr = c->prob;
+  const size_t n = c->n, m = c->ncol;
+  const double h = c->mesh[i + 1] - c->mesh[i];
+  for (size_t g = 0; g < m; ++g) {
+    at_gauss(c, s, X, i, g);
+    const double tau = c->mesh[i] + h * c->gs[g];
+    int rc = pr->rhs(c->t0 + T * tau, s->xc, p, s->f, pr->data);
+    if (rc != 0) return rc;
+    double *Fr = F + n * (i * m + g);
+    for (size_t r = 0; r < n; ++r) Fr[r] = s->dx[r] - h * T * s->f[r];
+  }
+  return 0;
 }
 
 /* ------------------------------------------------------------ system */
 
 static int colloc_F(const double *X, const double *p, double *F, void *data) {
   whirl_colloc *c = data;
-  const whirl_problem *pr = c->prob;
   const size_t n = c->n, m = c->ncol, N = c->ntst;
   /* its own copy: F is what differences of F_p call, from inside the
    * entry points that hold c->pq (colloc_cond.c's factorisation) */
@@ -152,17 +178,21 @@ static int colloc_F(const double *X, const double *p, double *F, void *data) {
   /* a non-positive period (a step past ω = 0): recoverable, the core
    * shortens the step */
   if (!(T > 0) || !isfinite(T)) return 1;
+  /* the intervals in parallel (the model is called from several threads
+   * at once, as AUTO-07p's OpenMP build does): the first failure in
+   * interval order is the one reported, whatever the threads */
+  const int nth = colloc_threads(c);
+  size_t bad = N;
+  int bad_rc = 0;
+#pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
-    const double h = c->mesh[i + 1] - c->mesh[i];
-    for (size_t g = 0; g < m; ++g) {
-      at_gauss(c, X, i, g);
-      const double tau = c->mesh[i] + h * c->gs[g];
-      int rc = pr->rhs(c->t0 + T * tau, c->xc, p, c->f, pr->data);
-      if (rc != 0) return rc;
-      double *Fr = F + n * (i * m + g);
-      for (size_t r = 0; r < n; ++r) Fr[r] = c->dx[r] - h * T * c->f[r];
+    int rc = interval_F(c, &c->scr[whirl_thread_num()], X, p, T, i, F);
+    if (rc != 0) {
+#pragma omp critical(whirl_colloc_F)
+      if (i < bad) bad = i, bad_rc = rc;
     }
   }
+  if (bad < N) return bad_rc;
   /* periodicity x(1) − x(0) = 0, or 2π k for a rotation */
   const double *x0 = X, *x1 = X + n * N * m;
   for (size_t r = 0; r < n; ++r) F[n * N * m + r] = x1[r] - x0[r] - c->rot[r];
@@ -182,51 +212,53 @@ static int colloc_F(const double *X, const double *p, double *F, void *data) {
 }
 
 /* At a fixed period the last unknown is the parameter q = c->fq: its
- * column of the collocation rows at (t, c->xc) is −h T ∂f/∂p_q, from the
+ * column of the collocation rows at (t, s->xc) is −h T ∂f/∂p_q, from the
  * model's jac_p or a central difference in p_q (p is colloc_par's). */
-static int free_param_column(whirl_colloc *c, double t, double h, double T,
-                             const double *p, double *dT) {
+static int free_param_column(const whirl_colloc *c, colloc_scratch *s,
+                             double t, double h, double T, const double *p,
+                             double *dT) {
   const whirl_problem *pr = c->prob;
   const size_t n = c->n, q = (size_t)c->fq;
   int rc;
   if (pr->jac_p) {
-    if ((rc = pr->jac_p(t, c->xc, p, c->Jpar, pr->data)) != 0) return rc;
-    for (size_t r = 0; r < n; ++r) dT[r] = -h * T * c->Jpar[r + n * q];
+    if ((rc = pr->jac_p(t, s->xc, p, s->Jpar, pr->data)) != 0) return rc;
+    for (size_t r = 0; r < n; ++r) dT[r] = -h * T * s->Jpar[r + n * q];
     return 0;
   }
-  memcpy(c->pw, p, pr->npar * sizeof *c->pw);
+  memcpy(s->pw, p, pr->npar * sizeof *s->pw);
   const double hp = cbrt(DBL_EPSILON) * fmax(1.0, fabs(p[q]));
-  c->pw[q] = p[q] + hp;
-  const double up = c->pw[q];
-  if ((rc = pr->rhs(t, c->xc, c->pw, c->f, pr->data)) != 0) return rc;
-  c->pw[q] = p[q] - hp;
-  const double dn = c->pw[q];
-  if ((rc = pr->rhs(t, c->xc, c->pw, c->f2, pr->data)) != 0) return rc;
-  for (size_t r = 0; r < n; ++r) dT[r] = -h * T * (c->f[r] - c->f2[r]) / (up - dn);
+  s->pw[q] = p[q] + hp;
+  const double up = s->pw[q];
+  if ((rc = pr->rhs(t, s->xc, s->pw, s->f, pr->data)) != 0) return rc;
+  s->pw[q] = p[q] - hp;
+  const double dn = s->pw[q];
+  if ((rc = pr->rhs(t, s->xc, s->pw, s->f2, pr->data)) != 0) return rc;
+  for (size_t r = 0; r < n; ++r) dT[r] = -h * T * (s->f[r] - s->f2[r]) / (up - dn);
   return 0;
 }
 
-int colloc_gauss_jac(whirl_colloc *c, const double *X, const double *p,
-                     double T, size_t i, size_t g, double *dT) {
+int colloc_gauss_jac(whirl_colloc *c, colloc_scratch *s, const double *X,
+                     const double *p, double T, size_t i, size_t g,
+                     double *dT) {
   const whirl_problem *pr = c->prob;
   const size_t n = c->n;
   const double h = c->mesh[i + 1] - c->mesh[i];
-  at_gauss(c, X, i, g);
+  at_gauss(c, s, X, i, g);
   const double tau = c->mesh[i] + h * c->gs[g];
   const double t = c->t0 + T * tau;
-  int rc = model_jac(c, t, c->xc, p);
+  int rc = model_jac(c, s, t, p);
   if (rc != 0 || !dT) return rc;
-  if (c->fq >= 0) return free_param_column(c, t, h, T, p, dT);
+  if (c->fq >= 0) return free_param_column(c, s, t, h, T, p, dT);
   /* dF/dT = −h (f + T τ ∂f/∂t); the time term only for a model not
    * flagged autonomous (central difference in t) */
-  if ((rc = pr->rhs(t, c->xc, p, c->f, pr->data)) != 0) return rc;
-  for (size_t r = 0; r < n; ++r) dT[r] = -h * c->f[r];
+  if ((rc = pr->rhs(t, s->xc, p, s->f, pr->data)) != 0) return rc;
+  for (size_t r = 0; r < n; ++r) dT[r] = -h * s->f[r];
   if (!pr->autonomous) {
     const double ht = cbrt(DBL_EPSILON) * fmax(1.0, fabs(t));
-    if ((rc = pr->rhs(t + ht, c->xc, p, c->f, pr->data)) != 0) return rc;
-    if ((rc = pr->rhs(t - ht, c->xc, p, c->f2, pr->data)) != 0) return rc;
-    const double s = -h * T * tau / (2.0 * ht);
-    for (size_t r = 0; r < n; ++r) dT[r] += s * (c->f[r] - c->f2[r]);
+    if ((rc = pr->rhs(t + ht, s->xc, p, s->f, pr->data)) != 0) return rc;
+    if ((rc = pr->rhs(t - ht, s->xc, p, s->f2, pr->data)) != 0) return rc;
+    const double sc = -h * T * tau / (2.0 * ht);
+    for (size_t r = 0; r < n; ++r) dT[r] += sc * (s->f[r] - s->f2[r]);
   }
   return 0;
 }
@@ -246,7 +278,7 @@ static int colloc_Fx_sparse(const double *X, const double *p, double *Jx,
     for (size_t g = 0; g < m; ++g) {
       const size_t R0 = n * (i * m + g);
       double *vT = c->aut ? Jx + (size_t)c->Jp[colT] + R0 : NULL;
-      int rc = colloc_gauss_jac(c, X, p, T, i, g, vT);
+      int rc = colloc_gauss_jac(c, &c->scr[0], X, p, T, i, g, vT);
       if (rc != 0) return rc;
       const double *l = c->L + g * (m + 1), *dl = c->D + g * (m + 1);
       for (size_t k = 0; k <= m; ++k) {
@@ -255,7 +287,7 @@ static int colloc_Fx_sparse(const double *X, const double *p, double *Jx,
           const size_t col = n * j + q;
           double *v = Jx + (size_t)c->Jp[col] + R0 - (size_t)c->Ji[c->Jp[col]];
           for (size_t r = 0; r < n; ++r)
-            v[r] = (r == q ? dl[k] : 0.0) - h * T * l[k] * c->J[r + n * q];
+            v[r] = (r == q ? dl[k] : 0.0) - h * T * l[k] * c->scr[0].J[r + n * q];
         }
       }
     }
@@ -296,13 +328,14 @@ static int colloc_Fp(const double *X, const double *p, size_t k, double *fk,
   if (!c->aut && (int)k == c->fpar) {
     const double hp = cbrt(DBL_EPSILON) * fmax(1.0, fabs(p[k]));
     int rc;
-    memcpy(c->pw, p, np * sizeof *c->pw);
-    c->pw[k] = p[k] + hp;
-    const double up = c->pw[k];
-    if ((rc = colloc_F(X, c->pw, c->r1, c)) != 0) return rc;
-    c->pw[k] = p[k] - hp;
-    const double dn = c->pw[k];
-    if ((rc = colloc_F(X, c->pw, c->r2, c)) != 0) return rc;
+    double *pw = c->scr[0].pw;
+    memcpy(pw, p, np * sizeof *pw);
+    pw[k] = p[k] + hp;
+    const double up = pw[k];
+    if ((rc = colloc_F(X, pw, c->r1, c)) != 0) return rc;
+    pw[k] = p[k] - hp;
+    const double dn = pw[k];
+    if ((rc = colloc_F(X, pw, c->r2, c)) != 0) return rc;
     for (size_t q = 0; q < c->nx; ++q)
       fk[q] = (c->r1[q] - c->r2[q]) / (up - dn);
     return 0;
@@ -311,12 +344,13 @@ static int colloc_Fp(const double *X, const double *p, size_t k, double *fk,
   for (size_t i = 0; i < N; ++i) {
     const double h = c->mesh[i + 1] - c->mesh[i];
     for (size_t g = 0; g < m; ++g) {
-      at_gauss(c, X, i, g);
+      colloc_scratch *s = &c->scr[0];
+      at_gauss(c, s, X, i, g);
       const double tau = c->mesh[i] + h * c->gs[g];
-      int rc = pr->jac_p(c->t0 + T * tau, c->xc, p, c->Jpar, pr->data);
+      int rc = pr->jac_p(c->t0 + T * tau, s->xc, p, s->Jpar, pr->data);
       if (rc != 0) return rc;
       double *Fr = fk + n * (i * m + g);
-      for (size_t r = 0; r < n; ++r) Fr[r] = -h * T * c->Jpar[r + n * k];
+      for (size_t r = 0; r < n; ++r) Fr[r] = -h * T * s->Jpar[r + n * k];
     }
   }
   for (size_t q = n * N * m; q < c->nx; ++q) fk[q] = 0.0;
@@ -486,21 +520,29 @@ static int alloc_arrays(whirl_colloc *c) {
   c->phase = calloc(nnodes * n, sizeof *c->phase);
   c->old_X = malloc(nnodes * n * sizeof *c->old_X);
   c->ref_new = malloc(nnodes * n * sizeof *c->ref_new);
-  c->xc = malloc(n * sizeof *c->xc);
-  c->dx = malloc(n * sizeof *c->dx);
-  c->f = malloc(n * sizeof *c->f);
-  c->f2 = malloc(n * sizeof *c->f2);
-  c->J = malloc(n * n * sizeof *c->J);
-  c->Jpar = malloc(n * np * sizeof *c->Jpar);
-  c->work = malloc(2 * n * sizeof *c->work);
-  c->pw = malloc(np * sizeof *c->pw);
+  c->scr = calloc((size_t)c->nthreads, sizeof *c->scr);
+  if (!c->scr) return -1;
+  for (int t = 0; t < c->nthreads; ++t) {
+    colloc_scratch *s = &c->scr[t];
+    s->xc = malloc(n * sizeof *s->xc);
+    s->dx = malloc(n * sizeof *s->dx);
+    s->f = malloc(n * sizeof *s->f);
+    s->f2 = malloc(n * sizeof *s->f2);
+    s->J = malloc(n * n * sizeof *s->J);
+    s->Jpar = malloc(n * np * sizeof *s->Jpar);
+    s->work = malloc(2 * n * sizeof *s->work);
+    s->pw = malloc(np * sizeof *s->pw);
+    s->dT = malloc(n * sizeof *s->dT);
+    if (!s->xc || !s->dx || !s->f || !s->f2 || !s->J || !s->Jpar ||
+        !s->work || !s->pw || !s->dT)
+      return -1;
+  }
   c->pq = malloc(np * sizeof *c->pq);
   c->pF = malloc(np * sizeof *c->pF);
   c->r1 = malloc(nx * sizeof *c->r1);
   c->r2 = malloc(nx * sizeof *c->r2);
   if (!c->mesh || !c->old_mesh || !c->Jp || !c->Ji || !c->Jx || !c->ref ||
-      !c->phase || !c->old_X || !c->ref_new || !c->xc || !c->dx || !c->f ||
-      !c->f2 || !c->J || !c->Jpar || !c->work || !c->pw || !c->pq || !c->pF || !c->r1 ||
+      !c->phase || !c->old_X || !c->ref_new || !c->pq || !c->pF || !c->r1 ||
       !c->r2) {
     return -1;
   }
@@ -626,6 +668,7 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   c->mesh_jumps = o->mesh_jumps;
   c->fq = o->free_param >= 0 ? o->free_param : -1;
   c->Tfix = o->period;
+  c->nthreads = whirl_threads_resolve(o->threads);
   if (alloc_arrays(c)) {
     whirl_colloc_free(c);
     return ALLOC_FAIL("out of memory");
@@ -649,14 +692,12 @@ void whirl_colloc_free(whirl_colloc *c) {
   free(c->phase);
   free(c->old_X);
   free(c->ref_new);
-  free(c->xc);
-  free(c->dx);
-  free(c->f);
-  free(c->f2);
-  free(c->J);
-  free(c->Jpar);
-  free(c->work);
-  free(c->pw);
+  for (int t = 0; c->scr && t < c->nthreads; ++t) {
+    colloc_scratch *s = &c->scr[t];
+    double *a[] = {s->xc, s->dx, s->f, s->f2, s->J, s->Jpar, s->work, s->pw, s->dT};
+    for (size_t q = 0; q < sizeof a / sizeof *a; ++q) free(a[q]);
+  }
+  free(c->scr);
   free(c->pq);
   free(c->pF);
   free(c->r1);

@@ -15,25 +15,27 @@
 
 #include "colloc_impl.h"
 #include "cond_elim.h"
+#include "util/threads_impl.h"
 
 /* One interval's collocation rows at (X, p): rows g n + rr of block Wi,
  * columns [interior | x_i | x_{i+1} | T? | p_k]; dF/dp_k from the model's
  * f_p into fk when fk_loop. */
-static int fill_interval(whirl_colloc *c, cond_ws *w, const double *X,
-                         const double *p, double T, size_t i, int mono,
-                         int fk_loop, size_t k, double *dT) {
+static int fill_interval(whirl_colloc *c, colloc_scratch *s, cond_ws *w,
+                         const double *X, const double *p, double T, size_t i,
+                         int mono, int fk_loop, size_t k) {
   const size_t n = c->n, m = c->ncol, ni = n * (m - 1), wc = cond_block_ld(w);
   const size_t ng = c->aut ? 2 : 1;
   double *Wi = cond_block(w, i), *fk = cond_fk(w);
   const double h = c->mesh[i + 1] - c->mesh[i], hT = h * T;
+  double *dT = s->dT;
   for (size_t g = 0; g < m; ++g) {
-    int rc = colloc_gauss_jac(c, X, p, T, i, g, c->aut && !mono ? dT : NULL);
+    int rc = colloc_gauss_jac(c, s, X, p, T, i, g, c->aut && !mono ? dT : NULL);
     if (rc != 0) return rc;
     if (fk_loop) {
       const double t = c->t0 + T * (c->mesh[i] + h * c->gs[g]);
-      if ((rc = c->prob->jac_p(t, c->xc, p, c->Jpar, c->prob->data)) != 0) return rc;
+      if ((rc = c->prob->jac_p(t, s->xc, p, s->Jpar, c->prob->data)) != 0) return rc;
       double *fr = fk + n * (i * m + g);
-      for (size_t rr = 0; rr < n; ++rr) fr[rr] = -h * T * c->Jpar[rr + n * k];
+      for (size_t rr = 0; rr < n; ++rr) fr[rr] = -h * T * s->Jpar[rr + n * k];
     }
     const double *l = c->L + g * (m + 1), *dl = c->D + g * (m + 1);
     for (size_t rr = 0; rr < n; ++rr) {
@@ -41,7 +43,7 @@ static int fill_interval(whirl_colloc *c, cond_ws *w, const double *X,
       for (size_t kk = 0; kk <= m; ++kk) {
         double *ak = a + (kk == 0 ? ni : kk == m ? ni + n : (kk - 1) * n);
         const double lk = l[kk];
-        for (size_t q = 0; q < n; ++q) ak[q] = -lk * (hT * c->J[rr + n * q]);
+        for (size_t q = 0; q < n; ++q) ak[q] = -lk * (hT * s->J[rr + n * q]);
         ak[rr] += dl[kk];
       }
       double *ag = a + ni + 2 * n;
@@ -73,14 +75,21 @@ static int colloc_fill(cond_ws *w, const double *X, const double *p, size_t k,
     if (rc != 0) return rc;
   }
   if (fk_loop) memset(fk + n * N * m, 0, (c->nx - n * N * m) * sizeof *fk);
-  /* dF/dT of a Gauss point's rows: the scratch is free after the
-   * differences above */
-  double *dT = cond_work(w);
+  /* the intervals in parallel, each thread with its scratch; the first
+   * failure in interval order is reported, whatever the threads */
+  const int nth = colloc_threads(c);
+  size_t bad = N;
+  int bad_rc = 0;
+#pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
-    int rc = fill_interval(c, w, X, p, T, i, mono, fk_loop, k, dT);
-    if (rc != 0) return rc;
+    int rc = fill_interval(c, &c->scr[whirl_thread_num()], w, X, p, T, i,
+                           mono, fk_loop, k);
+    if (rc != 0) {
+#pragma omp critical(whirl_colloc_fill)
+      if (i < bad) bad = i, bad_rc = rc;
+    }
   }
-  return 0;
+  return bad < N ? bad_rc : 0;
 }
 
 /* The phase condition (autonomous, t = 0) with the current reference, or
@@ -117,7 +126,8 @@ static void *bs_alloc(void *data) {
   const int blab[2] = {c->aut ? (int)c->nx - 1 : (int)c->nx, (int)c->nx};
   const cond_shape s = {c->n, c->ncol, c->ntst, c->nx, c->aut ? 2 : 1,
                         c->aut ? 2 : 1, c->prob->npar,
-                        c->aut ? gcol : gcol + 1, c->aut ? blab : blab + 1};
+                        c->aut ? gcol : gcol + 1, c->aut ? blab : blab + 1,
+                        colloc_threads(c)};
   return cond_alloc(&s, &colloc_ops, c);
 }
 

@@ -15,6 +15,17 @@
 
 #define COLLOC_MAXCOL 7
 
+/* A thread's scratch for the model at a Gauss point (sizes n, n, n, n,
+ * n·n, n·npar, 2n, npar, n): x and dx/dσ there, f, a second f, f_x, f_p,
+ * the differences' work, a parameter copy and dF/dT of the n rows. */
+typedef struct colloc_scratch {
+  double *xc, *dx, *f, *f2, *J, *Jpar, *work, *pw, *dT;
+} colloc_scratch;
+
+/* The parallel loops over mesh intervals are worth their start (a few
+ * microseconds) from about this many state values at Gauss points. */
+#define COLLOC_PAR_MIN 512
+
 struct whirl_colloc {
   const whirl_problem *prob;
   whirl_problem shim; /* prob seen through colloc_shim_*, for the multipliers */
@@ -46,8 +57,11 @@ struct whirl_colloc {
   double phase0; /* <phase, ref>: 0 for a periodic reference, up to rounding */
   int have_ref;
 
-  /* scratch (n, n, n, n, n*n, n*npar, 2n, npar, nx, nx) */
-  double *xc, *dx, *f, *f2, *J, *Jpar, *work, *pw, *r1, *r2;
+  /* the model's evaluations at Gauss points: one scratch per thread
+   * (scr[0] for the serial entry points) */
+  int nthreads;             /* options.threads, resolved: >= 1 */
+  colloc_scratch *scr;      /* nthreads */
+  double *r1, *r2;          /* nx, nx */
   double *old_mesh, *old_X; /* ntst + 1, nnodes*n: mesh adaptation */
   double *ref_new;          /* nnodes*n */
   int adapt_every;          /* options.adapt_every (AUTO's IAD) */
@@ -78,12 +92,16 @@ double colloc_period_of(const whirl_colloc *c, const double *X,
  * taking (X, p) passes p through it before calling the model. */
 const double *colloc_par(whirl_colloc *c, const double *X, const double *p);
 
-/* colloc.c: the model's f_x at Gauss point g of interval i into c->J, and
+/* colloc.c: the model's f_x at Gauss point g of interval i into s->J, and
  * (autonomous orbits, dT not NULL) dF/dT of the n collocation rows there,
- * dT[n] = −h (f + T τ ∂f/∂t); x and dx/dσ are left in c->xc, c->dx.
+ * dT[n] = −h (f + T τ ∂f/∂t); x and dx/dσ are left in s->xc, s->dx.
  * Returns the model's status. */
-int colloc_gauss_jac(whirl_colloc *c, const double *X, const double *p,
-                     double T, size_t i, size_t g, double *dT);
+int colloc_gauss_jac(whirl_colloc *c, colloc_scratch *s, const double *X,
+                     const double *p, double T, size_t i, size_t g,
+                     double *dT);
+
+/* colloc.c: threads for the loops over the intervals (1: serial). */
+int colloc_threads(const whirl_colloc *c);
 
 /* colloc_cond.c: the structured bordered solver of the system. */
 extern const whirl_bsolver colloc_bsolver;

@@ -45,6 +45,7 @@
 #include <whirl/status.h>
 
 #include "cond_elim.h"
+#include "util/threads_impl.h"
 
 typedef cond_det det_acc;
 
@@ -71,7 +72,12 @@ struct cond_ws {
   double *B;     /* nb x bc: border rows on the mesh points and globals */
   double *F;     /* nf x nf */
   int *fpiv;     /* nf */
-  int *lab;      /* scratch labels, max(nm, 2n, nf) */
+  int nth;       /* threads of the loops over the intervals */
+  size_t nlab;   /* max(nm, 2n, nf) */
+  int *lab;      /* scratch labels, nlab per thread (thread 0's first) */
+  double *typ;   /* 2n + ng per thread: the interiors' back values */
+  det_acc *idet; /* NTST: the product of each interval's pivots */
+  int *irc;      /* NTST: each interval's gepp status */
   int *prow, *pcol; /* nx + 1: M's rows and columns in elimination order */
   int *mark;     /* nx + 1: scratch for the permutation signs */
   double *fk;    /* nx: dF/dp_k */
@@ -101,7 +107,8 @@ void cond_free(cond_ws *w) {
   void *p[] = {w->gcol, w->blab, w->W,    w->wpiv, w->wlab, w->P,   w->ppiv,
                w->B,    w->F,    w->fpiv, w->lab,  w->prow, w->pcol, w->mark,
                w->fk,   w->work, w->loc,  w->ploc, w->xs,   w->bb,   w->tmp,
-               w->Xf,   w->pf,   w->slab, w->mblk, w->mpiv, w->mlab};
+               w->Xf,   w->pf,   w->slab, w->mblk, w->mpiv, w->mlab,
+               w->typ,  w->idet, w->irc};
   for (size_t i = 0; i < sizeof p / sizeof *p; ++i) free(p[i]);
   free(w);
 }
@@ -130,6 +137,9 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
   w->bc = n * (N + 1) + w->ng;
   size_t nlab = w->nm > w->nf ? w->nm : w->nf;
   if (2 * n > nlab) nlab = 2 * n;
+  w->nlab = nlab;
+  w->nth = s->nthreads > 1 ? s->nthreads : 1;
+  const size_t nth = (size_t)w->nth;
   const size_t np = s->npar ? s->npar : 1;
   w->npar = np;
   w->gcol = malloc(w->ng * sizeof *w->gcol);
@@ -142,7 +152,10 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
   w->B = malloc(w->nb * w->bc * sizeof *w->B);
   w->F = malloc(w->nf * w->nf * sizeof *w->F);
   w->fpiv = malloc(w->nf * sizeof *w->fpiv);
-  w->lab = malloc(nlab * sizeof *w->lab);
+  w->lab = malloc(nth * nlab * sizeof *w->lab);
+  w->typ = malloc(nth * (2 * n + w->ng) * sizeof *w->typ);
+  w->idet = malloc(N * sizeof *w->idet);
+  w->irc = malloc(N * sizeof *w->irc);
   w->prow = malloc((w->nx + 1) * sizeof *w->prow);
   w->pcol = malloc((w->nx + 1) * sizeof *w->pcol);
   w->mark = malloc((w->nx + 1) * sizeof *w->mark);
@@ -163,7 +176,7 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
       !w->ppiv || !w->B || !w->F || !w->fpiv || !w->lab || !w->prow ||
       !w->pcol || !w->mark || !w->fk || !w->work || !w->loc || !w->ploc ||
       !w->xs || !w->bb || !w->tmp || !w->Xf || !w->pf || !w->slab ||
-      !w->mblk || !w->mpiv || !w->mlab) {
+      !w->mblk || !w->mpiv || !w->mlab || !w->typ || !w->idet || !w->irc) {
     cond_free(w);
     return NULL;
   }
@@ -198,6 +211,12 @@ static void det_mul(det_acc *d, double v) {
   int e;
   d->mant = frexp(d->mant * v, &e);
   d->expo += e;
+}
+
+/* d *= a (a product of pivots of its own) */
+static void det_times(det_acc *d, const det_acc *a) {
+  det_mul(d, a->mant);
+  d->expo += a->expo;
 }
 
 /* Gaussian elimination with partial pivoting of the first ne columns of the
@@ -334,21 +353,40 @@ static int singular(cond_ws *w) {
   return WHIRL_ESINGULAR;
 }
 
-/* Step 1 on the filled interval blocks. */
-static int condense_intervals(cond_ws *w) {
-  const size_t n = w->n, m = w->m, N = w->N, ni = w->ni, nm = w->nm;
-  for (size_t i = 0; i < N; ++i) {
-    double *Wi = w->W + i * w->wr * w->wc;
-    for (size_t q = 0; q < nm; ++q) w->lab[q] = (int)(n * i * m + q);
-    int rc = gepp(Wi, w->wc, nm, 0, ni, w->wpiv + i * ni, w->lab, &w->det_c, NULL);
-    if (rc == 2) return WHIRL_EBADFUNC;
-    if (rc == 1) return singular(w);
-    for (size_t q = 0; q < ni; ++q) {
-      w->prow[w->npiv_c] = w->lab[q];
-      w->pcol[w->npiv_c++] = (int)(n * (i * m + 1 + q / n) + q % n);
-    }
-    for (size_t q = 0; q < n; ++q) w->wlab[i * n + q] = w->lab[ni + q];
+/* Step 1 on interval i's block, with labels lab[nm]: its pivots' product
+ * into idet[i], its pivot rows and columns in elimination order (all of
+ * interval i's after those of the intervals before it).  gepp's status. */
+static int condense_interval(cond_ws *w, size_t i, int *lab) {
+  const size_t n = w->n, m = w->m, ni = w->ni, nm = w->nm;
+  double *Wi = w->W + i * w->wr * w->wc;
+  for (size_t q = 0; q < nm; ++q) lab[q] = (int)(n * i * m + q);
+  w->idet[i].mant = 1.0;
+  w->idet[i].expo = 0;
+  int rc = gepp(Wi, w->wc, nm, 0, ni, w->wpiv + i * ni, lab, &w->idet[i], NULL);
+  if (rc != 0) return rc;
+  for (size_t q = 0; q < ni; ++q) {
+    w->prow[i * ni + q] = lab[q];
+    w->pcol[i * ni + q] = (int)(n * (i * m + 1 + q / n) + q % n);
   }
+  for (size_t q = 0; q < n; ++q) w->wlab[i * n + q] = lab[ni + q];
+  return 0;
+}
+
+/* Step 1 on the filled interval blocks, the intervals in parallel; the
+ * determinant's factors are multiplied in interval order, so it does not
+ * depend on the threads. */
+static int condense_intervals(cond_ws *w) {
+  const size_t N = w->N;
+  const int nth = w->nth;
+#pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
+  for (size_t i = 0; i < N; ++i)
+    w->irc[i] = condense_interval(w, i, w->lab + w->nlab * (size_t)whirl_thread_num());
+  for (size_t i = 0; i < N; ++i) {
+    if (w->irc[i] == 2) return WHIRL_EBADFUNC;
+    if (w->irc[i] == 1) return singular(w);
+    det_times(&w->det_c, &w->idet[i]);
+  }
+  w->npiv_c = N * w->ni;
   return 0;
 }
 
@@ -431,7 +469,8 @@ static int factor_rows(cond_ws *w, const double *X, const double *p, size_t k,
 }
 
 /* Border row t's entries on the mesh points and globals into Bt (bc),
- * with its interior entries eliminated by each interval (step 1). */
+ * with its interior entries eliminated by each interval (step 1: the
+ * intervals in parallel, their sums in order). */
 static void reduce_border_intervals(cond_ws *w, size_t t, const double *r) {
   const size_t n = w->n, m = w->m, N = w->N, ni = w->ni, nm = w->nm,
                ng = w->ng, wc = w->wc;
@@ -439,12 +478,17 @@ static void reduce_border_intervals(cond_ws *w, size_t t, const double *r) {
   const double *src = w->ops->border(w, t, r, Bt + n * (N + 1));
   for (size_t i = 0; i <= N; ++i)
     for (size_t q = 0; q < n; ++q) Bt[n * i + q] = src[n * (i * m) + q];
+  const int nth = w->nth;
+#pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
     double *Wi = w->W + i * w->wr * wc;
     double *a = Wi + (nm + t) * wc;
     memcpy(a, src + n * (i * m + 1), ni * sizeof *a);
     memset(a + ni, 0, (2 * n + ng) * sizeof *a);
     border_eliminate(Wi, wc, ni, a);
+  }
+  for (size_t i = 0; i < N; ++i) {
+    const double *a = w->W + i * w->wr * wc + (nm + t) * wc;
     for (size_t q = 0; q < n; ++q) {
       Bt[n * i + q] += a[ni + q];
       Bt[n * (i + 1) + q] += a[ni + n + q];
@@ -540,14 +584,17 @@ static void solve1(cond_ws *w, double *b) {
                pc = w->pc, nf = w->nf;
   double *bb = w->bb, *xs = w->xs, *g = xs + n * (N + 1);
   for (size_t t = 0; t < nb; ++t) bb[t] = b[w->blab[t]];
-  /* 1. */
+  /* 1. (the intervals in parallel, the border sums in order) */
+  const int nth = w->nth;
+#pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
     double *v = w->loc + i * wr;
     memcpy(v, b + n * i * m, nm * sizeof *v);
     for (size_t t = 0; t < nb; ++t) v[nm + t] = 0.0;
     gepp_forward(w->W + i * wr * wc, wc, nm, nb, ni, w->wpiv + i * ni, v);
-    for (size_t t = 0; t < nb; ++t) bb[t] += v[nm + t];
   }
+  for (size_t i = 0; i < N; ++i)
+    for (size_t t = 0; t < nb; ++t) bb[t] += w->loc[i * wr + nm + t];
   /* 2. */
   for (size_t j = 1; j < N; ++j) {
     double *v = w->ploc + (j - 1) * pr;
@@ -576,10 +623,12 @@ static void solve1(cond_ws *w, double *b) {
     gepp_back(w->P + (j - 1) * pr * pc, pc, n, 2 * n + ng,
               w->ploc + (j - 1) * pr, yp, xs + n * j);
   }
+#pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
-    memcpy(yp, xs + n * i, 2 * n * sizeof *yp);
-    memcpy(yp + 2 * n, g, ng * sizeof *yp);
-    gepp_back(w->W + i * wr * wc, wc, ni, 2 * n + ng, w->loc + i * wr, yp,
+    double *y = w->typ + (2 * n + ng) * (size_t)whirl_thread_num();
+    memcpy(y, xs + n * i, 2 * n * sizeof *y);
+    memcpy(y + 2 * n, g, ng * sizeof *y);
+    gepp_back(w->W + i * wr * wc, wc, ni, 2 * n + ng, w->loc + i * wr, y,
               b + n * (i * m + 1));
   }
   for (size_t i = 0; i <= N; ++i) memcpy(b + n * i * m, xs + n * i, n * sizeof *b);

@@ -54,6 +54,8 @@ typedef struct cond_shape {
   size_t ng, nb, npar;
   const size_t *gcol; /* ng: M's column of each global (the last: nx) */
   const int *blab;    /* nb: M's row of each border row (r: nx) */
+  int nthreads;       /* threads of the loops over the intervals (0, 1:
+                         serial); fill is the system's own */
 } cond_shape;
 
 cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys);

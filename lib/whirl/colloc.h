@@ -71,6 +71,15 @@ typedef struct whirl_colloc_options {
                         parameter, the second free one beside the core's
                         continuation parameter; -1 (default): T unknown */
   double period;     /* free_param >= 0: the fixed period, > 0 */
+  int threads;       /* threads of the loops over the mesh intervals (the
+                        residual, the Jacobian's blocks and their
+                        condensation): 1 (default) serial; > 1 that many;
+                        0 as many as OpenMP offers (OMP_NUM_THREADS, else
+                        the processors).  With more than one the model's
+                        rhs and Jacobians are called from several threads
+                        at once (as AUTO-07p's OpenMP build calls FUNC):
+                        they must not share scratch.  Results do not
+                        depend on the number of threads. */
 } whirl_colloc_options;
 
 /* The Floquet multipliers of the system's spectrum.  CONDENSED: the

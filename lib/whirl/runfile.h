@@ -53,6 +53,7 @@ typedef enum whirl_run_key {
   WHIRL_RK_NBC, WHIRL_RK_NINT, /* IPS 4: boundary and integral conditions */
   WHIRL_RK_ORBIT_MAX, /* MAX of an orbit: the curve's (0) or AUTO's, over nodes (1) */
   WHIRL_RK_MESH_RULE, /* orbits' adapted mesh: whirl's derivative (0) or AUTO's jumps (1) */
+  WHIRL_RK_THREADS, /* threads of the collocation (0: OpenMP's default) */
   WHIRL_RK_IGNORED, /* AUTO keys whirl accepts and ignores (ITMX, NWTN, ...) */
   WHIRL_RK_COUNT
 } whirl_run_key;

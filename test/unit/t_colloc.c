@@ -27,6 +27,9 @@
 
 #include "../tap.h"
 #include "bsolver_check.h"
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #define PI 3.14159265358979323846
 
@@ -206,6 +209,24 @@ static int correct(whirl_cont *ct, const double *X, const double *p) {
   if (rc == WHIRL_OK) rc = whirl_cont_step(ct);
   return rc;
 }
+
+/* Lorenz without f_x (differences), recording which OpenMP threads call it, and
+ * failing (status 3 + ⌊10 t / T⌋) at t > fail_from·T when fail_from < 1:
+ * the threads test below. */
+static int seen_thread[64];
+static double fail_from = 2.0, fail_T = 1.0;
+static int lor_seen_rhs(double t, const double *x, const double *p, double *f,
+                        void *data) {
+#ifdef _OPENMP
+  const int tid = omp_get_thread_num();
+  if (tid >= 0 && tid < 64) seen_thread[tid] = 1; /* each its own slot */
+#endif
+  if (t > fail_from * fail_T) return 3 + (int)(10.0 * t / fail_T);
+  return lor_rhs(t, x, p, f, data);
+}
+static const whirl_problem lorenz_seen = {
+    .name = "lorenz-threads", .n = 3, .npar = 3, .rhs = lor_seen_rhs,
+    .jac_p = lor_jacp}; /* f_p: the factorisation fills without F */
 
 /* ------------------------------------------------------------------------
  * 1. Jacobians */
@@ -1289,11 +1310,88 @@ static void test_adapt_from_data(void) {
   whirl_colloc_free(c);
 }
 
+
+/* ------------------------------------------------------------------------
+ * Threads (whirl_colloc_options.threads): the residual, the bordered
+ * factorisation and solves, and log|det| with its sign are the same bytes
+ * on 1, 2 and 3 threads (each interval by the same arithmetic, the
+ * determinant's factors in interval order); the model is called from more
+ * than one thread; a failing model reports the failure of the first
+ * interval in order, whatever the threads. */
+static void test_threads(void) {
+  char err[256];
+  double *ref[4] = {NULL}, la[3] = {0};
+  int sg[3] = {0};
+  size_t nx = 0;
+  const double p[3] = {10.0, 250.0, 8.0 / 3.0};
+  for (int v = 0; v < 3; ++v) {
+    whirl_colloc_options o;
+    whirl_colloc_options_default(&o);
+    o.ntst = 64; /* 64 · 4 · 3 = 768 values at Gauss points: parallel */
+    o.ncol = 4;
+    o.threads = v + 1;
+    memset(seen_thread, 0, sizeof seen_thread);
+    fail_from = 2.0;
+    whirl_colloc *c = whirl_colloc_alloc(&lorenz_seen, &o, err, sizeof err);
+    ok(c != NULL, "threads %d: alloc Lorenz NTST 64: %s", v + 1, err);
+    if (!c) return;
+    nx = whirl_colloc_size(c);
+    const whirl_system *s = whirl_colloc_system(c);
+    double *X = malloc(nx * sizeof *X), *F = malloc(nx * sizeof *F);
+    double *r = malloc((nx + 1) * sizeof *r), *b = malloc((nx + 1) * sizeof *b);
+    tap_rng = 77; /* the same curve, border and right-hand side each time */
+    lorenz_curve(c, nx, X);
+    for (size_t q = 0; q <= nx; ++q) {
+      r[q] = 0.3 * tap_urand(-1.0, 1.0) / sqrt((double)nx) + (q == nx);
+      b[q] = tap_urand(-1.0, 1.0);
+    }
+    void *ws = s->bsolver->alloc(s->data);
+    int rc = s->F(X, p, F, s->data);
+    if (rc == 0) rc = s->bsolver->factor(ws, X, p, 1, r);
+    if (rc == 0) rc = s->bsolver->solve(ws, b, 1);
+    if (rc == 0) rc = s->bsolver->logdet(ws, &la[v], &sg[v]);
+    ok(rc == 0, "threads %d: F, factor, solve, log|det| (%d)", v + 1, rc);
+    int others = 0;
+    for (int t = 1; t < 64; ++t) others += seen_thread[t];
+#ifdef _OPENMP
+    ok(v == 0 ? others == 0 : others >= 1,
+       "threads %d: the model was called by %d thread(s) besides the first",
+       v + 1, others);
+#endif
+    if (v == 0) {
+      ref[0] = F, ref[1] = b;
+      F = b = NULL;
+    } else {
+      ok(memcmp(F, ref[0], nx * sizeof *F) == 0 &&
+             memcmp(b, ref[1], (nx + 1) * sizeof *b) == 0 && la[v] == la[0] &&
+             sg[v] == sg[0],
+         "threads %d: F, the solution and log|det| %.17g (sign %d) the same "
+         "bytes as on one thread",
+         v + 1, la[v], sg[v]);
+    }
+    /* failures at t > 0.3 T: every thread meets some; the first interval's
+     * in order is the one reported, status 3 + 3 */
+    fail_T = whirl_colloc_period(c, X, p);
+    fail_from = 0.3;
+    const int frc = s->F(X, p, F ? F : X, s->data) ;
+    const int jrc = s->bsolver->factor(ws, X, p, 1, r);
+    fail_from = 2.0;
+    ok(frc == 6 && jrc == 6,
+       "threads %d: a model failing from t = 0.3 T: F and the factorisation "
+       "report the first interval's status 6 (got %d, %d)", v + 1, frc, jrc);
+    s->bsolver->free(ws);
+    whirl_colloc_free(c);
+    free(X), free(F), free(r), free(b);
+  }
+  free(ref[0]), free(ref[1]);
+}
+
 int main(int argc, char **argv) {
   const int quick = argc > 1 && strcmp(argv[1], "quick") == 0;
   test_size_limits();
   test_jacobians();
   test_structured();
+  test_threads();
   test_fixed_period();
   test_lambda_omega();
   test_forced();
