@@ -108,7 +108,7 @@ static void bvp_end_row(cond_ws *w, size_t e, double *a) {
   memcpy(a, R->bcr + e * R->nf, R->nf * sizeof *a);
 }
 
-static const cond_ops bvp_ops = {bvp_fill, bvp_border, bvp_end_row};
+static const cond_ops bvp_ops = {bvp_fill, bvp_border, bvp_end_row, NULL, NULL};
 
 static void bs_free(void *ws) {
   if (!ws) return;

@@ -439,7 +439,7 @@ static int colloc_remap(double *const *v, size_t nv, const double *p,
  * parameter at a fixed period). */
 static int colloc_norm_weights(double *q, void *data) {
   const whirl_colloc *c = data;
-  colloc_basis_node_weights(c->n, c->ncol, c->ntst, c->mesh, q);
+  colloc_basis_node_weights_from(c->n, c->ncol, c->ntst, c->mesh, c->wint, q);
   for (size_t i = c->nnodes * c->n; i < c->nx; ++i) q[i] = 1.0;
   return 0;
 }
@@ -561,6 +561,7 @@ static void init_quadrature(whirl_colloc *c) {
     lagrange(m, c->gs[g], c->L + g * (m + 1), c->D + g * (m + 1));
   /* m-th derivative of the interpolant on nodes k/m, in σ */
   colloc_basis_derivative_weights(m, c->dm);
+  colloc_basis_lagrange_integrals(m, c->wint);
 
 }
 

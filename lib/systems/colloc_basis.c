@@ -255,16 +255,27 @@ void colloc_basis_map_nodes(size_t n, size_t m, size_t N, const double *old,
   }
 }
 
-void colloc_basis_node_weights(size_t n, size_t m, size_t ntst, const double *mesh,
-                               double *q) {
+void colloc_basis_lagrange_integrals(size_t m, double *W) {
   double gs[COLLOC_BASIS_MAXCOL], gw[COLLOC_BASIS_MAXCOL], l[COLLOC_BASIS_MAXCOL + 1];
-  double W[COLLOC_BASIS_MAXCOL + 1] = {0};
   /* W_k = int_0^1 l_k: m Gauss points integrate the degree-m l_k exactly */
   colloc_basis_gauss_legendre(m, gs, gw);
+  for (size_t k = 0; k <= m; ++k) W[k] = 0.0;
   for (size_t g = 0; g < m; ++g) {
     colloc_basis_lagrange_values(m, gs[g], l);
     for (size_t k = 0; k <= m; ++k) W[k] += gw[g] * l[k];
   }
+}
+
+void colloc_basis_node_weights(size_t n, size_t m, size_t ntst, const double *mesh,
+                               double *q) {
+  double W[COLLOC_BASIS_MAXCOL + 1];
+  colloc_basis_lagrange_integrals(m, W);
+  colloc_basis_node_weights_from(n, m, ntst, mesh, W, q);
+}
+
+void colloc_basis_node_weights_from(size_t n, size_t m, size_t ntst,
+                                    const double *mesh, const double *W,
+                                    double *q) {
   for (size_t j = 0; j < n * (ntst * m + 1); ++j) q[j] = 0.0;
   for (size_t i = 0; i < ntst; ++i) {
     const double h = mesh[i + 1] - mesh[i];

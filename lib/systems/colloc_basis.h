@@ -46,6 +46,12 @@ void colloc_basis_eval_poly(size_t n, size_t ntst, size_t m,
  * WINT and RNRMSQ). */
 void colloc_basis_node_weights(size_t n, size_t m, size_t ntst, const double *mesh,
                                double *q);
+/* The same in two parts: W[m + 1] = int_0^1 l_k (once per NCOL), then
+ * the weights of a mesh from them (the same arithmetic). */
+void colloc_basis_lagrange_integrals(size_t m, double *W);
+void colloc_basis_node_weights_from(size_t n, size_t m, size_t ntst,
+                                    const double *mesh, const double *W,
+                                    double *q);
 
 /* The weights dm[m + 1] of the m-th derivative in σ of the interpolant on
  * the nodes k/m: m^m (−1)^{m−k} C(m, k) (the m-th forward difference). */

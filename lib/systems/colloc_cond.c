@@ -15,7 +15,6 @@
 
 #include "colloc_impl.h"
 #include "cond_elim.h"
-#include "util/threads_impl.h"
 
 /* One interval's collocation rows at (X, p): rows g n + rr of block Wi,
  * columns [interior | x_i | x_{i+1} | T? | p_k]; dF/dp_k from the model's
@@ -58,38 +57,33 @@ static int fill_interval(whirl_colloc *c, colloc_scratch *s, cond_ws *w,
   return 0;
 }
 
-static int colloc_fill(cond_ws *w, const double *X, const double *p, size_t k,
-                       int mono) {
+/* Before the intervals: the period, and dF/dp_k — from the model's f_p in
+ * each interval's fill when the parameter enters through f only, else by
+ * the system (forcing frequency: T and the time argument depend on it
+ * too). */
+static int colloc_fill_begin(cond_ws *w, const double *X, const double *p,
+                             size_t k, int mono) {
   whirl_colloc *c = cond_sys(w);
   const whirl_problem *pr = c->prob;
   const size_t n = c->n, N = c->ntst, m = c->ncol;
   double *fk = cond_fk(w);
-  const double T = colloc_period_of(c, X, p);
-  if (!(T > 0) || !isfinite(T)) return 1; /* recoverable, as F */
-  /* dF/dp_k: in the loop below from the model's f_p when the parameter
-   * enters through f only, else by the system (forcing frequency: T and the
-   * time argument depend on it too) */
-  const int fk_loop = !mono && pr->jac_p && !(!c->aut && (int)k == c->fpar);
-  if (!mono && !fk_loop) {
+  c->fill_T = colloc_period_of(c, X, p);
+  if (!(c->fill_T > 0) || !isfinite(c->fill_T)) return 1; /* recoverable, as F */
+  c->fill_fk_loop = !mono && pr->jac_p && !(!c->aut && (int)k == c->fpar);
+  if (!mono && !c->fill_fk_loop) {
     int rc = whirl_system_param(&c->sys, X, p, k, fk, cond_work(w));
     if (rc != 0) return rc;
   }
-  if (fk_loop) memset(fk + n * N * m, 0, (c->nx - n * N * m) * sizeof *fk);
-  /* the intervals in parallel, each thread with its scratch; the first
-   * failure in interval order is reported, whatever the threads */
-  const int nth = colloc_threads(c);
-  size_t bad = N;
-  int bad_rc = 0;
-#pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
-  for (size_t i = 0; i < N; ++i) {
-    int rc = fill_interval(c, &c->scr[whirl_thread_num()], w, X, p, T, i,
-                           mono, fk_loop, k);
-    if (rc != 0) {
-#pragma omp critical(whirl_colloc_fill)
-      if (i < bad) bad = i, bad_rc = rc;
-    }
-  }
-  return bad < N ? bad_rc : 0;
+  if (c->fill_fk_loop) memset(fk + n * N * m, 0, (c->nx - n * N * m) * sizeof *fk);
+  return 0;
+}
+
+/* Interval i, on thread t's scratch (cond_elim.c's parallel loop). */
+static int colloc_fill_one(cond_ws *w, const double *X, const double *p,
+                           size_t k, int mono, size_t i, int t) {
+  whirl_colloc *c = cond_sys(w);
+  return fill_interval(c, &c->scr[t], w, X, p, c->fill_T, i, mono,
+                       c->fill_fk_loop, k);
 }
 
 /* The phase condition (autonomous, t = 0) with the current reference, or
@@ -118,7 +112,8 @@ static void colloc_end_row(cond_ws *w, size_t e, double *a) {
   a[2 * n + ng - 1] = cond_fk(w)[n * c->ntst * c->ncol + e];
 }
 
-static const cond_ops colloc_ops = {colloc_fill, colloc_border, colloc_end_row};
+static const cond_ops colloc_ops = {NULL, colloc_border, colloc_end_row,
+                                    colloc_fill_begin, colloc_fill_one};
 
 static void *bs_alloc(void *data) {
   whirl_colloc *c = data;

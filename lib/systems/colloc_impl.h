@@ -49,6 +49,7 @@ struct whirl_colloc {
   double L[COLLOC_MAXCOL * (COLLOC_MAXCOL + 1)];
   double D[COLLOC_MAXCOL * (COLLOC_MAXCOL + 1)];
   double dm[COLLOC_MAXCOL + 1];
+  double wint[COLLOC_MAXCOL + 1]; /* int_0^1 l_k: the nodes' norm weights */
 
   int *Jp, *Ji;  /* compressed-column pattern, nx + 1 and nnz */
   double *Jx;    /* nnz, values for the dense callback */
@@ -60,6 +61,8 @@ struct whirl_colloc {
   /* the model's evaluations at Gauss points: one scratch per thread
    * (scr[0] for the serial entry points) */
   int nthreads;             /* options.threads, resolved: >= 1 */
+  double fill_T;            /* colloc_cond.c: the period of the fill, */
+  int fill_fk_loop;         /* and dF/dp_k from f_p in each interval */
   colloc_scratch *scr;      /* nthreads */
   double *r1, *r2;          /* nx, nx */
   double *old_mesh, *old_X; /* ntst + 1, nnodes*n: mesh adaptation */

@@ -75,9 +75,9 @@ struct cond_ws {
   int nth;       /* threads of the loops over the intervals */
   size_t nlab;   /* max(nm, 2n, nf) */
   int *lab;      /* scratch labels, nlab per thread (thread 0's first) */
-  double *typ;   /* 2n + ng per thread: the interiors' back values */
   det_acc *idet; /* NTST: the product of each interval's pivots */
   int *irc;      /* NTST: each interval's gepp status */
+  int *frc;      /* NTST: each interval's fill status (fill_one) */
   int *prow, *pcol; /* nx + 1: M's rows and columns in elimination order */
   int *mark;     /* nx + 1: scratch for the permutation signs */
   double *fk;    /* nx: dF/dp_k */
@@ -108,7 +108,7 @@ void cond_free(cond_ws *w) {
                w->B,    w->F,    w->fpiv, w->lab,  w->prow, w->pcol, w->mark,
                w->fk,   w->work, w->loc,  w->ploc, w->xs,   w->bb,   w->tmp,
                w->Xf,   w->pf,   w->slab, w->mblk, w->mpiv, w->mlab,
-               w->typ,  w->idet, w->irc};
+               w->idet, w->irc,  w->frc};
   for (size_t i = 0; i < sizeof p / sizeof *p; ++i) free(p[i]);
   free(w);
 }
@@ -153,9 +153,9 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
   w->F = malloc(w->nf * w->nf * sizeof *w->F);
   w->fpiv = malloc(w->nf * sizeof *w->fpiv);
   w->lab = malloc(nth * nlab * sizeof *w->lab);
-  w->typ = malloc(nth * (2 * n + w->ng) * sizeof *w->typ);
   w->idet = malloc(N * sizeof *w->idet);
   w->irc = malloc(N * sizeof *w->irc);
+  w->frc = malloc(N * sizeof *w->frc);
   w->prow = malloc((w->nx + 1) * sizeof *w->prow);
   w->pcol = malloc((w->nx + 1) * sizeof *w->pcol);
   w->mark = malloc((w->nx + 1) * sizeof *w->mark);
@@ -176,7 +176,8 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
       !w->ppiv || !w->B || !w->F || !w->fpiv || !w->lab || !w->prow ||
       !w->pcol || !w->mark || !w->fk || !w->work || !w->loc || !w->ploc ||
       !w->xs || !w->bb || !w->tmp || !w->Xf || !w->pf || !w->slab ||
-      !w->mblk || !w->mpiv || !w->mlab || !w->typ || !w->idet || !w->irc) {
+      !w->mblk || !w->mpiv || !w->mlab || !w->idet || !w->irc ||
+      !w->frc) {
     cond_free(w);
     return NULL;
   }
@@ -372,15 +373,23 @@ static int condense_interval(cond_ws *w, size_t i, int *lab) {
   return 0;
 }
 
-/* Step 1 on the filled interval blocks, the intervals in parallel; the
- * determinant's factors are multiplied in interval order, so it does not
- * depend on the threads. */
-static int condense_intervals(cond_ws *w) {
+/* Step 1: each interval's block filled (fill_one, when the system has it)
+ * and condensed, the intervals in parallel.  The statuses are taken in
+ * interval order, the model's first, and the determinant's factors are
+ * multiplied in interval order, so nothing depends on the threads. */
+static int condense_intervals(cond_ws *w, const double *X, const double *p,
+                              size_t k, int mono) {
   const size_t N = w->N;
   const int nth = w->nth;
+  const cond_ops *ops = w->ops;
 #pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
+  for (size_t i = 0; i < N; ++i) {
+    const int t = whirl_thread_num();
+    w->frc[i] = ops->fill_one ? ops->fill_one(w, X, p, k, mono, i, t) : 0;
+    w->irc[i] = w->frc[i] ? 0 : condense_interval(w, i, w->lab + w->nlab * (size_t)t);
+  }
   for (size_t i = 0; i < N; ++i)
-    w->irc[i] = condense_interval(w, i, w->lab + w->nlab * (size_t)whirl_thread_num());
+    if (w->frc[i]) return w->frc[i];
   for (size_t i = 0; i < N; ++i) {
     if (w->irc[i] == 2) return WHIRL_EBADFUNC;
     if (w->irc[i] == 1) return singular(w);
@@ -457,9 +466,11 @@ static int factor_rows(cond_ws *w, const double *X, const double *p, size_t k,
   w->det_c.mant = 1.0;
   w->det_c.expo = 0;
   w->npiv_c = 0;
-  int rc = w->ops->fill(w, X, p, k, mono);
+  int rc = w->ops->fill_one ? w->ops->fill_begin(w, X, p, k, mono)
+                            : w->ops->fill(w, X, p, k, mono);
   if (rc != 0) return rc;
-  if ((rc = condense_intervals(w)) != 0 || (rc = eliminate_mesh_points(w)) != 0)
+  if ((rc = condense_intervals(w, X, p, k, mono)) != 0 ||
+      (rc = eliminate_mesh_points(w)) != 0)
     return rc;
   if (!mono) order_signs(w);
   memcpy(w->Xf, X, w->nx * sizeof *w->Xf);
@@ -469,8 +480,7 @@ static int factor_rows(cond_ws *w, const double *X, const double *p, size_t k,
 }
 
 /* Border row t's entries on the mesh points and globals into Bt (bc),
- * with its interior entries eliminated by each interval (step 1: the
- * intervals in parallel, their sums in order). */
+ * with its interior entries eliminated by each interval (step 1). */
 static void reduce_border_intervals(cond_ws *w, size_t t, const double *r) {
   const size_t n = w->n, m = w->m, N = w->N, ni = w->ni, nm = w->nm,
                ng = w->ng, wc = w->wc;
@@ -478,17 +488,12 @@ static void reduce_border_intervals(cond_ws *w, size_t t, const double *r) {
   const double *src = w->ops->border(w, t, r, Bt + n * (N + 1));
   for (size_t i = 0; i <= N; ++i)
     for (size_t q = 0; q < n; ++q) Bt[n * i + q] = src[n * (i * m) + q];
-  const int nth = w->nth;
-#pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
     double *Wi = w->W + i * w->wr * wc;
     double *a = Wi + (nm + t) * wc;
     memcpy(a, src + n * (i * m + 1), ni * sizeof *a);
     memset(a + ni, 0, (2 * n + ng) * sizeof *a);
     border_eliminate(Wi, wc, ni, a);
-  }
-  for (size_t i = 0; i < N; ++i) {
-    const double *a = w->W + i * w->wr * wc + (nm + t) * wc;
     for (size_t q = 0; q < n; ++q) {
       Bt[n * i + q] += a[ni + q];
       Bt[n * (i + 1) + q] += a[ni + n + q];
@@ -584,17 +589,14 @@ static void solve1(cond_ws *w, double *b) {
                pc = w->pc, nf = w->nf;
   double *bb = w->bb, *xs = w->xs, *g = xs + n * (N + 1);
   for (size_t t = 0; t < nb; ++t) bb[t] = b[w->blab[t]];
-  /* 1. (the intervals in parallel, the border sums in order) */
-  const int nth = w->nth;
-#pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
+  /* 1. */
   for (size_t i = 0; i < N; ++i) {
     double *v = w->loc + i * wr;
     memcpy(v, b + n * i * m, nm * sizeof *v);
     for (size_t t = 0; t < nb; ++t) v[nm + t] = 0.0;
     gepp_forward(w->W + i * wr * wc, wc, nm, nb, ni, w->wpiv + i * ni, v);
+    for (size_t t = 0; t < nb; ++t) bb[t] += v[nm + t];
   }
-  for (size_t i = 0; i < N; ++i)
-    for (size_t t = 0; t < nb; ++t) bb[t] += w->loc[i * wr + nm + t];
   /* 2. */
   for (size_t j = 1; j < N; ++j) {
     double *v = w->ploc + (j - 1) * pr;
@@ -623,12 +625,10 @@ static void solve1(cond_ws *w, double *b) {
     gepp_back(w->P + (j - 1) * pr * pc, pc, n, 2 * n + ng,
               w->ploc + (j - 1) * pr, yp, xs + n * j);
   }
-#pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
-    double *y = w->typ + (2 * n + ng) * (size_t)whirl_thread_num();
-    memcpy(y, xs + n * i, 2 * n * sizeof *y);
-    memcpy(y + 2 * n, g, ng * sizeof *y);
-    gepp_back(w->W + i * wr * wc, wc, ni, 2 * n + ng, w->loc + i * wr, y,
+    memcpy(yp, xs + n * i, 2 * n * sizeof *yp);
+    memcpy(yp + 2 * n, g, ng * sizeof *yp);
+    gepp_back(w->W + i * wr * wc, wc, ni, 2 * n + ng, w->loc + i * wr, yp,
               b + n * (i * m + 1));
   }
   for (size_t i = 0; i <= N; ++i) memcpy(b + n * i * m, xs + n * i, n * sizeof *b);

@@ -33,7 +33,8 @@ typedef struct cond_det {
 typedef struct cond_ws cond_ws;
 
 typedef struct cond_ops {
-  /* Fill the collocation rows of every interval block (cond_block: rows
+  /* (Or NULL, with fill_begin and fill_one below.)  Fill the collocation
+   * rows of every interval block (cond_block: rows
    * 0 .. n NCOL − 1, columns [interior | x_i | x_{i+1} | g]) and the
    * system's own data for border() and end_row(), at (X, p); dF/dp_k into
    * cond_fk(w) unless mono (F_x alone: the global columns 0).  Returns 0,
@@ -46,6 +47,15 @@ typedef struct cond_ops {
   const double *(*border)(cond_ws *w, size_t t, const double *r, double *g);
   /* End row e into a[2n + ng] ([x_0 | x_N | g]), after fill. */
   void (*end_row)(cond_ws *w, size_t e, double *a);
+  /* Optional, in place of fill: the system's data before the intervals
+   * (fill_begin), then interval i's collocation rows alone (fill_one,
+   * called from the loop over the intervals on thread `thread` of
+   * cond_shape.nthreads, each block condensed right after it is filled:
+   * one parallel loop for both).  Return 0 or the model's status. */
+  int (*fill_begin)(cond_ws *w, const double *X, const double *p, size_t k,
+                    int mono);
+  int (*fill_one)(cond_ws *w, const double *X, const double *p, size_t k,
+                  int mono, size_t i, int thread);
 } cond_ops;
 
 typedef struct cond_shape {
