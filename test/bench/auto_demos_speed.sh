@@ -12,6 +12,8 @@
 # column `runs` gives both.  Prints a table and the totals.  Not a test.
 # With BASE=/path/to/another/drivers/whirl the second column is that
 # build's `whirl auto` instead of AUTO: two builds paired demo by demo.
+# With SCRIPT=1 whirl runs the demo's script as AUTO does (`whirl auto
+# DEMO --script`): the same runs on both sides.
 # SPDX-License-Identifier: BSD-3-Clause
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
@@ -23,6 +25,8 @@ case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
 py=${AUTO_07P_PYTHON:-/usr/lib/auto-07p/python}
 [ -d "$demos" ] || { echo "# no AUTO-07p demos at $demos"; exit 0; }
 BASE=${BASE:-}
+SCRIPT=${SCRIPT:-}
+wargs=; [ -n "$SCRIPT" ] && wargs=--script
 [ -n "$BASE" ] || [ -f "$py/auto/__main__.py" ] || { echo "# no AUTO-07p at $py (Debian package auto-07p)"; exit 0; }
 demos=$(cd "$demos" && pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-autospeed.XXXXXX") || exit 1
@@ -44,18 +48,18 @@ for dir in "$demos"/*/; do
   for r in $(seq 1 "$repeat"); do
     rm -rf "$tmp/wd" "$tmp/ad"; mkdir "$tmp/wd" "$tmp/ad"
     cp "$dir"/* "$tmp/ad"/ 2> /dev/null
-    t0=$(now); (cd "$tmp/wd" && timeout 300 "$WHIRL" auto "$dir" --quiet --out=o > /dev/null 2>&1)
+    t0=$(now); (cd "$tmp/wd" && timeout 300 "$WHIRL" auto "$dir" $wargs --quiet --out=o > /dev/null 2>&1)
     if [ -n "$BASE" ]; then
-      t1=$(now); (cd "$tmp/ad" && timeout 300 "$BASE" auto "$dir" --quiet --out=o > /dev/null 2>&1)
+      t1=$(now); (cd "$tmp/ad" && timeout 300 "$BASE" auto "$dir" $wargs --quiet --out=o > /dev/null 2>&1)
     else
       t1=$(now); (cd "$tmp/ad" && timeout 300 /usr/bin/python3 "$py/auto/__main__.py" "$d.auto" > log 2>&1)
     fi
     t2=$(now)
     echo "$t1 - $t0" | bc -l >> "$tmp/w"; echo "$t2 - $t1" | bc -l >> "$tmp/a"
   done
-  nw=$(ls "$tmp/wd/o"/*.whirl 2> /dev/null | wc -l)
+  nw=$(ls "$tmp/wd/o"/*.whirl "$tmp/wd/o"/runs/*.whirl 2> /dev/null | wc -l)
   # grep -c prints 0 itself when nothing matches (and exits 1): no "|| echo 0"
-  if [ -n "$BASE" ]; then na=$(ls "$tmp/ad/o"/*.whirl 2> /dev/null | wc -l)
+  if [ -n "$BASE" ]; then na=$(ls "$tmp/ad/o"/*.whirl "$tmp/ad/o"/runs/*.whirl 2> /dev/null | wc -l)
   else na=$(grep -c "^ *BR *PT *TY" "$tmp/ad/log" 2> /dev/null); fi
   [ -n "$na" ] || na=0
   w=$(median < "$tmp/w"); a=$(median < "$tmp/a")
