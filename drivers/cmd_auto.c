@@ -7,6 +7,8 @@
  * restarts from.  doc/auto-files.md.
  * SPDX-License-Identifier: BSD-3-Clause */
 #define _XOPEN_SOURCE 700 /* realpath */
+#include "config.h"
+
 #include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
@@ -872,6 +874,7 @@ static int run_script(auto_job *J) {
   /* OUT and its mark are made by the runner once the script compiles: a
    * script with a syntax error writes nothing */
   const char *py = getenv("WHIRL_PYTHON");
+  if (!(py && *py) && access(WHIRL_PYTHON3, X_OK) == 0) py = WHIRL_PYTHON3;
   char whirl_arg[4200], dir_arg[4200], out_arg[4200];
   snprintf(whirl_arg, sizeof whirl_arg, "--whirl=%s", self);
   snprintf(dir_arg, sizeof dir_arg, "--dir=%s", J->dir);

@@ -97,6 +97,20 @@ rc=$?
 [ $rc = 0 ] && [ "$(printf '%s\n' "$out2" | grep -c '^3\.')" = 3 ]; check $? "a second run into the same OUT (exit $rc)"
 [ "$(stat -c %Y "$tmp/lg.out/runs/lg.so")" = "$t0" ]; check $? "the unchanged plug-in is not compiled again"
 
+# the interpreter configure found (sys.executable), not the first python3
+# on PATH: a python3 there that fails does not matter (WHIRL_PYTHON unset)
+py3=$(sed -n 's/^#define WHIRL_PYTHON3 "\(.*\)"$/\1/p' "$top_builddir/config.h" 2>/dev/null)
+if [ -n "$py3" ] && [ -z "${WHIRL_PYTHON:-}" ]; then
+  mkdir "$tmp/fakebin"
+  printf '#!/bin/sh\necho fake python3 >&2\nexit 7\n' > "$tmp/fakebin/python3"
+  chmod +x "$tmp/fakebin/python3"
+  out3=$(cd "$tmp" && PATH="$tmp/fakebin:$PATH" "$WHIRL" auto lg --script --quiet --out=lg3.out 2>&1)
+  rc=$?
+  [ $rc = 0 ] && [ "$(printf '%s\n' "$out3" | grep -c '^3\.')" = 3 ]; check $? "configure's Python 3 ($py3), not a failing python3 first on PATH (exit $rc)"
+else
+  ok "# SKIP configure found no Python 3, or WHIRL_PYTHON chooses it"
+fi
+
 # a restart with a larger NPAR (AUTO: NPAR = MAX(NPARR, NPAR)): PAR(2) as
 # the model has it, 0 (STPNT leaves it), beside the label's mu
 cat > "$tmp/lg/np.auto" <<'A'
