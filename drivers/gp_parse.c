@@ -295,6 +295,21 @@ static int set_key(parser *P, stmt *S) {
              : unsupported(P, "key placement");
 }
 
+/* gnuplot's dash types drawn here as gnuplot draws them (gp_draw.c's
+ * dash_pattern): 1 solid to 5 dash-dot-dot; and the point types: 6 a
+ * circle, 7 a disc.  Any other value (gnuplot's other patterns and
+ * symbols, or a number no int holds) is gnuplot's to draw. */
+static int dash_type(parser *P, double v, int *dt) {
+  if (!(v >= 1 && v <= 5 && v == floor(v))) return unsupported(P, "a dash type");
+  *dt = (int)v;
+  return 0;
+}
+static int point_type(parser *P, double v, int *pt) {
+  if (!(v == 6 || v == 7)) return unsupported(P, "a point type");
+  *pt = (int)v;
+  return 0;
+}
+
 static int set_arrow(parser *P, stmt *S) {
   gp_figure *f = P->fig;
   if (grow((void **)&f->arrow, f->narrow, sizeof *f->arrow)) return -1;
@@ -310,8 +325,9 @@ static int set_arrow(parser *P, stmt *S) {
     double v;
     if (take(S, "nohead")) nohead = 1;
     else if (take(S, "front") || take(S, "back")) continue;
-    else if (take(S, "dt") && take_number(S, &v)) a->dt = (int)v;
-    else if (take(S, "lw") && take_number(S, &v)) a->lw = v;
+    else if (take(S, "dt") && take_number(S, &v)) {
+      if (dash_type(P, v, &a->dt)) return 1;
+    } else if (take(S, "lw") && take_number(S, &v)) a->lw = v;
     else if (take(S, "lc") && take_rgb(S, &a->rgb)) continue;
     else return unsupported(P, "arrow option");
   }
@@ -519,10 +535,13 @@ static int plot_item(parser *P, stmt *S) {
   else return unsupported(P, "plot style");
   int titled = 0;
   while (peek(S) && strcmp(peek(S)->text, ",")) {
-    if (take(S, "dt") && take_number(S, &v)) s->dt = (int)v;
-    else if (take(S, "lw") && take_number(S, &v)) s->lw = v;
+    if (take(S, "dt") && take_number(S, &v)) {
+      if (dash_type(P, v, &s->dt)) return 1;
+    } else if (take(S, "lw") && take_number(S, &v)) s->lw = v;
     else if (take(S, "ps") && take_number(S, &v)) s->ps = v;
-    else if (take(S, "pt") && take_number(S, &v)) s->pt = (int)v;
+    else if (take(S, "pt") && take_number(S, &v)) {
+      if (point_type(P, v, &s->pt)) return 1;
+    }
     else if (take(S, "lc") && take_rgb(S, &s->rgb)) s->has_rgb = 1;
     else if (take(S, "notitle")) titled = 1;
     else if (take(S, "title") && take_string(S, &s->title.s)) titled = 1;
