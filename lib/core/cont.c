@@ -75,6 +75,7 @@ void whirl_cont_options_default(whirl_cont_options *o) {
   o->lead = -1;
   o->tangent_predictor = 0;
   o->tangent_from_newton = 0;
+  o->natural_corrector = 0.0;
   o->detect_lp = o->detect_bp = o->detect_hb = o->detect_pd = 1;
   o->detect_sys = 1;
   o->stability = 1;
@@ -385,13 +386,47 @@ static int eval_jac(whirl_cont *c, const double *x, const double *p) {
 /* The arclength row W dir; dir itself where that vanishes: the start's
  * Newton at fixed parameter (dir = e_N) when the parameter's weight is 0
  * (THL = {ICP(1): 0}) is the constraint p = p0, not a length. */
+/* The constraint row of the corrector: the weighted direction (the
+ * pseudo-arclength hyperplane), or with opt.natural_corrector, where the
+ * continuation parameter carries at least that share of the direction's
+ * weighted length, the hyperplane of constant parameter through the
+ * predicted point (natural-parameter correction: the system is solved at
+ * the predicted parameter; the same constraint value <row, dir> at the
+ * predictor, so the predictor, the step length and the sign of the
+ * bordered determinant, ∝ <row, t>, are those of the arclength row). */
+static double weighted_len2(const whirl_cont *c, const double *dir) {
+  double all = 0.0;
+  for (size_t i = 0; i < c->N; ++i) all += c->w2[i] * dir[i] * dir[i];
+  return all;
+}
+
+/* Natural-parameter correction applies in a step's corrector only (not
+ * in the localisation of special points, whose hyperplanes cross folds):
+ * the tangent
+ * of a point is oriented by the arclength row (<row, t> = 1), and with the
+ * natural row its parameter component would keep the direction's sign,
+ * the LP test (its sign change) blind.  Not with tangent_from_newton, whose
+ * tangent comes from the corrector's factorisation. */
+static int natural_row(const whirl_cont *c, const double *dir) {
+  if (!(c->opt.natural_corrector > 0) || !c->correcting || c->arclength_only ||
+      c->opt.tangent_from_newton)
+    return 0;
+  const double all = weighted_len2(c, dir);
+  return all > 0 && c->w2[c->n] * dir[c->n] * dir[c->n] >= c->opt.natural_corrector * all;
+}
+
 static void border_row(const whirl_cont *c, const double *dir, double *row) {
   int zero = 1;
   for (size_t i = 0; i < c->N; ++i) {
     row[i] = c->w2[i] * dir[i];
     zero &= row[i] == 0.0;
   }
-  if (zero) memcpy(row, dir, c->N * sizeof *row);
+  if (zero) {
+    memcpy(row, dir, c->N * sizeof *row);
+  } else if (natural_row(c, dir)) {
+    memset(row, 0, c->n * sizeof *row);
+    row[c->n] = weighted_len2(c, dir) / dir[c->n];
+  }
 }
 
 static int jac_factor(whirl_cont *c, const double *x, const double *p,
@@ -1161,6 +1196,24 @@ static int recorrect_remapped(whirl_cont *c) {
   return rc < 0 ? rc : rc > 0 ? 1 : 0;
 }
 
+/* Did the natural-parameter corrector leave the direction of the step?
+ * The secant from the current point to the corrected one turns from the
+ * step's direction by about half the tangent's turn along a branch that is
+ * a graph over the parameter; more than max_angle, and Newton at the
+ * predicted parameter has gone past a fold onto another sheet of the
+ * branch (or far along this one): the step is corrected again on the
+ * arclength hyperplane. */
+static int natural_jumped(const whirl_cont *c) {
+  double d2 = 0.0, dd = 0.0;
+  for (size_t i = 0; i < c->N; ++i) {
+    const double d = c->trial.X[i] - c->cur.X[i];
+    d2 += c->w2[i] * d * d;
+    dd += c->w2[i] * d * c->dir[i];
+  }
+  const double len = sqrt(d2 * cont_dot(c, c->dir, c->dir));
+  return !(len > 0.0 && dd * (c->ds > 0 ? 1 : -1) >= cos(c->opt.max_angle) * len);
+}
+
 /* Predict along the secant (or the tangent), correct, analyse; halve the
  * step on a failure or a turn sharper than max_angle (after a remap, first
  * correct the current point on the new representation: recorrect_remapped).
@@ -1191,8 +1244,18 @@ static int predict_correct(whirl_cont *c, double *cosang, int *its) {
     for (size_t i = 0; i < N; ++i) c->trial.X[i] = c->cur.X[i] + c->ds * c->dir[i];
     if (o->curved_predictor && c->have_prev && c->have_tprev && c->hprev > 0.0)
       curved_guess(c);
+    c->correcting = 1; /* the step's corrector (not a localisation's) */
+    const int natural = natural_row(c, c->dir);
     int rc = cont_correct(c, c->cur.X, c->dir, c->ds, c->trial.X);
+    c->correcting = 0;
     if (rc < 0) return rc;
+    if (natural && (rc > 0 || natural_jumped(c))) {
+      /* at the predicted parameter Newton failed or went far (a fold
+       * ahead, another sheet of the branch): the same step on the
+       * arclength hyperplane before a shorter one */
+      c->arclength_only = 1;
+      continue;
+    }
     *its = c->its;
     if (rc == 0 && o->tangent_from_newton) {
       rc = tangent_from_newton(c, &c->trial);
@@ -1220,6 +1283,7 @@ static int predict_correct(whirl_cont *c, double *cosang, int *its) {
       continue;
     }
     c->trial.s = c->cur.s + sqrt(cont_dist2(c, c->trial.X, c->cur.X));
+    c->arclength_only = 0;
     return 0;
   }
 }

@@ -59,6 +59,9 @@ struct whirl_cont {
   double *row;        /* N: border row of the current factorisation */
   double *row2;       /* N: border row wanted (chord Newton) */
   int fact_ok;        /* a factorisation chord Newton may use is held */
+  int correcting;     /* inside cont_correct (natural_row applies) */
+  int arclength_only; /* this step's natural-parameter correction failed:
+                         retried on the arclength hyperplane */
   int remapped;       /* the current point was remapped (a new mesh) since
                          it was corrected: not yet a solution of the new
                          representation (recorrect_remapped) */

@@ -135,6 +135,17 @@ typedef struct whirl_cont_options {
                             derivative: a Jacobian and a factorisation
                             fewer a step, test functions off by at most
                             newton_tol; located points analysed afresh */
+  double natural_corrector; /* 0 (default): the corrector keeps to the
+                            pseudo-arclength hyperplane; s in (0, 1]: where
+                            the continuation parameter carries at least the
+                            share s of the step direction's weighted length
+                            (w_p² d_p² ≥ s |d|²_w), the corrector solves at
+                            the predicted parameter instead (natural
+                            parameter), the arclength hyperplane elsewhere
+                            (near folds): for systems whose evaluation at a
+                            new parameter value is costly (a condensation,
+                            a factorisation per parameter), one value a
+                            step instead of one per Newton iteration */
   int curved_predictor;  /* 1: start the corrector from the second-order
                             predictor X + σ t + σ²/2 κ, κ the change of the
                             unit tangent over the last step per arclength,

@@ -32,6 +32,16 @@ static int cusp_Fp(const double *x, const double *p, size_t k, double *fk, void 
   return 0;
 }
 
+/* The cusp counting the parameter values F is evaluated at: each new
+ * value is what a costly parameter (a condensation per speed) pays for. */
+static double cc_last = NAN;
+static size_t cc_changes;
+static int cusp_counted_F(const double *x, const double *p, double *f, void *d) {
+  if (p[0] != cc_last) ++cc_changes;
+  cc_last = p[0];
+  return cusp_F(x, p, f, d);
+}
+
 /* ---- pitchfork F = x (p - x^2) and transcritical F = x (p - x) */
 static int pf_F(const double *x, const double *p, double *f, void *d) {
   (void)d;
@@ -168,6 +178,54 @@ static void test_cusp(int analytic) {
   }
   ok(res < 1e-10, "cusp: all %zu points solve F = 0 (max |F| = %.2e)", b->len, res);
   whirl_branch_free(b);
+}
+
+/* natural_corrector: Newton at the predicted parameter away from the
+ * folds, the arclength hyperplane near them (and where the fixed-parameter
+ * Newton fails or lands on another sheet): the same folds, the same points
+ * on the curve, far fewer parameter values. */
+static void test_natural_corrector(double xw) {
+  whirl_system s = {.name = "cusp", .n = 1, .npar = 2, .F = cusp_counted_F,
+                    .Fx = cusp_Fx, .Fp = cusp_Fp};
+  const double mu_f = 2.0 / (3.0 * sqrt(3.0)), x_f = 1.0 / sqrt(3.0);
+  size_t changes[2] = {0, 0}, npts[2] = {0, 0};
+  for (int nat = 0; nat < 2; ++nat) {
+    whirl_cont_options o;
+    whirl_cont_options_default(&o);
+    o.ds = 0.05;
+    o.ds_max = 0.4;
+    o.p_min = -6.5;
+    o.p_max = 6.5;
+    /* x weighed 0.2: the steps reach far in mu, and Newton at a mu
+     * predicted past the first fold converges on the upper sheet (the
+     * secant's turn tells: natural_jumped) */
+    o.x_weight = &xw;
+    o.natural_corrector = nat ? 1e-9 : 0.0;
+    double x0 = -2.0, p0[2] = {-6.0, 1.0};
+    int reason;
+    cc_changes = 0;
+    whirl_branch *b = run(&s, &o, &x0, p0, +1, &reason);
+    changes[nat] = cc_changes;
+    const whirl_branch_point *l1 = nth_type(b, WHIRL_PT_LP, 0), *l2 = nth_type(b, WHIRL_PT_LP, 1);
+    ok(b && count_type(b, WHIRL_PT_LP) == 2 && l1 && l2 && fabs(l1->p[0] - mu_f) < 1e-12 &&
+       fabs(l2->p[0] + mu_f) < 1e-12 && fabs(l1->x[0] + x_f) < 1e-9 &&
+       fabs(l2->x[0] - x_f) < 1e-9 && reason == WHIRL_STOP_PMAX,
+       "natural corrector %s, x weight %g: the cusp's two folds at -+2/(3 sqrt 3), "
+       "to the end", nat ? "on" : "off", xw);
+    double res = 0;
+    for (size_t i = 0; b && i < b->len; ++i) {
+      double f;
+      cusp_F(b->pts[i].x, b->pts[i].p, &f, NULL);
+      res = fmax(res, fabs(f));
+    }
+    npts[nat] = b ? b->len : 0;
+    ok(b && res < 1e-10, "natural corrector %s, x weight %g: all %zu points solve "
+       "F = 0 (%.1e)", nat ? "on" : "off", xw, npts[nat], res);
+    whirl_branch_free(b);
+  }
+  ok(10 * changes[1] < 8 * changes[0], "natural corrector, x weight %g: %zu parameter "
+     "values F was evaluated at, against %zu on the arclength hyperplane", xw, changes[1],
+     changes[0]);
 }
 
 static void test_bp(void) {
@@ -1481,6 +1539,8 @@ int main(void) {
   test_start_messages();
   test_cusp(1);
   test_cusp(0);
+  test_natural_corrector(1.0);
+  test_natural_corrector(0.2);
   test_bp();
   test_bp_curved(3.0, 0.1);
   test_bp_curved(5.0, 0.2);
