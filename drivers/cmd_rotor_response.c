@@ -186,7 +186,7 @@ static const cli_doc response_doc = {
 
 typedef struct resp_args {
   const char *file, *unit, *dir, *seed[8], *stability, *discover;
-  double from, to, unb, clr, visc;
+  double from, to, unb, clr, visc, ds_max;
   size_t harmonics, nmx, nseed, starts, hill_nev;
   int dseed;
   int node, noplot, quiet;
@@ -222,6 +222,10 @@ static int parse_args(int argc, char **argv, resp_args *a) {
   const cli_opt opts[] = {
       {"--from", CLI_DOUBLE, &a->from, "S", "lowest speed, in --unit", "the file's"},
       {"--to", CLI_DOUBLE, &a->to, "S", "highest speed, in --unit", "the file's"},
+      {"--ds-max", CLI_DOUBLE, &a->ds_max, "S",
+       "the longest continuation step in speed, in --unit (a window of unstable "
+       "orbits between two torus or period-doubling points narrower than it may be "
+       "stepped over)", "a tenth of the range"},
       {"--unit", CLI_STRING, &a->unit, "U", "unit of the speeds: rpm, rad/s or hz", NULL},
       {"--node", CLI_INT, &a->node, "K", "amplitude at node K",
        "the first nonlinear element's node"},
@@ -242,7 +246,8 @@ static int parse_args(int argc, char **argv, resp_args *a) {
       {"--discover-seed", CLI_INT, &a->dseed, "S", "seed of the random starts", d_seed},
       {"--stability", CLI_STRING, &a->stability, "S",
        "Hill's stability: auto (dense up to 1200 unknowns of the Hill matrix, else "
-       "sparse), dense, sparse, or off",
+       "sparse), dense, sparse, reduced (sparse on a Craig-Bampton reduction: the "
+       "nonlinear DOFs and the held rotor's modes up to 3 (H + 1/2) omega), or off",
        NULL},
       {"--hill-nev", CLI_SIZE, &a->hill_nev, "N",
        "the most Floquet exponents the sparse Hill method computes at one orbit (all "
@@ -266,16 +271,18 @@ static int check_args(const char *CMD, resp_args *a, const whirl_fe_rotor *r, do
                       whirl_fe_hbm_response_options *o) {
   whirl_fe_hbm_response_options_default(o);
   if (a->harmonics) o->hbm.harmonics = a->harmonics;
-  static const char *const stab[] = {"off", "dense", "sparse", "auto"};
+  static const char *const stab[] = {"off", "dense", "sparse", "reduced", "auto"};
   int k = 0;
-  while (k < 4 && strcmp(a->stability, stab[k])) k++;
-  if (k == 4) {
-    cli_error(CMD, "--stability must be auto, dense, sparse or off (got '%s')", a->stability);
+  while (k < 5 && strcmp(a->stability, stab[k])) k++;
+  if (k == 5) {
+    cli_error(CMD, "--stability must be auto, dense, sparse, reduced or off (got '%s')",
+              a->stability);
     return 2;
   }
-  o->hbm.stability = k == 3 ? -1 : k;
+  o->hbm.stability = k == 4 ? -1 : k;
   if (a->nmx) o->nmx = a->nmx;
   if (a->hill_nev) o->hbm.hill_nev = a->hill_nev;
+  if (a->ds_max > 0) o->ds_max = a->ds_max * f;
   o->speed_min = isnan(a->from) ? r->speed_min : a->from * f;
   o->speed_max = isnan(a->to) ? r->speed_max : a->to * f;
   o->unbalance = a->unb, o->clearance = a->clr, o->viscosity = a->visc;
@@ -292,6 +299,10 @@ static int check_args(const char *CMD, resp_args *a, const whirl_fe_rotor *r, do
   }
   if (a->node >= r->nnode) {
     cli_error(CMD, "--node %d: the rotor has nodes 0..%d", a->node, r->nnode - 1);
+    return 2;
+  }
+  if (!(a->ds_max >= 0) || !isfinite(a->ds_max)) {
+    cli_error(CMD, "--ds-max must be a speed > 0 (got %g)", a->ds_max);
     return 2;
   }
   if (!(a->unb >= 0) || !(a->clr > 0) || !(a->visc > 0) || o->hbm.harmonics > 200) {

@@ -18,6 +18,7 @@ void whirl_fe_hbm_options_default(whirl_fe_hbm_options *o) {
   o->nu = 1;
   o->stability = -1;
   o->hill_nev = 48;
+  o->hill_cutoff = 3;
 }
 
 void whirl_fe_hbm_params(double Omega, double *p) {
@@ -206,11 +207,14 @@ static int check_options(const whirl_fe_rotor *r, const whirl_fe_hbm_options *o,
     return WHIRL_ERRMSG(err, errlen, WHIRL_EINVAL,
                         "the rotor needs nonlinear elements and ndof = "
                         "4 nnode + 2 npedestal");
-  if (o->stability < -1 || o->stability > 2 ||
-      (o->stability == 2 && o->hill_nev < 1))
+  if (o->stability < -1 || o->stability > 3 ||
+      (o->stability >= 2 && o->hill_nev < 1) ||
+      (o->stability == 3 && !(o->hill_cutoff >= 1 && o->hill_cutoff <= 100)))
     return WHIRL_ERRMSG(err, errlen, WHIRL_EINVAL,
-                        "stability %d, hill_nev %zu: need -1, 0, 1 or 2, and "
-                        "hill_nev >= 1 for 2", o->stability, o->hill_nev);
+                        "stability %d, hill_nev %zu, hill_cutoff %g: need -1, "
+                        "0, 1, 2 or 3, hill_nev >= 1 for 2 and 3, 1 <= "
+                        "hill_cutoff <= 100 for 3", o->stability, o->hill_nev,
+                        o->hill_cutoff);
   if (o->harmonics < 1 || o->harmonics > 256 || o->nu < 1 ||
       o->nu > o->harmonics)
     return WHIRL_ERRMSG(err, errlen, WHIRL_EINVAL,
@@ -249,7 +253,7 @@ static void fill_system(whirl_fe_hbm *h) {
     h->hill = hill <= 1200 ? 1 : 0;
 #endif
   }
-  if (h->hill == 2 && hill < h->o.hill_nev + 4) h->hill = 1;
+  if (h->hill >= 2 && hill < h->o.hill_nev + 4) h->hill = 1;
   if (h->hill > 0) {
     s->nspec = h->hill == 1 ? 2 * (size_t)h->r->ndof : h->o.hill_nev;
     s->spectrum = fe_hbm_spectrum;
@@ -302,6 +306,7 @@ fail:
 
 void whirl_fe_hbm_free(whirl_fe_hbm *h) {
   if (!h) return;
+  fe_cb_free(&h->cb);
   fe_lin_free(&h->lin);
   fe_aft_free(&h->aft);
   free(h->q);

@@ -166,6 +166,7 @@ int fe_hill_exponents(whirl_fe_hbm *h, const double *qfull, const double *p,
 
 int whirl_fe_hbm_hill(whirl_fe_hbm *h, const double *X, const double *p,
                       double *re, double *im, size_t *m) {
+  if (h->hill == 3) return fe_hill_reduced(h, X, p, re, im, m);
   int rc = whirl_fe_hbm_recover(h, X, p, h->qfull);
   if (rc) return rc;
   if (h->hill == 2)

@@ -184,6 +184,24 @@ int fe_shift_factor(fe_shift *s, fe_lin *l, double Omega, double w,
 /* y[ndof L] := P(σ)⁻¹ y (real harmonic form over all DOFs). */
 int fe_shift_solve(fe_shift *s, fe_lin *l, double *y);
 
+/* Hill's stability on a Craig–Bampton reduction of the rotor
+ * (fe_hbm_reduce.c): the reduced rotor, its own harmonic balance object
+ * (for the sparse Hill method), and where the nonlinear DOFs lie in it. */
+typedef struct fe_cb {
+  whirl_fe_rotor *r;    /* the reduced rotor (owned) */
+  struct whirl_fe_hbm *h; /* on r, stability 2 */
+  int m, neta;          /* nonlinear DOFs, interior modes kept */
+  int *pos;             /* m: reduced DOF of each of fe_aft's DOFs */
+  double wcut, wtop;    /* the cutoff, the highest mode kept (rad/s) */
+  double *q;            /* ndof(r) L: an orbit's coefficients on r */
+} fe_cb;
+
+/* Build cb for r with the modes of the held interior up to wcut (rad/s);
+ * message in err. */
+int fe_cb_build(const whirl_fe_rotor *r, const fe_aft *a, double wcut,
+                fe_cb *cb, char *err, size_t len);
+void fe_cb_free(fe_cb *cb);
+
 /* ----------------------------------------------------------- the object */
 
 struct whirl_fe_hbm {
@@ -193,7 +211,9 @@ struct whirl_fe_hbm {
   fe_aft aft;
   fe_lin lin;
   double Ls, Fs;           /* length and force scales */
-  int hill;                /* 0 none, 1 dense, 2 sparse (ARPACK) */
+  int hill;                /* 0 none, 1 dense, 2 sparse (ARPACK), 3 sparse
+                              on the Craig–Bampton reduction */
+  fe_cb cb;                /* hill 3: built at the first orbit */
   whirl_system sys;
   double *q, *f, *fp, *fm, *Jnl; /* work: SI coefficients, forces, m L;
                                     (m L)² (3 (m L)² for Hill) */
@@ -219,5 +239,9 @@ int fe_hill_exponents(whirl_fe_hbm *h, const double *qfull, const double *p,
  * exponents in the strip |Im| ≤ ω/2 among the nev nearest a small shift. */
 int fe_hill_sparse(whirl_fe_hbm *h, const double *qfull, const double *p,
                    size_t nev, double *re, double *im, size_t *m);
+/* The same on the Craig–Bampton reduction (fe_hbm_reduce.c), from the
+ * unknowns X themselves (the nonlinear DOFs' coefficients). */
+int fe_hill_reduced(whirl_fe_hbm *h, const double *X, const double *p,
+                    double *re, double *im, size_t *m);
 
 #endif

@@ -51,14 +51,15 @@ static void cont_options(whirl_cont_options *co, double lo, double hi,
    * unknowns' arclength dominates), and /10 against /50 takes 138 steps
    * instead of 546 on examples/rotor/compressor.rotor, the same folds */
   co->ds_max = w * (o->ds_max > 0 ? o->ds_max : (hi - lo) / 10);
+  if (co->ds > co->ds_max) co->ds = co->ds_max;
   co->ds_min = co->ds * 1e-6;
   co->nmx = o->nmx;
   co->newton_tol = 1e-9;
   /* a new speed is a new condensation (H + 1 banded LUs and their
    * solves): Newton at the predicted speed away from folds, one speed a
-   * step instead of one per iteration (0.62 → 0.33 s on compressor.rotor,
+   * step instead of one per iteration (0.62 → 0.24 s on compressor.rotor,
    * the same folds to 1e-11) */
-  co->natural_corrector = 1e-9;
+  co->natural_corrector = 1e-4;
   co->detect_hb = 1;
   co->detect_pd = 1;
   co->detect_loop = o->seed_eps > 0 || o->seed_x; /* an isola closes on itself */

@@ -788,6 +788,82 @@ static void hill_sparse_complete(void) {
   fe_chain_free(r);
 }
 
+/* The largest distance from an exponent of (re, im)[m] to the nearest of
+ * (rr, ri)[mr], over those with |λ| < 0.45 ω (well inside the disk both
+ * methods compute). */
+static double exponent_distance(const double *re, const double *im, size_t m,
+                                const double *rr, const double *ri, size_t mr,
+                                double w) {
+  double worst = 0;
+  for (size_t j = 0; j < m; ++j) {
+    if (hypot(re[j], im[j]) > 0.45 * w) continue;
+    double best = INFINITY;
+    for (size_t i = 0; i < mr; ++i) best = fmin(best, hypot(rr[i] - re[j], ri[i] - im[j]));
+    worst = fmax(worst, best);
+  }
+  return worst;
+}
+
+/* Hill's method on the Craig–Bampton reduction (stability 3) against the
+ * sparse method on the whole rotor: a 9-node shaft on a cubic spring
+ * (node 0) and an SFD on a pedestal (node 8: the pedestal's constraint
+ * mode does not reach the interior), at a state that is not an orbit.
+ * With every interior mode kept the reduction is a change of basis: the
+ * same exponents to rounding; with the default cutoff close, and closer
+ * with a higher one (the modes' and the inertia relief's truncation). */
+static void hill_reduced(void) {
+  fe_chain_opts co;
+  fe_chain_defaults(&co, 9);
+  co.pedestal = 1;
+  co.nnl = 2;
+  co.nl[0] = fe_chain_cubic(0, 1e6, 1e13);
+  co.nl[1] = fe_chain_sfd(8, 0);
+  whirl_fe_rotor *r = fe_chain_build(&co);
+  const double Om = 600.0, w = Om;
+  whirl_fe_hbm *hs = make(r, 3, 0, 2e-4, 0, 2);
+  whirl_fe_hbm_options o;
+  whirl_fe_hbm_options_default(&o);
+  o.harmonics = 3;
+  o.length_scale = 2e-4;
+  o.stability = 3;
+  const double cut[3] = {100, 2, 6};
+  whirl_fe_hbm *hr[3];
+  char err[256];
+  for (int k = 0; k < 3; ++k) {
+    o.hill_cutoff = cut[k];
+    hr[k] = whirl_fe_hbm_alloc(r, &o, err, sizeof err);
+  }
+  const whirl_system *ss = whirl_fe_hbm_system(hs);
+  double *X = calloc(ss->n, sizeof *X), p[4], sre[64], sim[64], rre[3][64], rim[3][64];
+  size_t ms = 64, mr[3] = {64, 64, 64};
+  whirl_fe_hbm_params(Om, p);
+  for (size_t i = 0; i < ss->n; ++i) X[i] = tap_urand(-0.05, 0.05);
+  int rs = whirl_fe_hbm_hill(hs, X, p, sre, sim, &ms), rr = 0;
+  for (int k = 0; k < 3; ++k) rr |= hr[k] ? whirl_fe_hbm_hill(hr[k], X, p, rre[k], rim[k], &mr[k]) : -1;
+  if (rs == WHIRL_EINVAL && strstr(whirl_fe_hbm_errmsg(hs), "without ARPACK")) {
+    ok(1, "# SKIP reduced Hill: built without ARPACK");
+  } else {
+    double e[3];
+    for (int k = 0; k < 3; ++k)
+      e[k] = fmax(exponent_distance(sre, sim, ms, rre[k], rim[k], mr[k], w),
+                  exponent_distance(rre[k], rim[k], mr[k], sre, sim, ms, w)) / w;
+    if (rs || rr) printf("# %d %s / %d %s %s %s\n", rs, whirl_fe_hbm_errmsg(hs), rr, whirl_fe_hbm_errmsg(hr[0]), whirl_fe_hbm_errmsg(hr[1]), whirl_fe_hbm_errmsg(hr[2]));
+    ok(rs == 0 && rr == 0 && ms >= 4 && mr[0] == ms && e[0] < 1e-9,
+       "reduced Hill, every interior mode kept: the %zu sparse exponents (%zu, %.1e) %s",
+       ms, mr[0], e[0], rr ? whirl_fe_hbm_errmsg(hr[0]) : "");
+    ok(rr == 0 && e[1] < 1e-2 && fabs(rre[1][0] - sre[0]) < 1e-3 * w,
+       "reduced Hill, cutoff 2 (H + 1/2) omega: exponents within %.1e omega, the "
+       "rightmost %.6g against %.6g", e[1], rre[1][0], sre[0]);
+    ok(rr == 0 && e[2] < 0.5 * e[1] && fabs(rre[2][0] - sre[0]) < 1e-5 * w,
+       "reduced Hill, cutoff 6 (H + 1/2) omega: closer (%.1e omega), the rightmost "
+       "%.8g against %.8g", e[2], rre[2][0], sre[0]);
+  }
+  free(X);
+  whirl_fe_hbm_free(hs);
+  for (int k = 0; k < 3; ++k) whirl_fe_hbm_free(hr[k]);
+  fe_chain_free(r);
+}
+
 static void test_response(void) {
   whirl_fe_rotor *r = duffing3();
   whirl_fe_hbm_response_options o;
@@ -795,6 +871,10 @@ static void test_response(void) {
   o.hbm.harmonics = 5;
   o.speed_min = 150;
   o.speed_max = 400;
+  /* steps of at most 8 rad/s: the window of unstable tori (about 329 to
+   * 341 rad/s) is wider than a step, so a point lands in it whatever the
+   * corrector (the default range/10 = 25 rad/s may step over it) */
+  o.ds_max = 8;
   o.node = 0;
   collect c;
   memset(&c, 0, sizeof c);
@@ -981,6 +1061,7 @@ int main(void) {
   hill_condensed_shift(WHIRL_FE_SFD_SHORT_PI);
   hill_condensed_shift(WHIRL_FE_SFD_INERTIA);
   hill_sparse_complete();
+  hill_reduced();
   test_linear();
   test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_PI);
   test_condensed_vs_full(1, 320.0, 4.0, WHIRL_FE_SFD_SHORT_PI);

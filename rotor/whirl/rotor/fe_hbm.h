@@ -84,12 +84,17 @@ typedef struct whirl_fe_hbm_options {
                            1 dense (all 2 ndof exponents; 2 ndof (2H+1)
                            eigenvalues per point), 2 sparse (ARPACK: every
                            exponent within 1.05 ω/2 of a small shift near
-                           0, those in |Im λ| ≤ ω/2 returned), 0 none;
+                           0, those in |Im λ| ≤ ω/2 returned), 0 none,
+                           3 sparse on a Craig–Bampton reduction (the
+                           nonlinear DOFs and the held rotor's modes up to
+                           hill_cutoff (H + ½) ω: approximate, fast);
                            −1 (default): dense when 2 ndof (2H+1) ≤ 1200,
                            else sparse when built with ARPACK, else none */
   size_t hill_nev;      /* the most eigenvalues the sparse Hill method
                            computes at one orbit (default 48); where more
                            lie within 1.05 ω/2 its stability is unknown */
+  double hill_cutoff;   /* stability 3: the held rotor's modes kept reach
+                           hill_cutoff (H + ½) ω_max (default 3) */
   int interior_lu;      /* the LU of the held rotor in the condensation:
                            0 (default) banded in a reverse Cuthill–McKee
                            ordering while its kl + ku ≤ 64, else UMFPACK;
