@@ -379,34 +379,18 @@ static int eval_jac(whirl_cont *c, const double *x, const double *p) {
   return classify(c, rc, "parameter derivative");
 }
 
-/* Evaluate the Jacobian at (x, p) and factor [F_x F_p; r^T] with r the
- * weighted direction dir: by the system's structured solver, or by the
- * general (dense or sparse) LU of the assembled matrix.  Returns 0, 2 for a
- * recoverable model failure, 3 for a singular matrix, < 0 fatal. */
-/* The arclength row W dir; dir itself where that vanishes: the start's
- * Newton at fixed parameter (dir = e_N) when the parameter's weight is 0
- * (THL = {ICP(1): 0}) is the constraint p = p0, not a length. */
-/* The constraint row of the corrector: the weighted direction (the
- * pseudo-arclength hyperplane), or with opt.natural_corrector, where the
- * continuation parameter carries at least that share of the direction's
- * weighted length, the hyperplane of constant parameter through the
- * predicted point (natural-parameter correction: the system is solved at
- * the predicted parameter; the same constraint value <row, dir> at the
- * predictor, so the predictor, the step length and the sign of the
- * bordered determinant, ∝ <row, t>, are those of the arclength row). */
 static double weighted_len2(const whirl_cont *c, const double *dir) {
   double all = 0.0;
   for (size_t i = 0; i < c->N; ++i) all += c->w2[i] * dir[i] * dir[i];
   return all;
 }
 
-/* Natural-parameter correction applies in a step's corrector only (not
- * in the localisation of special points, whose hyperplanes cross folds):
- * the tangent
- * of a point is oriented by the arclength row (<row, t> = 1), and with the
- * natural row its parameter component would keep the direction's sign,
- * the LP test (its sign change) blind.  Not with tangent_from_newton, whose
- * tangent comes from the corrector's factorisation. */
+/* Natural-parameter correction applies in a step's corrector only, not in
+ * the localisation of special points (whose hyperplanes cross folds) nor
+ * for a point's tangent, which the arclength row orients (<row, t> = 1:
+ * with the natural row its parameter component would keep the direction's
+ * sign, the LP test blind); nor with tangent_from_newton, whose tangent
+ * comes from the corrector's factorisation. */
 static int natural_row(const whirl_cont *c, const double *dir) {
   if (!(c->opt.natural_corrector > 0) || !c->correcting || c->arclength_only ||
       c->opt.tangent_from_newton)
@@ -415,6 +399,14 @@ static int natural_row(const whirl_cont *c, const double *dir) {
   return all > 0 && c->w2[c->n] * dir[c->n] * dir[c->n] >= c->opt.natural_corrector * all;
 }
 
+/* The constraint row of the corrector: the arclength row W dir; dir
+ * itself where that vanishes (the start's Newton at fixed parameter,
+ * dir = e_N, when the parameter's weight is 0, THL = {ICP(1): 0}, is the
+ * constraint p = p0, not a length); or, with opt.natural_corrector where
+ * natural_row allows, the hyperplane of constant parameter through the
+ * predicted point, (<W dir, dir> / dir_p) e_p: the same constraint value
+ * <row, dir> at the predictor, so the predictor and the step are those of
+ * the arclength row, and the system is solved at the predicted parameter. */
 static void border_row(const whirl_cont *c, const double *dir, double *row) {
   int zero = 1;
   for (size_t i = 0; i < c->N; ++i) {
@@ -429,6 +421,10 @@ static void border_row(const whirl_cont *c, const double *dir, double *row) {
   }
 }
 
+/* Evaluate the Jacobian at (x, p) and factor [F_x F_p; r^T] with r the
+ * weighted direction dir: by the system's structured solver, or by the
+ * general (dense or sparse) LU of the assembled matrix.  Returns 0, 2 for a
+ * recoverable model failure, 3 for a singular matrix, < 0 fatal. */
 static int jac_factor(whirl_cont *c, const double *x, const double *p,
                       const double *dir) {
   border_row(c, dir, c->row);
