@@ -251,7 +251,7 @@ static int arnoldi(hill_op *o, int nev, double *start, int *warm, double *dr,
   if (ncv > N) ncv = N;
   int lworkl = 3 * ncv * ncv + 6 * ncv, ido = 0, info = *warm ? 1 : 0;
   int iparam[11] = {0}, ipntr[14] = {0};
-  double tol = 1e-12;
+  double tol = o->h->hill_tol > 0 ? o->h->hill_tol : 1e-12;
   size_t need = (size_t)N * (4 + ncv + nev + 1) + lworkl + 3 * (size_t)ncv;
   int rc = hill_workspace(o->h, need, (size_t)ncv);
   if (rc) return rc;

@@ -223,6 +223,7 @@ struct whirl_fe_hbm {
                               Arnoldi start (fe_hbm_hill_sparse.c) */
   int hill_warm;           /* hill_start holds one */
   int hill_nev_cur;        /* the next orbit's first nev (0: not yet) */
+  double hill_tol;         /* ARPACK's relative tolerance (0: 1e-12) */
   double *hill_ws;         /* ARPACK's work arrays (fe_hbm_hill_sparse.c) */
   size_t hill_ws_len;
   int *hill_sel;

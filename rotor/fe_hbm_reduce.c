@@ -474,6 +474,10 @@ static int cb_ensure(whirl_fe_hbm *h, double w) {
     fe_cb_free(&h->cb);
     return rc;
   }
+  /* the Ritz values to 1e-8 relative: three orders below the reduction's
+   * own error on the exponents (1e-5 omega, doc/fe-hbm.md), 15 % of the
+   * run on compressor.rotor, no stable flag changed */
+  h->cb.h->hill_tol = 1e-8;
   if (h->cb.h->hill != 2) {
     fe_cb_free(&h->cb);
     return WHIRL_ERRMSG(h->errmsg, sizeof h->errmsg, WHIRL_EINVAL,
