@@ -411,16 +411,21 @@ int cmd_rotor_response(int argc, char **argv) {
   whirl_fe_rotor *r = rotor_load(a.file);
   if (!r) return 2;
   whirl_fe_hbm_response_options o;
+  whirl_fe_hbm_response_report rep;
+  memset(&rep, 0, sizeof rep);
   resp_table t = {0};
   rc = check_args(CMD, &a, r, f, &o);
+  o.report = &rep;
   if (!rc) rc = cli_outdir_check(CMD, NULL, a.dir);
   if (!rc) rc = compute(CMD, &a, f, r, &o, &t);
   if (!rc) rc = response_out(a.dir, a.noplot, r, a.file, a.node, &t);
   if (!rc) {
     write_table(stdout, &t, r->omega_ref, 1);
     if (!a.quiet)
-      fprintf(stderr, "whirl rotor response: %zu points on %d branches in %s\n", t.n,
-              t.branch, a.dir);
+      fprintf(stderr, "whirl rotor response: %zu points on %d branches in %s: %zu "
+              "steps (%zu rejected), %zu Newton iterations, %zu unknowns, %zu spectra\n",
+              t.n, t.branch, a.dir, rep.cont.steps, rep.cont.rejected,
+              rep.cont.newton_its, rep.unknowns, rep.cont.eig_evals);
     if (!a.quiet && o.hbm.stability != 0) note_unknown_stability(&t, o.hbm.hill_nev);
   }
   free(t.pt);

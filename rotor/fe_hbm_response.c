@@ -159,6 +159,23 @@ static int settle(const whirl_system *S, double *x, const double *p) {
   return rc ? rc : (r <= 1e-20 ? WHIRL_OK : WHIRL_ENOCONV);
 }
 
+/* The counts of one branch added to the report. */
+static void add_report(whirl_fe_hbm_response_report *r, const whirl_cont_stats *s,
+                       size_t unknowns) {
+  whirl_cont_stats *t = &r->cont;
+  t->steps += s->steps;
+  t->rejected += s->rejected;
+  t->recorrected += s->recorrected;
+  t->newton_its += s->newton_its;
+  t->f_evals += s->f_evals;
+  t->jac_evals += s->jac_evals;
+  t->factorizations += s->factorizations;
+  t->eig_evals += s->eig_evals;
+  t->spectrum_failed += s->spectrum_failed;
+  t->special += s->special;
+  r->unknowns = unknowns;
+}
+
 static int follow(whirl_fe_hbm *h, const whirl_cont_options *co,
                   const whirl_fe_hbm_response_options *o, double lo,
                   whirl_fe_hbm_response_fn fn, void *ctx, char *err,
@@ -186,6 +203,7 @@ static int follow(whirl_fe_hbm *h, const whirl_cont_options *co,
   if (rc == WHIRL_DONE) rc = WHIRL_OK;
   else if (rc < 0 && c && whirl_cont_errmsg(c)[0])
     WHIRL_ERRMSG(err, errlen, rc, "%s", whirl_cont_errmsg(c));
+  if (c && o->report) add_report(o->report, whirl_cont_get_stats(c), n);
   whirl_cont_free(c);
   free(q);
   free(x0);

@@ -6,8 +6,9 @@
 # harmonics), without stability, with Hill's (sparse, ARPACK) and with
 # Hill's on the Craig-Bampton reduction (reduced), each run REPEAT times
 # (default 3); prints the median wall times, the points, the special
-# points, and the points whose stable flag the reduced method gives
-# otherwise than the sparse one.  Not a test: figures go into
+# points, the steps, Newton iterations, unknowns and spectra, and the
+# points whose stable flag the reduced method gives otherwise than the
+# sparse one.  Not a test: figures go into
 # doc/benchmarks.md with the machine.
 #   sh test/bench/bench_fe_rotor.sh [REPEAT]      (from the build tree)
 # SPDX-License-Identifier: BSD-3-Clause
@@ -26,12 +27,14 @@ printf 'stability\trun\twall_s\tpoints\tspecial\n'
 for stab in off sparse reduced; do
   for r in $(seq 1 "$repeat"); do
     t0=$(now)
-    "$WHIRL" rotor response "$ex" --stability "$stab" -o "$tmp/$stab" --no-plot --quiet > "$tmp/sp.tsv" || exit 1
+    "$WHIRL" rotor response "$ex" --stability "$stab" -o "$tmp/$stab" --no-plot > "$tmp/sp.tsv" 2> "$tmp/err" || exit 1
     t1=$(now)
     pts=$(grep -c . "$tmp/$stab/branches.tsv")
     sp=$(($(wc -l < "$tmp/sp.tsv") - 1))
     printf '%s\t%d\t%.3f\t%d\t%d\n' "$stab" "$r" "$(echo "$t1 - $t0" | bc -l)" "$((pts - 1))" "$sp"
   done
+  # steps, Newton iterations, unknowns, spectra of the last run
+  sed -n 's/^whirl rotor response: .*: /# '"$stab"': /p' "$tmp/err" >&2
 done | tee "$tmp/times.tsv"
 for stab in off sparse reduced; do
   awk -F '\t' -v s="$stab" '$1 == s { print $3 }' "$tmp/times.tsv" | sort -g |

@@ -876,6 +876,9 @@ static void test_response(void) {
    * corrector (the default range/10 = 25 rad/s may step over it) */
   o.ds_max = 8;
   o.node = 0;
+  whirl_fe_hbm_response_report rep;
+  memset(&rep, 0, sizeof rep);
+  o.report = &rep;
   collect c;
   memset(&c, 0, sizeof c);
   c.last_stable = -1;
@@ -898,6 +901,13 @@ static void test_response(void) {
                     "unbalance");
   }
   whirl_fe_hbm *h = make(r, 5, 0, 0, 0, 1);
+  /* the report: a step per point but the start and the located ones */
+  ok(rep.unknowns == whirl_fe_hbm_size(h) && rep.cont.steps + 1 + rep.cont.special >=
+         (size_t)c.n && rep.cont.steps < (size_t)c.n && rep.cont.newton_its > rep.cont.steps &&
+         rep.cont.eig_evals >= rep.cont.steps,
+     "response report: %zu unknowns (%zu), %zu steps and %zu special for %d points, "
+     "%zu Newton iterations, %zu spectra", rep.unknowns, whirl_fe_hbm_size(h),
+     rep.cont.steps, rep.cont.special, c.n, rep.cont.newton_its, rep.cont.eig_evals);
   for (int k = 0; k < c.nlp; ++k) { /* a fold: a Floquet multiplier +1 */
     double p[4], re[64], im[64], best = INFINITY;
     size_t m = 64;

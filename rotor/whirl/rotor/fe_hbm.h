@@ -175,7 +175,16 @@ typedef struct whirl_fe_hbm_response_options {
   /* Or a start X[whirl_fe_hbm_size] at seed_omega (a solution found by
    * discovery), used instead of the circular seed when not NULL. */
   const double *seed_x;
+  /* Optional, out: the continuation's counts added up over the branches
+   * traced with these options, and the unknowns of the harmonic balance
+   * (whirl_fe_hbm_size).  NULL: none. */
+  struct whirl_fe_hbm_response_report *report;
 } whirl_fe_hbm_response_options;
+
+typedef struct whirl_fe_hbm_response_report {
+  whirl_cont_stats cont; /* steps, Newton iterations, ... (summed) */
+  size_t unknowns;
+} whirl_fe_hbm_response_report;
 
 WHIRL_API void
 whirl_fe_hbm_response_options_default(whirl_fe_hbm_response_options *o);
