@@ -101,10 +101,10 @@ static const cli_doc loci_doc = {
 "(MG).\n"
 "\n"
 "options:\n",
-"stdout: TSV 'type locus speed_rad_s speed_rpm Omega P' of the loci's\n"
+"stdout: TSV 'type locus speed_rad_s speed_rpm Omega_nd P' of the loci's\n"
 "special points.  files in DIR: loci.tsv (every point, a blank line between\n"
 "loci), loci.png; with --merge-along Q, merge.tsv 'type curve speed_rad_s\n"
-"speed_rpm Omega Q P': the merge curves.\n"
+"speed_rpm Omega_nd Q P': the merge curves.\n"
 "exit status: 0, 1 a failed continuation or output, 2 bad options or rotor file.\n"};
 
 typedef struct loci_args {
@@ -151,7 +151,7 @@ static int compute(const char *CMD, const loci_args *a, const whirl_fe_rotor *r,
   whirl_fe_locus_options_default(&lo_opt);
   lo_opt.hbm = ro.hbm;
   lo_opt.param = param, lo_opt.pmin = lo, lo_opt.pmax = hi;
-  fprintf(tsv, "type\tlocus\tspeed_rad_s\tspeed_rpm\tOmega\t%s\n", param_names[param]);
+  fprintf(tsv, "type\tlocus\tspeed_rad_s\tspeed_rpm\tOmega_nd\t%s\n", param_names[param]);
   for (size_t k = 0; !rc && k < folds.nfold; k++)
     for (int d = -1; !rc && d <= 1; d += 2) {
       out->locus = (int)(2 * k + (d > 0)) + 1;
@@ -185,7 +185,7 @@ static int merge_curves(const char *CMD, const loci_args *a, const whirl_fe_roto
   o.param = param, o.pmin2 = lo2, o.pmax2 = hi2;
   char msg[600] = "";
   int rc = 0;
-  fprintf(f, "type\tcurve\tspeed_rad_s\tspeed_rpm\tOmega\t%s\t%s\n", param_names[along],
+  fprintf(f, "type\tcurve\tspeed_rad_s\tspeed_rpm\tOmega_nd\t%s\t%s\n", param_names[along],
           param_names[param]);
   for (size_t k = 0; !rc && k < out->mg.count; k++)
     for (int d = -1; !rc && d <= 1; d += 2) {
@@ -292,7 +292,7 @@ int cmd_rotor_loci(int argc, char **argv) {
     rc = rc ? rc : rc2;
   }
   if (!rc) {
-    printf("type\tlocus\tspeed_rad_s\tspeed_rpm\tOmega\t%s\n", param_names[param]);
+    printf("type\tlocus\tspeed_rad_s\tspeed_rpm\tOmega_nd\t%s\n", param_names[param]);
     if (out.special) fputs(out.special, stdout);
   }
   free(out.special);

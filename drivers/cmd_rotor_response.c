@@ -71,7 +71,7 @@ static int is_special(int type) {
 }
 
 static void print_header(FILE *f) {
-  fprintf(f, "type\tbranch\tspeed_rad_s\tspeed_rpm\tOmega\tamplitude_m\tstable\n");
+  fprintf(f, "type\tbranch\tspeed_rad_s\tspeed_rpm\tOmega_nd\tamplitude_m\tstable\n");
 }
 
 static void print_point(FILE *f, const resp_point *p, double wref) {
@@ -179,7 +179,7 @@ static const cli_doc response_doc = {
 "the response from rest does not reach), followed both ways.\n"
 "\n"
 "options:\n",
-"stdout: TSV 'type branch speed_rad_s speed_rpm Omega amplitude_m stable' of\n"
+"stdout: TSV 'type branch speed_rad_s speed_rpm Omega_nd amplitude_m stable' of\n"
 "the special points (Omega: speed over the file's reference frequency).\n"
 "files in DIR: branches.tsv (every point), special.tsv, response.png.\n"
 "exit status: 0, 1 a failed continuation or output, 2 bad options or rotor file.\n"};
