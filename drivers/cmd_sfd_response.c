@@ -16,7 +16,7 @@
 #include <whirl/rotor.h>
 
 #include "cli.h"
-#include "fmt_num.h"
+#include "util/fmt_num.h"
 #include "sfd_common.h"
 
 #define CMD "sfd response"

@@ -1,4 +1,4 @@
-/* test/unit/t_fmt_num.c — fmt_e and fmt_g (drivers/fmt_num.h) write what
+/* test/unit/t_fmt_num.c — fmt_e and fmt_g (lib/util/fmt_num.h) write what
  * snprintf's "%.*e" and "%.*g" write, byte for byte, for precisions 0..12:
  * on random doubles of every exponent, on numbers at and next to ties of
  * the last digit (where the fast path must hand over to snprintf), on the
@@ -11,7 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "fmt_num.h"
+#include "util/fmt_num.h"
 #include "tap.h"
 
 static uint64_t state = 0x9e3779b97f4a7c15ull;

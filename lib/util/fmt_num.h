@@ -1,9 +1,9 @@
-/* drivers/fmt_num.h — a double as printf's "%.Pe" or "%.Pg" writes it,
+/* lib/util/fmt_num.h — a double as printf's "%.Pe" or "%.Pg" writes it,
  * the same bytes, in a fraction of the time for most numbers (fmt_num.c):
  * the tables of a response hold thousands of them (doc/benchmarks.md).
  * SPDX-License-Identifier: BSD-3-Clause */
-#ifndef WHIRL_DRIVERS_FMT_NUM_H
-#define WHIRL_DRIVERS_FMT_NUM_H
+#ifndef WHIRL_UTIL_FMT_NUM_H
+#define WHIRL_UTIL_FMT_NUM_H
 
 #include <stddef.h>
 #include <stdio.h>

@@ -14,7 +14,7 @@
  * (Adams, PLDI 2019): a cheap approximation where it is provably right, the
  * exact algorithm elsewhere.
  * SPDX-License-Identifier: BSD-3-Clause */
-#include "fmt_num.h"
+#include "util/fmt_num.h"
 
 #include <math.h>
 #include <stdio.h>
