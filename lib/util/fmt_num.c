@@ -1,4 +1,4 @@
-/* drivers/fmt_num.c — doubles written as printf's "%.Pe" and "%.Pg" write
+/* lib/util/fmt_num.c — doubles written as printf's "%.Pe" and "%.Pg" write
  * them, byte for byte, without glibc's multiple-precision conversion for
  * the numbers where that is provably unneeded (fmt_num.h).
  *
