@@ -246,8 +246,9 @@ static int parse_args(int argc, char **argv, resp_args *a) {
       {"--discover-seed", CLI_INT, &a->dseed, "S", "seed of the random starts", d_seed},
       {"--stability", CLI_STRING, &a->stability, "S",
        "Hill's stability: auto (dense up to 1200 unknowns of the Hill matrix, else "
-       "sparse), dense, sparse, reduced (sparse on a Craig-Bampton reduction: the "
-       "nonlinear DOFs and the held rotor's modes up to 3 (H + 1/2) omega), or off",
+       "reduced), dense, sparse (ARPACK on the whole rotor), reduced (sparse on a "
+       "Craig-Bampton reduction: the nonlinear DOFs, the held rotor's modes up to "
+       "3 (H + 1/2) omega and inertia-relief vectors), or off",
        NULL},
       {"--hill-nev", CLI_SIZE, &a->hill_nev, "N",
        "the most Floquet exponents the sparse Hill method computes at one orbit (all "

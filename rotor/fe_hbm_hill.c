@@ -166,7 +166,14 @@ int fe_hill_exponents(whirl_fe_hbm *h, const double *qfull, const double *p,
 
 int whirl_fe_hbm_hill(whirl_fe_hbm *h, const double *X, const double *p,
                       double *re, double *im, size_t *m) {
-  if (h->hill == 3) return fe_hill_reduced(h, X, p, re, im, m);
+  if (h->hill == 3) {
+    int rc = fe_hill_reduced(h, X, p, re, im, m);
+    /* stability chosen by whirl (auto): a reduction that cannot be built
+     * (a part of the rotor free when its nonlinear DOFs are held, too few
+     * DOFs) leaves the whole rotor's sparse method */
+    if (!(rc && h->cb_unavailable && h->o.stability < 0)) return rc;
+    h->hill = 2;
+  }
   int rc = whirl_fe_hbm_recover(h, X, p, h->qfull);
   if (rc) return rc;
   if (h->hill == 2)

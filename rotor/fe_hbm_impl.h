@@ -214,6 +214,7 @@ struct whirl_fe_hbm {
   int hill;                /* 0 none, 1 dense, 2 sparse (ARPACK), 3 sparse
                               on the Craig–Bampton reduction */
   fe_cb cb;                /* hill 3: built at the first orbit */
+  int cb_unavailable;      /* hill 3: the reduction could not be built */
   whirl_system sys;
   double *q, *f, *fp, *fm, *Jnl; /* work: SI coefficients, forces, m L;
                                     (m L)² (3 (m L)² for Hill) */

@@ -491,6 +491,7 @@ int fe_hill_reduced(whirl_fe_hbm *h, const double *X, const double *p,
                     double *re, double *im, size_t *m) {
   double w = p[WHIRL_FE_P_OMEGA] / h->o.nu;
   int rc = cb_ensure(h, w);
+  h->cb_unavailable = rc != 0;
   if (rc) return rc;
   fe_cb *cb = &h->cb;
   int ndr = cb->r->ndof;

@@ -864,6 +864,51 @@ static void hill_reduced(void) {
   fe_chain_free(r);
 }
 
+/* stability −1 (auto) on a rotor too large for the dense method is the
+ * reduction; where that cannot be built (here: too small a reduction for
+ * the sparse method with hill_nev 400) whirl takes the whole rotor's
+ * sparse method instead — an explicit stability 3 says why it cannot. */
+static void hill_auto_fallback(void) {
+  fe_chain_opts co;
+  fe_chain_defaults(&co, 40);
+  co.nnl = 1;
+  co.nl[0] = fe_chain_sfd(39, -1);
+  whirl_fe_rotor *r = fe_chain_build(&co);
+  whirl_fe_hbm_options o;
+  whirl_fe_hbm_options_default(&o);
+  o.harmonics = 3;
+  o.length_scale = 2e-4;
+  o.hill_nev = 400;
+  whirl_fe_hbm *h[3];
+  char err[256];
+  for (int k = 0; k < 3; ++k) {
+    o.stability = k == 0 ? -1 : k == 1 ? 2 : 3;
+    h[k] = whirl_fe_hbm_alloc(r, &o, err, sizeof err);
+  }
+  const whirl_system *s = whirl_fe_hbm_system(h[1]);
+  double *X = calloc(s->n, sizeof *X), p[4], re[3][400], im[3][400], worst = 0;
+  size_t m[3] = {400, 400, 400};
+  whirl_fe_hbm_params(900.0, p);
+  for (size_t i = 0; i < s->n; ++i) X[i] = tap_urand(-0.05, 0.05);
+  int rc[3];
+  for (int k = 0; k < 3; ++k) rc[k] = whirl_fe_hbm_hill(h[k], X, p, re[k], im[k], &m[k]);
+  if (rc[1] == WHIRL_EINVAL && strstr(whirl_fe_hbm_errmsg(h[1]), "without ARPACK")) {
+    ok(1, "# SKIP auto fallback: built without ARPACK");
+  } else {
+    for (size_t j = 0; j < m[0] && j < m[1]; ++j)
+      worst = fmax(worst, hypot(re[0][j] - re[1][j], im[0][j] - im[1][j]));
+    ok(rc[0] == 0 && rc[1] == 0 && m[0] == m[1] && m[0] >= 4 && worst < 1e-8 * 900.0,
+       "auto on a reduction too small for hill_nev 400: the whole rotor's sparse "
+       "exponents (%zu of %zu, %.1e)", m[0], m[1], worst);
+    ok(rc[2] != 0 && strstr(whirl_fe_hbm_errmsg(h[2]), "too small"),
+       "explicit reduced Hill there: an error that says why (%s)",
+       whirl_fe_hbm_errmsg(h[2]));
+  }
+  free(X);
+  for (int k = 0; k < 3; ++k) whirl_fe_hbm_free(h[k]);
+  fe_chain_free(r);
+}
+
 static void test_response(void) {
   whirl_fe_rotor *r = duffing3();
   whirl_fe_hbm_response_options o;
@@ -1072,6 +1117,7 @@ int main(void) {
   hill_condensed_shift(WHIRL_FE_SFD_INERTIA);
   hill_sparse_complete();
   hill_reduced();
+  hill_auto_fallback();
   test_linear();
   test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_PI);
   test_condensed_vs_full(1, 320.0, 4.0, WHIRL_FE_SFD_SHORT_PI);

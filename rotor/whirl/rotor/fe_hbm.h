@@ -89,7 +89,8 @@ typedef struct whirl_fe_hbm_options {
                            nonlinear DOFs and the held rotor's modes up to
                            hill_cutoff (H + ½) ω: approximate, fast);
                            −1 (default): dense when 2 ndof (2H+1) ≤ 1200,
-                           else sparse when built with ARPACK, else none */
+                           else 3 when built with ARPACK (2 where the
+                           reduction cannot be built), else none */
   size_t hill_nev;      /* the most eigenvalues the sparse Hill method
                            computes at one orbit (default 48); where more
                            lie within 1.05 ω/2 its stability is unknown */
