@@ -40,6 +40,11 @@ in_pane() {
   } > "$nm.sh"
   tm new-session -d -s "$nm" -x 160 -y 20 "sh '$tmp/$nm.sh'; sleep 600"
   tm pipe-pane -t "$nm" -o "cat > '$tmp/$nm.raw'"
+  # the pane's bytes reach the file only once its cat runs (the shell
+  # creates the file then): until then they are lost — under load the first
+  # run's progress was (make -j2 check, twice in a day)
+  k=0
+  while [ ! -e "$nm.raw" ] && [ $k -lt 100 ]; do sleep 0.05; k=$((k + 1)); done
   touch "$nm.go"
   k=0
   while [ ! -e "$nm.rc" ] && [ $k -lt 1200 ]; do sleep 0.1; k=$((k + 1)); done
@@ -72,9 +77,11 @@ check() {
 }
 
 printf 'model = sfd-rotating\nIPS = 1\nICP = [Omega]\nPAR = {Omega: 0.5}\nU = {u: 0.1}\nNMX = 100000\nDS = 0.0001\nDSMAX = 0.0001\nRL1 = 8\n' > long.whirl
-check sweep sfd sweep --from 1 --to 3 --step 0.04 --periods 300 --direction up --out sweep.d --no-plot
+# long enough for the line to appear (it is drawn after 0.5 s): 0.46 s at
+# --step 0.04 --periods 300 on a fast day, and the check failed
+check sweep sfd sweep --from 1 --to 3 --step 0.02 --periods 600 --direction up --out sweep.d --no-plot
 check basins sfd basins --omega 1.78 --points 250 --out basins.d --no-plot
-check simulate sfd simulate --omega 8.7 --periods 1500 --out simulate.d --no-plot
+check simulate sfd simulate --omega 8.7 --periods 3000 --out simulate.d --no-plot
 check nonsync sfd nonsync --omega-max 12 --omega-min 4 --ds 0.002 --ds-max 0.002 --out nonsync.d --no-plot
 check run run long.whirl --OUT=long.out
 
