@@ -141,6 +141,26 @@ static const whirl_branch_point *nth_type(const whirl_branch *b, int type, size_
   return NULL;
 }
 
+/* The cusp's run: from mu = -6 (lambda = 1) up to mu = 6.5. */
+static void cusp_options(whirl_cont_options *o, double ds_max) {
+  whirl_cont_options_default(o);
+  o->ds = 0.05;
+  o->ds_max = ds_max;
+  o->p_min = -6.5;
+  o->p_max = 6.5;
+}
+
+/* max |F| over the branch's points */
+static double cusp_residual(const whirl_branch *b) {
+  double res = 0;
+  for (size_t i = 0; b && i < b->len; ++i) {
+    double f;
+    cusp_F(b->pts[i].x, b->pts[i].p, &f, NULL);
+    res = fmax(res, fabs(f));
+  }
+  return res;
+}
+
 static void test_cusp(int analytic) {
   whirl_system s = {.name = "cusp", .n = 1, .npar = 2, .F = cusp_F};
   if (analytic) {
@@ -148,11 +168,7 @@ static void test_cusp(int analytic) {
     s.Fp = cusp_Fp;
   }
   whirl_cont_options o;
-  whirl_cont_options_default(&o);
-  o.ds = 0.05;
-  o.ds_max = 0.2;
-  o.p_min = -6.5;
-  o.p_max = 6.5;
+  cusp_options(&o, 0.2);
   double x0 = -2.0, p0[2] = {-6.0, 1.0};
   int reason;
   whirl_branch *b = run(&s, &o, &x0, p0, +1, &reason);
@@ -170,12 +186,7 @@ static void test_cusp(int analytic) {
   ok(e->type == WHIRL_PT_EP, "cusp last point is EP");
   is_abs(e->p[0], 6.5, 1e-12, "cusp end point exactly at RL1");
   /* every point satisfies F = 0 */
-  double res = 0;
-  for (size_t i = 0; i < b->len; ++i) {
-    double f;
-    cusp_F(b->pts[i].x, b->pts[i].p, &f, NULL);
-    res = fmax(res, fabs(f));
-  }
+  const double res = cusp_residual(b);
   ok(res < 1e-10, "cusp: all %zu points solve F = 0 (max |F| = %.2e)", b->len, res);
   whirl_branch_free(b);
 }
@@ -191,11 +202,7 @@ static void test_natural_corrector(double xw) {
   size_t changes[2] = {0, 0}, npts[2] = {0, 0};
   for (int nat = 0; nat < 2; ++nat) {
     whirl_cont_options o;
-    whirl_cont_options_default(&o);
-    o.ds = 0.05;
-    o.ds_max = 0.4;
-    o.p_min = -6.5;
-    o.p_max = 6.5;
+    cusp_options(&o, 0.4);
     /* x weighed 0.2: the steps reach far in mu, and Newton at a mu
      * predicted past the first fold converges on the upper sheet (the
      * secant's turn tells: natural_jumped) */
@@ -212,12 +219,7 @@ static void test_natural_corrector(double xw) {
        fabs(l2->x[0] - x_f) < 1e-9 && reason == WHIRL_STOP_PMAX,
        "natural corrector %s, x weight %g: the cusp's two folds at -+2/(3 sqrt 3), "
        "to the end", nat ? "on" : "off", xw);
-    double res = 0;
-    for (size_t i = 0; b && i < b->len; ++i) {
-      double f;
-      cusp_F(b->pts[i].x, b->pts[i].p, &f, NULL);
-      res = fmax(res, fabs(f));
-    }
+    const double res = cusp_residual(b);
     npts[nat] = b ? b->len : 0;
     ok(b && res < 1e-10, "natural corrector %s, x weight %g: all %zu points solve "
        "F = 0 (%.1e)", nat ? "on" : "off", xw, npts[nat], res);
