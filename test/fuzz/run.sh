@@ -68,7 +68,7 @@ fi
 sources() {
   case $1 in
     runfile) echo "$here/fuzz_runfile.c $top/lib/run/runfile.c $top/lib/util/errmsg.c" ;;
-    solutions) echo "$here/fuzz_solutions.c $top/lib/run/solution.c $top/lib/util/errmsg.c" ;;
+    solutions) echo "$here/fuzz_solutions.c $top/lib/run/solution.c $top/lib/util/errmsg.c $top/lib/util/fmt_num.c" ;;
     auto) echo "$here/fuzz_auto_constants.c $top/lib/run/auto_constants.c $top/lib/run/auto_runfile.c $top/lib/run/runfile.c $top/lib/util/errmsg.c" ;;
     rotorfile) echo "$here/fuzz_rotorfile.c $top/rotor/fe_file.c $top/rotor/fe_sparse.c $top/rotor/fe_matrix.c $top/lib/run/runfile.c $top/lib/util/errmsg.c -lcholmod" ;;
     picture) d=$top/drivers
