@@ -201,8 +201,12 @@ static int follow(whirl_fe_hbm *h, const whirl_cont_options *co,
   while (!rc && (rc = whirl_cont_step(c)) == WHIRL_OK)
     rc = report(h, whirl_cont_point(c), o->node, q, fn, ctx);
   if (rc == WHIRL_DONE) rc = WHIRL_OK;
-  else if (rc < 0 && c && whirl_cont_errmsg(c)[0])
-    WHIRL_ERRMSG(err, errlen, rc, "%s", whirl_cont_errmsg(c));
+  else if (rc < 0 && c && whirl_cont_errmsg(c)[0]) {
+    /* the core knows only the callback's status: the stability's own
+     * message says what failed (a reduction too small, say) */
+    const char *why = strstr(whirl_cont_errmsg(c), "spectrum") ? whirl_fe_hbm_errmsg(h) : "";
+    WHIRL_ERRMSG(err, errlen, rc, "%s%s%s", whirl_cont_errmsg(c), why[0] ? ": " : "", why);
+  }
   if (c && o->report) add_report(o->report, whirl_cont_get_stats(c), n);
   whirl_cont_free(c);
   free(q);

@@ -31,4 +31,11 @@ paste sparse.d/branches.tsv reduced.d/branches.tsv | awk -F '\t' '
 read -r differ points < f.txt
 ok "$(test "$differ" -eq 0 && test "$points" -gt 100; echo $?)" \
   "the stable flags of all $points regular points the same ($differ differ)"
+# asked for on a rotor whose reduction is too small for the sparse method:
+# the stability's own message, not the core's status alone; nothing written
+"$WHIRL" rotor response "$top_srcdir/examples/rotor/rigid-limit.rotor" --harmonics 1 \
+  --stability reduced -o small.d --no-plot > small.tsv 2> small.err
+rc=$?
+[ $rc -ne 0 ] && grep -q "reduction is too small" small.err && [ ! -e small.d ]
+ok $? "--stability reduced on rigid-limit.rotor: exit $rc, $(head -c 200 small.err), nothing written"
 tap_end
