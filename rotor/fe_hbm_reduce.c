@@ -49,8 +49,9 @@ extern void dsygvx_(const int *itype, const char *jobz, const char *range,
                     const int *ldz, double *work, const int *lwork, int *iwork,
                     int *ifail, int *info, size_t, size_t, size_t);
 
-/* The most interior modes kept (the band LU of the reduced interior needs
- * kl + ku ≤ FE_BAND_MAX, dense blocks: n_η ≤ 33; more go to UMFPACK). */
+/* The most modes of the held rotor computed (dsygvx); the reduced
+ * interior is dense, so its condensation's banded LU takes up to 33
+ * coordinates (kl + ku ≤ FE_BAND_MAX), UMFPACK more. */
 #define CB_MODES_MAX 96
 /* Blocks of inertia-relief (Krylov) vectors after the modes */
 #ifndef CB_KRYLOV_BLOCKS
@@ -133,7 +134,7 @@ static void layout_free(cb_layout *L) {
  * minimum); *neta_want the count wanted. */
 typedef struct cb_work {
   int nd, ni, m;
-  int *inv_i, *inv_b, *inv_all; /* DOF → interior / boundary / itself */
+  int *inv_i, *inv_b;           /* DOF → interior / boundary index or −1 */
   double *Kii, *Mii, *Kib, *Psi, *Phi, *w;
   double *Klu;                  /* K_ii's LU (LAPACK dgetrf) */
   int *ipiv;
@@ -141,7 +142,7 @@ typedef struct cb_work {
 } cb_work;
 
 static void work_free(cb_work *w) {
-  void *p[] = {w->inv_i, w->inv_b, w->inv_all, w->Kii, w->Mii, w->Kib, w->Psi,
+  void *p[] = {w->inv_i, w->inv_b, w->Kii, w->Mii, w->Kib, w->Psi,
                w->Phi, w->w, w->Klu, w->ipiv, w->Eta};
   for (size_t i = 0; i < sizeof p / sizeof *p; ++i) free(p[i]);
 }
@@ -154,16 +155,15 @@ static int work_init(cb_work *w, const whirl_fe_rotor *r, const fe_aft *a) {
   size_t nd = (size_t)w->nd, ni = (size_t)w->ni, m = (size_t)w->m;
   w->inv_i = malloc(nd * sizeof *w->inv_i);
   w->inv_b = malloc(nd * sizeof *w->inv_b);
-  w->inv_all = malloc(nd * sizeof *w->inv_all);
   w->Kii = calloc(ni * ni, sizeof *w->Kii);
   w->Mii = calloc(ni * ni, sizeof *w->Mii);
   w->Kib = calloc(ni * m, sizeof *w->Kib);
   w->Psi = malloc(ni * m * sizeof *w->Psi);
   w->w = malloc(ni * sizeof *w->w);
-  if (!w->inv_i || !w->inv_b || !w->inv_all || !w->Kii || !w->Mii || !w->Kib ||
+  if (!w->inv_i || !w->inv_b || !w->Kii || !w->Mii || !w->Kib ||
       !w->Psi || !w->w)
     return WHIRL_ENOMEM;
-  for (size_t d = 0; d < nd; ++d) w->inv_i[d] = w->inv_b[d] = -1, w->inv_all[d] = (int)d;
+  for (size_t d = 0; d < nd; ++d) w->inv_i[d] = w->inv_b[d] = -1;
   for (int j = 0; j < a->m; ++j) w->inv_b[a->dof[j]] = j;
   for (int d = 0, k = 0; d < w->nd; ++d)
     if (w->inv_b[d] < 0) w->inv_i[d] = k++;

@@ -13,6 +13,8 @@
  *   ms     mean milliseconds per spectrum (full, then reduced)
  * Not a test: figures go into doc/fe-hbm.md with the machine.
  *   bench_fe_reduced ROTOR [EVERY]
+ * (VERBOSE=1 in the environment: the failures, and both lists of exponents
+ * at the last point, on stderr.)
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdio.h>
