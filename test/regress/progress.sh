@@ -76,7 +76,9 @@ check() {
   ok $? "$nm: no progress when stderr is not a terminal"
 }
 
-printf 'model = sfd-rotating\nIPS = 1\nICP = [Omega]\nPAR = {Omega: 0.5}\nU = {u: 0.1}\nNMX = 100000\nDS = 0.0001\nDSMAX = 0.0001\nRL1 = 8\n' > long.whirl
+# ~2 s (at DS 0.0001 it took 0.55 s on a fast day, close to the 0.5 s
+# before the line is drawn, and the check failed)
+printf 'model = sfd-rotating\nIPS = 1\nICP = [Omega]\nPAR = {Omega: 0.5}\nU = {u: 0.1}\nNMX = 1000000\nDS = 0.00003\nDSMAX = 0.00003\nRL1 = 8\n' > long.whirl
 # long enough for the line to appear (it is drawn after 0.5 s): 0.46 s at
 # --step 0.04 --periods 300 on a fast day, and the check failed
 check sweep sfd sweep --from 1 --to 3 --step 0.02 --periods 600 --direction up --out sweep.d --no-plot
