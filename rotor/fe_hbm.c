@@ -209,11 +209,12 @@ static int check_options(const whirl_fe_rotor *r, const whirl_fe_hbm_options *o,
                         "4 nnode + 2 npedestal");
   if (o->stability < -1 || o->stability > 3 ||
       (o->stability >= 2 && o->hill_nev < 1) ||
-      (o->stability == 3 && !(o->hill_cutoff >= 1 && o->hill_cutoff <= 100)))
+      ((o->stability == 3 || o->stability == -1) &&
+       !(o->hill_cutoff >= 1 && o->hill_cutoff <= 100)))
     return WHIRL_ERRMSG(err, errlen, WHIRL_EINVAL,
                         "stability %d, hill_nev %zu, hill_cutoff %g: need -1, "
                         "0, 1, 2 or 3, hill_nev >= 1 for 2 and 3, 1 <= "
-                        "hill_cutoff <= 100 for 3", o->stability, o->hill_nev,
+                        "hill_cutoff <= 100 for 3 and -1", o->stability, o->hill_nev,
                         o->hill_cutoff);
   if (o->harmonics < 1 || o->harmonics > 256 || o->nu < 1 ||
       o->nu > o->harmonics)

@@ -1081,6 +1081,13 @@ static void test_errors(void) {
   o.nsamples = 10;
   ok(!whirl_fe_hbm_alloc(r, &o, err, sizeof err) && strstr(err, "nsamples"),
      "nsamples <= 2H refused: %s", err);
+  for (int st = -1; st <= 3; st += 4) { /* auto may take the reduction too */
+    whirl_fe_hbm_options_default(&o);
+    o.stability = st;
+    o.hill_cutoff = 0;
+    ok(!whirl_fe_hbm_alloc(r, &o, err, sizeof err) && strstr(err, "hill_cutoff"),
+       "stability %d with hill_cutoff 0 refused: %s", st, err);
+  }
   whirl_fe_hbm_options_default(&o);
   int nnl = r->nnl;
   r->nnl = 0;
