@@ -216,6 +216,8 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   else if (!(opt->p_min < opt->p_max)) why = "need RL0 (p_min) < RL1 (p_max)";
   else if (!(opt->newton_tol > 0) || opt->newton_maxit < 1 || !(opt->newton_tol_par >= 0))
     why = "need newton_tol > 0, newton_tol_par >= 0 and newton_maxit >= 1";
+  else if (opt->newton_par_tail >= sys->n)
+    why = "newton_par_tail: need fewer free parameters than unknowns";
   else if (!(opt->p_weight >= 0) || !isfinite(opt->p_weight))
     why = "need a finite p_weight >= 0";
   else if (!weights_valid(opt->x_weight, sys->n, opt->p_weight))
@@ -525,22 +527,33 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
     if ((rc = ext_solve(c, c->rhs, "bordered solve")) != 0) return rc;
     ++c->stats.newton_its;
     double dmax = 0.0, xmax = 0.0;
+    /* the part to newton_tol: x less its free parameters, or all of X */
+    const int by_parts = c->opt.newton_tol_par > 0;
+    const size_t nx = by_parts ? n - c->opt.newton_par_tail : N;
+    if (c->opt.newton_scale_before) /* AUTO's NEWTONBV: the iterate's scale */
+      for (size_t i = 0; i < nx; ++i) {
+        const double x = fabs(X[i]);
+        if (x > xmax) xmax = x;
+      }
     for (size_t i = 0; i < N; ++i) {
       X[i] -= c->rhs[i];
       if (!isfinite(X[i])) return 1;
     }
     /* comparisons, not fmax: a library call per entry at -O2 */
-    const size_t nx = c->opt.newton_tol_par > 0 ? n : N; /* the part to newton_tol */
     for (size_t i = 0; i < nx; ++i) {
-      const double d = fabs(c->rhs[i]), x = fabs(X[i]);
+      const double d = fabs(c->rhs[i]);
       if (d > dmax) dmax = d;
-      if (x > xmax) xmax = x;
     }
+    if (!c->opt.newton_scale_before)
+      for (size_t i = 0; i < nx; ++i) {
+        const double x = fabs(X[i]);
+        if (x > xmax) xmax = x;
+      }
     c->its = it; /* iterations used, read by the step control */
-    /* the parameter to its own scale (AUTO's EPSL), scaled onto x's test */
+    /* the parameters to their own scales (AUTO's EPSL), scaled onto x's test */
     const double tolx = c->opt.newton_tol * (1.0 + xmax);
-    if (nx == n) {
-      const double dp = fabs(c->rhs[n]) / (c->opt.newton_tol_par * (1.0 + fabs(X[n])));
+    for (size_t i = nx; by_parts && i <= n; ++i) {
+      const double dp = fabs(c->rhs[i]) / (c->opt.newton_tol_par * (1.0 + fabs(X[i])));
       if (dp * tolx > dmax) dmax = dp * tolx;
     }
     int conv = dmax <= tolx;

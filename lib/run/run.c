@@ -179,6 +179,14 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
    * EPSL and its own */
   o->newton_tol = s->epsu;
   o->newton_tol_par = s->epsl;
+  /* orbits and BVPs (NEWTONBV): the period and the other free parameters
+   * (after the node values) to EPSL as parameters, the nodes to EPSU on
+   * their largest value before the correction */
+  if ((b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP) && !b->fold && !b->hopf &&
+      !b->bploc && !b->trloc) {
+    o->newton_par_tail = b->nb - b->nnodes * R->n;
+    o->newton_scale_before = 1;
+  }
   o->newton_maxit = s->itnw;
   /* the tangent and tests from the corrector's last factorisation, as
    * AUTO: a Jacobian and a factorisation fewer a step */
@@ -1165,9 +1173,22 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
         if (run_dat_samples(R, m, O->xs, &T, jump)) return -2;
         if (whirl_colloc_set_rotations(O->colloc, jump))
           fprintf(R->log, "rotations: components turning by 2 pi k over a period (AUTO's NRTN)\n");
-      } else if (start_samples(R, m, O->xs, &T))
-        return -2;
-      whirl_colloc_from_samples(O->colloc, O->xs, m, T, O->X);
+        whirl_colloc_from_samples(O->colloc, O->xs, m, T, O->X);
+      } else if (s->mesh_jumps && R->model->forcing_param < 0) {
+        /* AUTO's STPNUB: STPNT at the NTST NCOL + 1 equally spaced nodes
+         * of the uniform mesh, listed as point 1 as they are (no mesh
+         * adapted to them, no Newton at the start: CNRLBV, STDRBV) */
+        const size_t mn = co.ntst * co.ncol;
+        free(O->xs);
+        O->xs = malloc((mn + 1) * R->n * sizeof *O->xs);
+        if (!O->xs) return -1;
+        if (start_samples(R, mn, O->xs, &T)) return -2;
+        whirl_colloc_from_samples(O->colloc, O->xs, mn, T, O->X);
+        data_mesh = 1;
+      } else {
+        if (start_samples(R, m, O->xs, &T)) return -2;
+        whirl_colloc_from_samples(O->colloc, O->xs, m, T, O->X);
+      }
     }
   } else if (so->kind == WHIRL_SOL_EQ) {
     if (strcmp(so->ty, "HB") || !R->prob.autonomous) {

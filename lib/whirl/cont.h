@@ -106,6 +106,13 @@ typedef struct whirl_cont_options {
                           |dp| <= tol_par*(1+|p|), each part to its own
                           scale, as AUTO; 0: p with x, to newton_tol and
                           the scale of both */
+  size_t newton_par_tail; /* the last newton_par_tail unknowns of x are free
+                          parameters (AUTO's PAR(ICP(2..NFPR)) of BVPs, the
+                          period of orbits): with newton_tol_par > 0 each is
+                          tested as the continuation parameter, to its own
+                          scale, and left out of x's; 0: all of x is state */
+  int newton_scale_before; /* 1: the state's scale |x|_inf taken before the
+                          correction (AUTO's NEWTONBV), 0: after (NEWTONAE) */
   int newton_maxit;    /* ITNW */
   int newton_fast;     /* iterations at or below which the step may grow */
   int newton_chord;    /* 0: Newton, a new Jacobian at every iteration;
