@@ -1033,24 +1033,39 @@ int whirl_cont_switch_direction(whirl_cont *c, const whirl_point *bp, int dir,
     goto done;
   }
   /* The null space at a simple branch point is spanned by the two right
-   * singular vectors of smallest singular value; remove the component along
-   * the known tangent and keep the larger remainder (Keller 1977). */
-  double tn = 0.0;
-  for (size_t i = 0; i < N; ++i) tn += bp->t[i] * bp->t[i];
+   * singular vectors v1, v2 of smallest singular value; the new branch's
+   * direction is the vector of that plane orthogonal to the known tangent t,
+   * (t.v2) v1 - (t.v1) v2 (Keller 1977; AUTO's STSDRBV: the null vector of
+   * [F_x F_p; t^T]).  Not v - (v.t) t: where t is not quite in the plane
+   * (a restart whose phase condition refers to the point itself, not to
+   * the step before) that leaves t's part outside it in the direction:
+   * brc's pitchfork of cycles got a parameter rate of 1e-4 where the
+   * symmetry-breaking direction has none, and AUTO's orientation by it
+   * chose the mirror branch. */
+  double tn = 0.0, t1 = 0.0, t2 = 0.0;
+  for (size_t i = 0; i < N; ++i) {
+    tn += bp->t[i] * bp->t[i];
+    t1 += bp->t[i] * V[i];
+    t2 += bp->t[i] * V[N + i];
+  }
   tn = sqrt(tn);
-  double bestn = -1.0;
-  for (int k = 0; k < 2; ++k) {
-    const double *v = V + N * (size_t)k;
-    double vt = 0.0;
-    for (size_t i = 0; i < N; ++i) vt += v[i] * bp->t[i] / tn;
-    double nn = 0.0;
-    for (size_t i = 0; i < N; ++i) {
-      double r = v[i] - vt * bp->t[i] / tn;
-      nn += r * r;
-    }
-    if (nn > bestn) {
-      bestn = nn;
-      for (size_t i = 0; i < N; ++i) ph[i] = v[i] - vt * bp->t[i] / tn;
+  if (hypot(t1, t2) > 0.5 * tn) { /* t in the plane, up to an angle of 60 degrees */
+    for (size_t i = 0; i < N; ++i) ph[i] = t2 * V[i] - t1 * V[N + i];
+  } else { /* t far from the plane: the vector of it least along t */
+    double bestn = -1.0;
+    for (int k = 0; k < 2; ++k) {
+      const double *v = V + N * (size_t)k;
+      double vt = 0.0;
+      for (size_t i = 0; i < N; ++i) vt += v[i] * bp->t[i] / tn;
+      double nn = 0.0;
+      for (size_t i = 0; i < N; ++i) {
+        double r = v[i] - vt * bp->t[i] / tn;
+        nn += r * r;
+      }
+      if (nn > bestn) {
+        bestn = nn;
+        for (size_t i = 0; i < N; ++i) ph[i] = v[i] - vt * bp->t[i] / tn;
+      }
     }
   }
   /* dir = +1 is AUTO's direction (AUTO-07p ae.f90, STPRAE), so that the

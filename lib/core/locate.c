@@ -58,7 +58,7 @@ static double ftol(const whirl_cont *c, int ev, size_t k, const cont_state *st) 
      * a bracket of loc_tol ran Newton into the branch point's shrinking
      * basin, where it fails (enz's pitchfork by a fold: a secant iterate
      * at psi = 3e-15, the next one failing, the point lost) */
-    return 1e-12;
+    return 1e-8;
   case EV_PD:
     return 1e-12;
   case EV_HB: {
@@ -113,21 +113,27 @@ static void trial_start(const whirl_cont *c, const cont_state *a, const cont_sta
 /* Beside a branch point the other branch crosses the hyperplane of the
  * trial too, a distance of about the square root of the distance to the
  * point away (a pitchfork), and the bordered Jacobian there is nearly
- * singular: Newton from the trial start Xs lands on either.  The start is
- * on the chord of the bracket [Xa, Xb] to its curvature times the span
- * squared, so a solution X further from Xs than the span (plus Newton's
- * tolerance) is the other branch (enz's symmetric pitchfork: s1 - s2 =
- * 1e-5 at |psi| = 5e-8, where the bracket was 1.1e-6 wide); then the start
- * itself is the point. */
+ * singular: Newton from the trial start Xs lands on either, or between
+ * them, pushed along the null vector by its rounding over the small
+ * singular value.  The start is on the chord of the bracket [Xa, Xb] plus
+ * the step's bend, its error on the branch about the curvature times the
+ * span squared, i.e. at most the span times its part of the whole step's
+ * change (step_span); a solution X further from Xs than that (ten times,
+ * plus Newton's tolerance) is off the branch (enz's symmetric pitchfork:
+ * s1 - s2 = 1e-5 at |psi| = 5e-8, where the bracket was 1.1e-6 wide;
+ * brc's BP of cycles: Newton 1e-4 along the asymmetric null vector from a
+ * start 2e-4 wide in a step 6e-2 wide, its MAX U(3) and U(4) 3e-5 apart
+ * where the orbit has them equal); then the start itself is the point. */
 static void on_the_branch(const whirl_cont *c, const double *Xa, const double *Xb,
-                          const double *Xs, double *X) {
+                          const double *Xs, double step_span, double *X) {
   double span = 0.0, off = 0.0, size = 0.0;
   for (size_t i = 0; i < c->N; ++i) {
     span = fmax(span, fabs(Xb[i] - Xa[i]));
     off = fmax(off, fabs(X[i] - Xs[i]));
     size = fmax(size, fabs(X[i]));
   }
-  if (off > span + c->opt.newton_tol * (1.0 + size))
+  const double bend = span * fmin(1.0, 10.0 * span / step_span);
+  if (off > bend + c->opt.newton_tol * (1.0 + size))
     memcpy(X, Xs, c->N * sizeof *X);
 }
 
@@ -175,8 +181,11 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   if (!Xa) return 1;
   double *Xb = Xa + N, *Xbest = Xb + N, *Xs = Xbest + N, *H = Xs + N; /* not before the check */
   double sbest = 0.0, fbest = INFINITY, sout = 0.0;
+  int its_best = 0;
   memcpy(Xa, a->X, N * sizeof *Xa);
   memcpy(Xb, b->X, N * sizeof *Xb);
+  double step_span = 0.0; /* the whole step's change, the bend's scale */
+  for (size_t i = 0; i < N; ++i) step_span = fmax(step_span, fabs(Xb[i] - Xa[i]));
   /* the bounds and UZ values need p only: the tangent and the spectrum
    * (a factorisation) are computed at the final point alone */
   const int p_only = ev == EV_PMIN || ev == EV_PMAX || ev == EV_UZ;
@@ -203,7 +212,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
       trial_start(c, a, b, ev == EV_BP, ds, sa, sb, Xa, Xb, sigma, out->X, H);
       memcpy(Xs, out->X, N * sizeof *Xs);
       rc = cont_correct(c, a->X, c->dir, sigma, out->X);
-      if (rc == 0 && ev == EV_BP) on_the_branch(c, Xa, Xb, Xs, out->X);
+      if (rc == 0 && ev == EV_BP) on_the_branch(c, Xa, Xb, Xs, step_span, out->X);
       if (rc == 0 && !p_only) rc = trial_analyse(c, out, tangent_only);
       if (rc < 0) break;
     }
@@ -219,6 +228,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
          * BP at 7.3769: a trial at psi 9e-10, the next failing and every
          * offset below too, and the point lost) */
         cont_state_copy(c, out, &c->locbest);
+        c->its = its_best; /* its Newton iterations set the next step */
         sout = sbest;
         rc = 0;
       } else if (found && fabs(sb - sa) <= 1e-3 * fabs(ds)) {
@@ -230,6 +240,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
           memcpy(out->X, Xbest, N * sizeof *Xbest);
           sout = sbest + off[j] * fabs(ds);
           rc = cont_correct(c, a->X, c->dir, sout, out->X);
+          if (rc == 0 && ev == EV_BP) on_the_branch(c, Xa, Xb, Xbest, step_span, out->X);
           if (rc == 0 && !p_only) rc = trial_analyse(c, out, tangent_only);
           if (rc < 0) break;
         }
@@ -248,7 +259,10 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
       fbest = fabs(f);
       sbest = sigma;
       memcpy(Xbest, out->X, N * sizeof *Xbest);
-      if (ev == EV_BP) cont_state_copy(c, &c->locbest, out);
+      if (ev == EV_BP) {
+        cont_state_copy(c, &c->locbest, out);
+        its_best = c->its;
+      }
     }
     if (f == 0.0 || fabs(f) <= ftol(c, ev, k, out)) break;
     if (f * fb < 0.0) {

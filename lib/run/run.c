@@ -566,8 +566,11 @@ static int at_stop_point(run_ctx *R, const char *ty) {
   return hit;
 }
 
-/* ISW = -1 at a BP of a boundary-value problem: the second null vector,
- * oriented as AUTO orients it (run_bvp_orient). */
+/* ISW = -1 at a BP of a boundary-value problem or of orbits (both
+ * bvp.f90's STDRBV in AUTO): the second null vector, oriented as AUTO
+ * orients it (run_bvp_orient: ICP(1)'s rate, the other free parameters'
+ * (the period), then u(1)'s; not the state at t = 0 first, as equilibria:
+ * brc's secondary orbits went to the mirror image of AUTO's). */
 static int bvp_switch(run_ctx *R, whirl_cont *c, const branch_spec *b) {
   double *t = malloc((b->nb + 1) * sizeof *t);
   if (!t) return WHIRL_ENOMEM;
@@ -608,7 +611,8 @@ int run_branch(run_ctx *R, branch_spec *b) {
   }
   uc.pfull = pfull; /* scratch shared with the loop below, never in use */
   uc.state = state; /* by both at once */
-  if (b->bp && b->kind == WHIRL_SOL_BVP)
+  if (b->bp && (b->kind == WHIRL_SOL_BVP || b->kind == WHIRL_SOL_COLLOC) && !b->fold &&
+      !b->hopf && !b->bploc && !b->trloc)
     rc = bvp_switch(R, c, b);
   else if (b->bp)
     rc = whirl_cont_start_switch(c, b->bp, dir);

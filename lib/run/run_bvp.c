@@ -280,8 +280,8 @@ int run_bvp_start(run_ctx *R, const whirl_solution *so, whirl_bvp **bvp, double 
 void run_bvp_orient(const run_ctx *R, const branch_spec *b, const double *X,
                     const double *p, double *t) {
   const whirl_run_settings *s = R->s;
-  const size_t nb = b->nb, nfree = (size_t)(s->nbc + s->nint) - R->n;
-  const size_t nodes = nb - nfree, last = nodes - R->n; /* u(1) */
+  const size_t nb = b->nb, nodes = b->nnodes * R->n; /* the node values */
+  const size_t nfree = nb - nodes, last = nodes - R->n; /* free parameters; u(1) */
   double key = 0.0;
   if (fabs(t[nb]) > s->epsl * (1.0 + fabs(p[b->icp]))) key = t[nb];
   for (size_t j = 0; key == 0.0 && j < nfree; j++)

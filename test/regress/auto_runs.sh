@@ -17,7 +17,8 @@
 #     the source tree; skipped where absent), run from their own c-files,
 #     their labels (BR, TY, LAB) against AUTO's log hyper.all:
 #     - brc: labels numbered across runs (run 2 from HB 2 labels on from 7,
-#       as branch 2), and c.brc.3's IRS = 7 is the BP of run 2;
+#       as branch 2), and c.brc.3's IRS = 7 is the BP of run 2; that BP a
+#       symmetric cycle as AUTO's, and run 3 on AUTO's side of it;
 #     - lrz: MXBF = 10 switches at the BP of run 1 (both sides, branch 2,
 #       the side of U(1) > 0 first), c.lrz.2 (IRS = 4) and c.lrz.3 (IRS = 6)
 #       start from the HBs on it, their ends labelled 25 and 43 on branches
@@ -224,6 +225,17 @@ check $? "brc: labels 7-11 across runs as AUTO's ($a): $w"
 tr11=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 == 11 { print substr($0, 20, 19) + 0 }' "$tmp/brc.out/b.brc")
 awk -v x="${tr11:-0}" 'BEGIN { d = (x - 1.30281) / 1.30281; exit !(d < 1e-5 && d > -1e-5) }'
 check $? "brc: c.brc.3 (IRS = 7) starts from the BP: its TR 11 at PAR(5) = $tr11, AUTO 1.30281"
+# the BP of the symmetric cycles (U(3) and U(4), U(2) and U(5) alike, as
+# AUTO's 3.69249 twice) is a symmetric cycle: Newton beside the branch point
+# used to push it 3e-5 along the asymmetric null vector
+bp7=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 == 7 { printf "%.10g %.10g %.10g %.10g\n", substr($0, 96, 19), substr($0, 115, 19), substr($0, 77, 19), substr($0, 134, 19) }' "$tmp/brc.out/b.brc")
+echo "$bp7" | awk '{ d = $1 - $2; e = $3 - $4; exit !(NF == 4 && d < 1e-6 && d > -1e-6 && e < 1e-6 && e > -1e-6) }'
+check $? "brc: BP 7's MAX U(3), MAX U(4) and MAX U(2), MAX U(5) equal to 1e-6: $bp7"
+# ... and run 3 leaves it on AUTO's side of the pitchfork (TR 11: MAX U(2)
+# 2.32843, MAX U(5) 2.82494; the mirror image has them swapped)
+tr11m=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 == 11 { print substr($0, 77, 19) + 0, substr($0, 134, 19) + 0 }' "$tmp/brc.out/b.brc")
+echo "$tr11m" | awk '{ exit !(NF == 2 && $1 > 2.32842 && $1 < 2.32844 && $2 > 2.82493 && $2 < 2.82495) }'
+check $? "brc: run 3 on AUTO's side: TR 11's MAX U(2), MAX U(5) = $tr11m, AUTO 2.32843 2.82494"
 
 # lrz: MXBF, and IRS = 4, 6 on the switched branch
 demo lrz

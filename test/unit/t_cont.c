@@ -1456,6 +1456,32 @@ static void test_switch_orientation(void) {
   whirl_branch_free(b);
 }
 
+/* The switch direction is the vector of the null plane of [F_x F_p] at
+ * the branch point orthogonal to the given tangent (AUTO's STSDRBV), also
+ * where that tangent is not quite in the plane (a restart whose phase
+ * condition refers to another point): pf2's BP at 0 with the tangent
+ * (0, 0.01, 1), off the plane spanned by (3, -4, 0)/5 and (0, 0, 1).  The
+ * plane's vector orthogonal to it, (3, -4, 0.04)/5.00016, has
+ * 4 ph0 + 3 ph1 = 0; the old projection of (3, -4, 0)/5 off the tangent,
+ * 2.4e-4, is outside the plane (brc's pitchfork of cycles: a parameter
+ * rate of 1e-4 where the new branch has none, and the mirror branch). */
+static void test_switch_in_null_plane(void) {
+  whirl_system s = {.name = "pitchfork2", .n = 2, .npar = 1, .F = pf2_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  char err[256];
+  whirl_cont *c = whirl_cont_alloc(&s, &o, err, sizeof err);
+  double x[2] = {0.0, 0.0}, p[1] = {0.0}, bt[3] = {0.0, 0.01, 1.0}, ph[3] = {NAN, NAN, NAN};
+  whirl_point q = {.n = 2, .npar = 1, .x = x, .p = p, .t = bt};
+  const int rc = c ? whirl_cont_switch_direction(c, &q, +1, ph) : -1;
+  const double in_plane = fabs(4.0 * ph[0] + 3.0 * ph[1]);
+  const double along_t = fabs(ph[1] * bt[1] + ph[2] * bt[2]);
+  ok(rc == WHIRL_OK && in_plane < 1e-12 && along_t < 1e-12 && fabs(ph[0] - 0.6) < 1e-4,
+     "switch direction in the null plane (|A ph| %.2g) and orthogonal to the tangent "
+     "(%.2g): (%.6f, %.6f, %.6f)", in_plane, along_t, ph[0], ph[1], ph[2]);
+  whirl_cont_free(c);
+}
+
 /* whirl_branch_distance against the plain definition (every segment's
  * nearest point, written out here): polylines that turn back and forth in
  * the parameter, single points, several weights; the distance and the
@@ -1565,6 +1591,7 @@ int main(void) {
   test_auto_steps();
   test_start_as_given();
   test_switch_orientation();
+  test_switch_in_null_plane();
   test_errors();
   test_start_on_singular_solution();
   test_branch_distance();
