@@ -667,18 +667,22 @@ int whirl_bvp_eval(const whirl_bvp *b, const double *X, double t, double *u) {
 double whirl_bvp_l2norm(const whirl_bvp *b, const double *X) {
   if (!b || !X) return NAN;
   const size_t n = b->n, m = b->ncol;
+  /* AUTO's RNRMV: each interval's node values squared by the closed
+   * Newton-Cotes weights of its NCOL + 1 equally spaced nodes (WINT), not
+   * a Gauss rule of the polynomial: the two part by 1 % on a coarse mesh
+   * with a boundary layer (demo kar's first points, uniform NTST 40) */
+  double W[COLLOC_BASIS_MAXCOL + 1];
+  colloc_basis_lagrange_integrals(m, W);
   double s = 0.0;
   for (size_t i = 0; i < b->ntst; ++i) {
     const double h = b->mesh[i + 1] - b->mesh[i];
-    for (size_t g = 0; g < m; ++g) {
-      const double *lv = b->L + g * (m + 1);
+    for (size_t k = 0; k <= m; ++k) {
       double sq = 0.0;
       for (size_t r = 0; r < n; ++r) {
-        double v = 0.0;
-        for (size_t k = 0; k <= m; ++k) v += lv[k] * X[n * (i * m + k) + r];
+        const double v = X[n * (i * m + k) + r];
         sq += v * v;
       }
-      s += h * b->gw[g] * sq;
+      s += h * W[k] * sq;
     }
   }
   return sqrt(s);

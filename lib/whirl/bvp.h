@@ -152,8 +152,9 @@ WHIRL_API int whirl_bvp_from_function(whirl_bvp *b,
 WHIRL_API int whirl_bvp_eval(const whirl_bvp *b, const double *X, double t,
                              double *u);
 
-/* AUTO's L2-NORM: sqrt(∫_0^1 |u(t)|² dt) by the Gauss quadrature of the
- * mesh; NaN for NULL arguments. */
+/* AUTO's L2-NORM: sqrt(∫_0^1 |u(t)|² dt) by AUTO's quadrature of the node
+ * values (each interval's closed Newton-Cotes rule, mesh.f90 RNRMV); NaN
+ * for NULL arguments. */
 WHIRL_API double whirl_bvp_l2norm(const whirl_bvp *b, const double *X);
 
 /* mx[n]: the maximum over the nodes of each component (AUTO's MAX U(i)). */

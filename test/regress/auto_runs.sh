@@ -39,7 +39,9 @@
 #     - pp3: PVLS's PAR(9) (the L2-NORM through GETP) stops a branch at
 #       UZSTOP {9: 1.2}, AUTO's UZ 4;
 #     - ffn: IPLT = 9 (2 NDIM + 1): the second column is AUTO's L2-NORM of U(1),
-#       at the TR 9.54521E-01 (the whole state's L2-NORM is 1.53).
+#       at the TR 9.54521E-01 (the whole state's L2-NORM is 1.53);
+#     - kar (IPS = 4): the L2-NORM of its first points, on the uniform
+#       mesh, as AUTO's own run's (AUTO's quadrature of the node values).
 # TAP output.
 set -u
 : "${top_srcdir:=.}" "${top_builddir:=.}"
@@ -333,5 +335,15 @@ check $? "ffn: IPLT = 9 names the second column 'L2-NORM x' (AUTO's HEADNG with 
 tr=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 8 { print substr($0, 39, 19) + 0; exit }' "$tmp/ffn.out/b.ffn")
 awk -v x="${tr:-0}" 'BEGIN { d = (x - 0.954521) / 0.954521; exit !(d < 1e-5 && d > -1e-5) }'
 check $? "ffn: L2-NORM U(1) at the TR = $tr, AUTO 9.54521E-01"
+# kar (IPS = 4, NTST 40 uniform until the first mesh adaptation, a
+# boundary layer at t = 0): the L2-NORM of its first points as AUTO's, the
+# node values by each interval's Newton-Cotes weights (AUTO's RNRMV); a
+# Gauss rule of the collocation polynomial gave 4.0997e-3 at PT 2
+mkdir "$tmp/kar" && cp "$auto/demos/kar/kar.f90" "$tmp/kar/" &&
+  sed 's/NMX= *500, NPR= *500/NMX=   3, NPR=   1/' "$auto/demos/kar/c.kar" > "$tmp/kar/c.kar.1"
+(cd "$tmp" && "$WHIRL" auto kar --quiet > kar.log 2>&1)
+l2=$(awk 'substr($0, 1, 4) + 0 != 0 && (substr($0, 5, 6) + 0 == 2 || substr($0, 5, 6) + 0 == 3) { printf "%.10g ", substr($0, 39, 19) }' "$tmp/kar.out/b.kar")
+echo "$l2" | awk '{ exit !(NF == 2 && (($1 - 4.1417949978e-3) / 4.1417949978e-3) ^ 2 < 1e-12 && (($2 - 1.0384051822e-2) / 1.0384051822e-2) ^ 2 < 1e-12) }'
+check $? "kar: PT 2 and 3's L2-NORM as AUTO's (4.1417949978E-003 1.0384051822E-002, AUTO-07p 0.9.2's b.kar): $l2"
 echo "1..$n"
 exit $fail
