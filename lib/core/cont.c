@@ -1185,6 +1185,17 @@ static int remap_if_asked(whirl_cont *c) {
   if (!detects_anything(c)) return 0;
   rc = cont_analyse(c, &c->cur, c->dir);
   if (rc < 0) return rc;
+  /* ... but the mapped tangent kept where the new one leaves it by more
+   * than 25 degrees: solved anew at a branch point (the point a step after
+   * a BP starts from, when the mesh changes there) the tangent is any
+   * vector of the two-dimensional null space, and the next step went along
+   * the other branch (tor's c.tor.2 and pen's doubled rotations: the step
+   * from the BP rejected down to 4e-5, then off); elsewhere the two agree
+   * to the interpolation error */
+  if (cont_dot(c, c->cur.t, c->dir) < 0.9) {
+    memcpy(c->cur.t, c->dir, N * sizeof *c->cur.t);
+    c->cur.psi_lp = c->cur.t[cont_lead(c)];
+  }
   if (rc > 0)
     return WHIRL_FAIL(c, WHIRL_ESINGULAR,
                       "the current point is singular "

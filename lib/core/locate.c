@@ -182,6 +182,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   double *Xb = Xa + N, *Xbest = Xb + N, *Xs = Xbest + N, *H = Xs + N; /* not before the check */
   double sbest = 0.0, fbest = INFINITY, sout = 0.0;
   int its_best = 0;
+  const int its_step = c->its; /* the step's own Newton count */
   memcpy(Xa, a->X, N * sizeof *Xa);
   memcpy(Xb, b->X, N * sizeof *Xb);
   double step_span = 0.0; /* the whole step's change, the bend's scale */
@@ -276,12 +277,25 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
     fb = f;
     memcpy(Xb, out->X, N * sizeof *Xb);
     if (fabs(sb - sa) <= stol) break;
+    /* a branch point to 1e-7 of the step (its parameter to 1e-7 of the
+     * step's change): nearer, the bordered Jacobian's smallest singular
+     * value falls with the distance and Newton stops converging (pen's
+     * doubled rotations: 7 iterations at 5e-5 where EPSU asks 1.5e-6,
+     * every trial within 1e-9 of the step failing, and the step after
+     * the point went onto the crossing branch) */
+    if (ev == EV_BP && fabs(sb - sa) <= 1e-7 * fabs(ds)) break;
   }
   free(Xa);
   if (!found) return 1;
   if (p_only && cont_analyse(c, out, c->dir) != 0) return 1;
   if (tangent_only && cont_tests(c, out) != 0) return 1;
   if (ev == EV_BP) {
+    /* The next step's length: from the point's Newton count (AUTO's, of
+     * its last location step) but not from more than the step's own:
+     * beside the branch point Newton converges slowly (pen's doubled
+     * rotations: 7 iterations at psi 7e-12, and the next step a fraction
+     * of the last) */
+    if (c->its > its_step) c->its = its_step;
     /* At the branch point [F_x F_p; r^T] is singular and the tangent solved
      * from it is an arbitrary vector of the two-dimensional null space.  The
      * branch's own tangent is smooth through the point: take it from the

@@ -40,6 +40,8 @@
 #       UZSTOP {9: 1.2}, AUTO's UZ 4;
 #     - ffn: IPLT = 9 (2 NDIM + 1): the second column is AUTO's L2-NORM of U(1),
 #       at the TR 9.54521E-01 (the whole state's L2-NORM is 1.53);
+#     - pen, tor: past a branch point of orbits the branch goes on as
+#       AUTO's (c.pen.2's labels 4-6, c.tor.2's LP 9 at -0.832514);
 #     - kar (IPS = 4): the L2-NORM of its first points, on the uniform
 #       mesh, as AUTO's own run's (AUTO's quadrature of the node values).
 # TAP output.
@@ -335,6 +337,19 @@ check $? "ffn: IPLT = 9 names the second column 'L2-NORM x' (AUTO's HEADNG with 
 tr=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 8 { print substr($0, 39, 19) + 0; exit }' "$tmp/ffn.out/b.ffn")
 awk -v x="${tr:-0}" 'BEGIN { d = (x - 0.954521) / 0.954521; exit !(d < 1e-5 && d > -1e-5) }'
 check $? "ffn: L2-NORM U(1) at the TR = $tr, AUTO 9.54521E-01"
+# pen and tor: past a branch point of orbits the branch goes on as AUTO's,
+# not onto the crossing one (a mesh change at the BP solved its tangent
+# anew, any vector of the null plane; the localisation's last Newton count,
+# 7 beside the BP, cut the next step to a fraction)
+demo pen --runs=pen.1,pen.2
+w=$(labels "$tmp/pen.out/b.pen" | awk '$3 >= 4 && $3 <= 6' | tr '\n' ';')
+a=$(hyper_labels pen "$hyper" | awk '$3 >= 4 && $3 <= 6' | tr '\n' ';')
+[ -n "$a" ] && [ "$w" = "$a" ]
+check $? "pen: c.pen.2 (the doubled rotations) labels 4-6 as AUTO's ($a): $w"
+demo tor --runs=tor.1,tor.2
+lp9=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 5 && substr($0, 20, 19) + 0 < -0.8 { printf "%.10g", substr($0, 20, 19); exit }' "$tmp/tor.out/b.tor")
+awk -v x="${lp9:-0}" 'BEGIN { d = (x + 0.832514) / 0.832514; exit !(d < 1e-6 && d > -1e-6) }'
+check $? "tor: c.tor.2 stays on its branch past its BP at -0.587029: AUTO's LP 9 at -0.832514: ${lp9:-none}"
 # kar (IPS = 4, NTST 40 uniform until the first mesh adaptation, a
 # boundary layer at t = 0): the L2-NORM of its first points as AUTO's, the
 # node values by each interval's Newton-Cotes weights (AUTO's RNRMV); a
