@@ -216,6 +216,8 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   else if (!(opt->p_min < opt->p_max)) why = "need RL0 (p_min) < RL1 (p_max)";
   else if (!(opt->newton_tol > 0) || opt->newton_maxit < 1 || !(opt->newton_tol_par >= 0))
     why = "need newton_tol > 0, newton_tol_par >= 0 and newton_maxit >= 1";
+  else if (opt->newton_full < 0)
+    why = "newton_full: need >= 0 (0: a new Jacobian at every iteration)";
   else if (opt->newton_par_tail >= sys->n)
     why = "newton_par_tail: need fewer free parameters than unknowns";
   else if (!(opt->p_weight >= 0) || !isfinite(opt->p_weight))
@@ -503,13 +505,14 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
   int fresh = !chord || !c->fact_ok; /* factor at the next iterate */
   int refreshed = 0; /* factorisations made during this correction */
   memcpy(p, c->cur.p, c->npar * sizeof *p);
-  if (chord) border_row(c, dir, c->row2);
+  if (chord || c->opt.newton_full > 0) border_row(c, dir, c->row2);
   for (int it = 1; it <= c->opt.newton_maxit; ++it) {
     p[c->opt.icp] = X[n];
     int rc = whirl_system_eval(&c->sys, X, p, c->f);
     ++c->stats.f_evals;
     if ((rc = classify(c, rc, "F")) != 0) return rc;
-    if (!chord) fresh = 1;
+    /* AUTO's NWTN: a new Jacobian at the first iterations only */
+    if (!chord && (c->opt.newton_full <= 0 || it <= c->opt.newton_full)) fresh = 1;
     if (!fresh && (rc = reborder(c)) == 4) fresh = 1;
     else if (rc != 0) return rc;
     if (fresh) {

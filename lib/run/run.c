@@ -188,6 +188,7 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
     o->newton_scale_before = 1;
   }
   o->newton_maxit = s->itnw;
+  o->newton_full = s->nwtn; /* AUTO's NWTN (0 unless the run file says) */
   /* the tangent and tests from the corrector's last factorisation, as
    * AUTO: a Jacobian and a factorisation fewer a step */
   o->tangent_from_newton = 1;

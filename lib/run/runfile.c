@@ -95,6 +95,7 @@ static const key_def keys[] = {
     {WHIRL_RK_ORBIT_MAX, "ORBIT_MAX", "orbit_max", NULL, K_METHOD},
     {WHIRL_RK_MESH_RULE, "MESH_RULE", "mesh_rule", NULL, K_METHOD},
     {WHIRL_RK_THREADS, "THREADS", "threads", NULL, K_INT},
+    {WHIRL_RK_NWTN, "NWTN", "newton_full_iterations", NULL, K_INT},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -102,7 +103,7 @@ static const key_def keys[] = {
  * noted in the run's log): they control output, AUTO's own iteration
  * details. */
 static const char *const ignored_keys[] = {
-    "ITMX", "NWTN", "IID", "MXBF", "IADS",
+    "ITMX", "IID", "MXBF", "IADS",
     "NTHL", "NTHU", "NUZR", "NPAR", "SP", "UNAMES",
     "PARNAMES", "NUNSTAB", "NSTAB", "IIS", "IBR", "LAB", "TY", "EFILE",
     "SFILE", "NPRM", "DATFILE"};
@@ -584,6 +585,7 @@ static const char *check_int(whirl_run_key k, int x) {
       return x < 0 || x > 256 ? "must be in [0, 256] (0: as many as OpenMP offers)" : NULL;
     case WHIRL_RK_NPR: return x < 0 ? "must be >= 0" : NULL;
     case WHIRL_RK_ITNW: return x < 1 || x > 1000 ? "must be in [1, 1000]" : NULL;
+    case WHIRL_RK_NWTN: return x < 0 || x > 1000 ? "must be in [0, 1000] (0: a new Jacobian at every iteration)" : NULL;
     case WHIRL_RK_JAC:
       /* AUTO-07p documents 0 and 1 only */
       return x != 0 && x != 1 ? "must be 0 (finite differences) or 1 (the "
@@ -624,6 +626,7 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_ORBIT_MAX: return &s->orbit_max_nodes;
     case WHIRL_RK_MESH_RULE: return &s->mesh_jumps;
     case WHIRL_RK_THREADS: return &s->threads;
+    case WHIRL_RK_NWTN: return &s->nwtn;
     case WHIRL_RK_DISCOVER_STARTS: return &s->discover_starts;
     case WHIRL_RK_DISCOVER_SEED: return &s->discover_seed;
     default: return NULL;

@@ -35,6 +35,8 @@ typedef struct whirl_run_settings {
   double rl0, rl1, a0, a1;      /* defaults -1e30, 1e30, 0, 1e30 */
   double epsl, epsu, epss;      /* defaults 1e-7, 1e-7, 1e-5 */
   int itnw, jac;                /* defaults 8, 1 */
+  int nwtn;                     /* AUTO's NWTN: iterations with a new
+                                   Jacobian, then chord (0, default: all) */
   whirl_run_value uzr[WHIRL_RUN_MAXITEMS];
   size_t nuzr;
   whirl_run_value uzstop[WHIRL_RUN_MAXITEMS];

@@ -114,6 +114,9 @@ typedef struct whirl_cont_options {
   int newton_scale_before; /* 1: the state's scale |x|_inf taken before the
                           correction (AUTO's NEWTONBV), 0: after (NEWTONAE) */
   int newton_maxit;    /* ITNW */
+  int newton_full;     /* AUTO's NWTN: > 0, a new Jacobian at the first
+                          newton_full iterations of a correction only, the
+                          last one kept after (chord); 0: at every one */
   int newton_fast;     /* iterations at or below which the step may grow */
   int newton_chord;    /* 0: Newton, a new Jacobian at every iteration;
                           1: chord (modified) Newton: keep the last

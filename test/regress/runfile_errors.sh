@@ -259,6 +259,7 @@ c 2 "DSMAX below the default DSMIN" "$F:3: DSMIN = 1e-05 exceeds DSMAX = 1e-06$"
 c 2 "RL0 >= RL1" "$F:4: RL0 = 2 must be below RL1 = 1$" "$B"'RL0 = 2\nRL1 = 1\n'
 c 2 "A0 >= A1" "$F:4: A0 = 5 must be below A1 = 1$" "$B"'A0 = 5\nA1 = 1\n'
 c 2 "NCOL out of range" "$F:3: NCOL = 8: must be in \[2, 7\]$" "$B"'NCOL = 8\n'
+c 2 "NWTN negative" "$F:3: NWTN = -1: must be in \[0, 1000\] \(0: a new Jacobian at every iteration\)$" "$B"'NWTN = -1\n'
 c 2 "JAC out of range" "$F:3: JAC = 2: must be 0" "$B"'JAC = 2\n'
 c 2 "ISP out of range (4)" "$F:3: ISP = 4: must be 0, 1, 2 or 3" "$B"'ISP = 4\n'
 c 2 "ISW out of range" "$F:3: ISW = 4: must be 1" "$B"'ISW = 4\n'

@@ -230,6 +230,38 @@ static void test_natural_corrector(double xw) {
      changes[0]);
 }
 
+/* newton_full (AUTO's NWTN): a new Jacobian at the first newton_full
+ * iterations of a correction only, the last one kept after: the cusp's
+ * folds as exact and every point on the curve, fewer Jacobians than
+ * iterations (with 0, one at every iteration). */
+static void test_newton_full(void) {
+  whirl_system s = {.name = "cusp", .n = 1, .npar = 2, .F = cusp_F, .Fx = cusp_Fx,
+                    .Fp = cusp_Fp};
+  const double mu_f = 2.0 / (3.0 * sqrt(3.0));
+  for (int full = 0; full <= 1; ++full) {
+    whirl_cont_options o;
+    cusp_options(&o, 0.4);
+    o.newton_full = full;
+    o.newton_tol = 1e-12;
+    char err[256];
+    whirl_cont *c = whirl_cont_alloc(&s, &o, err, sizeof err);
+    whirl_branch *b = whirl_branch_alloc(1, 2, 0, 0);
+    double x0 = -2.0, p0[2] = {-6.0, 1.0};
+    int rc = c && b ? whirl_cont_start(c, &x0, p0, +1) : -1;
+    if (rc == WHIRL_OK) rc = whirl_cont_run(c, b);
+    const whirl_cont_stats *st = c ? whirl_cont_get_stats(c) : NULL;
+    const whirl_branch_point *l1 = b ? nth_type(b, WHIRL_PT_LP, 0) : NULL;
+    const double res = cusp_residual(b);
+    ok(rc >= 0 && st && l1 && fabs(l1->p[0] - mu_f) < 1e-12 && res < 1e-10 &&
+           (full ? st->jac_evals < st->newton_its : st->jac_evals >= st->newton_its),
+       "newton_full %d: the fold at 2/(3 sqrt 3) (%.3g off), F = 0 (%.1e), %zu Jacobians "
+       "for %zu iterations", full, l1 ? fabs(l1->p[0] - mu_f) : NAN, res,
+       st ? st->jac_evals : 0, st ? st->newton_its : 0);
+    whirl_branch_free(b);
+    whirl_cont_free(c);
+  }
+}
+
 static void test_bp(void) {
   whirl_system s = {.name = "pitchfork", .n = 1, .npar = 1, .F = pf_F};
   whirl_cont_options o;
@@ -1592,6 +1624,7 @@ int main(void) {
   test_start_as_given();
   test_switch_orientation();
   test_switch_in_null_plane();
+  test_newton_full();
   test_errors();
   test_start_on_singular_solution();
   test_branch_distance();
