@@ -230,6 +230,44 @@ static void test_natural_corrector(double xw) {
      changes[0]);
 }
 
+/* pf2 with a chain of 248 more unknowns, x_i = x_{i-1} / 2: N = 251, so
+ * the switch direction comes from inverse iteration with the bordered LU,
+ * not the dense SVD; beside the branch point (p = 1e-7) it must be the
+ * vector of the null plane orthogonal to the given tangent, here
+ * (0, 0.01, 0, ..., 1), off the plane as in test_switch_in_null_plane. */
+enum { CHAIN = 250 };
+static int chain_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = p[0] * x[0] - x[0] * x[0] * x[0];
+  f[1] = 4.0 * x[0] + 3.0 * x[1];
+  for (int i = 2; i < CHAIN; ++i) f[i] = x[i] - 0.5 * x[i - 1];
+  return 0;
+}
+static void test_switch_large(void) {
+  whirl_system s = {.name = "chain", .n = CHAIN, .npar = 1, .F = chain_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  char err[256];
+  whirl_cont *c = whirl_cont_alloc(&s, &o, err, sizeof err);
+  static double x[CHAIN], bt[CHAIN + 1], ph[CHAIN + 1], f0[CHAIN], f1[CHAIN];
+  double p[1] = {1e-7};
+  bt[1] = 0.01;
+  bt[CHAIN] = 1.0;
+  whirl_point q = {.n = CHAIN, .npar = 1, .x = x, .p = p, .t = bt};
+  const int rc = c ? whirl_cont_switch_direction(c, &q, +1, ph) : -1;
+  /* [F_x F_p] ph by a difference quotient of F (F is cubic in x0 only) */
+  double xe[CHAIN], pe[1] = {p[0] + 1e-6 * ph[CHAIN]}, res = 0.0, along = 0.0;
+  for (int i = 0; i < CHAIN; ++i) xe[i] = x[i] + 1e-6 * ph[i];
+  chain_F(x, p, f0, NULL);
+  chain_F(xe, pe, f1, NULL);
+  for (int i = 0; i < CHAIN; ++i) res = fmax(res, fabs(f1[i] - f0[i]) / 1e-6);
+  for (int i = 0; i <= CHAIN; ++i) along += ph[i] * bt[i];
+  ok(rc == WHIRL_OK && res < 1e-5 && fabs(along) < 1e-9 && ph[0] > 0.5,
+     "switch direction of %d unknowns (inverse iteration): in the null plane to %.1e, "
+     "orthogonal to the tangent (%.1e), x0 %.4f", CHAIN + 1, res, fabs(along), ph[0]);
+  whirl_cont_free(c);
+}
+
 /* newton_full (AUTO's NWTN): a new Jacobian at the first newton_full
  * iterations of a correction only, the last one kept after: the cusp's
  * folds as exact and every point on the curve, fewer Jacobians than
@@ -1625,6 +1663,7 @@ int main(void) {
   test_switch_orientation();
   test_switch_in_null_plane();
   test_newton_full();
+  test_switch_large();
   test_errors();
   test_start_on_singular_solution();
   test_branch_distance();
