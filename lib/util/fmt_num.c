@@ -82,12 +82,31 @@ static int put_exponent(char *out, int k) {
   return len;
 }
 
+/* printf's own conversion where the fast one cannot tell the digits: a
+ * literal precision for the common ones, as glibc's "%.*g" takes its slow
+ * positional path (twice the time of "%.17g"; the same bytes) */
+static int slow_g(char *out, size_t size, double x, int prec) {
+  switch (prec) {
+  case 17: return snprintf(out, size, "%.17g", x);
+  case 12: return snprintf(out, size, "%.12g", x);
+  case 10: return snprintf(out, size, "%.10g", x);
+  default: return snprintf(out, size, "%.*g", prec, x);
+  }
+}
+static int slow_e(char *out, size_t size, double x, int prec) {
+  switch (prec) {
+  case 16: return snprintf(out, size, "%.16e", x);
+  case 10: return snprintf(out, size, "%.10e", x);
+  default: return snprintf(out, size, "%.*e", prec, x);
+  }
+}
+
 int fmt_e(char *out, size_t size, double x, int prec) {
   long long n;
   int k, len = 0;
   char d[MAX_DIGITS];
   if (size < FMT_NUM_SIZE || prec < 0 || !digits_of(x, prec + 1, &n, &k))
-    return snprintf(out, size, "%.*e", prec, x);
+    return slow_e(out, size, x, prec);
   put_digits(d, n, prec + 1);
   if (signbit(x)) out[len++] = '-';
   out[len++] = d[0];
@@ -107,7 +126,7 @@ int fmt_g(char *out, size_t size, double x, int prec) {
   char d[MAX_DIGITS];
   const int P = prec == 0 ? 1 : prec;
   if (size < FMT_NUM_SIZE || prec < 0 || !digits_of(x, P, &n, &k))
-    return snprintf(out, size, "%.*g", prec, x);
+    return slow_g(out, size, x, prec);
   put_digits(d, n, P);
   int used = P; /* the digits left once trailing zeros go */
   while (used > 1 && d[used - 1] == '0') used--;
