@@ -53,11 +53,15 @@ static double ftol(const whirl_cont *c, int ev, size_t k, const cont_state *st) 
   case EV_LP:
     return 1e-14;
   case EV_BP:
-    /* psi is det relative to its value at the step's start: 1e-12 is
-     * within about 1e-12 of a step of the branch point.  Iterating on to
-     * a bracket of loc_tol ran Newton into the branch point's shrinking
-     * basin, where it fails (enz's pitchfork by a fold: a secant iterate
-     * at psi = 3e-15, the next one failing, the point lost) */
+    /* psi is det relative to its value at the step's start: 1e-8 is
+     * within about 1e-8 of a step of the branch point, the parameter to
+     * 1e-8 of the step's change.  Nearer, the point's error along the null
+     * vector (rounding over the smallest singular value, ~ eps / psi)
+     * outgrows its distance: the two balance near sqrt(eps).  Iterating
+     * on to a bracket of loc_tol ran Newton into the branch point's
+     * shrinking basin, where it fails (enz's pitchfork by a fold: a
+     * secant iterate at psi = 3e-15, the next one failing, the point
+     * lost; 1e-12 until 2026-12-06) */
     return 1e-8;
   case EV_PD:
     return 1e-12;

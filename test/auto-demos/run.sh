@@ -21,9 +21,10 @@
 # Where AUTO-07p itself is installed (the Debian package auto-07p, driven
 # by /usr/bin/python3), AUTO's own run of the demo's script on a scratch
 # copy with every EPSS = 1e-10 is a second reference (its 6 printed digits
-# are converged; hyper.all's are EPSS-limited, often 1e-4): a point agrees
-# when either of AUTO's runs printed it (REF both; AUTO_REF=hyper: hyper.all
-# alone).  That takes minutes (AUTO compiles each demo, some run long at
+# are converged; hyper.all's are EPSS-limited, often 1e-4), and AUTO's own
+# run of the constants files in whirl's default order (the same runs) a
+# third: a point agrees when any of AUTO's runs printed it (REF both, both+
+# with the third; AUTO_REF=hyper: hyper.all alone).  That takes minutes (AUTO compiles each demo, some run long at
 # EPSS = 1e-10); with hyper.all alone about 30 s.
 # Default directory: ../shared/auto-07p/demos beside the source tree; a
 # message and exit 0 where it is absent.
@@ -62,6 +63,32 @@ auto_tight() {
     (cd "$tmp/ref.$1" && timeout 300 python3 "$py/auto/__main__.py" "$1.auto" 2>&1)
     echo "Demo $1 is done"; } > "$tmp/$1.tight"
   grep -q 'PT  TY' "$tmp/$1.tight" || : > "$tmp/$1.tight"
+}
+# AUTO's own run of demo $1's constants files in whirl's default order
+# (c.NAME.1, c.NAME.2, ... or c.NAME alone), each given the runs before it
+# as its solutions (IRS: AUTO's numbering of labels across them), in the
+# scratch copy auto_tight made (EPSS = 1e-10): the very runs whirl makes,
+# where the demo's script makes others (ext's c.ext.2 to NMX, where the
+# script stops at PAR(1) = 6); its log in $tmp/$1.default (empty when no
+# run printed a point; 60 s at most: its c.pcl.7 runs on, singular)
+auto_default() {
+  r="$tmp/ref.$1"
+  files=$(cd "$r" 2>/dev/null && ls c."$1".[0-9]* 2>/dev/null | sort -t. -k3,3n | tr '\n' ' ')
+  [ -n "$files" ] || { [ -f "$r/c.$1" ] && files="c.$1"; }
+  : > "$tmp/$1.default"
+  [ -n "$files" ] || return 0
+  { echo "s = None"
+    for f in $files; do
+      echo "try:"
+      echo "    r = run(e='$1', c='${f#c.}') if s is None else run(e='$1', c='${f#c.}', s=s)"
+      echo "    s = r if s is None else s + r"
+      echo "except Exception as err:"
+      echo "    print('run ${f#c.} failed: %s' % err)"
+    done; } > "$r/whirl-default.auto"
+  { echo "Demo $1 is started"
+    (cd "$r" && rm -f b.* s.* d.* && timeout 60 python3 "$py/auto/__main__.py" whirl-default.auto 2>&1)
+    echo "Demo $1 is done"; } > "$tmp/$1.default"
+  grep -q 'PT  TY' "$tmp/$1.default" || : > "$tmp/$1.default"
 }
 # the special points of demo $1 in the log $2: TY and values, one a line
 auto_points() {
@@ -150,6 +177,10 @@ for dir in "$demos"/*/; do
   if [ $tight = 1 ]; then
     auto_tight "$d"
     [ -s "$tmp/$d.tight" ] && ref=both && auto_points "$d" "$tmp/$d.tight" >> "$tmp/$d.auto"
+    if [ $script = 0 ]; then
+      auto_default "$d"
+      [ -s "$tmp/$d.default" ] && ref=$ref+ && auto_points "$d" "$tmp/$d.default" >> "$tmp/$d.auto"
+    fi
   fi
   whirl_points "$tmp/$d.out" "$stem" > "$tmp/$d.whirl"
   w=$(wc -l < "$tmp/$d.whirl"); a=$(wc -l < "$tmp/$d.auto")
