@@ -70,7 +70,7 @@ auto_tight() {
 # scratch copy auto_tight made (EPSS = 1e-10): the very runs whirl makes,
 # where the demo's script makes others (ext's c.ext.2 to NMX, where the
 # script stops at PAR(1) = 6); its log in $tmp/$1.default (empty when no
-# run printed a point; 60 s at most: its c.pcl.7 runs on, singular)
+# run printed a point; 60 s at most: pcl's default order runs on past 300 s)
 auto_default() {
   r="$tmp/ref.$1"
   files=$(cd "$r" 2>/dev/null && ls c."$1".[0-9]* 2>/dev/null | sort -t. -k3,3n | tr '\n' ' ')
