@@ -15,22 +15,7 @@ equilibrium), state.
 """
 import math
 
-
-def bisect(g, a, b):
-    """The zero of g in [a, b] (g(a) g(b) < 0) to the last bit."""
-    ga = g(a)
-    assert ga * g(b) < 0, (a, b)
-    while True:
-        m = 0.5 * (a + b)
-        if m <= min(a, b) or m >= max(a, b):
-            return m
-        gm = g(m)
-        if gm == 0:
-            return m
-        if (gm < 0) == (ga < 0):
-            a, ga = m, gm
-        else:
-            b = m
+from bisection import bisect  # beside this file
 
 
 def row(run, ty, pt, pars, state, period="-"):

@@ -15,23 +15,12 @@ doc/auto-reference.md), solved by bisection to the last bit.
 """
 import cmath
 import math
+import os
+import sys
 
-
-def bisect(g, a, b):
-    """The zero of g in [a, b] (g(a) g(b) < 0) to the last bit."""
-    ga = g(a)
-    assert ga * g(b) < 0, (a, b)
-    while True:
-        m = 0.5 * (a + b)
-        if m <= min(a, b) or m >= max(a, b):
-            return m
-        gm = g(m)
-        if gm == 0:
-            return m
-        if (gm < 0) == (ga < 0):
-            a, ga = m, gm
-        else:
-            b = m
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "examples", "auto"))
+from bisection import bisect  # noqa: E402 (examples/auto/bisection.py)
 
 
 def eig2(A):
