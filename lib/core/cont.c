@@ -1033,8 +1033,15 @@ static void orient_switch(const whirl_cont *c, const whirl_point *bp, int dir, d
  * small as the distance, so the iterates line up with it.  0, or 1 when
  * the factorisation fails (the caller takes the SVD). */
 static int switch_by_inverse_iteration(whirl_cont *c, const whirl_point *bp, double *ph) {
-  const size_t N = c->N;
-  if (jac_factor(c, bp->x, bp->p, bp->t) != 0) return 1;
+  const size_t n = c->n, N = c->N;
+  /* the factorisation's point is (x, p) in one vector of N */
+  double *X = malloc(N * sizeof *X);
+  if (!X) return 1;
+  memcpy(X, bp->x, n * sizeof *X);
+  X[n] = bp->p[c->opt.icp];
+  const int rc = jac_factor(c, X, bp->p, bp->t);
+  free(X);
+  if (rc != 0) return 1;
   for (size_t i = 0; i < N; ++i) /* a fixed start with no structure */
     ph[i] = 1.0 + 0.5 * sin(1.7 * (double)i + 0.3);
   for (int k = 0; k < 2; ++k) {
