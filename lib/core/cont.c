@@ -1692,10 +1692,12 @@ static int closes_loop(whirl_cont *c) {
   const size_t N = c->N;
   const cont_state *a = &c->cur, *b = &c->trial;
   if (!c->opt.detect_loop || c->index <= 3) return 0;
-  double u, dlen = 0.0;
-  double d = seg_dist(c, c->Xstart, a->X, b->X, &u);
-  for (size_t i = 0; i < N; ++i) dlen += (b->X[i] - a->X[i]) * (b->X[i] - a->X[i]);
-  dlen = sqrt(dlen);
+  /* the step's length in the norm of the distance and the arclength (the
+   * weights: x_weight, the system's own, p_weight) — unweighted, a BVP's
+   * node values made it ~sqrt(nodes) too long and a branch passing its
+   * start far away "closed" (spb's c.spb.3) */
+  double u;
+  const double d = seg_dist(c, c->Xstart, a->X, b->X, &u), dlen = sqrt(cont_dist2(c, a->X, b->X));
   if (!(u >= 0.0 && u <= 1.0 && d < 0.05 * dlen && b->s > 4.0 * dlen)) return 0;
   cont_state *q = &c->queue[c->qcap - 1];
   cont_state_copy(c, q, b);

@@ -191,6 +191,14 @@ static int start_on_mesh(run_ctx *R, const whirl_solution *so, const double *x,
     return -1;
   }
   whirl_bvp_set_mesh(src, so->mesh);
+  /* onto the mesh AUTO's ADAPT2 makes from the label (STPNBV): not a
+   * uniform one, which loses a boundary layer (spb's c.spb.2 from its
+   * epsilon = 1e-3 onto NTST 200: Newton failed at the start) */
+  if (whirl_bvp_mesh_from(bvp, (size_t)so->ntst, (size_t)so->ncol, so->mesh, x)) {
+    run_say(R, "IRS: label %d onto NTST = %zu: %s", so->label, o->ntst, whirl_bvp_errmsg(bvp));
+    whirl_bvp_free(src);
+    return -1;
+  }
   stored_orbit st = {src, x};
   double *p = malloc(R->npar * sizeof *p);
   int rc = p ? WHIRL_OK : WHIRL_ENOMEM;

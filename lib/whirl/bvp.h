@@ -182,6 +182,16 @@ WHIRL_API const double *whirl_bvp_mesh(const whirl_bvp *b);
  * WHIRL_EINVAL for a mesh that is not increasing from 0 to 1. */
 WHIRL_API int whirl_bvp_set_mesh(whirl_bvp *b, const double *tau);
 
+/* AUTO's ADAPT2 (mesh.f90, NEWMSH) of a restart onto another NTST or NCOL:
+ * b's mesh becomes the one of b's NTST intervals that equidistributes the
+ * estimate of the (NCOL+1)-th derivative (as the remap hook's) of the
+ * solution Xold, node values on nold intervals of degree mold over
+ * old_mesh; a solution too flat for the estimate gets the uniform mesh.
+ * The caller then samples Xold at the new nodes (whirl_bvp_from_function).
+ * WHIRL_EINVAL for a mesh not increasing from 0 to 1 or a non-finite Xold. */
+WHIRL_API int whirl_bvp_mesh_from(whirl_bvp *b, size_t nold, size_t mold,
+                                  const double *old_mesh, const double *Xold);
+
 /* The message of the last failure of a function given b, with its origin
  * "(bvp.c:N)"; "" if none.  Never NULL. */
 WHIRL_API const char *whirl_bvp_errmsg(const whirl_bvp *b);

@@ -43,7 +43,9 @@
 #     - pen, tor: past a branch point of orbits the branch goes on as
 #       AUTO's (c.pen.2's labels 4-6, c.tor.2's LP 9 at -0.832514);
 #     - kar (IPS = 4): the L2-NORM of its first points, on the uniform
-#       mesh, as AUTO's own run's (AUTO's quadrature of the node values).
+#       mesh, as AUTO's own run's (AUTO's quadrature of the node values);
+#     - spb by its script: a BVP label restarted on a larger NTST (AUTO's
+#       ADAPT2 mesh) and a long branch not taken for a closed loop.
 # TAP output.
 set -u
 : "${top_srcdir:=.}" "${top_builddir:=.}"
@@ -360,5 +362,19 @@ mkdir "$tmp/kar" && cp "$auto/demos/kar/kar.f90" "$tmp/kar/" &&
 l2=$(awk 'substr($0, 1, 4) + 0 != 0 && (substr($0, 5, 6) + 0 == 2 || substr($0, 5, 6) + 0 == 3) { printf "%.10g ", substr($0, 39, 19) }' "$tmp/kar.out/b.kar")
 echo "$l2" | awk '{ exit !(NF == 2 && (($1 - 4.1417949978e-3) / 4.1417949978e-3) ^ 2 < 1e-12 && (($2 - 1.0384051822e-2) / 1.0384051822e-2) ^ 2 < 1e-12) }'
 check $? "kar: PT 2 and 3's L2-NORM as AUTO's (4.1417949978E-003 1.0384051822E-002, AUTO-07p 0.9.2's b.kar): $l2"
+# spb by its script (IPS = 4): c.spb.2 restarts the epsilon = 1e-3 label of
+# NTST 100 on NTST 200, onto the mesh AUTO's ADAPT2 makes from it (a
+# uniform one lost the boundary layer: Newton failed at the start, exit
+# 1), and ends in AUTO's EP 19 (PT 15, PAR(1) -1.32815E-01); c.spb.3 then
+# runs its NMX (it had stopped "closed on itself" after 565 points: the
+# loop test measured the step unweighted against the weighted distance)
+(cd "$tmp" && "$WHIRL" auto "$auto/demos/spb" --script --quiet --out=spb.s > spb.s.log 2>&1)
+rc=$?
+ep=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 5, 6) + 0 == 15 && substr($0, 11, 4) + 0 == 9 { printf "%.10g", substr($0, 20, 19) }' "$tmp/spb.s/b.2" 2>/dev/null)
+awk -v x="${ep:-0}" 'BEGIN { d = (x + 0.132815) / 0.132815; exit !(d < 5e-6 && d > -5e-6) }'
+check $(( $? + rc )) "spb --script: runs 3-4 run (exit $rc), run 3's EP at PT 15 as AUTO's EP 19 (-1.32815E-01): ${ep:-none}"
+pts=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 9 { e = substr($0, 5, 6) + 0 } END { print e + 0 }' "$tmp/spb.s/b.2" 2>/dev/null)
+[ "${pts:-0}" -gt 1000 ]
+check $? "spb --script: c.spb.3 is not taken for a closed loop (its last EP at PT ${pts:-none}, NMX 2000; it was 565)"
 echo "1..$n"
 exit $fail

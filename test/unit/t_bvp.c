@@ -914,6 +914,58 @@ static void test_bad_options(void) {
   whirl_bvp_free(NULL);
 }
 
+/* AUTO's ADAPT2 of a restart onto another NTST (whirl_bvp_mesh_from): a
+ * boundary layer u = (exp(-(1 - t)/eps), 0), eps = 0.01, sampled on a
+ * uniform NTST 100 (NCOL 4), moved onto NTST 40: the mesh equidistributes
+ * |u^(5)|^(1/5) ~ exp(-(1 - t)/(5 eps)) / eps, so the share of intervals
+ * in t > 1 - 5 eps ln 2 is the share of the density's integral there,
+ * 1/2 (a uniform mesh: 0.7 %); sampled at the new nodes the layer is
+ * resolved (largest step in u 1/8 of the uniform one's).  A mesh that is
+ * not increasing is refused with a message. */
+static int layer_start(double t, double *u, double *p, void *d) {
+  (void)p, (void)d;
+  u[0] = exp(-(1.0 - t) / 0.01);
+  u[1] = 0.0;
+  return 0;
+}
+
+static void test_mesh_from(void) {
+  char err[256];
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = 100, o.ncol = 4, o.nbc = 2, o.bc = bratu_bc;
+  whirl_bvp *src = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  o.ntst = 40;
+  whirl_bvp *b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  ok(src && b, "mesh_from: NTST 100 and 40 allocated: %s", err);
+  if (!src || !b) return;
+  double *Xs = malloc(whirl_bvp_size(src) * sizeof *Xs), p[1] = {0.0};
+  double *X = malloc(whirl_bvp_size(b) * sizeof *X);
+  whirl_bvp_from_function(src, layer_start, NULL, Xs, p);
+  double old[101];
+  memcpy(old, whirl_bvp_mesh(src), sizeof old);
+  ok(whirl_bvp_mesh_from(b, 100, 4, old, Xs) == WHIRL_OK, "mesh_from: NTST 100 -> 40: %s",
+     whirl_bvp_errmsg(b));
+  const double *m = whirl_bvp_mesh(b), t_half = 1.0 - 5.0 * 0.01 * log(2.0);
+  size_t in = 0;
+  for (size_t i = 0; i < 40; ++i) in += m[i] >= t_half;
+  ok(in >= 18 && in <= 22 && m[0] == 0.0 && m[40] == 1.0,
+     "mesh_from: %zu of 40 intervals beyond t = %.4f (the density's half: 20)", in, t_half);
+  whirl_bvp_from_function(b, layer_start, NULL, X, p);
+  double jump = 0.0;
+  for (size_t j = 0; j + 1 < 161; ++j) jump = fmax(jump, fabs(X[2 * (j + 1)] - X[2 * j]));
+  const double uniform = 1.0 - exp(-1.0 / (40 * 4 * 0.01)); /* the last node gap */
+  ok(jump < 0.125 * uniform,
+     "mesh_from: the largest step in u between nodes %.3g (uniform NTST 40: %.3g)", jump,
+     uniform);
+  old[50] = old[49];
+  ok(whirl_bvp_mesh_from(b, 100, 4, old, Xs) == WHIRL_EINVAL &&
+         strstr(whirl_bvp_errmsg(b), "not increasing"),
+     "mesh_from: a mesh not increasing is refused: %s", whirl_bvp_errmsg(b));
+  free(Xs), free(X);
+  whirl_bvp_free(src), whirl_bvp_free(b);
+}
+
 int main(void) {
   test_bratu(WHIRL_LINSOL_DENSE, 0);
   test_bratu(WHIRL_LINSOL_SPARSE, 0);
@@ -926,5 +978,6 @@ int main(void) {
   test_icnd_arguments();
   test_nonautonomous();
   test_bad_options();
+  test_mesh_from();
   return done_testing();
 }

@@ -954,6 +954,44 @@ static void test_two_at_once(void) {
 }
 
 
+/* ---- an outward spiral in the weighted norm: (x0, p) = r(th) (cos th,
+ * sin th), r = 1 + 0.05 th / (2 pi), th = x1 / 120, with x1's weight
+ * 1e-6 (out of the step, as AUTO's THU = 0, or a BVP's many node values
+ * against their integral weights).  After one turn the branch passes
+ * 0.05 from its start, 5 steps of 0.01 away: no loop.  The loop test
+ * measured the step unweighted (1.2 per step in x1) against the weighted
+ * distance and stopped there "closed on itself" (spb's c.spb.3, a BVP
+ * whose node values outnumber the integral norm: 565 of AUTO's 1554
+ * points). */
+static int spiral_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  const double th = x[1] / 120.0, r = 1.0 + 0.05 * th / (2.0 * M_PI);
+  f[0] = x[0] - r * cos(th);
+  f[1] = p[0] - r * sin(th);
+  return 0;
+}
+
+static void test_loop_weighted(void) {
+  whirl_system s = {.name = "spiral", .n = 2, .npar = 1, .F = spiral_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = o.ds_max = 0.01;
+  o.nmx = 800;
+  const double xw[2] = {1.0, 1e-6};
+  o.x_weight = xw;
+  double x0[2] = {1.0, 0.0}, p0 = 0.0;
+  whirl_branch *b = NULL;
+  char err[256];
+  whirl_cont_stats st = {0};
+  int rc = whirl_trace_branch(&s, &o, x0, &p0, &b, &st, err, sizeof err);
+  ok(rc == WHIRL_OK && b, "spiral traced");
+  const double th = b && b->len ? b->pts[b->len - 1].x[1] / 120.0 : 0.0;
+  ok(b && b->stop_reason == WHIRL_STOP_NMX && th > 2.0 * M_PI,
+     "spiral, weighted norm: not a loop where it passes 0.05 from its start "
+     "(stop %d after %.3f turns)", b ? b->stop_reason : -1, th / (2.0 * M_PI));
+  whirl_branch_free(b);
+}
+
 /* ---- a straight line x = (p, 100 p): the arclength per unit p is
  * sqrt(1 + 1e4 + 1) with unit weights and sqrt(2) when the second
  * component's weight is 0 (AUTO's THU), sqrt(1 + 1e4 + 4) with p_weight 2
@@ -1647,6 +1685,7 @@ int main(void) {
   test_maps();
   test_hopf_nearest_switch();
   test_loop();
+  test_loop_weighted();
   test_uz();
   test_uz_fun();
   test_bratu();
