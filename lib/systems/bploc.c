@@ -75,7 +75,7 @@ whirl_bploc *whirl_bploc_alloc(const whirl_system *base, size_t q, int generic, 
   b->base = *base;
   b->n = n, b->q = q, b->extra = extra, b->generic = generic != 0;
   b->J = calloc(n * n, sizeof *b->J);
-  b->work = calloc(2 * n + 2, sizeof *b->work);
+  b->work = calloc(2 * n + 2 + base->nnz, sizeof *b->work); /* max(2n, nnz) */
   b->pf = calloc(base->npar, sizeof *b->pf);
   b->fp = calloc(n, sizeof *b->fp);
   b->fm = calloc(n, sizeof *b->fm);

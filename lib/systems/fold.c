@@ -42,6 +42,7 @@ struct whirl_fold {
   double *work;      /* 2n: scratch of whirl_system_jacobian / _param */
   double *Zs, *tmp;  /* N: scratch for finite differences of the cond row */
   double *gx;        /* n: the row g_x */
+  double *hx;        /* n: the row of w^T F_q (a branch-point curve) */
   double *xc, *pc;   /* the point of the last null_solve (n, npar) */
   int cached;        /* 1: f->A, the factorisation, v and w are at (xc, pc) */
   double *er, *ei;   /* n: eigenvalues */
@@ -60,7 +61,8 @@ void whirl_fold_options_default(whirl_fold_options *o, size_t par) {
 void whirl_fold_params(const whirl_fold *f, const double *Z, const double *p,
                        double *pfull) {
   if (pfull != p) memcpy(pfull, p, f->base.npar * sizeof *pfull);
-  for (size_t k = 0; k < f->o.nfree; ++k) pfull[f->o.free[k]] = Z[f->n + k];
+  for (size_t k = 0; k < f->o.nfree; ++k)
+    if (!(f->o.unfold && k == 1)) pfull[f->o.free[k]] = Z[f->n + k]; /* beta: no parameter */
 }
 
 static double norm2(const double *a, size_t n) {
@@ -147,19 +149,36 @@ static int fq_at(whirl_fold *f, const double *x, const double *p, double *out) {
   return whirl_system_param(&f->base, x, p, f->o.par, out, f->work);
 }
 
-/* w^T (Ap - Am) v with the current null vectors: the difference of two
- * shifted Jacobians contracted with w and v (A's block; E is constant). */
-static double wdiffv(const whirl_fold *f) {
+/* w^T (Ap - Am) u: the difference of two shifted Jacobians contracted
+ * with the left null vector w and u (A's block; E is constant). */
+static double wdiff_dot(const whirl_fold *f, const double *u) {
   const size_t n = f->n, na = f->na;
-  if (f->sparse) return fold_sparse_wdiffv(&f->sp, f->w, f->Ap, f->Am, f->v);
+  if (f->sparse) return fold_sparse_wdiffv(&f->sp, f->w, f->Ap, f->Am, u);
   double s = 0.0;
   for (size_t j = 0; j < na; ++j) {
     double col = 0.0;
     for (size_t i = 0; i < na; ++i)
       col += f->w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
-    s += col * f->v[j];
+    s += col * u[j];
   }
   return s;
+}
+
+/* ... with the right null vector v */
+static double wdiffv(const whirl_fold *f) { return wdiff_dot(f, f->v); }
+
+/* out[j] = w^T (Ap - Am) e_j for every column j < n (rows of A's block). */
+static void wdiff_cols(const whirl_fold *f, double *out) {
+  const size_t n = f->n, na = f->na;
+  if (f->sparse) {
+    fold_sparse_wdiff_cols(&f->sp, f->w, f->Ap, f->Am, out);
+    return;
+  }
+  for (size_t j = 0; j < n; ++j) {
+    double s = 0.0;
+    for (size_t i = 0; i < na; ++i) s += f->w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
+    out[j] = s;
+  }
 }
 
 /* w^T F_xx[v, v] / (|w| |v|^2) from F_x at x +- h v (uses f->Ap, f->Am). */
@@ -203,6 +222,11 @@ static int cond_value(whirl_fold *f, const double *x, const double *p,
   case WHIRL_FOLD_COND_CP: return cusp_value(f, x, p, val);
   case WHIRL_FOLD_COND_BT: *val = bt_value(f); return 0;
   case WHIRL_FOLD_COND_MG: return mg_value(f, x, p, val);
+  case WHIRL_FOLD_COND_BP: { /* w^T F_q itself: its row is worked out (bp_row) */
+    int rc = fq_at(f, x, p, f->fq);
+    *val = rc ? 0.0 : dot(f->w, f->fq, f->n);
+    return rc;
+  }
   default: *val = 0.0; return 0;
   }
 }
@@ -214,6 +238,8 @@ static int fold_F(const double *Z, const double *p, double *out, void *data) {
   int rc = f->base.F(Z, f->pf, out, f->base.data);
   if (rc != 0) return rc;
   if ((rc = null_solve(f, Z, f->pf)) != 0) return rc;
+  if (f->o.unfold) /* F + beta b */
+    for (size_t i = 0; i < n; ++i) out[i] += Z[n + 1] * f->b[i];
   out[n] = f->v[f->na];
   if (f->o.cond) return cond_value(f, Z, f->pf, &out[n + 1]);
   return 0;
@@ -239,25 +265,63 @@ static int g_param(whirl_fold *f, const double *Z, size_t q, double *gq) {
  * null_solve done at (Z, f->pf). */
 static int g_derivs(whirl_fold *f, const double *Z, double *gx, double *gq) {
   const size_t n = f->n, na = f->na, nf = f->o.nfree;
-  const double *v = f->v, *w = f->w;
+  const double *v = f->v;
   const double h = hstep(Z, na, v);
   int rc;
   for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] + (i < na ? h * v[i] : 0.0);
   if ((rc = jac(f, f->xs, f->pf, f->Ap)) != 0) return rc;
   for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] - (i < na ? h * v[i] : 0.0);
   if ((rc = jac(f, f->xs, f->pf, f->Am)) != 0) return rc;
-  if (f->sparse) {
-    fold_sparse_wdiff_cols(&f->sp, w, f->Ap, f->Am, gx);
-    for (size_t j = 0; j < n; ++j) gx[j] /= -2.0 * h;
-  } else {
-    for (size_t j = 0; j < n; ++j) {
-      double s = 0.0;
-      for (size_t i = 0; i < na; ++i) s += w[i] * (f->Ap[i + n * j] - f->Am[i + n * j]);
-      gx[j] = -s / (2.0 * h);
+  wdiff_cols(f, gx);
+  for (size_t j = 0; j < n; ++j) gx[j] /= -2.0 * h;
+  for (size_t k = 0; k < nf; ++k) {
+    gq[k] = 0.0; /* beta: F_x does not depend on it */
+    if (!(f->o.unfold && k == 1) && (rc = g_param(f, Z, f->o.free[k], &gq[k])) != 0) return rc;
+  }
+  return 0;
+}
+
+/* The row of h = w^T F_q of a branch-point curve, at (Z, f->pf) with
+ * null_solve done there: with [phi; gamma] = M^{-1} [F_q; 0] (b, c fixed,
+ * so w_z^T F_q = -w^T (F_x)_z phi),
+ *     h_z = w^T F_qz - w^T (F_x)_z phi,
+ * h_x from base Jacobians at q +- hq (w^T F_xq, by symmetry of the second
+ * derivatives) and at x +- h phi; h_q and a freed r from F_q and F_x at
+ * q +- hq, r +- hr; h_beta = 0.  hx[n], hfree[nfree]. */
+static int bp_row(whirl_fold *f, const double *Z, double *hx, double *hfree) {
+  const size_t n = f->n, np = f->base.npar;
+  const double *w = f->w;
+  double *phi = f->phi, *fqm = f->tmp;
+  int rc;
+  if ((rc = fq_at(f, Z, f->pf, phi)) != 0) return rc;
+  phi[n] = 0.0;
+  if ((rc = whirl_linsol_solve(f->ls, phi, 1, 0)) != WHIRL_OK)
+    return WHIRL_FAIL(f, rc, "branch-point curve: the solve for F_q failed");
+  for (size_t k = 0; k < f->o.nfree; ++k) {
+    hfree[k] = 0.0;
+    if (f->o.unfold && k == 1) continue;
+    const size_t r = f->o.free[k];
+    const double hr = 6e-6 * (1.0 + fabs(f->pf[r]));
+    memcpy(f->pq, f->pf, np * sizeof *f->pq);
+    f->pq[r] = f->pf[r] + hr;
+    if ((rc = jac(f, Z, f->pq, f->Ap)) != 0 || (rc = fq_at(f, Z, f->pq, f->fqp)) != 0) return rc;
+    f->pq[r] = f->pf[r] - hr;
+    if ((rc = jac(f, Z, f->pq, f->Am)) != 0 || (rc = fq_at(f, Z, f->pq, fqm)) != 0) return rc;
+    double wfqr = 0.0;
+    for (size_t i = 0; i < n; ++i) wfqr += w[i] * (f->fqp[i] - fqm[i]);
+    hfree[k] = (wfqr - wdiff_dot(f, phi)) / (2.0 * hr);
+    if (k == 0) { /* w^T F_xq, the first part of h_x */
+      wdiff_cols(f, hx);
+      for (size_t j = 0; j < n; ++j) hx[j] /= 2.0 * hr;
     }
   }
-  for (size_t k = 0; k < nf; ++k)
-    if ((rc = g_param(f, Z, f->o.free[k], &gq[k])) != 0) return rc;
+  const double h = hstep(Z, n, phi);
+  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] + h * phi[i];
+  if ((rc = jac(f, f->xs, f->pf, f->Ap)) != 0) return rc;
+  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] - h * phi[i];
+  if ((rc = jac(f, f->xs, f->pf, f->Am)) != 0) return rc;
+  wdiff_cols(f, fqm);
+  for (size_t j = 0; j < n; ++j) hx[j] -= fqm[j] / (2.0 * h);
   return 0;
 }
 
@@ -283,21 +347,28 @@ static int fold_Fp(const double *Z, const double *p, size_t k, double *out, void
  * each base column with g_x below it, then F_q and g_q. */
 static int fold_Fx_sparse(const double *Z, const double *p, double *Jx, void *data) {
   whirl_fold *f = data;
-  const size_t n = f->n;
-  double gq;
+  const size_t n = f->n, nf = f->o.nfree;
+  const int bp = f->o.cond == WHIRL_FOLD_COND_BP;
+  double gq[2], hq[2] = {0.0, 0.0};
   int rc;
   whirl_fold_params(f, Z, p, f->pf);
   if ((rc = null_solve(f, Z, f->pf)) != 0) return rc;
+  if ((rc = g_derivs(f, Z, f->gx, gq)) != 0) return rc;
+  if (bp && (rc = bp_row(f, Z, f->hx, hq)) != 0) return rc;
   size_t q = 0;
-  rc = whirl_system_param(&f->base, Z, f->pf, f->o.free[0], f->fq, f->work);
-  if (rc != 0) return rc;
-  if ((rc = g_derivs(f, Z, f->gx, &gq)) != 0) return rc;
   for (size_t j = 0; j < n; ++j) {
     for (int k = f->sp.Jp[j]; k < f->sp.Jp[j + 1]; ++k) Jx[q++] = f->A[k];
     Jx[q++] = f->gx[j];
+    if (bp) Jx[q++] = f->hx[j];
   }
-  memcpy(Jx + q, f->fq, n * sizeof *Jx);
-  Jx[q + n] = gq;
+  for (size_t k = 0; k < nf; ++k) { /* F_free (beta: b), g_free, h_free */
+    if (f->o.unfold && k == 1) memcpy(Jx + q, f->b, n * sizeof *Jx);
+    else if ((rc = whirl_system_param(&f->base, Z, f->pf, f->o.free[k], Jx + q, f->work)) != 0)
+      return rc;
+    q += n;
+    Jx[q++] = gq[k];
+    if (bp) Jx[q++] = hq[k];
+  }
   return 0;
 }
 
@@ -313,6 +384,10 @@ static int fold_Fx(const double *Z, const double *p, double *J, void *data) {
   for (size_t j = 0; j < n; ++j)
     memcpy(J + N * j, f->A + n * j, n * sizeof *J);
   for (size_t k = 0; k < nf; ++k) {
+    if (f->o.unfold && k == 1) { /* beta's column: b */
+      memcpy(J + N * (n + k), f->b, n * sizeof *J);
+      continue;
+    }
     rc = whirl_system_param(&f->base, Z, f->pf, f->o.free[k], f->fq, f->work);
     if (rc != 0) return rc;
     memcpy(J + N * (n + k), f->fq, n * sizeof *J);
@@ -483,10 +558,11 @@ static int fold_accept(const double *Z, const double *p, void *data) {
 
 /* The sparse path: a base with a sparse pattern, large enough that dense
  * LUs of order n dominate (collocation orbits), and no imposed condition
- * (its row is differenced densely). */
+ * but the branch points' (the others' rows are differenced densely). */
 static int use_sparse(const whirl_system *base, const whirl_fold_options *o) {
   return base->Fx_sparse && base->Jp && base->Ji && base->nnz > 0 && base->n > 100 &&
-         o->cond == WHIRL_FOLD_COND_NONE && o->nfree == 1;
+         ((o->cond == WHIRL_FOLD_COND_NONE && o->nfree == 1) ||
+          (o->cond == WHIRL_FOLD_COND_BP && o->nfree == 2));
 }
 
 static int operator_valid(const whirl_fold_operator *op, size_t n) {
@@ -520,10 +596,14 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   else if (!o) why = "no options";
   else if (o->par >= base->npar) why = "fold parameter is not a parameter of the base system";
   else if (o->nfree < 1 || o->nfree > 2) why = "nfree must be 1 or 2";
-  else if (o->free[0] >= base->npar || (o->nfree == 2 && o->free[1] >= base->npar))
+  else if (o->unfold && o->cond != WHIRL_FOLD_COND_BP)
+    why = "unfold (beta) belongs to a branch-point curve (cond BP)";
+  else if (o->free[0] >= base->npar ||
+           (o->nfree == 2 && !o->unfold && o->free[1] >= base->npar))
     why = "a freed parameter is not a parameter of the base system";
-  else if (o->nfree == 2 && o->free[0] == o->free[1]) why = "the two freed parameters are the same";
-  else if (o->cond < WHIRL_FOLD_COND_NONE || o->cond > WHIRL_FOLD_COND_MG)
+  else if (o->nfree == 2 && !o->unfold && o->free[0] == o->free[1])
+    why = "the two freed parameters are the same";
+  else if (o->cond < WHIRL_FOLD_COND_NONE || o->cond > WHIRL_FOLD_COND_BP)
     why = "unknown codimension-two condition";
   else if ((o->cond != WHIRL_FOLD_COND_NONE) != (o->nfree == 2))
     why = "a codimension-two condition needs exactly two freed parameters "
@@ -545,9 +625,11 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   f->N = n + o->nfree;
   f->o.op = NULL; /* copied below */
   if (copy_operator(f, o->op) != 0) goto nomem;
+  if (o->cond == WHIRL_FOLD_COND_BP) f->point_type = WHIRL_PT_BP;
   const size_t na = f->na;
   f->sparse = use_sparse(base, o);
-  if (f->sparse && fold_sparse_alloc(&f->sp, base, na, f->ne, f->e_row, f->e_col, o->nfree))
+  if (f->sparse && fold_sparse_alloc(&f->sp, base, na, f->ne, f->e_row, f->e_col, o->nfree,
+                                     o->cond ? 2 : 1))
     goto nomem;
   const size_t nj = f->sparse ? (base->nnz ? base->nnz : 1) : n * n;
   f->b = calloc(n, sizeof *f->b);
@@ -560,6 +642,7 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   f->Ap = calloc(nj, sizeof *f->Ap);
   f->Am = calloc(nj, sizeof *f->Am);
   f->gx = calloc(n, sizeof *f->gx);
+  f->hx = calloc(n, sizeof *f->hx);
   f->xc = calloc(n, sizeof *f->xc);
   f->pc = calloc(base->npar, sizeof *f->pc);
   f->v = calloc(n + 1, sizeof *f->v);
@@ -570,13 +653,14 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   f->xs = calloc(n, sizeof *f->xs);
   f->fq = calloc(n, sizeof *f->fq);
   f->fqp = calloc(n, sizeof *f->fqp);
-  f->work = calloc(2 * n + 2, sizeof *f->work);
+  /* whirl_system_jacobian's scratch: max(2n, nnz) (the sparse values) */
+  f->work = calloc(2 * n + 2 + base->nnz, sizeof *f->work);
   f->Zs = calloc(f->N, sizeof *f->Zs);
   f->tmp = calloc(f->N, sizeof *f->tmp);
   f->er = calloc(n, sizeof *f->er);
   f->ei = calloc(n, sizeof *f->ei);
   if (!f->b || !f->c || !f->ls || (n >= 3 && !o->op && !f->sparse && !f->eig) || !f->M ||
-      !f->A || !f->gx || !f->xc || !f->pc ||
+      !f->A || !f->gx || !f->hx || !f->xc || !f->pc ||
       !f->Ap || !f->Am || !f->v || !f->w || !f->phi || !f->pf || !f->pq ||
       !f->xs || !f->fq || !f->fqp || !f->work || !f->Zs ||
       !f->tmp || !f->er || !f->ei)
@@ -589,6 +673,8 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
             : o->cond == WHIRL_FOLD_COND_CP ? "cusp curve"
             : o->cond == WHIRL_FOLD_COND_BT ? "Bogdanov-Takens curve"
             : o->cond == WHIRL_FOLD_COND_MG ? "isola/merge curve"
+            : o->cond == WHIRL_FOLD_COND_BP ? (o->unfold ? "branch-point curve (symmetric)"
+                                                         : "branch-point curve (generic)")
                                             : "fold curve";
   s->n = f->N;
   s->npar = base->npar;
@@ -621,7 +707,7 @@ void whirl_fold_free(whirl_fold *f) {
   free(f->v); free(f->w); free(f->phi); free(f->pf); free(f->pq);
   free(f->xs); free(f->fq); free(f->fqp); free(f->work);
   free(f->Zs); free(f->tmp); free(f->er); free(f->ei);
-  free(f->e_row); free(f->e_col); free(f->e_val); free(f->gx); free(f->xc); free(f->pc);
+  free(f->e_row); free(f->e_col); free(f->e_val); free(f->gx); free(f->hx); free(f->xc); free(f->pc);
   fold_sparse_free(&f->sp);
   free(f);
 }
@@ -683,7 +769,8 @@ int whirl_fold_init(whirl_fold *f, const double *x, const double *p, double *Z) 
       return WHIRL_FAIL(f, rc, "fold start: the bordered operator [A b; c^T 0] is "
                         "singular (the point is not a simple fold or PD)");
     memcpy(Z, x, n * sizeof *Z);
-    Z[n] = p[f->o.free[0]];
+    for (size_t k = 0; k < f->o.nfree; ++k)
+      Z[n + k] = f->o.unfold && k == 1 ? 0.0 : p[f->o.free[k]];
     f->errmsg[0] = 0;
     return WHIRL_OK;
   }
@@ -698,7 +785,8 @@ int whirl_fold_init(whirl_fold *f, const double *x, const double *p, double *Z) 
   if (rc != WHIRL_OK)
     return WHIRL_FAIL(f, rc, "fold start: SVD of F_x^T failed");
   memcpy(Z, x, n * sizeof *Z);
-  for (size_t k = 0; k < f->o.nfree; ++k) Z[n + k] = p[f->o.free[k]];
+  for (size_t k = 0; k < f->o.nfree; ++k)
+    Z[n + k] = f->o.unfold && k == 1 ? 0.0 : p[f->o.free[k]];
   f->errmsg[0] = 0;
   return WHIRL_OK;
 }

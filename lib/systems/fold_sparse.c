@@ -9,8 +9,9 @@
  *   - the contractions w^T (F_x(x + hv) − F_x(x − hv)) (v, 0) over the
  *     nonzeros;
  *   - the fold system's own Jacobian [F_x F_free; g_x g_free]: the base
- *     pattern with one dense row (g_x) and nfree dense columns, so that the
- *     core factors it by UMFPACK too.
+ *     pattern with one dense row (g_x; two with a branch-point curve's
+ *     w^T F_q) and nfree dense columns, so that the core factors it by
+ *     UMFPACK too.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <stdlib.h>
 #include <string.h>
@@ -81,11 +82,12 @@ static int m_maps(fold_sparse *s, size_t ne, const size_t *er, const size_t *ec)
   return 0;
 }
 
-/* The fold system's pattern: base columns with row n appended, then nfree
- * full columns of n + 1 rows. */
-static int sys_pattern(fold_sparse *s, size_t nfree) {
+/* The fold system's pattern: base columns with rows n .. n + nrow - 1
+ * appended (g, and a condition's row), then nfree full columns of n + nrow
+ * rows. */
+static int sys_pattern(fold_sparse *s, size_t nfree, size_t nrow) {
   const size_t n = s->n, N = n + nfree;
-  s->snz = s->nnz + n + nfree * (n + 1);
+  s->snz = s->nnz + nrow * n + nfree * (n + nrow);
   s->Sp = malloc((N + 1) * sizeof *s->Sp);
   s->Si = malloc(s->snz * sizeof *s->Si);
   if (!s->Sp || !s->Si) return -1;
@@ -93,18 +95,18 @@ static int sys_pattern(fold_sparse *s, size_t nfree) {
   for (size_t j = 0; j < n; ++j) {
     s->Sp[j] = (int)q;
     for (int k = s->Jp[j]; k < s->Jp[j + 1]; ++k) s->Si[q++] = s->Ji[k];
-    s->Si[q++] = (int)n;
+    for (size_t r = 0; r < nrow; ++r) s->Si[q++] = (int)(n + r);
   }
   for (size_t f = 0; f < nfree; ++f) {
     s->Sp[n + f] = (int)q;
-    for (size_t i = 0; i <= n; ++i) s->Si[q++] = (int)i;
+    for (size_t i = 0; i < n + nrow; ++i) s->Si[q++] = (int)i;
   }
   s->Sp[N] = (int)q;
   return 0;
 }
 
 int fold_sparse_alloc(fold_sparse *s, const whirl_system *base, size_t na, size_t ne,
-                      const size_t *er, const size_t *ec, size_t nfree) {
+                      const size_t *er, const size_t *ec, size_t nfree, size_t nrow) {
   memset(s, 0, sizeof *s);
   const size_t n = base->n;
   s->n = n, s->na = na, s->nnz = base->nnz;
@@ -116,7 +118,7 @@ int fold_sparse_alloc(fold_sparse *s, const whirl_system *base, size_t na, size_
   memcpy(s->Ji, base->Ji, s->nnz * sizeof *s->Ji);
   for (size_t j = 0; j < n; ++j)
     for (int k = s->Jp[j]; k < s->Jp[j + 1]; ++k) s->col[k] = (int)j;
-  if (m_pattern(s, ne, er, ec) || m_maps(s, ne, er, ec) || sys_pattern(s, nfree)) return -1;
+  if (m_pattern(s, ne, er, ec) || m_maps(s, ne, er, ec) || sys_pattern(s, nfree, nrow)) return -1;
   return 0;
 }
 

@@ -20,9 +20,10 @@ typedef struct fold_sparse {
   size_t snz;
 } fold_sparse;
 
-/* 0, or -1 out of memory (s then holds what was allocated: free it). */
+/* nrow: the rows below the base's (g; g and a condition's).
+ * 0, or -1 out of memory (s then holds what was allocated: free it). */
 int fold_sparse_alloc(fold_sparse *s, const whirl_system *base, size_t na, size_t ne,
-                      const size_t *er, const size_t *ec, size_t nfree);
+                      const size_t *er, const size_t *ec, size_t nfree, size_t nrow);
 void fold_sparse_free(fold_sparse *s);
 
 /* M's values into s->Mx from the base values Jx[nnz], borders b, c[na]

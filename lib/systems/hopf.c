@@ -389,7 +389,7 @@ whirl_hopf *whirl_hopf_alloc(const whirl_system *base, size_t par, char *errbuf,
   h->M = calloc(m * m, sizeof *h->M);
   h->R = calloc(2 * m, sizeof *h->R);
   h->pf = calloc(base->npar, sizeof *h->pf);
-  h->work = calloc(2 * n + 2, sizeof *h->work);
+  h->work = calloc(2 * n + 2 + base->nnz, sizeof *h->work); /* max(2n, nnz) */
   h->er = calloc(n, sizeof *h->er);
   h->ei = calloc(n, sizeof *h->ei);
   if (!h->B || !h->C || !h->Bn || !h->Cn || !h->ls || !h->eig || !h->A || !h->A2 || !h->M ||

@@ -34,6 +34,19 @@
  * second parameter an unknown: the codimension-two curve, continued in a
  * third parameter by the same core.
  *
+ * Branch points.  F_x singular and w^T F_q = 0 is also where [F_x F_q]
+ * loses rank: a branch point of the base's branches in q (cond BP: the MG
+ * equation, the points labelled BP).  Generic BPs need three parameters
+ * (free = {q, r}, continued in a third); where a symmetry keeps them in
+ * two, `unfold` adds beta instead of r: F + beta b = 0, g = 0, w^T F_q =
+ * 0 in (x, q, beta), beta = 0 on the curve (the unfolding of AUTO's BP
+ * continuation, F. Dercole's, whose b phi_1^* is this b beta; Govaerts
+ * 2000, §4.3).  The row of w^T F_q, with [phi; gamma] = M^{-1} [F_q; 0]:
+ *     (w^T F_q)_z = w^T F_qz − w^T (F_x)_z phi,
+ * from base Jacobians at q +- h and x +- h phi, so the branch-point curve
+ * of a collocation orbit or a BVP keeps the sparse path (AUTO's ISW = 2
+ * and 3 at a BP of orbits or of a BVP).
+ *
  * The same augmentation holds for any operator A(x, p) whose singularity
  * defines the bifurcation, not only F_x: with `op` set, A is the leading
  * na x na block of F_x plus constant entries (whirl_fold_operator), g
@@ -58,7 +71,8 @@ typedef enum whirl_fold_cond {
   WHIRL_FOLD_COND_NONE = 0, /* the fold curve itself */
   WHIRL_FOLD_COND_CP = 1,   /* cusp curve */
   WHIRL_FOLD_COND_BT = 2,   /* Bogdanov-Takens curve */
-  WHIRL_FOLD_COND_MG = 3    /* isola-centre / merge curve: w^T F_q = 0 */
+  WHIRL_FOLD_COND_MG = 3,   /* isola-centre / merge curve: w^T F_q = 0 */
+  WHIRL_FOLD_COND_BP = 4    /* branch-point curve: w^T F_q = 0, its points BPs */
 } whirl_fold_cond;
 
 /* Indices of the test functions in whirl_system.test of a fold system. */
@@ -90,6 +104,11 @@ typedef struct whirl_fold_options {
   int cond;       /* whirl_fold_cond: extra equation (needs nfree == 2) */
   const whirl_fold_operator *op; /* NULL: F_x (a fold); else the operator
                                     whose singularity is followed (no cond) */
+  int unfold;     /* with cond BP: the second unknown is no parameter but
+                     the unfolding beta of F + beta b = 0 (b the left
+                     border), a branch-point curve in two parameters where
+                     a symmetry keeps the BPs (AUTO's ISW = 2; without it,
+                     ISW = 3, free[1] is a third parameter) */
 } whirl_fold_options;
 
 /* Defaults: the fold curve in (par, ICP): nfree 1, free {par}, no cond. */

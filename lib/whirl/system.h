@@ -161,7 +161,8 @@ WHIRL_API int whirl_system_eval(const whirl_system *sys, const double *x,
                                 const double *p, double *f);
 
 /* Dense Jacobian by the analytic callback (Fx, else Fx_sparse scattered),
- * else finite differences.  work[2n]. */
+ * else finite differences.  work[max(2n, nnz)] (a sparse Jacobian's
+ * values go there before they are scattered). */
 /* The dense J[n*n] (column-major) of sparse values Jx[nnz] in sys's
  * pattern (Jp, Ji), zeros elsewhere: what a constructor with only a sparse
  * Jacobian gives as its dense Fx. */
