@@ -207,6 +207,25 @@ static int inherit_names(auto_job *J, size_t i, const char *path) {
   return rc;
 }
 
+/* The parameters stored by the earlier run a run restarts from (@RUN:,
+ * RUN of an earlier invocation into OUT: a script's runs), from its
+ * solutions' header; 0 when there is none.  AUTO's NPAR is at least the
+ * restart's (main.f90: NPAR = MAX(NPARR, NPAR)): tfc's run 5 (NPAR 6)
+ * restarts from run 3's label, whose ICP printed PAR(7), PAR(8). */
+static size_t stored_npar(const auto_job *J, const auto_run *r) {
+  if (!r->from[0] || strchr(r->from, '/')) return 0;
+  char path[4400], line[512];
+  snprintf(path, sizeof path, "%s/%s.out/solutions", J->out, r->from);
+  FILE *f = fopen(path, "r");
+  size_t np = 0;
+  if (!f) return 0;
+  if (!fgets(line, sizeof line, f) ||
+      sscanf(line, "# whirl solutions: model %*[^,], npar %zu", &np) != 1 || np > 36)
+    np = 0;
+  fclose(f);
+  return np;
+}
+
 /* Read every constants file.  0 or 2 (the message printed). */
 static int read_constants(auto_job *J) {
   for (size_t i = 0; i < J->nrun; i++) {
@@ -245,8 +264,11 @@ static int read_constants(auto_job *J) {
     cli_error("auto", "%s/c.%s: NDIM missing", J->dir, J->run[0].c);
     return 2;
   }
-  for (size_t i = 0; i < J->nrun; i++)
+  for (size_t i = 0; i < J->nrun; i++) {
     if (J->run[i].ndim < 1) J->run[i].ndim = J->ndim;
+    const size_t np = stored_npar(J, &J->run[i]);
+    if (np > J->npar) J->npar = np;
+  }
   if (!J->npar) J->npar = 36; /* AUTO's NPARX */
   return 0;
 }

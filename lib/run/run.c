@@ -389,7 +389,9 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
   so.icp2 = b->q >= 0 ? b->icp : -1;
   if (b->fold)
     snprintf(so.locus, sizeof so.locus, "%s",
-             whirl_fold_point_type(b->fold) == WHIRL_PT_PD ? "PD" : "LP");
+             whirl_fold_point_type(b->fold) == WHIRL_PT_PD   ? "PD"
+             : whirl_fold_point_type(b->fold) == WHIRL_PT_BP ? "BP"
+                                                             : "LP");
   else if (b->hopf)
     snprintf(so.locus, sizeof so.locus, "%s", R->s->ips == WHIRL_IPS_MAP ? "TR" : "HB");
   else if (b->bploc)
@@ -845,6 +847,51 @@ static int torus_locus(run_ctx *R, run_objects *O, branch_spec *b, const whirl_s
   return 0;
 }
 
+/* The locus of branch points of orbits or of a BVP (AUTO's ISW = 2 and 3
+ * at a BP of IPS = 2 or 4, F. Dercole's BP continuation): whirl_fold's
+ * branch-point curve on the collocation system, minimally augmented —
+ * ISW = 2 with the unfolding beta (F + beta b, where a symmetry keeps the
+ * BPs in two parameters), ISW = 3 with a third parameter, the ICP after
+ * the continued one, as AUTO's generic case. */
+static int bp_curve(run_ctx *R, run_objects *O, branch_spec *b, const whirl_system *base,
+                    const double *x, const double *p, int q, int other) {
+  whirl_fold_options fo;
+  whirl_fold_options_default(&fo, (size_t)q);
+  fo.nfree = 2;
+  fo.cond = WHIRL_FOLD_COND_BP;
+  fo.unfold = R->s->isw != 3;
+  int extra = -1;
+  for (size_t i = 0; !fo.unfold && i < R->nicp; i++)
+    if (R->icp[i] != q && R->icp[i] != other &&
+        !(b->kind == WHIRL_SOL_COLLOC && R->icp[i] == 10)) { /* PAR(11): the period */
+      extra = R->icp[i];
+      break;
+    }
+  if (!fo.unfold && extra < 0) {
+    run_fail(R, WHIRL_RK_ICP, "ICP: ISW = 3 (a generic branch-point locus) from the BP at "
+             "label %d needs '%s' and two more parameters", O->sol.label, R->pnames[q]);
+    return -2;
+  }
+  fo.free[1] = fo.unfold ? (size_t)q : (size_t)extra;
+  char err[512];
+  O->fold = whirl_fold_alloc(base, &fo, err, sizeof err);
+  if (!O->fold) {
+    run_say(R, "branch-point locus: %s", err);
+    return -1;
+  }
+  O->Z = malloc((whirl_fold_size(O->fold) + 1) * sizeof *O->Z);
+  if (!O->Z) return -1;
+  if (whirl_fold_init(O->fold, x, p, O->Z) != WHIRL_OK) {
+    run_say(R, "branch-point locus: %s", whirl_fold_errmsg(O->fold));
+    return -1;
+  }
+  fprintf(R->log, "branch-point locus from label %d (%s)\n", O->sol.label,
+          fo.unfold ? "with the unfolding beta, ISW = 2" : "generic, ISW = 3");
+  b->fold = O->fold;
+  b->sys = whirl_fold_system(O->fold);
+  return 0;
+}
+
 static int locus(run_ctx *R, run_objects *O, branch_spec *b,
                  const whirl_system *base, const double *x, const double *p) {
   const whirl_solution *so = &O->sol;
@@ -944,10 +991,12 @@ static int locus(run_ctx *R, run_objects *O, branch_spec *b,
     }
     b->bploc = O->bploc;
     b->sys = whirl_bploc_system(O->bploc);
+  } else if (!strcmp(ty, "BP") && (b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP)) {
+    if (bp_curve(R, O, b, base, x, p, q, other)) return -1;
   } else if (!strcmp(ty, "TR") && b->kind == WHIRL_SOL_COLLOC && O->colloc) {
     if (torus_locus(R, O, b, base, x, p, q, other)) return -1;
   } else {
-    run_fail(R, WHIRL_RK_ISW, "ISW = 2 needs an LP (any problem), an HB or BP of "
+    run_fail(R, WHIRL_RK_ISW, "ISW = 2 needs an LP or BP (any problem), an HB of "
              "equilibria, a PD or TR of a map, or a PD or TR of periodic orbits by collocation; label %d is "
              "%s%s (loci of %s are not available)",
              so->label, so->ty, so->kind == WHIRL_SOL_EQ ? "" : " of periodic orbits",

@@ -88,7 +88,10 @@ static double amax(const double *a, size_t n) {
  * for a central difference of an analytic Jacobian. */
 static double hstep(const double *x, size_t n, const double *dir) {
   const double d = amax(dir, n);
-  return 6e-6 * (1.0 + amax(x, n)) / (d > 0 ? d : 1.0);
+  /* a direction of denormal size (a branch point's phi where F_q vanishes
+   * on an invariant subspace, tfc's) moves nothing: not 1/d, which
+   * overflows and makes the row NaN */
+  return 6e-6 * (1.0 + amax(x, n)) / (d > 1e-200 ? d : 1.0);
 }
 
 static int jac(whirl_fold *f, const double *x, const double *p, double *J) {
