@@ -404,7 +404,8 @@ static int fits(const auto_run *r, const whirl_solution *S) {
                                        : isw == -1 ? !strcmp(t, "BP") || !strcmp(t, "PD") : 1);
   if (S->kind == WHIRL_SOL_EQ) return !strcmp(t, "HB");
   if (isw == -1) return !strcmp(t, "BP") || !strcmp(t, "PD");
-  if (isw == 2) return !strcmp(t, "LP") || !strcmp(t, "PD") || !strcmp(t, "TR");
+  if (isw == 2) return !strcmp(t, "LP") || !strcmp(t, "PD") || !strcmp(t, "TR") || !strcmp(t, "BP");
+  if (isw == 3) return !strcmp(t, "BP");
   return 1;
 }
 
