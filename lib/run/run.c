@@ -124,12 +124,19 @@ static void base_of(const branch_spec *b, const double *Z, const double *p,
   else
     memcpy(pfull, p, b->sys->npar * sizeof *pfull);
   /* the model's derived parameters (AUTO's PVLS) at an equilibrium, or
-   * on a collocation solution (orbit, boundary-value problem) */
-  if (b->fold || b->hopf || b->bploc || b->trloc || !b->model) return;
+   * on a collocation solution (orbit, boundary-value problem) — on a
+   * locus too, from its base solution, the locus's first unknowns (AUTO
+   * calls PVLS at every point: tfc's PAR(7), PAR(8) = exp(min u1), exp(min
+   * u2) along its loci of branch points) */
+  if (!b->model) return;
   if (b->kind == WHIRL_SOL_EQ && b->model->pvls)
     b->model->pvls(Z, pfull, b->model->problem.data);
-  else if (b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP)
-    run_pvls_solution(b->model, b->sys, Z, b->nnodes, pfull);
+  else if (b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP) {
+    const whirl_system *base = b->sys;
+    if (b->fold || b->hopf || b->bploc || b->trloc)
+      base = b->kind == WHIRL_SOL_COLLOC ? whirl_colloc_system(b->colloc) : whirl_bvp_system(b->bvp);
+    run_pvls_solution(b->model, base, Z, b->nnodes, pfull);
+  }
 }
 
 /* The quantity a UZR/UZSTOP value refers to (whirl_cont_options.uz_fun). */
