@@ -8,7 +8,8 @@
 #    circles r = p1 and r = p2 of period 1 cross at p1 = p2 (p3 = 0), a
 #    branch point of orbits in p1; ISW = 2 (the unfolding beta) along p2:
 #    p1 = p2, MAX U(1) = p1 (the radius), PERIOD = 1; ISW = 3 with p3 the
-#    third parameter: the same, p3 = 0;
+#    third parameter: the same, p3 = 0; PVLS's PAR(4) = GETP('MAX', 1, U)
+#    the radius p1 along the loci;
 #  - tb: u1'' = -p1 p2 u1 - u1^3, u1(0) = u1(1) = 0: the trivial solution
 #    branches at p1 p2 = pi^2 (symmetric, u1 -> -u1); ISW = 2 along p2:
 #    p1 p2 = pi^2.
@@ -61,6 +62,12 @@ circ_f90() {
       U(1) = COS(2 * PI * T)
       U(2) = SIN(2 * PI * T)
       END SUBROUTINE STPNT
+      SUBROUTINE PVLS(NDIM,U,PAR)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), GETP
+      PAR(4) = GETP('MAX', 1, U)
+      END SUBROUTINE PVLS
 F
 }
 
@@ -86,6 +93,9 @@ for g in 2 3; do
   r=$(worst "$tmp/$d.out/$d.3.out/branches.tsv" "PAR(1)=PAR(2);max_U(1)=PAR(1);period=1;PAR(3)=0")
   echo "$r" | awk -v rc=$rc '{ exit !(rc == 0 && $1 >= 20 && $2 < 1e-8) }'
   check $? "circ, ISW = $g: the locus of the orbits' BP along p2 is p1 = p2, MAX U(1) = p1, PERIOD = 1, p3 = 0 (exit $rc; rows, largest deviation: $r)"
+  r=$(worst "$tmp/$d.out/$d.3.out/branches.tsv" "PAR(4)=PAR(1)")
+  echo "$r" | awk '{ exit !($1 >= 20 && $2 < 1e-6) }'
+  check $? "circ, ISW = $g: PVLS's PAR(4) = GETP('MAX', 1, U) is the radius p1 at every point of the locus, as AUTO calls PVLS there ($r)"
 done
 grep -q " 0 special points" "$tmp/circ2.out/circ2.3.out/run.log"
 check $? "circ: no special point labelled on the locus (a line in (p1, p2))"
