@@ -174,6 +174,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   }
   fb = psi(c, ev, k, b, ref);
   if (!(fa * fb < 0.0)) return 1;
+  const double fend = fmax(fabs(fa), fabs(fb)); /* the test's size at the step's ends */
 
   double sa = 0.0, sb = ds;
   const double stol = c->opt.loc_tol * fmax(1.0, fabs(ds));
@@ -291,6 +292,15 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   }
   free(Xa);
   if (!found) return 1;
+  /* A fold's test, the tangent's lead component, passes zero continuously
+   * on a smooth branch; one that is still as large as at the step's ends
+   * (a tenth of it) where the bracket has shrunk to nothing jumps: a kink
+   * of the branch,
+   * not a fold (lcbp's locus where the orbits shrink to u = 0 and its
+   * equations' |u| is not smooth: AUTO's Newton fails there, MX).  Not a
+   * special point, as AUTO labels none where its localisation finds no
+   * zero. */
+  if (ev == EV_LP && !(fbest <= 0.1 * fend)) return 1;
   if (p_only && cont_analyse(c, out, c->dir) != 0) return 1;
   if (tangent_only && cont_tests(c, out) != 0) return 1;
   if (ev == EV_BP) {

@@ -992,6 +992,60 @@ static void test_loop_weighted(void) {
   whirl_branch_free(b);
 }
 
+/* ---- a kink, not a fold: x2 = x1, p = |x1| - x1/4: through x1 = 0
+ * dp/dx1 jumps from -5/4 to +3/4, the tangent's p component jumps sign and
+ * is never zero (lcbp's BP locus where the orbit shrinks to u = 0 and the
+ * equations take |u|: AUTO's Newton fails there).  Not a fold: no LP.
+ * Smoothed, p = sqrt(x1^2 + eps^2) - x1/4 with eps = 0.01, the fold at
+ * dp/dx1 = 0, x1 = eps/sqrt(15), is one. */
+static int kink_F(const double *x, const double *p, double *f, void *d) {
+  const double eps = d ? *(const double *)d : 0.0;
+  f[0] = x[1] - x[0];
+  f[1] = p[0] - (eps > 0 ? sqrt(x[0] * x[0] + eps * eps) : fabs(x[0])) + 0.25 * x[0];
+  return 0;
+}
+
+/* its Jacobian, analytic: the kink sharp (central differences across it
+ * round the corner off within their step, and there the tangent's p
+ * component does pass zero) */
+static int kink_Fx(const double *x, const double *p, double *J, void *d) {
+  (void)p;
+  const double eps = d ? *(const double *)d : 0.0;
+  const double g = eps > 0 ? x[0] / sqrt(x[0] * x[0] + eps * eps) : x[0] < 0 ? -1.0 : 1.0;
+  J[0] = -1.0, J[1] = -g + 0.25, J[2] = 1.0, J[3] = 0.0;
+  return 0;
+}
+
+static void test_kink_no_fold(void) {
+  for (int smooth = 0; smooth <= 1; ++smooth) {
+    double eps = smooth ? 1e-2 : 0.0;
+    whirl_system s = {.name = "kink", .n = 2, .npar = 1, .F = kink_F, .Fx = kink_Fx, .data = &eps};
+    whirl_cont_options o;
+    whirl_cont_options_default(&o);
+    o.ds = o.ds_max = 0.07;
+    o.nmx = 200;
+    double x0[2] = {-1.0, -1.0}, p0;
+    p0 = (smooth ? sqrt(1.0 + eps * eps) : 1.0) - 0.25;
+    whirl_branch *b = NULL;
+    char err[256];
+    whirl_cont_stats st = {0};
+    int rc = whirl_trace_branch(&s, &o, x0, &p0, &b, &st, err, sizeof err);
+    const double xend = b && b->len ? b->pts[0].x[0] : -1.0; /* the p-decreasing end */
+    const size_t nlp = b ? count_type(b, WHIRL_PT_LP) : 99;
+    if (!smooth)
+      ok(rc == WHIRL_OK && xend > 0.3 && nlp == 0,
+         "a kink p = |x1| - x1/4: passed (x1 to %.3g), no LP (%zu)", xend, nlp);
+    else {
+      const whirl_branch_point *l = b ? nth_type(b, WHIRL_PT_LP, 0) : NULL;
+      /* dp/dx1 = x1 / sqrt(x1^2 + eps^2) - 1/4 = 0: x1 = eps / sqrt(15) */
+      ok(rc == WHIRL_OK && nlp == 1 && l && fabs(l->x[0] - eps / sqrt(15.0)) < 1e-8,
+         "smoothed, p = sqrt(x1^2 + 1e-4) - x1/4: one LP at x1 = eps/sqrt(15) = %.6g (%zu, at "
+         "%.10g)", eps / sqrt(15.0), nlp, l ? l->x[0] : NAN);
+    }
+    whirl_branch_free(b);
+  }
+}
+
 /* ---- a straight line x = (p, 100 p): the arclength per unit p is
  * sqrt(1 + 1e4 + 1) with unit weights and sqrt(2) when the second
  * component's weight is 0 (AUTO's THU), sqrt(1 + 1e4 + 4) with p_weight 2
@@ -1686,6 +1740,7 @@ int main(void) {
   test_hopf_nearest_switch();
   test_loop();
   test_loop_weighted();
+  test_kink_no_fold();
   test_uz();
   test_uz_fun();
   test_bratu();
