@@ -748,27 +748,22 @@ int whirl_bvp_set_mesh(whirl_bvp *b, const double *tau) {
 int whirl_bvp_mesh_from(whirl_bvp *b, size_t nold, size_t mold, const double *old_mesh,
                         const double *Xold) {
   if (!b) return WHIRL_EINVAL;
-  if (!old_mesh || !Xold || nold < 1 || mold < 1 || mold > COLLOC_BASIS_MAXCOL ||
-      old_mesh[0] != 0.0 || old_mesh[nold] != 1.0)
-    return WHIRL_FAIL(b, WHIRL_EINVAL, "mesh_from: need a solution on %zu intervals of "
-                      "degree %zu (1 to %d) over a mesh from 0 to 1", nold, mold,
-                      COLLOC_BASIS_MAXCOL);
-  for (size_t k = 1; k <= nold; ++k)
-    if (!(old_mesh[k] > old_mesh[k - 1]))
-      return WHIRL_FAIL(b, WHIRL_EINVAL, "mesh_from: the old mesh is not increasing at "
-                        "point %zu", k);
-  const size_t n = b->n, N = b->ntst;
-  double dm[COLLOC_BASIS_MAXCOL + 1];
-  colloc_basis_derivative_weights(mold, dm);
-  double *w = malloc((nold + nold + 1 + n * nold + N + 1) * sizeof *w);
-  if (!w) return WHIRL_FAIL(b, WHIRL_ENOMEM, "mesh_from: out of memory");
-  double *E = w, *Q = E + nold, *D = Q + nold + 1, *mesh = D + n * nold;
-  int rc = colloc_basis_mesh_from_jumps(n, mold, nold, 0, dm, Xold, old_mesh, N, mesh, E, Q, D);
-  rc = rc < 0 ? WHIRL_FAIL(b, WHIRL_EINVAL, "mesh_from: the solution is not finite or an "
-                           "interval degenerate (%d)", rc)
-              : whirl_bvp_set_mesh(b, mesh);
-  free(w);
-  return rc;
+  size_t bad = 0;
+  double *mesh = malloc((b->ntst + 1) * sizeof *mesh);
+  const int rc = mesh ? colloc_basis_adapt_mesh(b->n, mold, nold, 0, old_mesh, Xold, b->ntst,
+                                                mesh, &bad)
+                      : 4;
+  const int out = rc == 0 ? whirl_bvp_set_mesh(b, mesh)
+                  : rc == 1 ? WHIRL_FAIL(b, WHIRL_EINVAL, "mesh_from: need a solution on %zu "
+                                         "intervals of degree %zu (1 to %d) over a mesh from 0 "
+                                         "to 1", nold, mold, COLLOC_BASIS_MAXCOL)
+                  : rc == 2 ? WHIRL_FAIL(b, WHIRL_EINVAL, "mesh_from: the old mesh is not "
+                                         "increasing at point %zu", bad)
+                  : rc == 3 ? WHIRL_FAIL(b, WHIRL_EINVAL, "mesh_from: the solution is not "
+                                         "finite or an interval degenerate")
+                            : WHIRL_FAIL(b, WHIRL_ENOMEM, "mesh_from: out of memory");
+  free(mesh);
+  return out;
 }
 
 const char *whirl_bvp_errmsg(const whirl_bvp *b) {

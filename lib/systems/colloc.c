@@ -1081,32 +1081,23 @@ static void interp_nodes(const whirl_colloc *c, size_t nold, size_t mold,
 int whirl_colloc_adapt_from(whirl_colloc *c, size_t nold, size_t mold,
                             const double *old_mesh, const double *Xold, double *X) {
   if (!c) return WHIRL_EINVAL;
-  if (!old_mesh || !Xold || !X || nold < 1 || mold < 1 || mold > COLLOC_BASIS_MAXCOL)
-    return WHIRL_FAIL(c, WHIRL_EINVAL, "adapt_from: need a solution on %zu intervals of "
-                      "degree %zu (1 to %d)", nold, mold, COLLOC_BASIS_MAXCOL);
-  if (old_mesh[0] != 0.0 || old_mesh[nold] != 1.0)
-    return WHIRL_FAIL(c, WHIRL_EINVAL, "adapt_from: the old mesh must run from 0 to 1");
-  for (size_t k = 1; k <= nold; ++k)
-    if (!(old_mesh[k] > old_mesh[k - 1]))
-      return WHIRL_FAIL(c, WHIRL_EINVAL, "adapt_from: the old mesh is not increasing at "
-                        "point %zu", k);
-  const size_t n = c->n, N = c->ntst;
-  double dm[COLLOC_BASIS_MAXCOL + 1];
-  colloc_basis_derivative_weights(mold, dm);
-  double *w = malloc((nold + nold + 1 + n * nold + N + 1) * sizeof *w);
-  if (!w) return WHIRL_FAIL(c, WHIRL_ENOMEM, "adapt_from: out of memory");
-  double *E = w, *Q = E + nold, *D = Q + nold + 1, *mesh = D + n * nold;
-  int rc = colloc_basis_mesh_from_jumps(n, mold, nold, 1, dm, Xold, old_mesh, N, mesh, E,
-                                        Q, D);
-  if (rc < 0) {
-    free(w);
-    return WHIRL_FAIL(c, WHIRL_EINVAL, "adapt_from: the solution is not finite or an "
-                      "interval degenerate (%d)", rc);
-  }
-  rc = whirl_colloc_set_mesh(c, mesh);
-  free(w);
-  if (rc == WHIRL_OK) interp_nodes(c, nold, mold, old_mesh, Xold, X);
-  return rc;
+  size_t bad = 0;
+  double *mesh = malloc((c->ntst + 1) * sizeof *mesh);
+  const int rc = mesh ? colloc_basis_adapt_mesh(c->n, mold, nold, 1, old_mesh, Xold, c->ntst,
+                                                mesh, &bad)
+                      : 4;
+  int out = rc == 0 ? whirl_colloc_set_mesh(c, mesh)
+            : rc == 1 ? WHIRL_FAIL(c, WHIRL_EINVAL, "adapt_from: need a solution on %zu "
+                                   "intervals of degree %zu (1 to %d) over a mesh from 0 to 1",
+                                   nold, mold, COLLOC_BASIS_MAXCOL)
+            : rc == 2 ? WHIRL_FAIL(c, WHIRL_EINVAL, "adapt_from: the old mesh is not increasing "
+                                   "at point %zu", bad)
+            : rc == 3 ? WHIRL_FAIL(c, WHIRL_EINVAL, "adapt_from: the solution is not finite or "
+                                   "an interval degenerate")
+                      : WHIRL_FAIL(c, WHIRL_ENOMEM, "adapt_from: out of memory");
+  free(mesh);
+  if (out == WHIRL_OK) interp_nodes(c, nold, mold, old_mesh, Xold, X);
+  return out;
 }
 
 int whirl_colloc_interp_from(whirl_colloc *c, size_t nold, size_t mold,

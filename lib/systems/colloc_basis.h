@@ -89,6 +89,14 @@ int colloc_basis_mesh_from_jumps(size_t n, size_t m, size_t N, int periodic,
                                  size_t Nnew, double *mesh, double *E, double *Q,
                                  double *D);
 
+/* AUTO's ADAPT2 mesh for a restart (colloc_basis_mesh_from_jumps) with the
+ * checks and scratch of its own: mesh[Nnew + 1] from Xold, n components
+ * on nold intervals of degree mold over old.  0; 1 the sizes or the ends
+ * of old wrong; 2 old not increasing at point *bad; 3 Xold not finite or
+ * an interval degenerate; 4 out of memory. */
+int colloc_basis_adapt_mesh(size_t n, size_t mold, size_t nold, int periodic, const double *old,
+                            const double *Xold, size_t Nnew, double *mesh, size_t *bad);
+
 /* The node values of v (a solution or a direction: the map is linear)
  * from the piecewise polynomial on old to the nodes of mesh, in place;
  * scratch copy[(N m + 1) n].  Entries past the nodes are not touched. */
