@@ -791,6 +791,48 @@ static void test_fhn_gh(void) {
   whirl_equilibrium_free(eq);
 }
 
+/* A base with only a sparse Jacobian (Fx_sparse, no Fx) and few unknowns
+ * takes whirl_fold's dense path, through whirl_system_jacobian, whose
+ * scratch must hold the nnz sparse values: the fold's held 2n + 2 (8 for
+ * n = 3, nnz 9: a heap overflow, ASan in CI's sanitize stage).  The cusp
+ * x^3 - a x - b padded with two linear unknowns, its fold at a = 3 x^2. */
+static int cusp3_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[0] * x[0] * x[0] - p[0] * x[0] - p[1] + 0.1 * x[1] * x[2];
+  f[1] = x[1] - x[0] - x[2];
+  f[2] = x[2] + x[1] - 2.0 * x[0];
+  return 0;
+}
+static int cusp3_Fxs(const double *x, const double *p, double *J, void *d) {
+  (void)d;
+  /* dense 3 x 3 pattern, column-major */
+  J[0] = 3.0 * x[0] * x[0] - p[0], J[1] = -1.0, J[2] = -2.0;
+  J[3] = 0.1 * x[2], J[4] = 1.0, J[5] = 1.0;
+  J[6] = 0.1 * x[1], J[7] = -1.0, J[8] = 1.0;
+  return 0;
+}
+static void test_sparse_only_base(void) {
+  static const int Jp[4] = {0, 3, 6, 9}, Ji[9] = {0, 1, 2, 0, 1, 2, 0, 1, 2};
+  whirl_system s = {.name = "cusp3", .n = 3, .npar = 2, .F = cusp3_F, .nnz = 9, .Jp = Jp,
+                    .Ji = Ji, .Fx_sparse = cusp3_Fxs};
+  char err[256];
+  whirl_fold_options fo;
+  whirl_fold_options_default(&fo, 1);
+  whirl_fold *f = whirl_fold_alloc(&s, &fo, err, sizeof err);
+  /* x2 = 1.5 x0, x1 = 0.5 x0 solve the linear rows; at x0 = 1 the cubic's
+   * d/dx0 with the coupling: 3 - a + 0.1 (1.5 * 0.5 + 0.5 * 1.5) = 0 */
+  const double x0[3] = {1.0, 1.5, 0.5};
+  double p[2] = {3.15, 0.0}, Z[4], F[4];
+  p[1] = 1.0 - p[0] + 0.1 * 1.5 * 0.5;
+  int rc = f ? whirl_fold_init(f, x0, p, Z) : -1;
+  const whirl_system *fs = f ? whirl_fold_system(f) : NULL;
+  if (rc == WHIRL_OK) rc = fs->F(Z, p, F, fs->data);
+  ok(rc == WHIRL_OK && isfinite(F[3]),
+     "fold system of a base with only a sparse Jacobian (n 3, nnz 9) starts and evaluates: %s",
+     f ? whirl_fold_errmsg(f) : err);
+  whirl_fold_free(f);
+}
+
 int main(void) {
   test_region_limits();
   test_cusp();
@@ -804,5 +846,6 @@ int main(void) {
   test_merge_points();
   test_hbm_fold();
   test_errors();
+  test_sparse_only_base();
   return done_testing();
 }
