@@ -748,22 +748,13 @@ int whirl_bvp_set_mesh(whirl_bvp *b, const double *tau) {
 int whirl_bvp_mesh_from(whirl_bvp *b, size_t nold, size_t mold, const double *old_mesh,
                         const double *Xold) {
   if (!b) return WHIRL_EINVAL;
-  size_t bad = 0;
+  char why[160];
   double *mesh = malloc((b->ntst + 1) * sizeof *mesh);
-  const int rc = mesh ? colloc_basis_adapt_mesh(b->n, mold, nold, 0, old_mesh, Xold, b->ntst,
-                                                mesh, &bad)
-                      : 4;
-  const int out = rc == 0 ? whirl_bvp_set_mesh(b, mesh)
-                  : rc == 1 ? WHIRL_FAIL(b, WHIRL_EINVAL, "mesh_from: need a solution on %zu "
-                                         "intervals of degree %zu (1 to %d) over a mesh from 0 "
-                                         "to 1", nold, mold, COLLOC_BASIS_MAXCOL)
-                  : rc == 2 ? WHIRL_FAIL(b, WHIRL_EINVAL, "mesh_from: the old mesh is not "
-                                         "increasing at point %zu", bad)
-                  : rc == 3 ? WHIRL_FAIL(b, WHIRL_EINVAL, "mesh_from: the solution is not "
-                                         "finite or an interval degenerate")
-                            : WHIRL_FAIL(b, WHIRL_ENOMEM, "mesh_from: out of memory");
+  int rc = colloc_basis_adapt_mesh(b->n, mold, nold, 0, old_mesh, Xold, b->ntst, mesh, why,
+                                   sizeof why);
+  rc = rc ? WHIRL_FAIL(b, rc, "mesh_from: %s", why) : whirl_bvp_set_mesh(b, mesh);
   free(mesh);
-  return out;
+  return rc;
 }
 
 const char *whirl_bvp_errmsg(const whirl_bvp *b) {

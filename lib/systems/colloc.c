@@ -1081,23 +1081,14 @@ static void interp_nodes(const whirl_colloc *c, size_t nold, size_t mold,
 int whirl_colloc_adapt_from(whirl_colloc *c, size_t nold, size_t mold,
                             const double *old_mesh, const double *Xold, double *X) {
   if (!c) return WHIRL_EINVAL;
-  size_t bad = 0;
+  char why[160];
   double *mesh = malloc((c->ntst + 1) * sizeof *mesh);
-  const int rc = mesh ? colloc_basis_adapt_mesh(c->n, mold, nold, 1, old_mesh, Xold, c->ntst,
-                                                mesh, &bad)
-                      : 4;
-  int out = rc == 0 ? whirl_colloc_set_mesh(c, mesh)
-            : rc == 1 ? WHIRL_FAIL(c, WHIRL_EINVAL, "adapt_from: need a solution on %zu "
-                                   "intervals of degree %zu (1 to %d) over a mesh from 0 to 1",
-                                   nold, mold, COLLOC_BASIS_MAXCOL)
-            : rc == 2 ? WHIRL_FAIL(c, WHIRL_EINVAL, "adapt_from: the old mesh is not increasing "
-                                   "at point %zu", bad)
-            : rc == 3 ? WHIRL_FAIL(c, WHIRL_EINVAL, "adapt_from: the solution is not finite or "
-                                   "an interval degenerate")
-                      : WHIRL_FAIL(c, WHIRL_ENOMEM, "adapt_from: out of memory");
+  int rc = colloc_basis_adapt_mesh(c->n, mold, nold, 1, old_mesh, Xold, c->ntst, mesh, why,
+                                   sizeof why);
+  rc = rc ? WHIRL_FAIL(c, rc, "adapt_from: %s", why) : whirl_colloc_set_mesh(c, mesh);
   free(mesh);
-  if (out == WHIRL_OK) interp_nodes(c, nold, mold, old_mesh, Xold, X);
-  return out;
+  if (rc == WHIRL_OK) interp_nodes(c, nold, mold, old_mesh, Xold, X);
+  return rc;
 }
 
 int whirl_colloc_interp_from(whirl_colloc *c, size_t nold, size_t mold,

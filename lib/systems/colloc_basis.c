@@ -4,6 +4,8 @@
  * the evaluation of a piecewise polynomial on a mesh (colloc_basis.h).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
+#include <whirl/status.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <stddef.h>
 #include <string.h>
@@ -237,24 +239,33 @@ int colloc_basis_mesh_from_jumps(size_t n, size_t m, size_t N, int periodic,
 }
 
 int colloc_basis_adapt_mesh(size_t n, size_t mold, size_t nold, int periodic, const double *old,
-                            const double *Xold, size_t Nnew, double *mesh, size_t *bad) {
+                            const double *Xold, size_t Nnew, double *mesh, char *why,
+                            size_t len) {
   if (!old || !Xold || nold < 1 || mold < 1 || mold > COLLOC_BASIS_MAXCOL || old[0] != 0.0 ||
-      old[nold] != 1.0)
-    return 1;
+      old[nold] != 1.0) {
+    snprintf(why, len, "need a solution on %zu intervals of degree %zu (1 to %d) over a mesh "
+             "from 0 to 1", nold, mold, COLLOC_BASIS_MAXCOL);
+    return WHIRL_EINVAL;
+  }
   for (size_t k = 1; k <= nold; ++k)
     if (!(old[k] > old[k - 1])) {
-      *bad = k;
-      return 2;
+      snprintf(why, len, "the old mesh is not increasing at point %zu", k);
+      return WHIRL_EINVAL;
     }
   double dm[COLLOC_BASIS_MAXCOL + 1];
   colloc_basis_derivative_weights(mold, dm);
-  double *w = malloc((nold + nold + 1 + n * nold) * sizeof *w);
-  if (!w) return 4;
+  double *w = mesh ? malloc((nold + nold + 1 + n * nold) * sizeof *w) : NULL;
+  if (!w) {
+    snprintf(why, len, "out of memory");
+    return WHIRL_ENOMEM;
+  }
   double *E = w, *Q = E + nold, *D = Q + nold + 1;
   const int rc = colloc_basis_mesh_from_jumps(n, mold, nold, periodic, dm, Xold, old, Nnew, mesh,
                                               E, Q, D);
   free(w);
-  return rc < 0 ? 3 : 0;
+  if (rc >= 0) return 0;
+  snprintf(why, len, "the solution is not finite or an interval degenerate");
+  return WHIRL_EINVAL;
 }
 
 int colloc_basis_new_mesh_jumps(size_t n, size_t m, size_t N, int periodic,

@@ -91,11 +91,12 @@ int colloc_basis_mesh_from_jumps(size_t n, size_t m, size_t N, int periodic,
 
 /* AUTO's ADAPT2 mesh for a restart (colloc_basis_mesh_from_jumps) with the
  * checks and scratch of its own: mesh[Nnew + 1] from Xold, n components
- * on nold intervals of degree mold over old.  0; 1 the sizes or the ends
- * of old wrong; 2 old not increasing at point *bad; 3 Xold not finite or
- * an interval degenerate; 4 out of memory. */
+ * on nold intervals of degree mold over old.  0, or WHIRL_EINVAL (bad
+ * sizes, old not increasing from 0 to 1, Xold not finite) or WHIRL_ENOMEM
+ * with what went wrong in why[len]. */
 int colloc_basis_adapt_mesh(size_t n, size_t mold, size_t nold, int periodic, const double *old,
-                            const double *Xold, size_t Nnew, double *mesh, size_t *bad);
+                            const double *Xold, size_t Nnew, double *mesh, char *why,
+                            size_t len);
 
 /* The node values of v (a solution or a direction: the map is linear)
  * from the piecewise polynomial on old to the nodes of mesh, in place;
