@@ -117,9 +117,16 @@ cat > "$tmp/lg/np.auto" <<'A'
 r = run(e='lg', c='lg')
 r2 = run(r('UZ1'), ICP=['mu', 2], NMX=5, UZSTOP={})
 print('np %s %.10g' % (len(r2()), r2()[-1]['PAR(2)']))
+r3 = run(r2()[-1], ICP=['mu'], NMX=3, UZSTOP={})
+print('np3 %d' % len(r3()))
 A
 out=$(cd "$tmp" && "$WHIRL" auto lg --script=lg/np.auto --quiet --out=np.out 2>&1)
-printf '%s\n' "$out" | grep -q '^np [1-9][0-9]* 0$'; check $? "a restart with a larger NPAR: the new parameter the model's ($(printf '%s' "$out" | tail -1))"
+printf '%s\n' "$out" | grep -q '^np [1-9][0-9]* 0$'; check $? "a restart with a larger NPAR: the new parameter the model's ($(printf '%s' "$out" | grep '^np ' | tail -1))"
+# and back: run 3's constants have NPAR 1, its label (run 2's) stores 2
+# parameters: NPAR is the label's (AUTO's MAX(NPARR, NPAR); tfc's run 5
+# from run 3's label with PAR(7), PAR(8): "the solutions have 8
+# parameters" before 2026-12-06)
+printf '%s\n' "$out" | grep -q '^np3 [1-9]'; check $? "a restart from a label with more parameters than NPAR ($(printf '%s' "$out" | grep -E '^np3|solutions have' | tail -1))"
 # AUTO's MXBF is 10 where a constants file has none: switching at the BP
 # of the fixed points (mu = 1), both ways
 sed '/MXBF/s/MXBF= *-1, //' "$tmp/lg/c.lg" > "$tmp/lg/c.lg2"
