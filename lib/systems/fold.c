@@ -266,7 +266,7 @@ static int g_param(whirl_fold *f, const double *Z, size_t q, double *gq) {
  * gq[nfree], g_z = -w^T (F_x)_z v from two base Jacobians per direction
  * (Govaerts 2000, eq. 4.13), v and w padded with zeros beyond A's block;
  * null_solve done at (Z, f->pf). */
-static int g_derivs(whirl_fold *f, const double *Z, double *gx, double *gq) {
+static int g_derivs(whirl_fold *f, const double *Z, double *gx, double *gq, int with_free) {
   const size_t n = f->n, na = f->na, nf = f->o.nfree;
   const double *v = f->v;
   const double h = hstep(Z, na, v);
@@ -277,7 +277,7 @@ static int g_derivs(whirl_fold *f, const double *Z, double *gx, double *gq) {
   if ((rc = jac(f, f->xs, f->pf, f->Am)) != 0) return rc;
   wdiff_cols(f, gx);
   for (size_t j = 0; j < n; ++j) gx[j] /= -2.0 * h;
-  for (size_t k = 0; k < nf; ++k) {
+  for (size_t k = 0; with_free && k < nf; ++k) {
     gq[k] = 0.0; /* beta: F_x does not depend on it */
     if (!(f->o.unfold && k == 1) && (rc = g_param(f, Z, f->o.free[k], &gq[k])) != 0) return rc;
   }
@@ -290,8 +290,10 @@ static int g_derivs(whirl_fold *f, const double *Z, double *gx, double *gq) {
  *     h_z = w^T F_qz - w^T (F_x)_z phi,
  * h_x from base Jacobians at q +- hq (w^T F_xq, by symmetry of the second
  * derivatives) and at x +- h phi; h_q and a freed r from F_q and F_x at
- * q +- hq, r +- hr; h_beta = 0.  hx[n], hfree[nfree]. */
-static int bp_row(whirl_fold *f, const double *Z, double *hx, double *hfree) {
+ * q +- hq, r +- hr; h_beta = 0.  hx[n], hfree[nfree]; from the same
+ * Jacobians g's derivatives in the freed parameters, gfree[nfree] (as
+ * g_param's), which g_derivs then leaves out. */
+static int bp_row(whirl_fold *f, const double *Z, double *hx, double *hfree, double *gfree) {
   const size_t n = f->n, np = f->base.npar;
   const double *w = f->w;
   double *phi = f->phi, *fqm = f->tmp;
@@ -301,7 +303,7 @@ static int bp_row(whirl_fold *f, const double *Z, double *hx, double *hfree) {
   if ((rc = whirl_linsol_solve(f->ls, phi, 1, 0)) != WHIRL_OK)
     return WHIRL_FAIL(f, rc, "branch-point curve: the solve for F_q failed");
   for (size_t k = 0; k < f->o.nfree; ++k) {
-    hfree[k] = 0.0;
+    hfree[k] = gfree[k] = 0.0;
     if (f->o.unfold && k == 1) continue;
     const size_t r = f->o.free[k];
     const double hr = 6e-6 * (1.0 + fabs(f->pf[r]));
@@ -313,6 +315,7 @@ static int bp_row(whirl_fold *f, const double *Z, double *hx, double *hfree) {
     double wfqr = 0.0;
     for (size_t i = 0; i < n; ++i) wfqr += w[i] * (f->fqp[i] - fqm[i]);
     hfree[k] = (wfqr - wdiff_dot(f, phi)) / (2.0 * hr);
+    gfree[k] = -wdiffv(f) / (2.0 * hr);
     if (k == 0) { /* w^T F_xq, the first part of h_x */
       wdiff_cols(f, hx);
       for (size_t j = 0; j < n; ++j) hx[j] /= 2.0 * hr;
@@ -356,8 +359,8 @@ static int fold_Fx_sparse(const double *Z, const double *p, double *Jx, void *da
   int rc;
   whirl_fold_params(f, Z, p, f->pf);
   if ((rc = null_solve(f, Z, f->pf)) != 0) return rc;
-  if ((rc = g_derivs(f, Z, f->gx, gq)) != 0) return rc;
-  if (bp && (rc = bp_row(f, Z, f->hx, hq)) != 0) return rc;
+  if ((rc = g_derivs(f, Z, f->gx, gq, !bp)) != 0) return rc;
+  if (bp && (rc = bp_row(f, Z, f->hx, hq, gq)) != 0) return rc;
   size_t q = 0;
   for (size_t j = 0; j < n; ++j) {
     for (int k = f->sp.Jp[j]; k < f->sp.Jp[j + 1]; ++k) Jx[q++] = f->A[k];
@@ -396,7 +399,7 @@ static int fold_Fx(const double *Z, const double *p, double *J, void *data) {
     memcpy(J + N * (n + k), f->fq, n * sizeof *J);
   }
   double gq[2];
-  if ((rc = g_derivs(f, Z, f->gx, gq)) != 0) return rc;
+  if ((rc = g_derivs(f, Z, f->gx, gq, 1)) != 0) return rc;
   for (size_t j = 0; j < n; ++j) J[n + N * j] = f->gx[j];
   for (size_t k = 0; k < nf; ++k) J[n + N * (n + k)] = gq[k];
   if (f->o.cond) {
