@@ -1,7 +1,8 @@
 /* drivers/auto_model.h — an AUTO-07p equations file (NAME.f90, NAME.f) as
- * a whirl plug-in: a generated adapter (auto_model.c) that calls the user
- * routines FUNC and STPNT by AUTO's calling convention, compiled with them
- * (gfortran, or $FC) into NAME.so.
+ * a whirl plug-in NAME.so: the file, a generated C file of the model's data
+ * (auto_model.c in the output) and whirl's adapter of AUTO's routines
+ * (drivers/auto_adapter.c, built once into libwhirl-auto-adapter.a),
+ * compiled and linked by gfortran (or $FC).
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_AUTO_MODEL_H
 #define WHIRL_AUTO_MODEL_H
@@ -23,15 +24,17 @@ typedef struct auto_model_info {
  * into path[len]: 0, or 2 with a message printed (none, or C). */
 int auto_model_source(const char *dir, const char *name, char *path, size_t len);
 
-/* Write STAGE/auto_model.c and compile it with SOURCE into STAGE/NAME.so
+/* Write STAGE/auto_model.c (the model's data and whirl_model_def) and
+ * compile it with SOURCE and the adapter archive into STAGE/NAME.so
  * (m->file: STAGE/FILE.c into STAGE/FILE.so).
  * 0, or 2 with a message and the compiler's own lines printed (the
- * equations do not compile, FUNC or STPNT missing), 1 for I/O errors. */
+ * equations do not compile, FUNC or STPNT missing), 1 for I/O errors or
+ * no adapter archive. */
 int auto_model_build(const char *stage, const char *source, const auto_model_info *m);
 
 /* Is OUT/NAME.so, built by an earlier invocation, still the plug-in of
- * SOURCE and m: OUT/auto_model.c is the adapter m gives, and NAME.so is
- * newer than both SOURCE and that adapter?  1 or 0.  A script of runs
+ * SOURCE and m: OUT/auto_model.c is the file m gives, and NAME.so is
+ * newer than SOURCE, that file and the adapter archive?  1 or 0.  A script of runs
  * (whirl auto --script) calls whirl auto once a run: one compilation. */
 int auto_model_current(const char *out, const char *source, const auto_model_info *m);
 

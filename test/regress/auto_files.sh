@@ -156,6 +156,22 @@ cp "$tmp/fold/fold.f90" "$tmp/b5/b5.f90"
 cp "$tmp/fold/c.fold.1" "$tmp/b5/c.b5.1"
 printf 'NDIM= -1, IPS = 1\nICP = [1]\n' > "$tmp/b5/c.b5.2"
 bad b5 'b5/c.b5.2:1: NDIM = -1: must be >= 1' "a second constants file with NDIM = -1"
+# the plug-in links whirl's adapter of AUTO's routines (drivers/
+# auto_adapter.c, libwhirl-auto-adapter.a): without it, one message naming
+# it, exit 1, nothing written; with it, the plug-in's own C file holds the
+# model's data alone (the routines' adapter is not compiled a demo)
+mkdir "$tmp/b6"
+cp "$tmp/fold/fold.f90" "$tmp/b6/b6.f90"
+cp "$tmp/fold/c.fold.1" "$tmp/b6/c.b6"
+(cd "$tmp" && WHIRL_AUTO_ADAPTER="$tmp/none/libwhirl-auto-adapter.a" "$WHIRL" auto b6 --quiet \
+   > /dev/null 2> b6.err); st=$?
+[ $st = 1 ] && [ "$(wc -l < "$tmp/b6.err")" = 1 ] &&
+  grep -q "none/libwhirl-auto-adapter.a: No such file or directory" "$tmp/b6.err" &&
+  [ ! -e "$tmp/b6.out" ] && ! ls -d "$tmp/b6".out.tmp.* > /dev/null 2>&1
+check $? "no adapter archive: exit $st, '$(head -1 "$tmp/b6.err")', nothing written"
+(cd "$tmp" && "$WHIRL" auto b6 --quiet > /dev/null 2>&1) &&
+  ! grep -q 'func_\|getp_' "$tmp/b6.out/auto_model.c" && grep -q 'wa_ndim = 1,' "$tmp/b6.out/auto_model.c"
+check $? "the plug-in's C file is the model's data (NDIM 1), the adapter linked from the archive"
 
 # AUTO's parseB, parseS and parseD on b., s., d. of the stems $3... in
 # directory $1 (output in $2): the same labels in b. and s., each non-empty
