@@ -21,11 +21,13 @@
 #include <whirl/colloc.h>
 
 #include "bvp_impl.h"
+#include "util/threads_impl.h"
 
 void whirl_bvp_options_default(whirl_bvp_options *o) {
   memset(o, 0, sizeof *o);
   o->ntst = 20;
   o->ncol = 4;
+  o->threads = 1;
 }
 
 /* ------------------------------------------------------------ helpers */
@@ -38,19 +40,20 @@ void whirl_bvp_params(const whirl_bvp *b, const double *X, const double *p,
   for (size_t j = 0; j < b->nfree; ++j) pfull[b->free[j]] = xf[j];
 }
 
-/* u and du/dσ at Gauss point g of interval i into b->u, b->du, node by
+/* u and du/dσ at Gauss point g of interval i into s->u, s->du, node by
  * node: u = sum_k l_k(σ_g) u_{i,k}. */
-static void gauss_state(whirl_bvp *b, const double *X, size_t i, size_t g) {
+static void gauss_state(const whirl_bvp *b, bvp_scratch *s, const double *X, size_t i,
+                        size_t g) {
   const size_t n = b->n, m = b->ncol;
   const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
-  memset(b->u, 0, n * sizeof *b->u);
-  memset(b->du, 0, n * sizeof *b->du);
+  memset(s->u, 0, n * sizeof *s->u);
+  memset(s->du, 0, n * sizeof *s->du);
   for (size_t k = 0; k <= m; ++k) {
     const double *node = X + n * (i * m + k);
     const double a = lv[k], d = dv[k];
     for (size_t r = 0; r < n; ++r) {
-      b->u[r] += a * node[r];
-      b->du[r] += d * node[r];
+      s->u[r] += a * node[r];
+      s->du[r] += d * node[r];
     }
   }
 }
@@ -58,18 +61,18 @@ static void gauss_state(whirl_bvp *b, const double *X, size_t i, size_t g) {
 /* For the integral conditions at Gauss point g of interval i (after
  * gauss_state): u' = (du/dσ)/h into ud, and the reference and its
  * derivative into uo, upo. */
-static void gauss_reference(whirl_bvp *b, size_t i, size_t g) {
+static void gauss_reference(const whirl_bvp *b, bvp_scratch *s, size_t i, size_t g) {
   const size_t n = b->n, m = b->ncol;
   const double h = b->mesh[i + 1] - b->mesh[i];
-  for (size_t r = 0; r < n; ++r) b->ud[r] = b->du[r] / h;
+  for (size_t r = 0; r < n; ++r) s->ud[r] = s->du[r] / h;
   const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
-  memset(b->uo, 0, n * sizeof *b->uo);
-  memset(b->upo, 0, n * sizeof *b->upo);
+  memset(s->uo, 0, n * sizeof *s->uo);
+  memset(s->upo, 0, n * sizeof *s->upo);
   for (size_t k = 0; k <= m; ++k) {
     const double *node = b->ref + n * (i * m + k);
     for (size_t r = 0; r < n; ++r) {
-      b->uo[r] += lv[k] * node[r];
-      b->upo[r] += dv[k] / h * node[r];
+      s->uo[r] += lv[k] * node[r];
+      s->upo[r] += dv[k] / h * node[r];
     }
   }
 }
@@ -77,34 +80,34 @@ static void gauss_reference(whirl_bvp *b, size_t i, size_t g) {
 /* Central-difference step for a value v (as whirl_fd_jac_x). */
 static double fd_step(double v) { return cbrt(DBL_EPSILON) * fmax(1.0, fabs(v)); }
 
-/* The model's f_x at (t, u) into b->J: analytic or differences. */
-static int model_fx(whirl_bvp *b, double t, const double *u, const double *p) {
+/* The model's f_x at (t, s->u) into s->J: analytic or differences. */
+static int model_fx(const whirl_bvp *b, bvp_scratch *s, double t, const double *p) {
   const whirl_problem *pr = b->prob;
-  if (pr->jac_x) return pr->jac_x(t, u, p, b->J, pr->data);
-  return whirl_fd_jac_x(pr, t, u, p, b->J, b->work);
+  if (pr->jac_x) return pr->jac_x(t, s->u, p, s->J, pr->data);
+  return whirl_fd_jac_x(pr, t, s->u, p, s->J, s->work);
 }
 
-/* df/dp_k at (t, u, p) into out[n]: the model's jac_p, or a central
- * difference of f in p_k (b->pq, b->f, b->fm are used). */
-static int model_fp(whirl_bvp *b, double t, const double *u, const double *p,
+/* df/dp_k at (t, s->u, p) into out[n]: the model's jac_p, or a central
+ * difference of f in p_k (s->pq, s->f, s->fm are used). */
+static int model_fp(const whirl_bvp *b, bvp_scratch *s, double t, const double *p,
                     size_t k, double *out) {
   const whirl_problem *pr = b->prob;
   const size_t n = b->n;
   int rc;
   if (pr->jac_p) {
-    if ((rc = pr->jac_p(t, u, p, b->Jpar, pr->data)) != 0) return rc;
-    memcpy(out, b->Jpar + n * k, n * sizeof *out);
+    if ((rc = pr->jac_p(t, s->u, p, s->Jpar, pr->data)) != 0) return rc;
+    memcpy(out, s->Jpar + n * k, n * sizeof *out);
     return 0;
   }
-  memcpy(b->pq, p, b->npar * sizeof *b->pq);
+  memcpy(s->pq, p, b->npar * sizeof *s->pq);
   const double hp = fd_step(p[k]);
-  b->pq[k] = p[k] + hp;
-  const double up = b->pq[k];
-  if ((rc = pr->rhs(t, u, b->pq, b->f, pr->data)) != 0) return rc;
-  b->pq[k] = p[k] - hp;
-  const double dn = b->pq[k];
-  if ((rc = pr->rhs(t, u, b->pq, b->fm, pr->data)) != 0) return rc;
-  for (size_t r = 0; r < n; ++r) out[r] = (b->f[r] - b->fm[r]) / (up - dn);
+  s->pq[k] = p[k] + hp;
+  const double up = s->pq[k];
+  if ((rc = pr->rhs(t, s->u, s->pq, s->f, pr->data)) != 0) return rc;
+  s->pq[k] = p[k] - hp;
+  const double dn = s->pq[k];
+  if ((rc = pr->rhs(t, s->u, s->pq, s->fm, pr->data)) != 0) return rc;
+  for (size_t r = 0; r < n; ++r) out[r] = (s->f[r] - s->fm[r]) / (up - dn);
   return 0;
 }
 
@@ -119,6 +122,7 @@ static int user_status(whirl_bvp *b, int rc, const char *what) {
 static int cond_rows(whirl_bvp *b, const double *X, const double *pt,
                      double *c) {
   const size_t n = b->n, m = b->ncol, N = b->ntst;
+  bvp_scratch *sc = &b->scr[0];
   int rc;
   if (b->nbc) {
     rc = b->bc(X, X + n * (b->nnodes - 1), pt, c, b->data);
@@ -130,42 +134,58 @@ static int cond_rows(whirl_bvp *b, const double *X, const double *pt,
   for (size_t i = 0; i < N; ++i) {
     const double h = b->mesh[i + 1] - b->mesh[i];
     for (size_t g = 0; g < m; ++g) {
-      gauss_state(b, X, i, g);
-      gauss_reference(b, i, g);
-      if ((rc = b->ic(b->u, b->uo, b->ud, b->upo, pt, b->gi, b->data)) != 0)
+      gauss_state(b, sc, X, i, g);
+      gauss_reference(b, sc, i, g);
+      if ((rc = b->ic(sc->u, sc->uo, sc->ud, sc->upo, pt, sc->gi, b->data)) != 0)
         return user_status(b, rc, "integral conditions");
-      for (size_t s = 0; s < b->nint; ++s) I[s] += h * b->gw[g] * b->gi[s];
+      for (size_t s = 0; s < b->nint; ++s) I[s] += h * b->gw[g] * sc->gi[s];
     }
   }
   return 0;
 }
 
-/* ∂g/∂u into gu[s + nint q] and ∂g/∂u' into gd, by central differences at
- * the current Gauss point (after gauss_state and gauss_reference). */
-static int ic_partials(whirl_bvp *b) {
+/* ∂g/∂u into s->gu[k + nint q] and ∂g/∂u' into s->gd, by central
+ * differences at the current Gauss point (after gauss_state and
+ * gauss_reference), parameters pt. */
+static int ic_partials(const whirl_bvp *b, bvp_scratch *s, const double *pt) {
   const size_t n = b->n, nint = b->nint;
-  double *gpart[2] = {b->gu, b->gd};
+  double *gpart[2] = {s->gu, s->gd};
   for (int w = 0; w < 2; ++w) {
-    const double *v0 = w ? b->ud : b->u;
-    memcpy(b->uq, b->u, n * sizeof *b->uq);
-    memcpy(b->udq, b->ud, n * sizeof *b->udq);
-    double *vq = w ? b->udq : b->uq;
+    const double *v0 = w ? s->ud : s->u;
+    memcpy(s->uq, s->u, n * sizeof *s->uq);
+    memcpy(s->udq, s->ud, n * sizeof *s->udq);
+    double *vq = w ? s->udq : s->uq;
     for (size_t q = 0; q < n; ++q) {
       const double hq = fd_step(v0[q]);
       int rc;
       vq[q] = v0[q] + hq;
       const double up = vq[q];
-      if ((rc = b->ic(b->uq, b->uo, b->udq, b->upo, b->pt, b->gi, b->data)) != 0)
-        return user_status(b, rc, "integral conditions");
+      if ((rc = b->ic(s->uq, s->uo, s->udq, s->upo, pt, s->gi, b->data)) != 0) return rc;
       vq[q] = v0[q] - hq;
       const double dn = vq[q];
-      if ((rc = b->ic(b->uq, b->uo, b->udq, b->upo, b->pt, b->gim, b->data)) != 0)
-        return user_status(b, rc, "integral conditions");
+      if ((rc = b->ic(s->uq, s->uo, s->udq, s->upo, pt, s->gim, b->data)) != 0) return rc;
       vq[q] = v0[q];
-      for (size_t s = 0; s < nint; ++s)
-        gpart[w][s + nint * q] = (b->gi[s] - b->gim[s]) / (up - dn);
+      for (size_t k = 0; k < nint; ++k)
+        gpart[w][k + nint * q] = (s->gi[k] - s->gim[k]) / (up - dn);
     }
   }
+  return 0;
+}
+
+/* ∂g/∂p_k at the current Gauss point (after gauss_state and
+ * gauss_reference), by central differences, into s->gi. */
+static int ic_dp_at(const whirl_bvp *b, bvp_scratch *s, const double *pt, size_t k) {
+  double *pp = s->pq;
+  int rc;
+  memcpy(pp, pt, b->npar * sizeof *pp);
+  const double hp = fd_step(pt[k]);
+  pp[k] = pt[k] + hp;
+  const double up = pp[k];
+  if ((rc = b->ic(s->u, s->uo, s->ud, s->upo, pp, s->gi, b->data)) != 0) return rc;
+  pp[k] = pt[k] - hp;
+  const double dn = pp[k];
+  if ((rc = b->ic(s->u, s->uo, s->ud, s->upo, pp, s->gim, b->data)) != 0) return rc;
+  for (size_t q = 0; q < b->nint; ++q) s->gi[q] = (s->gi[q] - s->gim[q]) / (up - dn);
   return 0;
 }
 
@@ -175,15 +195,16 @@ static int bvp_F(const double *X, const double *p, double *F, void *data) {
   whirl_bvp *b = data;
   const whirl_problem *pr = b->prob;
   const size_t n = b->n, m = b->ncol, N = b->ntst;
+  bvp_scratch *sc = &b->scr[0];
   whirl_bvp_params(b, X, p, b->pt);
   for (size_t i = 0; i < N; ++i) {
     const double h = b->mesh[i + 1] - b->mesh[i];
     for (size_t g = 0; g < m; ++g) {
-      gauss_state(b, X, i, g);
-      int rc = pr->rhs(b->mesh[i] + h * b->gs[g], b->u, b->pt, b->f, pr->data);
+      gauss_state(b, sc, X, i, g);
+      int rc = pr->rhs(b->mesh[i] + h * b->gs[g], sc->u, b->pt, sc->f, pr->data);
       if (rc != 0) return user_status(b, rc, "the model's rhs");
       double *row = F + n * (i * m + g);
-      for (size_t r = 0; r < n; ++r) row[r] = b->du[r] - h * b->f[r];
+      for (size_t r = 0; r < n; ++r) row[r] = sc->du[r] - h * sc->f[r];
     }
   }
   return cond_rows(b, X, b->pt, F + b->ncoll);
@@ -198,64 +219,113 @@ static double *bc_entries(const whirl_bvp *b, double *Jx, size_t col) {
   return Jx + (size_t)b->Jp[col + 1] - b->nint - b->nbc;
 }
 
-/* The collocation rows of the node columns (analytic), of the free
- * columns (df/dp), and the integral rows' node entries (∂g/∂u by central
- * differences at every Gauss point, times the quadrature weight and the
- * basis). */
-static int ic_dp_at(whirl_bvp *b, size_t k);
+/* The integral rows' terms of one Gauss point in b->icacc: (NCOL + 1) n
+ * node columns, then the nfree free columns, nint each. */
+static size_t icacc_size(const whirl_bvp *b) {
+  return ((b->ncol + 1) * b->n + b->nfree) * b->nint;
+}
 
-static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
-  const size_t n = b->n, m = b->ncol, N = b->ntst, nint = b->nint;
-  const size_t colF = n * b->nnodes;
+/* Interval i's part of the Jacobian: its collocation rows of the node
+ * columns (analytic) and of the free columns (df/dp), in place (no other
+ * interval has them), and the integral rows' terms of its Gauss points
+ * (∂g/∂u by central differences, times the quadrature weight and the
+ * basis; h w ∂g/∂p) into its slice of b->icacc, which fill_collocation
+ * adds up.  0, or the status of the callback *what names. */
+static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X, double *Jx,
+                         size_t i, const char **what) {
+  const size_t n = b->n, m = b->ncol, nint = b->nint;
+  const size_t colF = n * b->nnodes, na = icacc_size(b);
+  const double h = b->mesh[i + 1] - b->mesh[i];
   int rc;
-  for (size_t i = 0; i < N; ++i) {
-    const double h = b->mesh[i + 1] - b->mesh[i];
-    for (size_t g = 0; g < m; ++g) {
-      const double t = b->mesh[i] + h * b->gs[g];
-      const size_t R0 = n * (i * m + g);
-      gauss_state(b, X, i, g);
-      if ((rc = model_fx(b, t, b->u, b->pt)) != 0)
-        return user_status(b, rc, "the model's Jacobian");
-      const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
-      for (size_t k = 0; k <= m; ++k) {
-        const size_t node = i * m + k;
-        for (size_t q = 0; q < n; ++q) {
-          const size_t col = n * node + q;
-          /* the column's collocation rows start at row Ji[Jp[col]] */
-          double *v = Jx + (size_t)b->Jp[col] + R0 - (size_t)b->Ji[b->Jp[col]];
-          const double *Jq = b->J + n * q;
-          for (size_t r = 0; r < n; ++r) v[r] = -h * lv[k] * Jq[r];
-          v[q] += dv[k];
-        }
-      }
-      for (size_t j = 0; j < b->nfree; ++j) {
-        double *v = Jx + (size_t)b->Jp[colF + j] + R0;
-        if ((rc = model_fp(b, t, b->u, b->pt, b->free[j], v)) != 0)
-          return user_status(b, rc, "the model's parameter derivative");
-        for (size_t r = 0; r < n; ++r) v[r] *= -h;
-      }
-      if (!nint) continue;
-      gauss_reference(b, i, g);
-      if ((rc = ic_partials(b)) != 0) return rc;
-      /* u = sum l_k x_k, u' = sum l_k' x_k / h: node k's entry is
-       * h w_g (l_k ∂g/∂u + l_k'/h ∂g/∂u') */
-      for (size_t k = 0; k <= m; ++k) {
-        const double wk = h * b->gw[g] * lv[k], wd = b->gw[g] * dv[k];
-        for (size_t q = 0; q < n; ++q) {
-          double *v = ic_entries(b, Jx, n * (i * m + k) + q);
-          for (size_t s = 0; s < nint; ++s)
-            v[s] += wk * b->gu[s + nint * q] + wd * b->gd[s + nint * q];
-        }
-      }
-      /* the free parameters' integral entries: h w_g ∂g/∂p here (before,
-       * two whole quadratures of the conditions per free parameter) */
-      for (size_t j = 0; j < b->nfree; ++j) {
-        if ((rc = ic_dp_at(b, b->free[j])) != 0) return rc;
-        double *v = ic_entries(b, Jx, colF + j);
-        for (size_t s = 0; s < nint; ++s) v[s] += h * b->gw[g] * b->gi[s];
+  for (size_t g = 0; g < m; ++g) {
+    const double t = b->mesh[i] + h * b->gs[g];
+    const size_t R0 = n * (i * m + g);
+    gauss_state(b, s, X, i, g);
+    *what = "the model's Jacobian";
+    if ((rc = model_fx(b, s, t, b->pt)) != 0) return rc;
+    const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
+    for (size_t k = 0; k <= m; ++k) {
+      const size_t node = i * m + k;
+      for (size_t q = 0; q < n; ++q) {
+        const size_t col = n * node + q;
+        /* the column's collocation rows start at row Ji[Jp[col]] */
+        double *v = Jx + (size_t)b->Jp[col] + R0 - (size_t)b->Ji[b->Jp[col]];
+        const double *Jq = s->J + n * q;
+        for (size_t r = 0; r < n; ++r) v[r] = -h * lv[k] * Jq[r];
+        v[q] += dv[k];
       }
     }
+    *what = "the model's parameter derivative";
+    for (size_t j = 0; j < b->nfree; ++j) {
+      double *v = Jx + (size_t)b->Jp[colF + j] + R0;
+      if ((rc = model_fp(b, s, t, b->pt, b->free[j], v)) != 0) return rc;
+      for (size_t r = 0; r < n; ++r) v[r] *= -h;
+    }
+    if (!nint) continue;
+    gauss_reference(b, s, i, g);
+    *what = "integral conditions";
+    if ((rc = ic_partials(b, s, b->pt)) != 0) return rc;
+    /* u = sum l_k x_k, u' = sum l_k' x_k / h: node k's term is
+     * h w_g (l_k ∂g/∂u + l_k'/h ∂g/∂u') */
+    double *acc = b->icacc + na * (i * m + g);
+    for (size_t k = 0; k <= m; ++k) {
+      const double wk = h * b->gw[g] * lv[k], wd = b->gw[g] * dv[k];
+      for (size_t q = 0; q < n; ++q)
+        for (size_t c = 0; c < nint; ++c)
+          acc[(k * n + q) * nint + c] = wk * s->gu[c + nint * q] + wd * s->gd[c + nint * q];
+    }
+    /* the free parameters' terms: h w_g ∂g/∂p */
+    acc += (m + 1) * n * nint;
+    for (size_t j = 0; j < b->nfree; ++j) {
+      if ((rc = ic_dp_at(b, s, b->pt, b->free[j])) != 0) return rc;
+      for (size_t c = 0; c < nint; ++c) acc[j * nint + c] = h * b->gw[g] * s->gi[c];
+    }
   }
+  return 0;
+}
+
+/* The threads of the loop over the intervals: several only where there is
+ * work enough to share (as colloc_threads). */
+static int bvp_threads(const whirl_bvp *b) {
+  return b->nthreads > 1 && b->ntst * b->ncol * b->n >= 512 ? b->nthreads : 1;
+}
+
+/* The collocation rows of every column and the integral rows' node and
+ * free entries: the intervals in parallel (fill_interval), then the
+ * integral terms summed into the entries in interval and Gauss-point
+ * order, so the Jacobian is the same bytes on any number of threads.  The
+ * first failure in interval order is the one reported. */
+static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
+  const size_t n = b->n, m = b->ncol, N = b->ntst, nint = b->nint;
+  const size_t colF = n * b->nnodes, na = icacc_size(b);
+  const int nth = bvp_threads(b);
+  size_t bad = N;
+  int bad_rc = 0;
+  const char *bad_what = NULL;
+#pragma omp parallel for num_threads(nth) schedule(dynamic, 4) if (nth > 1)
+  for (size_t i = 0; i < N; ++i) {
+    const char *what = NULL;
+    const int rc = fill_interval(b, &b->scr[whirl_thread_num()], X, Jx, i, &what);
+    if (rc != 0) {
+#pragma omp critical(whirl_bvp_fill)
+      if (i < bad) bad = i, bad_rc = rc, bad_what = what;
+    }
+  }
+  if (bad < N) return user_status(b, bad_rc, bad_what);
+  for (size_t i = 0; nint && i < N; ++i)
+    for (size_t g = 0; g < m; ++g) {
+      const double *acc = b->icacc + na * (i * m + g);
+      for (size_t k = 0; k <= m; ++k)
+        for (size_t q = 0; q < n; ++q) {
+          double *v = ic_entries(b, Jx, n * (i * m + k) + q);
+          for (size_t c = 0; c < nint; ++c) v[c] += acc[(k * n + q) * nint + c];
+        }
+      acc += (m + 1) * n * nint;
+      for (size_t j = 0; j < b->nfree; ++j) {
+        double *v = ic_entries(b, Jx, colF + j);
+        for (size_t c = 0; c < nint; ++c) v[c] += acc[j * nint + c];
+      }
+    }
   return 0;
 }
 
@@ -263,7 +333,7 @@ static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
  * differences of bc. */
 static int fill_boundary(whirl_bvp *b, const double *X, double *Jx) {
   const size_t n = b->n, nbc = b->nbc, last = b->nnodes - 1;
-  double *w0 = b->work, *w1 = b->work + n; /* copies of u(0), u(1) */
+  double *w0 = b->scr[0].work, *w1 = b->scr[0].work + n; /* copies of u(0), u(1) */
   memcpy(w0, X, n * sizeof *w0);
   memcpy(w1, X + n * last, n * sizeof *w1);
   for (int end = 0; end < 2; ++end) {
@@ -290,7 +360,7 @@ static int fill_boundary(whirl_bvp *b, const double *X, double *Jx) {
 /* d(boundary rows)/dp_k by central differences of bc alone, out[nbc]. */
 static int bc_dp(whirl_bvp *b, const double *X, size_t k, double *out) {
   const size_t last = b->nnodes - 1;
-  double *pp = b->pq;
+  double *pp = b->scr[0].pq;
   int rc;
   memcpy(pp, b->pt, b->npar * sizeof *pp);
   const double hp = fd_step(b->pt[k]);
@@ -303,25 +373,6 @@ static int bc_dp(whirl_bvp *b, const double *X, size_t k, double *out) {
   if ((rc = b->bc(X, X + b->n * last, pp, b->fbm, b->data)) != 0)
     return user_status(b, rc, "boundary conditions");
   for (size_t s = 0; s < b->nbc; ++s) out[s] = (b->fb[s] - b->fbm[s]) / (up - dn);
-  return 0;
-}
-
-/* ∂g/∂p_k at the current Gauss point (after gauss_state and
- * gauss_reference), by central differences, into b->gi. */
-static int ic_dp_at(whirl_bvp *b, size_t k) {
-  double *pp = b->pq;
-  int rc;
-  memcpy(pp, b->pt, b->npar * sizeof *pp);
-  const double hp = fd_step(b->pt[k]);
-  pp[k] = b->pt[k] + hp;
-  const double up = pp[k];
-  if ((rc = b->ic(b->u, b->uo, b->ud, b->upo, pp, b->gi, b->data)) != 0)
-    return user_status(b, rc, "integral conditions");
-  pp[k] = b->pt[k] - hp;
-  const double dn = pp[k];
-  if ((rc = b->ic(b->u, b->uo, b->ud, b->upo, pp, b->gim, b->data)) != 0)
-    return user_status(b, rc, "integral conditions");
-  for (size_t s = 0; s < b->nint; ++s) b->gi[s] = (b->gi[s] - b->gim[s]) / (up - dn);
   return 0;
 }
 
@@ -360,18 +411,20 @@ static int bvp_Fp(const double *X, const double *p, size_t k, double *fk,
   for (size_t j = 0; j < b->nfree; ++j)
     if (b->free[j] == k) return 0;
   whirl_bvp_params(b, X, p, b->pt);
+  bvp_scratch *sc = &b->scr[0];
   for (size_t i = 0; i < N; ++i) {
     const double h = b->mesh[i + 1] - b->mesh[i];
     for (size_t g = 0; g < m; ++g) {
-      gauss_state(b, X, i, g);
+      gauss_state(b, sc, X, i, g);
       double *v = fk + n * (i * m + g);
-      int rc = model_fp(b, b->mesh[i] + h * b->gs[g], b->u, b->pt, k, v);
+      int rc = model_fp(b, sc, b->mesh[i] + h * b->gs[g], b->pt, k, v);
       if (rc != 0) return user_status(b, rc, "the model's parameter derivative");
       for (size_t r = 0; r < n; ++r) v[r] *= -h;
       if (!b->nint) continue;
-      gauss_reference(b, i, g); /* the integral rows at this point */
-      if ((rc = ic_dp_at(b, k)) != 0) return rc;
-      for (size_t s = 0; s < b->nint; ++s) fk[b->ncoll + b->nbc + s] += h * b->gw[g] * b->gi[s];
+      gauss_reference(b, sc, i, g); /* the integral rows at this point */
+      if ((rc = ic_dp_at(b, sc, b->pt, k)) != 0)
+        return user_status(b, rc, "integral conditions");
+      for (size_t s = 0; s < b->nint; ++s) fk[b->ncoll + b->nbc + s] += h * b->gw[g] * sc->gi[s];
     }
   }
   return b->nbc ? bc_dp(b, X, k, fk + b->ncoll) : 0;
@@ -464,6 +517,26 @@ static size_t build_pattern(whirl_bvp *b, int count_only) {
   return pos;
 }
 
+/* One thread's scratch (bvp_scratch's sizes); 0, or -1 out of memory. */
+static int alloc_scratch(const whirl_bvp *b, bvp_scratch *s) {
+  const size_t n = b->n, np = b->npar ? b->npar : 1, ni = b->nint;
+  const size_t sizes[] = {n, n, n, n, n, n * n, n * np, 2 * n, np, ni, ni, ni * n, ni * n,
+                          n, n, n, n};
+  double **ptrs[] = {&s->u, &s->du, &s->f, &s->fm, &s->uq, &s->J, &s->Jpar, &s->work,
+                     &s->pq, &s->gi, &s->gim, &s->gu, &s->gd, &s->uo, &s->upo, &s->ud,
+                     &s->udq};
+  const size_t nptr = sizeof sizes / sizeof sizes[0];
+  size_t tot = 0;
+  for (size_t k = 0; k < nptr; ++k) tot += sizes[k] + 1;
+  if (!(s->block = calloc(tot, sizeof *s->block))) return -1;
+  double *q = s->block;
+  for (size_t k = 0; k < nptr; ++k) {
+    *ptrs[k] = q;
+    q += sizes[k] + 1;
+  }
+  return 0;
+}
+
 /* The work arrays; 0, or -1 out of memory. */
 static int alloc_arrays(whirl_bvp *b) {
   const size_t n = b->n, np = b->npar ? b->npar : 1, nc = b->nbc + b->nint;
@@ -472,26 +545,25 @@ static int alloc_arrays(whirl_bvp *b) {
   b->Jp = malloc((b->nx + 1) * sizeof *b->Jp);
   b->Ji = malloc(b->nnz * sizeof *b->Ji);
   b->Jx = malloc(b->nnz * sizeof *b->Jx);
-  const size_t sizes[] = {n, n, n, n, n, n * n, n * np, 2 * n, np, np,
-                          b->nbc, b->nbc, b->nint, b->nint, b->nint * n, nc, nc,
-                          n * b->nnodes, n, n, n, n, b->nint * n,
+  const size_t sizes[] = {np, b->nbc, b->nbc, nc, nc, n * b->nnodes,
+                          icacc_size(b) * b->ntst * b->ncol,
                           b->ntst + 1, n * b->nnodes, b->ntst, b->ntst + 1,
                           n * b->ntst};
-  double **ptrs[] = {&b->u, &b->du, &b->f, &b->fm, &b->uq, &b->J, &b->Jpar,
-                     &b->work, &b->pt, &b->pq, &b->fb, &b->fbm, &b->gi,
-                     &b->gim, &b->gu, &b->cp, &b->cm,
-                     &b->ref, &b->uo, &b->upo, &b->ud, &b->udq, &b->gd,
+  double **ptrs[] = {&b->pt, &b->fb, &b->fbm, &b->cp, &b->cm, &b->ref, &b->icacc,
                      &b->old_mesh, &b->copy, &b->E, &b->Q, &b->Dm};
   const size_t nptr = sizeof sizes / sizeof sizes[0];
   size_t tot = 0;
   for (size_t k = 0; k < nptr; ++k) tot += sizes[k] + 1;
   b->buf = calloc(tot, sizeof *b->buf);
-  if (!b->mesh || !b->free || !b->Jp || !b->Ji || !b->Jx || !b->buf) return -1;
+  b->scr = calloc((size_t)b->nthreads, sizeof *b->scr);
+  if (!b->mesh || !b->free || !b->Jp || !b->Ji || !b->Jx || !b->buf || !b->scr) return -1;
   double *q = b->buf;
   for (size_t k = 0; k < nptr; ++k) {
     *ptrs[k] = q;
     q += sizes[k] + 1;
   }
+  for (int t = 0; t < b->nthreads; ++t)
+    if (alloc_scratch(b, &b->scr[t])) return -1;
   return 0;
 }
 
@@ -578,6 +650,7 @@ whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
   b->ic = o->ic;
   b->data = o->data;
   b->nnz = build_pattern(b, 1);
+  b->nthreads = whirl_threads_resolve(o->threads);
   if (alloc_arrays(b)) {
     whirl_bvp_free(b);
     return ALLOC_FAIL("out of memory");
@@ -623,6 +696,8 @@ void whirl_bvp_free(whirl_bvp *b) {
   free(b->Ji);
   free(b->Jx);
   free(b->buf);
+  for (int t = 0; b->scr && t < b->nthreads; ++t) free(b->scr[t].block);
+  free(b->scr);
   free(b);
 }
 

@@ -13,6 +13,16 @@
 #include "colloc_basis.h"
 #include "util/errmsg_impl.h"
 
+/* One thread's scratch at a Gauss point: u, du/dsigma, f, fm, uq (n
+ * each), J (n*n), Jpar (n*npar), work (2n), pq (npar), gi, gim (nint),
+ * gu, gd (nint*n: the integral conditions' partials in u and u'), and the
+ * reference uo, its derivative upo, u' (ud; udq perturbed), n each. */
+typedef struct bvp_scratch {
+  double *u, *du, *f, *fm, *uq, *J, *Jpar, *work, *pq, *gi, *gim, *gu, *gd, *uo, *upo,
+      *ud, *udq;
+  double *block; /* all of the above */
+} bvp_scratch;
+
 struct whirl_bvp {
   const whirl_problem *prob;
   whirl_system sys;
@@ -37,16 +47,14 @@ struct whirl_bvp {
   int *Jp, *Ji; /* compressed-column pattern, nx + 1 and nnz */
   double *Jx;   /* nnz, values for the dense callback */
 
-  /* scratch, in one block (buf): u, du, f, fm, uq (n each), J (n*n),
-   * Jpar (n*npar), work (2n), pt, pq (npar), fb, fbm (nbc), gi, gim
-   * (nint), gu (nint*n), cp, cm (nbc + nint) */
+  /* scratch, in one block (buf): pt (npar), fb, fbm (nbc), cp, cm
+   * (nbc + nint); the integral conditions' reference (AUTO's UOLD), node
+   * values; icacc the integral rows' terms of every Gauss point (the
+   * Jacobian's intervals in parallel, summed in interval order after) */
   double *buf;
-  double *u, *du, *f, *fm, *uq, *J, *Jpar, *work, *pt, *pq, *fb, *fbm, *gi,
-      *gim, *gu, *cp, *cm;
-  /* the integral conditions' reference (AUTO's UOLD): node values, and at
-   * the current Gauss point uold, upold and u' (ud, udq perturbed) */
-  double *ref;
-  double *uo, *upo, *ud, *udq, *gd;
+  double *pt, *fb, *fbm, *cp, *cm, *ref, *icacc;
+  int nthreads;     /* threads of the Jacobian's loop over the intervals */
+  bvp_scratch *scr; /* nthreads; scr[0] the sequential code's */
   /* mesh adaptation (AUTO's IAD): dm the NCOL-th derivative's weights,
    * the old mesh, a copy of a vector and the density's scratch */
   int adapt_every, since_adapt;

@@ -111,9 +111,16 @@ typedef struct whirl_bvp_options {
                          by whirl_bvp_alloc (may be NULL when nfree = 0) */
   int adapt_every;    /* IAD: a new mesh every adapt_every accepted points
                          (above); 0 (default): a fixed mesh */
+  int threads;        /* threads of the Jacobian's loop over the mesh
+                         intervals, as whirl_colloc_options.threads: > 0
+                         that many, 0 as many as OpenMP offers, default 1.
+                         With more than one the model's rhs and jac_x and
+                         ic are called from several threads at once;
+                         the Jacobian is the same bytes on any number. */
 } whirl_bvp_options;
 
-/* Defaults: NTST 20, NCOL 4, no conditions, no free parameters, fixed mesh. */
+/* Defaults: NTST 20, NCOL 4, no conditions, no free parameters, fixed
+ * mesh, one thread. */
 WHIRL_API void whirl_bvp_options_default(whirl_bvp_options *o);
 
 typedef struct whirl_bvp whirl_bvp;

@@ -966,6 +966,89 @@ static void test_mesh_from(void) {
   whirl_bvp_free(src), whirl_bvp_free(b);
 }
 
+/* ------------------------------------------------------------------------
+ * 6. The Jacobian's intervals on several threads (whirl_bvp_options.
+ *    threads): the same bytes as on one (each interval's terms by the same
+ *    arithmetic, the integral rows summed in interval order after the
+ *    loop), right against differences, and the first failure in interval
+ *    order reported whichever thread meets which. */
+
+/* ex_ic_all, failing where u is large: -1 for u in [100, 200), -2 from
+ * 1000 */
+static int ex_ic_fail(const double *u, const double *uo, const double *ud,
+                      const double *upo, const double *p, double *fi, void *data) {
+  if (u[0] >= 1000.0) return -2;
+  if (u[0] >= 100.0) return -1;
+  return ex_ic_all(u, uo, ud, upo, p, fi, data);
+}
+
+static whirl_bvp *threads_bvp(size_t ntst, int threads, whirl_bvp_ic_fn ic, char *err,
+                              size_t len) {
+  static const size_t fr[1] = {0};
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = ntst;
+  o.ncol = 4;
+  o.nbc = 1;
+  o.nint = 1;
+  o.bc = ex_bc;
+  o.ic = ic;
+  o.nfree = 1;
+  o.free = fr;
+  o.threads = threads;
+  return whirl_bvp_alloc(&expo_fd, &o, err, len);
+}
+
+static void test_threads(void) {
+  char err[256];
+  const size_t ntst = 600; /* 2400 Gauss values: the loop goes parallel */
+  whirl_bvp *b1 = threads_bvp(ntst, 1, ex_ic_all, err, sizeof err),
+            *b3 = threads_bvp(ntst, 3, ex_ic_all, err, sizeof err);
+  ok(b1 && b3, "u' = a u, an ICND of all its arguments on NTST 600: 1 and 3 threads: %s", err);
+  if (!b1 || !b3) return;
+  const whirl_system *s1 = whirl_bvp_system(b1), *s3 = whirl_bvp_system(b3);
+  const size_t nx = s1->n, nnz = s1->nnz;
+  double *X = malloc(nx * sizeof *X), *R = malloc(nx * sizeof *R),
+         *J1 = malloc(nnz * sizeof *J1), *J3 = malloc(nnz * sizeof *J3);
+  /* smooth node values (random ones make u' ~ NTST, beyond differences) */
+  for (size_t q = 0; q < nx; ++q) {
+    const double t = (double)q / (double)nx;
+    X[q] = 1.0 + 0.3 * sin(3.0 * t) + 0.01 * tap_urand(-1.0, 1.0);
+    R[q] = 1.0 + 0.2 * cos(2.0 * t);
+  }
+  whirl_bvp_set_reference(b1, R);
+  whirl_bvp_set_reference(b3, R);
+  const double p[2] = {0.0, 1.7};
+  const int r1 = s1->Fx_sparse(X, p, J1, s1->data), r3 = s3->Fx_sparse(X, p, J3, s3->data);
+  ok(r1 == 0 && r3 == 0 && memcmp(J1, J3, nnz * sizeof *J1) == 0,
+     "the sparse Jacobian on 3 threads is the same bytes as on 1 (%zu values)", nnz);
+  whirl_system sp = *s3;
+  sp.Fx = NULL; /* the checker scatters Fx_sparse */
+  double e = NAN;
+  const int rc = whirl_system_check_jacobian(&sp, X, p, &e);
+  ok(rc == 0 && e < 1e-6, "on 3 threads against differences of F: %.1e < 1e-6", e);
+  whirl_bvp_free(b1), whirl_bvp_free(b3);
+  /* u = 150 on the nodes of intervals 10-19 (ic -1 there, at most -1 in
+   * their neighbours), u = 5000 on those of 500-599 (-2): the first failure
+   * in interval order, -1, is the one reported, on 1 thread and on 3 (the
+   * last one, or the one met last, would be -2) */
+  int got[2] = {0, 0};
+  for (int v = 0; v < 2; ++v) {
+    whirl_bvp *b = threads_bvp(ntst, v ? 3 : 1, ex_ic_fail, err, sizeof err);
+    const whirl_system *s = whirl_bvp_system(b);
+    for (size_t q = 0; q < nx; ++q) X[q] = 0.5;
+    for (size_t k = 10 * 4; k <= 20 * 4; ++k) X[k] = 150.0;
+    for (size_t k = 500 * 4; k <= 600 * 4; ++k) X[k] = 5000.0;
+    whirl_bvp_set_reference(b, X);
+    got[v] = s->Fx_sparse(X, p, J1, s->data);
+    ok(got[v] == -1 && strstr(whirl_bvp_errmsg(b), "integral conditions returned -1"),
+       "%d thread(s): the first failing interval's status: %d, '%s'", v ? 3 : 1, got[v],
+       whirl_bvp_errmsg(b));
+    whirl_bvp_free(b);
+  }
+  free(X), free(R), free(J1), free(J3);
+}
+
 int main(void) {
   test_bratu(WHIRL_LINSOL_DENSE, 0);
   test_bratu(WHIRL_LINSOL_SPARSE, 0);
@@ -979,5 +1062,6 @@ int main(void) {
   test_nonautonomous();
   test_bad_options();
   test_mesh_from();
+  test_threads();
   return done_testing();
 }
