@@ -13,7 +13,13 @@
 # With BASE=/path/to/another/drivers/whirl the second column is that
 # build's `whirl auto` instead of AUTO: two builds paired demo by demo.
 # With SCRIPT=1 whirl runs the demo's script as AUTO does (`whirl auto
-# DEMO --script`): the same runs on both sides.
+# DEMO --script`): the same runs on both sides.  With DEFAULT=1 AUTO runs
+# whirl's default order of the constants files instead of its script
+# (c.NAME.1, c.NAME.2, ... each given the runs before it, as
+# test/auto-demos/run.sh's third reference): the same runs on both sides
+# again; AUTO gets 60 s a demo there (its default order of pcl runs on for
+# minutes), and a demo where AUTO timed out or either side computed no
+# point is left out of the totals and listed.
 # SPDX-License-Identifier: BSD-3-Clause
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
@@ -26,18 +32,33 @@ py=${AUTO_07P_PYTHON:-/usr/lib/auto-07p/python}
 [ -d "$demos" ] || { echo "# no AUTO-07p demos at $demos"; exit 0; }
 BASE=${BASE:-}
 SCRIPT=${SCRIPT:-}
+DEFAULT=${DEFAULT:-}
 wargs=; [ -n "$SCRIPT" ] && wargs=--script
 [ -n "$BASE" ] || [ -f "$py/auto/__main__.py" ] || { echo "# no AUTO-07p at $py (Debian package auto-07p)"; exit 0; }
 demos=$(cd "$demos" && pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-autospeed.XXXXXX") || exit 1
 trap 'rm -rf "$tmp"' EXIT
 now() { date +%s.%N; }
+# AUTO's script of demo $1's constants files in whirl's default order,
+# into $2/whirl-default.auto (nothing when the demo has no c-files)
+default_script() {
+  files=$(cd "$2" && ls c."$1".[0-9]* 2>/dev/null | sort -t. -k3,3n | tr '\n' ' ')
+  [ -n "$files" ] || { [ -f "$2/c.$1" ] && files="c.$1"; }
+  { echo "s = None"
+    for f in $files; do
+      echo "try:"
+      echo "    r = run(e='$1', c='${f#c.}') if s is None else run(e='$1', c='${f#c.}', s=s)"
+      echo "    s = r if s is None else s + r"
+      echo "except Exception as err:"
+      echo "    print('run ${f#c.} failed: %s' % err)"
+    done; } > "$2/whirl-default.auto"
+}
 median() { sort -g | awk '{ v[NR] = $1 } END { printf "%.3f", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
 echo "# $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); load $(cut -d' ' -f1-3 /proc/loadavg)"
 if [ -n "$BASE" ]; then printf 'demo\truns_whirl\truns_base\twhirl_s\tbase_s\tratio\n'
 else printf 'demo\truns_whirl\truns_auto\twhirl_s\tauto_s\tratio\n'; fi
-tw=0 ta=0 faster=0 total=0
+tw=0 ta=0 faster=0 total=0 left=""
 for dir in "$demos"/*/; do
   d=$(basename "$dir")
   [ -f "$dir/$d.f90" ] && [ -f "$dir/$d.auto" ] || continue
@@ -51,6 +72,10 @@ for dir in "$demos"/*/; do
     t0=$(now); (cd "$tmp/wd" && timeout 300 "$WHIRL" auto "$dir" $wargs --quiet --out=o > /dev/null 2>&1)
     if [ -n "$BASE" ]; then
       t1=$(now); (cd "$tmp/ad" && timeout 300 "$BASE" auto "$dir" $wargs --quiet --out=o > /dev/null 2>&1)
+    elif [ -n "$DEFAULT" ]; then
+      default_script "$d" "$tmp/ad"
+      t1=$(now); (cd "$tmp/ad" && timeout 60 /usr/bin/python3 "$py/auto/__main__.py" whirl-default.auto > log 2>&1)
+      [ $? = 124 ] && echo "$d" > "$tmp/timeout"
     else
       t1=$(now); (cd "$tmp/ad" && timeout 300 /usr/bin/python3 "$py/auto/__main__.py" "$d.auto" > log 2>&1)
     fi
@@ -64,10 +89,16 @@ for dir in "$demos"/*/; do
   [ -n "$na" ] || na=0
   w=$(median < "$tmp/w"); a=$(median < "$tmp/a")
   printf '%s\t%s\t%s\t%s\t%s\t%.1f\n' "$d" "$nw" "$na" "$w" "$a" "$(echo "$a / $w" | bc -l)"
+  # whirl's points: none when its first run could not start (fnc: no STPNT)
+  pw=$(awk 'substr($0, 1, 4) + 0 != 0' "$tmp/wd/o/b.$d" 2> /dev/null | wc -l)
+  if [ -n "$DEFAULT" ] && { [ -f "$tmp/timeout" ] || [ "$pw" = 0 ] || [ "$na" = 0 ]; }; then
+    left="$left $d"; rm -f "$tmp/timeout"; continue
+  fi
   tw=$(echo "$tw + $w" | bc -l); ta=$(echo "$ta + $a" | bc -l)
   total=$((total + 1))
   [ "$(echo "$w < $a" | bc -l)" = 1 ] && faster=$((faster + 1))
 done
 other=AUTO; [ -n "$BASE" ] && other=base
+[ -n "$left" ] && echo "# left out of the totals (AUTO timed out at 60 s, or a side computed no point):$left"
 printf '# total: whirl %.2f s, %s %.2f s, %s / whirl = %.2f; whirl faster on %d of %d demos\n' \
   "$tw" "$other" "$ta" "$other" "$(echo "$ta / $tw" | bc -l)" "$faster" "$total"
