@@ -19,7 +19,15 @@ AC_DEFUN([WHIRL_CHECK_UMFPACK], [
       [UMFPACK_LIBS="$ac_cv_search_umfpack_di_numeric"],
       [AC_MSG_ERROR([UMFPACK library not found. On Debian: apt-get install libsuitesparse-dev])])
     AS_IF([test "x$UMFPACK_LIBS" = "xnone required"], [UMFPACK_LIBS=""])
+    # KLU, the default sparse LU (lib/linalg/sparse.c), beside UMFPACK
+    LIBS="$UMFPACK_LIBS $LAPACK_LIBS $BLAS_LIBS $LIBM $whirl_save_LIBS"
+    AC_SEARCH_LIBS([klu_factor], [klu],
+      [AS_IF([test "x$ac_cv_search_klu_factor" != "xnone required"],
+             [UMFPACK_LIBS="$UMFPACK_LIBS $ac_cv_search_klu_factor"])],
+      [AC_MSG_ERROR([KLU library not found. On Debian: apt-get install libsuitesparse-dev])])
   ])
+  AC_CHECK_HEADER([klu.h], [],
+    [AC_MSG_ERROR([KLU header klu.h not found. On Debian: apt-get install libsuitesparse-dev])])
   CPPFLAGS=$whirl_save_CPPFLAGS
   LIBS=$whirl_save_LIBS
 ])

@@ -6,7 +6,7 @@
  * which="LM": the largest |ν| of OP are the s = σ + 1/ν nearest σ).
  * (A − σB) y = b is one sparse solve with P = K + σD + σ²M:
  *   P y1 = −b2 − (D + σM) b1,   y2 = b1 + σ y1,
- * P factorised once per speed by UMFPACK (whirl/linsol.h).
+ * P factorised once per speed by the sparse LU (KLU; whirl/linsol.h).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include "config.h"
 

@@ -10,7 +10,7 @@
  * θ = 1/(λ − σ), and (L − σB) y = b is one sparse solve of order ndof·L:
  *   P y1 = −b2 − (A1 + σ A2) b1,  y2 = b1 + σ y1,  P = A0 + σ A1 + σ² A2
  * (once per orbit: condensed onto the nonlinear DOFs by fe_hbm_shift.c
- * when the harmonic balance is condensed, else UMFPACK through
+ * when the harmonic balance is condensed, else the sparse LU (KLU) of
  * whirl/linsol.h).  A0, A1, A2 keep the
  * sparsity of K, C + ΩG, M per harmonic, the derivative ∇ coupling a_k with
  * b_k, and a dense (m L)² block of the nonlinear elements.
@@ -117,7 +117,7 @@ static void op_free(hill_op *o) {
   free(o->t);
 }
 
-/* P = A0 + σ A1 + σ² A2 assembled and factorised by UMFPACK. */
+/* P = A0 + σ A1 + σ² A2 assembled and factorised by the sparse LU. */
 static int op_factor_sparse(hill_op *o, const whirl_fe_csc *CH,
                             const whirl_fe_csc *KH, int nd, double w) {
   double sigma = o->sigma;

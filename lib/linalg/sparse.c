@@ -1,9 +1,16 @@
-/* linalg/sparse.c — sparse backend of whirl_linsol on SuiteSparse UMFPACK
- * (Davis, ACM TOMS 30(2), 2004): the fill-reducing symbolic analysis is done
- * once at alloc from the compressed-column pattern alone, each factor is a
- * numeric factorisation of new values on that pattern, and solves use
- * umfpack_di_wsolve with workspace owned by the object.
+/* linalg/sparse.c — sparse backend of whirl_linsol on SuiteSparse's KLU
+ * (Davis & Palamadai Natarajan, ACM TOMS 37(3), 2010: a block triangular
+ * form, AMD on each block, left-looking Gilbert-Peierls LU with partial
+ * pivoting) or UMFPACK (Davis, ACM TOMS 30(2), 2004: multifrontal, BLAS
+ * on the fronts).  The fill-reducing analysis is done once at alloc from
+ * the compressed-column pattern alone; each factor is a numeric
+ * factorisation of new values on that pattern.  KLU is the default: on
+ * collocation and FE patterns of a few hundred to a few thousand unknowns
+ * its factorisation is 3-4x UMFPACK's speed (doc/benchmarks.md, the
+ * sparse LU); WHIRL_SPARSE_LU=umfpack in the environment takes UMFPACK
+ * (with its iterative refinement, umfpack_di_wsolve), for comparisons.
  * SPDX-License-Identifier: BSD-3-Clause */
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdint.h>
@@ -11,8 +18,10 @@
 #include <string.h>
 
 #if defined(HAVE_UMFPACK_H) && !defined(HAVE_SUITESPARSE_UMFPACK_H)
+#include <klu.h>
 #include <umfpack.h>
 #else
+#include <suitesparse/klu.h>
 #include <suitesparse/umfpack.h>
 #endif
 
@@ -23,11 +32,13 @@
 
 #include "linsol_impl.h"
 
-/* UMFPACK, opened at the first sparse matrix (whirl/dynlib.h) */
+/* UMFPACK and KLU (configure puts both in UMFPACK's libraries), opened at
+ * the first sparse matrix (whirl/dynlib.h) */
 #define UMF_FUNCS(X)                                                           \
   X(umfpack_di_defaults) X(umfpack_di_symbolic) X(umfpack_di_numeric)           \
   X(umfpack_di_wsolve) X(umfpack_di_get_determinant) X(umfpack_di_free_numeric) \
-  X(umfpack_di_free_symbolic)
+  X(umfpack_di_free_symbolic) X(klu_defaults) X(klu_analyze) X(klu_factor)      \
+  X(klu_solve) X(klu_tsolve) X(klu_free_symbolic) X(klu_free_numeric) X(klu_rgrowth)
 WHIRL_DYNLIB_UMFPACK(umf, UMF_FUNCS)
 
 typedef struct sparse_backend {
@@ -41,6 +52,11 @@ typedef struct sparse_backend {
   double *W;       /* wsolve workspace W[5n] (iterative refinement on) */
   double *x;       /* x[n]: wsolve needs distinct right-hand side and result */
   char unbound[200]; /* why UMFPACK could not be opened ("" when it was) */
+  int klu;         /* KLU (1) or UMFPACK (0) */
+  klu_common kc;
+  klu_symbolic *ks; /* KLU's analysis, from alloc */
+  klu_numeric *kn;  /* KLU's factors of the last factor, or NULL */
+  int cur_umf;      /* the last factors are UMFPACK's (KLU's pivots grew) */
 } sparse_backend;
 
 int whirl_csc_check(size_t n, const int *Ap, const int *Ai) {
@@ -66,6 +82,8 @@ static void sparse_free(void *backend) {
   if (!s) return;
   if (s->numeric) umf.umfpack_di_free_numeric(&s->numeric);
   if (s->symbolic) umf.umfpack_di_free_symbolic(&s->symbolic);
+  if (s->kn) umf.klu_free_numeric(&s->kn, &s->kc);
+  if (s->ks) umf.klu_free_symbolic(&s->ks, &s->kc);
   free(s->Ap);
   free(s->Ai);
   free(s->Wi);
@@ -74,13 +92,27 @@ static void sparse_free(void *backend) {
   free(s);
 }
 
-static int sparse_factor(whirl_linsol *ls) {
+/* KLU's factors are kept where their reciprocal pivot growth (klu_rgrowth:
+ * min over columns of max |scaled A| / max |U|) is at least this: KLU's
+ * pivoting prefers the diagonal (tol 0.001, which keeps its speed) and on
+ * the complex bordered matrix of a torus locus grew its pivots by 1e28
+ * (test/regress/torus_locus.sh) where LAPACK's largest pivot was 10; a
+ * factorisation grown beyond is redone by UMFPACK. */
+#define KLU_MIN_RGROWTH 1e-8
+
+/* UMFPACK's factors of ls->vals (its analysis made at the first call). */
+static int umf_factor_values(whirl_linsol *ls) {
   sparse_backend *s = ls->backend;
-  int status;
-  if (s->unbound[0]) return WHIRL_FAIL(ls, WHIRL_ENOLIB, "UMFPACK: %s", s->unbound);
+  if (!s->symbolic) {
+    const int st = umf.umfpack_di_symbolic(s->n, s->n, s->Ap, s->Ai, NULL, &s->symbolic,
+                                           s->control, s->info);
+    if (st != UMFPACK_OK)
+      return WHIRL_FAIL(ls, st == UMFPACK_ERROR_out_of_memory ? WHIRL_ENOMEM : WHIRL_ESPARSE,
+                        "umfpack_di_symbolic failed, status %d", st);
+  }
   if (s->numeric) umf.umfpack_di_free_numeric(&s->numeric);
-  status = umf.umfpack_di_numeric(s->Ap, s->Ai, ls->vals, s->symbolic, &s->numeric,
-                              s->control, s->info);
+  const int status = umf.umfpack_di_numeric(s->Ap, s->Ai, ls->vals, s->symbolic, &s->numeric,
+                                            s->control, s->info);
   if (status == UMFPACK_OK) return WHIRL_OK;
   if (status == UMFPACK_WARNING_singular_matrix)
     /* The numeric object is valid (determinant 0), solves are refused. */
@@ -96,12 +128,94 @@ static int sparse_factor(whirl_linsol *ls) {
                     status);
 }
 
+/* KLU's factors of ls->vals, or UMFPACK's where KLU's pivots grew or met
+ * a zero (s->cur_umf says whose factors solve and logdet use): a matrix
+ * is singular when UMFPACK says so. */
+static int klu_factor_values(whirl_linsol *ls) {
+  sparse_backend *s = ls->backend;
+  if (s->kn) umf.klu_free_numeric(&s->kn, &s->kc);
+  s->kn = umf.klu_factor(s->Ap, s->Ai, ls->vals, s->ks, &s->kc);
+  if (!s->kn && s->kc.status == KLU_OUT_OF_MEMORY)
+    return WHIRL_FAIL(ls, WHIRL_ENOMEM, "klu_factor: out of memory (n = %d, nnz = %d)",
+                      s->n, s->nnz);
+  /* a zero pivot: KLU_SINGULAR, or a zero on U's diagonal with the status
+   * OK (KLU 1.3 after its pivots grew) */
+  int good = s->kn && s->kc.status == KLU_OK;
+  for (int k = 0; good && k < s->n; ++k) good = ((double *)s->kn->Udiag)[k] != 0.0;
+  good = good && umf.klu_rgrowth(s->Ap, s->Ai, ls->vals, s->ks, s->kn, &s->kc) &&
+         s->kc.rgrowth >= KLU_MIN_RGROWTH;
+  s->cur_umf = !good;
+  if (good) return WHIRL_OK;
+  if (s->kn) umf.klu_free_numeric(&s->kn, &s->kc);
+  return umf_factor_values(ls);
+}
+
+static int sparse_factor(whirl_linsol *ls) {
+  sparse_backend *s = ls->backend;
+  if (s->unbound[0]) return WHIRL_FAIL(ls, WHIRL_ENOLIB, "UMFPACK: %s", s->unbound);
+  return s->klu ? klu_factor_values(ls) : umf_factor_values(ls);
+}
+
 int whirl_linsol_set_refinement(whirl_linsol *ls, int steps) {
   if (!ls || steps < 0) return WHIRL_EINVAL;
   if (ls->kind != WHIRL_LINSOL_SPARSE) return WHIRL_OK;
   sparse_backend *s = ls->backend;
   s->control[UMFPACK_IRSTEP] = steps;
   return WHIRL_OK;
+}
+
+/* x = A^-1 b (A^-T b) in place by KLU's factors. */
+static int klu_solve_once(whirl_linsol *ls, double *x, int trans) {
+  sparse_backend *s = ls->backend;
+  const int ok = trans ? umf.klu_tsolve(s->ks, s->kn, s->n, 1, x, &s->kc)
+                       : umf.klu_solve(s->ks, s->kn, s->n, 1, x, &s->kc);
+  return ok ? WHIRL_OK
+            : WHIRL_FAIL(ls, WHIRL_ESPARSE, "klu_%ssolve failed, status %d", trans ? "t" : "",
+                         s->kc.status);
+}
+
+/* The residual r = b - op(A) x and the componentwise backward error
+ * max_i |r_i| / (|op(A)| |x| + |b|)_i (Oettli & Prager; r and den in W). */
+static double backward_error(const whirl_linsol *ls, const double *b, const double *x,
+                             int trans, double *r, double *den) {
+  const sparse_backend *s = ls->backend;
+  const double *A = ls->vals;
+  const int n = s->n;
+  for (int i = 0; i < n; ++i) r[i] = b[i], den[i] = fabs(b[i]);
+  for (int j = 0; j < n; ++j)
+    for (int q = s->Ap[j]; q < s->Ap[j + 1]; ++q) {
+      const int i = s->Ai[q];
+      const int row = trans ? j : i, col = trans ? i : j;
+      r[row] -= A[q] * x[col];
+      den[row] += fabs(A[q] * x[col]);
+    }
+  double berr = 0.0;
+  for (int i = 0; i < n; ++i)
+    if (den[i] > 0.0) berr = fmax(berr, fabs(r[i]) / den[i]);
+    else if (r[i] != 0.0) return HUGE_VAL;
+  return berr;
+}
+
+/* One right-hand side by KLU with iterative refinement, as UMFPACK's
+ * (its IRSTEP steps at most, 2 by default): a step while the backward
+ * error exceeds the rounding unit and the last step at least halved it.
+ * KLU itself has none; without it a pivot 1e-3 of its column cost three
+ * digits (t_linalg). */
+static int klu_solve_refined(whirl_linsol *ls, double *x, int trans) {
+  sparse_backend *s = ls->backend;
+  const int n = s->n, steps = (int)s->control[UMFPACK_IRSTEP];
+  double *b = s->W, *r = s->W + n, *den = s->W + 2 * n;
+  memcpy(b, x, (size_t)n * sizeof *b);
+  int rc = klu_solve_once(ls, x, trans);
+  double last = HUGE_VAL;
+  for (int step = 0; rc == WHIRL_OK && step < steps; ++step) {
+    const double berr = backward_error(ls, b, x, trans, r, den);
+    if (!(berr > DBL_EPSILON) || berr > 0.5 * last) break;
+    last = berr;
+    if ((rc = klu_solve_once(ls, r, trans)) == WHIRL_OK)
+      for (int i = 0; i < n; ++i) x[i] += r[i];
+  }
+  return rc;
 }
 
 static int sparse_solve(whirl_linsol *ls, double *B, size_t nrhs, int trans) {
@@ -111,6 +225,13 @@ static int sparse_solve(whirl_linsol *ls, double *B, size_t nrhs, int trans) {
   const size_t n = ls->n;
   size_t k;
   if (s->unbound[0]) return WHIRL_FAIL(ls, WHIRL_ENOLIB, "UMFPACK: %s", s->unbound);
+  if (s->klu && !s->cur_umf) {
+    for (k = 0; k < nrhs; ++k) {
+      int rc = klu_solve_refined(ls, B + k * n, trans);
+      if (rc) return rc;
+    }
+    return WHIRL_OK;
+  }
   for (k = 0; k < nrhs; ++k) {
     double *b = B + k * n;
     int status;
@@ -128,6 +249,44 @@ static int sparse_solve(whirl_linsol *ls, double *B, size_t nrhs, int trans) {
   return WHIRL_OK;
 }
 
+/* The sign of the permutation p[n]: (-1)^(n - its cycles); seen[n]
+ * workspace. */
+static int perm_parity(const int *p, int n, int *seen) {
+  int sign = 1;
+  memset(seen, 0, (size_t)n * sizeof *seen);
+  for (int i = 0; i < n; ++i) {
+    if (seen[i]) continue;
+    int len = 0;
+    for (int j = i; !seen[j]; j = p[j]) seen[j] = 1, ++len;
+    if (len % 2 == 0) sign = -sign;
+  }
+  return sign;
+}
+
+/* KLU factors P (R \ A) Q = L U + F, F strictly above the block diagonal
+ * and L unit lower triangular, so det A = prod Rs_i sign(P) sign(Q) prod
+ * diag U (Rs: the row scaling, none when scale = 0), summed in logs. */
+static int klu_logdet(const sparse_backend *s, double *logabs, int *sign) {
+  const klu_numeric *N = s->kn;
+  const double *ud = N->Udiag;
+  /* Wi: UMFPACK's solve workspace, free while KLU's factors are used */
+  int sg = perm_parity(N->Pnum, s->n, s->Wi) * perm_parity(s->ks->Q, s->n, s->Wi);
+  double la = 0.0;
+  for (int k = 0; k < s->n; ++k) {
+    if (ud[k] == 0.0 || !isfinite(ud[k])) {
+      *logabs = -HUGE_VAL;
+      *sign = 0;
+      return WHIRL_OK;
+    }
+    if (ud[k] < 0.0) sg = -sg;
+    la += log(fabs(ud[k]));
+    if (N->Rs) la += log(N->Rs[k]);
+  }
+  *logabs = la;
+  *sign = sg;
+  return WHIRL_OK;
+}
+
 /* UMFPACK returns det A = Mx * 10^Ex with 1 <= |Mx| < 10, including the
  * row scaling and the signs of both permutations, so nothing overflows. */
 static int sparse_logdet(const whirl_linsol *ls, double *logabs, int *sign) {
@@ -138,6 +297,7 @@ static int sparse_logdet(const whirl_linsol *ls, double *logabs, int *sign) {
     *sign = 0;
     return WHIRL_ENOLIB;
   }
+  if (s->klu && !s->cur_umf) return klu_logdet(s, logabs, sign);
   int status = umf.umfpack_di_get_determinant(&mx, &ex, s->numeric, info);
   if (status != UMFPACK_OK && status != UMFPACK_WARNING_singular_matrix) {
     *logabs = 0.0;
@@ -180,7 +340,16 @@ whirl_linsol *whirl_linsol_alloc_sparse(size_t n, const int *Ap,
   if (nnz) memcpy(s->Ai, Ai, nnz * sizeof *Ai);
   /* without UMFPACK the object is made, and its first factor says why */
   if (umf_bind(s->unbound, sizeof s->unbound) != WHIRL_OK) return ls;
-  umf.umfpack_di_defaults(s->control);
+  const char *lu = getenv("WHIRL_SPARSE_LU");
+  s->klu = !(lu && !strcmp(lu, "umfpack"));
+  umf.umfpack_di_defaults(s->control); /* IRSTEP 2: both backends' refinement */
+  if (s->klu) { /* UMFPACK's analysis when KLU first leaves it a matrix */
+    umf.klu_defaults(&s->kc);
+    s->kc.halt_if_singular = 0; /* a singular matrix's factors, for its det */
+    s->ks = umf.klu_analyze(s->n, s->Ap, s->Ai, &s->kc);
+    if (!s->ks) goto fail;
+    return ls;
+  }
   /* Symbolic analysis (column ordering, supernodes) depends on the pattern
    * only; Ax = NULL makes UMFPACK treat every stored entry as nonzero, so
    * the analysis stays valid for all later values on this pattern. */

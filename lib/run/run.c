@@ -238,7 +238,10 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
   if (b->kind != WHIRL_SOL_HBM) o->sys_skip = 1u << WHIRL_PT_IS | 1u << WHIRL_PT_MG;
   if (b->starting_data) /* AUTO's bvp.f90: ISW = -2 sets ILP = ISP = 0 */
     o->detect_lp = o->detect_bp = o->detect_hb = o->detect_pd = o->detect_sys = 0;
-  if (b->sys->Jp && b->sys->n > 400) o->linsol = WHIRL_LINSOL_SPARSE;
+  /* a sparse Jacobian on KLU from 100 unknowns: the loci of orbits (a
+   * few hundred unknowns, no structured solver) take half the time they
+   * took on the dense LU (doc/benchmarks.md, the sparse LU) */
+  if (b->sys->Jp && b->sys->n > 100) o->linsol = WHIRL_LINSOL_SPARSE;
   /* user points (UZR) and stops (UZSTOP): values of a parameter, of the
    * period (PERIOD, AUTO's PAR(11)) or of a state component (its MAX for
    * periodic orbits), all localised by the core through uz_quantity */

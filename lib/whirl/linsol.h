@@ -1,9 +1,10 @@
 /* whirl/linsol.h — one factor/solve interface over two backends:
- * dense LU (LAPACK dgetrf/dgetrs) and sparse LU (SuiteSparse UMFPACK, with the
+ * dense LU (LAPACK dgetrf/dgetrs) and sparse LU (SuiteSparse KLU, or
+ * UMFPACK with WHIRL_SPARSE_LU=umfpack in the environment, with the
  * symbolic analysis done once for a fixed pattern and a numeric factorisation
  * per call), plus bordered systems [A B; C D] and dense eigenvalues (dgeev).
  * Objects own all their workspace: factor and solve never allocate (except
- * inside UMFPACK's numeric factorisation).
+ * inside KLU's or UMFPACK's numeric factorisation).
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_LINSOL_H
 #define WHIRL_LINSOL_H
@@ -47,8 +48,10 @@ WHIRL_API int whirl_linsol_factor(whirl_linsol *ls, const double *A);
 WHIRL_API int whirl_linsol_solve(whirl_linsol *ls, double *B, size_t nrhs,
                                  int trans);
 
-/* Steps of iterative refinement per sparse solve (UMFPACK's IRSTEP; its
- * default is 2, each costing a residual and another solve).  0 is for
+/* Steps of iterative refinement per sparse solve (UMFPACK's IRSTEP, and
+ * whirl's own with KLU by the same rule; default 2, each costing a
+ * residual and another solve, taken while the backward error exceeds the
+ * rounding unit and halves).  0 is for
  * callers whose solves only feed an iteration that corrects itself, e.g.
  * shift-invert Arnoldi.  Dense LU: no refinement, WHIRL_OK.  WHIRL_EINVAL
  * for steps < 0. */

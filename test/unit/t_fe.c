@@ -410,7 +410,12 @@ static void test_free(void) {
   if (nd == 4 && na == 4) {
     is_rel(d[0].omega, w1, 1e-3, "free rotor: first bending mode (dense) = Euler-Bernoulli free-free");
     is_rel(d[1].omega, w1, 1e-3, "free rotor: its pair");
-    for (int k = 0; k < 4; ++k) is_rel(a[k].omega, d[k].omega, 1e-9, "free rotor: ARPACK = dense, mode %d", k + 1);
+    /* K is singular (the rigid-body modes), so shift-invert's P = K +
+     * sigma D + sigma^2 M is ill conditioned and its solves limit the
+     * eigenvalues to ~1e-9 with any LU: UMFPACK's 8.1e-10, 2.8e-10,
+     * 1.2e-10, 3.3e-10, KLU's 2.5e-10, 1.5e-9, 2.3e-10, 8.9e-11 (each
+     * backward stable to 2e-16); a supported rotor's agree to 1e-9 above */
+    for (int k = 0; k < 4; ++k) is_rel(a[k].omega, d[k].omega, 5e-9, "free rotor: ARPACK = dense, mode %d", k + 1);
   }
   whirl_fe_rotor_free(r);
 }

@@ -686,12 +686,80 @@ static void test_lapack_silent(void) {
   whirl_eig_free(e);
 }
 
+/* Both sparse backends (KLU, the default; UMFPACK by WHIRL_SPARSE_LU =
+ * umfpack) against the dense LU on a matrix whose partial pivoting swaps
+ * rows (small diagonal, no dominance: the sign of det from the pivoting's
+ * permutation, the BTF and ordering permutations and the pivots), and on
+ * an exactly singular one (a zero pivot: WHIRL_ESINGULAR, sign 0, no
+ * solve). */
+static void test_sparse_backends(void) {
+  enum { N = 60 };
+  static const char *const names[2] = {"KLU", "UMFPACK"};
+  double *A = xcalloc(N * N, sizeof *A), *x = xcalloc(N, sizeof *x),
+         *bd = xcalloc(N, sizeof *bd), *bs = xcalloc(N, sizeof *bs);
+  unsigned char *mask = xcalloc(N * N, 1);
+  int *Ap, *Ai;
+  double *Ax;
+  for (size_t j = 0; j < N; ++j)
+    for (size_t i = 0; i < N; ++i)
+      if (i == j || (i + 2 * j) % 7 == 0 || (3 * i + j) % 11 == 0) {
+        mask[i + N * j] = 1;
+        A[i + N * j] = i == j ? 1e-3 * urand() : urand();
+      }
+  dense_to_csc(N, A, mask, &Ap, &Ai, &Ax);
+  whirl_linsol *ld = whirl_linsol_alloc_dense(N);
+  double lad = 0.0;
+  int sd = 0;
+  whirl_linsol_factor(ld, A); /* overwrites A: solves below use Ax */
+  whirl_linsol_logdet(ld, &lad, &sd);
+  for (int b = 0; b < 2; ++b) {
+    if (b) setenv("WHIRL_SPARSE_LU", "umfpack", 1);
+    else unsetenv("WHIRL_SPARSE_LU");
+    whirl_linsol *ls = whirl_linsol_alloc_sparse(N, Ap, Ai);
+    double la = 0.0;
+    int sg = 0, rc = whirl_linsol_factor(ls, Ax);
+    whirl_linsol_logdet(ls, &la, &sg);
+    ok(rc == WHIRL_OK && sg == sd && sd != 0 && fabs(la - lad) < 1e-10 * fabs(lad),
+       "%s: det of a matrix that pivots: sign %d, log|det| %.12g (dense %d, %.12g)",
+       names[b], sg, la, sd, lad);
+    for (size_t i = 0; i < N; ++i) x[i] = urand();
+    for (int trans = 0; trans <= 1; ++trans) {
+      memset(bs, 0, N * sizeof *bs);
+      for (size_t j = 0; j < N; ++j) /* bs = A x or A^T x from the CSC */
+        for (int q = Ap[j]; q < Ap[j + 1]; ++q) {
+          if (trans) bs[j] += Ax[q] * x[Ai[q]];
+          else bs[Ai[q]] += Ax[q] * x[j];
+        }
+      memcpy(bd, bs, N * sizeof *bd);
+      rc = whirl_linsol_solve(ls, bs, 1, trans);
+      ok(rc == WHIRL_OK && relerr(N, bs, x) < 1e-13, "%s: solve%s, rel err %.1e", names[b],
+         trans ? " with A^T" : "", relerr(N, bs, x));
+    }
+    whirl_linsol_free(ls);
+    /* [[1 2 0]; [2 4 0]; [0 0 1]]: row 2 is twice row 1 */
+    const int sp[4] = {0, 2, 4, 5}, si[5] = {0, 1, 0, 1, 2};
+    const double sx[5] = {1.0, 2.0, 2.0, 4.0, 1.0};
+    ls = whirl_linsol_alloc_sparse(3, sp, si);
+    rc = whirl_linsol_factor(ls, sx);
+    whirl_linsol_logdet(ls, &la, &sg);
+    double r[3] = {1.0, 1.0, 1.0};
+    ok(rc == WHIRL_ESINGULAR && sg == 0 && whirl_linsol_solve(ls, r, 1, 0) != WHIRL_OK,
+       "%s: an exactly singular matrix: rc %d, sign %d, no solve ('%s')", names[b], rc, sg,
+       whirl_linsol_errmsg(ls));
+    whirl_linsol_free(ls);
+  }
+  unsetenv("WHIRL_SPARSE_LU");
+  whirl_linsol_free(ld);
+  free(A), free(x), free(bd), free(bs), free(mask), free(Ap), free(Ai), free(Ax);
+}
+
 int main(void) {
   test_lapack_silent();
   test_dense_solve();
   test_dense_logdet();
   test_perm_diag_logdet();
   test_dense_vs_sparse();
+  test_sparse_backends();
   test_bordered();
   test_eig();
   test_null_vectors();
