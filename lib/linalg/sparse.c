@@ -4,7 +4,8 @@
  * pivoting) or UMFPACK (Davis, ACM TOMS 30(2), 2004: multifrontal, BLAS
  * on the fronts).  The fill-reducing analysis is done once at alloc from
  * the compressed-column pattern alone; each factor is a numeric
- * factorisation of new values on that pattern.  KLU is the default: on
+ * factorisation of new values on that pattern (KLU: in the last pivot
+ * order while its pivots do not grow, klu_refactor).  KLU is the default: on
  * collocation and FE patterns of a few hundred to a few thousand unknowns
  * its factorisation is 3-4x UMFPACK's speed (doc/benchmarks.md, the
  * sparse LU); WHIRL_SPARSE_LU=umfpack in the environment takes UMFPACK
@@ -38,7 +39,8 @@
   X(umfpack_di_defaults) X(umfpack_di_symbolic) X(umfpack_di_numeric)           \
   X(umfpack_di_wsolve) X(umfpack_di_get_determinant) X(umfpack_di_free_numeric) \
   X(umfpack_di_free_symbolic) X(klu_defaults) X(klu_analyze) X(klu_factor)      \
-  X(klu_solve) X(klu_tsolve) X(klu_free_symbolic) X(klu_free_numeric) X(klu_rgrowth)
+  X(klu_solve) X(klu_tsolve) X(klu_free_symbolic) X(klu_free_numeric) X(klu_rgrowth) \
+  X(klu_refactor)
 WHIRL_DYNLIB_UMFPACK(umf, UMF_FUNCS)
 
 typedef struct sparse_backend {
@@ -57,6 +59,7 @@ typedef struct sparse_backend {
   klu_symbolic *ks; /* KLU's analysis, from alloc */
   klu_numeric *kn;  /* KLU's factors of the last factor, or NULL */
   int cur_umf;      /* the last factors are UMFPACK's (KLU's pivots grew) */
+  double rgrowth0;  /* the reciprocal pivot growth of KLU's last klu_factor */
 } sparse_backend;
 
 int whirl_csc_check(size_t n, const int *Ap, const int *Ai) {
@@ -131,8 +134,24 @@ static int umf_factor_values(whirl_linsol *ls) {
 /* KLU's factors of ls->vals, or UMFPACK's where KLU's pivots grew or met
  * a zero (s->cur_umf says whose factors solve and logdet use): a matrix
  * is singular when UMFPACK says so. */
+/* KLU's factors usable: no zero pivot, the reciprocal pivot growth at
+ * least min_rgrowth (klu_rgrowth into s->kc.rgrowth). */
+static int klu_factors_good(sparse_backend *s, const double *vals, double min_rgrowth) {
+  int good = s->kn && s->kc.status == KLU_OK;
+  for (int k = 0; good && k < s->n; ++k) good = ((double *)s->kn->Udiag)[k] != 0.0;
+  return good && umf.klu_rgrowth(s->Ap, s->Ai, (double *)vals, s->ks, s->kn, &s->kc) &&
+         s->kc.rgrowth >= min_rgrowth;
+}
+
 static int klu_factor_values(whirl_linsol *ls) {
   sparse_backend *s = ls->backend;
+  /* the last factorisation's pivot order for the new values (klu_refactor:
+   * Newton's matrices change little from one iteration to the next), kept
+   * while their pivots grow at most 100x more than that factorisation's */
+  if (s->kn && !s->cur_umf &&
+      umf.klu_refactor(s->Ap, s->Ai, ls->vals, s->ks, s->kn, &s->kc) &&
+      klu_factors_good(s, ls->vals, fmax(KLU_MIN_RGROWTH, 1e-2 * s->rgrowth0)))
+    return WHIRL_OK;
   if (s->kn) umf.klu_free_numeric(&s->kn, &s->kc);
   s->kn = umf.klu_factor(s->Ap, s->Ai, ls->vals, s->ks, &s->kc);
   if (!s->kn && s->kc.status == KLU_OUT_OF_MEMORY)
@@ -140,10 +159,8 @@ static int klu_factor_values(whirl_linsol *ls) {
                       s->n, s->nnz);
   /* a zero pivot: KLU_SINGULAR, or a zero on U's diagonal with the status
    * OK (KLU 1.3 after its pivots grew) */
-  int good = s->kn && s->kc.status == KLU_OK;
-  for (int k = 0; good && k < s->n; ++k) good = ((double *)s->kn->Udiag)[k] != 0.0;
-  good = good && umf.klu_rgrowth(s->Ap, s->Ai, ls->vals, s->ks, s->kn, &s->kc) &&
-         s->kc.rgrowth >= KLU_MIN_RGROWTH;
+  const int good = klu_factors_good(s, ls->vals, KLU_MIN_RGROWTH);
+  s->rgrowth0 = s->kc.rgrowth;
   s->cur_umf = !good;
   if (good) return WHIRL_OK;
   if (s->kn) umf.klu_free_numeric(&s->kn, &s->kc);

@@ -749,6 +749,27 @@ static void test_sparse_backends(void) {
     whirl_linsol_free(ls);
   }
   unsetenv("WHIRL_SPARSE_LU");
+  /* KLU refactors new values in the last pivot order: [[1 .5]; [.5 1]]
+   * pivots on the diagonal; on [[1e-12 1]; [1 1]] that order would pivot
+   * on 1e-12 (growth 1e12) and is dropped for a new factorisation: the
+   * solve exact without refinement, det = 1e-12 - 1 */
+  {
+    const int sp[3] = {0, 2, 4}, si[4] = {0, 1, 0, 1};
+    const double v1[4] = {1.0, 0.5, 0.5, 1.0}, v2[4] = {1e-12, 1.0, 1.0, 1.0};
+    whirl_linsol *ls = whirl_linsol_alloc_sparse(2, sp, si);
+    whirl_linsol_set_refinement(ls, 0);
+    int rc = whirl_linsol_factor(ls, v1);
+    if (!rc) rc = whirl_linsol_factor(ls, v2);
+    double r[2] = {1.0 + 1e-12, 2.0}, la = 0.0; /* x = (1, 1) */
+    int sg = 0;
+    if (!rc) rc = whirl_linsol_solve(ls, r, 1, 0);
+    whirl_linsol_logdet(ls, &la, &sg);
+    ok(rc == WHIRL_OK && fabs(r[0] - 1.0) < 1e-14 && fabs(r[1] - 1.0) < 1e-14 && sg == -1 &&
+           fabs(la - log(1.0 - 1e-12)) < 1e-14,
+       "new values whose last pivot order grows 1e12: factored anew, x = (%.17g, %.17g), "
+       "det %d exp(%.3g)", r[0], r[1], sg, la);
+    whirl_linsol_free(ls);
+  }
   whirl_linsol_free(ld);
   free(A), free(x), free(bd), free(bs), free(mask), free(Ap), free(Ai), free(Ax);
 }
