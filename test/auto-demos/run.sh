@@ -71,20 +71,11 @@ auto_tight() {
 # where the demo's script makes others (ext's c.ext.2 to NMX, where the
 # script stops at PAR(1) = 6); its log in $tmp/$1.default (empty when no
 # run printed a point; 60 s at most: pcl's default order runs on past 300 s)
+. "$here/default_order.sh"
 auto_default() {
   r="$tmp/ref.$1"
-  files=$(cd "$r" 2>/dev/null && ls c."$1".[0-9]* 2>/dev/null | sort -t. -k3,3n | tr '\n' ' ')
-  [ -n "$files" ] || { [ -f "$r/c.$1" ] && files="c.$1"; }
   : > "$tmp/$1.default"
-  [ -n "$files" ] || return 0
-  { echo "s = None"
-    for f in $files; do
-      echo "try:"
-      echo "    r = run(e='$1', c='${f#c.}') if s is None else run(e='$1', c='${f#c.}', s=s)"
-      echo "    s = r if s is None else s + r"
-      echo "except Exception as err:"
-      echo "    print('run ${f#c.} failed: %s' % err)"
-    done; } > "$r/whirl-default.auto"
+  default_order_script "$1" "$r" || return 0
   { echo "Demo $1 is started"
     (cd "$r" && rm -f b.* s.* d.* && timeout 60 python3 "$py/auto/__main__.py" whirl-default.auto 2>&1)
     echo "Demo $1 is done"; } > "$tmp/$1.default"

@@ -39,20 +39,7 @@ demos=$(cd "$demos" && pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-autospeed.XXXXXX") || exit 1
 trap 'rm -rf "$tmp"' EXIT
 now() { date +%s.%N; }
-# AUTO's script of demo $1's constants files in whirl's default order,
-# into $2/whirl-default.auto (nothing when the demo has no c-files)
-default_script() {
-  files=$(cd "$2" && ls c."$1".[0-9]* 2>/dev/null | sort -t. -k3,3n | tr '\n' ' ')
-  [ -n "$files" ] || { [ -f "$2/c.$1" ] && files="c.$1"; }
-  { echo "s = None"
-    for f in $files; do
-      echo "try:"
-      echo "    r = run(e='$1', c='${f#c.}') if s is None else run(e='$1', c='${f#c.}', s=s)"
-      echo "    s = r if s is None else s + r"
-      echo "except Exception as err:"
-      echo "    print('run ${f#c.} failed: %s' % err)"
-    done; } > "$2/whirl-default.auto"
-}
+. "$top/test/auto-demos/default_order.sh" # default_order_script NAME DIR
 median() { sort -g | awk '{ v[NR] = $1 } END { printf "%.3f", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
 echo "# $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); load $(cut -d' ' -f1-3 /proc/loadavg)"
@@ -73,7 +60,7 @@ for dir in "$demos"/*/; do
     if [ -n "$BASE" ]; then
       t1=$(now); (cd "$tmp/ad" && timeout 300 "$BASE" auto "$dir" $wargs --quiet --out=o > /dev/null 2>&1)
     elif [ -n "$DEFAULT" ]; then
-      default_script "$d" "$tmp/ad"
+      default_order_script "$d" "$tmp/ad"
       t1=$(now); (cd "$tmp/ad" && timeout 60 /usr/bin/python3 "$py/auto/__main__.py" whirl-default.auto > log 2>&1)
       [ $? = 124 ] && echo "$d" > "$tmp/timeout"
     else
