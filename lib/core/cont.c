@@ -142,6 +142,7 @@ static int state_alloc(whirl_cont *c, cont_state *st) {
   memset(st, 0, sizeof *st);
   st->X = calloc(c->N, sizeof *st->X);
   st->t = calloc(c->N, sizeof *st->t);
+  st->sec = calloc(c->N, sizeof *st->sec);
   st->p = calloc(c->npar, sizeof *st->p);
   size_t ns = c->sys.nspec ? c->sys.nspec : 1;
   st->re = calloc(ns, sizeof *st->re);
@@ -149,7 +150,7 @@ static int state_alloc(whirl_cont *c, cont_state *st) {
   size_t nt = c->sys.test ? c->sys.ntest : 0;
   st->tau = calloc(nt ? nt : 1, sizeof *st->tau);
   st->ttype = calloc(nt ? nt : 1, sizeof *st->ttype);
-  return st->X && st->t && st->p && st->re && st->im && st->tau && st->ttype
+  return st->X && st->t && st->sec && st->p && st->re && st->im && st->tau && st->ttype
              ? 0
              : -1;
 }
@@ -157,6 +158,7 @@ static int state_alloc(whirl_cont *c, cont_state *st) {
 static void state_free(cont_state *st) {
   free(st->X);
   free(st->t);
+  free(st->sec);
   free(st->p);
   free(st->re);
   free(st->im);
@@ -166,7 +168,7 @@ static void state_free(cont_state *st) {
 
 void cont_state_copy(const whirl_cont *c, cont_state *dst,
                      const cont_state *src) {
-  double *X = dst->X, *t = dst->t, *p = dst->p, *re = dst->re, *im = dst->im;
+  double *X = dst->X, *t = dst->t, *sec = dst->sec, *p = dst->p, *re = dst->re, *im = dst->im;
   double *tau = dst->tau;
   int *ttype = dst->ttype;
   *dst = *src;
@@ -178,11 +180,13 @@ void cont_state_copy(const whirl_cont *c, cont_state *dst,
   }
   dst->X = X;
   dst->t = t;
+  dst->sec = sec;
   dst->p = p;
   dst->re = re;
   dst->im = im;
   memcpy(X, src->X, c->N * sizeof *X);
   memcpy(t, src->t, c->N * sizeof *t);
+  if (src->has_sec) memcpy(sec, src->sec, c->N * sizeof *sec);
   memcpy(p, src->p, c->npar * sizeof *p);
   if (c->sys.nspec) {
     memcpy(re, src->re, c->sys.nspec * sizeof *re);
@@ -789,6 +793,7 @@ static void fill_point(whirl_cont *c) {
   pt->x = o->X;
   pt->p = o->p;
   pt->t = o->t;
+  pt->dir = o->has_sec ? o->sec : o->t;
   pt->s = o->s;
   pt->n_unstable = o->n_unstable;
   pt->stable = o->n_unstable < 0 ? -1 : o->n_unstable == 0;
@@ -1368,6 +1373,7 @@ static int predict_correct(whirl_cont *c, double *cosang, int *its) {
     }
     c->trial.s = c->cur.s + sqrt(cont_dist2(c, c->trial.X, c->cur.X));
     c->arclength_only = 0;
+    memcpy(c->trial.sec, c->dir, N * sizeof *c->dir);
     return 0;
   }
 }
@@ -1712,12 +1718,18 @@ static int closes_loop(whirl_cont *c) {
 
 /* The new point itself: regular, or the end at NMX or past x_max. */
 static void emit_step_point(whirl_cont *c) {
-  const cont_state *b = &c->trial;
+  cont_state *b = &c->trial;
   const int is_end = c->stats.steps >= c->opt.nmx;
   double xm = 0.0;
   for (size_t i = 0; i < c->n; ++i) xm = fmax(xm, fabs(b->X[i]));
   const int xmax = c->opt.x_max > 0 && xm > c->opt.x_max;
+  /* with the secant predictor, the point's direction is the one its step
+   * was predicted along (kept in b->sec by predict_correct): what AUTO
+   * stores with a point of orbits or a BVP (UDOTPS, written before CONTBV
+   * takes the new secant) */
+  b->has_sec = !c->opt.tangent_predictor;
   push(c, b, is_end || xmax ? WHIRL_PT_EP : WHIRL_PT_REGULAR);
+  b->has_sec = 0;
   if (is_end) finish(c, WHIRL_STOP_NMX);
   else if (xmax) finish(c, WHIRL_STOP_XMAX);
 }

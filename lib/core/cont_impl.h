@@ -17,6 +17,9 @@
 typedef struct cont_state {
   double *X;       /* X[n+1] = (x, p_icp) */
   double *t;       /* unit tangent t[n+1] (weighted norm) */
+  double *sec;     /* the unit direction the step that reached the point
+                      was predicted along (has_sec: the secant predictor) */
+  int has_sec;
   double *p;       /* full parameter vector p[npar] */
   double *re, *im; /* spectrum[nspec] */
   size_t nspec;    /* spectrum entries filled */

@@ -199,11 +199,14 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
   /* the tangent and tests from the corrector's last factorisation, as
    * AUTO: a Jacobian and a factorisation fewer a step */
   o->tangent_from_newton = 1;
-  /* AUTO's step control has no turn limit; the library's 0.2 rad halves
-   * steps on snaking branches of orbits (pla's c.pla.3: 9 000 steps where
-   * AUTO takes 5 485, 5 382 with 0.5 rad) and missed two of tor's LPs;
-   * 0.5 rad keeps obv's three BPs (doc/auto-reference.md, the turn limit) */
-  o->max_angle = 0.5;
+  /* AUTO's step control has no turn limit (ADPTDS counts Newton
+   * iterations alone), and neither have run files since 2026-12-06: with
+   * the stored secant of orbits and BVPs (whirl_point.dir) the 0.5 rad
+   * that obv once needed only parted the step sequences from AUTO's (spb's
+   * c.spb.3 halved its step at point 14 where AUTO's goes on, then 2 000
+   * points to AUTO's 1 554; chu's c.chu.2 ended at PAR(1) = 11.070 where
+   * AUTO's ends at 11.0844; doc/auto-reference.md, the turn limit) */
+  o->max_angle = acos(-1.0); /* pi: no turn is rejected */
   /* AUTO's step sequence: a special point starts the next step, and
    * AUTO's algebraic problems (equilibria, maps and their loci) list the
    * point two steps from the start as their second (CNRLAE), unless the
@@ -434,7 +437,11 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
       free(xT);
       return -1;
     }
-    for (size_t i = 0; i <= b->nb; i++) tan[i] = sg * pt->t[i];
+    /* the direction the next step takes: the last step's secant on a
+     * branch of orbits or a BVP, as AUTO stores (CONTBV), so that a
+     * restart from the label steps as AUTO's */
+    const double *d = pt->dir ? pt->dir : pt->t;
+    for (size_t i = 0; i <= b->nb; i++) tan[i] = sg * d[i];
   }
   so.tan = tan;
   so.stable = pt->stable;

@@ -784,11 +784,19 @@ int whirl_bvp_moments(const whirl_bvp *b, const double *X, double *m1, double *m
   double gx[5], gw[5], u[64], *v = n <= 64 ? u : malloc(n * sizeof *v);
   if (!v) return WHIRL_ENOMEM;
   colloc_basis_gauss_legendre(5, gx, gw); /* on [0, 1] */
+  /* the basis at the five points of an interval, the same on every one */
+  const size_t m = b->ncol;
+  double lg[5][COLLOC_BASIS_MAXCOL + 1];
+  for (int g = 0; g < 5; ++g) colloc_basis_lagrange_values(m, gx[g], lg[g]);
   for (size_t r = 0; r < n; ++r) m1[r] = m2[r] = 0.0;
   for (size_t i = 0; i < b->ntst; ++i) {
-    const double a = b->mesh[i], h = b->mesh[i + 1] - a;
+    const double h = b->mesh[i + 1] - b->mesh[i];
     for (int g = 0; g < 5; ++g) {
-      colloc_basis_eval_poly(n, b->ntst, b->ncol, b->mesh, X, a + h * gx[g], v);
+      for (size_t r = 0; r < n; ++r) v[r] = 0.0;
+      for (size_t k = 0; k <= m; ++k) {
+        const double *xk = X + n * (i * m + k);
+        for (size_t r = 0; r < n; ++r) v[r] += lg[g][k] * xk[r];
+      }
       for (size_t r = 0; r < n; ++r) m1[r] += h * gw[g] * v[r], m2[r] += h * gw[g] * v[r] * v[r];
     }
   }

@@ -257,6 +257,11 @@ typedef struct whirl_point {
   const double *x;     /* x[n] */
   const double *p;     /* p[npar] */
   const double *t;     /* unit tangent t[n+1] = (dx, dp_icp), weighted norm */
+  const double *dir;   /* unit direction of the branch as AUTO stores it
+                          with orbits and BVPs (UDOTPS): with the secant
+                          predictor, the direction the step to a regular
+                          point was predicted along (the secant of the step
+                          before it, or the start's tangent); else t */
   double s;            /* arclength from the start point */
   int n_unstable;      /* eigenvalues with Re > 0, -1 if no spectrum */
   int stable;          /* 1 stable, 0 unstable, -1 unknown */

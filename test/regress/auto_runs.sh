@@ -45,7 +45,7 @@
 #     - kar (IPS = 4): the L2-NORM of its first points, on the uniform
 #       mesh, as AUTO's own run's (AUTO's quadrature of the node values);
 #     - spb by its script: a BVP label restarted on a larger NTST (AUTO's
-#       ADAPT2 mesh) and a long branch not taken for a closed loop.
+#       ADAPT2 mesh), and its long branch to AUTO's UZSTOP at AUTO's PT.
 # TAP output.
 set -u
 : "${top_srcdir:=.}" "${top_builddir:=.}"
@@ -373,8 +373,13 @@ rc=$?
 ep=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 5, 6) + 0 == 15 && substr($0, 11, 4) + 0 == 9 { printf "%.10g", substr($0, 20, 19) }' "$tmp/spb.s/b.2" 2>/dev/null)
 awk -v x="${ep:-0}" 'BEGIN { d = (x + 0.132815) / 0.132815; exit !(d < 5e-6 && d > -5e-6) }'
 check $(( $? + rc )) "spb --script: runs 3-4 run (exit $rc), run 3's EP at PT 15 as AUTO's EP 19 (-1.32815E-01): ${ep:-none}"
-pts=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 9 { e = substr($0, 5, 6) + 0 } END { print e + 0 }' "$tmp/spb.s/b.2" 2>/dev/null)
-[ "${pts:-0}" -gt 1000 ]
-check $? "spb --script: c.spb.3 is not taken for a closed loop (its last EP at PT ${pts:-none}, NMX 2000; it was 565)"
+# ... and, since the stored direction is AUTO's secant and no turn of a
+# step is rejected (2026-12-06), takes AUTO's steps to its UZSTOP at
+# PAR(1) = -2.2, AUTO's PT 1554 (AUTO-07p 0.9.2's own run of spb.auto);
+# before, a turn of more than 0.5 rad halved its step at point 14 and it
+# ran its NMX of 2000 points to PAR(1) = -1.85
+last=$(awk 'substr($0, 1, 4) + 0 != 0 { e = substr($0, 5, 6) + 0; t = substr($0, 11, 4) + 0; p = substr($0, 20, 19) + 0 } END { print (e < 0 ? -e : e), t, p }' "$tmp/spb.s/b.2" 2>/dev/null)
+echo "$last" | awk '{ exit !($1 >= 1540 && $1 <= 1570 && $2 == -4 && ($3 + 2.2) ^ 2 < 1e-12) }'
+check $? "spb --script: c.spb.3 ends at its UZSTOP PAR(1) = -2.2 at AUTO's PT 1554 (PT, type, PAR(1): ${last:-none}; it was an EP at NMX 2000, and 565 before that)"
 echo "1..$n"
 exit $fail

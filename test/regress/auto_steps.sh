@@ -73,6 +73,18 @@ DS  =  0.02, DSMIN= 0.001, DSMAX=   0.2, IADS=   1
 NPAR = 11, THL =  {11: 0.0}, THU =  {}
 UZR = {1: [2.05, 2.2]}
 C
+# c.bru.3: run 2 to its NMX = 20 (the points AUTO's run 2 has there);
+# c.bru.4: from its end point (EP) on along the direction stored with it
+sed 's/NMX=  40/NMX=  20/' "$tmp/bru/c.bru.2" > "$tmp/bru/c.bru.3"
+cat > "$tmp/bru/c.bru.4" <<'C'
+NDIM=   2, IPS =   2, IRS =   5, ILP =   1
+ICP =  [1, 11]
+NTST=  20, NCOL=   4, IAD =   3, ISP =   1, ISW = 1, IPLT= 0, NBC= 0, NINT= 0
+NMX=  8, NPR=  100, MXBF=  10, IID =   2, ITMX= 8, ITNW= 5, NWTN= 3, JAC= 0
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-8
+DS  =  0.2, DSMIN= 0.001, DSMAX=   0.5, IADS=   1
+NPAR = 11, THL =  {11: 0.0}, THU =  {}
+C
 (cd "$tmp" && "$WHIRL" auto bru --runs=bru.1,bru.2@HB1 --quiet > bru.log 2>&1)
 check $? "whirl auto bru (equilibria, then the orbits from the HB) exits 0: $(tail -1 "$tmp/bru.log")"
 
@@ -101,6 +113,72 @@ out=$(rows_agree "$tmp/bru.out/b.bru.2@HB1" <<'R'
 R
 )
 check $? "run 2 (orbits): PT 2-3, 17-20 and 27-28 with their MAX U(1), MAX U(2) and the UZs at PT 18, 28 as AUTO's ${out:+($out)}"
+
+# AUTO stores with a point of orbits the direction its step was predicted
+# along (UDOTPS, the secant of the step before: CONTBV runs after STPLBV),
+# and a restart steps along it; the tangent at the point (stored before
+# 2026-12-06) sent c.bru.4's first step to PAR(1) = 2.149878 and every
+# later point off AUTO's.  AUTO-07p's rows: r2 = run(r1('HB1'), c='bru.3');
+# run(r2, c='bru.4') on these files.
+(cd "$tmp" && "$WHIRL" auto bru --runs=bru.1,bru.3@HB1,bru.4@EP2 --out=restart.out --quiet > restart.log 2>&1)
+check $? "whirl auto bru: run 2 to NMX = 20, then on from its end point, exits 0: $(tail -1 "$tmp/restart.log")"
+out=$(rows_agree "$tmp/restart.out/b.bru.4@EP2" <<'R'
+2 0 2.1507343538 2.4403464808 1.6187369918 2.7381509095 6.3450901871
+3 0 2.2393778497 2.5626571882 1.8529622566 2.9771121937 6.3912932850
+5 0 2.4330632581 2.8357451462 2.3402498602 3.4405138186 6.5219320965
+8 9 2.7387987615 3.2803831771 3.0976535252 4.1314342522 6.8185105593
+R
+)
+check $? "the restart from the end point of orbits steps along AUTO's stored secant: PT 2, 3, 5, 8 as AUTO's ${out:+($out)}"
+
+# No turn limit, as AUTO's ADPTDS: the constant solutions u of u' = 0 with
+# u(0)^2 + PAR(1)^2 = 1 (NBC = 1), a circle in (PAR(1), u), continued by
+# steps of 0.6 to 0.9, turning its secant by as many radians a step.  Until
+# 2026-12-06 run files halved a step that turned more than 0.5 rad (PT 2
+# at PAR(1) = 0.3 where AUTO's is at 0.6).  AUTO-07p's rows:
+# run(e='cbv', c='cbv.1') on these files.
+mkdir "$tmp/cbv"
+cat > "$tmp/cbv/cbv.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      F(1) = 0
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 0
+      U(1) = 1
+      END SUBROUTINE STPNT
+      SUBROUTINE BCND(NDIM,PAR,ICP,NBC,U0,U1,FB,IJAC,DBC)
+      IMPLICIT NONE
+      INTEGER NDIM, ICP(*), NBC, IJAC
+      DOUBLE PRECISION PAR(*), U0(NDIM), U1(NDIM), FB(NBC), DBC(NBC,*)
+      FB(1) = U0(1)**2 + PAR(1)**2 - 1
+      END SUBROUTINE BCND
+F
+cat > "$tmp/cbv/c.cbv.1" <<'C'
+NDIM=   1, IPS =   4, IRS =   0, ILP =   0
+ICP =  [1]
+NTST=   4, NCOL=   2, IAD =   0, ISP =   0, ISW = 1, IPLT= 0, NBC= 1, NINT= 0
+NMX=  12, NPR=  100, MXBF=  10, IID =   2, ITMX= 8, ITNW= 5, NWTN= 3, JAC= 0
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-8
+DS  =  0.6, DSMIN= 0.001, DSMAX=   0.9, IADS=   1
+NPAR = 11, THL =  {}, THU =  {}
+C
+(cd "$tmp" && "$WHIRL" auto cbv --quiet > cbv.log 2>&1)
+check $? "whirl auto cbv (a circle of constant solutions of a BVP, long steps) exits 0: $(tail -1 "$tmp/cbv.log")"
+out=$(rows_agree "$tmp/cbv.out/b.cbv.1" <<'R'
+2 0 6.0000005001E-001 7.9999996249E-001 7.9999996249E-001
+3 0 8.3365591488E-001 5.5228418010E-001 5.5228418010E-001
+4 0 9.0888604603E-001 4.1704454838E-001 4.1704454838E-001
+9 0 9.4626546508E-001 3.2339089287E-001 -3.2339089287E-001
+12 9 7.0739520286E-001 7.0681824182E-001 -7.0681824182E-001
+R
+)
+check $? "steps that turn by 0.6 rad and more are AUTO's, not halved: PT 2-4, 9 and the EP at PT 12 as AUTO's ${out:+($out)}"
 
 # the keys whirl auto writes, and the curve's maximum against the nodes'
 w="$tmp/bru.out/bru.2@HB1.whirl"
