@@ -269,6 +269,7 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   c->rhs = calloc(c->N, sizeof *c->rhs);
   c->row = calloc(c->N, sizeof *c->row);
   c->row2 = calloc(c->N, sizeof *c->row2);
+  c->sph = calloc(c->N, sizeof *c->sph);
   c->work = calloc(c->wlen, sizeof *c->work);
   c->dir = calloc(c->N, sizeof *c->dir);
   c->w2 = calloc(c->N, sizeof *c->w2);
@@ -278,7 +279,7 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   c->Xstart = calloc(c->N, sizeof *c->Xstart);
   c->Xfact = calloc(c->N, sizeof *c->Xfact);
   c->pfact = calloc(c->npar ? c->npar : 1, sizeof *c->pfact);
-  if (!c->fp || !c->f || !c->rhs || !c->row || !c->row2 || !c->work || !c->dir || !c->w2 ||
+  if (!c->fp || !c->f || !c->rhs || !c->row || !c->row2 || !c->sph || !c->work || !c->dir || !c->w2 ||
       !c->xw2 || !c->Xprev || !c->tprev || !c->Xstart || !c->Xfact || !c->pfact)
     goto nomem;
   if (set_weights(c, opt)) {
@@ -332,6 +333,7 @@ void whirl_cont_free(whirl_cont *c) {
   free(c->rhs);
   free(c->row);
   free(c->row2);
+  free(c->sph);
   free(c->work);
   free(c->Xfact);
   free(c->pfact);
@@ -509,12 +511,21 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
   int fresh = !chord || !c->fact_ok; /* factor at the next iterate */
   int refreshed = 0; /* factorisations made during this correction */
   memcpy(p, c->cur.p, c->npar * sizeof *p);
+  /* AUTO's equilibria: the sphere |X - X0|_w = s about the last point,
+   * linearised at each iterate (row 2 w (X - X0) / s) */
+  const int sphere = c->opt.arclength_sphere && c->correcting && s != 0.0 &&
+                     !c->switch_step && !natural_row(c, dir);
   if (chord || c->opt.newton_full > 0) border_row(c, dir, c->row2);
   for (int it = 1; it <= c->opt.newton_maxit; ++it) {
     p[c->opt.icp] = X[n];
     int rc = whirl_system_eval(&c->sys, X, p, c->f);
     ++c->stats.f_evals;
     if ((rc = classify(c, rc, "F")) != 0) return rc;
+    if (sphere) {
+      for (size_t i = 0; i < N; ++i) c->sph[i] = 2.0 * (X[i] - X0[i]) / s;
+      dir = c->sph;
+      border_row(c, dir, c->row2);
+    }
     /* AUTO's NWTN: a new Jacobian at the first iterations only */
     if (!chord && (c->opt.newton_full <= 0 || it <= c->opt.newton_full)) fresh = 1;
     if (!fresh && (rc = reborder(c)) == 4) fresh = 1;
@@ -530,7 +541,8 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
     double acc = 0.0;
     for (size_t i = 0; i < n; ++i) c->rhs[i] = c->f[i];
     for (size_t i = 0; i < N; ++i) acc += c->row[i] * (X[i] - X0[i]);
-    c->rhs[n] = acc - s;
+    /* the sphere's residual |X - X0|²_w / s − s (its row gives twice it) */
+    c->rhs[n] = sphere ? 0.5 * acc - s : acc - s;
     if ((rc = ext_solve(c, c->rhs, "bordered solve")) != 0) return rc;
     ++c->stats.newton_its;
     double dmax = 0.0, xmax = 0.0;
@@ -836,6 +848,7 @@ static void reset_run(whirl_cont *c) {
   c->started = 0;
   c->have_prev = 0;
   c->have_tprev = 0;
+  c->switch_step = 0;
   c->nskip = 0;
   c->first_hidden = 0;
   c->stop_reason = WHIRL_STOP_NONE;
@@ -1003,6 +1016,10 @@ int whirl_cont_start_switch(whirl_cont *c, const whirl_point *bp, int dir) {
   if (!ph) return WHIRL_FAIL(c, WHIRL_ENOMEM, "start_switch: out of memory");
   int rc = whirl_cont_switch_direction(c, bp, dir, ph);
   if (rc == WHIRL_OK) rc = whirl_cont_start_direction(c, bp->x, bp->p, ph);
+  /* the first step off a branch point on the hyperplane normal to the
+   * switch direction, whatever the corrector (AUTO's BSW in SOLVAE): the
+   * sphere about the branch point also meets the branch left */
+  c->switch_step = rc == WHIRL_OK;
   if (ph != phi) free(ph);
   return rc;
 }
@@ -1716,6 +1733,15 @@ static int closes_loop(whirl_cont *c) {
   return 1;
 }
 
+/* sec = (trial - cur) / |trial - cur|_w; 0 where the step has no length. */
+static int secant_of_step(const whirl_cont *c, double *sec) {
+  for (size_t i = 0; i < c->N; ++i) sec[i] = c->trial.X[i] - c->cur.X[i];
+  const double d = cont_norm(c, sec);
+  if (!(d > 0) || !isfinite(d)) return 0;
+  for (size_t i = 0; i < c->N; ++i) sec[i] /= d;
+  return 1;
+}
+
 /* The new point itself: regular, or the end at NMX or past x_max. */
 static void emit_step_point(whirl_cont *c) {
   cont_state *b = &c->trial;
@@ -1723,11 +1749,11 @@ static void emit_step_point(whirl_cont *c) {
   double xm = 0.0;
   for (size_t i = 0; i < c->n; ++i) xm = fmax(xm, fabs(b->X[i]));
   const int xmax = c->opt.x_max > 0 && xm > c->opt.x_max;
-  /* with the secant predictor, the point's direction is the one its step
-   * was predicted along (kept in b->sec by predict_correct): what AUTO
-   * stores with a point of orbits or a BVP (UDOTPS, written before CONTBV
-   * takes the new secant) */
-  b->has_sec = !c->opt.tangent_predictor;
+  /* the point's stored direction (opt.point_dir): the one its step was
+   * predicted along (kept in b->sec by predict_correct), or its step's
+   * secant */
+  b->has_sec = c->opt.point_dir == WHIRL_DIR_PREDICTOR ||
+               (c->opt.point_dir == WHIRL_DIR_SECANT && secant_of_step(c, b->sec));
   push(c, b, is_end || xmax ? WHIRL_PT_EP : WHIRL_PT_REGULAR);
   b->has_sec = 0;
   if (is_end) finish(c, WHIRL_STOP_NMX);
@@ -1750,6 +1776,7 @@ static int accept_step(whirl_cont *c, int its, double cosang) {
   const whirl_cont_options *o = &c->opt;
   memcpy(c->Xprev, c->cur.X, N * sizeof *c->Xprev);
   c->have_prev = 1;
+  c->switch_step = 0;
   memcpy(c->tprev, c->cur.t, N * sizeof *c->tprev);
   c->hprev = c->trial.s - c->cur.s;
   c->have_tprev = 1;

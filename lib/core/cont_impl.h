@@ -17,8 +17,8 @@
 typedef struct cont_state {
   double *X;       /* X[n+1] = (x, p_icp) */
   double *t;       /* unit tangent t[n+1] (weighted norm) */
-  double *sec;     /* the unit direction the step that reached the point
-                      was predicted along (has_sec: the secant predictor) */
+  double *sec;     /* the point's stored direction (opt.point_dir; has_sec
+                      when it is not the tangent) */
   int has_sec;
   double *p;       /* full parameter vector p[npar] */
   double *re, *im; /* spectrum[nspec] */
@@ -61,6 +61,10 @@ struct whirl_cont {
   double *rhs;        /* N */
   double *row;        /* N: border row of the current factorisation */
   double *row2;       /* N: border row wanted (chord Newton) */
+  int switch_step;    /* the first step off a branch point: on the
+                         hyperplane even with opt.arclength_sphere */
+  double *sph;        /* N: 2 (X - X0) / ds, the sphere's row direction
+                         (opt.arclength_sphere) */
   int fact_ok;        /* a factorisation chord Newton may use is held */
   int correcting;     /* inside cont_correct (natural_row applies) */
   int arclength_only; /* this step's natural-parameter correction failed:

@@ -195,7 +195,10 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
     o->newton_scale_before = 1;
   }
   o->newton_maxit = s->itnw;
-  o->newton_full = s->nwtn; /* AUTO's NWTN (0 unless the run file says) */
+  /* AUTO's NWTN (0 unless the run file says) for orbits and BVPs; its
+   * algebraic corrector (SOLVAE, EQ_STEP = sphere) takes a new Jacobian
+   * every iteration */
+  o->newton_full = b->kind == WHIRL_SOL_EQ && s->eq_sphere ? 0 : s->nwtn;
   /* the tangent and tests from the corrector's last factorisation, as
    * AUTO: a Jacobian and a factorisation fewer a step */
   o->tangent_from_newton = 1;
@@ -213,9 +216,22 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
    * start is a switch at a branch point (ISW = -1 stores it) */
   o->auto_steps = 1;
   o->hide_first_step = b->kind == WHIRL_SOL_EQ && !b->bp && s->isw >= 0;
-  /* ... and predict along the tangent (STEPAE), where orbits and BVPs
-   * take the secant of the last two points (CONTBV) */
-  o->tangent_predictor = b->kind == WHIRL_SOL_EQ;
+  /* ... and, with EQ_STEP = sphere (whirl auto writes it), algebraic
+   * branches predict along the secant of the last two points, as orbits
+   * and BVPs (CONTBV), but correct on the sphere of radius DS about the
+   * last point (ae.f90's SOLVAE; its UDOT is that secant) where orbits and
+   * BVPs keep the hyperplane; else along the tangent onto its hyperplane,
+   * whirl's (before 2026-12-06 for AUTO's files too: the points of a
+   * branch curved within a step were not AUTO's, auto_steps.sh; for run
+   * files the hyperplane stays the default: with the sphere the SFD
+   * rotor's discovery, discover_sfd.sh, lost its isola).  Orbits and
+   * BVPs store with a point the direction of the step that reached it
+   * (UDOTPS); an algebraic restart takes the tangent oriented by the
+   * stored direction (STPRAE), so the tangent is stored there. */
+  const int sphere = b->kind == WHIRL_SOL_EQ && s->eq_sphere;
+  o->tangent_predictor = b->kind == WHIRL_SOL_EQ && !sphere;
+  o->arclength_sphere = sphere;
+  o->point_dir = b->kind == WHIRL_SOL_EQ ? WHIRL_DIR_TANGENT : WHIRL_DIR_PREDICTOR;
   o->start_as_given = b->as_given;
   o->lead = b->lead;
   o->detect_lp = s->ilp;

@@ -62,6 +62,11 @@ typedef struct whirl_run_settings {
                                    OpenMP's default, OMP_NUM_THREADS) */
   int mesh_jumps;               /* MESH_RULE = jumps: orbits' meshes by
                                    AUTO's EQDF (0: derivative, whirl's) */
+  int eq_sphere;                /* EQ_STEP = sphere: algebraic branches
+                                   predict along the secant onto the sphere
+                                   of radius DS about the last point, as
+                                   AUTO's SOLVAE (0: tangent, whirl's
+                                   hyperplane) */
   int orbit_max_nodes;          /* ORBIT_MAX = nodes: an orbit's MAX U(i) is
                                    AUTO's, the largest node value (0: the
                                    maximum of the collocation polynomial) */

@@ -137,6 +137,20 @@ typedef struct whirl_cont_options {
                           points, as AUTO's (ae.f90: STPRAE, FNLPAE);
                           -1 (default): the continuation parameter */
   int tangent_predictor; /* 0: secant predictor (default), 1: tangent */
+  int arclength_sphere; /* 1: a step's corrector keeps the weighted distance
+                          of the new point from the last one equal to the
+                          step, |X - X0|_w = ds (AUTO-07p's equilibria and
+                          maps, ae.f90 SOLVAE), in place of the hyperplane
+                          <w dir, X - X0> = ds normal to the direction;
+                          the start, branch switches and the localisation
+                          of special points keep their hyperplanes */
+  int point_dir;       /* what whirl_point.dir holds at a regular point:
+                          WHIRL_DIR_TANGENT (0, default) the tangent t;
+                          WHIRL_DIR_PREDICTOR the direction its step was
+                          predicted along (AUTO's UDOTPS of orbits and
+                          BVPs, stored before CONTBV takes the new secant);
+                          WHIRL_DIR_SECANT the unit secant of its step
+                          (AUTO's UDOT of equilibria, SOLVAE) */
   int tangent_from_newton; /* 0: the tangent and tests of a new point from
                             a fresh Jacobian there (default); 1: from the
                             corrector's last factorisation (at the iterate
@@ -249,6 +263,8 @@ typedef struct whirl_cont_stats {
 
 /* One point of a branch.  All arrays belong to the continuation object and
  * are valid until the next whirl_cont_step / whirl_cont_start / free. */
+enum { WHIRL_DIR_TANGENT = 0, WHIRL_DIR_PREDICTOR = 1, WHIRL_DIR_SECANT = 2 };
+
 typedef struct whirl_point {
   size_t index;        /* PT: 0 for the start point */
   int type;            /* whirl_point_type */
@@ -257,11 +273,9 @@ typedef struct whirl_point {
   const double *x;     /* x[n] */
   const double *p;     /* p[npar] */
   const double *t;     /* unit tangent t[n+1] = (dx, dp_icp), weighted norm */
-  const double *dir;   /* unit direction of the branch as AUTO stores it
-                          with orbits and BVPs (UDOTPS): with the secant
-                          predictor, the direction the step to a regular
-                          point was predicted along (the secant of the step
-                          before it, or the start's tangent); else t */
+  const double *dir;   /* unit direction of the branch as the options'
+                          point_dir asks (AUTO's stored direction); t at
+                          special points and by default */
   double s;            /* arclength from the start point */
   int n_unstable;      /* eigenvalues with Re > 0, -1 if no spectrum */
   int stable;          /* 1 stable, 0 unstable, -1 unknown */

@@ -180,10 +180,54 @@ R
 )
 check $? "steps that turn by 0.6 rad and more are AUTO's, not halved: PT 2-4, 9 and the EP at PT 12 as AUTO's ${out:+($out)}"
 
+# AUTO's algebraic corrector (ae.f90, SOLVAE): the next point at distance
+# DS from the last on the secant's prediction, a sphere about it, not the
+# tangent's hyperplane: x^2 + PAR(1)^2 = 1 from (1, 0), DS = 0.1, so each
+# step turns the branch by 2 asin(DS/2).  Until 2026-12-06 whirl predicted
+# along the tangent onto its hyperplane: PT 2 (two steps out) at PAR(1) =
+# 0.198997 where AUTO's is at 0.198751, and every later point off AUTO's.
+# AUTO-07p's rows: run(e='circ', c='circ.1') on these files.
+mkdir "$tmp/circ"
+cat > "$tmp/circ/circ.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      F(1) = U(1)**2 + PAR(1)**2 - 1
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 0
+      U(1) = 1
+      END SUBROUTINE STPNT
+F
+cat > "$tmp/circ/c.circ.1" <<'C'
+NDIM=   1, IPS =   1, IRS =   0, ILP =   0
+ICP =  [1]
+NTST=  20, NCOL=   4, IAD =   3, ISP =   0, ISW = 1, IPLT= 0, NBC= 0, NINT= 0
+NMX=  12, NPR=  100, MXBF=  10, IID =   2, ITMX= 8, ITNW= 5, NWTN= 3, JAC= 0
+EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-8
+DS  =  0.1, DSMIN= 0.001, DSMAX=   0.8, IADS=   1
+NPAR = 11, THL =  {}, THU =  {}
+C
+(cd "$tmp" && "$WHIRL" auto circ --quiet > circ.log 2>&1)
+check $? "whirl auto circ (equilibria on a circle) exits 0: $(tail -1 "$tmp/circ.log")"
+out=$(rows_agree "$tmp/circ.out/b.circ.1" <<'R'
+2 0 1.9875111396E-001 9.8004999602E-001 9.8004999602E-001
+3 0 2.9563978465E-001 9.5529949112E-001 9.5529949112E-001
+6 0 5.6484907166E-001 8.2519423547E-001 8.2519423547E-001
+9 0 7.8356027678E-001 6.2131577531E-001 6.2131577531E-001
+12 9 9.3222039568E-001 3.6189105250E-001 3.6189105250E-001
+R
+)
+check $? "equilibria step as AUTO's (the secant's prediction onto the sphere of radius DS): PT 2, 3, 6, 9 and the EP at PT 12 as AUTO's ${out:+($out)}"
+
 # the keys whirl auto writes, and the curve's maximum against the nodes'
 w="$tmp/bru.out/bru.2@HB1.whirl"
-grep -q '^MESH_RULE = jumps$' "$w" && grep -q '^ORBIT_MAX = nodes$' "$w"
-check $? "bru.2@HB1.whirl: MESH_RULE = jumps and ORBIT_MAX = nodes, AUTO's"
+grep -q '^MESH_RULE = jumps$' "$w" && grep -q '^ORBIT_MAX = nodes$' "$w" && grep -q '^EQ_STEP = sphere$' "$w"
+check $? "bru.2@HB1.whirl: MESH_RULE = jumps, ORBIT_MAX = nodes and EQ_STEP = sphere, AUTO's"
 sed -e 's/^ORBIT_MAX = nodes$/ORBIT_MAX = curve/' -e 's|^OUT .*$|OUT = curve.out|' "$w" > "$tmp/bru.out/curve.whirl"
 (cd "$tmp/bru.out" && "$WHIRL" run curve.whirl --quiet --no-plot > /dev/null 2>&1)
 check $? "the same run with ORBIT_MAX = curve exits 0"
@@ -193,7 +237,8 @@ paste "$tmp/bru.out/bru.2@HB1.out/branches.tsv" "$tmp/bru.out/curve.out/branches
     END { exit !(rows > 30 && !bad && above > 0) }'
 check $? "ORBIT_MAX = curve: every orbit's maximum at or above the largest node value, some above it"
 for kv in "ORBIT_MAX = sideways:ORBIT_MAX: 'sideways' is neither curve nor nodes" \
-          "MESH_RULE = 2:MESH_RULE: '2' is neither derivative nor jumps"; do
+          "MESH_RULE = 2:MESH_RULE: '2' is neither derivative nor jumps" \
+          "EQ_STEP = ball:EQ_STEP: 'ball' is neither tangent nor sphere"; do
   key=${kv%%:*} msg=${kv#*:}
   sed -e "s/^${key%% *} = .*\$/$key/" -e 's|^OUT .*$|OUT = bad.out|' "$w" > "$tmp/bru.out/bad.whirl"
   (cd "$tmp/bru.out" && "$WHIRL" run bad.whirl --quiet --no-plot > bad.log 2>&1)

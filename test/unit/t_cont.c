@@ -703,6 +703,55 @@ static void test_loop(void) {
   whirl_branch_free(b);
 }
 
+/* AUTO's algebraic corrector (arclength_sphere): each new point of the
+ * circle x^2 + p^2 = 1 at the step's chord from the last, |dX| = ds, the
+ * arc 2 asin(ds/2) (the hyperplane's point lies farther, its distance to
+ * the last sqrt(ds^2 + h^2) past the tangent); and the stored directions
+ * (point_dir): the step's own secant, or the one it was predicted along,
+ * the secant of the step before. */
+static void test_sphere(int point_dir) {
+  whirl_system s = {.name = "circle", .n = 1, .npar = 1, .F = circ_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = o.ds_max = 0.3;
+  o.ds_min = 1e-3;
+  o.newton_tol = 1e-12;
+  o.max_angle = 3.0;
+  o.detect_lp = o.detect_bp = o.detect_hb = 0;
+  o.arclength_sphere = 1;
+  o.point_dir = point_dir;
+  char err[256];
+  whirl_cont *c = whirl_cont_alloc(&s, &o, err, sizeof err);
+  double x0 = 1.0, p0 = 0.0, X[12][2], D[12][2];
+  int rc = c ? whirl_cont_start(c, &x0, &p0, 1) : -1;
+  size_t m = 0;
+  while (rc == WHIRL_OK && m < 12 && (rc = whirl_cont_step(c)) == WHIRL_OK) {
+    const whirl_point *pt = whirl_cont_point(c);
+    if (pt->index == 0) continue;
+    X[m][0] = pt->x[0], X[m][1] = pt->p[0];
+    D[m][0] = pt->dir[0], D[m][1] = pt->dir[1];
+    ++m;
+  }
+  ok(m == 12, "sphere, point_dir %d: 12 points (rc %d)", point_dir, rc);
+  double worst = 0.0, wdir = 0.0;
+  for (size_t k = 1; k < m; ++k) {
+    const double dx = X[k][0] - X[k - 1][0], dp = X[k][1] - X[k - 1][1];
+    const double h = hypot(dx, dp);
+    worst = fmax(worst, fabs(h - 0.3));
+    /* the direction the point stores: its step's secant, or the previous */
+    if (k >= 2) {
+      const size_t j = point_dir == WHIRL_DIR_SECANT ? k : k - 1;
+      const double ex = (X[j][0] - X[j - 1][0]) / 0.3, ep = (X[j][1] - X[j - 1][1]) / 0.3;
+      wdir = fmax(wdir, hypot(D[k][0] - ex, D[k][1] - ep));
+    }
+  }
+  ok(m == 12 && worst < 1e-10, "sphere: every chord is ds = 0.3 (worst |chord - ds| %.1e)", worst);
+  ok(m == 12 && wdir < 1e-9, "sphere, point_dir %s: whirl_point.dir is %s (worst %.1e)",
+     point_dir == WHIRL_DIR_SECANT ? "SECANT" : "PREDICTOR",
+     point_dir == WHIRL_DIR_SECANT ? "the step's own secant" : "the previous step's secant", wdir);
+  whirl_cont_free(c);
+}
+
 static void test_uz(void) {
   whirl_system s = {.name = "cusp", .n = 1, .npar = 2, .F = cusp_F, .Fx = cusp_Fx};
   whirl_cont_options o;
@@ -1739,6 +1788,8 @@ int main(void) {
   test_maps();
   test_hopf_nearest_switch();
   test_loop();
+  test_sphere(WHIRL_DIR_SECANT);
+  test_sphere(WHIRL_DIR_PREDICTOR);
   test_loop_weighted();
   test_kink_no_fold();
   test_uz();
