@@ -46,14 +46,18 @@ static void gauss_state(const whirl_bvp *b, bvp_scratch *s, const double *X, siz
                         size_t g) {
   const size_t n = b->n, m = b->ncol;
   const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
-  memset(s->u, 0, n * sizeof *s->u);
-  memset(s->du, 0, n * sizeof *s->du);
-  for (size_t k = 0; k <= m; ++k) {
-    const double *node = X + n * (i * m + k);
+  const double *node = X + n * (i * m);
+  double *restrict u = s->u, *restrict du = s->du;
+  for (size_t r = 0; r < n; ++r) { /* the first node's terms: no memset */
+    u[r] = lv[0] * node[r];
+    du[r] = dv[0] * node[r];
+  }
+  for (size_t k = 1; k <= m; ++k) {
+    node += n;
     const double a = lv[k], d = dv[k];
     for (size_t r = 0; r < n; ++r) {
-      s->u[r] += a * node[r];
-      s->du[r] += d * node[r];
+      u[r] += a * node[r];
+      du[r] += d * node[r];
     }
   }
 }
@@ -661,6 +665,7 @@ whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
   for (size_t i = 0; i <= N; ++i) b->mesh[i] = (double)i / (double)N;
   b->mesh[N] = 1.0;
   colloc_basis_gauss_legendre(m, b->gs, b->gw);
+  colloc_basis_lagrange_integrals(m, b->wint);
   colloc_basis_derivative_weights(m, b->dm);
   b->adapt_every = o->adapt_every;
   for (size_t g = 0; g < m; ++g)
@@ -746,8 +751,7 @@ double whirl_bvp_l2norm(const whirl_bvp *b, const double *X) {
    * Newton-Cotes weights of its NCOL + 1 equally spaced nodes (WINT), not
    * a Gauss rule of the polynomial: the two part by 1 % on a coarse mesh
    * with a boundary layer (demo kar's first points, uniform NTST 40) */
-  double W[COLLOC_BASIS_MAXCOL + 1];
-  colloc_basis_lagrange_integrals(m, W);
+  const double *W = b->wint;
   double s = 0.0;
   for (size_t i = 0; i < b->ntst; ++i) {
     const double h = b->mesh[i + 1] - b->mesh[i];

@@ -41,6 +41,8 @@ struct whirl_bvp {
   /* Gauss points and weights on [0, 1]; the Lagrange basis and its
    * derivative there, L[g*(ncol+1) + k] = l_k(σ_g), D likewise l_k' */
   double gs[COLLOC_BASIS_MAXCOL], gw[COLLOC_BASIS_MAXCOL];
+  double wint[COLLOC_BASIS_MAXCOL + 1]; /* ∫₀¹ of each node's Lagrange
+                                           basis polynomial (the norms) */
   double L[COLLOC_BASIS_MAXCOL * (COLLOC_BASIS_MAXCOL + 1)];
   double D[COLLOC_BASIS_MAXCOL * (COLLOC_BASIS_MAXCOL + 1)];
 
