@@ -1223,10 +1223,12 @@ static void curved_guess(whirl_cont *c) {
 /* The system may change the representation of its unknowns between steps
  * (a new collocation mesh), once every point of the last step has been
  * handed out. */
-/* Does the run evaluate any test function (LP, BP, HB, PD, the system's)? */
-static int detects_anything(const whirl_cont *c) {
+/* Tests that compare a point's determinant, spectrum or system tests
+ * with the next point's: after a change of representation they need the
+ * current point analysed anew. */
+static int needs_reanalysis(const whirl_cont *c) {
   const whirl_cont_options *o = &c->opt;
-  return o->detect_lp || o->detect_bp || o->detect_hb || o->detect_pd ||
+  return o->detect_bp || o->detect_hb || o->detect_pd ||
          (o->detect_sys && c->sys.test && c->sys.ntest);
 }
 
@@ -1250,10 +1252,13 @@ static int remap_if_asked(whirl_cont *c) {
   }
   memcpy(c->dir, c->cur.t, N * sizeof *c->dir);
   /* the mapped tangent is the tangent on the new mesh (the map is
-   * linear); the determinant and the spectrum are analysed there anew
-   * only when a test compares them with the next point's (whirl's
-   * detection after a mesh change), not for the stability alone */
-  if (!detects_anything(c)) return 0;
+   * linear), and the LP test is its parameter's rate; the determinant and
+   * the spectrum are analysed there anew only when a test compares them
+   * with the next point's (whirl's detection after a mesh change), not
+   * for the stability or the LP test alone (a Jacobian and a
+   * factorisation a mesh change: spb's c.spb.3 made 518 of them) */
+  c->cur.psi_lp = c->cur.t[cont_lead(c)];
+  if (!needs_reanalysis(c)) return 0;
   rc = cont_analyse(c, &c->cur, c->dir);
   if (rc < 0) return rc;
   /* ... but the mapped tangent kept where the new one leaves it by more
@@ -1297,7 +1302,7 @@ static int recorrect_remapped(whirl_cont *c) {
   memcpy(c->cur.X, c->trial.X, N * sizeof *c->cur.X);
   c->cur.p[c->opt.icp] = c->cur.X[c->n];
   ++c->stats.recorrected;
-  if (!detects_anything(c)) return 0;
+  if (!needs_reanalysis(c)) return 0;
   rc = cont_analyse(c, &c->cur, c->dir); /* the tests at the corrected point */
   return rc < 0 ? rc : rc > 0 ? 1 : 0;
 }
