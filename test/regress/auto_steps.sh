@@ -131,19 +131,16 @@ R
 )
 check $? "the restart from the end point of orbits steps along AUTO's stored secant: PT 2, 3, 5, 8 as AUTO's ${out:+($out)}"
 
-# No turn limit, as AUTO's ADPTDS: the constant solutions u of u' = 0 with
-# u(0)^2 + PAR(1)^2 = 1 (NBC = 1), a circle in (PAR(1), u), continued by
-# steps of 0.6 to 0.9, turning its secant by as many radians a step.  Until
-# 2026-12-06 run files halved a step that turned more than 0.5 rad (PT 2
-# at PAR(1) = 0.3 where AUTO's is at 0.6).  AUTO-07p's rows:
-# run(e='cbv', c='cbv.1') on these files.
-mkdir "$tmp/cbv"
-cat > "$tmp/cbv/cbv.f90" <<'F'
+# a one-dimensional demo NAME: FUNC's F(1) = $2, STPNT's U(1) = 1,
+# PAR(1) = 0, and the Fortran $3 after them (BCND)
+scalar_demo() {
+  mkdir "$tmp/$1"
+  cat > "$tmp/$1/$1.f90" <<F
       SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
       IMPLICIT NONE
       INTEGER NDIM, IJAC, ICP(*)
       DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
-      F(1) = 0
+      F(1) = $2
       END SUBROUTINE FUNC
       SUBROUTINE STPNT(NDIM,U,PAR,T)
       IMPLICIT NONE
@@ -152,13 +149,22 @@ cat > "$tmp/cbv/cbv.f90" <<'F'
       PAR(1) = 0
       U(1) = 1
       END SUBROUTINE STPNT
-      SUBROUTINE BCND(NDIM,PAR,ICP,NBC,U0,U1,FB,IJAC,DBC)
+$3
+F
+}
+
+# No turn limit, as AUTO's ADPTDS: the constant solutions u of u' = 0 with
+# u(0)^2 + PAR(1)^2 = 1 (NBC = 1), a circle in (PAR(1), u), continued by
+# steps of 0.6 to 0.9, turning its secant by as many radians a step.  Until
+# 2026-12-06 run files halved a step that turned more than 0.5 rad (PT 2
+# at PAR(1) = 0.3 where AUTO's is at 0.6).  AUTO-07p's rows:
+# run(e='cbv', c='cbv.1') on these files.
+scalar_demo cbv 0 "      SUBROUTINE BCND(NDIM,PAR,ICP,NBC,U0,U1,FB,IJAC,DBC)
       IMPLICIT NONE
       INTEGER NDIM, ICP(*), NBC, IJAC
       DOUBLE PRECISION PAR(*), U0(NDIM), U1(NDIM), FB(NBC), DBC(NBC,*)
       FB(1) = U0(1)**2 + PAR(1)**2 - 1
-      END SUBROUTINE BCND
-F
+      END SUBROUTINE BCND"
 cat > "$tmp/cbv/c.cbv.1" <<'C'
 NDIM=   1, IPS =   4, IRS =   0, ILP =   0
 ICP =  [1]
@@ -187,22 +193,7 @@ check $? "steps that turn by 0.6 rad and more are AUTO's, not halved: PT 2-4, 9 
 # along the tangent onto its hyperplane: PT 2 (two steps out) at PAR(1) =
 # 0.198997 where AUTO's is at 0.198751, and every later point off AUTO's.
 # AUTO-07p's rows: run(e='circ', c='circ.1') on these files.
-mkdir "$tmp/circ"
-cat > "$tmp/circ/circ.f90" <<'F'
-      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
-      IMPLICIT NONE
-      INTEGER NDIM, IJAC, ICP(*)
-      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
-      F(1) = U(1)**2 + PAR(1)**2 - 1
-      END SUBROUTINE FUNC
-      SUBROUTINE STPNT(NDIM,U,PAR,T)
-      IMPLICIT NONE
-      INTEGER NDIM
-      DOUBLE PRECISION U(NDIM), PAR(*), T
-      PAR(1) = 0
-      U(1) = 1
-      END SUBROUTINE STPNT
-F
+scalar_demo circ "U(1)**2 + PAR(1)**2 - 1" ""
 cat > "$tmp/circ/c.circ.1" <<'C'
 NDIM=   1, IPS =   1, IRS =   0, ILP =   0
 ICP =  [1]
