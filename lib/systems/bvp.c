@@ -549,18 +549,21 @@ static int alloc_arrays(whirl_bvp *b) {
   b->Jp = malloc((b->nx + 1) * sizeof *b->Jp);
   b->Ji = malloc(b->nnz * sizeof *b->Ji);
   b->Jx = malloc(b->nnz * sizeof *b->Jx);
+  b->map_idx = malloc(b->nnodes * sizeof *b->map_idx);
   const size_t sizes[] = {np, b->nbc, b->nbc, nc, nc, n * b->nnodes,
                           icacc_size(b) * b->ntst * b->ncol,
                           b->ntst + 1, n * b->nnodes, b->ntst, b->ntst + 1,
-                          n * b->ntst};
+                          n * b->ntst, b->nnodes * (b->ncol + 1)};
   double **ptrs[] = {&b->pt, &b->fb, &b->fbm, &b->cp, &b->cm, &b->ref, &b->icacc,
-                     &b->old_mesh, &b->copy, &b->E, &b->Q, &b->Dm};
+                     &b->old_mesh, &b->copy, &b->E, &b->Q, &b->Dm, &b->map_L};
   const size_t nptr = sizeof sizes / sizeof sizes[0];
   size_t tot = 0;
   for (size_t k = 0; k < nptr; ++k) tot += sizes[k] + 1;
   b->buf = calloc(tot, sizeof *b->buf);
   b->scr = calloc((size_t)b->nthreads, sizeof *b->scr);
-  if (!b->mesh || !b->free || !b->Jp || !b->Ji || !b->Jx || !b->buf || !b->scr) return -1;
+  if (!b->mesh || !b->free || !b->Jp || !b->Ji || !b->Jx || !b->map_idx || !b->buf ||
+      !b->scr)
+    return -1;
   double *q = b->buf;
   for (size_t k = 0; k < nptr; ++k) {
     *ptrs[k] = q;
@@ -599,9 +602,11 @@ static int bvp_remap(double *const *v, size_t nv, const double *p, void *data) {
     return WHIRL_FAIL(b, WHIRL_EINVAL, "mesh adaptation: the solution is not finite "
                       "or an interval degenerate (%d)", rc);
   if (rc == 0) return 0;
+  /* one plan (intervals and basis at the new nodes) for every vector */
+  colloc_basis_map_plan(b->ncol, N, b->old_mesh, b->mesh, b->map_idx, b->map_L);
   for (size_t k = 0; k < nv; ++k)
-    colloc_basis_map_nodes(b->n, b->ncol, N, b->old_mesh, b->mesh, b->copy, v[k]);
-  colloc_basis_map_nodes(b->n, b->ncol, N, b->old_mesh, b->mesh, b->copy, b->ref);
+    colloc_basis_map_apply(b->n, b->ncol, N, b->map_idx, b->map_L, b->copy, v[k]);
+  colloc_basis_map_apply(b->n, b->ncol, N, b->map_idx, b->map_L, b->copy, b->ref);
   ++b->adaptations;
   return 1;
 }
@@ -700,6 +705,7 @@ void whirl_bvp_free(whirl_bvp *b) {
   free(b->Jp);
   free(b->Ji);
   free(b->Jx);
+  free(b->map_idx);
   free(b->buf);
   for (int t = 0; b->scr && t < b->nthreads; ++t) free(b->scr[t].block);
   free(b->scr);

@@ -63,6 +63,8 @@ struct whirl_bvp {
   size_t adaptations;
   double dm[COLLOC_BASIS_MAXCOL + 1];
   double *old_mesh, *copy, *E, *Q, *Dm;
+  double *map_L;    /* the remap's plan: Lagrange values at the new nodes */
+  size_t *map_idx;  /* and their intervals on the old mesh */
   char errmsg[WHIRL_ERRMSG_SIZE];
 };
 

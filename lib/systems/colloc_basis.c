@@ -288,6 +288,37 @@ void colloc_basis_map_nodes(size_t n, size_t m, size_t N, const double *old,
   }
 }
 
+void colloc_basis_map_plan(size_t m, size_t N, const double *old, const double *mesh,
+                           size_t *idx, double *L) {
+  const size_t nnodes = N * m + 1;
+  for (size_t ii = 0; ii < N; ++ii) {
+    const double h = mesh[ii + 1] - mesh[ii];
+    for (size_t k = 0; k <= m; ++k) {
+      const size_t j = ii * m + k;
+      double t = j == nnodes - 1 ? 1.0 : mesh[ii] + h * (double)k / (double)m;
+      if (t < 0.0 || t > 1.0) t -= floor(t); /* as colloc_basis_eval_poly */
+      const size_t i = colloc_basis_find_interval(old, N, t);
+      idx[j] = i;
+      colloc_basis_lagrange_values(m, (t - old[i]) / (old[i + 1] - old[i]), L + j * (m + 1));
+    }
+  }
+}
+
+void colloc_basis_map_apply(size_t n, size_t m, size_t N, const size_t *idx,
+                            const double *L, double *copy, double *v) {
+  const size_t nnodes = N * m + 1;
+  memcpy(copy, v, nnodes * n * sizeof *v);
+  for (size_t j = 0; j < nnodes; ++j) {
+    const double *l = L + j * (m + 1);
+    double *x = v + n * j;
+    for (size_t r = 0; r < n; ++r) x[r] = 0.0;
+    for (size_t k = 0; k <= m; ++k) {
+      const double *xk = copy + n * (idx[j] * m + k);
+      for (size_t r = 0; r < n; ++r) x[r] += l[k] * xk[r];
+    }
+  }
+}
+
 void colloc_basis_lagrange_integrals(size_t m, double *W) {
   double gs[COLLOC_BASIS_MAXCOL], gw[COLLOC_BASIS_MAXCOL], l[COLLOC_BASIS_MAXCOL + 1];
   /* W_k = int_0^1 l_k: m Gauss points integrate the degree-m l_k exactly */

@@ -104,4 +104,14 @@ int colloc_basis_adapt_mesh(size_t n, size_t mold, size_t nold, int periodic, co
 void colloc_basis_map_nodes(size_t n, size_t m, size_t N, const double *old,
                             const double *mesh, double *copy, double *v);
 
+/* The same map as a plan for several vectors: for each of the N m + 1
+ * nodes j of mesh its interval idx[j] on old and the Lagrange values
+ * L[j (m + 1) + k] there (the arithmetic of colloc_basis_eval_poly), then
+ * applied to one vector in place (scratch copy[(N m + 1) n]): the same
+ * bytes as colloc_basis_map_nodes, the search and the basis once. */
+void colloc_basis_map_plan(size_t m, size_t N, const double *old, const double *mesh,
+                           size_t *idx, double *L);
+void colloc_basis_map_apply(size_t n, size_t m, size_t N, const size_t *idx,
+                            const double *L, double *copy, double *v);
+
 #endif
