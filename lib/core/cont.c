@@ -215,8 +215,10 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   else if (!opt) why = "no options";
   else if (opt->icp >= sys->npar) why = "ICP is not a parameter index of the system";
   else if (!(opt->ds_min > 0) || !(opt->ds_max >= opt->ds_min) ||
-           !(fabs(opt->ds) >= opt->ds_min) || !(fabs(opt->ds) <= opt->ds_max))
-    why = "need 0 < DSMIN <= |DS| <= DSMAX";
+           !(fabs(opt->ds) >= opt->ds_min) ||
+           !(opt->auto_steps || fabs(opt->ds) <= opt->ds_max))
+    why = opt->auto_steps ? "need 0 < DSMIN <= |DS| and DSMIN <= DSMAX"
+                          : "need 0 < DSMIN <= |DS| <= DSMAX";
   else if (!(opt->p_min < opt->p_max)) why = "need RL0 (p_min) < RL1 (p_max)";
   else if (!(opt->newton_tol > 0) || opt->newton_maxit < 1 || !(opt->newton_tol_par >= 0))
     why = "need newton_tol > 0, newton_tol_par >= 0 and newton_maxit >= 1";

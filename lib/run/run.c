@@ -176,7 +176,9 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
   const whirl_run_settings *s = R->s;
   whirl_cont_options_default(o);
   o->icp = (size_t)b->icp;
-  o->ds = fmin(fmax(fabs(s->ds), s->dsmin), s->dsmax) * b->ds_scale; /* AUTO clips */
+  /* AUTO's first steps take DS as given, past DSMAX too (RDS = DS; only
+   * ADPTDS clips to DSMAX): ab's c.ab.2 (DS 0.1, DSMAX 0.05) */
+  o->ds = fmax(fabs(s->ds), s->dsmin) * b->ds_scale;
   o->ds_min = s->dsmin * b->ds_scale;
   o->ds_max = s->dsmax * b->ds_scale;
   o->nmx = (size_t)s->nmx;

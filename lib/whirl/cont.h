@@ -199,7 +199,10 @@ typedef struct whirl_cont_options {
                           are found again from there; AUTO's LCSPBV), and
                           the length then follows AUTO's ADPTDS on the
                           Newton iterations (x2 after 1, x1.5 after 2,
-                          x1.1 up to newton_maxit/2, x0.5 at newton_maxit).
+                          x1.1 up to newton_maxit/2, x0.5 at newton_maxit),
+                          bounded by ds_max; the first steps take ds as
+                          given, even past ds_max (AUTO's RDS = DS: only
+                          ADPTDS clips to DSMAX).
                           0 (default): the special points are inserted and
                           the step goes on from the point past them */
   int hide_first_step; /* AUTO-07p's algebraic problems (its CNRLAE): the

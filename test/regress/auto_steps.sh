@@ -203,6 +203,11 @@ EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-8
 DS  =  0.1, DSMIN= 0.001, DSMAX=   0.8, IADS=   1
 NPAR = 11, THL =  {}, THU =  {}
 C
+# c.circ.2: DS = 0.3 past DSMAX = 0.1: AUTO's first steps take DS as
+# given (RDS = DS; only ADPTDS clips to DSMAX), whirl clipped it before
+# 2026-12-06 (PT 2 at PAR(1) = 0.1987 where AUTO's is at 0.5665)
+sed -e 's/NMX=  12/NMX=   8/' -e 's/DS  =  0.1, DSMIN= 0.001, DSMAX=   0.8/DS  =  0.3, DSMIN= 0.001, DSMAX=   0.1/' \
+  "$tmp/circ/c.circ.1" > "$tmp/circ/c.circ.2"
 (cd "$tmp" && "$WHIRL" auto circ --quiet > circ.log 2>&1)
 check $? "whirl auto circ (equilibria on a circle) exits 0: $(tail -1 "$tmp/circ.log")"
 out=$(rows_agree "$tmp/circ.out/b.circ.1" <<'R'
@@ -214,6 +219,14 @@ out=$(rows_agree "$tmp/circ.out/b.circ.1" <<'R'
 R
 )
 check $? "equilibria step as AUTO's (the secant's prediction onto the sphere of radius DS): PT 2, 3, 6, 9 and the EP at PT 12 as AUTO's ${out:+($out)}"
+out=$(rows_agree "$tmp/circ.out/b.circ.2" <<'R'
+2 0 5.6651712610E-001 8.2404996562E-001 8.2404996562E-001
+3 0 6.4598647397E-001 7.6334885567E-001 7.6334885567E-001
+5 0 7.1897420566E-001 6.9503675557E-001 6.9503675557E-001
+8 9 8.1477496546E-001 5.7977733283E-001 5.7977733283E-001
+R
+)
+check $? "DS past DSMAX: the first two steps at DS, then DSMAX, as AUTO's: PT 2, 3, 5 and the EP at PT 8 ${out:+($out)}"
 
 # the keys whirl auto writes, and the curve's maximum against the nodes'
 w="$tmp/bru.out/bru.2@HB1.whirl"
