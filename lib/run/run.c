@@ -455,8 +455,9 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
       free(xT);
       return -1;
     }
-    /* the direction the next step takes: the last step's secant on a
-     * branch of orbits or a BVP, as AUTO stores (CONTBV), so that a
+    /* the point's direction as AUTO stores it (whirl_point.dir): on a
+     * branch of orbits or a BVP the one its step was predicted along
+     * (UDOTPS, written before CONTBV takes the new secant), so that a
      * restart from the label steps as AUTO's */
     const double *d = pt->dir ? pt->dir : pt->t;
     for (size_t i = 0; i <= b->nb; i++) tan[i] = sg * d[i];

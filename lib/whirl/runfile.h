@@ -55,9 +55,9 @@ typedef enum whirl_run_key {
   WHIRL_RK_MESH_RULE, /* orbits' adapted mesh: whirl's derivative (0) or AUTO's jumps (1) */
   WHIRL_RK_THREADS, /* threads of the collocation (0: OpenMP's default) */
   WHIRL_RK_NWTN,    /* AUTO's NWTN: Newton iterations with a new Jacobian (0: all) */
+  WHIRL_RK_IGNORED, /* AUTO keys whirl accepts and ignores (ITMX, NWTN, ...) */
   WHIRL_RK_EQ_STEP, /* algebraic branches' step: the tangent's hyperplane (0) or
                        AUTO's sphere about the last point on the secant (1) */
-  WHIRL_RK_IGNORED, /* AUTO keys whirl accepts and ignores (ITMX, NWTN, ...) */
   WHIRL_RK_COUNT
 } whirl_run_key;
 
