@@ -302,7 +302,7 @@ static int bvp_threads(const whirl_bvp *b) {
 static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
   const size_t n = b->n, m = b->ncol, N = b->ntst, nint = b->nint;
   const size_t colF = n * b->nnodes, na = icacc_size(b);
-  const int nth = bvp_threads(b);
+  const int nth = bvp_threads(b) > 1 ? whirl_gov_begin(&b->gov) : 1;
   size_t bad = N;
   int bad_rc = 0;
   const char *bad_what = NULL;
@@ -315,6 +315,7 @@ static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
       if (i < bad) bad = i, bad_rc = rc, bad_what = what;
     }
   }
+  if (bvp_threads(b) > 1) whirl_gov_end(&b->gov);
   if (bad < N) return user_status(b, bad_rc, bad_what);
   for (size_t i = 0; nint && i < N; ++i)
     for (size_t g = 0; g < m; ++g) {
@@ -660,6 +661,7 @@ whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
   b->data = o->data;
   b->nnz = build_pattern(b, 1);
   b->nthreads = whirl_threads_resolve(o->threads);
+  whirl_gov_init(&b->gov, b->nthreads);
   if (alloc_arrays(b)) {
     whirl_bvp_free(b);
     return ALLOC_FAIL("out of memory");

@@ -11,6 +11,7 @@
 #include <whirl/system.h>
 
 #include "colloc_basis.h"
+#include "util/threads_impl.h"
 #include "util/errmsg_impl.h"
 
 /* One thread's scratch at a Gauss point: u, du/dsigma, f, fm, uq (n
@@ -56,6 +57,7 @@ struct whirl_bvp {
   double *buf;
   double *pt, *fb, *fbm, *cp, *cm, *ref, *icacc;
   int nthreads;     /* threads of the Jacobian's loop over the intervals */
+  whirl_gov gov;    /* how many of them a call runs on (threads_impl.h) */
   bvp_scratch *scr; /* nthreads; scr[0] the sequential code's */
   /* mesh adaptation (AUTO's IAD): dm the NCOL-th derivative's weights,
    * the old mesh, a copy of a vector and the density's scratch */

@@ -181,7 +181,7 @@ static int colloc_F(const double *X, const double *p, double *F, void *data) {
   /* the intervals in parallel (the model is called from several threads
    * at once, as AUTO-07p's OpenMP build does): the first failure in
    * interval order is the one reported, whatever the threads */
-  const int nth = colloc_threads(c);
+  const int nth = colloc_threads(c) > 1 ? whirl_gov_begin(&c->gov_F) : 1;
   size_t bad = N;
   int bad_rc = 0;
 #pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
@@ -192,6 +192,7 @@ static int colloc_F(const double *X, const double *p, double *F, void *data) {
       if (i < bad) bad = i, bad_rc = rc;
     }
   }
+  if (colloc_threads(c) > 1) whirl_gov_end(&c->gov_F);
   if (bad < N) return bad_rc;
   /* periodicity x(1) − x(0) = 0, or 2π k for a rotation */
   const double *x0 = X, *x1 = X + n * N * m;
@@ -670,6 +671,7 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   c->fq = o->free_param >= 0 ? o->free_param : -1;
   c->Tfix = o->period;
   c->nthreads = whirl_threads_resolve(o->threads);
+  whirl_gov_init(&c->gov_F, c->nthreads);
   if (alloc_arrays(c)) {
     whirl_colloc_free(c);
     return ALLOC_FAIL("out of memory");

@@ -12,6 +12,7 @@
 #include <whirl/system.h>
 
 #include "util/errmsg_impl.h"
+#include "util/threads_impl.h"
 
 #define COLLOC_MAXCOL 7
 
@@ -61,6 +62,7 @@ struct whirl_colloc {
   /* the model's evaluations at Gauss points: one scratch per thread
    * (scr[0] for the serial entry points) */
   int nthreads;             /* options.threads, resolved: >= 1 */
+  whirl_gov gov_F;          /* colloc_F's threads (threads_impl.h) */
   double fill_T;            /* colloc_cond.c: the period of the fill, */
   int fill_fk_loop;         /* and dF/dp_k from f_p in each interval */
   colloc_scratch *scr;      /* nthreads */

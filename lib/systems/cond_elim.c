@@ -73,6 +73,7 @@ struct cond_ws {
   double *F;     /* nf x nf */
   int *fpiv;     /* nf */
   int nth;       /* threads of the loops over the intervals */
+  whirl_gov gov; /* condense_intervals' threads of those (threads_impl.h) */
   size_t nlab;   /* max(nm, 2n, nf) */
   int *lab;      /* scratch labels, nlab per thread (thread 0's first) */
   det_acc *idet; /* NTST: the product of each interval's pivots */
@@ -139,6 +140,7 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
   if (2 * n > nlab) nlab = 2 * n;
   w->nlab = nlab;
   w->nth = s->nthreads > 1 ? s->nthreads : 1;
+  whirl_gov_init(&w->gov, w->nth);
   const size_t nth = (size_t)w->nth;
   const size_t np = s->npar ? s->npar : 1;
   w->npar = np;
@@ -380,7 +382,7 @@ static int condense_interval(cond_ws *w, size_t i, int *lab) {
 static int condense_intervals(cond_ws *w, const double *X, const double *p,
                               size_t k, int mono) {
   const size_t N = w->N;
-  const int nth = w->nth;
+  const int nth = whirl_gov_begin(&w->gov);
   const cond_ops *ops = w->ops;
 #pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
@@ -388,6 +390,7 @@ static int condense_intervals(cond_ws *w, const double *X, const double *p,
     w->frc[i] = ops->fill_one ? ops->fill_one(w, X, p, k, mono, i, t) : 0;
     w->irc[i] = w->frc[i] ? 0 : condense_interval(w, i, w->lab + w->nlab * (size_t)t);
   }
+  whirl_gov_end(&w->gov);
   for (size_t i = 0; i < N; ++i)
     if (w->frc[i]) return w->frc[i];
   for (size_t i = 0; i < N; ++i) {

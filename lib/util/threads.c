@@ -2,6 +2,8 @@
  * SPDX-License-Identifier: BSD-3-Clause */
 #include "util/threads_impl.h"
 
+#include <time.h>
+
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -23,4 +25,73 @@ int whirl_threads_resolve(int threads) {
   (void)threads;
   return 1;
 #endif
+}
+
+/* ------------------------------------------------------------ governor */
+
+/* calls a probe times on each count; the time the choice then runs, at
+ * first and at most (doubled while it stands): a probe on two threads
+ * costs one scheduler slice (~10 ms) where a core is busy, so the
+ * choice runs long enough for that to be small */
+enum { GOV_PROBE = 4 };
+static const double gov_span0 = 0.2, gov_span_max = 2.0;
+
+static double gov_now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void whirl_gov_init(whirl_gov *g, int nmax) {
+  g->nmax = nmax > 1 ? nmax : 1;
+  g->use = g->nmax; /* the threads asked for, until the first probe */
+  g->phase = 0;
+  g->left = 0;
+  g->span = gov_span0;
+  g->start = 0.0;
+  g->until = -1.0; /* the first call sets it */
+  g->t1 = g->tn = 0.0;
+}
+
+int whirl_gov_begin(whirl_gov *g) {
+  if (g->nmax <= 1) return 1;
+  g->start = gov_now();
+  return g->phase == 1 ? 1 : g->phase == 2 ? g->nmax : g->use;
+}
+
+/* the probes done: the faster count runs for the next span, longer when
+ * it is the count that ran before */
+static void gov_decide(whirl_gov *g, double now) {
+  const int use = g->tn < g->t1 ? g->nmax : 1;
+  if (use == g->use) g->span = g->span < gov_span_max ? 2.0 * g->span : gov_span_max;
+  else g->span = gov_span0;
+  g->use = use;
+  g->phase = 0;
+  g->until = now + g->span;
+}
+
+void whirl_gov_end(whirl_gov *g) {
+  if (g->nmax <= 1) return;
+  const double now = gov_now(), dt = now - g->start;
+  if (g->phase == 0) {
+    if (g->until < 0.0) g->until = now + g->span;
+    else if (now >= g->until) g->phase = 1, g->left = GOV_PROBE, g->t1 = g->tn = 0.0;
+    return;
+  }
+  if (g->phase == 1) {
+    g->t1 += dt;
+    if (--g->left == 0) g->phase = 2, g->left = GOV_PROBE + 1;
+    return;
+  }
+  /* the first call on nmax threads wakes them: not timed, unless it took
+   * ten times the whole one-thread probe (a core busy elsewhere: a
+   * scheduler slice, 10 ms, where the probe took 0.2 ms), which decides */
+  if (g->left == GOV_PROBE + 1) {
+    --g->left;
+    if (dt > 10.0 * g->t1) g->tn = dt, gov_decide(g, now);
+    return;
+  }
+  g->tn += dt;
+  /* nmax threads already slower than the whole one-thread probe: done */
+  if (--g->left == 0 || g->tn > g->t1) gov_decide(g, now);
 }

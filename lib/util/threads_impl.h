@@ -16,4 +16,31 @@ int whirl_thread_num(void);
  * the processors), < 0 or no OpenMP: 1. */
 int whirl_threads_resolve(int threads);
 
+/* A parallel loop's governor: how many of its nmax threads the next call
+ * of the loop runs on.  The loops of the library are short (a residual or
+ * a Jacobian of a few hundred intervals: 0.03-1 ms) and called hundreds
+ * of thousands of times a run; when another process holds a core, a
+ * thread descheduled in the middle of one stalls the others at its end,
+ * and two threads ran pla's demo 8x slower than one (107 s against 14 s
+ * idle, beside AUTO's own OpenMP run).  So the governor times the calls:
+ * after the first span on nmax (0.2 s), a few on one thread, a few on nmax (cut short when already slower),
+ * and the faster count runs until the next probe, the probes rarer (0.2
+ * s to 2 s apart) while the choice stands.  The loops' results do not depend on their threads (they are
+ * written so), so neither do the governor's choices change any value.
+ * Usage: n = whirl_gov_begin(&g); loop on n threads; whirl_gov_end(&g). */
+typedef struct whirl_gov {
+  int nmax;           /* the threads asked for; 1: no governing */
+  int use;            /* the threads of the calls until the next probe */
+  int phase;          /* 0 running, 1 probing one thread, 2 probing nmax */
+  unsigned left;      /* probe calls left in this phase */
+  double span;        /* seconds the choice runs before the next probe */
+  double start;       /* this call's start (monotonic seconds) */
+  double until;       /* the next probe's time */
+  double t1, tn;      /* the probes' times */
+} whirl_gov;
+
+void whirl_gov_init(whirl_gov *g, int nmax);
+int whirl_gov_begin(whirl_gov *g);
+void whirl_gov_end(whirl_gov *g);
+
 #endif

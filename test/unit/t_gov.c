@@ -1,0 +1,80 @@
+/* test/unit/t_gov.c — the governor of the library's parallel loops
+ * (lib/util/threads.c, whirl_gov): on workloads whose calls take a known
+ * time on one thread and on nmax (nanosleep standing for the loop), it
+ * must run the faster count after its probes, change its choice when the
+ * faster count changes, and not govern a loop of one thread.
+ * SPDX-License-Identifier: BSD-3-Clause */
+#include <stdio.h>
+#include <time.h>
+
+#include "util/threads_impl.h"
+#include "tap.h"
+
+static void sleep_us(double us) {
+  struct timespec ts = {0, (long)(us * 1e3)};
+  nanosleep(&ts, NULL);
+}
+
+static double now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Calls for `seconds`, each taking us1 on one thread and usn on more;
+ * the calls made on more than one thread counted in *many, all in *calls. */
+static void run(whirl_gov *g, double seconds, double us1, double usn, long *many, long *calls) {
+  *many = *calls = 0;
+  for (const double end = now() + seconds; now() < end;) {
+    const int n = whirl_gov_begin(g);
+    sleep_us(n > 1 ? usn : us1);
+    whirl_gov_end(g);
+    *many += n > 1;
+    ++*calls;
+  }
+}
+
+int main(void) {
+  whirl_gov g;
+  long many, calls;
+
+  /* the first span (0.2 s) on the threads asked for */
+  whirl_gov_init(&g, 2);
+  run(&g, 0.05, 100, 2000, &many, &calls);
+  ok(many == calls, "the first span: every call on two threads (%ld of %ld)", many, calls);
+
+  /* two threads 20x slower (a core busy elsewhere): after the first
+   * probe one thread runs, the probes' calls on two a few */
+  run(&g, 0.2, 100, 2000, &many, &calls);
+  run(&g, 0.5, 100, 2000, &many, &calls);
+  ok(g.use == 1, "slower on two threads: the governor runs one (use %d)", g.use);
+  ok(many * 10 < calls, "slower on two threads: %ld of %ld calls on two (< 10 %%)", many, calls);
+
+  /* two threads 10x faster: two run, the probes on one thread a few */
+  whirl_gov_init(&g, 2);
+  run(&g, 0.5, 1000, 100, &many, &calls);
+  ok(g.use == 2, "faster on two threads: the governor runs two (use %d)", g.use);
+  ok((calls - many) * 10 < calls, "faster on two threads: %ld of %ld calls on one (< 10 %%)",
+     calls - many, calls);
+
+  /* the faster count changes: the next probe (within the span, 0.2 s at
+   * first, doubled while the choice stands) changes the choice */
+  whirl_gov_init(&g, 4);
+  run(&g, 0.5, 1000, 100, &many, &calls);
+  ok(g.use == 4, "faster on four threads at first: use %d", g.use);
+  run(&g, 1.5, 100, 2000, &many, &calls);
+  ok(g.use == 1, "then slower on four: the governor went back to one (use %d)", g.use);
+  run(&g, 1.5, 1000, 100, &many, &calls);
+  ok(g.use == 4, "then faster again: four (use %d)", g.use);
+
+  /* one thread asked for: never more, no probing */
+  whirl_gov_init(&g, 1);
+  int most = 0;
+  for (int i = 0; i < 100; ++i) {
+    const int n = whirl_gov_begin(&g);
+    if (n > most) most = n;
+    whirl_gov_end(&g);
+  }
+  ok(most == 1 && g.nmax == 1, "one thread asked: every call on one (most %d)", most);
+  return done_testing();
+}
