@@ -106,8 +106,28 @@ def enz_lp():
                "(AUTO's LP 9 stops at EPSS with s1, s2 = 4.39458, 4.39436)")
 
 
+def ppp_bp():
+    """ppp (c.ppp.1, branch 2 from BP 2; again in c.ppp.4): the branch
+    u3 = 0 of F1 = u1 (1 - u1) - p4 u1 u2, F2 = -p2 u2 + p4 u1 u2 - p5 u2 u3
+    - p1 (1 - exp(-p6 u2)), F3 = -p3 u3 + p5 u2 u3, p2..p6 = 0.25, 0.5, 3,
+    3, 5 (STPNT), meets the branch u3 != 0 where F3's factor -p3 + p5 u2
+    vanishes (a transcritical BP): u2 = p3/p5, u1 = 1 - p4 u2 from F1, p1
+    from F2.  Closed form, no iteration.  Columns PAR(1), L2-NORM, U(1),
+    U(2), U(3)."""
+    p2, p3, p4, p5, p6 = 0.25, 0.5, 3.0, 3.0, 5.0
+    u2 = p3 / p5
+    u1 = 1 - p4 * u2
+    p1 = u2 * (p4 * u1 - p2) / (1 - math.exp(-p6 * u2))
+    return row("ppp", "BP", [p1, math.hypot(u1, u2), u1, u2, 0.0],
+               "u3 = 0 meets u2 = p3/p5 (hyper.all's BP 6 stops at EPSS = 1e-4, "
+               "0.368452; at EPSS = 1e-10 AUTO's run of c.ppp.1 detects it after PT 30 of "
+               "branch 2, its localisation at 0.368470 stopping at ITMX, 'Possible special "
+               "point')")
+
+
 print("# test/auto-demos/exact.ref - written by exact.py (see there): converged")
 print("# special points that AUTO-07p's own runs detect but do not print to 6 digits.")
 print("# demo\tTY values (the b-file's columns)\thow")
 print(fhn_gh())
 print(enz_lp())
+print(ppp_bp())
