@@ -109,6 +109,24 @@ static void load_par(double *par, const double *p) {
   memcpy(par, p, (size_t)wa_npar * sizeof *p);
 }
 
+/* The PAR array FUNC, BCND and ICND get: one a thread, kept between calls
+ * as AUTO's one PAR of a run is (its entries past whirl's parameters zero
+ * at first, then what the user's routines leave there), so that a call
+ * copies whirl's wa_npar values alone.  Clearing the whole array at every
+ * call was 18 % of demo man's time (a FUNC of three lines, called by its
+ * ICND too); a PAR longer than the buffer is the caller's, cleared. */
+enum { WA_PAR_KEPT = 256 };
+static __thread double kept_par[WA_PAR_KEPT]; /* zero in every new thread */
+
+static double *call_par(double *own, const double *p) {
+  if (wa_nparx > WA_PAR_KEPT) {
+    load_par(own, p);
+    return own;
+  }
+  memcpy(kept_par, p, (size_t)wa_npar * sizeof *p);
+  return kept_par;
+}
+
 /* The run's ICP, which FUNC, BCND and ICND get as AUTO's do.  PVLS is
  * called once here, before the run, as AUTO calls it after the start: some
  * set up data there that FUNC reads (brc, brf); a boundary-value problem's
@@ -128,9 +146,9 @@ void wa_set_icp(const int *c, size_t n, const int k[4], void *d) {
 }
 
 static int call(const double *x, const double *p, int ijac, double *f, double *dfdu) {
-  double par[wa_nparx], dfdp[wa_ndim * wa_nparx], df[dfdu ? 1 : wa_ndim * wa_ndim];
-  load_par(par, p);
-  func_(&wa_ndim, x, wa_icp, par, &ijac, f, dfdu ? dfdu : df, dfdp);
+  double own[wa_nparx > WA_PAR_KEPT ? wa_nparx : 1], dfdp[wa_ndim * wa_nparx],
+      df[dfdu ? 1 : wa_ndim * wa_ndim];
+  func_(&wa_ndim, x, wa_icp, call_par(own, p), &ijac, f, dfdu ? dfdu : df, dfdp);
   return 0;
 }
 
@@ -230,23 +248,21 @@ int wa_pvls_solution(const double *u, size_t nn, const double *w, double *p, voi
 /* BCND and ICND with IJAC = 0: their DBC, DINT are not written */
 int wa_bcnd(size_t nbc, const double *u0, const double *u1, const double *p, double *fb,
             void *d) {
-  double par[wa_nparx], db[1];
+  double own[wa_nparx > WA_PAR_KEPT ? wa_nparx : 1], db[1];
   const int nb = (int)nbc, ijac = 0;
   (void)d;
   if (!bcnd_) return -1;
-  load_par(par, p);
-  bcnd_(&wa_ndim, par, wa_icp, &nb, u0, u1, fb, &ijac, db);
+  bcnd_(&wa_ndim, call_par(own, p), wa_icp, &nb, u0, u1, fb, &ijac, db);
   return 0;
 }
 
 int wa_icnd(size_t nint, const double *u, const double *uo, const double *ud,
             const double *upo, const double *p, double *fi, void *d) {
-  double par[wa_nparx], di[1];
+  double own[wa_nparx > WA_PAR_KEPT ? wa_nparx : 1], di[1];
   const int ni = (int)nint, ijac = 0;
   (void)d;
   if (!icnd_) return -1;
-  load_par(par, p);
-  icnd_(&wa_ndim, par, wa_icp, &ni, u, uo, ud, upo, fi, &ijac, di);
+  icnd_(&wa_ndim, call_par(own, p), wa_icp, &ni, u, uo, ud, upo, fi, &ijac, di);
   return 0;
 }
 
