@@ -1774,6 +1774,74 @@ static void test_branch_distance(void) {
                       "definition's distance < tol", bad_within, 3 * cases);
 }
 
+/* The localisation's trials: on the branch x = p (F = x - p, linear, so
+ * a trial's correction is one Newton iteration; the arclength p alone,
+ * x_weight 0: points at p = 0, 0.2, 0.4), a system test tau = exp(40 (p -
+ * p0)) - 1 whose zero p0 = 0.2371 lies in the second step, far from its
+ * secant's first trial (p = 0.20023, the test being convex).  With
+ * loc_zone, F fails (a recoverable domain error) on 0.2001 < p < 0.2010,
+ * around that first trial: a correction that does not converge is tried
+ * next at the bracket's midpoint, not twice more 2e-8 from where it
+ * failed (those offsets are for a start exactly on a singular point; the
+ * fold loci of demo abcb spent 3 x 7 Newton iterations so per trial
+ * beside a branch point of cycles; 3 failed corrections here before).
+ * Without the zone: the zero in 15 trials. */
+static const double loc_p0 = 0.2371;
+static int loc_zone, loc_fails;
+static int diagonal_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  if (loc_zone && p[0] > 0.2001 && p[0] < 0.2010) return ++loc_fails, 1;
+  f[0] = x[0] - p[0];
+  return 0;
+}
+static int loc_test(const double *x, const double *p, double *tau, int *types, void *d) {
+  (void)x, (void)d;
+  tau[0] = expm1(40.0 * (p[0] - loc_p0));
+  types[0] = WHIRL_PT_CP;
+  return 0;
+}
+static void test_localisation_trials(int zone) {
+  whirl_system s = {.name = "diagonal", .n = 1, .npar = 1, .F = diagonal_F, .ntest = 1,
+                    .test = loc_test};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  const double xw[1] = {0.0};
+  o.x_weight = xw;
+  o.ds = 0.2;
+  o.ds_max = 0.2;
+  o.nmx = 3;
+  loc_zone = zone;
+  size_t its[2] = {0, 0};
+  double pcp = NAN;
+  char err[256];
+  for (int with = 0; with < 2; ++with) {
+    o.detect_sys = with;
+    loc_fails = 0;
+    whirl_cont *c = whirl_cont_alloc(&s, &o, err, sizeof err);
+    whirl_branch *b = whirl_branch_alloc(1, 1, 0, 0);
+    const double x0[1] = {0.0}, p0[1] = {0.0};
+    int rc = c && b ? whirl_cont_start(c, x0, p0, +1) : -1;
+    if (rc == WHIRL_OK) rc = whirl_cont_run(c, b);
+    if (rc < 0) printf("# %s\n", c ? whirl_cont_errmsg(c) : err);
+    if (c) its[with] = whirl_cont_get_stats(c)->newton_its;
+    const whirl_branch_point *q = b ? nth_type(b, WHIRL_PT_CP, 0) : NULL;
+    if (with && q) pcp = q->p[0];
+    whirl_cont_free(c);
+    whirl_branch_free(b);
+  }
+  const size_t trials = its[1] - its[0];
+  printf("# %s: %zu trials, %d failed corrections\n", zone ? "zone" : "smooth", trials,
+         loc_fails);
+  if (zone)
+    ok(fabs(pcp - loc_p0) <= 1e-11 && loc_fails == 1,
+       "a trial whose correction fails: the next at the bracket's midpoint (%d failed, 1 "
+       "expected), the zero at %.14g (p0 %.4g)", loc_fails, pcp, loc_p0);
+  else
+    ok(fabs(pcp - loc_p0) <= 1e-11 && trials <= 15,
+       "a convex test function: located at %.14g (p0 %.4g) in %zu trials (<= 15)", pcp,
+       loc_p0, trials);
+}
+
 int main(void) {
   test_start_messages();
   test_cusp(1);
@@ -1812,5 +1880,7 @@ int main(void) {
   test_errors();
   test_start_on_singular_solution();
   test_branch_distance();
+  test_localisation_trials(0);
+  test_localisation_trials(1);
   return done_testing();
 }
