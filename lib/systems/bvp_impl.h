@@ -11,8 +11,8 @@
 #include <whirl/system.h>
 
 #include "colloc_basis.h"
-#include "util/threads_impl.h"
 #include "util/errmsg_impl.h"
+#include "util/threads_impl.h"
 
 /* One thread's scratch at a Gauss point: u, du/dsigma, f, fm, uq (n
  * each), J (n*n), Jpar (n*npar), work (2n), pq (npar), gi, gim (nint),

@@ -20,14 +20,16 @@ int whirl_threads_resolve(int threads);
  * of the loop runs on.  The loops of the library are short (a residual or
  * a Jacobian of a few hundred intervals: 0.03-1 ms) and called hundreds
  * of thousands of times a run; when another process holds a core, a
- * thread descheduled in the middle of one stalls the others at its end,
- * and two threads ran pla's demo 8x slower than one (107 s against 14 s
- * idle, beside AUTO's own OpenMP run).  So the governor times the calls:
- * after the first span on nmax (0.2 s), a few on one thread, a few on nmax (cut short when already slower),
- * and the faster count runs until the next probe, the probes rarer (0.2
- * s to 2 s apart) while the choice stands.  The loops' results do not depend on their threads (they are
- * written so), so neither do the governor's choices change any value.
- * Usage: n = whirl_gov_begin(&g); loop on n threads; whirl_gov_end(&g). */
+ * thread descheduled in the middle of one stalls the others at its end:
+ * demo pla took 40.8 s on two threads beside one busy core where one
+ * thread took 17.1 s (107 s beside AUTO's own OpenMP runs, 14 s idle).
+ * So the governor times the calls: after a first span on nmax (0.2 s), a
+ * few on one thread and a few on nmax (cut short once slower), and the
+ * faster count runs until the next probe, the probes rarer (0.2 s to 2 s
+ * apart) while the choice stands.  The loops' results do not depend on
+ * their threads (they are written so), so neither do the governor's
+ * choices change any value.
+ * Usage: n = whirl_gov_begin(&g); the loop on n threads; whirl_gov_end(&g). */
 typedef struct whirl_gov {
   int nmax;           /* the threads asked for; 1: no governing */
   int use;            /* the threads of the calls until the next probe */
