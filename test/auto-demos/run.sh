@@ -20,8 +20,10 @@
 # so the points AUTO finds beyond whirl's runs are listed, not counted.
 # Where AUTO-07p itself is installed (the Debian package auto-07p, driven
 # by /usr/bin/python3), AUTO's own run of the demo's script on a scratch
-# copy with every EPSS = 1e-10 is a second reference (its 6 printed digits
-# are converged; hyper.all's are EPSS-limited, often 1e-4), and AUTO's own
+# copy with every EPSS = 1e-10 and ITMX = 40 is a second reference (its 6
+# printed digits are converged; hyper.all's are EPSS-limited, often 1e-4;
+# ITMX = 8 stops many a localisation at 1e-10 short of it, 'Possible
+# special point', so AUTO labels no point there), and AUTO's own
 # run of the constants files in whirl's default order (the same runs) a
 # third: a point agrees when any of AUTO's runs printed it (REF both, both+
 # with the third; AUTO_REF=hyper: hyper.all alone).  That takes minutes (AUTO compiles each demo, some run long at
@@ -51,13 +53,13 @@ trap 'rm -rf "$tmp"' EXIT
 py=${AUTO_07P_PYTHON:-/usr/lib/auto-07p/python}
 tight=0
 [ "${AUTO_REF:-}" != hyper ] && [ -f "$py/auto/__main__.py" ] && command -v python3 >/dev/null 2>&1 && tight=1
-# AUTO's own run of demo $1 at EPSS = 1e-10 in a scratch copy: its log,
+# AUTO's own run of demo $1 at EPSS = 1e-10, ITMX = 40 in a scratch copy: its log,
 # framed like hyper.all's, in $tmp/$1.tight (empty when it fails)
 auto_tight() {
   rm -rf "$tmp/ref.$1"; mkdir "$tmp/ref.$1"
   cp "$demos/$1"/* "$tmp/ref.$1"/ 2>/dev/null
   for c in "$tmp/ref.$1"/c.*; do
-    sed 's/EPSS *= *[-+0-9.eEdD]*/EPSS = 1e-10/' "$c" > "$c.t" && mv "$c.t" "$c"
+    sed -e 's/EPSS *= *[-+0-9.eEdD]*/EPSS = 1e-10/' -e 's/ITMX *= *[0-9]*/ITMX = 40/' "$c" > "$c.t" && mv "$c.t" "$c"
   done
   { echo "Demo $1 is started"
     (cd "$tmp/ref.$1" && timeout 300 python3 "$py/auto/__main__.py" "$1.auto" 2>&1)
