@@ -67,6 +67,10 @@ typedef struct whirl_run_settings {
                                    of radius DS about the last point, as
                                    AUTO's SOLVAE (0: tangent, whirl's
                                    hyperplane) */
+  int auto_differences;         /* DIFFERENCES = auto: BVPs' Jacobian by
+                                   AUTO's FUNI and ICNI with JAC = 0
+                                   (forward in the free parameters, none in
+                                   ICND's UDOT; 0: central, whirl's) */
   int orbit_max_nodes;          /* ORBIT_MAX = nodes: an orbit's MAX U(i) is
                                    AUTO's, the largest node value (0: the
                                    maximum of the collocation polynomial) */

@@ -115,6 +115,25 @@ static int model_fp(const whirl_bvp *b, bvp_scratch *s, double t, const double *
   return 0;
 }
 
+/* AUTO-07p's step of a forward difference in a parameter v (FUNI and
+ * ICNI with JAC = 0: HMACH (1 + |v|), HMACH = 1e-7). */
+static double auto_step(double v) { return 1e-7 * (1.0 + fabs(v)); }
+
+/* df/dp_k as AUTO's FUNI: a forward difference of f in p_k from f0, f at
+ * (t, s->u, p) (s->pq, s->f are used); the model's jac_p when it has one. */
+static int model_fp_forward(const whirl_bvp *b, bvp_scratch *s, double t, const double *p,
+                            size_t k, const double *f0, double *out) {
+  const whirl_problem *pr = b->prob;
+  if (pr->jac_p) return model_fp(b, s, t, p, k, out);
+  memcpy(s->pq, p, b->npar * sizeof *s->pq);
+  s->pq[k] = p[k] + auto_step(p[k]);
+  const double dp = s->pq[k] - p[k];
+  const int rc = pr->rhs(t, s->u, s->pq, s->f, pr->data);
+  if (rc != 0) return rc;
+  for (size_t r = 0; r < b->n; ++r) out[r] = (s->f[r] - f0[r]) / dp;
+  return 0;
+}
+
 /* A user callback's status: a fatal one gets a message. */
 static int user_status(whirl_bvp *b, int rc, const char *what) {
   if (rc < 0) WHIRL_FAIL(b, WHIRL_EUSER, "%s returned %d (fatal)", what, rc);
@@ -150,11 +169,14 @@ static int cond_rows(whirl_bvp *b, const double *X, const double *pt,
 
 /* ∂g/∂u into s->gu[k + nint q] and ∂g/∂u' into s->gd, by central
  * differences at the current Gauss point (after gauss_state and
- * gauss_reference), parameters pt. */
+ * gauss_reference), parameters pt.  With auto_differences ∂g/∂u' is 0:
+ * AUTO's ICNI takes no derivative in UDOT, data to ICND. */
 static int ic_partials(const whirl_bvp *b, bvp_scratch *s, const double *pt) {
   const size_t n = b->n, nint = b->nint;
   double *gpart[2] = {s->gu, s->gd};
-  for (int w = 0; w < 2; ++w) {
+  const int nw = b->auto_differences ? 1 : 2;
+  if (nw == 1) memset(s->gd, 0, n * nint * sizeof *s->gd);
+  for (int w = 0; w < nw; ++w) {
     const double *v0 = w ? s->ud : s->u;
     memcpy(s->uq, s->u, n * sizeof *s->uq);
     memcpy(s->udq, s->ud, n * sizeof *s->udq);
@@ -190,6 +212,20 @@ static int ic_dp_at(const whirl_bvp *b, bvp_scratch *s, const double *pt, size_t
   const double dn = pp[k];
   if ((rc = b->ic(s->u, s->uo, s->ud, s->upo, pp, s->gim, b->data)) != 0) return rc;
   for (size_t q = 0; q < b->nint; ++q) s->gi[q] = (s->gi[q] - s->gim[q]) / (up - dn);
+  return 0;
+}
+
+/* ∂g/∂p_k as AUTO's ICNI: a forward difference from g0, g at the current
+ * Gauss point with parameters pt, into s->gi (s->pq is used). */
+static int ic_dp_forward(const whirl_bvp *b, bvp_scratch *s, const double *pt, size_t k,
+                         const double *g0) {
+  double *pp = s->pq;
+  memcpy(pp, pt, b->npar * sizeof *pp);
+  pp[k] = pt[k] + auto_step(pt[k]);
+  const double dp = pp[k] - pt[k];
+  const int rc = b->ic(s->u, s->uo, s->ud, s->upo, pp, s->gi, b->data);
+  if (rc != 0) return rc;
+  for (size_t q = 0; q < b->nint; ++q) s->gi[q] = (s->gi[q] - g0[q]) / dp;
   return 0;
 }
 
@@ -260,9 +296,15 @@ static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X, do
       }
     }
     *what = "the model's parameter derivative";
+    /* AUTO's forward differences share f at the point (s->fm) */
+    const int fwd = b->auto_differences && b->nfree > 0;
+    if (fwd && !b->prob->jac_p && (rc = b->prob->rhs(t, s->u, b->pt, s->fm, b->prob->data)) != 0)
+      return rc;
     for (size_t j = 0; j < b->nfree; ++j) {
       double *v = Jx + (size_t)b->Jp[colF + j] + R0;
-      if ((rc = model_fp(b, s, t, b->pt, b->free[j], v)) != 0) return rc;
+      rc = fwd ? model_fp_forward(b, s, t, b->pt, b->free[j], s->fm, v)
+               : model_fp(b, s, t, b->pt, b->free[j], v);
+      if (rc != 0) return rc;
       for (size_t r = 0; r < n; ++r) v[r] *= -h;
     }
     if (!nint) continue;
@@ -278,10 +320,15 @@ static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X, do
         for (size_t c = 0; c < nint; ++c)
           acc[(k * n + q) * nint + c] = wk * s->gu[c + nint * q] + wd * s->gd[c + nint * q];
     }
-    /* the free parameters' terms: h w_g ∂g/∂p */
+    /* the free parameters' terms: h w_g ∂g/∂p (AUTO's forward differences
+     * from g at the point, in s->gim) */
     acc += (m + 1) * n * nint;
+    if (fwd && (rc = b->ic(s->u, s->uo, s->ud, s->upo, b->pt, s->gim, b->data)) != 0)
+      return rc;
     for (size_t j = 0; j < b->nfree; ++j) {
-      if ((rc = ic_dp_at(b, s, b->pt, b->free[j])) != 0) return rc;
+      rc = fwd ? ic_dp_forward(b, s, b->pt, b->free[j], s->gim)
+               : ic_dp_at(b, s, b->pt, b->free[j]);
+      if (rc != 0) return rc;
       for (size_t c = 0; c < nint; ++c) acc[j * nint + c] = h * b->gw[g] * s->gi[c];
     }
   }
@@ -675,6 +722,7 @@ whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
   colloc_basis_lagrange_integrals(m, b->wint);
   colloc_basis_derivative_weights(m, b->dm);
   b->adapt_every = o->adapt_every;
+  b->auto_differences = o->auto_differences != 0;
   for (size_t g = 0; g < m; ++g)
     colloc_basis_lagrange(m, b->gs[g], b->L + g * (m + 1), b->D + g * (m + 1));
 

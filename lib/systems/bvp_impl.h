@@ -62,6 +62,7 @@ struct whirl_bvp {
   /* mesh adaptation (AUTO's IAD): dm the NCOL-th derivative's weights,
    * the old mesh, a copy of a vector and the density's scratch */
   int adapt_every, since_adapt;
+  int auto_differences; /* options.auto_differences: AUTO's FUNI, ICNI */
   size_t adaptations;
   double dm[COLLOC_BASIS_MAXCOL + 1];
   double *old_mesh, *copy, *E, *Q, *Dm;

@@ -37,8 +37,9 @@
  *
  * Jacobian: the collocation rows analytically from the model's jac_x and
  * jac_p (central differences of f when NULL), the boundary and integral
- * rows by central differences of bc and ic (AUTO with JAC = 0 does the
- * same).  The system has a compressed-column sparse pattern (rows sorted
+ * rows by central differences of bc and ic; options.auto_differences
+ * takes AUTO-07p's rule with JAC = 0 for the free parameters and ic
+ * (forward in p, none in udot).  The system has a compressed-column sparse pattern (rows sorted
  * within a column; usable by UMFPACK on the core's sparse path), a dense
  * callback built from it, and F_p for any parameter.  It has no spectrum
  * (a BVP solution has no stability).  With NTST >= 2 it has a structured
@@ -117,6 +118,16 @@ typedef struct whirl_bvp_options {
                          With more than one the model's rhs and jac_x and
                          ic are called from several threads at once;
                          the Jacobian is the same bytes on any number. */
+  int auto_differences; /* 1: the difference quotients of AUTO-07p with
+                         JAC = 0 (interfaces.f90, FUNI and ICNI) for the
+                         free parameters and the integral conditions:
+                         forward in each free parameter p, step
+                         1e-7 (1 + |p|), from one evaluation at the point
+                         shared by all; central in u; none in udot, which
+                         AUTO's ICND gets as data (the branch's direction),
+                         not as a function of the unknowns: an ic that
+                         reads udot then has no udot terms in its rows.
+                         0 (default): central in u, udot and p. */
 } whirl_bvp_options;
 
 /* Defaults: NTST 20, NCOL 4, no conditions, no free parameters, fixed

@@ -58,6 +58,8 @@ typedef enum whirl_run_key {
   WHIRL_RK_IGNORED, /* AUTO keys whirl accepts and ignores (ITMX, NWTN, ...) */
   WHIRL_RK_EQ_STEP, /* algebraic branches' step: the tangent's hyperplane (0) or
                        AUTO's sphere about the last point on the secant (1) */
+  WHIRL_RK_DIFFERENCES, /* BVPs' difference quotients: central (0) or AUTO's
+                           FUNI and ICNI with JAC = 0 (1) */
   WHIRL_RK_COUNT
 } whirl_run_key;
 

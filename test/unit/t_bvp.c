@@ -1049,6 +1049,87 @@ static void test_threads(void) {
   free(X), free(R), free(J1), free(J3);
 }
 
+
+/* ------------------------------------------------------------------------
+ * AUTO's difference quotients (options.auto_differences; AUTO-07p's FUNI
+ * and ICNI with JAC = 0): forward in the free parameter from one shared
+ * evaluation, central in u, none in u' (AUTO's UDOT is data to ICND).
+ * Counted calls a Gauss point and the Jacobian against differences of F. */
+
+static long n_rhs_calls, n_ic_calls;
+static int counted_rhs(double t, const double *u, const double *p, double *f, void *d) {
+  ++n_rhs_calls;
+  return ex_rhs(t, u, p, f, d);
+}
+static int counted_ic(const double *u, const double *uo, const double *ud,
+                      const double *upo, const double *p, double *fi, void *d) {
+  ++n_ic_calls;
+  return ex_ic(u, uo, ud, upo, p, fi, d);
+}
+static const whirl_problem expo_counted = {
+    .name = "expo-counted", .n = 1, .npar = 2, .rhs = counted_rhs, .autonomous = 1};
+
+/* the Jacobian of u' = a u, u(0) = 1, ∫ g = 0 (ic) on NTST 5, NCOL 4 at
+ * random X, with or without AUTO's rule, into J (sparse values); the
+ * calls of rhs and ic it made */
+static int expo_jacobian(int auto_rule, whirl_bvp_ic_fn ic, const whirl_problem *prob,
+                         double *J, size_t *nnz, long *rhs_calls, long *ic_calls,
+                         double *err) {
+  char msg[256];
+  const size_t fr[1] = {0};
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = 5, o.ncol = 4, o.nbc = 1, o.nint = 1, o.bc = ex_bc, o.ic = ic;
+  o.nfree = 1, o.free = fr, o.auto_differences = auto_rule;
+  whirl_bvp *b = whirl_bvp_alloc(prob, &o, msg, sizeof msg);
+  if (!b) return -1;
+  const whirl_system *s = whirl_bvp_system(b);
+  double X[21 + 1];
+  tap_rng = 0x2545F4914F6CDD1DULL; /* the same X for every call */
+  *nnz = s->nnz;
+  for (size_t q = 0; q < 21; ++q) X[q] = 1.0 + 0.5 * tap_urand(-1.0, 1.0);
+  X[21] = 0.8;
+  const double p[2] = {0.0 /* free: from X */, 1.7};
+  n_rhs_calls = n_ic_calls = 0;
+  int rc = s->nnz <= 512 ? s->Fx_sparse(X, p, J, s->data) : -1;
+  *rhs_calls = n_rhs_calls, *ic_calls = n_ic_calls;
+  if (rc == 0 && err) rc = whirl_system_check_jacobian(s, X, p, err);
+  whirl_bvp_free(b);
+  return rc;
+}
+
+static void test_auto_differences(void) {
+  double Jc[512], Ja[512], e_c = NAN, e_a = NAN;
+  long rc_c, ic_c, rc_a, ic_a;
+  size_t nnz = 0;
+  const size_t gauss = 5 * 4;
+  int r1 = expo_jacobian(0, counted_ic, &expo_counted, Jc, &nnz, &rc_c, &ic_c, &e_c);
+  int r2 = expo_jacobian(1, counted_ic, &expo_counted, Ja, &nnz, &rc_a, &ic_a, &e_a);
+  ok(r1 == 0 && r2 == 0, "AUTO's differences: both Jacobians made (%d, %d)", r1, r2);
+  /* central: ic in u (2), u' (2), a (2); AUTO: ic in u (2), at the point
+   * and a forward (2); rhs: f_x (2) and f_a (2) either way (n = 1) */
+  ok(ic_c == 6 * (long)gauss && ic_a == 4 * (long)gauss,
+     "ic calls a Gauss point: central 6 (got %ld), AUTO's 4 (got %ld; none in u')",
+     ic_c / (long)gauss, ic_a / (long)gauss);
+  ok(rc_c == 4 * (long)gauss && rc_a == 4 * (long)gauss,
+     "rhs calls a Gauss point: 4 either way for n = 1 (got %ld, %ld)", rc_c / (long)gauss,
+     rc_a / (long)gauss);
+  printf("# Jacobian vs differences of F: central %.2e, AUTO's %.2e\n", e_c, e_a);
+  ok(e_a < 1e-6 && e_c < 1e-6,
+     "an ic without u': AUTO's rule is the Jacobian to %.1e (central %.1e) < 1e-6", e_a, e_c);
+  double d = 0.0;
+  for (size_t q = 0; q < nnz; ++q) d = fmax(d, fabs(Ja[q] - Jc[q]));
+  ok(d > 0.0 && d < 1e-6, "the two rules' entries differ by rounding alone: %.1e", d);
+  /* an ic that reads u': AUTO's rule leaves out its u' terms (data) */
+  double e_u = NAN;
+  long a, b;
+  expo_jacobian(1, ex_ic_all, &expo_fd, Ja, &nnz, &a, &b, &e_u);
+  expo_jacobian(0, ex_ic_all, &expo_fd, Jc, &nnz, &a, &b, &e_c);
+  ok(e_c < 1e-6 && e_u > 1e-3,
+     "an ic reading u': central has its terms (%.1e), AUTO's rule not (%.1e: UDOT is data)",
+     e_c, e_u);
+}
+
 int main(void) {
   test_bratu(WHIRL_LINSOL_DENSE, 0);
   test_bratu(WHIRL_LINSOL_SPARSE, 0);
@@ -1063,5 +1144,6 @@ int main(void) {
   test_bad_options();
   test_mesh_from();
   test_threads();
+  test_auto_differences();
   return done_testing();
 }
