@@ -627,7 +627,7 @@ static int alloc_arrays(whirl_bvp *b) {
  * as AUTO-07p's), 1 for the unknowns after them (the free parameters). */
 static int bvp_norm_weights(double *q, void *data) {
   const whirl_bvp *b = data;
-  colloc_basis_node_weights(b->n, b->ncol, b->ntst, b->mesh, q);
+  colloc_basis_node_weights_from(b->n, b->ncol, b->ntst, b->mesh, b->wint, q);
   for (size_t i = b->nnodes * b->n; i < b->nx; ++i) q[i] = 1.0;
   return 0;
 }
