@@ -140,31 +140,46 @@ static int user_status(whirl_bvp *b, int rc, const char *what) {
   return rc;
 }
 
-/* The boundary and integral rows c[nbc + nint] at X with the full
- * parameters pt (not b->pt: the differences in p pass their own). */
-static int cond_rows(whirl_bvp *b, const double *X, const double *pt,
-                     double *c) {
-  const size_t n = b->n, m = b->ncol, N = b->ntst;
-  bvp_scratch *sc = &b->scr[0];
-  int rc;
-  if (b->nbc) {
-    rc = b->bc(X, X + n * (b->nnodes - 1), pt, c, b->data);
-    if (rc != 0) return user_status(b, rc, "boundary conditions");
-  }
-  double *I = c + b->nbc;
-  if (!b->nint) return 0;
-  memset(I, 0, b->nint * sizeof *I);
+/* The integral rows' terms h w_g g at the Gauss points, b->icterm, added
+ * up into I[nint] in interval and Gauss-point order: the same sum, to the
+ * bit, as one loop making and adding them (the loops that make them run
+ * on several threads). */
+static void sum_integral_terms(const whirl_bvp *b, double *I) {
+  const size_t nint = b->nint, npts = b->ntst * b->ncol;
+  for (size_t q = 0; q < npts; ++q)
+    for (size_t s = 0; s < nint; ++s) I[s] += b->icterm[q * nint + s];
+}
+
+/* The threads of the loop over the intervals: several only where there is
+ * work enough to share (as colloc_threads). */
+static int bvp_threads(const whirl_bvp *b) {
+  return b->nthreads > 1 && b->ntst * b->ncol * b->n >= 512 ? b->nthreads : 1;
+}
+
+/* A loop over the intervals, fn(b, scratch, X, i, k, out, &what) on the
+ * threads the governor g allows: 0, or the first failure in interval
+ * order with the message of the callback *what names. */
+typedef int (*interval_fn)(const whirl_bvp *b, bvp_scratch *s, const double *X, size_t i,
+                           size_t k, double *out, const char **what);
+static int for_intervals(whirl_bvp *b, whirl_gov *g, interval_fn fn, const double *X,
+                         size_t k, double *out) {
+  const size_t N = b->ntst;
+  const int par = bvp_threads(b) > 1;
+  const int nth = par ? whirl_gov_begin(g) : 1;
+  size_t bad = N;
+  int bad_rc = 0;
+  const char *bad_what = NULL;
+#pragma omp parallel for num_threads(nth) schedule(static) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
-    const double h = b->mesh[i + 1] - b->mesh[i];
-    for (size_t g = 0; g < m; ++g) {
-      gauss_state(b, sc, X, i, g);
-      gauss_reference(b, sc, i, g);
-      if ((rc = b->ic(sc->u, sc->uo, sc->ud, sc->upo, pt, sc->gi, b->data)) != 0)
-        return user_status(b, rc, "integral conditions");
-      for (size_t s = 0; s < b->nint; ++s) I[s] += h * b->gw[g] * sc->gi[s];
+    const char *what = NULL;
+    const int rc = fn(b, &b->scr[whirl_thread_num()], X, i, k, out, &what);
+    if (rc != 0) {
+#pragma omp critical(whirl_bvp_intervals)
+      if (i < bad) bad = i, bad_rc = rc, bad_what = what;
     }
   }
-  return 0;
+  if (par) whirl_gov_end(g);
+  return bad < N ? user_status(b, bad_rc, bad_what) : 0;
 }
 
 /* ∂g/∂u into s->gu[k + nint q] and ∂g/∂u' into s->gd, by central
@@ -231,23 +246,43 @@ static int ic_dp_forward(const whirl_bvp *b, bvp_scratch *s, const double *pt, s
 
 /* ------------------------------------------------------------ system */
 
+/* Interval i's collocation rows of F (u' - h f at its Gauss points) and
+ * its integral terms (b->icterm). */
+static int residual_interval(const whirl_bvp *b, bvp_scratch *s, const double *X, size_t i,
+                             size_t k, double *F, const char **what) {
+  (void)k;
+  const whirl_problem *pr = b->prob;
+  const size_t n = b->n, m = b->ncol;
+  const double h = b->mesh[i + 1] - b->mesh[i];
+  int rc;
+  for (size_t g = 0; g < m; ++g) {
+    gauss_state(b, s, X, i, g);
+    *what = "the model's rhs";
+    if ((rc = pr->rhs(b->mesh[i] + h * b->gs[g], s->u, b->pt, s->f, pr->data)) != 0) return rc;
+    double *row = F + n * (i * m + g);
+    for (size_t r = 0; r < n; ++r) row[r] = s->du[r] - h * s->f[r];
+    if (!b->nint) continue;
+    gauss_reference(b, s, i, g);
+    *what = "integral conditions";
+    if ((rc = b->ic(s->u, s->uo, s->ud, s->upo, b->pt, s->gi, b->data)) != 0) return rc;
+    double *t = b->icterm + b->nint * (i * m + g);
+    for (size_t c = 0; c < b->nint; ++c) t[c] = h * b->gw[g] * s->gi[c];
+  }
+  return 0;
+}
+
 static int bvp_F(const double *X, const double *p, double *F, void *data) {
   whirl_bvp *b = data;
-  const whirl_problem *pr = b->prob;
-  const size_t n = b->n, m = b->ncol, N = b->ntst;
-  bvp_scratch *sc = &b->scr[0];
+  const size_t n = b->n;
   whirl_bvp_params(b, X, p, b->pt);
-  for (size_t i = 0; i < N; ++i) {
-    const double h = b->mesh[i + 1] - b->mesh[i];
-    for (size_t g = 0; g < m; ++g) {
-      gauss_state(b, sc, X, i, g);
-      int rc = pr->rhs(b->mesh[i] + h * b->gs[g], sc->u, b->pt, sc->f, pr->data);
-      if (rc != 0) return user_status(b, rc, "the model's rhs");
-      double *row = F + n * (i * m + g);
-      for (size_t r = 0; r < n; ++r) row[r] = sc->du[r] - h * sc->f[r];
-    }
-  }
-  return cond_rows(b, X, b->pt, F + b->ncoll);
+  int rc = for_intervals(b, &b->gov_F, residual_interval, X, 0, F);
+  if (rc != 0) return rc;
+  double *c = F + b->ncoll;
+  if (b->nbc && (rc = b->bc(X, X + n * (b->nnodes - 1), b->pt, c, b->data)) != 0)
+    return user_status(b, rc, "boundary conditions");
+  memset(c + b->nbc, 0, b->nint * sizeof *c);
+  sum_integral_terms(b, c + b->nbc);
+  return 0;
 }
 
 /* Where the entries of the boundary and integral rows of column col sit:
@@ -335,11 +370,6 @@ static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X, do
   return 0;
 }
 
-/* The threads of the loop over the intervals: several only where there is
- * work enough to share (as colloc_threads). */
-static int bvp_threads(const whirl_bvp *b) {
-  return b->nthreads > 1 && b->ntst * b->ncol * b->n >= 512 ? b->nthreads : 1;
-}
 
 /* The collocation rows of every column and the integral rows' node and
  * free entries: the intervals in parallel (fill_interval), then the
@@ -454,31 +484,40 @@ static int bvp_Fx(const double *X, const double *p, double *J, void *data) {
 /* dF/dp_k: −h df/dp_k in the collocation rows, differences of the
  * conditions.  A free parameter's entry of p is not read (p~ takes it from
  * X): its column is 0. */
+/* Interval i's collocation rows of dF/dp_k (−h df/dp_k at its Gauss
+ * points) and its integral terms h w_g ∂g/∂p_k (b->icterm). */
+static int fp_interval(const whirl_bvp *b, bvp_scratch *s, const double *X, size_t i,
+                       size_t k, double *fk, const char **what) {
+  const size_t n = b->n, m = b->ncol;
+  const double h = b->mesh[i + 1] - b->mesh[i];
+  int rc;
+  for (size_t g = 0; g < m; ++g) {
+    gauss_state(b, s, X, i, g);
+    double *v = fk + n * (i * m + g);
+    *what = "the model's parameter derivative";
+    if ((rc = model_fp(b, s, b->mesh[i] + h * b->gs[g], b->pt, k, v)) != 0) return rc;
+    for (size_t r = 0; r < n; ++r) v[r] *= -h;
+    if (!b->nint) continue;
+    gauss_reference(b, s, i, g); /* the integral rows at this point */
+    *what = "integral conditions";
+    if ((rc = ic_dp_at(b, s, b->pt, k)) != 0) return rc;
+    double *t = b->icterm + b->nint * (i * m + g);
+    for (size_t c = 0; c < b->nint; ++c) t[c] = h * b->gw[g] * s->gi[c];
+  }
+  return 0;
+}
+
 static int bvp_Fp(const double *X, const double *p, size_t k, double *fk,
                   void *data) {
   whirl_bvp *b = data;
-  const size_t n = b->n, m = b->ncol, N = b->ntst;
   if (k >= b->npar) return WHIRL_EINVAL;
   memset(fk, 0, b->nx * sizeof *fk);
   for (size_t j = 0; j < b->nfree; ++j)
     if (b->free[j] == k) return 0;
   whirl_bvp_params(b, X, p, b->pt);
-  bvp_scratch *sc = &b->scr[0];
-  for (size_t i = 0; i < N; ++i) {
-    const double h = b->mesh[i + 1] - b->mesh[i];
-    for (size_t g = 0; g < m; ++g) {
-      gauss_state(b, sc, X, i, g);
-      double *v = fk + n * (i * m + g);
-      int rc = model_fp(b, sc, b->mesh[i] + h * b->gs[g], b->pt, k, v);
-      if (rc != 0) return user_status(b, rc, "the model's parameter derivative");
-      for (size_t r = 0; r < n; ++r) v[r] *= -h;
-      if (!b->nint) continue;
-      gauss_reference(b, sc, i, g); /* the integral rows at this point */
-      if ((rc = ic_dp_at(b, sc, b->pt, k)) != 0)
-        return user_status(b, rc, "integral conditions");
-      for (size_t s = 0; s < b->nint; ++s) fk[b->ncoll + b->nbc + s] += h * b->gw[g] * sc->gi[s];
-    }
-  }
+  int rc = for_intervals(b, &b->gov_Fp, fp_interval, X, k, fk);
+  if (rc != 0) return rc;
+  sum_integral_terms(b, fk + b->ncoll + b->nbc);
   return b->nbc ? bc_dp(b, X, k, fk + b->ncoll) : 0;
 }
 
@@ -601,9 +640,11 @@ static int alloc_arrays(whirl_bvp *b) {
   const size_t sizes[] = {np, b->nbc, b->nbc, nc, nc, n * b->nnodes,
                           icacc_size(b) * b->ntst * b->ncol,
                           b->ntst + 1, n * b->nnodes, b->ntst, b->ntst + 1,
-                          n * b->ntst, b->nnodes * (b->ncol + 1)};
+                          n * b->ntst, b->nnodes * (b->ncol + 1),
+                          b->ntst * b->ncol * b->nint};
   double **ptrs[] = {&b->pt, &b->fb, &b->fbm, &b->cp, &b->cm, &b->ref, &b->icacc,
-                     &b->old_mesh, &b->copy, &b->E, &b->Q, &b->Dm, &b->map_L};
+                     &b->old_mesh, &b->copy, &b->E, &b->Q, &b->Dm, &b->map_L,
+                     &b->icterm};
   const size_t nptr = sizeof sizes / sizeof sizes[0];
   size_t tot = 0;
   for (size_t k = 0; k < nptr; ++k) tot += sizes[k] + 1;
@@ -709,6 +750,8 @@ whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
   b->nnz = build_pattern(b, 1);
   b->nthreads = whirl_threads_resolve(o->threads);
   whirl_gov_init(&b->gov, b->nthreads);
+  whirl_gov_init(&b->gov_F, b->nthreads);
+  whirl_gov_init(&b->gov_Fp, b->nthreads);
   if (alloc_arrays(b)) {
     whirl_bvp_free(b);
     return ALLOC_FAIL("out of memory");

@@ -58,6 +58,9 @@ struct whirl_bvp {
   double *pt, *fb, *fbm, *cp, *cm, *ref, *icacc;
   int nthreads;     /* threads of the Jacobian's loop over the intervals */
   whirl_gov gov;    /* how many of them a call runs on (threads_impl.h) */
+  whirl_gov gov_F, gov_Fp; /* likewise for the residual's and F_p's loops */
+  double *icterm;   /* N NCOL nint: each Gauss point's term of the integral
+                       rows, summed in order after a parallel loop */
   bvp_scratch *scr; /* nthreads; scr[0] the sequential code's */
   /* mesh adaptation (AUTO's IAD): dm the NCOL-th derivative's weights,
    * the old mesh, a copy of a vector and the density's scratch */

@@ -1027,6 +1027,17 @@ static void test_threads(void) {
   double e = NAN;
   const int rc = whirl_system_check_jacobian(&sp, X, p, &e);
   ok(rc == 0 && e < 1e-6, "on 3 threads against differences of F: %.1e < 1e-6", e);
+  /* the residual and F_p (the integral row's terms summed in order after
+   * the parallel loop) the same bytes too */
+  double *F1 = malloc(2 * nx * sizeof *F1), *F3 = malloc(2 * nx * sizeof *F3);
+  int f1 = s1->F(X, p, F1, s1->data), f3 = s3->F(X, p, F3, s3->data);
+  f1 = f1 ? f1 : s1->Fp(X, p, 1, F1 + nx, s1->data);
+  f3 = f3 ? f3 : s3->Fp(X, p, 1, F3 + nx, s3->data);
+  ok(f1 == 0 && f3 == 0 && memcmp(F1, F3, 2 * nx * sizeof *F1) == 0 && F1[nx - 1] != 0.0 &&
+         F1[2 * nx - 1] != 0.0,
+     "F and F_p on 3 threads are the same bytes as on 1 (integral rows %.6g, %.6g)",
+     F1[nx - 1], F1[2 * nx - 1]);
+  free(F1), free(F3);
   whirl_bvp_free(b1), whirl_bvp_free(b3);
   /* u = 150 on the nodes of intervals 10-19 (ic -1 there, at most -1 in
    * their neighbours), u = 5000 on those of 500-599 (-2): the first failure
@@ -1044,6 +1055,12 @@ static void test_threads(void) {
     ok(got[v] == -1 && strstr(whirl_bvp_errmsg(b), "integral conditions returned -1"),
        "%d thread(s): the first failing interval's status: %d, '%s'", v ? 3 : 1, got[v],
        whirl_bvp_errmsg(b));
+    double *F = malloc(nx * sizeof *F);
+    const int gf = s->F(X, p, F, s->data);
+    ok(gf == -1 && strstr(whirl_bvp_errmsg(b), "integral conditions returned -1"),
+       "%d thread(s): F's first failing interval's status: %d, '%s'", v ? 3 : 1, gf,
+       whirl_bvp_errmsg(b));
+    free(F);
     whirl_bvp_free(b);
   }
   free(X), free(R), free(J1), free(J3);
