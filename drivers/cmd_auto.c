@@ -622,6 +622,21 @@ static int close_auto(FILE *f[3], char path[3][4400], int rc) {
   return rc;
 }
 
+/* The bytes of the file src appended to dst: 0, or 1 when src cannot be
+ * read or dst written. */
+static int append_file(FILE *dst, const char *src) {
+  FILE *in = fopen(src, "rb");
+  if (!in) return 1;
+  char buf[65536];
+  size_t got;
+  int rc = 0;
+  while (!rc && (got = fread(buf, 1, sizeof buf, in)) > 0)
+    if (fwrite(buf, 1, got, dst) != got) rc = 1;
+  if (ferror(in)) rc = 1;
+  fclose(in);
+  return rc;
+}
+
 /* AUTO's number of run i's first branch (AUTO-07p io.f90, NEWLAB): one
  * more than the largest of its group for a fresh start or a branch switch
  * (ISW < 0); the restart label itself for a locus (|ISW| = 2) or orbits
@@ -668,16 +683,23 @@ static int write_auto_files(auto_job *J, size_t i) {
     return 1;
   }
   FILE *f[3];
-  /* a run named NAME (c.NAME) has the merged files as its own */
-  for (int merged = !strcmp(r->id, J->name); merged < 2; merged++) {
-    int rc = open_auto(J, merged ? J->name : r->id, merged ? "a" : "w", f, path);
-    if (!rc && whirl_auto_write_files(&o, f[0], f[1], f[2], NULL, msg, sizeof msg) != WHIRL_OK) {
-      cli_error("auto", "%s: %s", dir, msg);
-      rc = 1;
-    }
-    if (close_auto(f, path, rc)) return 1;
+  /* a run named NAME (c.NAME) has the merged files as its own; another
+   * run's files are written once and appended to them as they are (the
+   * same bytes: formatting the run's solutions twice was a tenth of demo
+   * man's time) */
+  const int own = !strcmp(r->id, J->name);
+  int rc = open_auto(J, own ? J->name : r->id, own ? "a" : "w", f, path);
+  if (!rc && whirl_auto_write_files(&o, f[0], f[1], f[2], NULL, msg, sizeof msg) != WHIRL_OK) {
+    cli_error("auto", "%s: %s", dir, msg);
+    rc = 1;
   }
-  return 0;
+  if (close_auto(f, path, rc)) return 1;
+  if (own) return 0;
+  char run_path[3][4400];
+  memcpy(run_path, path, sizeof run_path);
+  rc = open_auto(J, J->name, "a", f, path);
+  for (int k = 0; k < 3 && !rc; k++) rc = append_file(f[k], run_path[k]);
+  return close_auto(f, path, rc);
 }
 
 /* Run i: its run file written (its restart chosen) and run, its AUTO

@@ -125,6 +125,8 @@ echo "$last" | awk '{ exit !($3 == -4 && ($5 - 2 < 1e-9 && 2 - $5 < 1e-9) && ($7
 check $? "b.fold.2: from label 2 up to the stop p = 2, u = sqrt(2) ($last)"
 [ "$(grep -c '^LAB' "$o/fold.1.out/solutions")" = 5 ]
 check $? "run 2 left run 1's solutions as they were (5 labels)"
+for k in b s d; do cat "$o/$k.fold.1" "$o/$k.fold.2" | cmp -s - "$o/$k.fold" || break; done
+check $? "b.fold, s.fold, d.fold: run 1's files and run 2's, one after the other ($k)"
 grep -q '^# note: THL on PAR(11): not a parameter of the model, ignored' "$o/fold.1.whirl" &&
   ! grep -q '^THL' "$o/fold.1.whirl"
 check $? "fold.1.whirl notes THL on PAR(11) of equilibria (no such parameter) and leaves it out"
