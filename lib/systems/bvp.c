@@ -370,7 +370,6 @@ static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X, do
   return 0;
 }
 
-
 /* The collocation rows of every column and the integral rows' node and
  * free entries: the intervals in parallel (fill_interval), then the
  * integral terms summed into the entries in interval and Gauss-point
@@ -481,9 +480,6 @@ static int bvp_Fx(const double *X, const double *p, double *J, void *data) {
   return rc;
 }
 
-/* dF/dp_k: −h df/dp_k in the collocation rows, differences of the
- * conditions.  A free parameter's entry of p is not read (p~ takes it from
- * X): its column is 0. */
 /* Interval i's collocation rows of dF/dp_k (−h df/dp_k at its Gauss
  * points) and its integral terms h w_g ∂g/∂p_k (b->icterm). */
 static int fp_interval(const whirl_bvp *b, bvp_scratch *s, const double *X, size_t i,
@@ -507,6 +503,9 @@ static int fp_interval(const whirl_bvp *b, bvp_scratch *s, const double *X, size
   return 0;
 }
 
+/* dF/dp_k: −h df/dp_k in the collocation rows, differences of the
+ * conditions.  A free parameter's entry of p is not read (p~ takes it from
+ * X): its column is 0. */
 static int bvp_Fp(const double *X, const double *p, size_t k, double *fk,
                   void *data) {
   whirl_bvp *b = data;

@@ -112,12 +112,14 @@ typedef struct whirl_bvp_options {
                          by whirl_bvp_alloc (may be NULL when nfree = 0) */
   int adapt_every;    /* IAD: a new mesh every adapt_every accepted points
                          (above); 0 (default): a fixed mesh */
-  int threads;        /* threads of the Jacobian's loop over the mesh
-                         intervals, as whirl_colloc_options.threads: > 0
+  int threads;        /* threads of the loops over the mesh intervals (the
+                         Jacobian's, the residual's, F_p's), as
+                         whirl_colloc_options.threads: > 0
                          that many, 0 as many as OpenMP offers, default 1.
                          With more than one the model's rhs and jac_x and
                          ic are called from several threads at once;
-                         the Jacobian is the same bytes on any number. */
+                         the Jacobian, F and F_p are the same bytes on
+                         any number. */
   int auto_differences; /* 1: the difference quotients of AUTO-07p with
                          JAC = 0 (interfaces.f90, FUNI and ICNI) for the
                          free parameters and the integral conditions:
