@@ -520,6 +520,8 @@ static int alloc_arrays(whirl_colloc *c) {
   c->ref = calloc(nnodes * n, sizeof *c->ref);
   c->phase = calloc(nnodes * n, sizeof *c->phase);
   c->old_X = malloc(nnodes * n * sizeof *c->old_X);
+  c->map_idx = malloc(nnodes * sizeof *c->map_idx);
+  c->map_L = malloc(nnodes * (c->ncol + 1) * sizeof *c->map_L);
   c->ref_new = malloc(nnodes * n * sizeof *c->ref_new);
   c->scr = calloc((size_t)c->nthreads, sizeof *c->scr);
   if (!c->scr) return -1;
@@ -544,7 +546,7 @@ static int alloc_arrays(whirl_colloc *c) {
   c->r2 = malloc(nx * sizeof *c->r2);
   if (!c->mesh || !c->old_mesh || !c->Jp || !c->Ji || !c->Jx || !c->ref ||
       !c->phase || !c->old_X || !c->ref_new || !c->pq || !c->pF || !c->r1 ||
-      !c->r2) {
+      !c->r2 || !c->map_idx || !c->map_L) {
     return -1;
   }
   return 0;
@@ -694,6 +696,8 @@ void whirl_colloc_free(whirl_colloc *c) {
   free(c->ref);
   free(c->phase);
   free(c->old_X);
+  free(c->map_idx);
+  free(c->map_L);
   free(c->ref_new);
   for (int t = 0; c->scr && t < c->nthreads; ++t) {
     colloc_scratch *s = &c->scr[t];
@@ -873,8 +877,17 @@ static int colloc_remap(double *const *v, size_t nv, const double *p,
   c->since_adapt = 0;
   int rc = new_mesh(c, v[0]);
   if (rc <= 0) return rc;
-  for (size_t k = 0; k < nv; ++k) map_nodes(c, v[k]);
-  map_reference(c);
+  /* one plan (each new node's old interval and basis) for every vector:
+   * the same values as map_nodes, without a search and a basis a node
+   * and vector (a fiftieth of demo pla's run) */
+  const size_t N = c->ntst, m = c->ncol;
+  colloc_basis_map_plan(m, N, c->old_mesh, c->mesh, c->map_idx, c->map_L);
+  for (size_t k = 0; k < nv; ++k)
+    colloc_basis_map_apply(c->n, m, N, c->map_idx, c->map_L, c->old_X, v[k]);
+  if (c->aut && c->have_ref) {
+    colloc_basis_map_apply(c->n, m, N, c->map_idx, c->map_L, c->old_X, c->ref);
+    set_reference(c, c->ref);
+  }
   ++c->adaptations;
   return 1;
 }

@@ -68,6 +68,8 @@ struct whirl_colloc {
   colloc_scratch *scr;      /* nthreads */
   double *r1, *r2;          /* nx, nx */
   double *old_mesh, *old_X; /* ntst + 1, nnodes*n: mesh adaptation */
+  size_t *map_idx;  /* the remap's plan: each new node's old interval */
+  double *map_L;    /* and its Lagrange values there, nnodes (ncol + 1) */
   double *ref_new;          /* nnodes*n */
   int adapt_every;          /* options.adapt_every (AUTO's IAD) */
   int mesh_jumps;           /* options.mesh_jumps (AUTO's EQDF) */
