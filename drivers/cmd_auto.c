@@ -947,6 +947,19 @@ static int run_script(auto_job *J) {
 
 /* ---- the command ------------------------------------------------------- */
 
+/* The default order of the constants files could not be made (none of
+ * them numbered, or a restart from a label no earlier run in that order
+ * has): where DIR/NAME.auto exists, its script orders AUTO's runs (ph1's
+ * c.ph1 restarts from runs of c.ph1.ss and c.ph1.ps; plp has c.plp.ss,
+ * c.plp.hb, ...), so say how to run it. */
+static void script_hint(const auto_job *J) {
+  char script[4400];
+  snprintf(script, sizeof script, "%s/%s.auto", J->dir, J->name);
+  if (access(script, R_OK) == 0)
+    fprintf(stderr, "whirl auto: %s orders the runs of these constants files: "
+                    "`whirl auto %s %s --script` runs it\n", script, J->dir, J->name);
+}
+
 static int parse_args(auto_job *J, int argc, char **argv, const char **runs) {
   const char *pos[2] = {NULL, NULL};
   size_t npos = 0;
@@ -1015,6 +1028,7 @@ int cmd_auto(int argc, char **argv) {
   rc = runs ? parse_runs(&J, runs) : default_runs(&J);
   if (!rc) rc = read_constants(&J);
   if (!rc) rc = translate(&J);
+  if (rc && !runs) script_hint(&J);
   if (!rc) rc = check_out(J.out);
   if (!rc) rc = build_model(&J);
   if (!rc) rc = run_all(&J);

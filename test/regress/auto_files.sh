@@ -158,6 +158,19 @@ cp "$tmp/fold/fold.f90" "$tmp/b5/b5.f90"
 cp "$tmp/fold/c.fold.1" "$tmp/b5/c.b5.1"
 printf 'NDIM= -1, IPS = 1\nICP = [1]\n' > "$tmp/b5/c.b5.2"
 bad b5 'b5/c.b5.2:1: NDIM = -1: must be >= 1' "a second constants file with NDIM = -1"
+# a restart the default order cannot make, beside the demo's script: the
+# error, then the script named as the way to run it (exit 2, nothing
+# written); without the script, the error alone
+mkdir "$tmp/b7"
+cp "$tmp/fold/fold.f90" "$tmp/b7/b7.f90"
+sed 's/^IRS.*//' "$tmp/fold/c.fold.1" > "$tmp/b7/c.b7"
+printf 'IRS = 3\n' >> "$tmp/b7/c.b7"
+bad b7 'b7/c.b7:[0-9]*: IRS = 3: no earlier run to restart from' "a restart from no earlier run (no script)"
+[ "$(wc -l < "$tmp/b7.err")" = 1 ]
+check $? "  and without b7.auto no word of a script ($(wc -l < "$tmp/b7.err") line)"
+printf 'run(e="b7", c="b7")\n' > "$tmp/b7/b7.auto"
+bad b7 'b7/b7.auto orders the runs of these constants files: .whirl auto b7 b7 --script. runs it' \
+  "the same beside its script b7.auto"
 # the plug-in links whirl's adapter of AUTO's routines (drivers/
 # auto_adapter.c, libwhirl-auto-adapter.a): without it, one message naming
 # it, exit 1, nothing written; with it, the plug-in's own C file holds the
