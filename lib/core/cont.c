@@ -518,6 +518,12 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
   const int sphere = c->opt.arclength_sphere && c->correcting && s != 0.0 &&
                      !c->switch_step && !natural_row(c, dir);
   if (chord || c->opt.newton_full > 0) border_row(c, dir, c->row2);
+  if (c->sys.direction) {
+    const int rc = c->sys.direction(dir, c->sys.data);
+    if (rc != 0)
+      return WHIRL_FAIL(c, rc < 0 ? rc : WHIRL_EINVAL,
+                        "the system's direction callback failed (%d)", rc);
+  }
   for (int it = 1; it <= c->opt.newton_maxit; ++it) {
     p[c->opt.icp] = X[n];
     int rc = whirl_system_eval(&c->sys, X, p, c->f);

@@ -154,6 +154,8 @@ static int problem(ctx *c) {
   put(c->t, "MESH_RULE = jumps\nORBIT_MAX = nodes\nEQ_STEP = sphere\n");
   /* AUTO's difference quotients of BVPs (FUNI, ICNI with JAC = 0) */
   put(c->t, "DIFFERENCES = auto\n");
+  /* AUTO's ICND gets its direction vector as UDOT */
+  put(c->t, "UDOT = direction\n");
   /* AUTO's default JAC is 0 (finite differences), whirl's 1: always said */
   whirl_auto_constants_int(c->ac, "JAC", &jac);
   put(c->t, "JAC    = %d%s\n", jac != 0, jac == -1 ? "  # AUTO: JAC = -1 (DFDU only)" : "");

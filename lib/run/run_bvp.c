@@ -87,6 +87,7 @@ static int bvp_options(run_ctx *R, size_t ntst, size_t ncol, size_t *free,
   o->adapt_every = s->iad; /* AUTO's IAD: a new mesh every IAD steps */
   o->threads = s->threads; /* THREADS: 0, OpenMP's default (as orbits) */
   o->auto_differences = s->auto_differences; /* DIFFERENCES = auto */
+  o->udot_direction = s->udot_direction;     /* UDOT = direction */
   return 0;
 }
 

@@ -96,6 +96,7 @@ static const key_def keys[] = {
     {WHIRL_RK_MESH_RULE, "MESH_RULE", "mesh_rule", NULL, K_METHOD},
     {WHIRL_RK_EQ_STEP, "EQ_STEP", "eq_step", NULL, K_METHOD},
     {WHIRL_RK_DIFFERENCES, "DIFFERENCES", "differences", NULL, K_METHOD},
+    {WHIRL_RK_UDOT, "UDOT", "udot", NULL, K_METHOD},
     {WHIRL_RK_THREADS, "THREADS", "threads", NULL, K_INT},
     {WHIRL_RK_NWTN, "NWTN", "newton_full_iterations", NULL, K_INT},
 };
@@ -629,6 +630,7 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_MESH_RULE: return &s->mesh_jumps;
     case WHIRL_RK_EQ_STEP: return &s->eq_sphere;
     case WHIRL_RK_DIFFERENCES: return &s->auto_differences;
+    case WHIRL_RK_UDOT: return &s->udot_direction;
     case WHIRL_RK_THREADS: return &s->threads;
     case WHIRL_RK_NWTN: return &s->nwtn;
     case WHIRL_RK_DISCOVER_STARTS: return &s->discover_starts;
@@ -760,6 +762,13 @@ static int set_method(whirl_runfile *rf, const key_def *d, const char *where) {
       return fail(rf, where, "%s: '%s' is neither central nor auto", kn,
                   show(t, ITEMLEN, shown, sizeof shown));
     s->auto_differences = !strcasecmp(t, "auto");
+    return WHIRL_OK;
+  }
+  if (d->key == WHIRL_RK_UDOT) { /* what the integral conditions' udot is */
+    if (strcasecmp(t, "derivative") && strcasecmp(t, "direction"))
+      return fail(rf, where, "%s: '%s' is neither derivative nor direction", kn,
+                  show(t, ITEMLEN, shown, sizeof shown));
+    s->udot_direction = !strcasecmp(t, "direction");
     return WHIRL_OK;
   }
   if (d->key == WHIRL_RK_ORBIT_MAX) { /* what MAX U(i) of an orbit is */

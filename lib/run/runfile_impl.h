@@ -71,6 +71,9 @@ typedef struct whirl_run_settings {
                                    AUTO's FUNI and ICNI with JAC = 0
                                    (forward in the free parameters, none in
                                    ICND's UDOT; 0: central, whirl's) */
+  int udot_direction;           /* UDOT = direction: a BVP's integral
+                                   conditions get the branch's direction as
+                                   udot, AUTO's UDOT (0: u'(t)) */
   int orbit_max_nodes;          /* ORBIT_MAX = nodes: an orbit's MAX U(i) is
                                    AUTO's, the largest node value (0: the
                                    maximum of the collocation polynomial) */

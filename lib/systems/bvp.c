@@ -63,13 +63,23 @@ static void gauss_state(const whirl_bvp *b, bvp_scratch *s, const double *X, siz
 }
 
 /* For the integral conditions at Gauss point g of interval i (after
- * gauss_state): u' = (du/dσ)/h into ud, and the reference and its
- * derivative into uo, upo. */
+ * gauss_state): u' = (du/dσ)/h into ud, or with udot_direction the
+ * direction of the correction there (AUTO's UDOT: its direction vector's
+ * state part, interpolated as u), and the reference and its derivative
+ * into uo, upo. */
 static void gauss_reference(const whirl_bvp *b, bvp_scratch *s, size_t i, size_t g) {
   const size_t n = b->n, m = b->ncol;
   const double h = b->mesh[i + 1] - b->mesh[i];
-  for (size_t r = 0; r < n; ++r) s->ud[r] = s->du[r] / h;
   const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
+  if (b->udot_direction) {
+    memset(s->ud, 0, n * sizeof *s->ud);
+    for (size_t k = 0; k <= m; ++k) {
+      const double *node = b->dref + n * (i * m + k);
+      for (size_t r = 0; r < n; ++r) s->ud[r] += lv[k] * node[r];
+    }
+  } else {
+    for (size_t r = 0; r < n; ++r) s->ud[r] = s->du[r] / h;
+  }
   memset(s->uo, 0, n * sizeof *s->uo);
   memset(s->upo, 0, n * sizeof *s->upo);
   for (size_t k = 0; k <= m; ++k) {
@@ -184,12 +194,13 @@ static int for_intervals(whirl_bvp *b, whirl_gov *g, interval_fn fn, const doubl
 
 /* ∂g/∂u into s->gu[k + nint q] and ∂g/∂u' into s->gd, by central
  * differences at the current Gauss point (after gauss_state and
- * gauss_reference), parameters pt.  With auto_differences ∂g/∂u' is 0:
- * AUTO's ICNI takes no derivative in UDOT, data to ICND. */
+ * gauss_reference), parameters pt.  With auto_differences or
+ * udot_direction ∂g/∂u' is 0: AUTO's ICNI takes no derivative in UDOT,
+ * data to ICND, and the direction is no function of the unknowns. */
 static int ic_partials(const whirl_bvp *b, bvp_scratch *s, const double *pt) {
   const size_t n = b->n, nint = b->nint;
   double *gpart[2] = {s->gu, s->gd};
-  const int nw = b->auto_differences ? 1 : 2;
+  const int nw = b->auto_differences || b->udot_direction ? 1 : 2;
   if (nw == 1) memset(s->gd, 0, n * nint * sizeof *s->gd);
   for (int w = 0; w < nw; ++w) {
     const double *v0 = w ? s->ud : s->u;
@@ -640,10 +651,10 @@ static int alloc_arrays(whirl_bvp *b) {
                           icacc_size(b) * b->ntst * b->ncol,
                           b->ntst + 1, n * b->nnodes, b->ntst, b->ntst + 1,
                           n * b->ntst, b->nnodes * (b->ncol + 1),
-                          b->ntst * b->ncol * b->nint};
+                          b->ntst * b->ncol * b->nint, n * b->nnodes};
   double **ptrs[] = {&b->pt, &b->fb, &b->fbm, &b->cp, &b->cm, &b->ref, &b->icacc,
                      &b->old_mesh, &b->copy, &b->E, &b->Q, &b->Dm, &b->map_L,
-                     &b->icterm};
+                     &b->icterm, &b->dref};
   const size_t nptr = sizeof sizes / sizeof sizes[0];
   size_t tot = 0;
   for (size_t k = 0; k < nptr; ++k) tot += sizes[k] + 1;
@@ -695,6 +706,7 @@ static int bvp_remap(double *const *v, size_t nv, const double *p, void *data) {
   for (size_t k = 0; k < nv; ++k)
     colloc_basis_map_apply(b->n, b->ncol, N, b->map_idx, b->map_L, b->copy, v[k]);
   colloc_basis_map_apply(b->n, b->ncol, N, b->map_idx, b->map_L, b->copy, b->ref);
+  colloc_basis_map_apply(b->n, b->ncol, N, b->map_idx, b->map_L, b->copy, b->dref);
   ++b->adaptations;
   return 1;
 }
@@ -704,6 +716,14 @@ size_t whirl_bvp_adaptations(const whirl_bvp *b) { return b ? b->adaptations : 0
 static int bvp_accept(const double *X, const double *p, void *data) {
   (void)p;
   return whirl_bvp_set_reference(data, X);
+}
+
+/* The system's direction hook (udot_direction): the node values of the
+ * correction's direction, AUTO's UDOT of the integral conditions. */
+static int bvp_direction(const double *dir, void *data) {
+  whirl_bvp *b = data;
+  memcpy(b->dref, dir, b->n * b->nnodes * sizeof *b->dref);
+  return 0;
 }
 
 whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
@@ -765,6 +785,7 @@ whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
   colloc_basis_derivative_weights(m, b->dm);
   b->adapt_every = o->adapt_every;
   b->auto_differences = o->auto_differences != 0;
+  b->udot_direction = o->udot_direction != 0;
   for (size_t g = 0; g < m; ++g)
     colloc_basis_lagrange(m, b->gs[g], b->L + g * (m + 1), b->D + g * (m + 1));
 
@@ -782,6 +803,7 @@ whirl_bvp *whirl_bvp_alloc(const whirl_problem *prob,
   /* condensation of parameters (bvp_cond.c) wants two intervals or more */
   s->bsolver = N >= 2 ? &bvp_bsolver : NULL;
   s->accept = b->nint ? bvp_accept : NULL; /* the reference of ICND */
+  s->direction = b->nint && b->udot_direction ? bvp_direction : NULL; /* ICND's UDOT */
   s->remap = bvp_remap;
   s->norm_weights = bvp_norm_weights;
   s->x_names = NULL; /* node-major unknowns have no model names */

@@ -66,6 +66,8 @@ struct whirl_bvp {
    * the old mesh, a copy of a vector and the density's scratch */
   int adapt_every, since_adapt;
   int auto_differences; /* options.auto_differences: AUTO's FUNI, ICNI */
+  int udot_direction;   /* options.udot_direction: ic's udot from dref */
+  double *dref;         /* the core's direction, node values (n nnodes) */
   size_t adaptations;
   double dm[COLLOC_BASIS_MAXCOL + 1];
   double *old_mesh, *copy, *E, *Q, *Dm;

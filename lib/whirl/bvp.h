@@ -87,7 +87,8 @@ extern "C" {
 typedef int (*whirl_bvp_bc_fn)(const double *u0, const double *u1,
                                const double *p, double *fb, void *data);
 /* Integrands fi[nint] = g(u, uold, udot, upold, p) of the integral
- * conditions at a point t: u = u(t), udot = u'(t), and uold, upold the
+ * conditions at a point t: u = u(t), udot = u'(t) (or the branch's
+ * direction: whirl_bvp_options.udot_direction), and uold, upold the
  * reference solution and its derivative there (AUTO's ICND arguments: the
  * reference is the branch's previous point, for phase conditions: the
  * start (whirl_bvp_from_function, whirl_bvp_set_reference), then every
@@ -130,6 +131,15 @@ typedef struct whirl_bvp_options {
                          not as a function of the unknowns: an ic that
                          reads udot then has no udot terms in its rows.
                          0 (default): central in u, udot and p. */
+  int udot_direction; /* 1: ic's udot is the direction of the branch,
+                         as AUTO's UDOT (AUTO-07p's ICND: "derivative of
+                         UOLD with respect to arclength"): the state part
+                         of the core's direction vector of the correction
+                         (the step's secant or tangent, unit in the
+                         arclength norm; 0 at a start along the
+                         parameter), interpolated at t as u; no
+                         difference is taken in it.  0 (default): udot =
+                         u'(t). */
 } whirl_bvp_options;
 
 /* Defaults: NTST 20, NCOL 4, no conditions, no free parameters, fixed

@@ -60,6 +60,8 @@ typedef enum whirl_run_key {
                        AUTO's sphere about the last point on the secant (1) */
   WHIRL_RK_DIFFERENCES, /* BVPs' difference quotients: central (0) or AUTO's
                            FUNI and ICNI with JAC = 0 (1) */
+  WHIRL_RK_UDOT,        /* BVPs' integral conditions' udot: u'(t) (0) or the
+                           branch's direction, AUTO's UDOT (1) */
   WHIRL_RK_COUNT
 } whirl_run_key;
 

@@ -138,6 +138,14 @@ typedef struct whirl_system {
    * parameters.  Called by the core at the start and after every remap
    * that changed the representation.  0, or an error. */
   int (*norm_weights)(double *q, void *data);
+
+  /* Optional: the direction vector dir[n + 1] of the coming correction
+   * (the unknowns' part, then the continuation parameter's; unit in the
+   * arclength norm: the step's secant or tangent, e_n at a start), given
+   * by the core at the start of every correction, as AUTO-07p hands its
+   * direction vector to the integral conditions as UDOT (AUTO's ICND;
+   * whirl_bvp_options.udot_direction).  0, or an error. */
+  int (*direction)(const double *dir, void *data);
 } whirl_system;
 
 enum { WHIRL_SPEC_EIGENVALUES = 0, WHIRL_SPEC_MULTIPLIERS = 1 };

@@ -660,6 +660,53 @@ static void test_icnd_arguments(void) {
   whirl_bvp_free(b);
 }
 
+/* options.udot_direction (AUTO's UDOT: the direction vector, not u'):
+ * the system gives the core a direction hook, and the integral row of
+ * fi = udot - c is then the integral of the direction's state part: with
+ * the node values of cos 2t it is sin 2 / 2 - c, where with u' it is
+ * u(1) - u(0) - c; the Jacobian stays the differences' of F (udot is data,
+ * no function of the unknowns). */
+static void test_udot_direction(void) {
+  char err[256];
+  const size_t fr[1] = {0};
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = 10, o.ncol = 4, o.nbc = 1, o.nint = 1;
+  o.bc = ex_bc, o.ic = ex_ic_dot;
+  o.nfree = 1, o.free = fr;
+  double p[2] = {0.7, 0.4};
+  for (int dir = 0; dir <= 1; ++dir) {
+    o.udot_direction = dir;
+    whirl_bvp *b = whirl_bvp_alloc(&expo, &o, err, sizeof err);
+    ok(b != NULL, "udot_direction = %d: alloc: %s", dir, err);
+    if (!b) return;
+    const whirl_system *s = whirl_bvp_system(b);
+    const size_t nx = whirl_bvp_size(b);
+    ok((s->direction != NULL) == dir, "udot_direction = %d: %s direction hook", dir,
+       dir ? "a" : "no");
+    double *X = malloc(nx * sizeof *X), *D = malloc((nx + 1) * sizeof *D),
+           *F = malloc(nx * sizeof *F);
+    const double *tau = whirl_bvp_mesh(b);
+    for (size_t i = 0; i < 10; ++i) /* the nodes: 4 a mesh interval, equidistant */
+      for (size_t k = 0; k <= 4; ++k) {
+        const double t = tau[i] + 0.25 * (double)k * (tau[i + 1] - tau[i]);
+        X[4 * i + k] = 1.0 + t + 0.3 * sin(5.0 * t);
+        D[4 * i + k] = cos(2.0 * t);
+      }
+    X[nx - 1] = 0.7, D[nx - 1] = 0.5, D[nx] = 0.25;
+    if (dir) s->direction(D, s->data);
+    int rc = s->F(X, p, F, s->data);
+    const double want = dir ? sin(2.0) / 2.0 - p[1] : X[40] - X[0] - p[1];
+    is_abs(F[nx - 1], want, 1e-8, "udot_direction = %d: the integral row %s", dir,
+           dir ? "sin 2 / 2 - c (the direction cos 2t)" : "u(1) - u(0) - c (u')");
+    double e = NAN;
+    rc = rc ? rc : whirl_system_check_jacobian(s, X, p, &e);
+    ok(rc == 0 && e < 1e-6, "udot_direction = %d: Jacobian vs differences of F %.1e", dir, e);
+    free(X), free(D), free(F);
+    whirl_bvp_free(b);
+  }
+}
+
 static void test_jacobians(void) {
   char err[256];
   whirl_bvp_options o;
@@ -1162,5 +1209,6 @@ int main(void) {
   test_mesh_from();
   test_threads();
   test_auto_differences();
+  test_udot_direction();
   return done_testing();
 }

@@ -1,0 +1,98 @@
+#!/bin/sh
+# test/regress/auto_udot.sh — AUTO's ICND gets UDOT, the direction vector
+# of the branch ("derivative of UOLD with respect to arclength", AUTO-07p's
+# ICND), not u'(t).  Bratu's problem u'' + lambda e^u = 0, u(0) = u(1) = 0,
+# written here with the integral condition PAR(2) = INTEGRAL u UDOT(1)
+# (PAR(2) free): with u' in place of UDOT the integral is (u(1)^2 -
+# u(0)^2) / 2 = 0, and PAR(2) would be 0 at every point.  Seven steps of
+# DS = DSMIN = DSMAX = 0.2 on a fixed mesh (IAD = 0), so both programs take
+# the same steps; the reference rows are AUTO-07p 0.9.2's (the Debian
+# package auto-07p, `run(e='udt', c='udt')` on these very files, b.udt),
+# lambda and PAR(2) to 2e-6 relative at each point.  TAP output.
+set -u
+: "${top_srcdir:=.}" "${top_builddir:=.}"
+WHIRL="$(cd "$top_builddir" && pwd)/drivers/whirl"
+command -v "${FC:-gfortran}" >/dev/null 2>&1 || { echo "1..0 # SKIP no Fortran compiler"; exit 0; }
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+n=0 fail=0
+ok() { n=$((n + 1)); echo "ok $n - $*"; }
+nok() { n=$((n + 1)); echo "not ok $n - $*"; fail=1; }
+check() { if [ "$1" = 0 ]; then shift; ok "$@"; else shift; nok "$@"; fi; }
+
+mkdir "$tmp/udt"
+cat > "$tmp/udt/udt.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER, INTENT(IN) :: NDIM, ICP(*), IJAC
+      DOUBLE PRECISION, INTENT(IN) :: U(NDIM), PAR(*)
+      DOUBLE PRECISION, INTENT(OUT) :: F(NDIM)
+      DOUBLE PRECISION, INTENT(INOUT) :: DFDU(NDIM,NDIM), DFDP(NDIM,*)
+      F(1)= U(2)
+      F(2)=-PAR(1) * EXP(U(1))
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER, INTENT(IN) :: NDIM
+      DOUBLE PRECISION, INTENT(INOUT) :: U(NDIM),PAR(*)
+      DOUBLE PRECISION, INTENT(IN) :: T
+      PAR(1)=0
+      PAR(2)=0
+      U(1)=0.0
+      U(2)=0.0
+      END SUBROUTINE STPNT
+      SUBROUTINE BCND(NDIM,PAR,ICP,NBC,U0,U1,FB,IJAC,DBC)
+      IMPLICIT NONE
+      INTEGER, INTENT(IN) :: NDIM, ICP(*), NBC, IJAC
+      DOUBLE PRECISION, INTENT(IN) :: PAR(*), U0(NDIM), U1(NDIM)
+      DOUBLE PRECISION, INTENT(OUT) :: FB(NBC)
+      DOUBLE PRECISION, INTENT(INOUT) :: DBC(NBC,*)
+      FB(1)=U0(1)
+      FB(2)=U1(1)
+      END SUBROUTINE BCND
+      SUBROUTINE ICND(NDIM,PAR,ICP,NINT,U,UOLD,UDOT,UPOLD,FI,IJAC,DINT)
+      IMPLICIT NONE
+      INTEGER, INTENT(IN) :: NDIM, ICP(*), NINT, IJAC
+      DOUBLE PRECISION, INTENT(IN) :: PAR(*)
+      DOUBLE PRECISION, INTENT(IN) :: U(NDIM), UOLD(NDIM), UDOT(NDIM), UPOLD(NDIM)
+      DOUBLE PRECISION, INTENT(OUT) :: FI(NINT)
+      DOUBLE PRECISION, INTENT(INOUT) :: DINT(NINT,*)
+      FI(1)=U(1)*UDOT(1) - PAR(2)
+      END SUBROUTINE ICND
+      SUBROUTINE FOPT
+      END SUBROUTINE FOPT
+      SUBROUTINE PVLS
+      END SUBROUTINE PVLS
+F
+cat > "$tmp/udt/c.udt" <<'C'
+NDIM=   2, IPS =   4, IRS =   0, ILP =   0
+ICP =  [1, 2]
+NTST=  10, NCOL=   4, IAD =   0, ISP =   0, ISW = 1, IPLT= 0, NBC= 2, NINT= 1
+NMX=  8, NPR=  100, MXBF=  10, IID =   2, ITMX= 8, ITNW= 7, NWTN= 3, JAC= 0
+EPSL= 1e-10, EPSU = 1e-10, EPSS =0.0001
+DS  =  0.2, DSMIN= 0.2, DSMAX=   0.2, IADS=   1
+NPAR = 2, THL =  {}, THU =  {}
+C
+(cd "$tmp" && "$WHIRL" auto udt --quiet > udt.log 2>&1)
+check $? "whirl auto udt exits 0 $(head -1 "$tmp/udt.log")"
+grep -q '^UDOT = direction$' "$tmp/udt.out/udt.whirl"
+check $? "udt.whirl: UDOT = direction (AUTO's ICND)"
+# AUTO-07p's b.udt: PT, lambda, PAR(2)
+cat > "$tmp/ref" <<'R'
+2 1.9110258157E-001 1.5545751559E-003
+3 3.8151491739E-001 3.2255047235E-003
+4 5.7114389324E-001 5.1190651690E-003
+5 7.5988274130E-001 7.2385900860E-003
+6 9.4760394442E-001 9.6204893185E-003
+7 1.1341541371E+000 1.2308699844E-002
+8 1.3193473782E+000 1.5356609941E-002
+R
+awk '$1 == 1 && $2 >= 2 && $2 <= 8 { print $2, $5, $NF }' "$tmp/udt.out/b.udt" > "$tmp/got"
+out=$(awk 'function rel(a, b) { d = a - b; if (d < 0) d = -d; if (b < 0) b = -b; return d / b }
+  NR == FNR { l[$1] = $2; q[$1] = $3; next }
+  ($1 in l) { seen++; if (rel($2, l[$1]) > 2e-6 || rel($3, q[$1]) > 2e-6) printf "PT %s: %s %s against AUTO %s %s; ", $1, $2, $3, l[$1], q[$1] }
+  END { if (seen != 7) printf "%d of AUTO 7 points", seen }' "$tmp/ref" "$tmp/got")
+[ -z "$out" ]
+check $? "b.udt: lambda and PAR(2) = INTEGRAL u UDOT(1) at PT 2-8 as AUTO's to 2e-6 (PAR(2) 1.5546e-3 ... 1.5357e-2, not 0) ${out:+($out)}"
+echo "1..$n"
+exit $fail
