@@ -32,9 +32,12 @@ int whirl_threads_resolve(int threads) {
 /* calls a probe times on each count; the time the choice then runs, at
  * first and at most (doubled while it stands): a probe on two threads
  * costs one scheduler slice (~10 ms) where a core is busy, so the
- * choice runs long enough for that to be small */
+ * choice runs long enough for that to be small, but the first probe comes
+ * early: a run of AUTO's demos is often a tenth of a second, and on two
+ * threads where one is faster (demo ab's orbits, NTST 70 of two states:
+ * 0.17 s against 0.12 s) a first span of 0.2 s ran all of it on two */
 enum { GOV_PROBE = 4 };
-static const double gov_span0 = 0.2, gov_span_max = 2.0;
+static const double gov_span0 = 0.03, gov_span_max = 2.0;
 
 static double gov_now(void) {
   struct timespec ts;

@@ -23,9 +23,9 @@ int whirl_threads_resolve(int threads);
  * thread descheduled in the middle of one stalls the others at its end:
  * demo pla took 40.8 s on two threads beside one busy core where one
  * thread took 17.1 s (107 s beside AUTO's own OpenMP runs, 14 s idle).
- * So the governor times the calls: after a first span on nmax (0.2 s), a
+ * So the governor times the calls: after a first span on nmax (0.03 s), a
  * few on one thread and a few on nmax (cut short once slower), and the
- * faster count runs until the next probe, the probes rarer (0.2 s to 2 s
+ * faster count runs until the next probe, the probes rarer (0.03 s to 2 s
  * apart) while the choice stands.  The loops' results do not depend on
  * their threads (they are written so), so neither do the governor's
  * choices change any value.

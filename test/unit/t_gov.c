@@ -38,10 +38,19 @@ int main(void) {
   whirl_gov g;
   long many, calls;
 
-  /* the first span (0.2 s) on the threads asked for */
+  /* the first span (0.03 s) on the threads asked for */
   whirl_gov_init(&g, 2);
-  run(&g, 0.05, 100, 2000, &many, &calls);
+  run(&g, 0.015, 100, 2000, &many, &calls);
   ok(many == calls, "the first span: every call on two threads (%ld of %ld)", many, calls);
+
+  /* a short job (0.1 s: a run of an AUTO demo) where one thread is
+   * faster runs most of it on one: the first probe comes early (with a
+   * first span of 0.2 s, as until 2026-12-06, all on two) */
+  whirl_gov_init(&g, 2);
+  run(&g, 0.1, 100, 300, &many, &calls);
+  ok(g.use == 1 && many * 2 < calls,
+     "a 0.1 s job, one thread 3x faster: one thread runs (use %d), %ld of %ld calls on two",
+     g.use, many, calls);
 
   /* two threads 20x slower (a core busy elsewhere): after the first
    * probe one thread runs, the probes' calls on two a few */
@@ -57,7 +66,7 @@ int main(void) {
   ok((calls - many) * 10 < calls, "faster on two threads: %ld of %ld calls on one (< 10 %%)",
      calls - many, calls);
 
-  /* the faster count changes: the next probe (within the span, 0.2 s at
+  /* the faster count changes: the next probe (within the span, 0.03 s at
    * first, doubled while the choice stands) changes the choice */
   whirl_gov_init(&g, 4);
   run(&g, 0.5, 1000, 100, &many, &calls);
