@@ -8,7 +8,8 @@
 # DS = DSMIN = DSMAX = 0.2 on a fixed mesh (IAD = 0), so both programs take
 # the same steps; the reference rows are AUTO-07p 0.9.2's (the Debian
 # package auto-07p, `run(e='udt', c='udt')` on these very files, b.udt),
-# lambda and PAR(2) to 2e-6 relative at each point.  TAP output.
+# lambda and PAR(2) to 2e-6 relative at each point.  Then the same with
+# AUTO's adapted meshes and adaptive steps, 24 points.  TAP output.
 set -u
 : "${top_srcdir:=.}" "${top_builddir:=.}"
 WHIRL="$(cd "$top_builddir" && pwd)/drivers/whirl"
@@ -94,5 +95,51 @@ out=$(awk 'function rel(a, b) { d = a - b; if (d < 0) d = -d; if (b < 0) b = -b;
   END { if (seen != 7) printf "%d of AUTO 7 points", seen }' "$tmp/ref" "$tmp/got")
 [ -z "$out" ]
 check $? "b.udt: lambda and PAR(2) = INTEGRAL u UDOT(1) at PT 2-8 as AUTO's to 2e-6 (PAR(2) 1.5546e-3 ... 1.5357e-2, not 0) ${out:+($out)}"
+# the same with AUTO's adapted meshes (IAD = 3: the direction, the secant
+# of the last two points, taken on each new mesh) and adaptive steps (DS
+# 0.05 to 0.5): AUTO-07p's 24 points after the start, lambda to 1e-6 and PAR(2)
+# to 5e-6 relative (at PT 25, lambda 3.455, they differ by 1.4e-7 and
+# 1.3e-6: the integrals by Gauss points, AUTO's by the nodes)
+mkdir "$tmp/ud2"
+cp "$tmp/udt/udt.f90" "$tmp/ud2/ud2.f90"
+sed -e 's/IAD =   0/IAD =   3/' -e 's/NMX=  8/NMX= 25/' -e 's/ILP =   0/ILP =   1/' \
+    -e 's/EPSS =0.0001/EPSS = 1e-6/' \
+    -e 's/DS  =  0.2, DSMIN= 0.2, DSMAX=   0.2/DS  =  0.05, DSMIN= 0.001, DSMAX=   0.5/' \
+    "$tmp/udt/c.udt" > "$tmp/ud2/c.ud2"
+(cd "$tmp" && "$WHIRL" auto ud2 --quiet > ud2.log 2>&1)
+check $? "whirl auto ud2 (IAD = 3, adaptive steps) exits 0 $(head -1 "$tmp/ud2.log")"
+cat > "$tmp/ref2" <<'R'
+2 4.7835368242E-002 3.8338546844E-004
+3 1.0040702759E-001 8.1268311667E-004
+4 1.5817855619E-001 1.3001908503E-003
+5 2.2165539921E-001 1.8535178335E-003
+6 2.9138946750E-001 2.4837321585E-003
+7 3.6798250545E-001 3.2043165063E-003
+8 4.5208931084E-001 4.0318477816E-003
+9 5.4442059552E-001 4.9869116566E-003
+10 6.4574514005E-001 6.0953547778E-003
+11 7.5689069126E-001 7.3900257334E-003
+12 8.7874271905E-001 8.9132372981E-003
+13 1.0122395930E+000 1.0720314975E-002
+14 1.1583617845E+000 1.2884818453E-002
+15 1.3181110105E+000 1.5506403101E-002
+16 1.4924721317E+000 1.8722959506E-002
+17 1.6823447136E+000 2.2729887270E-002
+18 1.8884194088E+000 2.7811630705E-002
+19 2.1109499201E+000 3.4394924621E-002
+20 2.3493183644E+000 4.3141470572E-002
+21 2.6011734239E+000 5.5112845575E-002
+22 2.8606591217E+000 7.2061950412E-002
+23 3.1147725692E+000 9.6895535503E-002
+24 3.3195045605E+000 1.3174425217E-001
+25 3.4552174004E+000 1.7742851121E-001
+R
+awk '$1 == 1 && $2 >= 2 { print $2, $5, $NF }' "$tmp/ud2.out/b.ud2" > "$tmp/got2"
+out=$(awk 'function rel(a, b) { d = a - b; if (d < 0) d = -d; if (b < 0) b = -b; return d / b }
+  NR == FNR { l[$1] = $2; q[$1] = $3; next }
+  ($1 in l) { seen++; if (rel($2, l[$1]) > 1e-6 || rel($3, q[$1]) > 5e-6) printf "PT %s: %s %s against AUTO %s %s; ", $1, $2, $3, l[$1], q[$1] }
+  END { if (seen != 24) printf "%d of AUTO 24 points", seen }' "$tmp/ref2" "$tmp/got2")
+[ -z "$out" ]
+check $? "b.ud2: AUTO's steps on AUTO's meshes, lambda and PAR(2) at PT 2-25 as AUTO's ${out:+($out)}"
 echo "1..$n"
 exit $fail
