@@ -10,16 +10,20 @@
 # package auto-07p, `run(e='udt', c='udt')` on these very files, b.udt),
 # lambda and PAR(2) to 2e-6 relative at each point.  Then the same with
 # AUTO's adapted meshes and adaptive steps, 24 points.  TAP output.
-set -u
-: "${top_srcdir:=.}" "${top_builddir:=.}"
-WHIRL="$(cd "$top_builddir" && pwd)/drivers/whirl"
 command -v "${FC:-gfortran}" >/dev/null 2>&1 || { echo "1..0 # SKIP no Fortran compiler"; exit 0; }
-tmp=$(mktemp -d) || exit 1
-trap 'rm -rf "$tmp"' EXIT
-n=0 fail=0
-ok() { n=$((n + 1)); echo "ok $n - $*"; }
-nok() { n=$((n + 1)); echo "not ok $n - $*"; fail=1; }
-check() { if [ "$1" = 0 ]; then shift; ok "$@"; else shift; nok "$@"; fi; }
+name=auto_udot
+. "${top_srcdir:-.}/test/regress/tap.sh"
+
+# against REF (AUTO's rows: PT, lambda, PAR(2)), the rows of b-file B with
+# PT >= 2, lambda to LTOL and PAR(2) to QTOL relative, every one of AUTO's
+# points there: nothing printed when they agree
+against_auto() { # REF B LTOL QTOL
+  awk '$1 == 1 && $2 >= 2 { print $2, $5, $NF }' "$2" |
+    awk -v lt="$3" -v qt="$4" 'function rel(a, b) { d = a - b; if (d < 0) d = -d; if (b < 0) b = -b; return d / b }
+      NR == FNR { l[$1] = $2; q[$1] = $3; nref++; next }
+      ($1 in l) { seen++; if (rel($2, l[$1]) > lt || rel($3, q[$1]) > qt) printf "PT %s: %s %s against AUTO %s %s; ", $1, $2, $3, l[$1], q[$1] }
+      END { if (seen != nref) printf "%d of AUTO %d points", seen, nref }' "$1" -
+}
 
 mkdir "$tmp/udt"
 cat > "$tmp/udt/udt.f90" <<'F'
@@ -75,9 +79,9 @@ DS  =  0.2, DSMIN= 0.2, DSMAX=   0.2, IADS=   1
 NPAR = 2, THL =  {}, THU =  {}
 C
 (cd "$tmp" && "$WHIRL" auto udt --quiet > udt.log 2>&1)
-check $? "whirl auto udt exits 0 $(head -1 "$tmp/udt.log")"
+ok $? "whirl auto udt exits 0 $(head -1 "$tmp/udt.log")"
 grep -q '^UDOT = direction$' "$tmp/udt.out/udt.whirl"
-check $? "udt.whirl: UDOT = direction (AUTO's ICND)"
+ok $? "udt.whirl: UDOT = direction (AUTO's ICND)"
 # AUTO-07p's b.udt: PT, lambda, PAR(2)
 cat > "$tmp/ref" <<'R'
 2 1.9110258157E-001 1.5545751559E-003
@@ -88,13 +92,9 @@ cat > "$tmp/ref" <<'R'
 7 1.1341541371E+000 1.2308699844E-002
 8 1.3193473782E+000 1.5356609941E-002
 R
-awk '$1 == 1 && $2 >= 2 && $2 <= 8 { print $2, $5, $NF }' "$tmp/udt.out/b.udt" > "$tmp/got"
-out=$(awk 'function rel(a, b) { d = a - b; if (d < 0) d = -d; if (b < 0) b = -b; return d / b }
-  NR == FNR { l[$1] = $2; q[$1] = $3; next }
-  ($1 in l) { seen++; if (rel($2, l[$1]) > 2e-6 || rel($3, q[$1]) > 2e-6) printf "PT %s: %s %s against AUTO %s %s; ", $1, $2, $3, l[$1], q[$1] }
-  END { if (seen != 7) printf "%d of AUTO 7 points", seen }' "$tmp/ref" "$tmp/got")
+out=$(against_auto "$tmp/ref" "$tmp/udt.out/b.udt" 2e-6 2e-6)
 [ -z "$out" ]
-check $? "b.udt: lambda and PAR(2) = INTEGRAL u UDOT(1) at PT 2-8 as AUTO's to 2e-6 (PAR(2) 1.5546e-3 ... 1.5357e-2, not 0) ${out:+($out)}"
+ok $? "b.udt: lambda and PAR(2) = INTEGRAL u UDOT(1) at PT 2-8 as AUTO's to 2e-6 (PAR(2) 1.5546e-3 ... 1.5357e-2, not 0) ${out:+($out)}"
 # the same with AUTO's adapted meshes (IAD = 3: the direction, the secant
 # of the last two points, taken on each new mesh) and adaptive steps (DS
 # 0.05 to 0.5): AUTO-07p's 24 points after the start, lambda to 1e-6 and PAR(2)
@@ -107,7 +107,7 @@ sed -e 's/IAD =   0/IAD =   3/' -e 's/NMX=  8/NMX= 25/' -e 's/ILP =   0/ILP =   
     -e 's/DS  =  0.2, DSMIN= 0.2, DSMAX=   0.2/DS  =  0.05, DSMIN= 0.001, DSMAX=   0.5/' \
     "$tmp/udt/c.udt" > "$tmp/ud2/c.ud2"
 (cd "$tmp" && "$WHIRL" auto ud2 --quiet > ud2.log 2>&1)
-check $? "whirl auto ud2 (IAD = 3, adaptive steps) exits 0 $(head -1 "$tmp/ud2.log")"
+ok $? "whirl auto ud2 (IAD = 3, adaptive steps) exits 0 $(head -1 "$tmp/ud2.log")"
 cat > "$tmp/ref2" <<'R'
 2 4.7835368242E-002 3.8338546844E-004
 3 1.0040702759E-001 8.1268311667E-004
@@ -134,12 +134,7 @@ cat > "$tmp/ref2" <<'R'
 24 3.3195045605E+000 1.3174425217E-001
 25 3.4552174004E+000 1.7742851121E-001
 R
-awk '$1 == 1 && $2 >= 2 { print $2, $5, $NF }' "$tmp/ud2.out/b.ud2" > "$tmp/got2"
-out=$(awk 'function rel(a, b) { d = a - b; if (d < 0) d = -d; if (b < 0) b = -b; return d / b }
-  NR == FNR { l[$1] = $2; q[$1] = $3; next }
-  ($1 in l) { seen++; if (rel($2, l[$1]) > 1e-6 || rel($3, q[$1]) > 5e-6) printf "PT %s: %s %s against AUTO %s %s; ", $1, $2, $3, l[$1], q[$1] }
-  END { if (seen != 24) printf "%d of AUTO 24 points", seen }' "$tmp/ref2" "$tmp/got2")
+out=$(against_auto "$tmp/ref2" "$tmp/ud2.out/b.ud2" 1e-6 5e-6)
 [ -z "$out" ]
-check $? "b.ud2: AUTO's steps on AUTO's meshes, lambda and PAR(2) at PT 2-25 as AUTO's ${out:+($out)}"
-echo "1..$n"
-exit $fail
+ok $? "b.ud2: AUTO's steps on AUTO's meshes, lambda and PAR(2) at PT 2-25 as AUTO's ${out:+($out)}"
+tap_end
