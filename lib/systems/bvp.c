@@ -160,9 +160,9 @@ static void sum_integral_terms(const whirl_bvp *b, double *I) {
     for (size_t s = 0; s < nint; ++s) I[s] += b->icterm[q * nint + s];
 }
 
-/* The threads of the loop over the intervals: several only where there is
+/* The threads of the loops over the intervals: several only where there is
  * work enough to share (as colloc_threads). */
-static int bvp_threads(const whirl_bvp *b) {
+int bvp_threads(const whirl_bvp *b) {
   return b->nthreads > 1 && b->ntst * b->ncol * b->n >= 512 ? b->nthreads : 1;
 }
 

@@ -135,7 +135,10 @@ static void *bs_alloc(void *data) {
     gcol[b->nfree] = b->nx;
     for (size_t t = 0; t < b->nint; ++t) blab[t] = (int)(b->ncoll + b->nbc + t);
     blab[b->nint] = (int)b->nx;
-    const cond_shape s = {b->n, b->ncol, b->ntst, b->nx, ng, nb, b->npar, gcol, blab, 1};
+    /* the intervals condensed on the Jacobian's threads (cond_elim.c's
+     * parallel loop; the same bytes on any number) */
+    const cond_shape s = {b->n,   b->ncol, b->ntst, b->nx,         ng,
+                          nb,     b->npar, gcol,    blab, bvp_threads(b)};
     if (R->ic && R->bcr) w = cond_alloc(&s, &bvp_ops, R);
   }
   free(gcol);

@@ -76,6 +76,10 @@ struct whirl_bvp {
   char errmsg[WHIRL_ERRMSG_SIZE];
 };
 
+/* bvp.c: the threads of the loops over the intervals (1 where the mesh is
+ * too small to share). */
+int bvp_threads(const whirl_bvp *b);
+
 /* bvp.c: the sparse Jacobian's values Jx (the system's pattern Jp, Ji) at
  * (X, p): the system's Fx_sparse. */
 int bvp_Fx_sparse(const double *X, const double *p, double *Jx, void *data);

@@ -1085,6 +1085,29 @@ static void test_threads(void) {
      "F and F_p on 3 threads are the same bytes as on 1 (integral rows %.6g, %.6g)",
      F1[nx - 1], F1[2 * nx - 1]);
   free(F1), free(F3);
+  /* the structured solver's condensation on 3 threads (cond_elim.c's
+   * parallel loop over the intervals): the same factors, solution and
+   * determinant bytes as on 1 */
+  {
+    const whirl_bsolver *bs1 = s1->bsolver, *bs3 = s3->bsolver;
+    void *w1 = bs1 ? bs1->alloc(s1->data) : NULL, *w3 = bs3 ? bs3->alloc(s3->data) : NULL;
+    double *r = malloc((nx + 1) * sizeof *r), *z1 = malloc((nx + 1) * sizeof *z1),
+           *z3 = malloc((nx + 1) * sizeof *z3), la1 = NAN, la3 = NAN;
+    int sg1 = 0, sg3 = 0, rc1 = -1, rc3 = -1;
+    for (size_t q = 0; q <= nx; ++q) r[q] = 1.0 / (double)(nx + 1), z1[q] = z3[q] = sin(0.1 * q);
+    if (w1 && w3) {
+      rc1 = bs1->factor(w1, X, p, 1, r), rc3 = bs3->factor(w3, X, p, 1, r);
+      rc1 = rc1 ? rc1 : bs1->solve(w1, z1, 1), rc3 = rc3 ? rc3 : bs3->solve(w3, z3, 1);
+      bs1->logdet(w1, &la1, &sg1), bs3->logdet(w3, &la3, &sg3);
+    }
+    ok(rc1 == 0 && rc3 == 0 && memcmp(z1, z3, (nx + 1) * sizeof *z1) == 0 && la1 == la3 &&
+           sg1 == sg3 && sg1 != 0,
+       "the structured solve on 3 threads: the same bytes as on 1 (log|det| %.6g, sign %d)",
+       la1, sg1);
+    if (bs1) bs1->free(w1);
+    if (bs3) bs3->free(w3);
+    free(r), free(z1), free(z3);
+  }
   whirl_bvp_free(b1), whirl_bvp_free(b3);
   /* u = 150 on the nodes of intervals 10-19 (ic -1 there, at most -1 in
    * their neighbours), u = 5000 on those of 500-599 (-2): the first failure
