@@ -7,10 +7,12 @@
  * NFREE = NBC + NINT − n makes the final system square, as AUTO's
  * NFPR = NBC + NINT − NDIM + 1 with the continuation parameter.
  *
- * The entries come from the system's own sparse Jacobian (bvp.c), scattered
- * into the interval blocks, the boundary rows and dense integral rows, and
- * dF/dp_k from its Fp: the same numbers the sparse LU factors, so the two
- * solvers agree to rounding (t_bvp checks solutions and determinants).
+ * The entries come from the system's own sparse Jacobian (bvp.c): the
+ * boundary rows and dense integral rows before the intervals, each
+ * interval's block in the loop that condenses it (cond_elim.c's
+ * fill_one, on the intervals' threads), and dF/dp_k from its Fp: the same
+ * numbers the sparse LU factors, so the two solvers agree to rounding
+ * (t_bvp checks solutions and determinants).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <stdlib.h>
 #include <string.h>
@@ -29,36 +31,22 @@ typedef struct bvp_rows {
   double *bcr;  /* nbc x nf: the boundary rows */
 } bvp_rows;
 
-/* The Jacobian's entries into the blocks, boundary and integral rows.  A
- * node column's collocation rows (sorted) are those of the interval or two
- * intervals holding the node: the interval and the node's place in it are
- * followed along the column, without a division per entry. */
-static void scatter(cond_ws *w, bvp_rows *R, int mono) {
+/* The boundary and integral rows' entries of the Jacobian (the last
+ * entries of each column, its rows sorted) into R->bcr and R->ic. */
+static void scatter_conditions(bvp_rows *R, int mono) {
   const whirl_bvp *b = R->b;
-  const size_t n = b->n, m = b->ncol, nm = n * m, nn = n * b->nnodes,
-               nx = b->nx, ni = n * (m - 1), last = b->nnodes - 1,
-               wc = cond_block_ld(w), ncoll = b->ncoll;
+  const size_t n = b->n, nn = n * b->nnodes, nx = b->nx, last = b->nnodes - 1,
+               ncoll = b->ncoll;
   for (size_t col = 0; col < nx; ++col) {
     if (mono && col >= nn) break; /* F_x alone: the globals' columns 0 */
     const size_t node = col / n, q = col % n;
     const size_t bpos = col >= nn ? 2 * n + (col - nn)
                         : node == 0 ? q : node == last ? n + q : R->nf;
-    size_t i = (size_t)-1, pos = 0, end = 0; /* rows of interval i: < end */
-    double *Wi = NULL;
-    for (int e = b->Jp[col]; e < b->Jp[col + 1]; ++e) {
+    for (int e = b->Jp[col + 1]; e-- > b->Jp[col];) {
       const size_t row = (size_t)b->Ji[e];
+      if (row < ncoll) break;
       const double v = b->Jx[e];
-      if (row < ncoll) {
-        if (row >= end) { /* the next interval of this column */
-          i = row / nm;
-          end = (i + 1) * nm;
-          Wi = cond_block(w, i) - i * nm * wc;
-          const size_t kk = node - i * m;
-          pos = col >= nn ? ni + 2 * n + (col - nn)
-                : kk == 0 ? ni + q : kk == m ? ni + n + q : (kk - 1) * n + q;
-        }
-        Wi[row * wc + pos] = v;
-      } else if (row < ncoll + b->nbc) {
+      if (row < ncoll + b->nbc) {
         if (bpos < R->nf) R->bcr[(row - ncoll) * R->nf + bpos] = v;
       } else {
         R->ic[(row - ncoll - b->nbc) * (nx + 1) + col] = v;
@@ -67,27 +55,60 @@ static void scatter(cond_ws *w, bvp_rows *R, int mono) {
   }
 }
 
-static int bvp_fill(cond_ws *w, const double *X, const double *p, size_t k,
-                    int mono) {
+/* Before the intervals: the sparse Jacobian and dF/dp_k at (X, p) (each
+ * by its own parallel loop), and the boundary and integral rows. */
+static int bvp_fill_begin(cond_ws *w, const double *X, const double *p, size_t k,
+                          int mono) {
   bvp_rows *R = cond_sys(w);
   whirl_bvp *b = R->b;
-  const size_t n = b->n, m = b->ncol, N = b->ntst, nx = b->nx,
-               wc = cond_block_ld(w), nm = n * m, pk = 2 * n + b->nfree;
+  const size_t nx = b->nx, pk = 2 * b->n + b->nfree;
   int rc = bvp_Fx_sparse(X, p, b->Jx, b);
   if (rc != 0) return rc;
   double *fk = cond_fk(w);
   if (!mono && (rc = whirl_system_param(&b->sys, X, p, k, fk, cond_work(w))) != 0)
     return rc;
-  for (size_t i = 0; i < N; ++i) memset(cond_block(w, i), 0, nm * wc * sizeof(double));
   memset(R->ic, 0, b->nint * (nx + 1) * sizeof *R->ic);
   memset(R->bcr, 0, b->nbc * R->nf * sizeof *R->bcr);
-  scatter(w, R, mono);
+  scatter_conditions(R, mono);
   if (mono) return 0;
-  for (size_t row = 0; row < b->ncoll; ++row)
-    cond_block(w, row / nm)[(row % nm) * wc + n * (m - 1) + pk] = fk[row];
   for (size_t e = 0; e < b->nbc; ++e) R->bcr[e * R->nf + pk] = fk[b->ncoll + e];
   for (size_t t = 0; t < b->nint; ++t)
     R->ic[t * (nx + 1) + nx] = fk[b->ncoll + b->nbc + t];
+  return 0;
+}
+
+/* Interval i's block from the sparse Jacobian (cond_elim.c's parallel loop
+ * over the intervals): the collocation rows of its m + 1 nodes' columns
+ * (each column's rows sorted: those of interval i follow one another),
+ * of the free parameters' dense columns, and dF/dp_k. */
+static int bvp_fill_one(cond_ws *w, const double *X, const double *p, size_t k,
+                        int mono, size_t i, int thread) {
+  (void)X, (void)p, (void)k, (void)thread;
+  const bvp_rows *R = cond_sys(w);
+  const whirl_bvp *b = R->b;
+  const size_t n = b->n, m = b->ncol, nm = n * m, nn = n * b->nnodes, nx = b->nx,
+               ni = n * (m - 1), wc = cond_block_ld(w), r0 = i * nm;
+  double *B = cond_block(w, i);
+  memset(B, 0, nm * wc * sizeof *B);
+  for (size_t col = n * (i * m); col < n * (i * m + m + 1); ++col) {
+    const size_t kk = col / n - i * m, q = col % n;
+    const size_t pos = kk == 0 ? ni + q : kk == m ? ni + n + q : (kk - 1) * n + q;
+    for (int e = b->Jp[col]; e < b->Jp[col + 1]; ++e) {
+      const size_t row = (size_t)b->Ji[e];
+      if (row < r0) continue;
+      if (row >= r0 + nm) break;
+      B[(row - r0) * wc + pos] = b->Jx[e];
+    }
+  }
+  if (mono) return 0;
+  for (size_t col = nn; col < nx; ++col) { /* dense: entry Jp[col] + row */
+    const double *v = b->Jx + b->Jp[col] + r0;
+    const size_t pos = ni + 2 * n + (col - nn);
+    for (size_t rr = 0; rr < nm; ++rr) B[rr * wc + pos] = v[rr];
+  }
+  const double *fk = cond_fk(w) + r0;
+  const size_t pk = ni + 2 * n + b->nfree;
+  for (size_t rr = 0; rr < nm; ++rr) B[rr * wc + pk] = fk[rr];
   return 0;
 }
 
@@ -108,7 +129,7 @@ static void bvp_end_row(cond_ws *w, size_t e, double *a) {
   memcpy(a, R->bcr + e * R->nf, R->nf * sizeof *a);
 }
 
-static const cond_ops bvp_ops = {bvp_fill, bvp_border, bvp_end_row, NULL, NULL};
+static const cond_ops bvp_ops = {NULL, bvp_border, bvp_end_row, bvp_fill_begin, bvp_fill_one};
 
 static void bs_free(void *ws) {
   if (!ws) return;
