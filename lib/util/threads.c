@@ -54,11 +54,12 @@ void whirl_gov_init(whirl_gov *g, int nmax) {
   g->start = 0.0;
   g->until = -1.0; /* the first call sets it */
   g->t1 = g->tn = 0.0;
+  g->clock = gov_now;
 }
 
 int whirl_gov_begin(whirl_gov *g) {
   if (g->nmax <= 1) return 1;
-  g->start = gov_now();
+  g->start = g->clock();
   return g->phase == 1 ? 1 : g->phase == 2 ? g->nmax : g->use;
 }
 
@@ -75,7 +76,7 @@ static void gov_decide(whirl_gov *g, double now) {
 
 void whirl_gov_end(whirl_gov *g) {
   if (g->nmax <= 1) return;
-  const double now = gov_now(), dt = now - g->start;
+  const double now = g->clock(), dt = now - g->start;
   if (g->phase == 0) {
     if (g->until < 0.0) g->until = now + g->span;
     else if (now >= g->until) g->phase = 1, g->left = GOV_PROBE, g->t1 = g->tn = 0.0;

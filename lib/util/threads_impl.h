@@ -39,6 +39,8 @@ typedef struct whirl_gov {
   double start;       /* this call's start (monotonic seconds) */
   double until;       /* the next probe's time */
   double t1, tn;      /* the probes' times */
+  double (*clock)(void); /* monotonic seconds; init sets the system's (a
+                          * test sets its own, for times it controls) */
 } whirl_gov;
 
 void whirl_gov_init(whirl_gov *g, int nmax);
