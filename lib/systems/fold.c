@@ -284,39 +284,62 @@ static int g_derivs(whirl_fold *f, const double *Z, double *gx, double *gq, int 
   return 0;
 }
 
+/* phi = the x part of M^{-1} [F_q; 0] at (Z, f->pf) (b, c fixed), into
+ * f->phi; null_solve done there. */
+static int bp_phi(whirl_fold *f, const double *Z) {
+  double *phi = f->phi;
+  int rc;
+  if ((rc = fq_at(f, Z, f->pf, phi)) != 0) return rc;
+  phi[f->n] = 0.0;
+  if ((rc = whirl_linsol_solve(f->ls, phi, 1, 0)) != WHIRL_OK)
+    return WHIRL_FAIL(f, rc, "branch-point curve: the solve for F_q failed");
+  return 0;
+}
+
+/* The derivatives in the parameter r of h = w^T F_q and of g, at (Z,
+ * f->pf) with null_solve and bp_phi done there: with w_r^T F_q = -w^T
+ * (F_x)_r phi (b, c fixed),
+ *     h_r = w^T F_qr - w^T (F_x)_r phi,   g_r = -w^T (F_x)_r v,
+ * from F_x and F_q at r +- hr (leaves those Jacobians in f->Ap, f->Am). */
+static int bp_param(whirl_fold *f, const double *Z, size_t r, double *hr_out, double *gr_out) {
+  const size_t n = f->n, np = f->base.npar;
+  const double *w = f->w;
+  double *fqm = f->tmp;
+  const double hr = 6e-6 * (1.0 + fabs(f->pf[r]));
+  int rc;
+  memcpy(f->pq, f->pf, np * sizeof *f->pq);
+  f->pq[r] = f->pf[r] + hr;
+  if ((rc = jac(f, Z, f->pq, f->Ap)) != 0 || (rc = fq_at(f, Z, f->pq, f->fqp)) != 0) return rc;
+  f->pq[r] = f->pf[r] - hr;
+  if ((rc = jac(f, Z, f->pq, f->Am)) != 0 || (rc = fq_at(f, Z, f->pq, fqm)) != 0) return rc;
+  double wfqr = 0.0;
+  for (size_t i = 0; i < n; ++i) wfqr += w[i] * (f->fqp[i] - fqm[i]);
+  *hr_out = (wfqr - wdiff_dot(f, f->phi)) / (2.0 * hr);
+  *gr_out = -wdiffv(f) / (2.0 * hr);
+  return 0;
+}
+
 /* The row of h = w^T F_q of a branch-point curve, at (Z, f->pf) with
  * null_solve done there: with [phi; gamma] = M^{-1} [F_q; 0] (b, c fixed,
  * so w_z^T F_q = -w^T (F_x)_z phi),
  *     h_z = w^T F_qz - w^T (F_x)_z phi,
  * h_x from base Jacobians at q +- hq (w^T F_xq, by symmetry of the second
  * derivatives) and at x +- h phi; h_q and a freed r from F_q and F_x at
- * q +- hq, r +- hr; h_beta = 0.  hx[n], hfree[nfree]; from the same
- * Jacobians g's derivatives in the freed parameters, gfree[nfree] (as
+ * q +- hq, r +- hr (bp_param); h_beta = 0.  hx[n], hfree[nfree]; from the
+ * same Jacobians g's derivatives in the freed parameters, gfree[nfree] (as
  * g_param's), which g_derivs then leaves out. */
 static int bp_row(whirl_fold *f, const double *Z, double *hx, double *hfree, double *gfree) {
-  const size_t n = f->n, np = f->base.npar;
-  const double *w = f->w;
+  const size_t n = f->n;
   double *phi = f->phi, *fqm = f->tmp;
   int rc;
-  if ((rc = fq_at(f, Z, f->pf, phi)) != 0) return rc;
-  phi[n] = 0.0;
-  if ((rc = whirl_linsol_solve(f->ls, phi, 1, 0)) != WHIRL_OK)
-    return WHIRL_FAIL(f, rc, "branch-point curve: the solve for F_q failed");
+  if ((rc = bp_phi(f, Z)) != 0) return rc;
   for (size_t k = 0; k < f->o.nfree; ++k) {
     hfree[k] = gfree[k] = 0.0;
     if (f->o.unfold && k == 1) continue;
     const size_t r = f->o.free[k];
-    const double hr = 6e-6 * (1.0 + fabs(f->pf[r]));
-    memcpy(f->pq, f->pf, np * sizeof *f->pq);
-    f->pq[r] = f->pf[r] + hr;
-    if ((rc = jac(f, Z, f->pq, f->Ap)) != 0 || (rc = fq_at(f, Z, f->pq, f->fqp)) != 0) return rc;
-    f->pq[r] = f->pf[r] - hr;
-    if ((rc = jac(f, Z, f->pq, f->Am)) != 0 || (rc = fq_at(f, Z, f->pq, fqm)) != 0) return rc;
-    double wfqr = 0.0;
-    for (size_t i = 0; i < n; ++i) wfqr += w[i] * (f->fqp[i] - fqm[i]);
-    hfree[k] = (wfqr - wdiff_dot(f, phi)) / (2.0 * hr);
-    gfree[k] = -wdiffv(f) / (2.0 * hr);
+    if ((rc = bp_param(f, Z, r, &hfree[k], &gfree[k])) != 0) return rc;
     if (k == 0) { /* w^T F_xq, the first part of h_x */
+      const double hr = 6e-6 * (1.0 + fabs(f->pf[r]));
       wdiff_cols(f, hx);
       for (size_t j = 0; j < n; ++j) hx[j] /= 2.0 * hr;
     }
@@ -332,21 +355,27 @@ static int bp_row(whirl_fold *f, const double *Z, double *hx, double *hfree, dou
 }
 
 /* dF/dp_k of the fold system: the base's F_pk and g_pk = -w^T (F_x)_pk v
- * (two base Jacobians), instead of differences of the whole system (each
- * of which factors the bordered operator). */
+ * (two base Jacobians), and on a branch-point curve h_pk (bp_param),
+ * instead of differences of the whole system (each of which factors the
+ * bordered operator: on abcb's branch-point curve of orbits two of the
+ * three factorisations of a Newton iteration). */
 static int fold_Fp(const double *Z, const double *p, size_t k, double *out, void *data) {
   whirl_fold *f = data;
   const size_t n = f->n;
+  const int bp = f->o.cond == WHIRL_FOLD_COND_BP;
   for (size_t j = 0; j < f->o.nfree; ++j)
-    if (f->o.free[j] == k) { /* an unknown of the fold system: p[k] is not read */
-      memset(out, 0, (n + 1) * sizeof *out);
+    if (f->o.free[j] == k && !(f->o.unfold && j == 1)) {
+      /* an unknown of the fold system: p[k] is not read */
+      memset(out, 0, f->N * sizeof *out);
       return 0;
     }
   whirl_fold_params(f, Z, p, f->pf);
   int rc = null_solve(f, Z, f->pf);
   if (rc != 0) return rc;
   if ((rc = whirl_system_param(&f->base, Z, f->pf, k, out, f->work)) != 0) return rc;
-  return g_param(f, Z, k, &out[n]);
+  if (!bp) return g_param(f, Z, k, &out[n]);
+  if ((rc = bp_phi(f, Z)) != 0) return rc;
+  return bp_param(f, Z, k, &out[n + 1], &out[n]);
 }
 
 /* The sparse Jacobian of the fold system in its pattern (fold_sparse.c):
@@ -692,7 +721,7 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
     s->Ji = f->sp.Si;
     s->Fx_sparse = fold_Fx_sparse;
   }
-  s->Fp = o->cond ? NULL : fold_Fp;
+  s->Fp = o->cond == WHIRL_FOLD_COND_NONE || o->cond == WHIRL_FOLD_COND_BP ? fold_Fp : NULL;
   s->accept = fold_accept;
   s->ntest = o->cond || o->op ? 0 : WHIRL_FOLD_NTEST;
   s->test = o->cond || o->op ? NULL : fold_test;

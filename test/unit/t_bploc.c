@@ -237,6 +237,23 @@ static void test_fold_bp_jacobian(void) {
     }
     ok(worst < 1e-6, "whirl_fold BP (sparse) %s: its Jacobian against differences of its F, "
        "max |diff| %.2g", unfold ? "with beta" : "with a third parameter", worst);
+    /* its dF/dp_k in each parameter (the rows of g and h worked out,
+     * bp_param; a freed one's column 0) against differences of its F */
+    double wp = INFINITY, big = 0.0;
+    const whirl_system *s = f ? whirl_fold_system(f) : NULL;
+    if (s && s->Fp && isfinite(worst)) {
+      wp = 0.0;
+      for (size_t k = 0; k < 3; ++k)
+        if (whirl_system_param(s, Z, p, k, Ja, work) != 0 ||
+            whirl_system_fd_param(s, Z, p, k, Jd, work) != 0)
+          wp = INFINITY;
+        else
+          for (size_t i = 0; i < N; ++i)
+            wp = fmax(wp, fabs(Ja[i] - Jd[i])), big = fmax(big, fabs(Jd[i]));
+    }
+    ok(wp < 1e-6 && big > 0.1, "whirl_fold BP (sparse) %s: its dF/dp_k (Fp) against differences "
+       "of its F, max |diff| %.2g (entries up to %.2g)", unfold ? "with beta" : "with a third "
+       "parameter", wp, big);
     free(Ja), free(Jd), free(work);
     whirl_fold_free(f);
   }
