@@ -58,14 +58,16 @@ static void scatter_conditions(bvp_rows *R, int mono) {
 /* Before the intervals: the sparse Jacobian and dF/dp_k at (X, p) (each
  * by its own parallel loop), and the boundary and integral rows. */
 static int bvp_fill_begin(cond_ws *w, const double *X, const double *p, size_t k,
-                          int mono) {
+                          int mode) {
+  const int mono = mode == COND_FILL_MONO;
   bvp_rows *R = cond_sys(w);
   whirl_bvp *b = R->b;
   const size_t nx = b->nx, pk = 2 * b->n + b->nfree;
   int rc = bvp_Fx_sparse(X, p, b->Jx, b);
   if (rc != 0) return rc;
   double *fk = cond_fk(w);
-  if (!mono && (rc = whirl_system_param(&b->sys, X, p, k, fk, cond_work(w))) != 0)
+  if (mode == COND_FILL_FULL &&
+      (rc = whirl_system_param(&b->sys, X, p, k, fk, cond_work(w))) != 0)
     return rc;
   memset(R->ic, 0, b->nint * (nx + 1) * sizeof *R->ic);
   memset(R->bcr, 0, b->nbc * R->nf * sizeof *R->bcr);
@@ -82,8 +84,9 @@ static int bvp_fill_begin(cond_ws *w, const double *X, const double *p, size_t k
  * (each column's rows sorted: those of interval i follow one another),
  * of the free parameters' dense columns, and dF/dp_k. */
 static int bvp_fill_one(cond_ws *w, const double *X, const double *p, size_t k,
-                        int mono, size_t i, int thread) {
+                        int mode, size_t i, int thread) {
   (void)X, (void)p, (void)k, (void)thread;
+  const int mono = mode == COND_FILL_MONO;
   const bvp_rows *R = cond_sys(w);
   const whirl_bvp *b = R->b;
   const size_t n = b->n, m = b->ncol, nm = n * m, nn = n * b->nnodes, nx = b->nx,
@@ -173,4 +176,5 @@ static void *bs_alloc(void *data) {
 }
 
 const whirl_bsolver bvp_bsolver = {bs_alloc,   bs_free,     cond_factor,
-                                   cond_solve, cond_logdet, cond_reborder};
+                                   cond_solve, cond_logdet, cond_reborder,
+                                   cond_factor_col, cond_solve_t};

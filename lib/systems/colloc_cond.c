@@ -21,7 +21,8 @@
  * f_p into fk when fk_loop. */
 static int fill_interval(whirl_colloc *c, colloc_scratch *s, cond_ws *w,
                          const double *X, const double *p, double T, size_t i,
-                         int mono, int fk_loop, size_t k) {
+                         int mode, int fk_loop, size_t k) {
+  const int mono = mode == COND_FILL_MONO;
   const size_t n = c->n, m = c->ncol, ni = n * (m - 1), wc = cond_block_ld(w);
   const size_t ng = c->aut ? 2 : 1;
   double *Wi = cond_block(w, i), *fk = cond_fk(w);
@@ -62,15 +63,16 @@ static int fill_interval(whirl_colloc *c, colloc_scratch *s, cond_ws *w,
  * the system (forcing frequency: T and the time argument depend on it
  * too). */
 static int colloc_fill_begin(cond_ws *w, const double *X, const double *p,
-                             size_t k, int mono) {
+                             size_t k, int mode) {
   whirl_colloc *c = cond_sys(w);
   const whirl_problem *pr = c->prob;
+  const int full = mode == COND_FILL_FULL;
   const size_t n = c->n, N = c->ntst, m = c->ncol;
   double *fk = cond_fk(w);
   c->fill_T = colloc_period_of(c, X, p);
   if (!(c->fill_T > 0) || !isfinite(c->fill_T)) return 1; /* recoverable, as F */
-  c->fill_fk_loop = !mono && pr->jac_p && !(!c->aut && (int)k == c->fpar);
-  if (!mono && !c->fill_fk_loop) {
+  c->fill_fk_loop = full && pr->jac_p && !(!c->aut && (int)k == c->fpar);
+  if (full && !c->fill_fk_loop) {
     int rc = whirl_system_param(&c->sys, X, p, k, fk, cond_work(w));
     if (rc != 0) return rc;
   }
@@ -80,9 +82,9 @@ static int colloc_fill_begin(cond_ws *w, const double *X, const double *p,
 
 /* Interval i, on thread t's scratch (cond_elim.c's parallel loop). */
 static int colloc_fill_one(cond_ws *w, const double *X, const double *p,
-                           size_t k, int mono, size_t i, int t) {
+                           size_t k, int mode, size_t i, int t) {
   whirl_colloc *c = cond_sys(w);
-  return fill_interval(c, &c->scr[t], w, X, p, c->fill_T, i, mono,
+  return fill_interval(c, &c->scr[t], w, X, p, c->fill_T, i, mode,
                        c->fill_fk_loop, k);
 }
 
@@ -145,8 +147,14 @@ static int bs_factor(void *ws, const double *X, const double *p, size_t k,
   return rc;
 }
 
+static int bs_factor_col(void *ws, const double *X, const double *p,
+                         const double *col, const double *r) {
+  return cond_factor_col(ws, X, colloc_par(cond_sys(ws), X, p), col, r);
+}
+
 const whirl_bsolver colloc_bsolver = {bs_alloc,   bs_free,     bs_factor,
-                                      cond_solve, cond_logdet, cond_reborder};
+                                      cond_solve, cond_logdet, cond_reborder,
+                                      bs_factor_col, cond_solve_t};
 
 int colloc_cond_monodromy(whirl_colloc *c, const double *X, const double *p,
                           double *M) {

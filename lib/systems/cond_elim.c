@@ -312,6 +312,36 @@ static void gepp_back(const double *A, size_t ld, size_t ne, size_t ny,
   }
 }
 
+/* The adjoint of gepp_forward (b <- L^{-1} P b): b <- P^T L^{-T} b, L's
+ * rows taken last to first (each an update of the contiguous row), then
+ * the swaps in reverse order. */
+static void gepp_forward_t(const double *A, size_t ld, size_t np, size_t nextra,
+                           size_t ne, const int *piv, double *b) {
+  for (size_t r = np + nextra; r-- > 1;)
+    if (b[r] != 0.0) row_update(b, A + r * ld, b[r], r < ne ? r : ne);
+  for (size_t c = ne; c-- > 0;)
+    if ((size_t)piv[c] != c) {
+      const double t = b[c];
+      b[c] = b[piv[c]];
+      b[piv[c]] = t;
+    }
+}
+
+/* The adjoint of gepp_back (x = U^{-1} (b - Y y)): given xbar[ne], turned
+ * in place into s = U^{-T} xbar, bbar[ne] += s and ybar[ny] -= Y^T s. */
+static void gepp_back_t(const double *A, size_t ld, size_t ne, size_t ny,
+                        double *s, double *bbar, double *ybar) {
+  for (size_t c = 0; c < ne; ++c) {
+    const double *a = A + c * ld;
+    const double sc = s[c] * a[c]; /* reciprocal diagonal */
+    s[c] = sc;
+    bbar[c] += sc;
+    if (sc == 0.0) continue;
+    row_update(s + c + 1, a + c + 1, sc, ne - c - 1);
+    if (ny) row_update(ybar, a + ne, sc, ny);
+  }
+}
+
 /* Sign of a permutation perm[len] of 0..len−1 (cycle count); mark[len]. */
 static int perm_sign(const int *perm, size_t len, int *mark) {
   int s = 1;
@@ -380,14 +410,14 @@ static int condense_interval(cond_ws *w, size_t i, int *lab) {
  * interval order, the model's first, and the determinant's factors are
  * multiplied in interval order, so nothing depends on the threads. */
 static int condense_intervals(cond_ws *w, const double *X, const double *p,
-                              size_t k, int mono) {
+                              size_t k, int mode) {
   const size_t N = w->N;
   const int nth = whirl_gov_begin(&w->gov);
   const cond_ops *ops = w->ops;
 #pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
     const int t = whirl_thread_num();
-    w->frc[i] = ops->fill_one ? ops->fill_one(w, X, p, k, mono, i, t) : 0;
+    w->frc[i] = ops->fill_one ? ops->fill_one(w, X, p, k, mode, i, t) : 0;
     w->irc[i] = w->frc[i] ? 0 : condense_interval(w, i, w->lab + w->nlab * (size_t)t);
   }
   whirl_gov_end(&w->gov);
@@ -459,20 +489,22 @@ static void order_signs(cond_ws *w) {
   w->sign_c = perm_sign(w->prow, nx + 1, w->mark) * perm_sign(w->pcol, nx + 1, w->mark);
 }
 
-/* The collocation rows: the system's fill at (X, p) (dF/dp_k unless mono),
- * the condensation of every interval and the elimination of the inner mesh
- * points.  mono: F_x only (the global columns 0), for the monodromy. */
+/* The collocation rows: the system's fill at (X, p) (COND_FILL_*), the
+ * condensation of every interval and the elimination of the inner mesh
+ * points.  COND_FILL_MONO: F_x only (the global columns 0), for the
+ * monodromy. */
 static int factor_rows(cond_ws *w, const double *X, const double *p, size_t k,
-                       int mono) {
+                       int mode) {
+  const int mono = mode == COND_FILL_MONO;
   w->state = 0;
   w->jac_ok = 0;
   w->det_c.mant = 1.0;
   w->det_c.expo = 0;
   w->npiv_c = 0;
-  int rc = w->ops->fill_one ? w->ops->fill_begin(w, X, p, k, mono)
-                            : w->ops->fill(w, X, p, k, mono);
+  int rc = w->ops->fill_one ? w->ops->fill_begin(w, X, p, k, mode)
+                            : w->ops->fill(w, X, p, k, mode);
   if (rc != 0) return rc;
-  if ((rc = condense_intervals(w, X, p, k, mono)) != 0 ||
+  if ((rc = condense_intervals(w, X, p, k, mode)) != 0 ||
       (rc = eliminate_mesh_points(w)) != 0)
     return rc;
   if (!mono) order_signs(w);
@@ -566,7 +598,15 @@ static int factor_border(cond_ws *w, const double *r) {
 int cond_factor(void *ws, const double *X, const double *p, size_t k,
                 const double *r) {
   cond_ws *w = ws;
-  int rc = factor_rows(w, X, p, k, 0);
+  int rc = factor_rows(w, X, p, k, COND_FILL_FULL);
+  return rc != 0 ? rc : factor_border(w, r);
+}
+
+int cond_factor_col(void *ws, const double *X, const double *p,
+                    const double *col, const double *r) {
+  cond_ws *w = ws;
+  memcpy(w->fk, col, w->nx * sizeof *w->fk);
+  int rc = factor_rows(w, X, p, 0, COND_FILL_GIVEN);
   return rc != 0 ? rc : factor_border(w, r);
 }
 
@@ -581,7 +621,7 @@ int cond_factored_at(const cond_ws *w, const double *X, const double *p) {
 }
 
 int cond_factor_rows(cond_ws *w, const double *X, const double *p) {
-  return factor_rows(w, X, p, 0, 1);
+  return factor_rows(w, X, p, 0, COND_FILL_MONO);
 }
 
 /* ------------------------------------------------------------ solve */
@@ -642,6 +682,83 @@ int cond_solve(void *ws, double *b, size_t nrhs) {
   cond_ws *w = ws;
   if (w->state != 1) return WHIRL_ESINGULAR;
   for (size_t k = 0; k < nrhs; ++k) solve1(w, b + k * (w->nx + 1));
+  return WHIRL_OK;
+}
+
+/* M^T y = c: the adjoint of solve1, its steps in reverse order (steps 6
+ * to 0 there).  c is indexed by M's columns (solve1's output), y by its
+ * rows (solve1's input); every entry of c is read before y is written.
+ * The scratch of solve1 holds the adjoints: loc and ploc those of its
+ * transformed right-hand sides, bb of the border rows', xs and g of the
+ * mesh points' and globals'. */
+static void solve1_t(cond_ws *w, double *b) {
+  const size_t n = w->n, m = w->m, N = w->N, ni = w->ni, nm = w->nm,
+               ng = w->ng, nb = w->nb, ne = w->ne, wr = w->wr, wc = w->wc,
+               pr = w->pr, pc = w->pc, nf = w->nf, nNm = n * N * m;
+  double *bb = w->bb, *xs = w->xs, *g = xs + n * (N + 1), *yb = w->tmp;
+  memset(w->loc, 0, N * wr * sizeof *w->loc);
+  memset(w->ploc, 0, (N - 1) * pr * sizeof *w->ploc);
+  /* the outputs' adjoints: the mesh points and the globals */
+  for (size_t i = 0; i <= N; ++i) memcpy(xs + n * i, b + n * i * m, n * sizeof *xs);
+  for (size_t e = 0; e < ng; ++e) g[e] = b[w->gcol[e]];
+  /* back substitution of the interiors (in place in c's interior entries) */
+  for (size_t i = 0; i < N; ++i) {
+    memset(yb, 0, (2 * n + ng) * sizeof *yb);
+    gepp_back_t(w->W + i * wr * wc, wc, ni, 2 * n + ng, b + n * (i * m + 1),
+                w->loc + i * wr, yb);
+    for (size_t q = 0; q < 2 * n; ++q) xs[n * i + q] += yb[q];
+    for (size_t e = 0; e < ng; ++e) g[e] += yb[2 * n + e];
+  }
+  /* back substitution of the mesh points, x_1 first */
+  for (size_t j = 1; j < N; ++j) {
+    memset(yb, 0, (2 * n + ng) * sizeof *yb);
+    gepp_back_t(w->P + (j - 1) * pr * pc, pc, n, 2 * n + ng, xs + n * j,
+                w->ploc + (j - 1) * pr, yb);
+    for (size_t q = 0; q < n; ++q) {
+      xs[q] += yb[q];
+      xs[n * (j + 1) + q] += yb[n + q];
+    }
+    for (size_t e = 0; e < ng; ++e) g[e] += yb[2 * n + e];
+  }
+  /* 3. the final system: F^T */
+  double *zb = w->tmp, *fb = zb + nf;
+  memcpy(zb, xs, n * sizeof *zb);
+  memcpy(zb + n, xs + n * N, n * sizeof *zb);
+  memcpy(zb + 2 * n, g, ng * sizeof *zb);
+  memset(fb, 0, nf * sizeof *fb);
+  gepp_back_t(w->F, nf, nf, 0, zb, fb, NULL);
+  gepp_forward_t(w->F, nf, nf, 0, nf, w->fpiv, fb);
+  double *pl = w->ploc + (N - 2) * pr + n;
+  for (size_t q = 0; q < n; ++q) pl[q] += fb[q];
+  memcpy(bb, fb + n + ne, nb * sizeof *bb);
+  /* (fb + n holds the end rows' y until the end) */
+  /* 2. the mesh points' forward eliminations, the last first */
+  for (size_t j = N - 1; j >= 1; --j) {
+    double *v = w->ploc + (j - 1) * pr;
+    memcpy(v + 2 * n, bb, nb * sizeof *v);
+    gepp_forward_t(w->P + (j - 1) * pr * pc, pc, 2 * n, nb, n, w->ppiv + (j - 1) * n, v);
+    double *src = j == 1 ? w->loc + ni : w->ploc + (j - 2) * pr + n;
+    double *own = w->loc + j * wr + ni;
+    for (size_t q = 0; q < n; ++q) {
+      src[q] += v[q];
+      own[q] += v[n + q];
+    }
+  }
+  /* 1. the intervals' forward eliminations: y's collocation rows */
+  for (size_t i = 0; i < N; ++i) {
+    double *v = w->loc + i * wr;
+    memcpy(v + nm, bb, nb * sizeof *v);
+    gepp_forward_t(w->W + i * wr * wc, wc, nm, nb, ni, w->wpiv + i * ni, v);
+    memcpy(b + n * i * m, v, nm * sizeof *b);
+  }
+  memcpy(b + nNm, fb + n, ne * sizeof *b);
+  for (size_t t = 0; t < nb; ++t) b[w->blab[t]] = bb[t];
+}
+
+int cond_solve_t(void *ws, double *b, size_t nrhs) {
+  cond_ws *w = ws;
+  if (w->state != 1) return WHIRL_ESINGULAR;
+  for (size_t k = 0; k < nrhs; ++k) solve1_t(w, b + k * (w->nx + 1));
   return WHIRL_OK;
 }
 

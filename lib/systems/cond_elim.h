@@ -32,15 +32,24 @@ typedef struct cond_det {
 
 typedef struct cond_ws cond_ws;
 
+/* What a fill puts in the global columns (its `mode`): */
+enum {
+  COND_FILL_FULL = 0,  /* the globals' and dF/dp_k into cond_fk(w) */
+  COND_FILL_MONO = 1,  /* F_x alone: every global column 0 (monodromy) */
+  COND_FILL_GIVEN = 2  /* the globals', and in p_k's column the entries
+                          already in cond_fk(w) (cond_factor_col): no
+                          dF/dp_k computed */
+};
+
 typedef struct cond_ops {
   /* (Or NULL, with fill_begin and fill_one below.)  Fill the collocation
    * rows of every interval block (cond_block: rows
    * 0 .. n NCOL − 1, columns [interior | x_i | x_{i+1} | g]) and the
-   * system's own data for border() and end_row(), at (X, p); dF/dp_k into
-   * cond_fk(w) unless mono (F_x alone: the global columns 0).  Returns 0,
-   * or the model's status. */
+   * system's own data for border() and end_row(), at (X, p), the global
+   * columns as `mode` says (COND_FILL_*; p_k's column always from
+   * cond_fk(w)).  Returns 0, or the model's status. */
   int (*fill)(cond_ws *w, const double *X, const double *p, size_t k,
-              int mono);
+              int mode);
   /* Border row t: its entries on the node values (node-major as X; the
    * core's r when the system passes it through) returned, its ng global
    * entries into g. */
@@ -53,9 +62,9 @@ typedef struct cond_ops {
    * cond_shape.nthreads, each block condensed right after it is filled:
    * one parallel loop for both).  Return 0 or the model's status. */
   int (*fill_begin)(cond_ws *w, const double *X, const double *p, size_t k,
-                    int mono);
+                    int mode);
   int (*fill_one)(cond_ws *w, const double *X, const double *p, size_t k,
-                  int mono, size_t i, int thread);
+                  int mode, size_t i, int thread);
 } cond_ops;
 
 typedef struct cond_shape {
@@ -83,10 +92,17 @@ double *cond_work(cond_ws *w);            /* nx + npar scratch for fill */
  * 0, the model's status, WHIRL_ESINGULAR, WHIRL_EBADFUNC. */
 int cond_factor(void *ws, const double *X, const double *p, size_t k,
                 const double *r);
+/* M with the column col[nx] (M's rows) in place of dF/dp_k, factored:
+ * [F_x col; r^T], e.g. the fold system's [F_x b; c^T 0].  As cond_factor. */
+int cond_factor_col(void *ws, const double *X, const double *p,
+                    const double *col, const double *r);
 /* The same collocation rows with a new border row r (chord Newton). */
 int cond_reborder(void *ws, const double *r);
 /* M z = b in place, b[(nx + 1) nrhs]. */
 int cond_solve(void *ws, double *b, size_t nrhs);
+/* M^T y = c in place, c[(nx + 1) nrhs] (the adjoint of cond_solve's
+ * steps in reverse order: no second factorisation). */
+int cond_solve_t(void *ws, double *b, size_t nrhs);
 int cond_logdet(void *ws, double *logabs, int *sign);
 
 /* Were the collocation rows last factored at (X, p)? */

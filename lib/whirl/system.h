@@ -49,6 +49,14 @@ typedef struct whirl_bsolver {
    * of the last factor (for chord Newton: much cheaper than factor when
    * the structure allows).  Same returns as factor. */
   int (*reborder)(void *ws, const double *r);
+  /* Optional: factor [F_x col; r^T], the given column col[n] in place of
+   * dF/dp_k (F_x at (x, p) as factor's), e.g. a fold system's bordered
+   * [F_x b; c^T 0].  Same returns as factor. */
+  int (*factor_col)(void *ws, const double *x, const double *p,
+                    const double *col, const double *r);
+  /* Optional: M^T y = c in place, c[(n+1)*nrhs], with the last
+   * factorisation (the left null vector of a fold system). */
+  int (*solve_t)(void *ws, double *b, size_t nrhs);
 } whirl_bsolver;
 
 typedef struct whirl_system {
