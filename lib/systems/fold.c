@@ -29,7 +29,10 @@ struct whirl_fold {
   int sparse;        /* base with a sparse pattern: every matrix sparse */
   fold_sparse sp;
   double *b, *c;     /* borders [na]: left and right null vector estimates */
-  whirl_linsol *ls;  /* dense LU of M = [A b; c^T 0], order na + 1 */
+  whirl_linsol *ls;  /* dense LU of M = [A b; c^T 0], order na + 1 (or NULL:) */
+  void *bws;         /* the base's structured solver of M (whirl_bsolver
+                        factor_col, solve_t: condensed collocation), or NULL */
+  double *rc;        /* n + 1: M's last row (c, 0) for bws */
   whirl_eig *eig;    /* eigenvalues of F_x for the zero-Hopf test */
   double *M;         /* (n+1)^2 */
   double *A;         /* F_x at the current point, n*n (sparse: nnz values) */
@@ -99,9 +102,16 @@ static int jac(whirl_fold *f, const double *x, const double *p, double *J) {
   return whirl_system_jacobian(&f->base, x, p, J, f->work);
 }
 
-/* The bordered matrix [A b; c^T 0] from the Jacobian in f->A, factored. */
-static int factor_bordered(whirl_fold *f) {
+/* The bordered matrix [A b; c^T 0] at (x, p) factored: by the base's
+ * structured solver (which evaluates F_x itself), else from the Jacobian
+ * in f->A. */
+static int factor_bordered(whirl_fold *f, const double *x, const double *p) {
   const size_t n = f->n, na = f->na, m = na + 1;
+  if (f->bws) {
+    memcpy(f->rc, f->c, n * sizeof *f->rc);
+    f->rc[n] = 0.0;
+    return f->base.bsolver->factor_col(f->bws, x, p, f->b, f->rc);
+  }
   if (f->sparse) {
     fold_sparse_fill_m(&f->sp, f->A, f->b, f->c, f->ne, f->e_val);
     return whirl_linsol_factor(f->ls, f->sp.Mx);
@@ -114,6 +124,13 @@ static int factor_bordered(whirl_fold *f) {
   memcpy(f->M + m * na, f->b, na * sizeof *f->M);
   f->M[na + m * na] = 0.0;
   return whirl_linsol_factor(f->ls, f->M);
+}
+
+/* M u = vec (trans: M^T u = vec) in place, with the last factor_bordered. */
+static int m_solve(whirl_fold *f, double *vec, int trans) {
+  if (!f->bws) return whirl_linsol_solve(f->ls, vec, 1, trans);
+  return trans ? f->base.bsolver->solve_t(f->bws, vec, 1)
+               : f->base.bsolver->solve(f->bws, vec, 1);
 }
 
 /* F_x at (x, p) into f->A, the bordered LU of [A b; c^T 0] with A its
@@ -129,7 +146,7 @@ static int null_solve(whirl_fold *f, const double *x, const double *p) {
   f->cached = 0;
   int rc = jac(f, x, p, f->A);
   if (rc != 0) return rc;
-  rc = factor_bordered(f);
+  rc = factor_bordered(f, x, p);
   if (rc != WHIRL_OK)
     return WHIRL_FAIL(f, rc == WHIRL_ESINGULAR ? 1 : rc,
                       "fold system: bordered matrix [F_x b; c^T 0] is singular "
@@ -138,8 +155,7 @@ static int null_solve(whirl_fold *f, const double *x, const double *p) {
   f->v[na] = 1.0;
   memset(f->w, 0, m * sizeof *f->w);
   f->w[na] = 1.0;
-  if ((rc = whirl_linsol_solve(f->ls, f->v, 1, 0)) != WHIRL_OK ||
-      (rc = whirl_linsol_solve(f->ls, f->w, 1, 1)) != WHIRL_OK)
+  if ((rc = m_solve(f, f->v, 0)) != WHIRL_OK || (rc = m_solve(f, f->w, 1)) != WHIRL_OK)
     return WHIRL_FAIL(f, rc, "fold system: bordered solve failed");
   memcpy(f->xc, x, f->n * sizeof *x);
   memcpy(f->pc, p, f->base.npar * sizeof *p);
@@ -291,7 +307,7 @@ static int bp_phi(whirl_fold *f, const double *Z) {
   int rc;
   if ((rc = fq_at(f, Z, f->pf, phi)) != 0) return rc;
   phi[f->n] = 0.0;
-  if ((rc = whirl_linsol_solve(f->ls, phi, 1, 0)) != WHIRL_OK)
+  if ((rc = m_solve(f, phi, 0)) != WHIRL_OK)
     return WHIRL_FAIL(f, rc, "branch-point curve: the solve for F_q failed");
   return 0;
 }
@@ -533,7 +549,7 @@ static int classify_mg(whirl_fold *f, const double *x, const double *p,
   u1[n] = 0.0;
   for (size_t i = 0; i < n; ++i) f->phi[i] = -f->fq[i];
   f->phi[n] = 0.0;
-  int rc = whirl_linsol_solve(f->ls, f->phi, 1, 0);
+  int rc = m_solve(f, f->phi, 0);
   if (rc != WHIRL_OK)
     return WHIRL_FAIL(f, rc, "fold system: solve for F_q failed");
   f->phi[n] = 1.0;
@@ -590,6 +606,202 @@ static int fold_accept(const double *Z, const double *p, void *data) {
   if (f->base.accept) return f->base.accept(Z, f->pf, f->base.data);
   return 0;
 }
+
+/* ------------------------------------------------------------------------
+ * The fold system's structured solver (whirl_system bsolver), on the
+ * sparse path.  The core's Newton matrix of the fold system is
+ *     K = [F_x U; W^T D],   U = [F_free F_pk] (n x m, m = nfree + 1),
+ *     W^T = [g_x; (h_x;) r_x],  D = [g_free g_pk; (h_free h_pk;) r_free r_pk],
+ * whose leading block is singular at the fold.  It is solved with the
+ * factors of M = [F_x b; c^T 0], which the fold system has anyway for its
+ * null vectors, where the core factored K by a sparse LU once more: with
+ * [Z; S] = M^{-1} [U; 0] and [v; g] = M^{-1} [0; 1], the solution of
+ * K (z, y) = (f, h) is z = z1 - Z y + gamma v, [z1; s1] = M^{-1} [f; 0],
+ * where
+ *     [D - W^T Z   W^T v] [y    ]   [h - W^T z1]
+ *     [   -S         g  ] [gamma] = [   -s1    ],
+ * and det K = det M times the determinant of that (m + 1)-matrix (K
+ * extended by s = c^T z - gamma and gamma, then block elimination by M:
+ * Govaerts 2000, ch. 3, bordered systems with a singular block). */
+typedef struct fold_bem {
+  whirl_fold *f;
+  size_t m;           /* K's border: nfree + 1 */
+  double *Zc;         /* (n + 1) x m: [U; 0], then M^{-1} [U; 0] */
+  double *Wt;         /* m x n: the rows g_x, (h_x,) r_x */
+  double *D;          /* m x m, row-major */
+  double S[16];       /* the (m + 1)-matrix, row-major, factored in place */
+  int piv[4];
+  double logabs;      /* log|det K| and its sign */
+  int sign, state;    /* state: 0 none, 1 factored, 2 singular */
+  double *t;          /* N + 1 scratch */
+} fold_bem;
+
+static void *bem_alloc(void *data) {
+  whirl_fold *f = data;
+  const size_t n = f->n, m = f->o.nfree + 1;
+  fold_bem *e = calloc(1, sizeof *e);
+  if (!e) return NULL;
+  e->f = f;
+  e->m = m;
+  e->Zc = calloc((n + 1) * m, sizeof *e->Zc);
+  e->Wt = calloc(m * n, sizeof *e->Wt);
+  e->D = calloc(m * m, sizeof *e->D);
+  e->t = calloc(f->N + 2, sizeof *e->t);
+  if (!e->Zc || !e->Wt || !e->D || !e->t) {
+    free(e->Zc), free(e->Wt), free(e->D), free(e->t), free(e);
+    return NULL;
+  }
+  return e;
+}
+
+static void bem_free(void *ws) {
+  fold_bem *e = ws;
+  if (!e) return;
+  free(e->Zc), free(e->Wt), free(e->D), free(e->t), free(e);
+}
+
+/* The (m + 1)-matrix from Zc, Wt, D and the null vector, LU with partial
+ * pivoting; det K with M's determinant. */
+static int bem_schur(fold_bem *e) {
+  whirl_fold *f = e->f;
+  const size_t n = f->n, m = e->m, q = m + 1;
+  double *S = e->S;
+  for (size_t i = 0; i < m; ++i) {
+    const double *wi = e->Wt + n * i;
+    for (size_t j = 0; j < m; ++j) S[q * i + j] = e->D[m * i + j] - dot(wi, e->Zc + (n + 1) * j, n);
+    S[q * i + m] = dot(wi, f->v, n);
+  }
+  for (size_t j = 0; j < m; ++j) S[q * m + j] = -e->Zc[(n + 1) * j + n];
+  S[q * m + m] = f->v[n];
+  double la;
+  int sg, rc = f->bws ? f->base.bsolver->logdet(f->bws, &la, &sg)
+                      : whirl_linsol_logdet(f->ls, &la, &sg);
+  if (rc != WHIRL_OK) return rc;
+  for (size_t c = 0; c < q; ++c) {
+    size_t pr = c;
+    for (size_t r = c + 1; r < q; ++r)
+      if (fabs(S[q * r + c]) > fabs(S[q * pr + c])) pr = r;
+    e->piv[c] = (int)pr;
+    if (!(fabs(S[q * pr + c]) > 0.0)) {
+      e->state = 2;
+      return WHIRL_ESINGULAR;
+    }
+    if (pr != c) {
+      sg = -sg;
+      for (size_t k = 0; k < q; ++k) {
+        const double tmp = S[q * c + k];
+        S[q * c + k] = S[q * pr + k], S[q * pr + k] = tmp;
+      }
+    }
+    const double d = S[q * c + c];
+    la += log(fabs(d));
+    if (d < 0.0) sg = -sg;
+    for (size_t r = c + 1; r < q; ++r) {
+      const double l = S[q * r + c] / d;
+      S[q * r + c] = l;
+      for (size_t k = c + 1; k < q; ++k) S[q * r + k] -= l * S[q * c + k];
+    }
+  }
+  if (!isfinite(la)) return WHIRL_EBADFUNC;
+  e->logabs = la, e->sign = sg, e->state = 1;
+  return WHIRL_OK;
+}
+
+/* The core's border r: the last row of W^T and of D. */
+static void bem_border(fold_bem *e, const double *r) {
+  const size_t n = e->f->n, m = e->m;
+  memcpy(e->Wt + n * (m - 1), r, n * sizeof *e->Wt);
+  memcpy(e->D + m * (m - 1), r + n, m * sizeof *e->D);
+}
+
+static int bem_factor(void *ws, const double *Z, const double *p, size_t k, const double *r) {
+  fold_bem *e = ws;
+  whirl_fold *f = e->f;
+  const size_t n = f->n, nf = f->o.nfree, m = e->m;
+  const int bp = f->o.cond == WHIRL_FOLD_COND_BP;
+  double gq[2] = {0.0, 0.0}, hq[2] = {0.0, 0.0};
+  e->state = 0;
+  whirl_fold_params(f, Z, p, f->pf);
+  int rc = null_solve(f, Z, f->pf);
+  if (rc == 0) rc = g_derivs(f, Z, f->gx, gq, !bp);
+  if (rc == 0 && bp) rc = bp_row(f, Z, f->hx, hq, gq);
+  if (rc == 0) rc = fold_Fp(Z, p, k, e->t, f); /* [F_pk; g_pk; (h_pk)] */
+  if (rc != 0) return rc;
+  memcpy(e->Wt, f->gx, n * sizeof *e->Wt);
+  if (bp) memcpy(e->Wt + n, f->hx, n * sizeof *e->Wt);
+  for (size_t j = 0; j < nf; ++j) {
+    double *u = e->Zc + (n + 1) * j;
+    if (f->o.unfold && j == 1) memcpy(u, f->b, n * sizeof *u); /* beta's column */
+    else if ((rc = whirl_system_param(&f->base, Z, f->pf, f->o.free[j], u, f->work)) != 0)
+      return rc;
+    e->D[j] = gq[j];
+    if (bp) e->D[m + j] = hq[j];
+  }
+  double *u = e->Zc + (n + 1) * nf;
+  memcpy(u, e->t, n * sizeof *u);
+  e->D[nf] = e->t[n];
+  if (bp) e->D[m + nf] = e->t[n + 1];
+  bem_border(e, r);
+  for (size_t j = 0; j < m; ++j) {
+    e->Zc[(n + 1) * j + n] = 0.0;
+    if ((rc = m_solve(f, e->Zc + (n + 1) * j, 0)) != WHIRL_OK) return rc;
+  }
+  return bem_schur(e);
+}
+
+static int bem_reborder(void *ws, const double *r) {
+  fold_bem *e = ws;
+  if (e->state == 0) return WHIRL_EINVAL;
+  bem_border(e, r);
+  return bem_schur(e);
+}
+
+static int bem_solve(void *ws, double *b, size_t nrhs) {
+  fold_bem *e = ws;
+  whirl_fold *f = e->f;
+  const size_t n = f->n, m = e->m, q = m + 1, N1 = f->N + 1;
+  if (e->state != 1) return WHIRL_ESINGULAR;
+  double *t = e->t, y[4];
+  for (size_t k = 0; k < nrhs; ++k) {
+    double *bk = b + N1 * k;
+    memcpy(t, bk, n * sizeof *t);
+    t[n] = 0.0;
+    int rc = m_solve(f, t, 0);
+    if (rc != WHIRL_OK) return rc;
+    for (size_t i = 0; i < m; ++i) y[i] = bk[n + i] - dot(e->Wt + n * i, t, n);
+    y[m] = -t[n];
+    /* the (m + 1)-matrix's LU, whole rows swapped: the swaps first */
+    for (size_t c = 0; c < q; ++c) {
+      const size_t pr = (size_t)e->piv[c];
+      const double tmp = y[c];
+      y[c] = y[pr], y[pr] = tmp;
+    }
+    for (size_t c = 0; c < q; ++c)
+      for (size_t r = c + 1; r < q; ++r) y[r] -= e->S[q * r + c] * y[c];
+    for (size_t c = q; c-- > 0;) {
+      for (size_t kk = c + 1; kk < q; ++kk) y[c] -= e->S[q * c + kk] * y[kk];
+      y[c] /= e->S[q * c + c];
+    }
+    for (size_t i = 0; i < n; ++i) {
+      double z = t[i] + y[m] * f->v[i];
+      for (size_t j = 0; j < m; ++j) z -= e->Zc[(n + 1) * j + i] * y[j];
+      bk[i] = z;
+    }
+    memcpy(bk + n, y, m * sizeof *bk);
+  }
+  return WHIRL_OK;
+}
+
+static int bem_logdet(void *ws, double *logabs, int *sign) {
+  const fold_bem *e = ws;
+  if (e->state == 0) return WHIRL_EINVAL;
+  *logabs = e->state == 2 ? -INFINITY : e->logabs;
+  *sign = e->state == 2 ? 0 : e->sign;
+  return WHIRL_OK;
+}
+
+static const whirl_bsolver fold_bem_solver = {bem_alloc, bem_free, bem_factor, bem_solve,
+                                              bem_logdet, bem_reborder, NULL, NULL};
 
 /* The sparse path: a base with a sparse pattern, large enough that dense
  * LUs of order n dominate (collocation orbits), and no imposed condition
@@ -669,8 +881,17 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   const size_t nj = f->sparse ? (base->nnz ? base->nnz : 1) : n * n;
   f->b = calloc(n, sizeof *f->b);
   f->c = calloc(n, sizeof *f->c);
-  f->ls = f->sparse ? whirl_linsol_alloc_sparse(na + 1, f->sp.Mp, f->sp.Mi)
-                    : whirl_linsol_alloc_dense(na + 1);
+  /* M by the base's structured solver where it has one that takes b and
+   * solves transposed (condensed collocation: AUTO's cost per iteration
+   * where KLU on M cost 4x, doc/benchmarks.md), F_x's own singularity */
+  const whirl_bsolver *bs = base->bsolver;
+  if (f->sparse && bs && bs->factor_col && bs->solve_t && na == n && f->ne == 0 &&
+      !getenv("WHIRL_FOLD_KLU"))
+    f->bws = bs->alloc(base->data);
+  f->rc = calloc(n + 1, sizeof *f->rc);
+  f->ls = f->bws ? NULL
+          : f->sparse ? whirl_linsol_alloc_sparse(na + 1, f->sp.Mp, f->sp.Mi)
+                      : whirl_linsol_alloc_dense(na + 1);
   f->eig = n >= 3 && !o->op && !f->sparse ? whirl_eig_alloc(n) : NULL;
   f->M = f->sparse ? calloc(1, sizeof *f->M) : calloc((na + 1) * (na + 1), sizeof *f->M);
   f->A = calloc(nj, sizeof *f->A);
@@ -694,7 +915,7 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   f->tmp = calloc(f->N, sizeof *f->tmp);
   f->er = calloc(n, sizeof *f->er);
   f->ei = calloc(n, sizeof *f->ei);
-  if (!f->b || !f->c || !f->ls || (n >= 3 && !o->op && !f->sparse && !f->eig) || !f->M ||
+  if (!f->b || !f->c || !f->rc || (!f->ls && !f->bws) || (n >= 3 && !o->op && !f->sparse && !f->eig) || !f->M ||
       !f->A || !f->gx || !f->hx || !f->xc || !f->pc ||
       !f->Ap || !f->Am || !f->v || !f->w || !f->phi || !f->pf || !f->pq ||
       !f->xs || !f->fq || !f->fqp || !f->work || !f->Zs ||
@@ -720,6 +941,8 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
     s->Jp = f->sp.Sp;
     s->Ji = f->sp.Si;
     s->Fx_sparse = fold_Fx_sparse;
+    /* (an operator's A is not F_x's block: K's general LU) */
+    if (na == n && f->ne == 0 && !getenv("WHIRL_FOLD_KLU")) s->bsolver = &fold_bem_solver;
   }
   s->Fp = o->cond == WHIRL_FOLD_COND_NONE || o->cond == WHIRL_FOLD_COND_BP ? fold_Fp : NULL;
   s->accept = fold_accept;
@@ -737,6 +960,8 @@ nomem:
 void whirl_fold_free(whirl_fold *f) {
   if (!f) return;
   whirl_linsol_free(f->ls);
+  if (f->bws) f->base.bsolver->free(f->bws);
+  free(f->rc);
   whirl_eig_free(f->eig);
   free(f->b); free(f->c); free(f->M); free(f->A); free(f->Ap); free(f->Am);
   free(f->v); free(f->w); free(f->phi); free(f->pf); free(f->pq);
@@ -763,7 +988,7 @@ static void operator_matrix(const whirl_fold *f, double *out) {
  * null vectors of [A b; c^T 0] as the new borders — at a singular A the
  * bordered solves give its null vectors exactly (inverse iteration
  * without an SVD of order na). */
-static int sparse_borders(whirl_fold *f) {
+static int sparse_borders(whirl_fold *f, const double *x, const double *p) {
   const size_t na = f->na, m = na + 1;
   unsigned long long r = 88172645463325252ULL;
   for (size_t i = 0; i < na; ++i) { /* xorshift64 */
@@ -774,13 +999,12 @@ static int sparse_borders(whirl_fold *f) {
   }
   f->cached = 0;
   for (int pass = 0; pass < 2; ++pass) {
-    int rc = factor_bordered(f);
+    int rc = factor_bordered(f, x, p);
     if (rc != WHIRL_OK) return rc;
     memset(f->v, 0, m * sizeof *f->v);
     memset(f->w, 0, m * sizeof *f->w);
     f->v[na] = f->w[na] = 1.0;
-    if ((rc = whirl_linsol_solve(f->ls, f->v, 1, 0)) != WHIRL_OK ||
-        (rc = whirl_linsol_solve(f->ls, f->w, 1, 1)) != WHIRL_OK)
+    if ((rc = m_solve(f, f->v, 0)) != WHIRL_OK || (rc = m_solve(f, f->w, 1)) != WHIRL_OK)
       return rc;
     const double nv = norm2(f->v, na), nw = norm2(f->w, na);
     if (!(nv > 0) || !(nw > 0) || !isfinite(nv) || !isfinite(nw)) return WHIRL_ESINGULAR;
@@ -800,7 +1024,7 @@ int whirl_fold_init(whirl_fold *f, const double *x, const double *p, double *Z) 
     return WHIRL_FAIL(f, rc < 0 ? rc : WHIRL_EDOMAIN,
                       "fold start: the Jacobian failed (%d)", rc);
   if (f->sparse) {
-    if ((rc = sparse_borders(f)) != WHIRL_OK)
+    if ((rc = sparse_borders(f, x, p)) != WHIRL_OK)
       return WHIRL_FAIL(f, rc, "fold start: the bordered operator [A b; c^T 0] is "
                         "singular (the point is not a simple fold or PD)");
     memcpy(Z, x, n * sizeof *Z);

@@ -21,6 +21,7 @@
 #include <whirl/whirl.h>
 
 #include "../tap.h"
+#include "bsolver_check.h"
 
 static int sym_F(const double *x, const double *p, double *f, void *d) {
   (void)d;
@@ -254,6 +255,12 @@ static void test_fold_bp_jacobian(void) {
     ok(wp < 1e-6 && big > 0.1, "whirl_fold BP (sparse) %s: its dF/dp_k (Fp) against differences "
        "of its F, max |diff| %.2g (entries up to %.2g)", unfold ? "with beta" : "with a third "
        "parameter", wp, big);
+    /* its structured solver (the Newton matrix by the factors of [F_x b;
+     * c^T 0]) against UMFPACK on the assembled matrix, k the parameter
+     * that is not freed */
+    if (s) bsolver_check(unfold ? "whirl_fold BP (sparse) with beta" :
+                         "whirl_fold BP (sparse) with a third parameter", s, Z, p,
+                         unfold ? 1 : 2, 0);
     free(Ja), free(Jd), free(work);
     whirl_fold_free(f);
   }

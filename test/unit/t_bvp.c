@@ -832,7 +832,7 @@ static void bsolver_case(const char *name, const whirl_problem *prob,
   const size_t nx = whirl_bvp_size(b);
   double *X = malloc(nx * sizeof *X);
   for (size_t q = 0; q < nx; ++q) X[q] = tap_urand(-1.0, 1.0);
-  if (X) bsolver_check(name, whirl_bvp_system(b), X, p, k);
+  if (X) bsolver_check(name, whirl_bvp_system(b), X, p, k, 1);
   free(X);
   whirl_bvp_free(b);
 }

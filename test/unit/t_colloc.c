@@ -343,7 +343,7 @@ static void test_jacobians(void) {
 
 static void bsolver_vs_umfpack(const char *name, whirl_colloc *c,
                                const double *X, const double *p, size_t k) {
-  bsolver_check(name, whirl_colloc_system(c), X, p, k);
+  bsolver_check(name, whirl_colloc_system(c), X, p, k, 1);
 }
 
 /* ------------------------------------------------------------------------
@@ -425,6 +425,30 @@ static void test_size_limits(void) {
   whirl_colloc_free(c);
 }
 
+/* The fold system of orbits (whirl_fold on the collocation system, its
+ * sparse path): its [F_x b; c^T 0] factored by the condensed solver with b
+ * as the given column and its left null vector by the transposed solve,
+ * its Newton matrix by block elimination with those factors (its own
+ * bsolver).  Checked: the system's Jacobian and dF/dp against differences
+ * of its F (g_x = -w^T (F_x)_x v needs the right w), and its structured
+ * solves and determinant against UMFPACK on the assembled matrix. */
+static void fold_of_orbits_check(whirl_colloc *c, const double *X, const double *p) {
+  char err[256];
+  const size_t nx = whirl_colloc_size(c);
+  whirl_fold_options fo;
+  whirl_fold_options_default(&fo, 1); /* rho freed, sigma the core's */
+  whirl_fold *f = whirl_fold_alloc(whirl_colloc_system(c), &fo, err, sizeof err);
+  double *Z = malloc((nx + 1) * sizeof *Z), jerr = 1.0, pf[3] = {p[0], p[1], p[2]};
+  int rc = f && Z ? whirl_fold_init(f, X, pf, Z) : WHIRL_ENOMEM;
+  const whirl_system *s = f ? whirl_fold_system(f) : NULL;
+  if (rc == WHIRL_OK) rc = whirl_system_check_jacobian(s, Z, pf, &jerr);
+  ok(rc == WHIRL_OK && jerr < 1e-5, "fold of orbits (Lorenz NTST 12): Jacobian and dF/dp "
+     "against differences of its F (%.1e; %s)", jerr, f ? whirl_fold_errmsg(f) : err);
+  if (rc == WHIRL_OK) bsolver_check("fold of orbits (Lorenz NTST 12), k = sigma", s, Z, pf, 0, 0);
+  free(Z);
+  whirl_fold_free(f);
+}
+
 static void test_structured(void) {
   char err[256];
   whirl_colloc_options o;
@@ -439,6 +463,7 @@ static void test_structured(void) {
     lorenz_curve(c, nx, X);
     const double p[3] = {10.0, 250.0, 8.0 / 3.0};
     bsolver_vs_umfpack("Lorenz NTST 12 NCOL 4, k = rho", c, X, p, 1);
+    fold_of_orbits_check(c, X, p);
     free(X);
   }
   whirl_colloc_free(c);
