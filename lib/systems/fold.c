@@ -47,7 +47,8 @@ struct whirl_fold {
   double *gx;        /* n: the row g_x */
   double *hx;        /* n: the row of w^T F_q (a branch-point curve) */
   double *xc, *pc;   /* the point of the last null_solve (n, npar) */
-  int cached;        /* 1: f->A, the factorisation, v and w are at (xc, pc) */
+  int cached;        /* 1: f->A (unless bws), the factorisation, v and w are
+                        at (xc, pc) */
   double *er, *ei;   /* n: eigenvalues */
   char errmsg[WHIRL_ERRMSG_SIZE];
 };
@@ -144,7 +145,9 @@ static int null_solve(whirl_fold *f, const double *x, const double *p) {
       !memcmp(p, f->pc, f->base.npar * sizeof *p))
     return 0;
   f->cached = 0;
-  int rc = jac(f, x, p, f->A);
+  /* (the base's structured solver evaluates F_x itself; f->A only for
+   * the assembled Jacobian, fold_Fx_sparse) */
+  int rc = f->bws ? 0 : jac(f, x, p, f->A);
   if (rc != 0) return rc;
   rc = factor_bordered(f, x, p);
   if (rc != WHIRL_OK)
@@ -406,6 +409,7 @@ static int fold_Fx_sparse(const double *Z, const double *p, double *Jx, void *da
   if ((rc = null_solve(f, Z, f->pf)) != 0) return rc;
   if ((rc = g_derivs(f, Z, f->gx, gq, !bp)) != 0) return rc;
   if (bp && (rc = bp_row(f, Z, f->hx, hq, gq)) != 0) return rc;
+  if (f->bws && (rc = jac(f, Z, f->pf, f->A)) != 0) return rc;
   size_t q = 0;
   for (size_t j = 0; j < n; ++j) {
     for (int k = f->sp.Jp[j]; k < f->sp.Jp[j + 1]; ++k) Jx[q++] = f->A[k];
