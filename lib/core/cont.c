@@ -1632,8 +1632,13 @@ static size_t find_events(whirl_cont *c) {
        * label of an earlier run, or a point where a test function is zero
        * to rounding, as the trivial branch of an eigenvalue problem in
        * its integral condition's parameter) is no special point of this
-       * branch; AUTO labels none there */
-      if (!K->bound && c->stats.steps == 0 && fabs(q->s - a->s) <= 1e-6 * fabs(c->ds))
+       * branch; AUTO labels none there.  "Itself" to 1e-4 of the step: a
+       * label of an earlier run is its special point only to that run's
+       * localisation (abcb's run 4 restarts at the fold locus's LP, a
+       * crossing of two families of orbits, and its first step found
+       * that BP of orbits 3.5e-5 of the step from the start; 1e-6 until
+       * 2026-12-06) */
+      if (!K->bound && c->stats.steps == 0 && fabs(q->s - a->s) <= 1e-4 * fabs(c->ds))
         continue;
       if (K->ev == EV_SYS) {
         const int ty = q->ttype[k];

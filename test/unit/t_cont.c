@@ -1452,9 +1452,9 @@ static void test_recorrect_after_remap(void) {
 
 /* A zero of a test function at the start point itself is no special
  * point of the branch (AUTO labels none at its start): the transcritical
- * x (p - x) = 0 started on x = 0 at p = 1e-13, towards p < 0, crosses its
- * branch point p = 0 within 1e-13 of the start; further on (p = -1) the
- * same crossing is a BP.  (Demo pcl's eigenvalue problem on its trivial
+ * x (p - x) = 0 started on x = 0 at p = 1e-13 (or 1e-6, 2e-5 of the
+ * first step), towards p < 0, crosses its branch point p = 0 that near
+ * the start; further on (p = 0.3) the same crossing is a BP.  (Demo pcl's eigenvalue problem on its trivial
  * branch had such a zero at the start, and a BP there ended its run.) */
 static int transcritical_F(const double *x, const double *p, double *f, void *d) {
   (void)d;
@@ -1469,16 +1469,17 @@ static void test_zero_at_start(void) {
   o.ds_max = 0.1;
   o.nmx = 10;
   const double x0[1] = {0.0};
-  size_t nbp[2];
-  const double pstart[2] = {1e-13, 0.3};
-  for (int k = 0; k < 2; ++k) {
+  size_t nbp[3];
+  const double pstart[3] = {1e-13, 1e-6, 0.3};
+  for (int k = 0; k < 3; ++k) {
     whirl_branch *b = run(&s, &o, x0, &pstart[k], -1, NULL);
     nbp[k] = b ? count_type(b, WHIRL_PT_BP) : 99;
     whirl_branch_free(b);
   }
-  ok(nbp[0] == 0 && nbp[1] == 1,
-     "a test function's zero at the start point is not labelled (%zu BP from p = 1e-13), one "
-     "further on is (%zu BP from p = 0.3)", nbp[0], nbp[1]);
+  ok(nbp[0] == 0 && nbp[1] == 0 && nbp[2] == 1,
+     "a test function's zero at the start point is not labelled (%zu BP from p = 1e-13; %zu "
+     "from p = 1e-6, 2e-5 of the step: a restart at an earlier run's label, located to its "
+     "tolerance), one further on is (%zu BP from p = 0.3)", nbp[0], nbp[1], nbp[2]);
 }
 
 /* The lead unknown of a locus (options.lead, AUTO's ICP(1)): the curve
