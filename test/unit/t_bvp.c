@@ -19,6 +19,7 @@
 
 #include <whirl/bvp.h>
 #include <whirl/cont.h>
+#include <whirl/fold.h>
 
 #include "../tap.h"
 #include "bsolver_check.h"
@@ -837,6 +838,35 @@ static void bsolver_case(const char *name, const whirl_problem *prob,
   whirl_bvp_free(b);
 }
 
+/* The fold system of a BVP (whirl_fold on it, sparse path): [F_x b;
+ * c^T 0] by the condensed solver with b given and w by its transposed
+ * solve, the fold system's Newton matrix by block elimination; its
+ * Jacobian and dF/dp against differences of its F, its solves and
+ * determinant against UMFPACK on the assembled matrix.  nonaut with B
+ * freed, a the core's, at a random state (NTST 30 NCOL 4: over 100
+ * unknowns, the fold's sparse path). */
+static void fold_of_bvp_check(whirl_bvp_options *o, const double *p) {
+  char err[256];
+  whirl_bvp *b = whirl_bvp_alloc(&nonaut, o, err, sizeof err);
+  const size_t nx = b ? whirl_bvp_size(b) : 0;
+  whirl_fold_options fo;
+  whirl_fold_options_default(&fo, 2);
+  whirl_fold *f = b ? whirl_fold_alloc(whirl_bvp_system(b), &fo, err, sizeof err) : NULL;
+  double *X = malloc((nx + 1) * sizeof *X), *Z = malloc((nx + 2) * sizeof *Z), jerr = 1.0;
+  double pf[3] = {p[0], p[1], p[2]};
+  for (size_t q = 0; X && q < nx; ++q) X[q] = tap_urand(-1.0, 1.0);
+  int rc = f && X && Z ? whirl_fold_init(f, X, pf, Z) : WHIRL_ENOMEM;
+  const whirl_system *s = f ? whirl_fold_system(f) : NULL;
+  if (rc == WHIRL_OK) rc = whirl_system_check_jacobian(s, Z, pf, &jerr);
+  ok(rc == WHIRL_OK && nx > 100 && jerr < 1e-5, "fold of a BVP (nonaut NTST 30 NCOL 4, %zu unknowns): "
+     "Jacobian and dF/dp against differences of its F (%.1e; %s)", nx, jerr,
+     f ? whirl_fold_errmsg(f) : err);
+  if (rc == WHIRL_OK) bsolver_check("fold of a BVP (nonaut NTST 30 NCOL 4), k = a", s, Z, pf, 0, 0);
+  free(X), free(Z);
+  whirl_fold_free(f);
+  whirl_bvp_free(b);
+}
+
 static void test_bsolver(void) {
   whirl_bvp_options o;
   whirl_bvp_options_default(&o);
@@ -877,6 +907,9 @@ static void test_bsolver(void) {
   const double pn[3] = {-0.8, 0.0 /* q from X */, 1.5};
   bsolver_case("nonaut NTST 5 NCOL 2 (q free in the BCs), k = B", &nonaut, &o, pn, 2);
   bsolver_case("nonaut NTST 5 NCOL 2 (q free in the BCs), k = a", &nonaut, &o, pn, 0);
+  o.ntst = 30;
+  o.ncol = 4;
+  fold_of_bvp_check(&o, pn);
 }
 
 /* ------------------------------------------------------------------------
