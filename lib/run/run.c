@@ -257,6 +257,13 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
    * parameter, is AUTO's LP there (abcb's script restarts from that LP);
    * harmonic balance, whirl's own, keeps its IS and MG */
   if (b->kind != WHIRL_SOL_HBM) o->sys_skip = 1u << WHIRL_PT_IS | 1u << WHIRL_PT_MG;
+  /* and AUTO's loci of orbits and of BVPs have the test functions of
+   * bvp.f90 alone (LP, BP and the multipliers'), no codimension-two ones:
+   * the turning point of abcb's fold locus of orbits in its continued
+   * parameter is AUTO's LP, where whirl's cusp test labelled CP and the
+   * LP at the same point gave way to it */
+  if (b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP)
+    o->sys_skip |= 1u << WHIRL_PT_CP | 1u << WHIRL_PT_BT | 1u << WHIRL_PT_ZH;
   if (b->starting_data) /* AUTO's bvp.f90: ISW = -2 sets ILP = ISP = 0 */
     o->detect_lp = o->detect_bp = o->detect_hb = o->detect_pd = o->detect_sys = 0;
   /* a sparse Jacobian on KLU from 100 unknowns: the loci of orbits (a

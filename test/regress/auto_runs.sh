@@ -45,7 +45,9 @@
 #     - kar (IPS = 4): the L2-NORM of its first points, on the uniform
 #       mesh, as AUTO's own run's (AUTO's quadrature of the node values);
 #     - spb by its script: a BVP label restarted on a larger NTST (AUTO's
-#       ADAPT2 mesh), and its long branch to AUTO's UZSTOP at AUTO's PT.
+#       ADAPT2 mesh), and its long branch to AUTO's UZSTOP at AUTO's PT;
+#     - abcb by its script: the fold locus of orbits labels AUTO's LP at
+#       its turning point (no CP), and run 4 no BP at its start.
 # TAP output.
 set -u
 : "${top_srcdir:=.}" "${top_builddir:=.}"
@@ -381,5 +383,20 @@ check $(( $? + rc )) "spb --script: runs 3-4 run (exit $rc), run 3's EP at PT 15
 last=$(awk 'substr($0, 1, 4) + 0 != 0 { e = substr($0, 5, 6) + 0; t = substr($0, 11, 4) + 0; p = substr($0, 20, 19) + 0 } END { print (e < 0 ? -e : e), t, p }' "$tmp/spb.s/b.2" 2>/dev/null)
 echo "$last" | awk '{ exit !($1 >= 1540 && $1 <= 1570 && $2 == -4 && ($3 + 2.2) ^ 2 < 1e-12) }'
 check $? "spb --script: c.spb.3 ends at its UZSTOP PAR(1) = -2.2 at AUTO's PT 1554 (PT, type, PAR(1): ${last:-none}; it was an EP at NMX 2000, and 565 before that)"
+# abcb by its script: its fold locus of orbits (run 3 fw, ICP = [2, 1,
+# 11]) turns in PAR(2) at 1.26866, AUTO's LP 30 (type 5, AUTO-07p 0.9.2's
+# own run of abcb.auto: 1.2686579741), where whirl's cusp test labelled CP
+# (AUTO's loci of orbits have bvp.f90's test functions alone); run 4,
+# restarted at the bw run's LP where two families of orbits cross, labels
+# no BP at its start (AUTO's b.abcb.4.bw has none)
+(cd "$tmp" && "$WHIRL" auto "$auto/demos/abcb" --script --quiet --out=abcb.s > abcb.s.log 2>&1)
+rc=$?
+lp=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 5 { printf "%.10g", substr($0, 20, 19); exit }' "$tmp/abcb.s/b.abcb.3.fw" 2>/dev/null)
+cps=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == -2' "$tmp/abcb.s/b.abcb.3.fw" "$tmp/abcb.s/b.abcb.3.bw" 2>/dev/null | wc -l)
+awk -v x="${lp:-0}" -v c="$cps" 'BEGIN { d = (x - 1.2686579741) / 1.2686579741; exit !(c == 0 && d < 1e-8 && d > -1e-8) }'
+check $(( $? + rc )) "abcb --script: the fold locus of orbits labels AUTO's LP at PAR(2) = 1.2686579741 (exit $rc): ${lp:-none}, $cps CP"
+bps=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 6' "$tmp/abcb.s/b.abcb.4.bw" 2>/dev/null | wc -l)
+[ -s "$tmp/abcb.s/b.abcb.4.bw" ] && [ "$bps" = 0 ]
+check $? "abcb --script: run 4 (bw) labels no BP at its start, restarted at the crossing of two families (AUTO none): $bps"
 echo "1..$n"
 exit $fail
