@@ -678,11 +678,16 @@ static void solve1(cond_ws *w, double *b) {
   for (size_t e = 0; e < ng; ++e) b[w->gcol[e]] = g[e];
 }
 
-int cond_solve(void *ws, double *b, size_t nrhs) {
-  cond_ws *w = ws;
+/* one(w, column) on each of the nrhs columns of b, after a factor. */
+static int solve_columns(cond_ws *w, double *b, size_t nrhs,
+                         void (*one)(cond_ws *, double *)) {
   if (w->state != 1) return WHIRL_ESINGULAR;
-  for (size_t k = 0; k < nrhs; ++k) solve1(w, b + k * (w->nx + 1));
+  for (size_t k = 0; k < nrhs; ++k) one(w, b + k * (w->nx + 1));
   return WHIRL_OK;
+}
+
+int cond_solve(void *ws, double *b, size_t nrhs) {
+  return solve_columns(ws, b, nrhs, solve1);
 }
 
 /* M^T y = c: the adjoint of solve1, its steps in reverse order (steps 6
@@ -756,10 +761,7 @@ static void solve1_t(cond_ws *w, double *b) {
 }
 
 int cond_solve_t(void *ws, double *b, size_t nrhs) {
-  cond_ws *w = ws;
-  if (w->state != 1) return WHIRL_ESINGULAR;
-  for (size_t k = 0; k < nrhs; ++k) solve1_t(w, b + k * (w->nx + 1));
-  return WHIRL_OK;
+  return solve_columns(ws, b, nrhs, solve1_t);
 }
 
 int cond_logdet(void *ws, double *logabs, int *sign) {
