@@ -821,16 +821,19 @@ typedef struct run_objects {
   int have_sol;
 } run_objects;
 
+/* The loci before the systems they are built on: a fold system of orbits
+ * frees its workspace of the orbit's structured solver (ASan: a read of
+ * the freed collocation system, 2026-12-06). */
 static void objects_free(run_objects *O) {
+  whirl_fold_free(O->fold);
+  whirl_hopf_free(O->hopf);
+  whirl_bploc_free(O->bploc);
+  whirl_trloc_free(O->trloc);
   whirl_equilibrium_free(O->eq);
   whirl_bvp_free(O->bvp);
   whirl_colloc_free(O->colloc);
   whirl_colloc_free(O->colloc2);
   whirl_hbm_free(O->hbm);
-  whirl_fold_free(O->fold);
-  whirl_hopf_free(O->hopf);
-  whirl_bploc_free(O->bploc);
-  whirl_trloc_free(O->trloc);
   free(O->X);
   free(O->D);
   free(O->Z);

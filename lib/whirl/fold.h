@@ -116,8 +116,9 @@ WHIRL_API void whirl_fold_options_default(whirl_fold_options *o, size_t par);
 
 typedef struct whirl_fold whirl_fold;
 
-/* base is copied (its data stays borrowed).  NULL on bad options or out of
- * memory, with a message in errbuf. */
+/* base is copied (its data stays borrowed: free the fold before the
+ * system it is built on, whose structured solver it may use).  NULL on
+ * bad options or out of memory, with a message in errbuf. */
 WHIRL_API whirl_fold *whirl_fold_alloc(const whirl_system *base,
                                        const whirl_fold_options *o,
                                        char *errbuf, size_t errlen);
