@@ -105,6 +105,17 @@ typedef struct fe_ilu {
  * the Schur complement of D_k onto the nonlinear DOFs; else D_k itself),
  * its derivative in Ω, and the forces g per unit unbalance (harmonic ν) and
  * the static load (harmonic 0) reduced the same way, with derivatives. */
+/* The speed-dependent results of an earlier update, kept for its speed
+ * (fe_lin_update): the fold loci difference the Jacobian at Omega +- h
+ * and come back to Omega. */
+enum { FE_LIN_SLOTS = 2 };
+typedef struct fe_lin_slot {
+  double Omega;
+  int valid;
+  double complex *Z, *dZ, *gu, *dgu;
+  double *g0;
+} fe_lin_slot;
+
 typedef struct fe_lin {
   const whirl_fe_rotor *r;
   int condensed, H, nu, b, ndof, ni;   /* ni: interior DOFs (condensed) */
@@ -135,6 +146,9 @@ typedef struct fe_lin {
                          no iterative refinement */
   double complex *Xk;                  /* (H+1) ni·m: D_ll⁻¹ D_ln */
   double complex *yk;                  /* (H+1) ni: D_ll⁻¹ F_l */
+  double xk_Omega;                     /* the speed of Xk, yk (recover) */
+  int xk_valid;
+  fe_lin_slot slot[FE_LIN_SLOTS];      /* earlier speeds, latest first */
   double complex *w1, *w2, *w3;        /* work ndof·m */
   double *br, *bz, *xr, *xz;           /* work ni */
   char err[256];
@@ -143,7 +157,9 @@ typedef struct fe_lin {
 int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed,
                 int interior_lu, int H, int nu, const fe_aft *a);
 void fe_lin_free(fe_lin *l);
-/* Z, dZ, g at speed Omega (cached); WHIRL_OK or an error, message in err */
+/* Z, dZ, g at speed Omega (the current speed and FE_LIN_SLOTS earlier
+ * ones cached: the same values as computed afresh); WHIRL_OK or an error,
+ * message in err */
 int fe_lin_update(fe_lin *l, double Omega);
 /* Interior factorisations on l's pattern beyond l's own (fe_hbm_shift.c):
  * init (after fe_lin_init), factor from values Dv on the union pattern

@@ -154,6 +154,15 @@ int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed,
   l->g0 = malloc(b * sizeof *l->g0);
   if (!l->pos || !l->Z || !l->dZ || !l->gu || !l->dgu || !l->g0)
     return WHIRL_ENOMEM;
+  for (int s = 0; s < FE_LIN_SLOTS; ++s) {
+    fe_lin_slot *sl = &l->slot[s];
+    sl->Z = malloc((size_t)(H + 1) * b * b * sizeof *sl->Z);
+    sl->dZ = malloc((size_t)(H + 1) * b * b * sizeof *sl->dZ);
+    sl->gu = malloc(b * sizeof *sl->gu);
+    sl->dgu = malloc(b * sizeof *sl->dgu);
+    sl->g0 = malloc(b * sizeof *sl->g0);
+    if (!sl->Z || !sl->dZ || !sl->gu || !sl->dgu || !sl->g0) return WHIRL_ENOMEM;
+  }
   for (int j = 0; j < a->m; ++j) l->pos[j] = condensed ? j : a->dof[j];
   int rc = union_pattern(l);
   if (rc || !condensed) return rc;
@@ -190,6 +199,10 @@ int fe_lin_init(fe_lin *l, const whirl_fe_rotor *r, int condensed,
 
 void fe_lin_free(fe_lin *l) {
   fe_ilu_free(&l->lu);
+  for (int s = 0; s < FE_LIN_SLOTS; ++s) {
+    fe_lin_slot *sl = &l->slot[s];
+    free(sl->Z), free(sl->dZ), free(sl->gu), free(sl->dgu), free(sl->g0);
+  }
   if (l->symbolic) umf.umfpack_zi_free_symbolic(&l->symbolic);
   void *p[] = {l->nlq, l->nlcol, l->Dv, l->dDv, l->Lv, l->rhs, l->pos, l->Z, l->dZ, l->gu, l->dgu, l->g0, l->Up, l->Ui,
                l->Kx, l->Mx, l->Cx, l->Gx, l->inv, l->Lp, l->Li, l->Lmap,
@@ -426,15 +439,56 @@ static int full_update(fe_lin *l, double Omega) {
   return WHIRL_OK;
 }
 
-int fe_lin_update(fe_lin *l, double Omega) {
-  if (l->valid && Omega == l->Omega) return WHIRL_OK;
+/* The current results and slot s exchanged (their buffers). */
+static void swap_slot(fe_lin *l, int s) {
+  fe_lin_slot *sl = &l->slot[s], cur = {l->Omega, l->valid, l->Z, l->dZ, l->gu, l->dgu, l->g0};
+  l->Omega = sl->Omega, l->valid = sl->valid;
+  l->Z = sl->Z, l->dZ = sl->dZ, l->gu = sl->gu, l->dgu = sl->dgu, l->g0 = sl->g0;
+  *sl = cur;
+}
+
+/* An earlier speed's results made current (the slots' order kept: the
+ * one that was current takes the slot); 1 if Omega was kept. */
+static int recall(fe_lin *l, double Omega) {
+  for (int s = 0; s < FE_LIN_SLOTS; ++s)
+    if (l->slot[s].valid && l->slot[s].Omega == Omega) {
+      swap_slot(l, s);
+      return 1;
+    }
+  return 0;
+}
+
+/* The current results kept as the latest slot, the oldest slot's buffers
+ * current, with the speed-independent harmonic 0 (condensed once, not
+ * again: condensed_update) copied into them. */
+static void stash(fe_lin *l) {
+  const size_t b = (size_t)l->b, bb = b * b;
+  fe_lin_slot *sl = l->slot;
+  fe_lin_slot old = sl[FE_LIN_SLOTS - 1];
+  for (int s = FE_LIN_SLOTS - 1; s > 0; --s) sl[s] = sl[s - 1];
+  sl[0] = (fe_lin_slot){l->Omega, l->valid, l->Z, l->dZ, l->gu, l->dgu, l->g0};
+  l->Z = old.Z, l->dZ = old.dZ, l->gu = old.gu, l->dgu = old.dgu, l->g0 = old.g0;
+  memcpy(l->Z, sl[0].Z, bb * sizeof *l->Z);
+  memcpy(l->dZ, sl[0].dZ, bb * sizeof *l->dZ);
+  memcpy(l->g0, sl[0].g0, b * sizeof *l->g0);
+}
+
+static int compute(fe_lin *l, double Omega) {
   l->valid = 0;
+  l->xk_valid = 0;
   l->err[0] = 0;
   int rc = l->condensed ? condensed_update(l, Omega) : full_update(l, Omega);
   if (rc) return rc;
-  l->Omega = Omega;
-  l->valid = 1;
+  l->Omega = l->xk_Omega = Omega;
+  l->valid = l->xk_valid = 1;
   return WHIRL_OK;
+}
+
+int fe_lin_update(fe_lin *l, double Omega) {
+  if (l->valid && Omega == l->Omega) return WHIRL_OK;
+  if (recall(l, Omega)) return WHIRL_OK;
+  if (l->valid) stash(l);
+  return compute(l, Omega);
 }
 
 /* q_l,k = s y_k − X_k q_n,k per harmonic, the load scale s = 1 for the
@@ -443,6 +497,8 @@ int fe_lin_update(fe_lin *l, double Omega) {
 int fe_lin_recover(fe_lin *l, double Omega, double unb, const double *x,
                    double *q) {
   int rc = fe_lin_update(l, Omega);
+  /* X_k, y_k are the last computed speed's: again at a recalled one */
+  if (!rc && !(l->xk_valid && l->xk_Omega == Omega)) rc = compute(l, Omega);
   if (rc) return rc;
   int n = l->ndof, m = l->m, ni = l->ni, b = l->b, L = 2 * l->H + 1;
   if (!l->condensed) {

@@ -185,6 +185,46 @@ static void test_jacobians(int pedestal, int uncondensed,
   fe_chain_free(r);
 }
 
+/* The linear part's speed cache (fe_lin_update: the current speed and
+ * FE_LIN_SLOTS earlier ones): F, its Jacobian and the recovered DOFs at a
+ * speed left and come back to (three speeds between) are those of a
+ * fresh object at that speed, to the bit; the recovery needs X_k, y_k of
+ * that speed, which the cache does not keep (with the last computed
+ * speed's the recovered DOFs differ: the test fails so). */
+static void test_speed_cache(void) {
+  whirl_fe_rotor *r = model5_kind(1, WHIRL_FE_SFD_SHORT_PI);
+  const int H = 3, L = 2 * H + 1, nd = r->ndof;
+  whirl_fe_hbm *h = make(r, H, 0, 0, 0, 0), *g = make(r, H, 0, 0, 0, 0);
+  const whirl_system *s = whirl_fe_hbm_system(h), *sg = whirl_fe_hbm_system(g);
+  const size_t n = s->n;
+  double *X = calloc(n, sizeof *X), *F1 = calloc(n, sizeof *F1), *F2 = calloc(n, sizeof *F2);
+  double *J1 = calloc(n * n, sizeof *J1), *J2 = calloc(n * n, sizeof *J2);
+  double *w = calloc(2 * n + 8, sizeof *w), p[4];
+  double *q1 = calloc((size_t)nd * L, sizeof *q1), *q2 = calloc((size_t)nd * L, sizeof *q2);
+  for (size_t i = 0; i < n; ++i) X[i] = tap_urand(-0.05, 0.05);
+  const double Om[6] = {250.0, 250.0 + 1e-3, 250.0 - 1e-3, 251.0, 250.0, 251.0};
+  int rc = 0, same = 1;
+  for (int k = 0; k < 6 && !rc; ++k) {
+    whirl_fe_hbm_params(Om[k], p);
+    rc |= whirl_system_eval(s, X, p, F1);
+    rc |= whirl_system_jacobian(s, X, p, J1, w);
+    if (k < 4) continue;
+    /* 250 again after three others (recalled), then 251 (kept) */
+    rc |= whirl_fe_hbm_recover(h, X, p, q1);
+    rc |= whirl_system_eval(sg, X, p, F2);
+    rc |= whirl_system_jacobian(sg, X, p, J2, w);
+    rc |= whirl_fe_hbm_recover(g, X, p, q2);
+    same &= !memcmp(F1, F2, n * sizeof *F1) && !memcmp(J1, J2, n * n * sizeof *J1) &&
+            !memcmp(q1, q2, (size_t)nd * L * sizeof *q1);
+  }
+  ok(rc == 0 && same, "the speed cache: F, Jacobian and recovered DOFs at a speed come back "
+     "to are a fresh object's, to the bit (rc %d)", rc);
+  free(X), free(F1), free(F2), free(J1), free(J2), free(w), free(q1), free(q2);
+  whirl_fe_hbm_free(h);
+  whirl_fe_hbm_free(g);
+  fe_chain_free(r);
+}
+
 /* ---------------------------------------------- linear: a dense solve */
 
 /* x = A⁻¹ b, A n×n complex column-major (destroyed), partial pivoting. */
@@ -1126,6 +1166,7 @@ int main(void) {
   hill_reduced();
   hill_auto_fallback();
   test_linear();
+  test_speed_cache();
   test_condensed_vs_full(0, 150.0, 12.0, WHIRL_FE_SFD_SHORT_PI);
   test_condensed_vs_full(1, 320.0, 4.0, WHIRL_FE_SFD_SHORT_PI);
   test_condensed_vs_full(1, 320.0, 4.0, WHIRL_FE_SFD_INERTIA);
