@@ -373,13 +373,14 @@ static int bp_row(whirl_fold *f, const double *Z, double *hx, double *hfree, dou
   return 0;
 }
 
-/* dF/dp_k of the fold system: the base's F_pk and g_pk = -w^T (F_x)_pk v
+/* dF/dp_k of the fold system into out[N] (phi_ready: bp_phi done at
+ * (Z, p)): the base's F_pk and g_pk = -w^T (F_x)_pk v
  * (two base Jacobians), and on a branch-point curve h_pk (bp_param),
  * instead of differences of the whole system (each of which factors the
  * bordered operator: on abcb's branch-point curve of orbits two of the
  * three factorisations of a Newton iteration). */
-static int fold_Fp(const double *Z, const double *p, size_t k, double *out, void *data) {
-  whirl_fold *f = data;
+static int fp_column(whirl_fold *f, const double *Z, const double *p, size_t k,
+                     double *out, int phi_ready) {
   const size_t n = f->n;
   const int bp = f->o.cond == WHIRL_FOLD_COND_BP;
   for (size_t j = 0; j < f->o.nfree; ++j)
@@ -393,8 +394,12 @@ static int fold_Fp(const double *Z, const double *p, size_t k, double *out, void
   if (rc != 0) return rc;
   if ((rc = whirl_system_param(&f->base, Z, f->pf, k, out, f->work)) != 0) return rc;
   if (!bp) return g_param(f, Z, k, &out[n]);
-  if ((rc = bp_phi(f, Z)) != 0) return rc;
+  if (!phi_ready && (rc = bp_phi(f, Z)) != 0) return rc;
   return bp_param(f, Z, k, &out[n + 1], &out[n]);
+}
+
+static int fold_Fp(const double *Z, const double *p, size_t k, double *out, void *data) {
+  return fp_column(data, Z, p, k, out, 0);
 }
 
 /* The sparse Jacobian of the fold system in its pattern (fold_sparse.c):
@@ -729,7 +734,8 @@ static int bem_factor(void *ws, const double *Z, const double *p, size_t k, cons
   int rc = null_solve(f, Z, f->pf);
   if (rc == 0) rc = g_derivs(f, Z, f->gx, gq, !bp);
   if (rc == 0 && bp) rc = bp_row(f, Z, f->hx, hq, gq);
-  if (rc == 0) rc = fold_Fp(Z, p, k, e->t, f); /* [F_pk; g_pk; (h_pk)] */
+  /* [F_pk; g_pk; (h_pk)], phi of bp_row still current at (Z, f->pf) */
+  if (rc == 0) rc = fp_column(f, Z, p, k, e->t, bp);
   if (rc != 0) return rc;
   memcpy(e->Wt, f->gx, n * sizeof *e->Wt);
   if (bp) memcpy(e->Wt + n, f->hx, n * sizeof *e->Wt);
