@@ -267,18 +267,31 @@ static int fold_F(const double *Z, const double *p, double *out, void *data) {
   return 0;
 }
 
-/* g_q = -w^T (F_x(q + hq) - F_x(q - hq)) v / 2hq for the parameter q, at
- * (Z, f->pf) with null_solve done there (uses f->Ap, f->Am). */
-static int g_param(whirl_fold *f, const double *Z, size_t q, double *gq) {
-  const double hq = 6e-6 * (1.0 + fabs(f->pf[q]));
+/* w^T (F_x)_r u, by the symmetry of the second derivatives (F_x)_r u =
+ * (F_r)_x u: w^T (F_r(x + h u) - F_r(x - h u)) / 2h over A's rows, two
+ * parameter derivatives of the base where differences of F_x in r take
+ * two Jacobians; at (Z, f->pf) (uses f->xs, f->fqp, f->tmp). */
+static int w_fxr_dir(whirl_fold *f, const double *Z, size_t r, const double *u, double *out) {
+  const size_t n = f->n, na = f->na;
+  const double h = hstep(Z, na, u);
   int rc;
-  memcpy(f->pq, f->pf, f->base.npar * sizeof *f->pq);
-  f->pq[q] = f->pf[q] + hq;
-  if ((rc = jac(f, Z, f->pq, f->Ap)) != 0) return rc;
-  f->pq[q] = f->pf[q] - hq;
-  if ((rc = jac(f, Z, f->pq, f->Am)) != 0) return rc;
-  *gq = -wdiffv(f) / (2.0 * hq);
+  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] + (i < na ? h * u[i] : 0.0);
+  if ((rc = whirl_system_param(&f->base, f->xs, f->pf, r, f->fqp, f->work)) != 0) return rc;
+  for (size_t i = 0; i < n; ++i) f->xs[i] = Z[i] - (i < na ? h * u[i] : 0.0);
+  if ((rc = whirl_system_param(&f->base, f->xs, f->pf, r, f->tmp, f->work)) != 0) return rc;
+  double s = 0.0;
+  for (size_t i = 0; i < na; ++i) s += f->w[i] * (f->fqp[i] - f->tmp[i]);
+  *out = s / (2.0 * h);
   return 0;
+}
+
+/* g_q = -w^T (F_x)_q v (Govaerts 2000, eq. 4.13), at (Z, f->pf) with
+ * null_solve done there. */
+static int g_param(whirl_fold *f, const double *Z, size_t q, double *gq) {
+  double wv;
+  int rc = w_fxr_dir(f, Z, q, f->v, &wv);
+  if (rc == 0) *gq = -wv;
+  return rc;
 }
 
 /* The row of g: g_x[n] into gx and g_q of the freed parameters into
@@ -319,7 +332,10 @@ static int bp_phi(whirl_fold *f, const double *Z) {
  * f->pf) with null_solve and bp_phi done there: with w_r^T F_q = -w^T
  * (F_x)_r phi (b, c fixed),
  *     h_r = w^T F_qr - w^T (F_x)_r phi,   g_r = -w^T (F_x)_r v,
- * from F_x and F_q at r +- hr (leaves those Jacobians in f->Ap, f->Am). */
+ * from F_x and F_q at r +- hr (leaves those Jacobians in f->Ap, f->Am).
+ * (w_fxr_dir's parameter derivatives at x +- h phi and x +- h v in place
+ * of the two Jacobians: abcb's branch-point loci 3-4 % slower, medians
+ * of 9: four evaluations of F_r cost more than two of F_x here.) */
 static int bp_param(whirl_fold *f, const double *Z, size_t r, double *hr_out, double *gr_out) {
   const size_t n = f->n, np = f->base.npar;
   const double *w = f->w;
@@ -375,7 +391,7 @@ static int bp_row(whirl_fold *f, const double *Z, double *hx, double *hfree, dou
 
 /* dF/dp_k of the fold system into out[N] (phi_ready: bp_phi done at
  * (Z, p)): the base's F_pk and g_pk = -w^T (F_x)_pk v
- * (two base Jacobians), and on a branch-point curve h_pk (bp_param),
+ * (g_param), and on a branch-point curve h_pk (bp_param),
  * instead of differences of the whole system (each of which factors the
  * bordered operator: on abcb's branch-point curve of orbits two of the
  * three factorisations of a Newton iteration). */
