@@ -496,6 +496,19 @@ static int ext_solve(whirl_cont *c, double *b, const char *what) {
                     c->bs ? whirl_strerror(rc) : whirl_bordered_errmsg(c->bd));
 }
 
+int cont_factor_at(whirl_cont *c, const double *X, const double *p, const double *dir) {
+  return jac_factor(c, X, p, dir);
+}
+
+int cont_solve_ext(whirl_cont *c, double *b, int trans) {
+  if (!trans) return ext_solve(c, b, "bordered solve");
+  if (c->bs && !c->bs->solve_t) return WHIRL_EINVAL; /* no transposed solve */
+  const int rc = c->bs ? c->bs->solve_t(c->bws, b, 1) : whirl_bordered_solve(c->bd, b, 1, 1);
+  if (rc == WHIRL_OK) return 0;
+  return WHIRL_FAIL(c, rc, "transposed bordered solve: %s",
+                    c->bs ? whirl_strerror(rc) : whirl_bordered_errmsg(c->bd));
+}
+
 /* ------------------------------------------------------------ corrector */
 
 /* Newton's method on the extended system; with chord Newton
@@ -857,6 +870,7 @@ static void reset_run(whirl_cont *c) {
   c->have_prev = 0;
   c->have_tprev = 0;
   c->switch_step = 0;
+  c->singular_start = 0;
   c->nskip = 0;
   c->first_hidden = 0;
   c->stop_reason = WHIRL_STOP_NONE;
@@ -904,8 +918,10 @@ static int check_start(whirl_cont *c, const double *x0, const double *p0) {
  * As AUTO starts from the null vector of [F_x F_p] (STPNBV's NODIR), the
  * tangent is solved with a generic border instead of the parameter's
  * (Keller 1977: any border not orthogonal to the null vector), then
- * turned by the sign of the run's direction.  0 when it worked, else the
- * failure stays the caller's. */
+ * turned by the sign of the run's direction (where that null space is
+ * two-dimensional, a branch point, and no step from it converges, the
+ * first step turns onto a branch: bp_start_retry).  0 when it worked, else
+ * the failure stays the caller's. */
 static int start_on_solution(whirl_cont *c, int sign) {
   const size_t n = c->n, N = c->N;
   double *f = c->trial.X; /* scratch: N >= n */
@@ -947,7 +963,10 @@ int whirl_cont_start(whirl_cont *c, const double *x0, const double *p0,
   rc = c->opt.start_as_given ? 0 : cont_correct(c, c->cur.X, c->dir, 0.0, c->trial.X);
   c->opt.newton_chord = chord;
   if (rc < 0) return rc;
-  if (rc > 0 && rc != 2 && start_on_solution(c, dir) == 0) return begin(c, 1);
+  if (rc > 0 && start_on_solution(c, dir) == 0) { /* x0 solves F, F_x singular */
+    c->singular_start = 1;
+    return begin(c, 1);
+  }
   if (rc == 3)
     return WHIRL_FAIL(c, WHIRL_ESINGULAR,
                       "start: F_x is singular at the start point (a fold or "
@@ -1333,6 +1352,25 @@ static int natural_jumped(const whirl_cont *c) {
   return !(len > 0.0 && dd * (c->ds > 0 ? 1 : -1) >= cos(c->opt.max_angle) * len);
 }
 
+/* No step from a start on a singular point converged down to DSMIN: at
+ * a branch point the null vector it stepped along is in general no
+ * branch's tangent, and Newton wanders between the two branches; once,
+ * the step again from DS along the branch nearest it (bpstart.c), with no
+ * tests at the point.  0 when it turned, else the branch ends. */
+static int bp_start_retry(whirl_cont *c) {
+  /* (steps of rounding size may have been taken: still at the start) */
+  if (!c->singular_start || !(c->cur.s <= 1e-3 * fabs(c->opt.ds))) return 1;
+  c->singular_start = 0;
+  double *u = c->trial.t; /* scratch: N */
+  if (cont_bp_start_tangent(c, c->cur.X, c->cur.p, c->cur.t, u) != 0) return 1;
+  memcpy(c->cur.t, u, c->N * sizeof *u);
+  c->cur.tests_valid = 0;
+  c->have_prev = 0;
+  c->fact_ok = 0;
+  c->ds = fabs(c->opt.ds);
+  return 0;
+}
+
 /* Predict along the secant (or the tangent), correct, analyse; halve the
  * step on a failure or a turn sharper than max_angle (after a remap, first
  * correct the current point on the new representation: recorrect_remapped).
@@ -1343,6 +1381,7 @@ static int predict_correct(whirl_cont *c, double *cosang, int *its) {
   const whirl_cont_options *o = &c->opt;
   int last_fail = 1;
   for (;;) {
+    if (fabs(c->ds) < o->ds_min && bp_start_retry(c) == 0) continue;
     if (fabs(c->ds) < o->ds_min) {
       const double pv = c->cur.X[n];
       finish(c, last_fail == 2 ? WHIRL_STOP_DOMAIN : WHIRL_STOP_NOCONV);

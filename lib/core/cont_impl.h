@@ -114,6 +114,8 @@ struct whirl_cont {
                          for the crossing being located */
   size_t index;       /* PT of the next point */
   int started, done, stop_reason;
+  int singular_start; /* started on a solution where F_x is singular (a
+                         fold or a branch point): bp_start_retry armed */
   int label;          /* last label given */
   whirl_cont_stats stats;
   char errmsg[512];
@@ -128,6 +130,17 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
 /* Evaluate the tangent and every test function at st->X, with the border row
  * taken from dir (the predictor direction); st->t is oriented along dir. */
 int cont_analyse(whirl_cont *c, cont_state *st, const double *dir);
+/* [F_x F_p; r^T] at (X, p) factored, r the weighted dir (0, 2 a model
+ * failure, 3 singular, < 0 fatal), and solves with it (trans: its
+ * transpose; WHIRL_EINVAL when the structured solver has none). */
+int cont_factor_at(whirl_cont *c, const double *X, const double *p, const double *dir);
+int cont_solve_ext(whirl_cont *c, double *b, int trans);
+/* At a start X0 (solving F, F_x singular) with t a unit null vector of
+ * [F_x F_p]: when X0 is a simple branch point, the tangent u[N] of the
+ * branch along which the parameter moves more (bpstart.c) and 0; 1 when
+ * it is not one (a fold), < 0 on errors. */
+int cont_bp_start_tangent(whirl_cont *c, const double *X0, const double *p0, const double *t,
+                          double *u);
 int cont_tangent(whirl_cont *c, cont_state *st, const double *dir);
 int cont_tests(whirl_cont *c, cont_state *st);
 

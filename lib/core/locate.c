@@ -258,6 +258,20 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
           if (rc < 0) break;
         }
       }
+      if (rc != 0 && found && ev == EV_BP && fabs(sb - sa) <= 1e-2 * fabs(ds) &&
+          fbest <= 1e-2) {
+        /* Newton fails still further from a branch point where the other
+         * branch crosses at a small angle: the best trial, its determinant
+         * within 1e-2 of its size at the step's start, is the point to
+         * about 1e-2 of the bracket (abcb's run 4 fw by its script, the
+         * fold locus's turning point crossed on the second branch: trials
+         * failed from 2.5e-3 of the step, at psi 1.5e-3, and the branch
+         * point, which the next run starts from, was lost) */
+        cont_state_copy(c, out, &c->locbest);
+        c->its = its_best;
+        sout = sbest;
+        rc = 0;
+      }
       if (rc != 0) found = 0;
       break;
     }

@@ -398,5 +398,25 @@ check $(( $? + rc )) "abcb --script: the fold locus of orbits labels AUTO's LP a
 bps=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 6' "$tmp/abcb.s/b.abcb.4.bw" 2>/dev/null | wc -l)
 [ -s "$tmp/abcb.s/b.abcb.4.bw" ] && [ "$bps" = 0 ]
 check $? "abcb --script: run 4 (bw) labels no BP at its start, restarted at the crossing of two families (AUTO none): $bps"
+# abcb's run 4 fw from the end of the bw run on the second family through
+# that crossing (test/regress/abcb_branch.sol: run 4 bw's EP 6, the run
+# that BLAS kernels with AVX-512 gave, where its first step did not
+# converge until it turned onto a branch: bpstart.c): the branch point
+# of orbits at AUTO's PAR(1) = 0.2199828 (b.abcb.4.fw, its BP 36 on the
+# other family, 0.21998281532) is labelled, from which run 5 starts its
+# locus.  Newton failed at every trial within 2.5e-3 of the step of it
+# (the families cross at a small angle) and the point was lost
+bd="$tmp/abcb.s/runs"
+if [ -f "$bd/r7@6.whirl" ]; then
+  mkdir -p "$bd/bdata.out" && cp "$top_srcdir/test/regress/abcb_branch.sol" "$bd/bdata.out/solutions"
+  sed "s/^OUT .*/OUT = 'bfw.out'/; s/^S .*/S = 'bdata.out'/; s/^IRS .*/IRS = 6/" "$bd/r7@6.whirl" > "$bd/bfw.whirl"
+  (cd "$bd" && "$WHIRL" run bfw.whirl --quiet --no-plot > bfw.log 2>&1)
+  rc=$?
+  bp=$(awk -F'\t' '$3 == "BP" { printf "%.10g", $5; exit }' "$bd/bfw.out/branches.tsv" 2>/dev/null)
+  awk -v x="${bp:-0}" 'BEGIN { d = x - 0.21998281532; exit !(d < 5e-7 && d > -5e-7) }'
+  check $(( $? + rc )) "abcb run 4 fw on the second family: the branch point of orbits at AUTO's PAR(1) = 0.2199828 (exit $rc): ${bp:-none}"
+else
+  check 1 "abcb run 4 fw on the second family: no run file r7@6.whirl from the script"
+fi
 echo "1..$n"
 exit $fail

@@ -3,9 +3,10 @@
  * collocation and of BVPs) against UMFPACK on the assembled bordered
  * matrix [F_x F_p; r^T] at (X, p): solutions to 1e-12 relative, log|det|
  * and its sign (the branch-point test) equal, for a border r, for -r and
- * for a new r by reborder; then [F_x col; r^T] with a random column
- * (factor_col: a fold system's [F_x b; c^T 0]) and its transposed solve
- * (solve_t) against UMFPACK's of the same matrix.  Included by t_colloc.c
+ * for a new r by reborder; the transposed solve (solve_t) of that
+ * matrix; then [F_x col; r^T] with a random column (factor_col: a fold
+ * system's [F_x b; c^T 0]) and its transposed solve against UMFPACK's of
+ * the same matrix.  Included by t_colloc.c
  * and t_bvp.c.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_TEST_BSOLVER_CHECK_H
@@ -79,6 +80,22 @@ static void bsolver_check(const char *name, const whirl_system *s,
   ok(s->bsolver->factor_col && s->bsolver->solve_t,
      "%s: the structured solver takes a given column and solves transposed", name);
   if (!s->bsolver->factor_col || !s->bsolver->solve_t) goto done;
+  { /* the transposed solve after factor: the core's [F_x F_p; r^T] (the
+     * left null vector at a branch point, bpstart.c) */
+    for (size_t q = 0; q < 2 * N1; ++q) b1[q] = b2[q] = tap_urand(-1.0, 1.0);
+    int r1 = s->bsolver->factor(ws, X, p, k, r);
+    int r2 = whirl_bordered_factor(bd, Jx, fk, r, r + nx);
+    if (r1 == 0) r1 = s->bsolver->solve_t(ws, b1, 2);
+    if (r2 == 0) r2 = whirl_bordered_solve(bd, b2, 2, 1);
+    double e = 0.0, sc = 0.0;
+    for (size_t q = 0; q < 2 * N1; ++q) {
+      e = fmax(e, fabs(b1[q] - b2[q]));
+      sc = fmax(sc, fabs(b2[q]));
+    }
+    ok(r1 == 0 && r2 == 0 && e <= 1e-11 * sc,
+       "%s ([F_x F_p; r^T], transposed): structured solve = UMFPACK solve to %.1e "
+       "relative (<= 1e-11)", name, e / sc);
+  }
   for (size_t q = 0; q < nx; ++q) fk[q] = tap_urand(-1.0, 1.0) / sqrt((double)nx);
   for (size_t q = 0; q < N1; ++q) r[q] = tap_urand(-1.0, 1.0) / sqrt((double)N1);
   r[nx] = 0.0;

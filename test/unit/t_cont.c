@@ -1397,6 +1397,51 @@ static void test_start_on_singular_solution(void) {
   whirl_branch_free(b);
 }
 
+/* A start 1e-6 from the branch point of F = (x^2 - p^2, y): Newton at
+ * fixed p halves x at each iteration (F_x = 2x), so the start is taken on
+ * the point as it is (its residual 1e-12) with the null vector of
+ * [F_x F_p] by a generic border, here (0, 0, 1): p alone, the bisector of
+ * the two branches x = +-p.  From the predictor (1e-6, 0, s) Newton on
+ * x^2 = s^2 needs log2(s / 1e-6) > newton_maxit iterations down to DSMIN:
+ * before, the branch ended there; now the first step turns onto a
+ * branch's tangent from the algebraic branching equation (bpstart.c). */
+static int x_bp_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[0] * x[0] - p[0] * p[0];
+  f[1] = x[1];
+  return 0;
+}
+
+static void test_start_at_branch_point(int dir) {
+  whirl_system s = {0};
+  s.name = "x^2 = p^2";
+  s.n = 2;
+  s.npar = 1;
+  s.F = x_bp_F;
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.icp = 0;
+  o.ds = 0.01;
+  o.ds_min = 1e-3;
+  o.ds_max = 0.05;
+  o.nmx = 20;
+  o.newton_maxit = 7;
+  const double x0[2] = {1e-6, 0.0}, p0[1] = {0.0};
+  int reason = -1;
+  whirl_branch *b = run(&s, &o, x0, p0, dir, &reason);
+  double dev = 0.0, pend = 0.0;
+  for (size_t i = 1; b && i < b->len; ++i) { /* after the start, 1e-6 off */
+    const double *x = b->pts[i].x, q = b->pts[i].p[0];
+    dev = fmax(dev, fmax(fabs(fabs(x[0]) - fabs(q)), fabs(x[1])));
+    pend = q;
+  }
+  ok(b && b->len == 21 && reason == WHIRL_STOP_NMX && dev < 1e-9 && pend * dir > 0.3,
+     "a start at a branch point along the bisector of its branches (dir %+d): on a "
+     "branch x = +-p (%zu points, stop %d, max dev %.2g, p ends at %.3f)", dir,
+     b ? b->len : 0, reason, dev, pend);
+  whirl_branch_free(b);
+}
+
 /* A remap that leaves the current point far from a solution of the new
  * representation (an interpolation onto a new mesh with a large error):
  * F = (x0 - p, sinh(x1 - p)), the line x0 = x1 = p; before the 5th step
@@ -1880,6 +1925,8 @@ int main(void) {
   test_switch_large();
   test_errors();
   test_start_on_singular_solution();
+  test_start_at_branch_point(+1);
+  test_start_at_branch_point(-1);
   test_branch_distance();
   test_localisation_trials(0);
   test_localisation_trials(1);
