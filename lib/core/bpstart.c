@@ -71,18 +71,25 @@ static int inverse_iteration(whirl_cont *c, int trans, double *v) {
   return 0;
 }
 
+/* F at X0 + h u and X0 - h u into w's fp and fm (w: Xs[N], ps[npar],
+ * fp[n], fm[n]), h a step of rel for X0's scale along u. */
+static int f_pair(whirl_cont *c, const double *X0, const double *p0, const double *u,
+                  double rel, double *w, double *h) {
+  double *Xs = w, *ps = w + c->N, *fp = ps + c->npar, *fm = fp + c->n;
+  *h = step_along(X0, c->N, u, rel);
+  const int rc = f_along(c, X0, p0, u, *h, Xs, ps, fp);
+  return rc ? rc : f_along(c, X0, p0, u, -*h, Xs, ps, fm);
+}
+
 /* |[F_x F_p] u| / |u| by central differences of F. */
 static int jac_times(whirl_cont *c, const double *X0, const double *p0, const double *u,
                      double *w, double *out) {
-  const size_t n = c->n, N = c->N;
-  double *Xs = w, *ps = w + N, *fp = ps + c->npar, *fm = fp + n;
-  const double h = step_along(X0, N, u, 1e-6);
-  int rc;
-  if ((rc = f_along(c, X0, p0, u, h, Xs, ps, fp)) != 0 ||
-      (rc = f_along(c, X0, p0, u, -h, Xs, ps, fm)) != 0)
-    return rc;
+  const size_t n = c->n;
+  double *fp = w + c->N + c->npar, *fm = fp + n, h;
+  const int rc = f_pair(c, X0, p0, u, 1e-6, w, &h);
+  if (rc != 0) return rc;
   for (size_t i = 0; i < n; ++i) fp[i] = (fp[i] - fm[i]) / (2.0 * h);
-  *out = norm2(fp, n) / norm2(u, N);
+  *out = norm2(fp, n) / norm2(u, c->N);
   return 0;
 }
 
@@ -91,13 +98,11 @@ static int jac_times(whirl_cont *c, const double *X0, const double *p0, const do
 static int second_derivative(whirl_cont *c, const double *X0, const double *p0,
                              const double *u, const double *psi, const double *f0,
                              double *w, double *out) {
-  const size_t n = c->n, N = c->N;
-  double *Xs = w, *ps = w + N, *fp = ps + c->npar, *fm = fp + n;
-  const double h = step_along(X0, N, u, 1e-4);
-  int rc;
-  if ((rc = f_along(c, X0, p0, u, h, Xs, ps, fp)) != 0 ||
-      (rc = f_along(c, X0, p0, u, -h, Xs, ps, fm)) != 0)
-    return rc;
+  const size_t n = c->n;
+  const double *fp = w + c->N + c->npar, *fm = fp + n;
+  double h;
+  const int rc = f_pair(c, X0, p0, u, 1e-4, w, &h);
+  if (rc != 0) return rc;
   double s = 0.0;
   for (size_t i = 0; i < n; ++i) s += psi[i] * (fp[i] + fm[i] - 2.0 * f0[i]);
   *out = s / (h * h);

@@ -1370,15 +1370,24 @@ static int circle_at_p_F(const double *x, const double *p, double *f, void *d) {
   return 0;
 }
 
-static void test_start_on_singular_solution(void) {
+/* A system of two unknowns and one parameter, and options continuing in
+ * it (the starts on singular points below). */
+static whirl_system two_by_one(const char *name,
+                               int (*F)(const double *, const double *, double *, void *),
+                               whirl_cont_options *o) {
   whirl_system s = {0};
-  s.name = "circle at p = 2";
+  s.name = name;
   s.n = 2;
   s.npar = 1;
-  s.F = circle_at_p_F;
+  s.F = F;
+  whirl_cont_options_default(o);
+  o->icp = 0;
+  return s;
+}
+
+static void test_start_on_singular_solution(void) {
   whirl_cont_options o;
-  whirl_cont_options_default(&o);
-  o.icp = 0;
+  const whirl_system s = two_by_one("circle at p = 2", circle_at_p_F, &o);
   o.ds = 0.05;
   o.ds_max = 0.1;
   o.nmx = 40;
@@ -1413,14 +1422,8 @@ static int x_bp_F(const double *x, const double *p, double *f, void *d) {
 }
 
 static void test_start_at_branch_point(int dir) {
-  whirl_system s = {0};
-  s.name = "x^2 = p^2";
-  s.n = 2;
-  s.npar = 1;
-  s.F = x_bp_F;
   whirl_cont_options o;
-  whirl_cont_options_default(&o);
-  o.icp = 0;
+  const whirl_system s = two_by_one("x^2 = p^2", x_bp_F, &o);
   o.ds = 0.01;
   o.ds_min = 1e-3;
   o.ds_max = 0.05;
