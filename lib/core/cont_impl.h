@@ -136,9 +136,9 @@ int cont_analyse(whirl_cont *c, cont_state *st, const double *dir);
 int cont_factor_at(whirl_cont *c, const double *X, const double *p, const double *dir);
 int cont_solve_ext(whirl_cont *c, double *b, int trans);
 /* At a start X0 (solving F, F_x singular) with t a unit null vector of
- * [F_x F_p]: when X0 is a simple branch point, the tangent u[N] of the
- * branch along which the parameter moves more (bpstart.c) and 0; 1 when
- * it is not one (a fold), < 0 on errors. */
+ * [F_x F_p]: when X0 is a simple branch point, the unit tangent u[N] of
+ * the branch nearest t, on t's side (bpstart.c), and 0; > 0 when it is
+ * not one (a fold) or its matrix is singular, < 0 on errors. */
 int cont_bp_start_tangent(whirl_cont *c, const double *X0, const double *p0, const double *t,
                           double *u);
 int cont_tangent(whirl_cont *c, cont_state *st, const double *dir);

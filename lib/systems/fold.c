@@ -295,8 +295,9 @@ static int g_param(whirl_fold *f, const double *Z, size_t q, double *gq) {
 }
 
 /* The row of g: g_x[n] into gx and g_q of the freed parameters into
- * gq[nfree], g_z = -w^T (F_x)_z v from two base Jacobians per direction
- * (Govaerts 2000, eq. 4.13), v and w padded with zeros beyond A's block;
+ * gq[nfree], g_z = -w^T (F_x)_z v: g_x from two base Jacobians at
+ * x +- h v, g_q from two parameter derivatives there (g_param; Govaerts
+ * 2000, eq. 4.13), v and w padded with zeros beyond A's block;
  * null_solve done at (Z, f->pf). */
 static int g_derivs(whirl_fold *f, const double *Z, double *gx, double *gq, int with_free) {
   const size_t n = f->n, na = f->na, nf = f->o.nfree;
