@@ -6,7 +6,8 @@ command-line interface executes it, with AUTO's commands defined here, and
 every `run` is one `whirl auto` run of the directory's equations with the
 constants the script gives (a constants file, a solution's constants, and
 keyword constants on top: AUTO-07p manual, ch. 5 "The AUTO Python CLUI",
-commands run, load, save, relabel, merge).
+commands run, load, save, relabel, merge, cd, auto, loadbd); a run from
+an array (column-wise [[t...], [u1...], ...]) starts from it as data.
 
 Each run's constants are written as a constants file of their own into
 OUT/stage (beside links to DIR's files; DIR itself is not written to) and
@@ -62,19 +63,68 @@ def _relabel_row(row, lab):
     return row[:14] + '%5d' % lab + row[19:]
 
 
+class Parameters(dict):
+    """PAR(1..NPAR) by index, and by the names parnames gives them."""
+
+    def __init__(self, values, names):
+        dict.__init__(self, values)
+        self.index = {v: k for k, v in names.items()}
+
+    def __getitem__(self, key):
+        if key in self.index:
+            key = self.index[key]
+        try:
+            return dict.__getitem__(self, key)
+        except KeyError:
+            raise ScriptError('no parameter %r (NPAR = %d)' % (key, len(self)))
+
+
+class DataStart:
+    """A start from an array, as AUTO's run([[t0, ...], [x0, ...], ...]) or
+    run([x, y, ...]) for a point: written to OUT/stage as a data file
+    (dat) or given as U, with the constants it runs with."""
+
+    def __init__(self, data):
+        if not data:
+            raise ScriptError('run: an empty array to start from')
+        self.e, self.c = None, []
+        if all(isinstance(v, (int, float)) for v in data):
+            self.point, self.columns = [float(v) for v in data], None
+            return
+        try:
+            cols = [[float(v) for v in col] for col in data]
+        except (TypeError, ValueError):
+            raise ScriptError('run: an array to start from must be numbers, column-wise '
+                              '[[t0, ..., tn], [x0, ..., xn], ...] or a point [x, y, ...]')
+        if len(cols) < 2 or len(set(len(c) for c in cols)) != 1 or len(cols[0]) < 2:
+            raise ScriptError('run: an array to start from needs the column t and one or '
+                              'more state columns, all of one length (two or more)')
+        self.point, self.columns = None, cols
+
+    def constants(self, stage, name):
+        """The constants that start from this data: U = {...} for a point;
+        else dat = NAME, with STAGE/NAME.dat written (rows t, U(1), ...)."""
+        if self.point is not None:
+            return ['U = %r' % {i + 1: v for i, v in enumerate(self.point)}]
+        rows = zip(*self.columns)
+        _write_whole(os.path.join(stage, name + '.dat'),
+                     ''.join(' '.join('%.17g' % v for v in r) + '\n' for r in rows))
+        return ['dat = %r' % name]
+
+
 class Solution:
     """A labelled point: its b. row, its s. block, the run it came from
     (whirl's run id and label there, for restarts) and its constants."""
 
-    def __init__(self, run_id, wlab, row, block, consts, e, columns=()):
-        self.run_id, self.wlab = run_id, wlab
+    def __init__(self, run_id, wlab, row, block, consts, e, columns=(), runs=None):
+        self.run_id, self.wlab, self.runs = run_id, wlab, runs  # runs: its runs/ directory
         self.row, self.block = row, list(block)
         self.c, self.e = list(consts), e
         self.columns = list(columns)  # the b. file's value columns (PAR(1), L2-NORM, ...)
 
     def copy(self):
         return Solution(self.run_id, self.wlab, self.row, self.block,
-                        self.c, self.e, self.columns)
+                        self.c, self.e, self.columns, self.runs)
 
     @property
     def ty(self):
@@ -103,9 +153,30 @@ class Solution:
     def _ints(self, a, b):
         return int(self.block[0][a:b])
 
+    def _values(self, count):
+        """The first COUNT numbers of the s. block after its header (the
+        rows t, U(1..NDIM), wrapped at 7 a line as AUTO writes them)."""
+        vals = []
+        for line in self.block[1:]:
+            vals.extend(float(v.replace('D', 'E')) for v in line.split())
+            if len(vals) >= count:
+                break
+        if len(vals) < count:
+            raise ScriptError('%r: its s. block is short' % self)
+        return vals[:count]
+
+    def _rows(self):
+        """The solution's rows [t, U(1), ..., U(NDIM)] (NTPL of them)."""
+        if not self.block:
+            raise ScriptError('%r has no solution data' % self)
+        ntpl, nar = self._ints(36, 44), self._ints(44, 50)
+        vals = self._values(ntpl * nar)
+        return [vals[k * nar:(k + 1) * nar] for k in range(ntpl)]
+
     @property
     def PAR(self):
-        """PAR(1..NPAR) from the s. block, a dictionary by index."""
+        """PAR(1..NPAR) from the s. block, a dictionary by index that also
+        takes the constants' parnames (sol.PAR['mu'], as AUTO's)."""
         if not self.block:
             raise ScriptError('%r has no solution data' % self)
         npar, vals = self._ints(68, 73), []
@@ -113,7 +184,8 @@ class Solution:
             vals = [float(v.replace('D', 'E')) for v in line.split()] + vals
             if len(vals) >= npar:
                 break
-        return {k + 1: v for k, v in enumerate(vals[-npar:])}
+        return Parameters({k + 1: v for k, v in enumerate(vals[-npar:])},
+                          self._names('parnames'))
 
     def __getitem__(self, key):
         """sol['mu'] or sol['PAR(1)']: a parameter; sol['x'] or sol['U(1)']:
@@ -128,9 +200,15 @@ class Solution:
             return self.PAR[par[key] if key in par else int(m.group(1))]
         uns = {v: k for k, v in self._names('unames').items()}
         m = re.fullmatch(r'U\((\d+)\)', str(key))
-        if key in uns or m:
-            i = uns[key] if key in uns else int(m.group(1))
-            return float(self.block[1].split()[i].replace('D', 'E'))
+        if key in uns or m or key == 't':
+            # a column of the solution's rows (AUTO's sol['x'], sol['t']);
+            # of a point (one row, an equilibrium), its value
+            i = 0 if key == 't' else uns[key] if key in uns else int(m.group(1))
+            rows = self._rows()
+            if not 0 <= i < len(rows[0]):
+                raise ScriptError('%r: no state %r (NDIM = %d)' % (self, key, len(rows[0]) - 1))
+            col = [r[i] for r in rows]
+            return col[0] if len(col) == 1 and key != 't' else col
         if key in self.columns:  # a column of the b. row: 'L2-NORM', 'MAX U(1)'
             k = self.columns.index(key)
             return float(self.row[19 + 19 * k:38 + 19 * k].replace('D', 'E'))
@@ -178,13 +256,13 @@ class Branch:
     """A branch of a b. file: its header lines and its rows, each row with
     its Solution where it is labelled."""
 
-    def __init__(self, header, rows, run_id=None):
+    def __init__(self, header, rows, run_id=None, runs=None):
         self.header, self.rows = list(header), list(rows)  # rows: (text, Solution|None)
-        self.run_id = run_id  # whirl's run it came from (its d. file)
+        self.run_id, self.runs = run_id, runs  # whirl's run it came from (its d. file)
 
     def copy(self):
         return Branch(self.header, [(t, s.copy() if s else None) for t, s in self.rows],
-                      self.run_id)
+                      self.run_id, self.runs)
 
     def solutions(self):
         return [s for _, s in self.rows if s is not None]
@@ -279,20 +357,51 @@ class Runner:
     """AUTO's runner: the equations and constants the next run uses."""
 
     def __init__(self, whirl, srcdir, out, quiet):
-        self.whirl, self.srcdir, self.out, self.quiet = whirl, srcdir, out, quiet
-        self.stage = os.path.join(out, 'stage')
-        self.runs = os.path.join(out, 'runs')
+        self.whirl, self.quiet = whirl, quiet
+        self.top_src, self.top_out = os.path.abspath(srcdir), out
         self.e, self.consts, self.start = None, [], None
         self.last = BifDiag()
         self.count, self.failed = 0, False
-        self.saved = {}
+        self.saved = {}  # (directory, name): the diagram saved there
+        self.all_runs, self.all_sols = [], []  # OUT/b.runs, s.runs (write_runs)
+        self.enter('')
+
+    # -- the directory the script is in (cd) --
+    def enter(self, rel):
+        """Work in DIR/REL: its files are read from there, its runs and the
+        diagrams saved there go to OUT/REL (a stage of links to DIR/REL's
+        files, and runs/)."""
+        self.rel = rel
+        self.srcdir = os.path.join(self.top_src, rel)
+        self.out = os.path.join(self.top_out, rel)
+        self.stage = os.path.join(self.out, 'stage')
+        self.runs = os.path.join(self.out, 'runs')
         os.makedirs(self.stage, exist_ok=True)
-        for name in os.listdir(srcdir):
-            src = os.path.join(os.path.abspath(srcdir), name)
+        for name in os.listdir(self.srcdir):
+            src = os.path.join(self.srcdir, name)
             dst = os.path.join(self.stage, name)
             if os.path.isfile(src) and not os.path.lexists(dst):
                 os.symlink(src, dst)
-        self.all_runs, self.all_sols = [], []  # OUT/b.runs, s.runs (write_runs)
+
+    def cd(self, path):
+        """AUTO's cd: a directory of the demo's (DIR itself and those below
+        it; a script's runs never leave DIR)."""
+        rel = os.path.normpath(os.path.join(self.rel, str(path)))
+        rel = '' if rel == '.' else rel
+        if rel == '..' or rel.startswith('..' + os.sep) or os.path.isabs(str(path)):
+            raise ScriptError('cd(%r): outside the directory the script runs in' % path)
+        if not os.path.isdir(os.path.join(self.top_src, rel)):
+            raise ScriptError('cd(%r): no directory %s' % (path, os.path.join(self.top_src, rel)))
+        self.enter(rel)
+
+    def loadbd(self, name):
+        """AUTO's loadbd(NAME): the diagram the script saved as NAME in the
+        directory it is in (b.NAME, s.NAME there)."""
+        key = (self.rel, str(name))
+        if key not in self.saved:
+            raise ScriptError('loadbd(%r): the script saved nothing under that name in %s'
+                              % (name, self.srcdir))
+        return self.saved[key]
 
     # -- constants --
     def read_c(self, name):
@@ -333,12 +442,21 @@ class Runner:
         c = kw.pop('c', None)
         if 's' in kw:
             s = kw.pop('s')
-            if s not in self.saved:
+            if (self.rel, s) not in self.saved:
                 raise ScriptError("s=%r: no solutions saved under that name by this script" % s)
-            data = self.saved[s]
+            data = self.saved[(self.rel, s)]
         if isinstance(data, str):
             e, c = e or data, c or data
             data = None
+        if hasattr(data, 'tolist') and not isinstance(data, list):  # a numpy array
+            data = data.tolist()
+        if isinstance(data, (list, tuple)) and not isinstance(data, (BifDiag, SolutionList)) \
+                and not any(isinstance(x, (Branch, Solution)) for x in data):
+            data = DataStart(data)
+        if isinstance(data, DataStart):  # a fresh start from the array
+            data.e = e or self.e
+            data.c = self.override(self.read_c(c) if c else self.consts, kw)
+            return data
         if data is None:
             if e:
                 self.e = e
@@ -391,9 +509,15 @@ class Runner:
             raise ScriptError('run: no equations (give e=NAME)')
         self.count += 1
         rid = 'r%d' % self.count
+        start, consts = self.start, self.consts
+        if isinstance(start, DataStart):  # AUTO's run from an array
+            consts = consts + start.constants(self.stage, rid)
+            start = None
+        elif start is not None and start.runs != self.runs:
+            raise ScriptError('run: a restart from %r, a run of another directory '
+                              '(whirl restarts from the runs of the directory it is in)' % start)
         with open(os.path.join(self.stage, 'c.' + rid), 'w') as f:
-            f.write('\n'.join(self.consts) + '\n')
-        start = self.start
+            f.write('\n'.join(consts) + '\n')
         spec = rid if start is None else '%s@%s:%d' % (rid, start.run_id, start.wlab)
         ids = self.whirl_auto(self.e, spec)
         bd = BifDiag()
@@ -441,11 +565,11 @@ class Runner:
                 sol = None
                 if lab and wlab:
                     sol = Solution(run_id, wlab, row, blocks.get(lab, []), consts, e,
-                                   columns)
+                                   columns, self.runs)
                     self.all_sols.extend(sol.block)
                 brows.append((row, sol))
                 self.all_runs.append(row)
-            out.append(Branch(header, brows, run_id))
+            out.append(Branch(header, brows, run_id, self.runs))
         if k != len(wlabs):
             raise ScriptError('%s: %d points in b.%s, %d in branches.tsv'
                               % (run_id, k, run_id, len(wlabs)))
@@ -457,7 +581,7 @@ class Runner:
         """OUT/b.runs and s.runs, whole after every run: each replaced at
         once (a temporary file renamed), never left half written."""
         for name, lines in (('b.runs', self.all_runs), ('s.runs', self.all_sols)):
-            _write_whole(os.path.join(self.out, name), ''.join(l + '\n' for l in lines))
+            _write_whole(os.path.join(self.top_out, name), ''.join(l + '\n' for l in lines))
 
     def _paths(self, name):
         return [os.path.join(self.out, '%s.%s' % (k, name)) for k in 'bsd']
@@ -467,10 +591,11 @@ class Runner:
         paths = self._paths(name)
         texts, runs = ['', '', ''], []
         for br in bd:
-            if br.run_id and br.run_id not in runs:
-                runs.append(br.run_id)
+            d = os.path.join(br.runs or self.runs, 'd.%s' % br.run_id)
+            if br.run_id and d not in runs:
+                runs.append(d)
                 try:  # the runs' diagnostics, as AUTO's d. files
-                    with open(os.path.join(self.runs, 'd.' + br.run_id)) as f:
+                    with open(d) as f:
                         texts[2] += f.read()
                 except OSError:
                     pass
@@ -488,9 +613,9 @@ class Runner:
     def diagram(self, x):
         """A diagram given as itself or by the name it was saved under."""
         if isinstance(x, str):
-            if x not in self.saved:
+            if (self.rel, x) not in self.saved:
                 raise ScriptError("%r: nothing saved under that name" % x)
-            return self.saved[x]
+            return self.saved[(self.rel, x)]
         return _as_bd(x)
 
     def save(self, bd, name=None):
@@ -498,7 +623,7 @@ class Runner:
         if name is None:
             bd, name = self.last, bd
         self.write(bd, name, 'w')
-        self.saved[name] = _as_bd(bd)
+        self.saved[(self.rel, name)] = _as_bd(bd)
 
     def append(self, bd, name=None):
         """append(bd, 'x'), append('a', 'x'), or append('x'): the last run."""
@@ -506,7 +631,7 @@ class Runner:
             bd, name = self.last, bd
         bd = self.diagram(bd)
         self.write(bd, name, 'a')
-        self.saved[name] = self.saved.get(name, BifDiag()) + bd
+        self.saved[(self.rel, name)] = self.saved.get((self.rel, name), BifDiag()) + bd
 
     def in_place(self, f, x):
         """relabel and merge of a saved name rewrite its files."""
@@ -542,7 +667,7 @@ def merge(bd):
         if i + 1 < len(bd) and a.rows and bd[i + 1].rows and \
                 a.rows[0][0][19:] == bd[i + 1].rows[0][0][19:]:
             b = bd[i + 1]
-            out.append(Branch(a.header, list(reversed(b.rows[1:])) + a.rows, a.run_id))
+            out.append(Branch(a.header, list(reversed(b.rows[1:])) + a.rows, a.run_id, a.runs))
             i += 2
         else:
             out.append(a.copy())
@@ -587,21 +712,42 @@ def namespace(R):
         for p in R._paths(name):
             if os.path.exists(p):
                 os.remove(p)
-        R.saved.pop(name, None)
+        R.saved.pop((R.rel, name), None)
     ns['delete'] = ns['dl'] = delete
-    for n in ('cd', 'auto', 'ex', 'loadbd', 'bd', 'demo', 'dm', 'copy', 'cp', 'move', 'mv'):
+    ns['cd'] = R.cd
+    ns['loadbd'] = R.loadbd
+
+    def auto(script):
+        """AUTO's auto(SCRIPT): SCRIPT, in the directory the script is in,
+        executed here, in the same namespace (as AUTO's console runs it:
+        fnc.auto sets pgm again after its sub-demos' scripts)."""
+        path = os.path.join(R.srcdir, str(script))
+        try:
+            with open(path) as f:
+                code = compile(_py2_prints(f.read()), path, 'exec')
+        except OSError as e:
+            raise ScriptError('auto(%r): %s: %s' % (script, path, e.strerror))
+        SCRIPTS.add(path)
+        exec(code, ns)
+    ns['auto'] = auto
+    for n in ('ex', 'bd', 'demo', 'dm', 'copy', 'cp', 'move', 'mv'):
         ns[n] = _unsupported(n)
     return ns
 
 
+SCRIPTS = set()  # the scripts executed (the main one, those auto() runs)
+
+
 def _script_line(script):
-    """':LINE' of the script where the exception being handled arose."""
-    line, tb = '', sys.exc_info()[2]
+    """The script and ':LINE' where the exception being handled arose: the
+    innermost frame of a script (the main one, or one auto() ran)."""
+    where, tb = script, sys.exc_info()[2]
     while tb is not None:
-        if tb.tb_frame.f_code.co_filename == script:
-            line = ':%d' % tb.tb_lineno
+        f = tb.tb_frame.f_code.co_filename
+        if f == script or f in SCRIPTS:
+            where = '%s:%d' % (f, tb.tb_lineno)
         tb = tb.tb_next
-    return line
+    return where
 
 
 def main(argv):
@@ -632,18 +778,18 @@ def main(argv):
     try:
         exec(code, namespace(R))
     except KeyboardInterrupt:  # Ctrl-C: the runs done so far stay, whole
-        sys.stderr.write('whirl auto: %s%s: interrupted\n' % (a.script, _script_line(a.script)))
+        sys.stderr.write('whirl auto: %s: interrupted\n' % _script_line(a.script))
         return 130
     except OSError as e:
         if e.errno not in (errno.ENOSPC, errno.EDQUOT, errno.EIO, errno.EROFS):
             what = '%s: %s' % (type(e).__name__, e)  # the script's own
-            sys.stderr.write('whirl auto: %s%s: %s\n' % (a.script, _script_line(a.script), what))
+            sys.stderr.write('whirl auto: %s: %s\n' % (_script_line(a.script), what))
             return 2
         sys.stderr.write('whirl auto: %s: %s\n' % (e.filename or a.out, e.strerror))
         return 1  # OUT cannot be written (a full disk): the files there are whole
     except Exception as e:  # bad input, or the script's own error as Python says it
         what = str(e) if isinstance(e, ScriptError) else '%s: %s' % (type(e).__name__, e)
-        sys.stderr.write('whirl auto: %s%s: %s\n' % (a.script, _script_line(a.script), what))
+        sys.stderr.write('whirl auto: %s: %s\n' % (_script_line(a.script), what))
         return 2
     return 1 if R.failed else 0
 

@@ -338,14 +338,16 @@ static int arclength_weights(ctx *c) {
 }
 
 /* dat = 'NAME': DAT, the file NAME, else NAME.dat, in opts->dir (AUTO-07p
- * opens them in that order, toolboxbv.f90 STPNUB); a start of orbits only. */
+ * opens them in that order, toolboxbv.f90 STPNUB); a start of orbits
+ * (IPS = 2) or of a boundary-value problem (IPS = 4). */
 static int dat(ctx *c) {
   const char *d = whirl_auto_constants_text(c->ac, "dat");
   const int line = whirl_auto_constants_line(c->ac, "dat");
   if (!d || !d[0]) return WHIRL_OK;
-  if (c->ips != 2)
+  if (c->ips != 2 && c->ips != 4)
     return whirl_auto_constants_fail(c->ac, line, "dat = '%s': a data file starts periodic "
-                                     "orbits (IPS = 2), not IPS = %d", d, c->ips);
+                                     "orbits (IPS = 2) or a boundary-value problem (IPS = 4), "
+                                     "not IPS = %d", d, c->ips);
   char path[2][4200];
   for (int k = 0; k < 2; k++) {
     snprintf(path[k], sizeof path[k], "%s%s%s%s", c->o->dir && d[0] != '/' ? c->o->dir : "",

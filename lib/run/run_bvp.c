@@ -246,6 +246,9 @@ int run_bvp_start(run_ctx *R, const whirl_solution *so, whirl_bvp **bvp, double 
   int tan = 0;
   if (!rc && so) {
     rc = start_from_label(R, so, *bvp, &o, *X, *D, &tan);
+  } else if (!rc && s->dat[0]) { /* AUTO's STPNUB from a data file */
+    if (run_dat_bvp(R, *bvp, *X)) rc = -1;
+    apply_run_file_par(R);
   } else if (!rc) {
     if (!R->model->stpnt) {
       run_fail(R, WHIRL_RK_IPS, "IPS = 4 starts from the model's start solution "

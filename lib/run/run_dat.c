@@ -141,3 +141,58 @@ int run_dat_adapt(run_ctx *R, whirl_colloc *colloc, double *X, double *T, double
   free(t), free(u);
   return rc == WHIRL_OK ? 0 : -1;
 }
+
+/* The piecewise-linear interpolant of the rows (time on [0, 1]) at t. */
+typedef struct dat_rows_lin {
+  const double *t, *u;
+  size_t nr, n;
+} dat_rows_lin;
+
+static int rows_at(double t, double *u, double *p, void *d) {
+  const dat_rows_lin *L = d;
+  size_t j = 0;
+  (void)p;
+  while (j + 2 < L->nr && L->t[j + 1] <= t) j++;
+  const double w = (t - L->t[j]) / (L->t[j + 1] - L->t[j]);
+  for (size_t i = 0; i < L->n; i++)
+    u[i] = (1.0 - w) * L->u[j * L->n + i] + w * L->u[(j + 1) * L->n + i];
+  return 0;
+}
+
+int run_dat_bvp(run_ctx *R, whirl_bvp *bvp, double *X) {
+  const size_t n = R->n;
+  double *t = NULL, *u = NULL, *us = malloc(n * sizeof *us);
+  size_t nr;
+  char path[4096];
+  int rc = us ? 0 : -1;
+  if (!rc && run_path(R, WHIRL_RK_DAT, R->s->dat, path, sizeof path)) {
+    run_fail(R, WHIRL_RK_DAT, "DAT: the path is too long");
+    rc = -1;
+  }
+  if (!rc) rc = read_rows(R, path, &t, &u, &nr);
+  if (!rc) {
+    const double t0 = t[0], span = t[nr - 1] - t[0];
+    for (size_t k = 0; k < nr; k++) t[k] = (t[k] - t0) / span;
+    t[nr - 1] = 1.0;
+    if (R->npar > 10) R->par[10] = span; /* AUTO's PAR(11) = PERIOD */
+    fprintf(R->log, "start solution from %s: %zu rows over %.10g\n", path, nr, span);
+    memcpy(us, u, n * sizeof *us); /* STPNT(NDIM, U, PAR, 0) may set PAR */
+    if (R->model->stpnt && R->model->stpnt(0.0, us, R->par, R->prob.data) != 0) {
+      run_fail(R, WHIRL_RK_MODEL, "model '%s': stpnt failed", R->prob.name);
+      rc = -1;
+    }
+  }
+  if (!rc && whirl_bvp_mesh_from(bvp, nr - 1, 1, t, u) != WHIRL_OK) {
+    run_say(R, "DAT: %s", whirl_bvp_errmsg(bvp));
+    rc = -1;
+  }
+  if (!rc) {
+    dat_rows_lin L = {t, u, nr, n};
+    if (whirl_bvp_from_function(bvp, rows_at, &L, X, R->par) != WHIRL_OK) {
+      run_say(R, "DAT: %s", whirl_bvp_errmsg(bvp));
+      rc = -1;
+    }
+  }
+  free(t), free(u), free(us);
+  return rc;
+}

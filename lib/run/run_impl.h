@@ -113,8 +113,6 @@ int run_solution_find(const run_ctx *R, const char *dir, int label,
 
 /* run_table.c */
 int run_table_header(run_ctx *R, whirl_solution_kind kind, int icp, int q);
-/* L2-NORM, PERIOD (0 for equilibria) and the state (its MAX over the orbit
- * for periodic orbits, mx[n]) of the solution xb of a problem of this kind */
 /* DAT: m samples xs[m * n] of the data file's orbit, its period *T and
  * (jump not NULL) u_last - u_first, jump[n] (run_dat.c).  0, or -1 (said). */
 int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T, double *jump);
@@ -122,6 +120,13 @@ int run_dat_samples(run_ctx *R, size_t m, double *xs, double *T, double *jump);
  * the rows by AUTO's ADAPT2 and X's nodes the rows' interpolant there (the
  * period in *T, not in X).  0, or -1 said. */
 int run_dat_adapt(run_ctx *R, whirl_colloc *colloc, double *X, double *T, double *jump);
+/* IPS = 4 from the data file DAT, as AUTO's STPNUB: the rows' time on
+ * [0, 1], PAR(11) their span (NPAR > 10), the model's stpnt called once
+ * (it may set parameters), bvp's mesh by ADAPT2 of the rows as linear
+ * pieces and X's node values their interpolant there.  0, or -1 (said). */
+int run_dat_bvp(run_ctx *R, whirl_bvp *bvp, double *X);
+/* L2-NORM, PERIOD (0 for equilibria) and the state (its MAX over the orbit
+ * for periodic orbits, mx[n]) of the solution xb of a problem of this kind */
 int run_point_measures(const run_ctx *R, whirl_solution_kind kind, const void *obj,
                        const double *xb, const double *p, double *l2,
                        double *period, double *mx);

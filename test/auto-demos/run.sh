@@ -51,8 +51,13 @@ tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 
 py=${AUTO_07P_PYTHON:-/usr/lib/auto-07p/python}
+# AUTO's interpreter: Debian's, whose numpy AUTO's loadbd needs (a python3
+# first on PATH may be another install without it), run through
+# auto07p.py (numpy.bool, which numpy 1.24 removed and AUTO 0.9.2 reads)
+apy=/usr/bin/python3
+[ -x "$apy" ] || apy=python3
 tight=0
-[ "${AUTO_REF:-}" != hyper ] && [ -f "$py/auto/__main__.py" ] && command -v python3 >/dev/null 2>&1 && tight=1
+[ "${AUTO_REF:-}" != hyper ] && [ -f "$py/auto/__main__.py" ] && command -v "$apy" >/dev/null 2>&1 && tight=1
 # AUTO's own run of demo $1 at EPSS = 1e-10, ITMX = 40 in a scratch copy: its log,
 # framed like hyper.all's, in $tmp/$1.tight (empty when it fails)
 auto_tight() {
@@ -62,7 +67,7 @@ auto_tight() {
     sed -e 's/EPSS *= *[-+0-9.eEdD]*/EPSS = 1e-10/' -e 's/ITMX *= *[0-9]*/ITMX = 40/' "$c" > "$c.t" && mv "$c.t" "$c"
   done
   { echo "Demo $1 is started"
-    (cd "$tmp/ref.$1" && timeout 300 python3 "$py/auto/__main__.py" "$1.auto" 2>&1)
+    (cd "$tmp/ref.$1" && timeout 300 "$apy" "$here/auto07p.py" "$py/auto/__main__.py" "$1.auto" 2>&1)
     echo "Demo $1 is done"; } > "$tmp/$1.tight"
   grep -q 'PT  TY' "$tmp/$1.tight" || : > "$tmp/$1.tight"
 }
@@ -79,7 +84,7 @@ auto_default() {
   : > "$tmp/$1.default"
   default_order_script "$1" "$r" || return 0
   { echo "Demo $1 is started"
-    (cd "$r" && rm -f b.* s.* d.* && timeout 60 python3 "$py/auto/__main__.py" whirl-default.auto 2>&1)
+    (cd "$r" && rm -f b.* s.* d.* && timeout 60 "$apy" "$here/auto07p.py" "$py/auto/__main__.py" whirl-default.auto 2>&1)
     echo "Demo $1 is done"; } > "$tmp/$1.default"
   grep -q 'PT  TY' "$tmp/$1.default" || : > "$tmp/$1.default"
 }

@@ -61,10 +61,10 @@ for dir in "$demos"/*/; do
       t1=$(now); (cd "$tmp/ad" && timeout 300 "$BASE" auto "$dir" $wargs --quiet --out=o > /dev/null 2>&1)
     elif [ -n "$DEFAULT" ]; then
       default_order_script "$d" "$tmp/ad"
-      t1=$(now); (cd "$tmp/ad" && timeout 60 /usr/bin/python3 "$py/auto/__main__.py" whirl-default.auto > log 2>&1)
+      t1=$(now); (cd "$tmp/ad" && timeout 60 /usr/bin/python3 "$top/test/auto-demos/auto07p.py" "$py/auto/__main__.py" whirl-default.auto > log 2>&1)
       [ $? = 124 ] && echo "$d" > "$tmp/timeout"
     else
-      t1=$(now); (cd "$tmp/ad" && timeout 300 /usr/bin/python3 "$py/auto/__main__.py" "$d.auto" > log 2>&1)
+      t1=$(now); (cd "$tmp/ad" && timeout 300 /usr/bin/python3 "$top/test/auto-demos/auto07p.py" "$py/auto/__main__.py" "$d.auto" > log 2>&1)
     fi
     t2=$(now)
     echo "$t1 - $t0" | bc -l >> "$tmp/w"; echo "$t2 - $t1" | bc -l >> "$tmp/a"

@@ -14,6 +14,8 @@
 #  2. Bad input: a command the runner lacks, an error of the script's own,
 #     --script with --runs, a missing script: exit 2 with one message naming
 #     the script (and its line), no traceback.
+#  3. fnc's commands: cd and auto() into a sub-directory's script, loadbd,
+#     a run of IPS = 4 from an array with PAR (below).
 # TAP output.
 set -u
 : "${top_srcdir:=.}" "${top_builddir:=.}"
@@ -274,7 +276,7 @@ bad() { # script text, what the message must name, test name
   rm -f "$tmp/lg/bad.auto"
 }
 bad "r = run(e='lg', c='lg')
-cd('elsewhere')" "bad.auto:2: the script uses 'cd'" "a command the runner lacks: exit 2, its line"
+copy('lg', 'x')" "bad.auto:2: the script uses 'copy'" "a command the runner lacks: exit 2, its line"
 bad "x = undefined_name + 1" "bad.auto:1: NameError" "the script's own error: exit 2, one line"
 rm -rf "$tmp/bad.out"
 bad "r = run(e='lg', c='lg'" "bad.auto" "a script that does not compile: exit 2, one line"
@@ -296,6 +298,97 @@ nr=$(cat "$tmp/int.out/runs/b.r1" "$tmp/int.out/runs/b.r1".bif* 2>/dev/null | gr
 check $? "Ctrl-C in a script: exit $rc, '$msg', b.runs whole ($nb lines, run 1's $nr), no temporary file"
 msg=$(cd "$tmp" && "$WHIRL" auto lg --script --runs=lg --out=x.out 2>&1)
 [ $? = 2 ] && printf '%s' "$msg" | grep -q "exclude"; check $? "--script with --runs: exit 2"
+# 3. a script in AUTO's fnc form: cd into a directory of the demo and
+# auto() its own script there (which saves a diagram), loadbd the diagram,
+# and a run of the top directory's equations from an array, column-wise
+# [[t...], [u...]], with PAR={name: value} (a data start of IPS = 4, as
+# AUTO's STPNUB): u' = p u on [0, 1], u(0) = 1, u = exp(p t), L2-NORM
+# sqrt((exp(2 p) - 1) / (2 p)); the sub-directory's run goes from p = 0
+# (STPNT) to the UZ at p = 0.5, whose t and u columns the top script reads
+# (sol['t'], sol['u'], sol.PAR['p']) and starts from at p = 0.5 onto the
+# UZ at p = 1
+mkdir -p "$tmp/ex/sub"
+for d in ex ex/sub; do
+  e=$(basename "$d")
+  cat > "$tmp/$d/$e.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(NDIM,*)
+      F(1) = PAR(1) * U(1)
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 0
+      U(1) = 1
+      END SUBROUTINE STPNT
+      SUBROUTINE BCND(NDIM,PAR,ICP,NBC,U0,U1,FB,IJAC,DBC)
+      IMPLICIT NONE
+      INTEGER NDIM, ICP(*), NBC, IJAC
+      DOUBLE PRECISION PAR(*), U0(NDIM), U1(NDIM), FB(NBC), DBC(NBC,*)
+      FB(1) = U0(1) - 1
+      END SUBROUTINE BCND
+F
+  cat > "$tmp/$d/c.$e" <<'C'
+unames = {1: 'u'}, parnames = {1: 'p'}
+NDIM = 1, IPS = 4, ICP = ['p'], NBC = 1, NINT = 0
+NTST = 10, NCOL = 4, IAD = 0, JAC = 0, ISP = 0, ILP = 0
+NMX = 200, NPR = 0, EPSL = 1e-10, EPSU = 1e-10, EPSS = 1e-8
+DS = 0.05, DSMIN = 1e-4, DSMAX = 0.1, NPAR = 1
+C
+done
+echo "UZR = {'p': 0.5}, UZSTOP = {'p': 0.5}" >> "$tmp/ex/sub/c.sub"
+echo "UZR = {'p': 1.0}, UZSTOP = {'p': 1.0}" >> "$tmp/ex/c.ex"
+printf '%s\n' "r = run(e='sub', c='sub')" "save(r, 'half')" > "$tmp/ex/sub/sub.auto"
+cat > "$tmp/ex/ex.auto" <<'A'
+cd('sub')
+auto('sub.auto')
+half = loadbd('half')
+cd('..')
+sol = half('UZ1')
+t, u = sol['t'], sol['u']
+print('cols %d %d %.12g %.12g %.12g' % (len(t), len(u), t[-1], u[-1], sol.PAR['p']))
+r = run([t, u], e='ex', c='ex', PAR={'p': sol.PAR['p']})
+print('data start %.12g %.12g' % (r()[0]['p'], r()[0]['L2-NORM']))
+print('uz %.12g %.12g' % (r('UZ1')['p'], r('UZ1')['L2-NORM']))
+save(r, 'whole')
+A
+cp -R "$tmp/ex" "$tmp/ex.orig"
+out=$(cd "$tmp" && "$WHIRL" auto ex --script --quiet --out=ex.out 2>&1)
+rc=$?
+check $([ $rc = 0 ] && echo 0 || echo 1) "cd, auto(), loadbd and a run from an array (exit $rc$( [ $rc = 0 ] || printf ': %s' "$(printf '%s' "$out" | tail -2)"))"
+set -- $(printf '%s\n' "$out" | sed -n 's/^cols //p')
+[ "${1:-0}" = "${2:-1}" ] && [ "${1:-0}" -gt 10 ] && near "${3:-0}" 1 1e-12 &&
+  near "${4:-0}" 1.6487212707 2e-9 && near "${5:-0}" 0.5 1e-9
+check $? "sol['t'], sol['u'] the columns of the UZ at p = 0.5 (${1:-?} rows, u(1) = ${4:-?} against exp(0.5) = 1.6487212707), sol.PAR['p'] = ${5:-?}"
+set -- $(printf '%s\n' "$out" | sed -n 's/^data start //p')
+near "${1:-0}" 0.5 1e-12 && near "${2:-0}" 1.3108324944 1e-6
+check $? "the run from the array starts at PAR={'p': 0.5}: L2-NORM ${2:-?} against sqrt(e - 1) = 1.3108324944"
+set -- $(printf '%s\n' "$out" | sed -n 's/^uz //p')
+near "${1:-0}" 1 1e-9 && near "${2:-0}" 1.7873242709 1e-8
+check $? "its UZ at p = 1: L2-NORM ${2:-?} against sqrt((e^2 - 1) / 2) = 1.7873242709"
+[ -s "$tmp/ex.out/sub/b.half" ] && [ -s "$tmp/ex.out/b.whole" ] && [ ! -e "$tmp/ex.out/b.half" ]
+check $? "save in the sub-directory writes OUT/sub/b.half, at the top OUT/b.whole"
+diff -r "$tmp/ex" "$tmp/ex.orig" > /dev/null; check $? "DIR and its sub-directory are not written to"
+bad2() { # script text, what the message must name, test name
+  printf '%s\n' "$1" > "$tmp/ex/bad.auto"
+  msg=$(cd "$tmp" && "$WHIRL" auto ex --script=ex/bad.auto --quiet --out=bad2.out 2>&1 >/dev/null)
+  rc=$?
+  [ $rc = 2 ] && [ "$(printf '%s\n' "$msg" | grep -c .)" = 1 ] &&
+    printf '%s\n' "$msg" | grep -q "$2" && ! printf '%s\n' "$msg" | grep -q Traceback
+  check $? "$3 (exit $rc: $msg)"
+  rm -f "$tmp/ex/bad.auto"
+}
+bad2 "cd('..')" "bad.auto:1: cd('..'): outside" "cd out of the script's directory: exit 2"
+bad2 "cd('nothere')" "cd('nothere'): no directory" "cd to a missing directory: exit 2"
+bad2 "loadbd('none')" "loadbd('none'): the script saved nothing" "loadbd of a name not saved: exit 2"
+printf '%s\n' "cd('sub')" "r = run(e='sub', c='sub')" "r('HB1')" > "$tmp/ex/sub/inner.auto"
+bad2 "auto('sub/inner.auto')" "sub/inner.auto:3: .*no HB1" "an error in a script auto() runs names that script and its line"
+rm -f "$tmp/ex/sub/inner.auto"
+bad2 "run([[0, 1], [1]], e='ex', c='ex')" "all of one length" "an array whose columns differ in length: exit 2"
+
 msg=$(cd "$tmp" && "$WHIRL" auto lg --script=nothere.auto --out=y.out 2>&1)
 [ $? = 2 ] && printf '%s' "$msg" | grep -q "nothere.auto"; check $? "a missing script: exit 2"
 [ ! -e "$tmp/y.out" ] && [ ! -e "$tmp/x.out" ]; check $? "nothing written on bad arguments"

@@ -184,7 +184,8 @@ static void runfile(void) {
                                       "periodic orbits (2), boundary-value problems (4) and "
                                       "fixed points of maps (-1) only", NULL},
       {"NDIM=1, ICP=[1]\ndat = 'x'\n",
-       "c.t:2: dat = 'x': a data file starts periodic orbits (IPS = 2), not IPS = 1", NULL},
+       "c.t:2: dat = 'x': a data file starts periodic orbits (IPS = 2) or a boundary-value "
+       "problem (IPS = 4), not IPS = 1", NULL},
       {"NDIM=1, IPS=2, ICP=[1]\ndat = 'nothere'\n",
        "c.t:2: dat = 'nothere': no data file nothere or nothere.dat", NULL},
       {"NDIM=1, ICP=[1]\n\nIRS = 3\n", "c.t:3: IRS = 3: no earlier run to restart from", NULL},
