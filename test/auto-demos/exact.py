@@ -125,9 +125,21 @@ def ppp_bp():
                "point')")
 
 
+def cusp_cp():
+    """cusp (cusp.auto's fold locus from LP1, ISW = 2, ICP = [mu, lambda]):
+    F = mu + lambda x - x^3.  The fold curve F = F_x = 0 is lambda = 3 x^2,
+    mu = -2 x^3; its cusp, where F_xx = -6 x vanishes too, is x = 0, mu =
+    lambda = 0.  Closed form.  Columns PAR(2) = mu (ICP(1)), L2-NORM, U(1),
+    PAR(1) = lambda."""
+    return row("cusp", "CP", [0.0, 0.0, 0.0, 0.0],
+               "x = mu = lambda = 0 on the fold curve lambda = 3 x^2, mu = -2 x^3 "
+               "(hyper.all's CP 12 stops at EPSS = 1e-4, x = 1.00472e-4, lambda = 3.03e-8)")
+
+
 print("# test/auto-demos/exact.ref - written by exact.py (see there): converged")
 print("# special points that AUTO-07p's own runs detect but do not print to 6 digits.")
 print("# demo\tTY values (the b-file's columns)\thow")
 print(fhn_gh())
 print(enz_lp())
 print(ppp_bp())
+print(cusp_cp())

@@ -127,7 +127,7 @@ maxref_of() {
   mkdir -p "$tmp/om.$1"
   (cd "$tmp/om.$1" && "${FC:-gfortran}" -O2 -c "$demos/$1/$1.f90" -o eq.o > /dev/null 2>&1 &&
    ${CC:-cc} -O2 -o orbitmax "$here/orbitmax.c" eq.o $cvode_libs -llapack -lgfortran -lm > /dev/null 2>&1 &&
-   ./orbitmax "$tmp/$1.out/s.$stem" > "$tmp/$1.ref" 2> /dev/null) || : > "$tmp/$1.ref"
+   timeout 60 ./orbitmax "$tmp/$1.out/s.$stem" > "$tmp/$1.ref" 2> /dev/null) || : > "$tmp/$1.ref"
 }
 cvode_libs="-lsundials_cvode -lsundials_nvecserial -lsundials_sunlinsoldense -lsundials_sunmatrixdense"
 have_cvode=0
