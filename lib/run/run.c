@@ -237,17 +237,17 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
   o->start_as_given = b->as_given;
   o->lead = b->lead;
   o->detect_lp = s->ilp;
-  /* ISP = 1: "branch points ... are not detected for periodic solutions
-   * and boundary value problems" (AUTO-07p manual, ISP) */
-  o->detect_bp = s->isp != 0 && !(s->isp == 1 && b->kind != WHIRL_SOL_EQ &&
-                                  s->ips != WHIRL_IPS_MAP);
-  o->detect_hb = s->isp != 0;
-  /* ISP = 1 detects no PD or TR of orbits (their multipliers are
-   * computed, for the stability), but a map's multipliers are its
-   * eigenvalues: PD (and TR) of maps with ISP 1 or 2 (AUTO-07p manual,
-   * ISP) */
-  o->detect_pd = s->isp == 2 || (s->ips == WHIRL_IPS_MAP && s->isp != 0);
-  if (b->kind != WHIRL_SOL_EQ && s->isp != 2) o->detect_hb = 0; /* TR needs Floquet */
+  /* ISP as AUTO-07p's CHECKSP (support.f90) reads it.  Equilibria and
+   * maps: BP where ISP /= 0; HB and the loci's BT, ZH, GH, CP where ISP is
+   * neither 0 nor 3 (a map's TR, its multipliers being its eigenvalues,
+   * where ISP /= 0).  Orbits and boundary-value problems: BP where ISP is
+   * 2 or 3, PD and TR where it is 2 or 4 (ISP = 1 computes the orbits'
+   * multipliers, for the stability, and looks for none of them) */
+  const int map = s->ips == WHIRL_IPS_MAP, ae = b->kind == WHIRL_SOL_EQ || map;
+  o->detect_bp = ae ? s->isp != 0 : s->isp == 2 || s->isp == 3;
+  o->detect_hb = ae ? s->isp != 0 && (s->isp != 3 || map) : s->isp == 2 || s->isp == 4;
+  o->detect_pd = ae ? map && s->isp != 0 : s->isp == 2 || s->isp == 4;
+  if (ae && !map && (s->isp == 0 || s->isp == 3)) o->detect_sys = 0;
   /* ISP = 0 disables "the computation of Floquet multipliers" (AUTO-07p
    * manual, ISP; with ISP = 1 they are computed), nor then the orbits'
    * stability */
@@ -1415,7 +1415,7 @@ static int start_hbm(run_ctx *R, run_objects *O, branch_spec *b) {
   ho.harmonics = (size_t)s->nhb;
   ho.oversampling = (size_t)s->oversampling;
   ho.forcing_param = R->model->forcing_param;
-  if (s->isp != 2) ho.no_spectrum = 1;
+  if (s->isp != 2 && s->isp != 4) ho.no_spectrum = 1; /* PD, TR: ISP 2 or 4 */
   O->hbm = whirl_hbm_alloc(&R->prob, &ho, err, sizeof err);
   if (!O->hbm) {
     run_say(R, "harmonic balance: %s", err);

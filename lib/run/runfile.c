@@ -569,9 +569,7 @@ static const char *check_int(whirl_run_key k, int x) {
     case WHIRL_RK_NDIM: return x < 1 ? "must be >= 1" : NULL;
     case WHIRL_RK_ILP: return x != 0 && x != 1 ? "must be 0 or 1" : NULL;
     case WHIRL_RK_ISP:
-      return x < 0 || x > 3 ? "must be 0, 1, 2 or 3 (4 is for boundary-value "
-                              "problems, not supported)"
-                            : NULL;
+      return x < 0 || x > 4 ? "must be 0, 1, 2, 3 or 4 (AUTO-07p's ISP)" : NULL;
     case WHIRL_RK_ISW:
       return x != 1 && x != -1 && x != 2 && x != 3
                  ? "must be 1 (same branch), -1 (switch at BP/PD), 2 "

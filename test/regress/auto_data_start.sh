@@ -28,6 +28,7 @@
 #  - run 3 (c.ros.3: run 1's UZ, stored on NTST 20, restarted on NTST 25
 #    downwards): the orbit and its tangent on ADAPT2's mesh (STPNPS), PT
 #    1-5 as AUTO's, the mesh adapted at PT 3 included.
+# Also ISP = 3 and 4 on run 1 (AUTO's CHECKSP: PD, TR of orbits with 2 or 4).
 # TAP output.
 command -v "${FC:-gfortran}" >/dev/null 2>&1 || { echo "1..0 # SKIP no Fortran compiler"; exit 0; }
 name=auto_data_start
@@ -246,4 +247,21 @@ rows_agree "$tmp/ros.out/b.ros.3" > "$tmp/diff3" <<'R'
 R
 rc=$? out=$(head -3 "$tmp/diff3" | tr '\n' ';')
 ok $rc "run 3 (the UZ of run 1, NTST 20, restarted on NTST 25): its orbit on ADAPT2's mesh, PT 1-5 as AUTO's ${out:+($out)}"
+
+# run 1 with ISP = 4 and 3 (AUTO-07p's CHECKSP: PD and TR of orbits where
+# ISP is 2 or 4, not 1 or 3; ISP = 4 was refused before 2026-12-07): the
+# PD at AUTO's 2.8324448995 with 4 (to EPSS), none with 3
+mkdir "$tmp/isp"
+cp "$tmp/ros/ros.f90" "$tmp/ros/ros.dat" "$tmp/isp/"
+for isp in 3 4; do
+  sed "s/ISP =   2/ISP =   $isp/" "$tmp/ros/c.ros.1" > "$tmp/isp/c.ros.$isp"
+done
+(cd "$tmp" && "$WHIRL" auto isp ros --quiet --out=isp.out > isp.log 2>&1)
+ok $? "run 1 with ISP = 3 and 4 exits 0: $(tail -1 "$tmp/isp.log")"
+pd() { awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 7 { printf "%.10f ", substr($0, 20, 19) }' "$1" 2> /dev/null; }
+p4=$(pd "$tmp/isp.out/b.ros.4") p3=$(pd "$tmp/isp.out/b.ros.3")
+# to EPSS (1e-7): without the BP test the step sequence differs in rounding
+set -- $p4
+[ $# = 1 ] && awk -v a="$1" 'BEGIN { d = a - 2.8324448995; exit !(d < 4e-7 && d > -4e-7) }' && [ -z "$p3" ]
+ok $? "the PD with ISP = 4 at AUTO's 2.8324448995 to EPSS (${p4:-none}), none with ISP = 3 (${p3:-none})"
 tap_end
