@@ -33,6 +33,7 @@ import os
 import re
 import subprocess
 import sys
+import types
 
 
 class ScriptError(Exception):
@@ -77,6 +78,10 @@ class Parameters(dict):
             return dict.__getitem__(self, key)
         except KeyError:
             raise ScriptError('no parameter %r (NPAR = %d)' % (key, len(self)))
+
+    def __call__(self, i):
+        """sol.PAR(5): PAR(5), as AUTO's parameters called with an index."""
+        return self[i]
 
 
 class DataStart:
@@ -775,8 +780,15 @@ def main(argv):
         return 1
     R = Runner(a.whirl, a.dir, a.out, a.quiet)
     sys.path.insert(0, os.path.abspath(a.dir))
+    sys.dont_write_bytecode = True  # a module the script imports: no __pycache__ in DIR
+    ns = namespace(R)
+    # a module of the demo's that imports AUTO's commands (r3b's
+    # compute_lps.py: from AUTOclui import *) gets this runner's
+    clui = types.ModuleType('AUTOclui')
+    clui.__dict__.update({k: v for k, v in ns.items() if not k.startswith('__')})
+    sys.modules['AUTOclui'] = clui
     try:
-        exec(code, namespace(R))
+        exec(code, ns)
     except KeyboardInterrupt:  # Ctrl-C: the runs done so far stay, whole
         sys.stderr.write('whirl auto: %s: interrupted\n' % _script_line(a.script))
         return 130

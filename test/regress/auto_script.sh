@@ -354,9 +354,14 @@ r = run([t, u], e='ex', c='ex', PAR={'p': sol.PAR['p']})
 print('data start %.12g %.12g' % (r()[0]['p'], r()[0]['L2-NORM']))
 print('uz %.12g %.12g' % (r('UZ1')['p'], r('UZ1')['L2-NORM']))
 save(r, 'whole')
+import helper
+print('helper %.12g' % helper.uz_p('whole'))
 A
+# a module of the demo's that imports AUTO's commands, as r3b's
+# compute_lps.py (from AUTOclui import *), and calls sol.PAR(i)
+printf '%s\n' "from AUTOclui import *" "def uz_p(name):" "    return loadbd(name)('UZ1').PAR(1)" > "$tmp/ex/helper.py"
 cp -R "$tmp/ex" "$tmp/ex.orig"
-out=$(cd "$tmp" && "$WHIRL" auto ex --script --quiet --out=ex.out 2>&1)
+out=$(cd "$tmp" && env -u PYTHONDONTWRITEBYTECODE "$WHIRL" auto ex --script --quiet --out=ex.out 2>&1)
 rc=$?
 check $([ $rc = 0 ] && echo 0 || echo 1) "cd, auto(), loadbd and a run from an array (exit $rc$( [ $rc = 0 ] || printf ': %s' "$(printf '%s' "$out" | tail -2)"))"
 set -- $(printf '%s\n' "$out" | sed -n 's/^cols //p')
@@ -369,9 +374,12 @@ check $? "the run from the array starts at PAR={'p': 0.5}: L2-NORM ${2:-?} again
 set -- $(printf '%s\n' "$out" | sed -n 's/^uz //p')
 near "${1:-0}" 1 1e-9 && near "${2:-0}" 1.7873242709 1e-8
 check $? "its UZ at p = 1: L2-NORM ${2:-?} against sqrt((e^2 - 1) / 2) = 1.7873242709"
+set -- $(printf '%s\n' "$out" | sed -n 's/^helper //p')
+near "${1:-0}" 1 1e-9
+check $? "a module's 'from AUTOclui import *': loadbd and sol.PAR(1) there (${1:-?})"
 [ -s "$tmp/ex.out/sub/b.half" ] && [ -s "$tmp/ex.out/b.whole" ] && [ ! -e "$tmp/ex.out/b.half" ]
 check $? "save in the sub-directory writes OUT/sub/b.half, at the top OUT/b.whole"
-diff -r "$tmp/ex" "$tmp/ex.orig" > /dev/null; check $? "DIR and its sub-directory are not written to"
+diff -r "$tmp/ex" "$tmp/ex.orig" > /dev/null; check $? "DIR and its sub-directory are not written to (no __pycache__ of the module it imports)"
 bad2() { # script text, what the message must name, test name
   printf '%s\n' "$1" > "$tmp/ex/bad.auto"
   msg=$(cd "$tmp" && "$WHIRL" auto ex --script=ex/bad.auto --quiet --out=bad2.out 2>&1 >/dev/null)
