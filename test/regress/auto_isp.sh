@@ -11,7 +11,11 @@
 #     = 0, continued in p along u = 0 from p = 5: its branch point at
 #     p = pi^2 (where sin(pi t) bifurcates) is labelled with ISP = 2 and 3,
 #     not with ISP = 1 or 4 (CHECKSP: BP of boundary-value problems and
-#     orbits where |ISP| >= 2 and |ISP| /= 4).
+#     orbits where |ISP| >= 2 and |ISP| /= 4);
+#  3. x' = mu + lambda x - x^3 (the cusp's normal form): from its LP in mu
+#     at lambda = 1, the fold curve lambda = 3 x^2, mu = -2 x^3 in (mu,
+#     lambda) towards its cusp at 0: the CP there with ISP = 2, none with
+#     ISP = 0 (CHECKSP: the loci's BT, ZH, GH, CP as HB).
 # TAP output.
 command -v "${FC:-gfortran}" >/dev/null 2>&1 || { echo "1..0 # SKIP no Fortran compiler"; exit 0; }
 name=auto_isp
@@ -75,6 +79,36 @@ DS = 0.2, DSMIN = 1e-5, DSMAX = 0.5, NPAR = 1
 UZSTOP = {1: 12}
 C
 done
+mkdir cu
+cat > cu/cu.f90 <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(NDIM,*)
+      F(1) = PAR(2) + PAR(1) * U(1) - U(1)**3
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 1
+      PAR(2) = 0
+      U(1) = 0
+      END SUBROUTINE STPNT
+F
+cat > cu/c.cu.1 <<'C'
+NDIM = 1, IPS = 1, IRS = 0, ILP = 1, ICP = [2], ISP = 2, ISW = 1
+NMX = 200, NPR = 0, EPSL = 1e-10, EPSU = 1e-10, EPSS = 1e-10
+DS = 0.01, DSMIN = 1e-5, DSMAX = 0.1, NPAR = 2
+UZSTOP = {2: [-2, 2]}
+C
+for isp in 0 2; do
+  cat > cu/c.cu.$((isp / 2 + 2)) <<C
+NDIM = 1, IPS = 1, IRS = 2, ILP = 1, ICP = [2, 1], ISP = $isp, ISW = 2
+NMX = 100, NPR = 0, EPSL = 1e-10, EPSU = 1e-10, EPSS = 1e-10
+DS = -0.01, DSMIN = 1e-5, DSMAX = 0.1, NPAR = 2
+C
+done
 "$WHIRL" auto bru --quiet --out=bru.out > bru.log 2>&1
 ok $? "the Brusselator's four runs (exit $?$( [ -s bru.log ] && printf ': %s' "$(tail -1 bru.log)"))"
 "$WHIRL" auto pend --quiet --out=pend.out > pend.log 2>&1
@@ -97,4 +131,10 @@ for isp in 1 2 3 4; do
   *) [ -z "$bp" ]; ok $? "ISP = $isp: no BP of the BVP looked for (${bp:-none})" ;;
   esac
 done
+"$WHIRL" auto cu --quiet --out=cu.out > cu.log 2>&1
+ok $? "the cusp's LP run and its two fold loci (exit $?$( [ -s cu.log ] && printf ': %s' "$(tail -1 cu.log)"))"
+cp0=$(pts cu.out/b.cu.2 " -2 ") cp2=$(pts cu.out/b.cu.3 " -2 ")
+set -- $cp2
+[ $# = 1 ] && near "$1" 0 1e-8 && [ -z "$cp0" ]
+ok $? "the fold locus's CP at mu = 0 with ISP = 2 (${cp2:-none}), none with ISP = 0 (${cp0:-none})"
 tap_end
