@@ -71,22 +71,32 @@ static void gauss_reference(const whirl_bvp *b, bvp_scratch *s, size_t i, size_t
   const size_t n = b->n, m = b->ncol;
   const double h = b->mesh[i + 1] - b->mesh[i];
   const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
+  double *restrict ud = s->ud, *restrict uo = s->uo, *restrict upo = s->upo;
   if (b->udot_direction) {
-    memset(s->ud, 0, n * sizeof *s->ud);
-    for (size_t k = 0; k <= m; ++k) {
-      const double *node = b->dref + n * (i * m + k);
-      for (size_t r = 0; r < n; ++r) s->ud[r] += lv[k] * node[r];
+    const double *node = b->dref + n * (i * m);
+    for (size_t r = 0; r < n; ++r) ud[r] = lv[0] * node[r]; /* = 0 + its term */
+    for (size_t k = 1; k <= m; ++k) {
+      node += n;
+      const double a = lv[k];
+      for (size_t r = 0; r < n; ++r) ud[r] += a * node[r];
     }
   } else {
-    for (size_t r = 0; r < n; ++r) s->ud[r] = s->du[r] / h;
+    for (size_t r = 0; r < n; ++r) ud[r] = s->du[r] / h;
   }
-  memset(s->uo, 0, n * sizeof *s->uo);
-  memset(s->upo, 0, n * sizeof *s->upo);
-  for (size_t k = 0; k <= m; ++k) {
-    const double *node = b->ref + n * (i * m + k);
+  /* the same sums, term by term, as from zero: the first node's terms
+   * start them (0 + x is x), dv[k] / h once a node */
+  const double *node = b->ref + n * (i * m);
+  const double d0 = dv[0] / h;
+  for (size_t r = 0; r < n; ++r) {
+    uo[r] = lv[0] * node[r];
+    upo[r] = d0 * node[r];
+  }
+  for (size_t k = 1; k <= m; ++k) {
+    node += n;
+    const double a = lv[k], d = dv[k] / h;
     for (size_t r = 0; r < n; ++r) {
-      s->uo[r] += lv[k] * node[r];
-      s->upo[r] += dv[k] / h * node[r];
+      uo[r] += a * node[r];
+      upo[r] += d * node[r];
     }
   }
 }
