@@ -62,8 +62,10 @@ tight=0
 # framed like hyper.all's, in $tmp/$1.tight (empty when it fails)
 auto_tight() {
   rm -rf "$tmp/ref.$1"; mkdir "$tmp/ref.$1"
-  cp "$demos/$1"/* "$tmp/ref.$1"/ 2>/dev/null
-  for c in "$tmp/ref.$1"/c.*; do
+  # the demo with its sub-directories (fnc's attr and rep: their scripts
+  # run there), writable, every constants file at the tight EPSS
+  cp -R "$demos/$1"/. "$tmp/ref.$1"/ 2>/dev/null; chmod -R u+w "$tmp/ref.$1"
+  for c in $(find "$tmp/ref.$1" -name 'c.*' -type f); do
     sed -e 's/EPSS *= *[-+0-9.eEdD]*/EPSS = 1e-10/' -e 's/ITMX *= *[0-9]*/ITMX = 40/' "$c" > "$c.t" && mv "$c.t" "$c"
   done
   { echo "Demo $1 is started"

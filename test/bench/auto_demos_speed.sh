@@ -55,7 +55,8 @@ for dir in "$demos"/*/; do
   : > "$tmp/w" ; : > "$tmp/a"
   for r in $(seq 1 "$repeat"); do
     rm -rf "$tmp/wd" "$tmp/ad"; mkdir "$tmp/wd" "$tmp/ad"
-    cp "$dir"/* "$tmp/ad"/ 2> /dev/null
+    # the demo with its sub-directories (fnc's attr and rep), writable
+    cp -R "$dir"/. "$tmp/ad"/ 2> /dev/null; chmod -R u+w "$tmp/ad"
     t0=$(now); (cd "$tmp/wd" && timeout 300 "$WHIRL" auto "$dir" $wargs --quiet --out=o > /dev/null 2>&1)
     if [ -n "$BASE" ]; then
       t1=$(now); (cd "$tmp/ad" && timeout 300 "$BASE" auto "$dir" $wargs --quiet --out=o > /dev/null 2>&1)
