@@ -266,15 +266,18 @@ c7=$(printf '%s\n' "$out" | sed -n 's/^cols7 //p'); c6=$(printf '%s\n' "$out" | 
 check $? "b. columns: 7 ICP, no U ($c7); 6 ICP, one ($c6)"
 
 # 2. bad input
-bad() { # script text, what the message must name, test name
-  printf '%s\n' "$1" > "$tmp/lg/bad.auto"
-  msg=$(cd "$tmp" && "$WHIRL" auto lg --script=lg/bad.auto --quiet --out=bad.out 2>&1 >/dev/null)
+bad_in() { # demo directory, OUT, script text, what the message must name, test name
+  d=$1 o=$2
+  shift 2
+  printf '%s\n' "$1" > "$tmp/$d/bad.auto"
+  msg=$(cd "$tmp" && "$WHIRL" auto "$d" --script="$d/bad.auto" --quiet --out="$o" 2>&1 >/dev/null)
   rc=$?
   [ $rc = 2 ] && [ "$(printf '%s\n' "$msg" | grep -c .)" = 1 ] &&
     printf '%s\n' "$msg" | grep -q "$2" && ! printf '%s\n' "$msg" | grep -q Traceback
   check $? "$3 (exit $rc: $msg)"
-  rm -f "$tmp/lg/bad.auto"
+  rm -f "$tmp/$d/bad.auto"
 }
+bad() { bad_in lg bad.out "$@"; }
 bad "r = run(e='lg', c='lg')
 copy('lg', 'x')" "bad.auto:2: the script uses 'copy'" "a command the runner lacks: exit 2, its line"
 bad "x = undefined_name + 1" "bad.auto:1: NameError" "the script's own error: exit 2, one line"
@@ -380,15 +383,7 @@ check $? "a module's 'from AUTOclui import *': loadbd and sol.PAR(1) there (${1:
 [ -s "$tmp/ex.out/sub/b.half" ] && [ -s "$tmp/ex.out/b.whole" ] && [ ! -e "$tmp/ex.out/b.half" ]
 check $? "save in the sub-directory writes OUT/sub/b.half, at the top OUT/b.whole"
 diff -r "$tmp/ex" "$tmp/ex.orig" > /dev/null; check $? "DIR and its sub-directory are not written to (no __pycache__ of the module it imports)"
-bad2() { # script text, what the message must name, test name
-  printf '%s\n' "$1" > "$tmp/ex/bad.auto"
-  msg=$(cd "$tmp" && "$WHIRL" auto ex --script=ex/bad.auto --quiet --out=bad2.out 2>&1 >/dev/null)
-  rc=$?
-  [ $rc = 2 ] && [ "$(printf '%s\n' "$msg" | grep -c .)" = 1 ] &&
-    printf '%s\n' "$msg" | grep -q "$2" && ! printf '%s\n' "$msg" | grep -q Traceback
-  check $? "$3 (exit $rc: $msg)"
-  rm -f "$tmp/ex/bad.auto"
-}
+bad2() { bad_in ex bad2.out "$@"; }
 bad2 "cd('..')" "bad.auto:1: cd('..'): outside" "cd out of the script's directory: exit 2"
 bad2 "cd('nothere')" "cd('nothere'): no directory" "cd to a missing directory: exit 2"
 bad2 "loadbd('none')" "loadbd('none'): the script saved nothing" "loadbd of a name not saved: exit 2"
