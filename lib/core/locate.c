@@ -175,6 +175,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   fb = psi(c, ev, k, b, ref);
   if (!(fa * fb < 0.0)) return 1;
   const double fend = fmax(fabs(fa), fabs(fb)); /* the test's size at the step's ends */
+  const double fa0 = fa, fb0 = fb;
 
   double sa = 0.0, sb = ds;
   const double stol = c->opt.loc_tol * fmax(1.0, fabs(ds));
@@ -322,6 +323,16 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
    * special point, as AUTO labels none where its localisation finds no
    * zero. */
   if (ev == EV_LP && !(fbest <= 0.1 * fend)) return 1;
+  /* The determinant passes through a pole, not a zero, where the system
+   * itself is singular (r3b at mu = 0: its mu / r2^3 at the second
+   * primary, r2 = 0, where the equilibria's circle meets it).  Near a
+   * pole s*, |det| ~ K / |s - s*| is at least its smaller value at the
+   * step's ends everywhere between them, so no trial comes below that;
+   * near a zero the trials do (a zero 1e-9 of the step from its start,
+   * lin's trivial branch, still brings |det| to a quarter of the start's).
+   * Not a special point: AUTO's localisation finds no zero there and
+   * labels nothing. */
+  if (ev == EV_BP && !(fbest < fmin(fabs(fa0), fabs(fb0)))) return 1;
   if (p_only && cont_analyse(c, out, c->dir) != 0) return 1;
   if (tangent_only && cont_tests(c, out) != 0) return 1;
   if (ev == EV_BP) {

@@ -1095,6 +1095,36 @@ static void test_kink_no_fold(void) {
   }
 }
 
+/* ---- a determinant that changes sign through a pole, not a zero: x2 = 0,
+ * mu / (x1 - 1) = 0, whose solutions mu = x2 = 0 form the line along x1
+ * (demo r3b's circle of equilibria at mu = 0 meets the second primary
+ * so, where its mu / r2^3 is singular).  det [F_x F_mu; t] = 1 / (x1 − 1)
+ * up to its sign: it changes sign at x1 = 1 and grows without bound
+ * there, and the line has no branch point.  AUTO's localisation finds no
+ * zero and labels nothing; whirl labelled a BP at x1 = 1 until 2026-12-07. */
+static int pole_F(const double *x, const double *p, double *f, void *d) {
+  (void)d;
+  f[0] = x[1];
+  f[1] = p[0] / (x[0] - 1.0);
+  return 0;
+}
+static void test_pole_no_bp(void) {
+  whirl_system s = {.name = "pole", .n = 2, .npar = 1, .F = pole_F};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  o.ds = o.ds_max = 0.07;
+  o.nmx = 30;
+  o.detect_lp = 0; /* the line is vertical in mu: its fold test is 0 */
+  double x0[2] = {0.03, 0.0}, p0 = 0.0;
+  whirl_branch *b = run(&s, &o, x0, &p0, +1, NULL);
+  const double xend = b && b->len ? b->pts[b->len - 1].x[0] : NAN;
+  const size_t nbp = b ? count_type(b, WHIRL_PT_BP) : 99;
+  ok(b && nbp == 0 && fabs(xend) > 1.5,
+     "a pole of det [F_x F_mu; t] (mu / (x1 - 1) = 0): passed (x1 to %.3g), no BP (%zu)",
+     xend, nbp);
+  whirl_branch_free(b);
+}
+
 /* ---- a straight line x = (p, 100 p): the arclength per unit p is
  * sqrt(1 + 1e4 + 1) with unit weights and sqrt(2) when the second
  * component's weight is 0 (AUTO's THU), sqrt(1 + 1e4 + 4) with p_weight 2
@@ -1909,6 +1939,7 @@ int main(void) {
   test_sphere(WHIRL_DIR_PREDICTOR);
   test_loop_weighted();
   test_kink_no_fold();
+  test_pole_no_bp();
   test_uz();
   test_uz_fun();
   test_bratu();
