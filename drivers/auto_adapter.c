@@ -173,13 +173,97 @@ int wa_stpnt(double tau, double *u, double *p, void *d) {
   return 0;
 }
 
+/* LAPACK's eigenvalue routine, from the process (whirl links LAPACK); weak:
+ * a plug-in loaded where it is not gets no eigenvalues (GETP('EIG') 0) */
+void dgeev_(const char *, const char *, const int *, double *, const int *, double *,
+            double *, double *, const int *, double *, const int *, double *, const int *,
+            int *, size_t, size_t) __attribute__((weak));
+
+/* The equilibrium whose PVLS is running, for GETP('EIG'): its state and
+ * whirl's parameters, and its eigenvalues once asked for (eig_state 1; -1
+ * when they could not be computed) */
+static const double *eig_x, *eig_p;
+static double *eig_re, *eig_im;
+static int eig_state;
+
+/* The Jacobian at the point by central differences, as AUTO's (step
+ * 1e-7 (1 + max |U(i)|), its HMACH), column-major into A[n n]. */
+static void eig_jacobian(double *A) {
+  const int n = wa_ndim;
+  double u[n], fp[n], fm[n], umax = 0;
+  memcpy(u, eig_x, (size_t)n * sizeof *u);
+  for (int i = 0; i < n; i++) umax = fmax(umax, fabs(u[i]));
+  const double ep = 1e-7 * (1 + umax);
+  for (int j = 0; j < n; j++) {
+    const double uj = u[j];
+    u[j] = uj + ep;
+    call(u, eig_p, 0, fp, NULL);
+    u[j] = uj - ep;
+    call(u, eig_p, 0, fm, NULL);
+    u[j] = uj;
+    for (int i = 0; i < n; i++) A[i + n * j] = (fp[i] - fm[i]) / (2 * ep);
+  }
+}
+
+/* AUTO's order of the eigenvalues (its STABEQ, AUTO-07p's equilibrium
+ * module): by decreasing real part, the last of equal ones first; where a
+ * system looks conservative (even n, trace below 1e-7 of the largest
+ * entry), eigenvalues within 1e-5 of the imaginary axis among themselves
+ * by decreasing |imaginary part|.  PVLS reads them in this order (r3b puts
+ * the periods of the purely imaginary ones into PAR(5..7)). */
+static void eig_order(const double *A, double *re, double *im) {
+  const int n = wa_ndim;
+  double tol = 0, trace = 0, amax = 0;
+  if (n % 2 == 0) {
+    for (int i = 0; i < n; i++) trace += A[i + n * i];
+    for (int i = 0; i < n * n; i++) amax = fmax(amax, fabs(A[i]));
+    if (fabs(trace) < 1e-7 * amax) tol = 1e-5;
+  }
+  for (int i = 0; i < n - 1; i++) {
+    int loc = i;
+    for (int j = i + 1; j < n; j++) {
+      if (fabs(re[j]) < tol && fabs(re[loc]) < tol) {
+        if (fabs(im[j]) >= fabs(im[loc])) loc = j;
+      } else if (re[j] >= re[loc]) {
+        loc = j;
+      }
+    }
+    const double tr = re[i], ti = im[i];
+    re[i] = re[loc], im[i] = im[loc];
+    re[loc] = tr, im[loc] = ti;
+  }
+}
+
+/* The eigenvalues of the running PVLS's equilibrium, computed once: 0, or
+ * -1 where there are none (LAPACK absent or failing, a non-finite
+ * Jacobian). */
+static int eig_compute(void) {
+  if (eig_state) return eig_state > 0 ? 0 : -1;
+  const int n = wa_ndim, lw = 8 * n, one = 1;
+  double A[n * n], J[n * n], work[lw], vd[1];
+  int info = -1;
+  eig_state = -1;
+  if (!dgeev_) return -1;
+  eig_jacobian(A);
+  for (int i = 0; i < n * n; i++)
+    if (!isfinite(A[i])) return -1;
+  memcpy(J, A, sizeof J);
+  dgeev_("N", "N", &n, A, &n, eig_re, eig_im, vd, &one, vd, &one, work, &lw, &info, 1, 1);
+  if (info != 0) return -1;
+  eig_order(J, eig_re, eig_im);
+  eig_state = 1;
+  return 0;
+}
+
 /* PVLS at an equilibrium: the parameters it sets */
 int wa_pvls(const double *x, double *p, void *d) {
-  double par[wa_nparx];
+  double par[wa_nparx], re[wa_ndim], im[wa_ndim];
   (void)d;
   if (!pvls_) return 0;
   load_par(par, p);
+  eig_x = x, eig_p = p, eig_re = re, eig_im = im, eig_state = 0;
   pvls_(&wa_ndim, x, par);
+  eig_x = eig_p = NULL, eig_re = eig_im = NULL;
   memcpy(p, par, (size_t)wa_npar * sizeof *p);
   return 0;
 }
@@ -208,10 +292,14 @@ static double solution_measure(const char *k, int ic) {
 }
 
 /* PVLS's utility GETP(CODE, IC, U), as AUTO's (AUTO-07p manual, ch. 4):
- * at an equilibrium NRM |U(IC)|, INT, MAX, MIN, BV0, BV1 U(IC); on a
+ * at an equilibrium NRM |U(IC)|, INT, MAX, MIN, BV0, BV1 U(IC), and EIG
+ * the real (IC odd) or imaginary part (IC even) of eigenvalue (IC + 1) / 2
+ * of the Jacobian, in AUTO's order (eig_order); on a
  * solution by collocation NRM the L2 norm and INT the integral of U(IC)
- * over [0, 1], MAX and MIN over the nodes, BV0 and BV1 at t = 0 and 1;
- * NDIM for NDI; NTST, NCOL, NBC, NINT for NTS, NCO, NBC, NIN; else 0.
+ * over [0, 1], MAX and MIN over the nodes, BV0 and BV1 at t = 0 and 1
+ * (EIG there, AUTO's Floquet multipliers, is 0: whirl does not hand them
+ * to PVLS); NDIM for NDI; NTST, NCOL, NBC, NINT for NTS, NCO, NBC, NIN;
+ * else 0.
  * L is the length of CODE (gfortran's hidden argument). */
 double getp_(const char *c, const int *i, const double *u, size_t l) {
   static const char *const cn[4] = {"NTS", "NCO", "NBC", "NIN"};
@@ -222,6 +310,10 @@ double getp_(const char *c, const int *i, const double *u, size_t l) {
   if (!strcmp(k, "NDI") || !strcmp(k, "NDX")) return wa_ndim;
   for (int q = 0; q < 4; q++)
     if (!strcmp(k, cn[q])) return counts[q];
+  if (!strcmp(k, "EIG")) {
+    if (!eig_x || ic < 1 || ic > 2 * wa_ndim || eig_compute() != 0) return 0.0;
+    return ic % 2 ? eig_re[(ic - 1) / 2] : eig_im[ic / 2 - 1];
+  }
   if (ic < 1 || ic > wa_ndim) return 0.0;
   if (sol_u) return solution_measure(k, ic);
   if (!strcmp(k, "NRM")) return fabs(u[ic - 1]);
