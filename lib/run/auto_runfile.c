@@ -379,10 +379,31 @@ static int stops(ctx *c) {
   return WHIRL_OK;
 }
 
+/* TY = 'HBk' on a restart of orbits (IPS = 2) from an equilibrium label:
+ * the label taken as a Hopf point whose orbits have the period PAR(k)
+ * (AUTO's RSPTBV: ITP = 3, PAR(11) = PAR(k)): HB_PERIOD.  Any other TY
+ * is noted as unused. */
+static int type_override(ctx *c) {
+  const char *ty = whirl_auto_constants_text(c->ac, "TY");
+  const int line = whirl_auto_constants_line(c->ac, "TY");
+  if (!ty || !ty[0]) return WHIRL_OK;
+  if (c->ips == 2 && (ty[0] == 'H' || ty[0] == 'h') && (ty[1] == 'B' || ty[1] == 'b') && ty[2]) {
+    char *end;
+    const long k = strtol(ty + 2, &end, 10);
+    if (*end || k < 1 || k > 100000)
+      return whirl_auto_constants_fail(c->ac, line, "TY = '%s': HB and a parameter number "
+                                       "(the period of the orbits, PAR(k)) expected", ty);
+    put(c->t, "HB_PERIOD = PAR(%ld)\n", k);
+    return WHIRL_OK;
+  }
+  put(c->t, "# note: TY (line %d) is not used by whirl\n", line);
+  return WHIRL_OK;
+}
+
 /* Keys whirl has no use for yet: noted. */
 static int unused(ctx *c) {
   static const char *const noted[] = {"SP", "IEQUIB", "ITWIST",
-                                      "ISTART", "IREV", "IFIXED", "IPSI", "TY"};
+                                      "ISTART", "IREV", "IFIXED", "IPSI"};
   for (size_t i = 0; i < sizeof noted / sizeof *noted; i++)
     if (whirl_auto_constants_line(c->ac, noted[i]))
       put(c->t, "# note: %s (line %d) is not used by whirl\n", noted[i],
@@ -408,6 +429,7 @@ int whirl_auto_constants_runfile(whirl_auto_constants *ac, const whirl_auto_runf
   if (!rc) rc = arclength_weights(&c);
   if (!rc) rc = dat(&c);
   if (!rc) rc = stops(&c);
+  if (!rc) rc = type_override(&c);
   if (!rc) rc = unused(&c);
   if (!rc && t.oom) rc = WHIRL_ENOMEM;
   if (rc) {

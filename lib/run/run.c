@@ -1209,6 +1209,31 @@ static int pd_to_run_mesh(run_ctx *R, run_objects *O, branch_spec *b,
 /* Periodic orbits by collocation: from the model's start orbit or a
  * settled forced response, a Hopf point (HB label), or a periodic label
  * (on its mesh, resampled to another, or doubled at a PD). */
+/* HB_PERIOD (AUTO's TY = 'HBk', bvp.f90's RSPTBV: PAR(11) = PAR(k)): the
+ * frequency 2 pi / period of the orbits that start at equilibrium label so,
+ * the period being that parameter's value there (demo r3b's PVLS puts the
+ * periods of the centres' imaginary pairs into PAR(5..7)).  0, or -1 said. */
+static int hopf_period_omega(run_ctx *R, const whirl_solution *so, const double *p0,
+                             double *omega) {
+  whirl_run_ref r;
+  memset(&r, 0, sizeof r);
+  snprintf(r.name, sizeof r.name, "%s", R->s->hb_period);
+  const int k = run_par_index(R, &r);
+  if (k < 0) {
+    run_fail(R, WHIRL_RK_HB_PERIOD, "HB_PERIOD: '%s' is not a parameter of model '%s'",
+             R->s->hb_period, R->prob.name);
+    return -1;
+  }
+  const double T = p0[k];
+  if (!(T > 0) || !isfinite(T)) {
+    run_fail(R, WHIRL_RK_HB_PERIOD, "HB_PERIOD = %s: its value at label %d is %g, "
+             "not a period (> 0)", R->s->hb_period, so->label, T);
+    return -1;
+  }
+  *omega = 2 * WHIRL_PI / T;
+  return 0;
+}
+
 static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
   const whirl_run_settings *s = R->s;
   const int restart = O->have_sol;
@@ -1291,13 +1316,16 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
       }
     }
   } else if (so->kind == WHIRL_SOL_EQ) {
-    if (strcmp(so->ty, "HB") || !R->prob.autonomous) {
+    double w_want = 0.0;
+    if (R->s->hb_period[0] && hopf_period_omega(R, so, p0, &w_want)) return -2;
+    if ((strcmp(so->ty, "HB") && !R->s->hb_period[0]) || !R->prob.autonomous) {
       run_fail(R, WHIRL_RK_IRS, "IPS = 2 from an equilibrium label needs an "
-               "HB of an autonomous model; label %d is %s", so->label, so->ty);
+               "HB of an autonomous model (or HB_PERIOD, AUTO's TY = 'HBk'); "
+               "label %d is %s", so->label, so->ty);
       return -2;
     }
     double w;
-    if (whirl_colloc_hopf_start(O->colloc, so->x, p0, O->X, O->D, &w)) {
+    if (whirl_colloc_hopf_start_at(O->colloc, so->x, p0, w_want, O->X, O->D, &w)) {
       run_say(R, "no complex eigenvalue pair at label %d: "
                 "not a Hopf point", so->label);
       return -1;
@@ -1457,7 +1485,11 @@ static int switch_or_locus(run_ctx *R, run_objects *O, branch_spec *b) {
   const double *p0 = R->par;
   /* switching and loci from the labelled point */
   const int map_pd = s->ips == WHIRL_IPS_MAP && !strcmp(so->ty, "PD");
-  if (restart && s->isw == -1) {
+  /* orbits from a Hopf point start so whatever ISW = +-1 says (AUTO's
+   * periodic.f90 INIT sets ISW = 1 there: r3b's c.r3b.L1 has ISW = -1) */
+  const int hopf_start = s->ips == WHIRL_IPS_PERIODIC && so->kind == WHIRL_SOL_EQ &&
+                         (!strcmp(so->ty, "HB") || s->hb_period[0]);
+  if (restart && s->isw == -1 && !hopf_start) {
     /* a BP; or a map's PD, a pitchfork of the doubled map (start_equilibria
      * built f^2k), whose branch of period k is the label's own */
     if (!strcmp(so->ty, "BP") || map_pd) {

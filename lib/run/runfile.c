@@ -99,6 +99,7 @@ static const key_def keys[] = {
     {WHIRL_RK_UDOT, "UDOT", "udot", NULL, K_METHOD},
     {WHIRL_RK_THREADS, "THREADS", "threads", NULL, K_INT},
     {WHIRL_RK_NWTN, "NWTN", "newton_full_iterations", NULL, K_INT},
+    {WHIRL_RK_HB_PERIOD, "HB_PERIOD", "hopf_period", NULL, K_STRING},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -661,6 +662,7 @@ static char *string_field(whirl_run_settings *s, whirl_run_key k, size_t *len) {
     case WHIRL_RK_OUT: *len = sizeof s->out; return s->out;
     case WHIRL_RK_S: *len = sizeof s->s; return s->s;
     case WHIRL_RK_DAT: *len = sizeof s->dat; return s->dat;
+    case WHIRL_RK_HB_PERIOD: *len = sizeof s->hb_period; return s->hb_period;
     case WHIRL_RK_PLOT: *len = sizeof s->plot; return s->plot;
     case WHIRL_RK_POINTS: *len = sizeof s->points; return s->points;
     default: *len = 0; return NULL;

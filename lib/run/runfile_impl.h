@@ -13,6 +13,11 @@ typedef struct whirl_run_settings {
   char out[WHIRL_RUN_MAXPATH];  /* "" : default <stem>.out */
   char s[WHIRL_RUN_MAXPATH];    /* restart directory ("" none) */
   char dat[WHIRL_RUN_MAXPATH];  /* IPS 2: the start orbit's data file ("" none) */
+  char hb_period[WHIRL_RUN_MAXNAME]; /* IPS 2 from an equilibrium label: take
+                                   it as a Hopf point whose orbits have the
+                                   period this parameter holds at the label,
+                                   from the pair of eigenvalues nearest
+                                   2 pi i / period (AUTO's TY = 'HBk'); "" none */
   int ndim;                     /* 0: not given */
   int ips;                      /* WHIRL_IPS_* (default 1) */
   int method;                   /* WHIRL_METHOD_* (default colloc) */

@@ -1141,6 +1141,12 @@ int whirl_colloc_set_reference(whirl_colloc *c, const double *X) {
 int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
                             const double *p, double *X, double *D,
                             double *omega) {
+  return whirl_colloc_hopf_start_at(c, x0, p, 0.0, X, D, omega);
+}
+
+int whirl_colloc_hopf_start_at(whirl_colloc *c, const double *x0,
+                               const double *p, double omega_want, double *X,
+                               double *D, double *omega) {
   if (!c) return WHIRL_EINVAL;
   if (!x0 || !p || !X || !D)
     return WHIRL_FAIL(c, WHIRL_EINVAL, "Hopf start: NULL argument");
@@ -1166,9 +1172,12 @@ int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
   }
   rc = whirl_eig_compute(e, J, re, im);
   if (rc != WHIRL_OK) goto done;
+  /* the pair nearest the imaginary axis, or nearest i omega_want */
   double w = 0.0, best = HUGE_VAL;
-  for (size_t k = 0; k < n; ++k)
-    if (im[k] > 0 && fabs(re[k]) < best) best = fabs(re[k]), w = im[k];
+  for (size_t k = 0; k < n; ++k) {
+    const double dist = omega_want > 0 ? hypot(re[k], im[k] - omega_want) : fabs(re[k]);
+    if (im[k] > 0 && dist < best) best = dist, w = im[k];
+  }
   if (!(w > 0)) {
     rc = WHIRL_FAIL(c, WHIRL_EINVAL,
                     "Hopf start: f_x has no complex pair (not a Hopf point)");

@@ -205,6 +205,13 @@ WHIRL_API int whirl_colloc_set_reference(whirl_colloc *c, const double *X);
 WHIRL_API int whirl_colloc_hopf_start(whirl_colloc *c, const double *x0,
                                       const double *p, double *X, double *D,
                                       double *omega);
+/* The same from the pair of f_x(x0) nearest i omega_want (> 0; 0: the
+ * pair nearest the imaginary axis): the orbits of one of several centres
+ * of a conservative system (AUTO's TY = 'HBk' on a restart, demo r3b's
+ * Lyapunov and vertical families from a libration point). */
+WHIRL_API int whirl_colloc_hopf_start_at(whirl_colloc *c, const double *x0,
+                                         const double *p, double omega_want,
+                                         double *X, double *D, double *omega);
 
 /* Rotations (AUTO's NRTN): components that are angles turning by 2 pi k
  * over one period get the periodicity x(1) - x(0) = 2 pi k, k = nint(jump

@@ -62,6 +62,8 @@ typedef enum whirl_run_key {
                            FUNI and ICNI with JAC = 0 (1) */
   WHIRL_RK_UDOT,        /* BVPs' integral conditions' udot: u'(t) (0) or the
                            branch's direction, AUTO's UDOT (1) */
+  WHIRL_RK_HB_PERIOD,   /* IPS 2 from an equilibrium label: a Hopf start with
+                           the period this parameter holds (AUTO's TY = 'HBk') */
   WHIRL_RK_COUNT
 } whirl_run_key;
 
