@@ -189,13 +189,19 @@ static int read_table(run *R, char *msg, size_t len) {
 /* AUTO's labels: the labelled rows numbered on from label_offset.  A run
  * restarted from a label does not label its first point (AUTO-07p's
  * CNRLAE/CNRLBV give it type 0 when IRS is not 0), so whirl's EP there
- * loses its label and type.  The number of labels. */
+ * loses its label and type, unless NPR = 1: AUTO labels every NPR-th
+ * point it counts, the first one included (type 4; r3b's L1 family from
+ * a libration point labels PT 1, and its c.r3b.H1's IRS = 5 is the BP at
+ * PT 5).  The number of labels. */
 static int number_labels(run *R) {
-  int k = 0;
+  int k = 0, npr = 0;
+  if (R->o->ac) whirl_auto_constants_int(R->o->ac, "NPR", &npr);
   for (size_t i = 0; i < R->t.n; i++) {
     row *r = &R->t.r[i];
-    if (R->o->restarted && i == 0 && r->lab > 0 && !strcmp(r->ty, "EP"))
-      r->lab = 0, snprintf(r->ty, sizeof r->ty, "RG");
+    if (R->o->restarted && i == 0 && r->lab > 0 && !strcmp(r->ty, "EP")) {
+      if (npr != 1) r->lab = 0;
+      snprintf(r->ty, sizeof r->ty, "RG");
+    }
     r->alab = r->lab > 0 ? R->o->label_offset + ++k : 0;
   }
   return k;

@@ -7,7 +7,9 @@
 # Lyapunov and vertical families so from a libration point, with the
 # periods its PVLS computes by GETP('EIG')).  ISW = -1 there starts orbits
 # as ISW = 1 (AUTO's periodic INIT).  Until 2026-12-07 whirl refused the
-# start ("needs an HB").  The problem, with closed forms:
+# start ("needs an HB"), and did not label a restart's first point with
+# NPR = 1, which AUTO labels (r3b's c.r3b.H1 restarts at IRS = 5, the
+# BP at PT 5 of AUTO's L1).  The problem, with closed forms:
 #   u1' = u2 + l u1, u2' = -u1 + l u2, u3' = u4 + l u3, u4' = -4 u3 + l u4
 # (l = PAR(1)), the equilibrium u = 0 continued in l through 0, where both
 # pairs l +- i and l +- 2i are centres; PVLS puts 2 pi / |Im| of the first
@@ -66,6 +68,9 @@ DS = 0.1, DSMIN = 1e-5, DSMAX = 0.1, NPAR = 11, THL = {11: 0}
 TY = 'HB$k'
 C
 done
+# NPR = 1: AUTO labels every point it counts, the restart's first one too
+# (type 4); NPR = 0 leaves it unlabelled (type 0)
+sed -i 's/NPR = 0/NPR = 1/' cen3/c.cen3.2
 
 # the b-file's last row, the second run's end (IPS 2 columns: PAR(1),
 # L2-NORM, MAX U(1..4), PERIOD): its values from PAR(1)
@@ -84,6 +89,14 @@ for k in 2 3; do
     ok $? "TY = 'HB2': orbits of period pi in (u3, u4), l = 0, MAX U(1) = 0 (PAR(1) L2 MAX U(1..4) PERIOD: $row)"
   fi
 done
+# the first row of the second run (its PT 1): type and label
+first_row() {
+  awk 'NF > 8 && $1 != 0 { n++ } NF > 8 && $1 != 0 && $2 == 1 && n > 1 { print $3, $4; exit }' "$1"
+}
+r3=$(first_row cen3/cen3.out/b.cen3)
+r2=$(first_row cen2/cen2.out/b.cen2)
+[ "$r3" = "4 4" ] && [ "$r2" = "0 0" ]
+ok $? "the Hopf start's PT 1: labelled RG (type 4, label 4) with NPR = 1 as AUTO labels it, unlabelled with NPR = 0 (TY LAB: '$r3', '$r2')"
 # bad input: one message naming the line, exit 2, no run written
 sed -i "s/^TY = .*/TY = 'HBx'/" cenx/c.cenx.2
 (cd cenx && "$WHIRL" auto . cenx --quiet > ../cenx.log 2>&1)
