@@ -1206,9 +1206,6 @@ static int pd_to_run_mesh(run_ctx *R, run_objects *O, branch_spec *b,
   return 0;
 }
 
-/* Periodic orbits by collocation: from the model's start orbit or a
- * settled forced response, a Hopf point (HB label), or a periodic label
- * (on its mesh, resampled to another, or doubled at a PD). */
 /* HB_PERIOD (AUTO's TY = 'HBk', bvp.f90's RSPTBV: PAR(11) = PAR(k)): the
  * frequency 2 pi / period of the orbits that start at equilibrium label so,
  * the period being that parameter's value there (demo r3b's PVLS puts the
@@ -1234,6 +1231,10 @@ static int hopf_period_omega(run_ctx *R, const whirl_solution *so, const double 
   return 0;
 }
 
+/* Periodic orbits by collocation: from the model's start orbit or a
+ * settled forced response, a Hopf point (an HB label, or an equilibrium
+ * label with HB_PERIOD), or a periodic label
+ * (on its mesh, resampled to another, or doubled at a PD). */
 static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
   const whirl_run_settings *s = R->s;
   const int restart = O->have_sol;
@@ -1315,6 +1316,11 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
         whirl_colloc_from_samples(O->colloc, O->xs, m, T, O->X);
       }
     }
+  } else if (R->s->hb_period[0] && so->kind != WHIRL_SOL_EQ) {
+    run_fail(R, WHIRL_RK_HB_PERIOD, "HB_PERIOD starts orbits at an equilibrium "
+             "label; label %d is %s of %s", so->label, so->ty,
+             so->kind == WHIRL_SOL_COLLOC ? "periodic orbits" : "another kind");
+    return -2;
   } else if (so->kind == WHIRL_SOL_EQ) {
     double w_want = 0.0;
     if (R->s->hb_period[0] && hopf_period_omega(R, so, p0, &w_want)) return -2;

@@ -97,6 +97,19 @@ r3=$(first_row cen3/cen3.out/b.cen3)
 r2=$(first_row cen2/cen2.out/b.cen2)
 [ "$r3" = "4 4" ] && [ "$r2" = "0 0" ]
 ok $? "the Hopf start's PT 1: labelled RG (type 4, label 4) with NPR = 1 as AUTO labels it, unlabelled with NPR = 0 (TY LAB: '$r3', '$r2')"
+# whirl's run file (the one `whirl auto` wrote for c.cen3.2) with a bad
+# HB_PERIOD: one message, exit 2, no output directory
+bad_run() { # $1 the key's new line, $2 the message expected, $3 what
+  sed -e "s/^HB_PERIOD .*/$1/" -e "s/^OUT .*/OUT = 'bad.out'/" cen3/cen3.out/cen3.2.whirl > cen3/cen3.out/bad.whirl
+  [ -n "${4:-}" ] && sed -i "$4" cen3/cen3.out/bad.whirl
+  (cd cen3/cen3.out && "$WHIRL" run bad.whirl --quiet --no-plot > ../../bad.log 2>&1)
+  st=$?
+  [ "$st" -eq 2 ] && grep -q "$2" bad.log && [ ! -e cen3/cen3.out/bad.out ]
+  ok $? "$3: exit 2, '$2', nothing written (exit $st: $(head -c 200 bad.log))"
+}
+bad_run "HB_PERIOD = nosuch" "HB_PERIOD: 'nosuch' is not a parameter" "HB_PERIOD naming no parameter"
+bad_run "HB_PERIOD = PAR(4)" "HB_PERIOD = PAR(4): its value at label 2 is 0, not a period" "HB_PERIOD of a parameter 0 at the label"
+bad_run "HB_PERIOD = PAR(3)" "HB_PERIOD starts orbits at an equilibrium label" "HB_PERIOD at a label of orbits" "s/^S .*/S = 'cen3.2.out'/"
 # bad input: one message naming the line, exit 2, no run written
 sed -i "s/^TY = .*/TY = 'HBx'/" cenx/c.cenx.2
 (cd cenx && "$WHIRL" auto . cenx --quiet > ../cenx.log 2>&1)
