@@ -321,48 +321,103 @@ static size_t icacc_size(const whirl_bvp *b) {
   return ((b->ncol + 1) * b->n + b->nfree) * b->nint;
 }
 
+/* Where fill_interval puts interval i's collocation rows: the sparse
+ * Jacobian's values Jx (each column's rows of a Gauss point contiguous),
+ * or the interval's dense row-major block B of cond_elim.c (rows g n + r,
+ * columns [interior | x_i | x_{i+1} | free | p_k], row length wc), with
+ * p_k's column too when fk is set (those rows of dF/dp_k also into fk). */
+typedef struct fill_target {
+  double *Jx;
+  double *B;
+  size_t wc;
+  int globals;  /* the free columns (0: F_x alone, the monodromy's) */
+  double *fk;   /* dF/dp_k's entries (indexed as F's rows), or NULL */
+  size_t k;
+} fill_target;
+
+/* The first of the n collocation rows of Gauss point g of interval i in
+ * column `slot` (node k's component q is slot k n + q, for k <= NCOL;
+ * free parameter j's column slot (NCOL + 1) n + j; p_k's the next), and
+ * the step between them in *stride. */
+static double *target_rows(const whirl_bvp *b, const fill_target *T, size_t i,
+                           size_t g, size_t slot, size_t *stride) {
+  const size_t n = b->n, m = b->ncol, nn = (m + 1) * n, ni = (m - 1) * n;
+  if (!T->B) {
+    *stride = 1;
+    const size_t R0 = n * (i * m + g);
+    if (slot >= nn) return T->Jx + (size_t)b->Jp[n * b->nnodes + slot - nn] + R0;
+    const size_t col = n * (i * m) + slot;
+    /* the column's collocation rows start at row Ji[Jp[col]] */
+    return T->Jx + (size_t)b->Jp[col] + R0 - (size_t)b->Ji[b->Jp[col]];
+  }
+  *stride = T->wc;
+  const size_t k = slot / n, q = slot % n;
+  const size_t pos = slot >= nn ? ni + 2 * n + (slot - nn)
+                     : k == 0   ? ni + q
+                     : k == m   ? ni + n + q
+                                : (k - 1) * n + q;
+  return T->B + g * n * T->wc + pos;
+}
+
+/* −h df/dp_k at the current Gauss point into T's p_k column and T->fk
+ * (central differences, or the model's jac_p: bvp_Fp's numbers). */
+static int fill_fk(const whirl_bvp *b, bvp_scratch *s, const fill_target *T, size_t i,
+                   size_t g, double t, double h) {
+  const size_t n = b->n;
+  double *v = T->fk + n * (i * b->ncol + g);
+  const int rc = model_fp(b, s, t, b->pt, T->k, v);
+  if (rc != 0) return rc;
+  size_t st;
+  double *e = target_rows(b, T, i, g, (b->ncol + 1) * n + b->nfree, &st);
+  for (size_t r = 0; r < n; ++r) {
+    v[r] *= -h;
+    if (!isfinite(v[r])) return WHIRL_EBADFUNC;
+    e[r * st] = v[r];
+  }
+  return 0;
+}
+
 /* Interval i's part of the Jacobian: its collocation rows of the node
  * columns (analytic) and of the free columns (df/dp), in place (no other
  * interval has them), and the integral rows' terms of its Gauss points
  * (∂g/∂u by central differences, times the quadrature weight and the
- * basis; h w ∂g/∂p) into its slice of b->icacc, which fill_collocation
- * adds up.  0, or the status of the callback *what names. */
-static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X, double *Jx,
-                         size_t i, const char **what) {
+ * basis; h w ∂g/∂p) into its slice of b->icacc, which the caller adds up;
+ * with T->fk, dF/dp_k's rows and its integral terms (b->icterm) too.  0,
+ * or the status of the callback *what names. */
+static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X,
+                         const fill_target *T, size_t i, const char **what) {
   const size_t n = b->n, m = b->ncol, nint = b->nint;
-  const size_t colF = n * b->nnodes, na = icacc_size(b);
+  const size_t na = icacc_size(b), nfree = T->globals ? b->nfree : 0;
   const double h = b->mesh[i + 1] - b->mesh[i];
+  double *tmp = s->uq; /* a column's n rows, before their stride */
+  size_t st;
   int rc;
   for (size_t g = 0; g < m; ++g) {
     const double t = b->mesh[i] + h * b->gs[g];
-    const size_t R0 = n * (i * m + g);
     gauss_state(b, s, X, i, g);
     *what = "the model's Jacobian";
     if ((rc = model_fx(b, s, t, b->pt)) != 0) return rc;
     const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
-    for (size_t k = 0; k <= m; ++k) {
-      const size_t node = i * m + k;
+    for (size_t k = 0; k <= m; ++k)
       for (size_t q = 0; q < n; ++q) {
-        const size_t col = n * node + q;
-        /* the column's collocation rows start at row Ji[Jp[col]] */
-        double *v = Jx + (size_t)b->Jp[col] + R0 - (size_t)b->Ji[b->Jp[col]];
+        double *v = target_rows(b, T, i, g, k * n + q, &st);
         const double *Jq = s->J + n * q;
-        for (size_t r = 0; r < n; ++r) v[r] = -h * lv[k] * Jq[r];
-        v[q] += dv[k];
+        for (size_t r = 0; r < n; ++r) v[r * st] = -h * lv[k] * Jq[r];
+        v[q * st] += dv[k];
       }
-    }
     *what = "the model's parameter derivative";
     /* AUTO's forward differences share f at the point (s->fm) */
-    const int fwd = b->auto_differences && b->nfree > 0;
+    const int fwd = b->auto_differences && nfree > 0;
     if (fwd && !b->prob->jac_p && (rc = b->prob->rhs(t, s->u, b->pt, s->fm, b->prob->data)) != 0)
       return rc;
-    for (size_t j = 0; j < b->nfree; ++j) {
-      double *v = Jx + (size_t)b->Jp[colF + j] + R0;
-      rc = fwd ? model_fp_forward(b, s, t, b->pt, b->free[j], s->fm, v)
-               : model_fp(b, s, t, b->pt, b->free[j], v);
+    for (size_t j = 0; j < nfree; ++j) {
+      rc = fwd ? model_fp_forward(b, s, t, b->pt, b->free[j], s->fm, tmp)
+               : model_fp(b, s, t, b->pt, b->free[j], tmp);
       if (rc != 0) return rc;
-      for (size_t r = 0; r < n; ++r) v[r] *= -h;
+      double *v = target_rows(b, T, i, g, (m + 1) * n + j, &st);
+      for (size_t r = 0; r < n; ++r) v[r * st] = tmp[r] * -h;
     }
+    if (T->fk && (rc = fill_fk(b, s, T, i, g, t, h)) != 0) return rc;
     if (!nint) continue;
     gauss_reference(b, s, i, g);
     *what = "integral conditions";
@@ -381,24 +436,55 @@ static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X, do
     acc += (m + 1) * n * nint;
     if (fwd && (rc = b->ic(s->u, s->uo, s->ud, s->upo, b->pt, s->gim, b->data)) != 0)
       return rc;
-    for (size_t j = 0; j < b->nfree; ++j) {
+    for (size_t j = 0; j < nfree; ++j) {
       rc = fwd ? ic_dp_forward(b, s, b->pt, b->free[j], s->gim)
                : ic_dp_at(b, s, b->pt, b->free[j]);
       if (rc != 0) return rc;
       for (size_t c = 0; c < nint; ++c) acc[j * nint + c] = h * b->gw[g] * s->gi[c];
     }
+    if (!T->fk) continue;
+    /* dF/dp_k's integral terms, as fp_interval's */
+    if ((rc = ic_dp_at(b, s, b->pt, T->k)) != 0) return rc;
+    double *tk = b->icterm + nint * (i * m + g);
+    for (size_t c = 0; c < nint; ++c) tk[c] = h * b->gw[g] * s->gi[c];
   }
   return 0;
 }
 
-/* The collocation rows of every column and the integral rows' node and
- * free entries: the intervals in parallel (fill_interval), then the
- * integral terms summed into the entries in interval and Gauss-point
- * order, so the Jacobian is the same bytes on any number of threads.  The
- * first failure in interval order is the one reported. */
-static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
+/* The integral rows' terms of every Gauss point (b->icacc) added into
+ * their entries in interval and Gauss-point order, so the Jacobian is the
+ * same bytes on any number of threads: into the sparse values Jx, or (Jx
+ * NULL) into the dense rows ic (row c at ic + c ldic, F_x's columns; the
+ * free columns when globals). */
+static void sum_integral_entries(const whirl_bvp *b, double *Jx, double *ic,
+                                 size_t ldic, int globals) {
   const size_t n = b->n, m = b->ncol, N = b->ntst, nint = b->nint;
   const size_t colF = n * b->nnodes, na = icacc_size(b);
+  const size_t st = Jx ? 1 : ldic;
+  for (size_t i = 0; nint && i < N; ++i)
+    for (size_t g = 0; g < m; ++g) {
+      const double *acc = b->icacc + na * (i * m + g);
+      for (size_t k = 0; k <= m; ++k)
+        for (size_t q = 0; q < n; ++q) {
+          const size_t col = n * (i * m + k) + q;
+          double *v = Jx ? ic_entries(b, Jx, col) : ic + col;
+          for (size_t c = 0; c < nint; ++c) v[c * st] += acc[(k * n + q) * nint + c];
+        }
+      acc += (m + 1) * n * nint;
+      for (size_t j = 0; globals && j < b->nfree; ++j) {
+        double *v = Jx ? ic_entries(b, Jx, colF + j) : ic + colF + j;
+        for (size_t c = 0; c < nint; ++c) v[c * st] += acc[j * nint + c];
+      }
+    }
+}
+
+/* The collocation rows of every column and the integral rows' node and
+ * free entries: the intervals in parallel (fill_interval), then the
+ * integral terms summed into the entries (sum_integral_entries).  The
+ * first failure in interval order is the one reported. */
+static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
+  const size_t N = b->ntst;
+  const fill_target T = {Jx, NULL, 0, 1, NULL, 0};
   const int nth = bvp_threads(b) > 1 ? whirl_gov_begin(&b->gov) : 1;
   size_t bad = N;
   int bad_rc = 0;
@@ -406,7 +492,7 @@ static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
 #pragma omp parallel for num_threads(nth) schedule(dynamic, 4) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
     const char *what = NULL;
-    const int rc = fill_interval(b, &b->scr[whirl_thread_num()], X, Jx, i, &what);
+    const int rc = fill_interval(b, &b->scr[whirl_thread_num()], X, &T, i, &what);
     if (rc != 0) {
 #pragma omp critical(whirl_bvp_fill)
       if (i < bad) bad = i, bad_rc = rc, bad_what = what;
@@ -414,26 +500,34 @@ static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
   }
   if (bvp_threads(b) > 1) whirl_gov_end(&b->gov);
   if (bad < N) return user_status(b, bad_rc, bad_what);
-  for (size_t i = 0; nint && i < N; ++i)
-    for (size_t g = 0; g < m; ++g) {
-      const double *acc = b->icacc + na * (i * m + g);
-      for (size_t k = 0; k <= m; ++k)
-        for (size_t q = 0; q < n; ++q) {
-          double *v = ic_entries(b, Jx, n * (i * m + k) + q);
-          for (size_t c = 0; c < nint; ++c) v[c] += acc[(k * n + q) * nint + c];
-        }
-      acc += (m + 1) * n * nint;
-      for (size_t j = 0; j < b->nfree; ++j) {
-        double *v = ic_entries(b, Jx, colF + j);
-        for (size_t c = 0; c < nint; ++c) v[c] += acc[j * nint + c];
-      }
-    }
+  sum_integral_entries(b, Jx, NULL, 0, 1);
   return 0;
 }
 
+/* ------------------------------------------------------------ blocks */
+
+int bvp_fill_block(whirl_bvp *b, int thread, const double *X, size_t i, double *B,
+                   size_t wc, int globals, double *fk, size_t k, const char **what) {
+  const fill_target T = {NULL, B, wc, globals, fk, k};
+  *what = NULL;
+  memset(B, 0, b->n * b->ncol * wc * sizeof *B);
+  return fill_interval(b, &b->scr[thread], X, &T, i, what);
+}
+
+void bvp_block_sums(whirl_bvp *b, double *ic, size_t ldic, int globals, double *fk_ic) {
+  sum_integral_entries(b, NULL, ic, ldic, globals);
+  if (fk_ic) sum_integral_terms(b, fk_ic);
+}
+
+int bvp_block_status(whirl_bvp *b, int rc, const char *what) {
+  return what ? user_status(b, rc, what) : rc;
+}
+
 /* The boundary rows' entries in the columns of u(0) and u(1), by central
- * differences of bc. */
-static int fill_boundary(whirl_bvp *b, const double *X, double *Jx) {
+ * differences of bc: into the sparse values Jx, or (Jx NULL) into the
+ * dense rows bcr (row s at bcr + s nf, u(0)'s columns first, then u(1)'s). */
+static int fill_boundary(whirl_bvp *b, const double *X, double *Jx, double *bcr,
+                         size_t nf) {
   const size_t n = b->n, nbc = b->nbc, last = b->nnodes - 1;
   double *w0 = b->scr[0].work, *w1 = b->scr[0].work + n; /* copies of u(0), u(1) */
   memcpy(w0, X, n * sizeof *w0);
@@ -452,8 +546,9 @@ static int fill_boundary(whirl_bvp *b, const double *X, double *Jx) {
       if ((rc = b->bc(w0, w1, b->pt, b->fbm, b->data)) != 0)
         return user_status(b, rc, "boundary conditions");
       w[q] = v0;
-      double *v = bc_entries(b, Jx, n * (end ? last : 0) + q);
+      double *v = Jx ? bc_entries(b, Jx, n * (end ? last : 0) + q) : b->cp;
       for (size_t s = 0; s < nbc; ++s) v[s] = (b->fb[s] - b->fbm[s]) / (up - dn);
+      for (size_t s = 0; !Jx && s < nbc; ++s) bcr[s * nf + (end ? n : 0) + q] = v[s];
     }
   }
   return 0;
@@ -488,9 +583,26 @@ int bvp_Fx_sparse(const double *X, const double *p, double *Jx, void *data) {
   for (size_t col = 0; col < b->nx; ++col)
     memset(ic_entries(b, Jx, col), 0, b->nint * sizeof *Jx);
   if ((rc = fill_collocation(b, X, Jx)) != 0) return rc;
-  if (b->nbc && (rc = fill_boundary(b, X, Jx)) != 0) return rc;
+  if (b->nbc && (rc = fill_boundary(b, X, Jx, NULL, 0)) != 0) return rc;
   for (size_t j = 0; j < b->nfree && b->nbc; ++j)
     if ((rc = bc_dp(b, X, b->free[j], bc_entries(b, Jx, colF + j))) != 0) return rc;
+  return 0;
+}
+
+int bvp_fill_bc_rows(whirl_bvp *b, const double *X, double *bcr, size_t nf, int globals,
+                     double *fk_bc, size_t k) {
+  const size_t n = b->n, nbc = b->nbc;
+  int rc;
+  if (!nbc) return 0;
+  if ((rc = fill_boundary(b, X, NULL, bcr, nf)) != 0) return rc;
+  for (size_t j = 0; globals && j < b->nfree; ++j) {
+    if ((rc = bc_dp(b, X, b->free[j], b->cp)) != 0) return rc;
+    for (size_t s = 0; s < nbc; ++s) bcr[s * nf + 2 * n + j] = b->cp[s];
+  }
+  if (!fk_bc) return 0;
+  if ((rc = bc_dp(b, X, k, fk_bc)) != 0) return rc;
+  for (size_t s = 0; s < nbc; ++s)
+    if (!isfinite(fk_bc[s])) return WHIRL_EBADFUNC;
   return 0;
 }
 

@@ -7,13 +7,16 @@
  * NFREE = NBC + NINT − n makes the final system square, as AUTO's
  * NFPR = NBC + NINT − NDIM + 1 with the continuation parameter.
  *
- * The entries come from the system's own sparse Jacobian (bvp.c): the
- * boundary rows and dense integral rows before the intervals, each
- * interval's block in the loop that condenses it (cond_elim.c's
- * fill_one, on the intervals' threads), and dF/dp_k from its Fp: the same
- * numbers the sparse LU factors, so the two solvers agree to rounding
- * (t_bvp checks solutions and determinants).
+ * The entries are made where they go (bvp.c's bvp_fill_block, the same
+ * code and numbers as the sparse Jacobian and Fp that the sparse LU
+ * factors, so the two solvers agree to rounding; t_bvp checks solutions
+ * and determinants): the boundary rows before the intervals, each
+ * interval's block and dF/dp_k's rows in the loop that condenses it
+ * (cond_elim.c's fill_one, on the intervals' threads: one parallel loop
+ * for the Jacobian and its condensation), the integral rows summed over
+ * the intervals after it (fill_end).
  * SPDX-License-Identifier: BSD-3-Clause */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -23,95 +26,80 @@
 #include "cond_elim.h"
 
 /* A workspace's own rows (the integral and boundary rows of the point it
- * factored: two workspaces of one BVP may be factored at two points). */
+ * factored: two workspaces of one BVP may be factored at two points), and
+ * what its last fill does. */
 typedef struct bvp_rows {
   whirl_bvp *b;
   size_t nf;    /* 2n + nfree + 1: [x_0 | x_N | free | p_k] */
   double *ic;   /* nint x (nx + 1): the integral rows over M's columns */
   double *bcr;  /* nbc x nf: the boundary rows */
+  const char **what; /* NTST: the callback a failed interval's fill names */
+  int mode;     /* the fill's COND_FILL_* */
+  int fk_here;  /* dF/dp_k made by the fill (COND_FILL_FULL, p_k not free) */
+  size_t k;
 } bvp_rows;
 
-/* The boundary and integral rows' entries of the Jacobian (the last
- * entries of each column, its rows sorted) into R->bcr and R->ic. */
-static void scatter_conditions(bvp_rows *R, int mono) {
-  const whirl_bvp *b = R->b;
-  const size_t n = b->n, nn = n * b->nnodes, nx = b->nx, last = b->nnodes - 1,
-               ncoll = b->ncoll;
-  for (size_t col = 0; col < nx; ++col) {
-    if (mono && col >= nn) break; /* F_x alone: the globals' columns 0 */
-    const size_t node = col / n, q = col % n;
-    const size_t bpos = col >= nn ? 2 * n + (col - nn)
-                        : node == 0 ? q : node == last ? n + q : R->nf;
-    for (int e = b->Jp[col + 1]; e-- > b->Jp[col];) {
-      const size_t row = (size_t)b->Ji[e];
-      if (row < ncoll) break;
-      const double v = b->Jx[e];
-      if (row < ncoll + b->nbc) {
-        if (bpos < R->nf) R->bcr[(row - ncoll) * R->nf + bpos] = v;
-      } else {
-        R->ic[(row - ncoll - b->nbc) * (nx + 1) + col] = v;
-      }
-    }
-  }
-}
-
-/* Before the intervals: the sparse Jacobian and dF/dp_k at (X, p) (each
- * by its own parallel loop), and the boundary and integral rows. */
+/* Before the intervals: the parameters, the boundary rows and dF/dp_k's
+ * (bvp.c's bvp_fill_bc_rows); the intervals fill their own blocks. */
 static int bvp_fill_begin(cond_ws *w, const double *X, const double *p, size_t k,
                           int mode) {
-  const int mono = mode == COND_FILL_MONO;
   bvp_rows *R = cond_sys(w);
   whirl_bvp *b = R->b;
-  const size_t nx = b->nx, pk = 2 * b->n + b->nfree;
-  int rc = bvp_Fx_sparse(X, p, b->Jx, b);
-  if (rc != 0) return rc;
+  const size_t nx = b->nx, pk = 2 * b->n + b->nfree, fb = b->ncoll;
   double *fk = cond_fk(w);
-  if (mode == COND_FILL_FULL &&
-      (rc = whirl_system_param(&b->sys, X, p, k, fk, cond_work(w))) != 0)
-    return rc;
+  R->mode = mode;
+  R->k = k;
+  R->fk_here = mode == COND_FILL_FULL;
+  for (size_t j = 0; j < b->nfree; ++j)
+    if (b->free[j] == k) R->fk_here = 0; /* its column is 0 (bvp_Fp) */
+  whirl_bvp_params(b, X, p, b->pt);
+  if (mode == COND_FILL_FULL) memset(fk, 0, nx * sizeof *fk);
   memset(R->ic, 0, b->nint * (nx + 1) * sizeof *R->ic);
   memset(R->bcr, 0, b->nbc * R->nf * sizeof *R->bcr);
-  scatter_conditions(R, mono);
-  if (mono) return 0;
-  for (size_t e = 0; e < b->nbc; ++e) R->bcr[e * R->nf + pk] = fk[b->ncoll + e];
+  int rc = bvp_fill_bc_rows(b, X, R->bcr, R->nf, mode != COND_FILL_MONO,
+                            R->fk_here ? fk + fb : NULL, k);
+  if (rc != 0) return rc; /* with its message (bvp.c) */
+  if (mode == COND_FILL_MONO) return 0;
+  for (size_t e = 0; e < b->nbc; ++e) R->bcr[e * R->nf + pk] = fk[fb + e];
   for (size_t t = 0; t < b->nint; ++t)
-    R->ic[t * (nx + 1) + nx] = fk[b->ncoll + b->nbc + t];
+    R->ic[t * (nx + 1) + nx] = fk[fb + b->nbc + t];
   return 0;
 }
 
-/* Interval i's block from the sparse Jacobian (cond_elim.c's parallel loop
- * over the intervals): the collocation rows of its m + 1 nodes' columns
- * (each column's rows sorted: those of interval i follow one another),
- * of the free parameters' dense columns, and dF/dp_k. */
+/* Interval i's block, on thread t (cond_elim.c's parallel loop): its
+ * collocation rows made there (bvp.c), dF/dp_k's column given
+ * (COND_FILL_GIVEN) copied in. */
 static int bvp_fill_one(cond_ws *w, const double *X, const double *p, size_t k,
                         int mode, size_t i, int thread) {
-  (void)X, (void)p, (void)k, (void)thread;
-  const int mono = mode == COND_FILL_MONO;
-  const bvp_rows *R = cond_sys(w);
-  const whirl_bvp *b = R->b;
-  const size_t n = b->n, m = b->ncol, nm = n * m, nn = n * b->nnodes, nx = b->nx,
-               ni = n * (m - 1), wc = cond_block_ld(w), r0 = i * nm;
+  (void)p, (void)k;
+  bvp_rows *R = cond_sys(w);
+  whirl_bvp *b = R->b;
+  const size_t n = b->n, m = b->ncol, nm = n * m, ni = n * (m - 1), wc = cond_block_ld(w),
+               r0 = i * nm;
   double *B = cond_block(w, i);
-  memset(B, 0, nm * wc * sizeof *B);
-  for (size_t col = n * (i * m); col < n * (i * m + m + 1); ++col) {
-    const size_t kk = col / n - i * m, q = col % n;
-    const size_t pos = kk == 0 ? ni + q : kk == m ? ni + n + q : (kk - 1) * n + q;
-    for (int e = b->Jp[col]; e < b->Jp[col + 1]; ++e) {
-      const size_t row = (size_t)b->Ji[e];
-      if (row < r0) continue;
-      if (row >= r0 + nm) break;
-      B[(row - r0) * wc + pos] = b->Jx[e];
-    }
-  }
-  if (mono) return 0;
-  for (size_t col = nn; col < nx; ++col) { /* dense: entry Jp[col] + row */
-    const double *v = b->Jx + b->Jp[col] + r0;
-    const size_t pos = ni + 2 * n + (col - nn);
-    for (size_t rr = 0; rr < nm; ++rr) B[rr * wc + pos] = v[rr];
-  }
+  const int rc = bvp_fill_block(b, thread, X, i, B, wc, mode != COND_FILL_MONO,
+                                R->fk_here ? cond_fk(w) : NULL, R->k, &R->what[i]);
+  if (rc != 0 || mode != COND_FILL_GIVEN) return rc;
   const double *fk = cond_fk(w) + r0;
   const size_t pk = ni + 2 * n + b->nfree;
   for (size_t rr = 0; rr < nm; ++rr) B[rr * wc + pk] = fk[rr];
+  return 0;
+}
+
+/* After the intervals: the first failure's message, or the integral rows'
+ * sums over the intervals (and dF/dp_k's). */
+static int bvp_fill_end(cond_ws *w, size_t bad, int status) {
+  bvp_rows *R = cond_sys(w);
+  whirl_bvp *b = R->b;
+  const size_t nx = b->nx, fi = b->ncoll + b->nbc;
+  if (bad < b->ntst) return bvp_block_status(b, status, R->what[bad]);
+  double *fk = cond_fk(w);
+  bvp_block_sums(b, R->ic, nx + 1, R->mode != COND_FILL_MONO, R->fk_here ? fk + fi : NULL);
+  if (!R->fk_here) return 0;
+  for (size_t t = 0; t < b->nint; ++t) {
+    if (!isfinite(fk[fi + t])) return WHIRL_EBADFUNC;
+    R->ic[t * (nx + 1) + nx] = fk[fi + t];
+  }
   return 0;
 }
 
@@ -132,7 +120,8 @@ static void bvp_end_row(cond_ws *w, size_t e, double *a) {
   memcpy(a, R->bcr + e * R->nf, R->nf * sizeof *a);
 }
 
-static const cond_ops bvp_ops = {NULL, bvp_border, bvp_end_row, bvp_fill_begin, bvp_fill_one};
+static const cond_ops bvp_ops = {NULL,           bvp_border,   bvp_end_row,
+                                 bvp_fill_begin, bvp_fill_one, bvp_fill_end};
 
 static void bs_free(void *ws) {
   if (!ws) return;
@@ -140,6 +129,7 @@ static void bs_free(void *ws) {
   cond_free(ws);
   free(R->ic);
   free(R->bcr);
+  free(R->what);
   free(R);
 }
 
@@ -155,6 +145,7 @@ static void *bs_alloc(void *data) {
     R->nf = 2 * b->n + ng;
     R->ic = malloc((b->nint * (b->nx + 1) + 1) * sizeof *R->ic);
     R->bcr = malloc((b->nbc * R->nf + 1) * sizeof *R->bcr);
+    R->what = calloc(b->ntst, sizeof *R->what);
     for (size_t e = 0; e < b->nfree; ++e) gcol[e] = b->n * b->nnodes + e;
     gcol[b->nfree] = b->nx;
     for (size_t t = 0; t < b->nint; ++t) blab[t] = (int)(b->ncoll + b->nbc + t);
@@ -163,13 +154,14 @@ static void *bs_alloc(void *data) {
      * parallel loop; the same bytes on any number) */
     const cond_shape s = {b->n,   b->ncol, b->ntst, b->nx,         ng,
                           nb,     b->npar, gcol,    blab, bvp_threads(b)};
-    if (R->ic && R->bcr) w = cond_alloc(&s, &bvp_ops, R);
+    if (R->ic && R->bcr && R->what) w = cond_alloc(&s, &bvp_ops, R);
   }
   free(gcol);
   free(blab);
   if (!w && R) {
     free(R->ic);
     free(R->bcr);
+    free(R->what);
     free(R);
   }
   return w;

@@ -84,6 +84,29 @@ int bvp_threads(const whirl_bvp *b);
  * (X, p): the system's Fx_sparse. */
 int bvp_Fx_sparse(const double *X, const double *p, double *Jx, void *data);
 
+/* bvp.c, for bvp_cond.c: the Jacobian straight into the condensation's
+ * dense blocks (after whirl_bvp_params into b->pt).
+ * bvp_fill_block: interval i's collocation rows into its block B (n NCOL
+ * rows of wc: [interior | x_i | x_{i+1} | free | p_k], zeroed first) on
+ * thread's scratch; the free columns when globals; with fk, dF/dp_k's
+ * rows too (central differences, as the system's Fp), into B's last
+ * column and fk (indexed as F's rows); the integral rows' terms into
+ * b->icacc (and p_k's into b->icterm).  0, or a status and in *what the
+ * callback that failed (NULL: dF/dp_k not finite).
+ * bvp_block_sums: after every interval, their integral terms added up, in
+ * interval order, into the dense rows ic (row c at ic + c ldic, F's
+ * columns), and p_k's into fk_ic[nint] when not NULL.
+ * bvp_block_status: a failed bvp_fill_block's status with its message.
+ * bvp_fill_bc_rows: the boundary rows into bcr (row s at bcr + s nf:
+ * [u(0) | u(1) | free]), the free columns when globals; with fk_bc,
+ * d(boundary rows)/dp_k into fk_bc[nbc] (WHIRL_EBADFUNC if not finite). */
+int bvp_fill_block(whirl_bvp *b, int thread, const double *X, size_t i, double *B,
+                   size_t wc, int globals, double *fk, size_t k, const char **what);
+void bvp_block_sums(whirl_bvp *b, double *ic, size_t ldic, int globals, double *fk_ic);
+int bvp_block_status(whirl_bvp *b, int rc, const char *what);
+int bvp_fill_bc_rows(whirl_bvp *b, const double *X, double *bcr, size_t nf, int globals,
+                     double *fk_bc, size_t k);
+
 /* bvp_cond.c: the structured bordered solver (NTST >= 2). */
 extern const whirl_bsolver bvp_bsolver;
 

@@ -114,8 +114,8 @@ static void colloc_end_row(cond_ws *w, size_t e, double *a) {
   a[2 * n + ng - 1] = cond_fk(w)[n * c->ntst * c->ncol + e];
 }
 
-static const cond_ops colloc_ops = {NULL, colloc_border, colloc_end_row,
-                                    colloc_fill_begin, colloc_fill_one};
+static const cond_ops colloc_ops = {NULL,           colloc_border,   colloc_end_row,
+                                    colloc_fill_begin, colloc_fill_one, NULL};
 
 static void *bs_alloc(void *data) {
   whirl_colloc *c = data;

@@ -421,8 +421,14 @@ static int condense_intervals(cond_ws *w, const double *X, const double *p,
     w->irc[i] = w->frc[i] ? 0 : condense_interval(w, i, w->lab + w->nlab * (size_t)t);
   }
   whirl_gov_end(&w->gov);
-  for (size_t i = 0; i < N; ++i)
-    if (w->frc[i]) return w->frc[i];
+  size_t bad = 0;
+  while (bad < N && !w->frc[bad]) ++bad;
+  if (ops->fill_end) {
+    const int rc = ops->fill_end(w, bad, bad < N ? w->frc[bad] : 0);
+    if (rc != 0) return rc;
+  } else if (bad < N) {
+    return w->frc[bad];
+  }
   for (size_t i = 0; i < N; ++i) {
     if (w->irc[i] == 2) return WHIRL_EBADFUNC;
     if (w->irc[i] == 1) return singular(w);

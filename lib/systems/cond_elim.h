@@ -65,6 +65,12 @@ typedef struct cond_ops {
                     int mode);
   int (*fill_one)(cond_ws *w, const double *X, const double *p, size_t k,
                   int mode, size_t i, int thread);
+  /* Optional, with fill_one: after the loop over the intervals, on one
+   * thread: bad = NTST and status 0 when every fill_one succeeded (the
+   * system's sums over the intervals, in interval order), else the first
+   * interval whose fill_one failed and its status (the system's message).
+   * Returns 0 or the status to report. */
+  int (*fill_end)(cond_ws *w, size_t bad, int status);
 } cond_ops;
 
 typedef struct cond_shape {

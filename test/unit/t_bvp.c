@@ -876,6 +876,7 @@ static void test_bsolver(void) {
   o.bc = bratu_bc;
   const double pb[1] = {2.0};
   bsolver_case("Bratu NTST 9 NCOL 4, k = lambda", &bratu, &o, pb, 0);
+  bsolver_case("Bratu by differences NTST 9 NCOL 4, k = lambda", &bratu_fd, &o, pb, 0);
   o.ntst = 1;
   char err[256];
   whirl_bvp *b1 = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
@@ -895,6 +896,10 @@ static void test_bsolver(void) {
   o.free = fa;
   const double pe[2] = {0.0 /* a from X */, 2.5};
   bsolver_case("expo NTST 6 NCOL 3 (NINT 1, a free), k = c", &expo, &o, pe, 1);
+  /* differences (dF/dp_k's rows made in the intervals' loop, its integral
+   * row summed after it) and p_k a free parameter (its column 0) */
+  bsolver_case("expo by differences (NINT 1, a free), k = c", &expo_fd, &o, pe, 1);
+  bsolver_case("expo by differences (NINT 1, a free), k = a (free)", &expo_fd, &o, pe, 0);
 
   const size_t fq[1] = {1};
   whirl_bvp_options_default(&o);
@@ -1250,11 +1255,89 @@ static void test_auto_differences(void) {
      e_c, e_u);
 }
 
+/* ------------------------------------------------------------------------
+ * 3c. Failures inside the structured factorisation (bvp_cond.c fills each
+ * interval's block in the loop that condenses it, on three threads here):
+ * a fatal status of the model's rhs in the Jacobian is reported for the
+ * first interval in order (-6: the rhs returns -floor(10 t) past t = 0.6),
+ * with the message the sparse Jacobian gives; a dF/dp_k that is not
+ * finite (sqrt(p1 - 2) at p1 = 2: NaN at p1 - h) is WHIRL_EBADFUNC,
+ * recoverable, as the system's F_p says. */
+static int fail_rhs(double t, const double *u, const double *p, double *f, void *data) {
+  (void)data;
+  if (t > 0.6) return -(int)(10.0 * t); /* fatal: -6 first, then -7 ... */
+  f[0] = u[1];
+  f[1] = -p[0] * exp(u[0]) + u[0] * sqrt(p[1] - 2.0);
+  return 0;
+}
+static const whirl_problem fail_model = {
+    .name = "fail", .n = 2, .npar = 2, .rhs = fail_rhs, .autonomous = 0};
+static int nan_rhs(double t, const double *u, const double *p, double *f, void *data) {
+  (void)t, (void)data;
+  f[0] = u[1];
+  f[1] = -p[0] * exp(u[0]) + u[0] * sqrt(p[1] - 2.0);
+  return 0;
+}
+static const whirl_problem nan_model = {
+    .name = "nanp", .n = 2, .npar = 2, .rhs = nan_rhs, .autonomous = 1};
+
+static void test_structured_failures(void) {
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = 100;
+  o.ncol = 3;
+  o.nbc = 2;
+  o.bc = bratu_bc;
+  o.threads = 3;
+  const double p[2] = {1.0, 2.0};
+  for (int pass = 0; pass < 2; ++pass) {
+    char err[256];
+    whirl_bvp *b = whirl_bvp_alloc(pass ? &nan_model : &fail_model, &o, err, sizeof err);
+    ok(b != NULL, "failure model %d: alloc: %s", pass, b ? "" : err);
+    if (!b) continue;
+    const whirl_system *s = whirl_bvp_system(b);
+    const size_t nx = whirl_bvp_size(b);
+    double *X = calloc(nx, sizeof *X), *r = calloc(nx + 1, sizeof *r);
+    double *Jx = malloc(s->nnz * sizeof *Jx), *fk = malloc(nx * sizeof *fk);
+    double *wk = malloc((nx + 16) * sizeof *wk);
+    void *ws = s->bsolver ? s->bsolver->alloc(s->data) : NULL;
+    ok(ws && X && r && Jx && fk && wk, "failure model %d: structured solver", pass);
+    if (ws && X && r && Jx && fk && wk) {
+      r[nx] = 1.0;
+      if (!pass) {
+        int rs = s->Fx_sparse(X, p, Jx, s->data);
+        char sparse_msg[512];
+        snprintf(sparse_msg, sizeof sparse_msg, "%s", whirl_bvp_errmsg(b));
+        int rc = s->bsolver->factor(ws, X, p, 0, r);
+        printf("# sparse: %d '%s'; structured: %d '%s'\n", rs, sparse_msg, rc,
+               whirl_bvp_errmsg(b));
+        ok(rc == -6 && rs == -6 &&
+               strstr(whirl_bvp_errmsg(b), "the model's Jacobian returned -6 (fatal)") &&
+               strcmp(sparse_msg, whirl_bvp_errmsg(b)) == 0,
+           "a fatal rhs in the structured Jacobian: the first interval's status (-6), the "
+           "sparse Jacobian's message '%s'", whirl_bvp_errmsg(b));
+      } else {
+        int rp = whirl_system_param(s, X, p, 1, fk, wk);
+        int rc = s->bsolver->factor(ws, X, p, 1, r);
+        ok(rc == WHIRL_EBADFUNC && rp == WHIRL_EBADFUNC,
+           "dF/dp_k not finite: the structured factor %d, F_p %d (WHIRL_EBADFUNC %d)", rc,
+           rp, WHIRL_EBADFUNC);
+        rc = s->bsolver->factor(ws, X, p, 0, r);
+        ok(rc == 0, "the same model, k = 0 (finite): factored (%d)", rc);
+      }
+    }
+    if (ws) s->bsolver->free(ws);
+    free(X), free(r), free(Jx), free(fk), free(wk);
+    whirl_bvp_free(b);
+  }
+}
+
 int main(void) {
   test_bratu(WHIRL_LINSOL_DENSE, 0);
   test_bratu(WHIRL_LINSOL_SPARSE, 0);
   test_bratu(WHIRL_LINSOL_DENSE, 1);
   test_bsolver();
+  test_structured_failures();
   test_bratu_newton();
   test_bratu_adapt();
   test_jacobians();
