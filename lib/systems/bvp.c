@@ -336,27 +336,32 @@ typedef struct fill_target {
 } fill_target;
 
 /* The first of the n collocation rows of Gauss point g of interval i in
- * column `slot` (node k's component q is slot k n + q, for k <= NCOL;
- * free parameter j's column slot (NCOL + 1) n + j; p_k's the next), and
- * the step between them in *stride. */
-static double *target_rows(const whirl_bvp *b, const fill_target *T, size_t i,
-                           size_t g, size_t slot, size_t *stride) {
-  const size_t n = b->n, m = b->ncol, nn = (m + 1) * n, ni = (m - 1) * n;
+ * the column of node k's component q (k <= NCOL), and the step between
+ * them in *stride. */
+static double *target_node_rows(const whirl_bvp *b, const fill_target *T, size_t i,
+                                size_t g, size_t k, size_t q, size_t *stride) {
+  const size_t n = b->n, m = b->ncol;
   if (!T->B) {
     *stride = 1;
-    const size_t R0 = n * (i * m + g);
-    if (slot >= nn) return T->Jx + (size_t)b->Jp[n * b->nnodes + slot - nn] + R0;
-    const size_t col = n * (i * m) + slot;
+    const size_t col = n * (i * m + k) + q;
     /* the column's collocation rows start at row Ji[Jp[col]] */
-    return T->Jx + (size_t)b->Jp[col] + R0 - (size_t)b->Ji[b->Jp[col]];
+    return T->Jx + (size_t)b->Jp[col] + n * (i * m + g) - (size_t)b->Ji[b->Jp[col]];
   }
   *stride = T->wc;
-  const size_t k = slot / n, q = slot % n;
-  const size_t pos = slot >= nn ? ni + 2 * n + (slot - nn)
-                     : k == 0   ? ni + q
-                     : k == m   ? ni + n + q
-                                : (k - 1) * n + q;
+  const size_t pos = k == 0 ? (m - 1) * n + q : k == m ? m * n + q : (k - 1) * n + q;
   return T->B + g * n * T->wc + pos;
+}
+
+/* The same for global column j: free parameter j < NFREE, p_k's NFREE. */
+static double *target_global_rows(const whirl_bvp *b, const fill_target *T, size_t i,
+                                  size_t g, size_t j, size_t *stride) {
+  const size_t n = b->n, m = b->ncol;
+  if (!T->B) {
+    *stride = 1;
+    return T->Jx + (size_t)b->Jp[n * b->nnodes + j] + n * (i * m + g);
+  }
+  *stride = T->wc;
+  return T->B + g * n * T->wc + (m + 1) * n + j;
 }
 
 /* −h df/dp_k at the current Gauss point into T's p_k column and T->fk
@@ -368,7 +373,7 @@ static int fill_fk(const whirl_bvp *b, bvp_scratch *s, const fill_target *T, siz
   const int rc = model_fp(b, s, t, b->pt, T->k, v);
   if (rc != 0) return rc;
   size_t st;
-  double *e = target_rows(b, T, i, g, (b->ncol + 1) * n + b->nfree, &st);
+  double *e = target_global_rows(b, T, i, g, b->nfree, &st);
   for (size_t r = 0; r < n; ++r) {
     v[r] *= -h;
     if (!isfinite(v[r])) return WHIRL_EBADFUNC;
@@ -400,7 +405,7 @@ static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X,
     const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
     for (size_t k = 0; k <= m; ++k)
       for (size_t q = 0; q < n; ++q) {
-        double *v = target_rows(b, T, i, g, k * n + q, &st);
+        double *v = target_node_rows(b, T, i, g, k, q, &st);
         const double *Jq = s->J + n * q;
         for (size_t r = 0; r < n; ++r) v[r * st] = -h * lv[k] * Jq[r];
         v[q * st] += dv[k];
@@ -414,7 +419,7 @@ static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X,
       rc = fwd ? model_fp_forward(b, s, t, b->pt, b->free[j], s->fm, tmp)
                : model_fp(b, s, t, b->pt, b->free[j], tmp);
       if (rc != 0) return rc;
-      double *v = target_rows(b, T, i, g, (m + 1) * n + j, &st);
+      double *v = target_global_rows(b, T, i, g, j, &st);
       for (size_t r = 0; r < n; ++r) v[r * st] = tmp[r] * -h;
     }
     if (T->fk && (rc = fill_fk(b, s, T, i, g, t, h)) != 0) return rc;

@@ -91,6 +91,7 @@ struct cond_ws {
   det_acc det_c; /* product of the pivots of the collocation rows */
   size_t npiv_c; /* their number */
   int sign_c;    /* sign of the row and column orders (see factor_rows) */
+  int sign_col;  /* the column order's alone (fixed by the shape), 0 until known */
   int jac_ok;    /* the collocation rows are factored (at Xf, pf) */
   double *Xf, *pf;
   size_t npar;
@@ -482,7 +483,9 @@ static int eliminate_mesh_points(cond_ws *w) {
 
 /* The signs of the row order with the final rows in their order before
  * the final elimination (whose swaps factor_border counts), and of the
- * column order: both fixed until the next factor_rows. */
+ * column order: both fixed until the next factor_rows.  The column order
+ * depends on the shape alone (the pivots permute rows): its sign is
+ * counted once. */
 static void order_signs(cond_ws *w) {
   const size_t n = w->n, nx = w->nx, nNm = n * w->N * w->m;
   size_t q = w->npiv_c;
@@ -492,7 +495,8 @@ static void order_signs(cond_ws *w) {
   q = w->npiv_c;
   for (size_t e = 0; e < w->nf; ++e)
     w->pcol[q++] = (int)(e < n ? e : e < 2 * n ? nNm + (e - n) : w->gcol[e - 2 * n]);
-  w->sign_c = perm_sign(w->prow, nx + 1, w->mark) * perm_sign(w->pcol, nx + 1, w->mark);
+  if (!w->sign_col) w->sign_col = perm_sign(w->pcol, nx + 1, w->mark);
+  w->sign_c = perm_sign(w->prow, nx + 1, w->mark) * w->sign_col;
 }
 
 /* The collocation rows: the system's fill at (X, p) (COND_FILL_*), the
