@@ -98,6 +98,10 @@ struct cond_ws {
   int *slab;     /* n: M's rows of the n rows left after step 2 */
   double *mblk;  /* 2n^2 + 2n: the monodromy matrix */
   int *mpiv, *mlab; /* n each */
+  const double *r_src; /* the core's border row r (the last border row), whose
+                        * interior entries each interval eliminates in the
+                        * loop that condenses it (cond_factor), or NULL */
+  int r_done;    /* its intervals' part done by that loop */
   det_acc det;   /* product of all the pivots */
   double logabs; /* log|det M| and its sign, when factored */
   int sign;
@@ -387,6 +391,18 @@ static int singular(cond_ws *w) {
   return WHIRL_ESINGULAR;
 }
 
+/* Border row t's interior entries src on interval i eliminated by the
+ * interval's pivot rows (row nm + t of its block: its multipliers, then
+ * its entries on [x_i | x_{i+1} | g] for reduce_border_intervals). */
+static void border_interval(cond_ws *w, size_t t, const double *src, size_t i) {
+  const size_t n = w->n, m = w->m, ni = w->ni, wc = w->wc;
+  double *Wi = w->W + i * w->wr * wc;
+  double *a = Wi + (w->nm + t) * wc;
+  memcpy(a, src + n * (i * m + 1), ni * sizeof *a);
+  memset(a + ni, 0, (2 * n + w->ng) * sizeof *a);
+  border_eliminate(Wi, wc, ni, a);
+}
+
 /* Step 1 on interval i's block, with labels lab[nm]: its pivots' product
  * into idet[i], its pivot rows and columns in elimination order (all of
  * interval i's after those of the intervals before it).  gepp's status. */
@@ -420,6 +436,7 @@ static int condense_intervals(cond_ws *w, const double *X, const double *p,
     const int t = whirl_thread_num();
     w->frc[i] = ops->fill_one ? ops->fill_one(w, X, p, k, mode, i, t) : 0;
     w->irc[i] = w->frc[i] ? 0 : condense_interval(w, i, w->lab + w->nlab * (size_t)t);
+    if (w->r_src && !w->frc[i] && !w->irc[i]) border_interval(w, w->nb - 1, w->r_src, i);
   }
   whirl_gov_end(&w->gov);
   size_t bad = 0;
@@ -435,6 +452,7 @@ static int condense_intervals(cond_ws *w, const double *X, const double *p,
     if (w->irc[i] == 1) return singular(w);
     det_times(&w->det_c, &w->idet[i]);
   }
+  w->r_done = w->r_src != NULL;
   w->npiv_c = N * w->ni;
   return 0;
 }
@@ -525,20 +543,20 @@ static int factor_rows(cond_ws *w, const double *X, const double *p, size_t k,
 }
 
 /* Border row t's entries on the mesh points and globals into Bt (bc),
- * with its interior entries eliminated by each interval (step 1). */
+ * with its interior entries eliminated by each interval (step 1; for the
+ * core's r already in the loop of step 1 when r_done), summed in interval
+ * order. */
 static void reduce_border_intervals(cond_ws *w, size_t t, const double *r) {
   const size_t n = w->n, m = w->m, N = w->N, ni = w->ni, nm = w->nm,
                ng = w->ng, wc = w->wc;
   double *Bt = w->B + t * w->bc;
   const double *src = w->ops->border(w, t, r, Bt + n * (N + 1));
+  const int done = w->r_done && t == w->nb - 1;
   for (size_t i = 0; i <= N; ++i)
     for (size_t q = 0; q < n; ++q) Bt[n * i + q] = src[n * (i * m) + q];
   for (size_t i = 0; i < N; ++i) {
-    double *Wi = w->W + i * w->wr * wc;
-    double *a = Wi + (nm + t) * wc;
-    memcpy(a, src + n * (i * m + 1), ni * sizeof *a);
-    memset(a + ni, 0, (2 * n + ng) * sizeof *a);
-    border_eliminate(Wi, wc, ni, a);
+    if (!done) border_interval(w, t, src, i);
+    const double *a = w->W + i * w->wr * wc + (nm + t) * wc;
     for (size_t q = 0; q < n; ++q) {
       Bt[n * i + q] += a[ni + q];
       Bt[n * (i + 1) + q] += a[ni + n + q];
@@ -608,8 +626,12 @@ static int factor_border(cond_ws *w, const double *r) {
 int cond_factor(void *ws, const double *X, const double *p, size_t k,
                 const double *r) {
   cond_ws *w = ws;
+  w->r_src = r; /* its intervals' part in step 1's loop */
   int rc = factor_rows(w, X, p, k, COND_FILL_FULL);
-  return rc != 0 ? rc : factor_border(w, r);
+  w->r_src = NULL;
+  if (rc == 0) rc = factor_border(w, r);
+  w->r_done = 0;
+  return rc;
 }
 
 int cond_factor_col(void *ws, const double *X, const double *p,

@@ -52,7 +52,9 @@ typedef struct cond_ops {
               int mode);
   /* Border row t: its entries on the node values (node-major as X; the
    * core's r when the system passes it through) returned, its ng global
-   * entries into g. */
+   * entries into g.  The last border row (t = nb − 1) is the core's r and
+   * is returned as r itself: cond_factor eliminates its interior entries
+   * in the loop that condenses the intervals, before border() is called. */
   const double *(*border)(cond_ws *w, size_t t, const double *r, double *g);
   /* End row e into a[2n + ng] ([x_0 | x_N | g]), after fill. */
   void (*end_row)(cond_ws *w, size_t e, double *a);
