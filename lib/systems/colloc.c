@@ -312,9 +312,40 @@ static int colloc_Fx(const double *X, const double *p, double *J, void *data) {
   return rc;
 }
 
+/* See colloc_impl.h.  The difference's step is that of
+ * whirl_system_fd_param; the residual's other terms do not depend on p_k,
+ * so a difference of f alone is the difference of the whole residual
+ * without its cancellation of x'. */
+int colloc_fk_rows(const whirl_colloc *c, colloc_scratch *s, const double *X,
+                   const double *p, size_t k, double t, double hT, double *fr) {
+  const whirl_problem *pr = c->prob;
+  const size_t n = c->n;
+  int rc;
+  if (pr->jac_p) {
+    if ((rc = pr->jac_p(t, s->xc, p, s->Jpar, pr->data)) != 0) return rc;
+    for (size_t rr = 0; rr < n; ++rr) fr[rr] = -hT * s->Jpar[rr + n * k];
+    return 0;
+  }
+  memcpy(s->pw, p, pr->npar * sizeof *s->pw);
+  if (c->fq >= 0) s->pw[c->fq] = X[c->nx - 1];
+  const double pk = s->pw[k], hp = cbrt(DBL_EPSILON) * fmax(1.0, fabs(pk));
+  s->pw[k] = pk + hp;
+  const double up = s->pw[k];
+  if ((rc = pr->rhs(t, s->xc, s->pw, s->f, pr->data)) != 0) return rc;
+  s->pw[k] = pk - hp;
+  const double dn = s->pw[k];
+  if ((rc = pr->rhs(t, s->xc, s->pw, s->f2, pr->data)) != 0) return rc;
+  for (size_t rr = 0; rr < n; ++rr) {
+    fr[rr] = -hT * (s->f[rr] - s->f2[rr]) / (up - dn);
+    if (!isfinite(fr[rr])) return WHIRL_EBADFUNC;
+  }
+  return 0;
+}
+
 /* dF/dp_k.  The forcing frequency also sets T = 2π nu/ω and the time
  * argument t0 + Tτ, so its column is a central difference of the whole
- * residual; any other parameter enters through f only: −h T f_p. */
+ * residual; any other parameter enters through f only: −h T f_p
+ * (colloc_fk_rows: the model's jac_p, or a central difference of f). */
 static int colloc_Fp(const double *X, const double *p, size_t k, double *fk,
                      void *data) {
   whirl_colloc *c = data;
@@ -348,10 +379,8 @@ static int colloc_Fp(const double *X, const double *p, size_t k, double *fk,
       colloc_scratch *s = &c->scr[0];
       at_gauss(c, s, X, i, g);
       const double tau = c->mesh[i] + h * c->gs[g];
-      int rc = pr->jac_p(c->t0 + T * tau, s->xc, p, s->Jpar, pr->data);
+      int rc = colloc_fk_rows(c, s, X, p, k, c->t0 + T * tau, h * T, fk + n * (i * m + g));
       if (rc != 0) return rc;
-      double *Fr = fk + n * (i * m + g);
-      for (size_t r = 0; r < n; ++r) Fr[r] = -h * T * s->Jpar[r + n * k];
     }
   }
   for (size_t q = n * N * m; q < c->nx; ++q) fk[q] = 0.0;
@@ -609,7 +638,7 @@ static void init_system(whirl_colloc *c) {
   s->npar = prob->npar;
   s->F = colloc_F;
   s->Fx = colloc_Fx;
-  s->Fp = prob->jac_p ? colloc_Fp : NULL;
+  s->Fp = colloc_Fp;
   s->nnz = c->nnz;
   s->Jp = c->Jp;
   s->Ji = c->Ji;

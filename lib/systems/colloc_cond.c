@@ -33,9 +33,7 @@ static int fill_interval(whirl_colloc *c, colloc_scratch *s, cond_ws *w,
     if (rc != 0) return rc;
     if (fk_loop) {
       const double t = c->t0 + T * (c->mesh[i] + h * c->gs[g]);
-      if ((rc = c->prob->jac_p(t, s->xc, p, s->Jpar, c->prob->data)) != 0) return rc;
-      double *fr = fk + n * (i * m + g);
-      for (size_t rr = 0; rr < n; ++rr) fr[rr] = -h * T * s->Jpar[rr + n * k];
+      if ((rc = colloc_fk_rows(c, s, X, p, k, t, h * T, fk + n * (i * m + g))) != 0) return rc;
     }
     const double *l = c->L + g * (m + 1), *dl = c->D + g * (m + 1);
     for (size_t rr = 0; rr < n; ++rr) {
@@ -58,20 +56,19 @@ static int fill_interval(whirl_colloc *c, colloc_scratch *s, cond_ws *w,
   return 0;
 }
 
-/* Before the intervals: the period, and dF/dp_k — from the model's f_p in
- * each interval's fill when the parameter enters through f only, else by
- * the system (forcing frequency: T and the time argument depend on it
- * too). */
+/* Before the intervals: the period, and dF/dp_k — in each interval's fill
+ * (colloc_fk_rows) when the parameter enters through f only, else by the system
+ * (forcing frequency: T and the time argument depend on it too; a fixed
+ * period's free parameter, from X: its column 0). */
 static int colloc_fill_begin(cond_ws *w, const double *X, const double *p,
                              size_t k, int mode) {
   whirl_colloc *c = cond_sys(w);
-  const whirl_problem *pr = c->prob;
   const int full = mode == COND_FILL_FULL;
   const size_t n = c->n, N = c->ntst, m = c->ncol;
   double *fk = cond_fk(w);
   c->fill_T = colloc_period_of(c, X, p);
   if (!(c->fill_T > 0) || !isfinite(c->fill_T)) return 1; /* recoverable, as F */
-  c->fill_fk_loop = full && pr->jac_p && !(!c->aut && (int)k == c->fpar);
+  c->fill_fk_loop = full && !(!c->aut && (int)k == c->fpar) && (int)k != c->fq;
   if (full && !c->fill_fk_loop) {
     int rc = whirl_system_param(&c->sys, X, p, k, fk, cond_work(w));
     if (rc != 0) return rc;

@@ -110,6 +110,14 @@ int colloc_gauss_jac(whirl_colloc *c, colloc_scratch *s, const double *X,
 /* colloc.c: threads for the loops over the intervals (1: serial). */
 int colloc_threads(const whirl_colloc *c);
 
+/* −h T df/dp_k at Gauss point time t (s->xc, after at_gauss) into fr[n]
+ * (hT = h T): the model's jac_p, or a central difference of f in p_k
+ * (WHIRL_EBADFUNC if not finite); p as the caller's, a fixed period's free
+ * parameter taken from X.  For colloc_Fp and the condensed fill alike, so
+ * both give the same column. */
+int colloc_fk_rows(const whirl_colloc *c, colloc_scratch *s, const double *X,
+                   const double *p, size_t k, double t, double hT, double *fr);
+
 /* colloc_cond.c: the structured bordered solver of the system. */
 extern const whirl_bsolver colloc_bsolver;
 
