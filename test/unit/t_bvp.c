@@ -1263,15 +1263,6 @@ static void test_auto_differences(void) {
  * with the message the sparse Jacobian gives; a dF/dp_k that is not
  * finite (sqrt(p1 - 2) at p1 = 2: NaN at p1 - h) is WHIRL_EBADFUNC,
  * recoverable, as the system's F_p says. */
-static int fail_rhs(double t, const double *u, const double *p, double *f, void *data) {
-  (void)data;
-  if (t > 0.6) return -(int)(10.0 * t); /* fatal: -6 first, then -7 ... */
-  f[0] = u[1];
-  f[1] = -p[0] * exp(u[0]) + u[0] * sqrt(p[1] - 2.0);
-  return 0;
-}
-static const whirl_problem fail_model = {
-    .name = "fail", .n = 2, .npar = 2, .rhs = fail_rhs, .autonomous = 0};
 static int nan_rhs(double t, const double *u, const double *p, double *f, void *data) {
   (void)t, (void)data;
   f[0] = u[1];
@@ -1280,6 +1271,12 @@ static int nan_rhs(double t, const double *u, const double *p, double *f, void *
 }
 static const whirl_problem nan_model = {
     .name = "nanp", .n = 2, .npar = 2, .rhs = nan_rhs, .autonomous = 1};
+static int fail_rhs(double t, const double *u, const double *p, double *f, void *data) {
+  /* fatal past t = 0.6: -6 first, then -7 ... */
+  return t > 0.6 ? -(int)(10.0 * t) : nan_rhs(t, u, p, f, data);
+}
+static const whirl_problem fail_model = {
+    .name = "fail", .n = 2, .npar = 2, .rhs = fail_rhs, .autonomous = 0};
 
 static void test_structured_failures(void) {
   whirl_bvp_options o;
