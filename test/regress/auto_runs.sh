@@ -46,6 +46,7 @@
 #       mesh, as AUTO's own run's (AUTO's quadrature of the node values);
 #     - spb by its script: a BVP label restarted on a larger NTST (AUTO's
 #       ADAPT2 mesh), and its long branch to AUTO's UZSTOP at AUTO's PT;
+#     - ab by its script: its last run ends at AUTO's UZ, PERIOD = 1000;
 #     - abcb by its script: the fold locus of orbits labels AUTO's LP at
 #       its turning point (no CP), and run 4 no BP at its start.
 # TAP output.
@@ -383,6 +384,17 @@ check $(( $? + rc )) "spb --script: runs 3-4 run (exit $rc), run 3's EP at PT 15
 last=$(awk 'substr($0, 1, 4) + 0 != 0 { e = substr($0, 5, 6) + 0; t = substr($0, 11, 4) + 0; p = substr($0, 20, 19) + 0 } END { print (e < 0 ? -e : e), t, p }' "$tmp/spb.s/b.2" 2>/dev/null)
 echo "$last" | awk '{ exit !($1 >= 1540 && $1 <= 1570 && $2 == -4 && ($3 + 2.2) ^ 2 < 1e-12) }'
 check $? "spb --script: c.spb.3 ends at its UZSTOP PAR(1) = -2.2 at AUTO's PT 1554 (PT, type, PAR(1): ${last:-none}; it was an EP at NMX 2000, and 565 before that)"
+# ab by its script: its last run (orbits from HB 5 towards the homoclinic
+# orbit) ends at its UZSTOP PERIOD = 1000 at AUTO's PAR(1) = 0.110114
+# (hyper.all and AUTO's own run: UZ 18 at PT 377, L2-NORM 1.85878).
+# Before dF/dp_k of orbits was taken at the Gauss points, the whole
+# residual's difference lost its digits at such periods and the run
+# ended at NMX = 500 short of it
+(cd "$tmp" && "$WHIRL" auto "$auto/demos/ab" --script --quiet --out=ab.s > ab.s.log 2>&1)
+rc=$?
+last=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 != 0 { t = substr($0, 11, 4) + 0; p = substr($0, 20, 19) + 0; l = substr($0, 39, 19) + 0; T = substr($0, 96, 19) + 0 } END { printf "%d %.10g %.10g %.10g", t, p, l, T }' "$tmp/ab.s/b.ab" 2>/dev/null)
+echo "$last" | awk '{ exit !($1 == -4 && $2 - 0.110114 < 1e-6 && 0.110114 - $2 < 1e-6 && $3 - 1.85878 < 1e-5 && 1.85878 - $3 < 1e-5 && $4 - 1000 < 1e-6 && 1000 - $4 < 1e-6) }'
+check $(( $? + rc )) "ab --script: the last run ends at AUTO's UZ, PERIOD = 1000 at PAR(1) = 0.110114, L2-NORM 1.85878 (exit $rc; type, PAR(1), L2-NORM, PERIOD: ${last:-none})"
 # abcb by its script: its fold locus of orbits (run 3 fw, ICP = [2, 1,
 # 11]) turns in PAR(2) at 1.26866, AUTO's LP 30 (type 5, AUTO-07p 0.9.2's
 # own run of abcb.auto: 1.2686579741), where whirl's cusp test labelled CP
