@@ -74,6 +74,11 @@ struct cond_ws {
   int *fpiv;     /* nf */
   int nth;       /* threads of the loops over the intervals */
   whirl_gov gov; /* condense_intervals' threads of those (threads_impl.h) */
+  int nth_last;  /* the threads of the last condensation, which the solves'
+                  * loops take with the same static partition: each thread
+                  * then reads the interval blocks it wrote, from its own
+                  * cache */
+  double *ysc;   /* nth (2n + ng): each thread's back values in the solve */
   size_t nlab;   /* max(nm, 2n, nf) */
   int *lab;      /* scratch labels, nlab per thread (thread 0's first) */
   det_acc *idet; /* NTST: the product of each interval's pivots */
@@ -90,7 +95,8 @@ struct cond_ws {
   double *tmp;   /* 3 nf: the final right-hand side, solution, back values */
   det_acc det_c; /* product of the pivots of the collocation rows */
   size_t npiv_c; /* their number */
-  int sign_c;    /* sign of the row and column orders (see factor_rows) */
+  int sign_c;    /* sign of the row and column orders (see factor_rows),
+                  * 0 until cond_logdet asks for it */
   int sign_col;  /* the column order's alone (fixed by the shape), 0 until known */
   int jac_ok;    /* the collocation rows are factored (at Xf, pf) */
   double *Xf, *pf;
@@ -103,8 +109,9 @@ struct cond_ws {
                         * loop that condenses it (cond_factor), or NULL */
   int r_done;    /* its intervals' part done by that loop */
   det_acc det;   /* product of all the pivots */
-  double logabs; /* log|det M| and its sign, when factored */
-  int sign;
+  double logabs; /* log|det M| and its sign, when factored: */
+  int sign_f;    /* the sign of the pivots' product and of the final
+                  * system's swaps; det M's is sign_f sign_c */
   int state; /* 0 none, 1 factored, 2 singular */
 };
 
@@ -114,7 +121,7 @@ void cond_free(cond_ws *w) {
                w->B,    w->F,    w->fpiv, w->lab,  w->prow, w->pcol, w->mark,
                w->fk,   w->work, w->loc,  w->ploc, w->xs,   w->bb,   w->tmp,
                w->Xf,   w->pf,   w->slab, w->mblk, w->mpiv, w->mlab,
-               w->idet, w->irc,  w->frc};
+               w->idet, w->irc,  w->frc,  w->ysc};
   for (size_t i = 0; i < sizeof p / sizeof *p; ++i) free(p[i]);
   free(w);
 }
@@ -179,12 +186,14 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
   w->mblk = malloc((2 * n * n + 2 * n) * sizeof *w->mblk);
   w->mpiv = malloc(n * sizeof *w->mpiv);
   w->mlab = malloc(n * sizeof *w->mlab);
+  w->ysc = malloc(nth * w->nf * sizeof *w->ysc);
+  w->nth_last = 1;
   if (!w->gcol || !w->blab || !w->W || !w->wpiv || !w->wlab || !w->P ||
       !w->ppiv || !w->B || !w->F || !w->fpiv || !w->lab || !w->prow ||
       !w->pcol || !w->mark || !w->fk || !w->work || !w->loc || !w->ploc ||
       !w->xs || !w->bb || !w->tmp || !w->Xf || !w->pf || !w->slab ||
       !w->mblk || !w->mpiv || !w->mlab || !w->idet || !w->irc ||
-      !w->frc) {
+      !w->frc || !w->ysc) {
     cond_free(w);
     return NULL;
   }
@@ -213,6 +222,29 @@ static inline void row_update(double *restrict a, const double *restrict u,
     a[k + 3] -= l * u[k + 3];
   }
   for (; k < len; ++k) a[k] -= l * u[k];
+}
+
+/* d[k] = s[k] and d[k] = 0, k < len: the short copies of the elimination
+ * and the solves (n, 2n + ng or n NCOL entries, tens of thousands a
+ * factorisation on a long mesh), inline: a call of memcpy or memset cost
+ * more than such a copy (10 % of demo fnc's serial time).  Written in
+ * pairs, which compilers do not turn back into those calls. */
+static inline void copy_short(double *restrict d, const double *restrict s, size_t len) {
+  size_t k = 0;
+  for (; k + 2 <= len; k += 2) {
+    d[k] = s[k];
+    d[k + 1] = s[k + 1];
+  }
+  if (k < len) d[k] = s[k];
+}
+
+static inline void zero_short(double *d, size_t len) {
+  size_t k = 0;
+  for (; k + 2 <= len; k += 2) {
+    d[k] = 0.0;
+    d[k + 1] = 0.0;
+  }
+  if (k < len) d[k] = 0.0;
 }
 
 static void det_mul(det_acc *d, double v) {
@@ -398,8 +430,8 @@ static void border_interval(cond_ws *w, size_t t, const double *src, size_t i) {
   const size_t n = w->n, m = w->m, ni = w->ni, wc = w->wc;
   double *Wi = w->W + i * w->wr * wc;
   double *a = Wi + (w->nm + t) * wc;
-  memcpy(a, src + n * (i * m + 1), ni * sizeof *a);
-  memset(a + ni, 0, (2 * n + w->ng) * sizeof *a);
+  copy_short(a, src + n * (i * m + 1), ni);
+  zero_short(a + ni, 2 * n + w->ng);
   border_eliminate(Wi, wc, ni, a);
 }
 
@@ -431,7 +463,8 @@ static int condense_intervals(cond_ws *w, const double *X, const double *p,
   const size_t N = w->N;
   const int nth = whirl_gov_begin(&w->gov);
   const cond_ops *ops = w->ops;
-#pragma omp parallel for num_threads(nth) schedule(dynamic, 8) if (nth > 1)
+  w->nth_last = nth;
+#pragma omp parallel for num_threads(nth) schedule(static) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
     const int t = whirl_thread_num();
     w->frc[i] = ops->fill_one ? ops->fill_one(w, X, p, k, mode, i, t) : 0;
@@ -468,22 +501,22 @@ static int eliminate_mesh_points(cond_ws *w) {
       double *a = Pj + q * pc;
       if (j == 1) {
         const double *s = cond_rows(w, 0) + q * wc; /* [x_0 | x_1 | g] */
-        memcpy(a, s + n, n * sizeof *a);
-        memcpy(a + n, s, n * sizeof *a);
-        memcpy(a + 3 * n, s + 2 * n, ng * sizeof *a);
+        copy_short(a, s + n, n);
+        copy_short(a + n, s, n);
+        copy_short(a + 3 * n, s + 2 * n, ng);
       } else {
         const double *s = w->P + (j - 2) * w->pr * pc + (n + q) * pc;
-        memcpy(a, s + 2 * n, n * sizeof *a); /* x_j */
-        memcpy(a + n, s + n, n * sizeof *a); /* x_0 */
-        memcpy(a + 3 * n, s + 3 * n, ng * sizeof *a);
+        copy_short(a, s + 2 * n, n); /* x_j */
+        copy_short(a + n, s + n, n); /* x_0 */
+        copy_short(a + 3 * n, s + 3 * n, ng);
       }
-      memset(a + 2 * n, 0, n * sizeof *a);
+      zero_short(a + 2 * n, n);
       const double *s = cond_rows(w, j) + q * wc; /* [x_j | x_{j+1} | g] */
       double *b = Pj + (n + q) * pc;
-      memcpy(b, s, n * sizeof *b);
-      memset(b + n, 0, n * sizeof *b);
-      memcpy(b + 2 * n, s + n, n * sizeof *b);
-      memcpy(b + 3 * n, s + 2 * n, ng * sizeof *b);
+      copy_short(b, s, n);
+      zero_short(b + n, n);
+      copy_short(b + 2 * n, s + n, n);
+      copy_short(b + 3 * n, s + 2 * n, ng);
       w->lab[n + q] = w->wlab[j * n + q];
     }
     int rc = gepp(Pj, pc, 2 * n, 0, n, w->ppiv + (j - 1) * n, w->lab, &w->det_c, NULL);
@@ -503,7 +536,9 @@ static int eliminate_mesh_points(cond_ws *w) {
  * the final elimination (whose swaps factor_border counts), and of the
  * column order: both fixed until the next factor_rows.  The column order
  * depends on the shape alone (the pivots permute rows): its sign is
- * counted once. */
+ * counted once.  The row order's is counted when cond_logdet asks, once a
+ * factor_rows: a cycle count over all nx + 1 rows, where a continuation
+ * step factors three or four times and asks once (2 % of demo fnc). */
 static void order_signs(cond_ws *w) {
   const size_t n = w->n, nx = w->nx, nNm = n * w->N * w->m;
   size_t q = w->npiv_c;
@@ -535,7 +570,7 @@ static int factor_rows(cond_ws *w, const double *X, const double *p, size_t k,
   if ((rc = condense_intervals(w, X, p, k, mode)) != 0 ||
       (rc = eliminate_mesh_points(w)) != 0)
     return rc;
-  if (!mono) order_signs(w);
+  w->sign_c = 0; /* order_signs, when cond_logdet asks */
   memcpy(w->Xf, X, w->nx * sizeof *w->Xf);
   memcpy(w->pf, p, w->npar * sizeof *w->pf);
   w->jac_ok = mono ? 2 : 1;
@@ -581,14 +616,14 @@ static int factor_border(cond_ws *w, const double *r) {
     double *Pj = w->P + (j - 1) * w->pr * pc;
     for (size_t t = 0; t < nb; ++t) {
       double *a = Pj + (2 * n + t) * pc, *Bt = w->B + t * bc;
-      memcpy(a, Bt + n * j, n * sizeof *a);
-      memcpy(a + n, Bt, n * sizeof *a);
-      memcpy(a + 2 * n, Bt + n * (j + 1), n * sizeof *a);
-      memcpy(a + 3 * n, Bt + n * (N + 1), ng * sizeof *a);
+      copy_short(a, Bt + n * j, n);
+      copy_short(a + n, Bt, n);
+      copy_short(a + 2 * n, Bt + n * (j + 1), n);
+      copy_short(a + 3 * n, Bt + n * (N + 1), ng);
       border_eliminate(Pj, pc, n, a);
-      memcpy(Bt, a + n, n * sizeof *a);
-      memcpy(Bt + n * (j + 1), a + 2 * n, n * sizeof *a);
-      memcpy(Bt + n * (N + 1), a + 3 * n, ng * sizeof *a);
+      copy_short(Bt, a + n, n);
+      copy_short(Bt + n * (j + 1), a + 2 * n, n);
+      copy_short(Bt + n * (N + 1), a + 3 * n, ng);
     }
   }
   /* 3. the final system in [x_0 | x_N | g] */
@@ -597,7 +632,7 @@ static int factor_border(cond_ws *w, const double *r) {
   const size_t nNm = n * N * w->m;
   memset(F, 0, nf * nf * sizeof *F);
   for (size_t q = 0; q < n; ++q) {
-    memcpy(F + q * nf, S + q * pc + n, (2 * n + ng) * sizeof *F);
+    copy_short(F + q * nf, S + q * pc + n, 2 * n + ng);
     w->lab[q] = w->slab[q];
   }
   for (size_t e = 0; e < w->ne; ++e) {
@@ -607,9 +642,9 @@ static int factor_border(cond_ws *w, const double *r) {
   for (size_t t = 0; t < nb; ++t) {
     double *a = F + (n + w->ne + t) * nf;
     const double *Bt = w->B + t * bc;
-    memcpy(a, Bt, n * sizeof *a);
-    memcpy(a + n, Bt + n * N, n * sizeof *a);
-    memcpy(a + 2 * n, Bt + n * (N + 1), ng * sizeof *a);
+    copy_short(a, Bt, n);
+    copy_short(a + n, Bt + n * N, n);
+    copy_short(a + 2 * n, Bt + n * (N + 1), ng);
     w->lab[n + w->ne + t] = w->blab[t];
   }
   int swaps = 0;
@@ -618,7 +653,7 @@ static int factor_border(cond_ws *w, const double *r) {
   if (rc == 1) return singular(w);
   w->logabs = log(fabs(w->det.mant)) + (double)w->det.expo * log(2.0);
   if (!isfinite(w->logabs)) return WHIRL_EBADFUNC;
-  w->sign = (w->det.mant < 0.0 ? -1 : 1) * w->sign_c * (swaps % 2 ? -1 : 1);
+  w->sign_f = (w->det.mant < 0.0 ? -1 : 1) * (swaps % 2 ? -1 : 1);
   w->state = 1;
   return 0;
 }
@@ -663,50 +698,57 @@ static void solve1(cond_ws *w, double *b) {
                ng = w->ng, nb = w->nb, wr = w->wr, wc = w->wc, pr = w->pr,
                pc = w->pc, nf = w->nf;
   double *bb = w->bb, *xs = w->xs, *g = xs + n * (N + 1);
+  const int nth = w->nth_last;
   for (size_t t = 0; t < nb; ++t) bb[t] = b[w->blab[t]];
-  /* 1. */
+  /* 1. on the threads and intervals of the condensation (its blocks in
+   * their caches); the border rows' sums then in interval order */
+#pragma omp parallel for num_threads(nth) schedule(static) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
     double *v = w->loc + i * wr;
-    memcpy(v, b + n * i * m, nm * sizeof *v);
-    for (size_t t = 0; t < nb; ++t) v[nm + t] = 0.0;
+    copy_short(v, b + n * i * m, nm);
+    zero_short(v + nm, nb);
     gepp_forward(w->W + i * wr * wc, wc, nm, nb, ni, w->wpiv + i * ni, v);
-    for (size_t t = 0; t < nb; ++t) bb[t] += v[nm + t];
   }
+  for (size_t i = 0; i < N; ++i)
+    for (size_t t = 0; t < nb; ++t) bb[t] += w->loc[i * wr + nm + t];
   /* 2. */
   for (size_t j = 1; j < N; ++j) {
     double *v = w->ploc + (j - 1) * pr;
     const double *s = j == 1 ? w->loc + ni : w->ploc + (j - 2) * pr + n;
-    memcpy(v, s, n * sizeof *v);
-    memcpy(v + n, w->loc + j * wr + ni, n * sizeof *v);
+    copy_short(v, s, n);
+    copy_short(v + n, w->loc + j * wr + ni, n);
     for (size_t t = 0; t < nb; ++t) v[2 * n + t] = 0.0;
     gepp_forward(w->P + (j - 1) * pr * pc, pc, 2 * n, nb, n, w->ppiv + (j - 1) * n, v);
     for (size_t t = 0; t < nb; ++t) bb[t] += v[2 * n + t];
   }
   /* 3. */
   double *frp = w->tmp, *zp = frp + nf, *yp = zp + nf;
-  memcpy(frp, w->ploc + (N - 2) * pr + n, n * sizeof *frp);
-  memcpy(frp + n, b + n * N * m, w->ne * sizeof *frp);
-  memcpy(frp + n + w->ne, bb, nb * sizeof *frp);
+  copy_short(frp, w->ploc + (N - 2) * pr + n, n);
+  copy_short(frp + n, b + n * N * m, w->ne);
+  copy_short(frp + n + w->ne, bb, nb);
   gepp_forward(w->F, nf, nf, 0, nf, w->fpiv, frp);
   gepp_back(w->F, nf, nf, 0, frp, NULL, zp);
-  memcpy(xs, zp, n * sizeof *xs);
-  memcpy(xs + n * N, zp + n, n * sizeof *xs);
-  memcpy(g, zp + 2 * n, ng * sizeof *g);
+  copy_short(xs, zp, n);
+  copy_short(xs + n * N, zp + n, n);
+  copy_short(g, zp + 2 * n, ng);
   /* back substitution: the mesh points, then the interiors */
   for (size_t j = N - 1; j >= 1; --j) {
-    memcpy(yp, xs, n * sizeof *yp);
-    memcpy(yp + n, xs + n * (j + 1), n * sizeof *yp);
-    memcpy(yp + 2 * n, g, ng * sizeof *yp);
+    copy_short(yp, xs, n);
+    copy_short(yp + n, xs + n * (j + 1), n);
+    copy_short(yp + 2 * n, g, ng);
     gepp_back(w->P + (j - 1) * pr * pc, pc, n, 2 * n + ng,
               w->ploc + (j - 1) * pr, yp, xs + n * j);
   }
+#pragma omp parallel for num_threads(nth) schedule(static) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
-    memcpy(yp, xs + n * i, 2 * n * sizeof *yp);
-    memcpy(yp + 2 * n, g, ng * sizeof *yp);
-    gepp_back(w->W + i * wr * wc, wc, ni, 2 * n + ng, w->loc + i * wr, yp,
+    double *y = w->ysc + (size_t)whirl_thread_num() * nf;
+    copy_short(y, xs + n * i, 2 * n);
+    copy_short(y + 2 * n, g, ng);
+    gepp_back(w->W + i * wr * wc, wc, ni, 2 * n + ng, w->loc + i * wr, y,
               b + n * (i * m + 1));
+    copy_short(b + n * i * m, xs + n * i, n);
   }
-  for (size_t i = 0; i <= N; ++i) memcpy(b + n * i * m, xs + n * i, n * sizeof *b);
+  copy_short(b + n * N * m, xs + n * N, n);
   for (size_t e = 0; e < ng; ++e) b[w->gcol[e]] = g[e];
 }
 
@@ -736,11 +778,11 @@ static void solve1_t(cond_ws *w, double *b) {
   memset(w->loc, 0, N * wr * sizeof *w->loc);
   memset(w->ploc, 0, (N - 1) * pr * sizeof *w->ploc);
   /* the outputs' adjoints: the mesh points and the globals */
-  for (size_t i = 0; i <= N; ++i) memcpy(xs + n * i, b + n * i * m, n * sizeof *xs);
+  for (size_t i = 0; i <= N; ++i) copy_short(xs + n * i, b + n * i * m, n);
   for (size_t e = 0; e < ng; ++e) g[e] = b[w->gcol[e]];
   /* back substitution of the interiors (in place in c's interior entries) */
   for (size_t i = 0; i < N; ++i) {
-    memset(yb, 0, (2 * n + ng) * sizeof *yb);
+    zero_short(yb, 2 * n + ng);
     gepp_back_t(w->W + i * wr * wc, wc, ni, 2 * n + ng, b + n * (i * m + 1),
                 w->loc + i * wr, yb);
     for (size_t q = 0; q < 2 * n; ++q) xs[n * i + q] += yb[q];
@@ -748,7 +790,7 @@ static void solve1_t(cond_ws *w, double *b) {
   }
   /* back substitution of the mesh points, x_1 first */
   for (size_t j = 1; j < N; ++j) {
-    memset(yb, 0, (2 * n + ng) * sizeof *yb);
+    zero_short(yb, 2 * n + ng);
     gepp_back_t(w->P + (j - 1) * pr * pc, pc, n, 2 * n + ng, xs + n * j,
                 w->ploc + (j - 1) * pr, yb);
     for (size_t q = 0; q < n; ++q) {
@@ -759,20 +801,20 @@ static void solve1_t(cond_ws *w, double *b) {
   }
   /* 3. the final system: F^T */
   double *zb = w->tmp, *fb = zb + nf;
-  memcpy(zb, xs, n * sizeof *zb);
-  memcpy(zb + n, xs + n * N, n * sizeof *zb);
-  memcpy(zb + 2 * n, g, ng * sizeof *zb);
-  memset(fb, 0, nf * sizeof *fb);
+  copy_short(zb, xs, n);
+  copy_short(zb + n, xs + n * N, n);
+  copy_short(zb + 2 * n, g, ng);
+  zero_short(fb, nf);
   gepp_back_t(w->F, nf, nf, 0, zb, fb, NULL);
   gepp_forward_t(w->F, nf, nf, 0, nf, w->fpiv, fb);
   double *pl = w->ploc + (N - 2) * pr + n;
   for (size_t q = 0; q < n; ++q) pl[q] += fb[q];
-  memcpy(bb, fb + n + ne, nb * sizeof *bb);
+  copy_short(bb, fb + n + ne, nb);
   /* (fb + n holds the end rows' y until the end) */
   /* 2. the mesh points' forward eliminations, the last first */
   for (size_t j = N - 1; j >= 1; --j) {
     double *v = w->ploc + (j - 1) * pr;
-    memcpy(v + 2 * n, bb, nb * sizeof *v);
+    copy_short(v + 2 * n, bb, nb);
     gepp_forward_t(w->P + (j - 1) * pr * pc, pc, 2 * n, nb, n, w->ppiv + (j - 1) * n, v);
     double *src = j == 1 ? w->loc + ni : w->ploc + (j - 2) * pr + n;
     double *own = w->loc + j * wr + ni;
@@ -784,11 +826,11 @@ static void solve1_t(cond_ws *w, double *b) {
   /* 1. the intervals' forward eliminations: y's collocation rows */
   for (size_t i = 0; i < N; ++i) {
     double *v = w->loc + i * wr;
-    memcpy(v + nm, bb, nb * sizeof *v);
+    copy_short(v + nm, bb, nb);
     gepp_forward_t(w->W + i * wr * wc, wc, nm, nb, ni, w->wpiv + i * ni, v);
-    memcpy(b + n * i * m, v, nm * sizeof *b);
+    copy_short(b + n * i * m, v, nm);
   }
-  memcpy(b + nNm, fb + n, ne * sizeof *b);
+  copy_short(b + nNm, fb + n, ne);
   for (size_t t = 0; t < nb; ++t) b[w->blab[t]] = bb[t];
 }
 
@@ -797,10 +839,16 @@ int cond_solve_t(void *ws, double *b, size_t nrhs) {
 }
 
 int cond_logdet(void *ws, double *logabs, int *sign) {
-  const cond_ws *w = ws;
+  cond_ws *w = ws;
   if (w->state == 0) return WHIRL_EINVAL;
-  *logabs = w->state == 2 ? -INFINITY : w->logabs;
-  *sign = w->state == 2 ? 0 : w->sign;
+  if (w->state == 2) {
+    *logabs = -INFINITY;
+    *sign = 0;
+    return WHIRL_OK;
+  }
+  if (!w->sign_c) order_signs(w);
+  *logabs = w->logabs;
+  *sign = w->sign_f * w->sign_c;
   return WHIRL_OK;
 }
 
@@ -817,8 +865,8 @@ int cond_monodromy(cond_ws *w, double *M) {
   /* the block [S_N | S_0] (n x 2n, row-major); elimination of S_N carries
    * S_0 along (whole rows swapped and updated), so only U remains */
   for (size_t q = 0; q < n; ++q) {
-    memcpy(A + q * 2 * n, S + q * pc + 2 * n, n * sizeof *A);
-    memcpy(A + q * 2 * n + n, S + q * pc + n, n * sizeof *A);
+    copy_short(A + q * 2 * n, S + q * pc + 2 * n, n);
+    copy_short(A + q * 2 * n + n, S + q * pc + n, n);
     w->mlab[q] = (int)q;
   }
   int rc = gepp(A, 2 * n, n, 0, n, w->mpiv, w->mlab, &dt, NULL);
