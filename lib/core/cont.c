@@ -725,9 +725,10 @@ static int tangent_from_newton(whirl_cont *c, cont_state *st) {
   int rc = ext_solve(c, z, "tangent solve");
   if (rc) return rc;
   double zmax = 0.0, xmax = 0.0;
-  for (size_t i = 0; i < N; ++i) {
-    zmax = fmax(zmax, fabs(z[i]));
-    xmax = fmax(xmax, fabs(st->X[i]));
+  for (size_t i = 0; i < N; ++i) { /* comparisons, not fmax (a call an entry) */
+    const double az = fabs(z[i]), ax = fabs(st->X[i]);
+    if (az > zmax) zmax = az;
+    if (ax > xmax) xmax = ax;
   }
   if (!(zmax > 0) || !isfinite(zmax)) return 1;
   const double eps = cbrt(DBL_EPSILON) * (1.0 + xmax) / zmax;
@@ -1804,7 +1805,10 @@ static void emit_step_point(whirl_cont *c) {
   cont_state *b = &c->trial;
   const int is_end = c->stats.steps >= c->opt.nmx;
   double xm = 0.0;
-  for (size_t i = 0; i < c->n; ++i) xm = fmax(xm, fabs(b->X[i]));
+  for (size_t i = 0; i < c->n; ++i) { /* comparisons, not fmax (a call an entry) */
+    const double ax = fabs(b->X[i]);
+    if (ax > xm) xm = ax;
+  }
   const int xmax = c->opt.x_max > 0 && xm > c->opt.x_max;
   /* the point's stored direction (opt.point_dir): the one its step was
    * predicted along (kept in b->sec by predict_correct), or its step's

@@ -1014,11 +1014,16 @@ double whirl_bvp_l2norm(const whirl_bvp *b, const double *X) {
   return sqrt(s);
 }
 
+/* fmax and fmin (a number over a NaN) by comparisons: at -O2 each is a
+ * library call, once an entry of every point's maxima */
+static inline double max_num(double a, double b) { return b > a || a != a ? b : a; }
+static inline double min_num(double a, double b) { return b < a || a != a ? b : a; }
+
 int whirl_bvp_max(const whirl_bvp *b, const double *X, double *mx) {
   if (!b || !X || !mx) return WHIRL_EINVAL;
   for (size_t r = 0; r < b->n; ++r) mx[r] = X[r];
   for (size_t j = 1; j < b->nnodes; ++j)
-    for (size_t r = 0; r < b->n; ++r) mx[r] = fmax(mx[r], X[b->n * j + r]);
+    for (size_t r = 0; r < b->n; ++r) mx[r] = max_num(mx[r], X[b->n * j + r]);
   return WHIRL_OK;
 }
 
@@ -1054,8 +1059,8 @@ int whirl_bvp_moments(const whirl_bvp *b, const double *X, double *m1, double *m
   for (size_t r = 0; r < n; ++r) mn[r] = mx[r] = X[r];
   for (size_t j = 1; j < b->nnodes; ++j)
     for (size_t r = 0; r < n; ++r) {
-      mn[r] = fmin(mn[r], X[n * j + r]);
-      mx[r] = fmax(mx[r], X[n * j + r]);
+      mn[r] = min_num(mn[r], X[n * j + r]);
+      mx[r] = max_num(mx[r], X[n * j + r]);
     }
   if (v != u) free(v);
   return WHIRL_OK;
