@@ -121,7 +121,9 @@ static void bvp_end_row(cond_ws *w, size_t e, double *a) {
 }
 
 static const cond_ops bvp_ops = {NULL,           bvp_border,   bvp_end_row,
-                                 bvp_fill_begin, bvp_fill_one, bvp_fill_end};
+                                 bvp_fill_begin, bvp_fill_one, bvp_fill_end,
+                                 NULL}; /* the integral rows: filled with
+                                         * the intervals, summed after */
 
 static void bs_free(void *ws) {
   if (!ws) return;

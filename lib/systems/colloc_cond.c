@@ -101,6 +101,13 @@ static const double *colloc_border(cond_ws *w, size_t t, const double *r,
   return r;
 }
 
+/* The phase condition's node entries, fixed by the reference between
+ * factorisations: eliminated in the loop over the intervals. */
+static const double *colloc_border_early(cond_ws *w, size_t t) {
+  const whirl_colloc *c = cond_sys(w);
+  return c->aut && t == 0 ? c->phase : NULL;
+}
+
 /* Periodicity x_N − x_0 (the rotations are constants). */
 static void colloc_end_row(cond_ws *w, size_t e, double *a) {
   const whirl_colloc *c = cond_sys(w);
@@ -112,7 +119,8 @@ static void colloc_end_row(cond_ws *w, size_t e, double *a) {
 }
 
 static const cond_ops colloc_ops = {NULL,           colloc_border,   colloc_end_row,
-                                    colloc_fill_begin, colloc_fill_one, NULL};
+                                    colloc_fill_begin, colloc_fill_one, NULL,
+                                    colloc_border_early};
 
 static void *bs_alloc(void *data) {
   whirl_colloc *c = data;

@@ -104,10 +104,11 @@ struct cond_ws {
   int *slab;     /* n: M's rows of the n rows left after step 2 */
   double *mblk;  /* 2n^2 + 2n: the monodromy matrix */
   int *mpiv, *mlab; /* n each */
-  const double *r_src; /* the core's border row r (the last border row), whose
-                        * interior entries each interval eliminates in the
-                        * loop that condenses it (cond_factor), or NULL */
-  int r_done;    /* its intervals' part done by that loop */
+  const double **bsrc; /* nb: the border rows whose interior entries each
+                        * interval eliminates in the loop that condenses it
+                        * (cond_factor: the core's r, the last, and the
+                        * system's border_early rows), else NULL */
+  unsigned char *bdone; /* nb: the row's intervals' part done by that loop */
   det_acc det;   /* product of all the pivots */
   double logabs; /* log|det M| and its sign, when factored: */
   int sign_f;    /* the sign of the pivots' product and of the final
@@ -121,7 +122,7 @@ void cond_free(cond_ws *w) {
                w->B,    w->F,    w->fpiv, w->lab,  w->prow, w->pcol, w->mark,
                w->fk,   w->work, w->loc,  w->ploc, w->xs,   w->bb,   w->tmp,
                w->Xf,   w->pf,   w->slab, w->mblk, w->mpiv, w->mlab,
-               w->idet, w->irc,  w->frc,  w->ysc};
+               w->idet, w->irc,  w->frc,  w->ysc,  w->bsrc, w->bdone};
   for (size_t i = 0; i < sizeof p / sizeof *p; ++i) free(p[i]);
   free(w);
 }
@@ -187,13 +188,15 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
   w->mpiv = malloc(n * sizeof *w->mpiv);
   w->mlab = malloc(n * sizeof *w->mlab);
   w->ysc = malloc(nth * w->nf * sizeof *w->ysc);
+  w->bsrc = calloc(w->nb, sizeof *w->bsrc);
+  w->bdone = calloc(w->nb, sizeof *w->bdone);
   w->nth_last = 1;
   if (!w->gcol || !w->blab || !w->W || !w->wpiv || !w->wlab || !w->P ||
       !w->ppiv || !w->B || !w->F || !w->fpiv || !w->lab || !w->prow ||
       !w->pcol || !w->mark || !w->fk || !w->work || !w->loc || !w->ploc ||
       !w->xs || !w->bb || !w->tmp || !w->Xf || !w->pf || !w->slab ||
       !w->mblk || !w->mpiv || !w->mlab || !w->idet || !w->irc ||
-      !w->frc || !w->ysc) {
+      !w->frc || !w->ysc || !w->bsrc || !w->bdone) {
     cond_free(w);
     return NULL;
   }
@@ -469,7 +472,9 @@ static int condense_intervals(cond_ws *w, const double *X, const double *p,
     const int t = whirl_thread_num();
     w->frc[i] = ops->fill_one ? ops->fill_one(w, X, p, k, mode, i, t) : 0;
     w->irc[i] = w->frc[i] ? 0 : condense_interval(w, i, w->lab + w->nlab * (size_t)t);
-    if (w->r_src && !w->frc[i] && !w->irc[i]) border_interval(w, w->nb - 1, w->r_src, i);
+    if (!w->frc[i] && !w->irc[i])
+      for (size_t b = 0; b < w->nb; ++b)
+        if (w->bsrc[b]) border_interval(w, b, w->bsrc[b], i);
   }
   whirl_gov_end(&w->gov);
   size_t bad = 0;
@@ -485,7 +490,7 @@ static int condense_intervals(cond_ws *w, const double *X, const double *p,
     if (w->irc[i] == 1) return singular(w);
     det_times(&w->det_c, &w->idet[i]);
   }
-  w->r_done = w->r_src != NULL;
+  for (size_t b = 0; b < w->nb; ++b) w->bdone[b] = w->bsrc[b] != NULL;
   w->npiv_c = N * w->ni;
   return 0;
 }
@@ -579,14 +584,14 @@ static int factor_rows(cond_ws *w, const double *X, const double *p, size_t k,
 
 /* Border row t's entries on the mesh points and globals into Bt (bc),
  * with its interior entries eliminated by each interval (step 1; for the
- * core's r already in the loop of step 1 when r_done), summed in interval
+ * rows of bdone already in the loop of step 1), summed in interval
  * order. */
 static void reduce_border_intervals(cond_ws *w, size_t t, const double *r) {
   const size_t n = w->n, m = w->m, N = w->N, ni = w->ni, nm = w->nm,
                ng = w->ng, wc = w->wc;
   double *Bt = w->B + t * w->bc;
   const double *src = w->ops->border(w, t, r, Bt + n * (N + 1));
-  const int done = w->r_done && t == w->nb - 1;
+  const int done = w->bdone[t];
   for (size_t i = 0; i <= N; ++i)
     for (size_t q = 0; q < n; ++q) Bt[n * i + q] = src[n * (i * m) + q];
   for (size_t i = 0; i < N; ++i) {
@@ -661,11 +666,14 @@ static int factor_border(cond_ws *w, const double *r) {
 int cond_factor(void *ws, const double *X, const double *p, size_t k,
                 const double *r) {
   cond_ws *w = ws;
-  w->r_src = r; /* its intervals' part in step 1's loop */
+  /* the rows known now: their intervals' part in step 1's loop */
+  for (size_t t = 0; t + 1 < w->nb; ++t)
+    w->bsrc[t] = w->ops->border_early ? w->ops->border_early(w, t) : NULL;
+  w->bsrc[w->nb - 1] = r;
   int rc = factor_rows(w, X, p, k, COND_FILL_FULL);
-  w->r_src = NULL;
+  for (size_t t = 0; t < w->nb; ++t) w->bsrc[t] = NULL;
   if (rc == 0) rc = factor_border(w, r);
-  w->r_done = 0;
+  for (size_t t = 0; t < w->nb; ++t) w->bdone[t] = 0;
   return rc;
 }
 

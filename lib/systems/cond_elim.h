@@ -73,6 +73,12 @@ typedef struct cond_ops {
    * interval whose fill_one failed and its status (the system's message).
    * Returns 0 or the status to report. */
   int (*fill_end)(cond_ws *w, size_t bad, int status);
+  /* Optional: border row t < nb − 1's node entries (as border() returns
+   * them) when they are the system's own and known before the fill (the
+   * phase condition of orbits, from its reference), else NULL.  Such rows
+   * are eliminated by each interval in the loop that condenses it, as the
+   * core's r is; border() must then return the same entries. */
+  const double *(*border_early)(cond_ws *w, size_t t);
 } cond_ops;
 
 typedef struct cond_shape {
