@@ -229,9 +229,9 @@ static inline void row_update(double *restrict a, const double *restrict u,
 
 /* d[k] = s[k] and d[k] = 0, k < len: the short copies of the elimination
  * and the solves (n, 2n + ng or n NCOL entries, tens of thousands a
- * factorisation on a long mesh), inline: a call of memcpy or memset cost
- * more than such a copy (10 % of demo fnc's serial time).  Written in
- * pairs, which compilers do not turn back into those calls. */
+ * factorisation on a long mesh), inline: a call of memcpy or memset costs
+ * more than such a copy.  Written in pairs, which compilers do not turn
+ * back into those calls. */
 static inline void copy_short(double *restrict d, const double *restrict s, size_t len) {
   size_t k = 0;
   for (; k + 2 <= len; k += 2) {
@@ -543,7 +543,8 @@ static int eliminate_mesh_points(cond_ws *w) {
  * depends on the shape alone (the pivots permute rows): its sign is
  * counted once.  The row order's is counted when cond_logdet asks, once a
  * factor_rows: a cycle count over all nx + 1 rows, where a continuation
- * step factors three or four times and asks once (2 % of demo fnc). */
+ * step factors three or four times and asks once (1.5 % of demo fnc's
+ * last run on one thread). */
 static void order_signs(cond_ws *w) {
   const size_t n = w->n, nx = w->nx, nNm = n * w->N * w->m;
   size_t q = w->npiv_c;
