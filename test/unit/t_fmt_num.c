@@ -1,5 +1,6 @@
 /* test/unit/t_fmt_num.c — fmt_e and fmt_g (lib/util/fmt_num.h) write what
- * snprintf's "%.*e" and "%.*g" write, byte for byte, for precisions 0..12:
+ * snprintf's "%.*e" and "%.*g" write, byte for byte, for precisions 0..17
+ * (e to 16; 14 to 17 digits by the long double path where it has one):
  * on random doubles of every exponent, on numbers at and next to ties of
  * the last digit (where the fast path must hand over to snprintf), on the
  * special values, and where rounding carries into a new exponent.
@@ -27,8 +28,9 @@ static char first_bad[160];
 
 static void compare(double x) {
   char a[64], b[64];
-  for (int p = 0; p <= 12; p++) {
+  for (int p = 0; p <= 17; p++) {
     for (int g = 0; g < 2; g++) {
+      if (!g && p > 16) continue;
       const int la = g ? fmt_g(a, sizeof a, x, p) : fmt_e(a, sizeof a, x, p);
       const int lb = snprintf(b, sizeof b, g ? "%.*g" : "%.*e", p, x);
       compared++;
@@ -52,8 +54,11 @@ static double random_double(int mode) {
     return ldexp((double)(r >> 11), -53) * pow(10.0, (int)(next() % 40) - 20);
   case 2: /* a digit string ending in 5: a tie at some precision */
     return ((double)(r % 100000000000ull) + 0.5) * pow(10.0, (int)(next() % 30) - 25);
-  default: /* dyadic numbers with short decimal expansions: exact ties */
+  case 3: /* dyadic numbers with short decimal expansions: exact ties */
     return ((double)(int64_t)(r % 2000001) - 1e6) / ldexp(1.0, (int)(next() % 30));
+  default: /* 31-bit fractions times a power of ten, another spread of
+            * mantissas for the long double path's 14 to 17 digits */
+    return ((double)(r % 2147483648ull) / 2147483648.0 - 0.5) * pow(10.0, (int)(next() % 30) - 15);
   }
 }
 
@@ -66,7 +71,7 @@ int main(void) {
   for (size_t i = 0; i < sizeof special / sizeof *special; i++) compare(special[i]);
   ok(mismatches == 0, "special values, carries and ties as snprintf (%ld compared)%s%s",
      compared, mismatches ? ": " : "", first_bad);
-  for (int mode = 0; mode < 4; mode++) {
+  for (int mode = 0; mode < 5; mode++) {
     mismatches = compared = 0;
     for (int i = 0; i < 15000; i++) {
       const double x = random_double(mode);
