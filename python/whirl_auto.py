@@ -586,7 +586,8 @@ class Runner:
         """OUT/b.runs and s.runs, whole after every run: each replaced at
         once (a temporary file renamed), never left half written."""
         for name, lines in (('b.runs', self.all_runs), ('s.runs', self.all_sols)):
-            _write_whole(os.path.join(self.top_out, name), ''.join(l + '\n' for l in lines))
+            text = '\n'.join(lines) + '\n' if lines else ''  # one join, not a line at a time
+            _write_whole(os.path.join(self.top_out, name), text)
 
     def _paths(self, name):
         return [os.path.join(self.out, '%s.%s' % (k, name)) for k in 'bsd']
@@ -594,7 +595,7 @@ class Runner:
     def write(self, bd, name, mode):
         bd = _as_bd(bd)
         paths = self._paths(name)
-        texts, runs = ['', '', ''], []
+        texts, parts, runs = ['', '', ''], [[], []], []
         for br in bd:
             d = os.path.join(br.runs or self.runs, 'd.%s' % br.run_id)
             if br.run_id and d not in runs:
@@ -604,11 +605,13 @@ class Runner:
                         texts[2] += f.read()
                 except OSError:
                     pass
-            texts[0] += ''.join(h + '\n' for h in br.header)
+            parts[0].extend(br.header)
             for row, sol in br.rows:
-                texts[0] += row + '\n'
+                parts[0].append(row)
                 if sol is not None and sol.block:
-                    texts[1] += ''.join(l + '\n' for l in sol.block)
+                    parts[1].extend(sol.block)
+        for i in (0, 1):  # one join each (a string grown a line at a time is quadratic)
+            texts[i] = '\n'.join(parts[i]) + '\n' if parts[i] else ''
         for path, text in zip(paths, texts):
             if mode == 'a' and os.path.exists(path):
                 with open(path) as old:
