@@ -23,7 +23,7 @@
  * at 17 digits).  A fraction within 0.01 of 1/2 goes to snprintf, a margin
  * beyond that.
  * Where long double is no wider than double, or its arithmetic is not
- * (an x87 precision control set to 53 bits, checked once), those
+ * (an x87 precision control set to 53 bits, checked at each call), those
  * precisions go to snprintf.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include "util/fmt_num.h"
@@ -81,14 +81,12 @@ static const long double pow10_exact_ld[28] = {
     1e10L, 1e11L, 1e12L, 1e13L, 1e14L, 1e15L, 1e16L, 1e17L, 1e18L, 1e19L,
     1e20L, 1e21L, 1e22L, 1e23L, 1e24L, 1e25L, 1e26L, 1e27L};
 
-/* 1 when long double arithmetic carries 64 bits here (1 + 2^-63 != 1) */
+/* 1 when long double arithmetic carries 64 bits here (1 + 2^-63 != 1):
+ * asked at each call (an addition; no static, so no race between
+ * threads that format numbers) */
 static int ld_is_wide(void) {
-  static int known = -1;
-  if (known < 0) {
-    volatile long double one = 1.0L, tiny = 0x1p-63L;
-    known = one + tiny != one;
-  }
-  return known;
+  volatile long double one = 1.0L, tiny = 0x1p-63L;
+  return one + tiny != one;
 }
 
 /* digits_of for 13 < D <= 17, in long double (see the head of the file) */
