@@ -10,6 +10,8 @@
 
 #include <whirl/problem.h>
 
+#include "util/short_copy.h"
+
 static int all_finite(const double *v, size_t n) {
   for (size_t i = 0; i < n; ++i)
     if (!isfinite(v[i])) return 0;
@@ -41,7 +43,7 @@ int whirl_fd_jac_x(const whirl_problem *prob, double t, const double *x,
     const double h = h0 * fmax(1.0, fabs(x[j]));
     const double xp = x[j] + h, xm = x[j] - h;
     int rc;
-    memcpy(xc, x, n * sizeof *xc);
+    whirl_copy_short(xc, x, n);
     xc[j] = xp;
     if ((rc = eval_rhs(prob, t, xc, p, fp)) != 0) return rc;
     xc[j] = xm;

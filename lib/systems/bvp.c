@@ -21,6 +21,7 @@
 #include <whirl/colloc.h>
 
 #include "bvp_impl.h"
+#include "util/short_copy.h"
 #include "util/threads_impl.h"
 
 void whirl_bvp_options_default(whirl_bvp_options *o) {
@@ -120,10 +121,10 @@ static int model_fp(const whirl_bvp *b, bvp_scratch *s, double t, const double *
   int rc;
   if (pr->jac_p) {
     if ((rc = pr->jac_p(t, s->u, p, s->Jpar, pr->data)) != 0) return rc;
-    memcpy(out, s->Jpar + n * k, n * sizeof *out);
+    whirl_copy_short(out, s->Jpar + n * k, n);
     return 0;
   }
-  memcpy(s->pq, p, b->npar * sizeof *s->pq);
+  whirl_copy_short(s->pq, p, b->npar);
   const double hp = fd_step(p[k]);
   s->pq[k] = p[k] + hp;
   const double up = s->pq[k];
@@ -145,7 +146,7 @@ static int model_fp_forward(const whirl_bvp *b, bvp_scratch *s, double t, const 
                             size_t k, const double *f0, double *out) {
   const whirl_problem *pr = b->prob;
   if (pr->jac_p) return model_fp(b, s, t, p, k, out);
-  memcpy(s->pq, p, b->npar * sizeof *s->pq);
+  whirl_copy_short(s->pq, p, b->npar);
   s->pq[k] = p[k] + auto_step(p[k]);
   const double dp = s->pq[k] - p[k];
   const int rc = pr->rhs(t, s->u, s->pq, s->f, pr->data);

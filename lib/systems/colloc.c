@@ -25,6 +25,7 @@
 
 #include "colloc_basis.h"
 #include "colloc_impl.h"
+#include "util/short_copy.h"
 #include "util/threads_impl.h"
 #include <whirl/linsol.h>
 
@@ -226,7 +227,7 @@ static int free_param_column(const whirl_colloc *c, colloc_scratch *s,
     for (size_t r = 0; r < n; ++r) dT[r] = -h * T * s->Jpar[r + n * q];
     return 0;
   }
-  memcpy(s->pw, p, pr->npar * sizeof *s->pw);
+  whirl_copy_short(s->pw, p, pr->npar);
   const double hp = cbrt(DBL_EPSILON) * fmax(1.0, fabs(p[q]));
   s->pw[q] = p[q] + hp;
   const double up = s->pw[q];
@@ -326,7 +327,7 @@ int colloc_fk_rows(const whirl_colloc *c, colloc_scratch *s, const double *X,
     for (size_t rr = 0; rr < n; ++rr) fr[rr] = -hT * s->Jpar[rr + n * k];
     return 0;
   }
-  memcpy(s->pw, p, pr->npar * sizeof *s->pw);
+  whirl_copy_short(s->pw, p, pr->npar);
   if (c->fq >= 0) s->pw[c->fq] = X[c->nx - 1];
   const double pk = s->pw[k], hp = cbrt(DBL_EPSILON) * fmax(1.0, fabs(pk));
   s->pw[k] = pk + hp;

@@ -45,6 +45,7 @@
 #include <whirl/status.h>
 
 #include "cond_elim.h"
+#include "util/short_copy.h"
 #include "util/threads_impl.h"
 
 typedef cond_det det_acc;
@@ -225,29 +226,6 @@ static inline void row_update(double *restrict a, const double *restrict u,
     a[k + 3] -= l * u[k + 3];
   }
   for (; k < len; ++k) a[k] -= l * u[k];
-}
-
-/* d[k] = s[k] and d[k] = 0, k < len: the short copies of the elimination
- * and the solves (n, 2n + ng or n NCOL entries, tens of thousands a
- * factorisation on a long mesh), inline: a call of memcpy or memset costs
- * more than such a copy.  Written in pairs, which compilers do not turn
- * back into those calls. */
-static inline void copy_short(double *restrict d, const double *restrict s, size_t len) {
-  size_t k = 0;
-  for (; k + 2 <= len; k += 2) {
-    d[k] = s[k];
-    d[k + 1] = s[k + 1];
-  }
-  if (k < len) d[k] = s[k];
-}
-
-static inline void zero_short(double *d, size_t len) {
-  size_t k = 0;
-  for (; k + 2 <= len; k += 2) {
-    d[k] = 0.0;
-    d[k + 1] = 0.0;
-  }
-  if (k < len) d[k] = 0.0;
 }
 
 static void det_mul(det_acc *d, double v) {
@@ -433,8 +411,8 @@ static void border_interval(cond_ws *w, size_t t, const double *src, size_t i) {
   const size_t n = w->n, m = w->m, ni = w->ni, wc = w->wc;
   double *Wi = w->W + i * w->wr * wc;
   double *a = Wi + (w->nm + t) * wc;
-  copy_short(a, src + n * (i * m + 1), ni);
-  zero_short(a + ni, 2 * n + w->ng);
+  whirl_copy_short(a, src + n * (i * m + 1), ni);
+  whirl_zero_short(a + ni, 2 * n + w->ng);
   border_eliminate(Wi, wc, ni, a);
 }
 
@@ -506,22 +484,22 @@ static int eliminate_mesh_points(cond_ws *w) {
       double *a = Pj + q * pc;
       if (j == 1) {
         const double *s = cond_rows(w, 0) + q * wc; /* [x_0 | x_1 | g] */
-        copy_short(a, s + n, n);
-        copy_short(a + n, s, n);
-        copy_short(a + 3 * n, s + 2 * n, ng);
+        whirl_copy_short(a, s + n, n);
+        whirl_copy_short(a + n, s, n);
+        whirl_copy_short(a + 3 * n, s + 2 * n, ng);
       } else {
         const double *s = w->P + (j - 2) * w->pr * pc + (n + q) * pc;
-        copy_short(a, s + 2 * n, n); /* x_j */
-        copy_short(a + n, s + n, n); /* x_0 */
-        copy_short(a + 3 * n, s + 3 * n, ng);
+        whirl_copy_short(a, s + 2 * n, n); /* x_j */
+        whirl_copy_short(a + n, s + n, n); /* x_0 */
+        whirl_copy_short(a + 3 * n, s + 3 * n, ng);
       }
-      zero_short(a + 2 * n, n);
+      whirl_zero_short(a + 2 * n, n);
       const double *s = cond_rows(w, j) + q * wc; /* [x_j | x_{j+1} | g] */
       double *b = Pj + (n + q) * pc;
-      copy_short(b, s, n);
-      zero_short(b + n, n);
-      copy_short(b + 2 * n, s + n, n);
-      copy_short(b + 3 * n, s + 2 * n, ng);
+      whirl_copy_short(b, s, n);
+      whirl_zero_short(b + n, n);
+      whirl_copy_short(b + 2 * n, s + n, n);
+      whirl_copy_short(b + 3 * n, s + 2 * n, ng);
       w->lab[n + q] = w->wlab[j * n + q];
     }
     int rc = gepp(Pj, pc, 2 * n, 0, n, w->ppiv + (j - 1) * n, w->lab, &w->det_c, NULL);
@@ -622,14 +600,14 @@ static int factor_border(cond_ws *w, const double *r) {
     double *Pj = w->P + (j - 1) * w->pr * pc;
     for (size_t t = 0; t < nb; ++t) {
       double *a = Pj + (2 * n + t) * pc, *Bt = w->B + t * bc;
-      copy_short(a, Bt + n * j, n);
-      copy_short(a + n, Bt, n);
-      copy_short(a + 2 * n, Bt + n * (j + 1), n);
-      copy_short(a + 3 * n, Bt + n * (N + 1), ng);
+      whirl_copy_short(a, Bt + n * j, n);
+      whirl_copy_short(a + n, Bt, n);
+      whirl_copy_short(a + 2 * n, Bt + n * (j + 1), n);
+      whirl_copy_short(a + 3 * n, Bt + n * (N + 1), ng);
       border_eliminate(Pj, pc, n, a);
-      copy_short(Bt, a + n, n);
-      copy_short(Bt + n * (j + 1), a + 2 * n, n);
-      copy_short(Bt + n * (N + 1), a + 3 * n, ng);
+      whirl_copy_short(Bt, a + n, n);
+      whirl_copy_short(Bt + n * (j + 1), a + 2 * n, n);
+      whirl_copy_short(Bt + n * (N + 1), a + 3 * n, ng);
     }
   }
   /* 3. the final system in [x_0 | x_N | g] */
@@ -638,7 +616,7 @@ static int factor_border(cond_ws *w, const double *r) {
   const size_t nNm = n * N * w->m;
   memset(F, 0, nf * nf * sizeof *F);
   for (size_t q = 0; q < n; ++q) {
-    copy_short(F + q * nf, S + q * pc + n, 2 * n + ng);
+    whirl_copy_short(F + q * nf, S + q * pc + n, 2 * n + ng);
     w->lab[q] = w->slab[q];
   }
   for (size_t e = 0; e < w->ne; ++e) {
@@ -648,9 +626,9 @@ static int factor_border(cond_ws *w, const double *r) {
   for (size_t t = 0; t < nb; ++t) {
     double *a = F + (n + w->ne + t) * nf;
     const double *Bt = w->B + t * bc;
-    copy_short(a, Bt, n);
-    copy_short(a + n, Bt + n * N, n);
-    copy_short(a + 2 * n, Bt + n * (N + 1), ng);
+    whirl_copy_short(a, Bt, n);
+    whirl_copy_short(a + n, Bt + n * N, n);
+    whirl_copy_short(a + 2 * n, Bt + n * (N + 1), ng);
     w->lab[n + w->ne + t] = w->blab[t];
   }
   int swaps = 0;
@@ -714,8 +692,8 @@ static void solve1(cond_ws *w, double *b) {
 #pragma omp parallel for num_threads(nth) schedule(static) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
     double *v = w->loc + i * wr;
-    copy_short(v, b + n * i * m, nm);
-    zero_short(v + nm, nb);
+    whirl_copy_short(v, b + n * i * m, nm);
+    whirl_zero_short(v + nm, nb);
     gepp_forward(w->W + i * wr * wc, wc, nm, nb, ni, w->wpiv + i * ni, v);
   }
   for (size_t i = 0; i < N; ++i)
@@ -724,40 +702,40 @@ static void solve1(cond_ws *w, double *b) {
   for (size_t j = 1; j < N; ++j) {
     double *v = w->ploc + (j - 1) * pr;
     const double *s = j == 1 ? w->loc + ni : w->ploc + (j - 2) * pr + n;
-    copy_short(v, s, n);
-    copy_short(v + n, w->loc + j * wr + ni, n);
+    whirl_copy_short(v, s, n);
+    whirl_copy_short(v + n, w->loc + j * wr + ni, n);
     for (size_t t = 0; t < nb; ++t) v[2 * n + t] = 0.0;
     gepp_forward(w->P + (j - 1) * pr * pc, pc, 2 * n, nb, n, w->ppiv + (j - 1) * n, v);
     for (size_t t = 0; t < nb; ++t) bb[t] += v[2 * n + t];
   }
   /* 3. */
   double *frp = w->tmp, *zp = frp + nf, *yp = zp + nf;
-  copy_short(frp, w->ploc + (N - 2) * pr + n, n);
-  copy_short(frp + n, b + n * N * m, w->ne);
-  copy_short(frp + n + w->ne, bb, nb);
+  whirl_copy_short(frp, w->ploc + (N - 2) * pr + n, n);
+  whirl_copy_short(frp + n, b + n * N * m, w->ne);
+  whirl_copy_short(frp + n + w->ne, bb, nb);
   gepp_forward(w->F, nf, nf, 0, nf, w->fpiv, frp);
   gepp_back(w->F, nf, nf, 0, frp, NULL, zp);
-  copy_short(xs, zp, n);
-  copy_short(xs + n * N, zp + n, n);
-  copy_short(g, zp + 2 * n, ng);
+  whirl_copy_short(xs, zp, n);
+  whirl_copy_short(xs + n * N, zp + n, n);
+  whirl_copy_short(g, zp + 2 * n, ng);
   /* back substitution: the mesh points, then the interiors */
   for (size_t j = N - 1; j >= 1; --j) {
-    copy_short(yp, xs, n);
-    copy_short(yp + n, xs + n * (j + 1), n);
-    copy_short(yp + 2 * n, g, ng);
+    whirl_copy_short(yp, xs, n);
+    whirl_copy_short(yp + n, xs + n * (j + 1), n);
+    whirl_copy_short(yp + 2 * n, g, ng);
     gepp_back(w->P + (j - 1) * pr * pc, pc, n, 2 * n + ng,
               w->ploc + (j - 1) * pr, yp, xs + n * j);
   }
 #pragma omp parallel for num_threads(nth) schedule(static) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
     double *y = w->ysc + (size_t)whirl_thread_num() * nf;
-    copy_short(y, xs + n * i, 2 * n);
-    copy_short(y + 2 * n, g, ng);
+    whirl_copy_short(y, xs + n * i, 2 * n);
+    whirl_copy_short(y + 2 * n, g, ng);
     gepp_back(w->W + i * wr * wc, wc, ni, 2 * n + ng, w->loc + i * wr, y,
               b + n * (i * m + 1));
-    copy_short(b + n * i * m, xs + n * i, n);
+    whirl_copy_short(b + n * i * m, xs + n * i, n);
   }
-  copy_short(b + n * N * m, xs + n * N, n);
+  whirl_copy_short(b + n * N * m, xs + n * N, n);
   for (size_t e = 0; e < ng; ++e) b[w->gcol[e]] = g[e];
 }
 
@@ -787,11 +765,11 @@ static void solve1_t(cond_ws *w, double *b) {
   memset(w->loc, 0, N * wr * sizeof *w->loc);
   memset(w->ploc, 0, (N - 1) * pr * sizeof *w->ploc);
   /* the outputs' adjoints: the mesh points and the globals */
-  for (size_t i = 0; i <= N; ++i) copy_short(xs + n * i, b + n * i * m, n);
+  for (size_t i = 0; i <= N; ++i) whirl_copy_short(xs + n * i, b + n * i * m, n);
   for (size_t e = 0; e < ng; ++e) g[e] = b[w->gcol[e]];
   /* back substitution of the interiors (in place in c's interior entries) */
   for (size_t i = 0; i < N; ++i) {
-    zero_short(yb, 2 * n + ng);
+    whirl_zero_short(yb, 2 * n + ng);
     gepp_back_t(w->W + i * wr * wc, wc, ni, 2 * n + ng, b + n * (i * m + 1),
                 w->loc + i * wr, yb);
     for (size_t q = 0; q < 2 * n; ++q) xs[n * i + q] += yb[q];
@@ -799,7 +777,7 @@ static void solve1_t(cond_ws *w, double *b) {
   }
   /* back substitution of the mesh points, x_1 first */
   for (size_t j = 1; j < N; ++j) {
-    zero_short(yb, 2 * n + ng);
+    whirl_zero_short(yb, 2 * n + ng);
     gepp_back_t(w->P + (j - 1) * pr * pc, pc, n, 2 * n + ng, xs + n * j,
                 w->ploc + (j - 1) * pr, yb);
     for (size_t q = 0; q < n; ++q) {
@@ -810,20 +788,20 @@ static void solve1_t(cond_ws *w, double *b) {
   }
   /* 3. the final system: F^T */
   double *zb = w->tmp, *fb = zb + nf;
-  copy_short(zb, xs, n);
-  copy_short(zb + n, xs + n * N, n);
-  copy_short(zb + 2 * n, g, ng);
-  zero_short(fb, nf);
+  whirl_copy_short(zb, xs, n);
+  whirl_copy_short(zb + n, xs + n * N, n);
+  whirl_copy_short(zb + 2 * n, g, ng);
+  whirl_zero_short(fb, nf);
   gepp_back_t(w->F, nf, nf, 0, zb, fb, NULL);
   gepp_forward_t(w->F, nf, nf, 0, nf, w->fpiv, fb);
   double *pl = w->ploc + (N - 2) * pr + n;
   for (size_t q = 0; q < n; ++q) pl[q] += fb[q];
-  copy_short(bb, fb + n + ne, nb);
+  whirl_copy_short(bb, fb + n + ne, nb);
   /* (fb + n holds the end rows' y until the end) */
   /* 2. the mesh points' forward eliminations, the last first */
   for (size_t j = N - 1; j >= 1; --j) {
     double *v = w->ploc + (j - 1) * pr;
-    copy_short(v + 2 * n, bb, nb);
+    whirl_copy_short(v + 2 * n, bb, nb);
     gepp_forward_t(w->P + (j - 1) * pr * pc, pc, 2 * n, nb, n, w->ppiv + (j - 1) * n, v);
     double *src = j == 1 ? w->loc + ni : w->ploc + (j - 2) * pr + n;
     double *own = w->loc + j * wr + ni;
@@ -835,11 +813,11 @@ static void solve1_t(cond_ws *w, double *b) {
   /* 1. the intervals' forward eliminations: y's collocation rows */
   for (size_t i = 0; i < N; ++i) {
     double *v = w->loc + i * wr;
-    copy_short(v + nm, bb, nb);
+    whirl_copy_short(v + nm, bb, nb);
     gepp_forward_t(w->W + i * wr * wc, wc, nm, nb, ni, w->wpiv + i * ni, v);
-    copy_short(b + n * i * m, v, nm);
+    whirl_copy_short(b + n * i * m, v, nm);
   }
-  copy_short(b + nNm, fb + n, ne);
+  whirl_copy_short(b + nNm, fb + n, ne);
   for (size_t t = 0; t < nb; ++t) b[w->blab[t]] = bb[t];
 }
 
@@ -874,8 +852,8 @@ int cond_monodromy(cond_ws *w, double *M) {
   /* the block [S_N | S_0] (n x 2n, row-major); elimination of S_N carries
    * S_0 along (whole rows swapped and updated), so only U remains */
   for (size_t q = 0; q < n; ++q) {
-    copy_short(A + q * 2 * n, S + q * pc + 2 * n, n);
-    copy_short(A + q * 2 * n + n, S + q * pc + n, n);
+    whirl_copy_short(A + q * 2 * n, S + q * pc + 2 * n, n);
+    whirl_copy_short(A + q * 2 * n + n, S + q * pc + n, n);
     w->mlab[q] = (int)q;
   }
   int rc = gepp(A, 2 * n, n, 0, n, w->mpiv, w->mlab, &dt, NULL);
