@@ -704,34 +704,20 @@ int cont_tangent(whirl_cont *c, cont_state *st, const double *dir) {
   return 0;
 }
 
-/* The tangent at the corrected point st from the corrector's last
- * factorisation, made at the iterate before the last correction (AUTO-07p
- * takes its direction vector and test functions from that factorisation
- * too).  z0 = A(X_k)⁻¹ e_N is off by O(|X − X_k|) ≤ newton_tol; one step
- * of iterative refinement against the residual at X, its first n rows the
- * directional derivative [F_x F_p] z0 by a central difference (two
- * evaluations of F instead of a Jacobian and a factorisation), leaves
- * O(|X − X_k|²) and the difference's truncation error.  The determinant's
- * sign and log|det| are those of the iterate's factorisation: a zero of a
- * test function within |X − X_k| of X moves by as much, and a located
- * special point is analysed afresh (locate.c).  1 (a fresh analysis
- * wanted) when the factorisation is not the corrector's last. */
-static int tangent_from_newton(whirl_cont *c, cont_state *st) {
+/* One step of iterative refinement of the tangent z at st (solved with
+ * the factorisation of the iterate X_k before the last correction, off by
+ * O(|X − X_k|)) against the residual at X: its first n rows the
+ * directional derivative [F_x F_p] z by a central difference (two
+ * evaluations of F instead of a Jacobian and a factorisation), which
+ * leaves O(|X − X_k|²) and the difference's truncation error.  zmax and
+ * xmax: max |z_i| and max |X_i|.  0, 1 (an evaluation failed: a fresh
+ * analysis wanted), < 0 fatal. */
+static int refine_tangent(whirl_cont *c, cont_state *st, double *z, double zmax,
+                          double xmax) {
   const size_t n = c->n, N = c->N, icp = c->opt.icp;
-  if (!c->fact_ok || c->opt.newton_chord) return 1;
-  double *z = st->t, *Xe = c->work, *fm = c->work + N, *r = c->rhs;
-  memset(z, 0, N * sizeof *z);
-  z[n] = 1.0;
-  int rc = ext_solve(c, z, "tangent solve");
-  if (rc) return rc;
-  double zmax = 0.0, xmax = 0.0;
-  for (size_t i = 0; i < N; ++i) { /* comparisons, not fmax (a call an entry) */
-    const double az = fabs(z[i]), ax = fabs(st->X[i]);
-    if (az > zmax) zmax = az;
-    if (ax > xmax) xmax = ax;
-  }
-  if (!(zmax > 0) || !isfinite(zmax)) return 1;
+  double *Xe = c->work, *fm = c->work + N, *r = c->rhs;
   const double eps = cbrt(DBL_EPSILON) * (1.0 + xmax) / zmax;
+  int rc = 0;
   for (int side = 0; side < 2; ++side) {
     const double e = side ? -eps : eps;
     for (size_t i = 0; i < N; ++i) Xe[i] = st->X[i] + e * z[i];
@@ -748,6 +734,36 @@ static int tangent_from_newton(whirl_cont *c, cont_state *st) {
   r[n] = 1.0 - rz;
   if ((rc = ext_solve(c, r, "tangent refinement")) != 0) return rc;
   for (size_t i = 0; i < N; ++i) z[i] += r[i];
+  return 0;
+}
+
+/* The tangent at the corrected point st from the corrector's last
+ * factorisation, made at the iterate before the last correction (AUTO-07p
+ * takes its direction vector and test functions from that factorisation
+ * too, FNLPBV and STDRBV): z0 = A(X_k)⁻¹ e_N, off by O(|X − X_k|) ≤
+ * newton_tol, refined once (refine_tangent) unless tangent_from_newton
+ * is 2 (AUTO's z0 as it is).  The determinant's sign and log|det| are
+ * those of the iterate's factorisation: a zero of a test function within
+ * |X − X_k| of X moves by as much, and a located special point is
+ * analysed afresh (locate.c).  1 (a fresh analysis wanted) when the
+ * factorisation is not the corrector's last. */
+static int tangent_from_newton(whirl_cont *c, cont_state *st) {
+  const size_t n = c->n, N = c->N;
+  if (!c->fact_ok || c->opt.newton_chord) return 1;
+  double *z = st->t;
+  memset(z, 0, N * sizeof *z);
+  z[n] = 1.0;
+  int rc = ext_solve(c, z, "tangent solve");
+  if (rc) return rc;
+  double zmax = 0.0, xmax = 0.0;
+  for (size_t i = 0; i < N; ++i) { /* comparisons, not fmax (a call an entry) */
+    const double az = fabs(z[i]), ax = fabs(st->X[i]);
+    if (az > zmax) zmax = az;
+    if (ax > xmax) xmax = ax;
+  }
+  if (!(zmax > 0) || !isfinite(zmax)) return 1;
+  if (c->opt.tangent_from_newton != 2 && (rc = refine_tangent(c, st, z, zmax, xmax)) != 0)
+    return rc;
   const double nz = cont_norm(c, z);
   if (!(nz > 0) || !isfinite(nz)) return 1;
   for (size_t i = 0; i < N; ++i) z[i] /= nz;

@@ -202,8 +202,10 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
    * every iteration */
   o->newton_full = b->kind == WHIRL_SOL_EQ && s->eq_sphere ? 0 : s->nwtn;
   /* the tangent and tests from the corrector's last factorisation, as
-   * AUTO: a Jacobian and a factorisation fewer a step */
-  o->tangent_from_newton = 1;
+   * AUTO: a Jacobian and a factorisation fewer a step; with TANGENT =
+   * iterate (whirl auto writes it) not refined, AUTO's direction vector:
+   * two evaluations of F and a solve fewer (doc/auto-reference.md) */
+  o->tangent_from_newton = s->tangent_iterate ? 2 : 1;
   /* AUTO's step control has no turn limit (ADPTDS counts Newton
    * iterations alone), and neither have run files since 2026-12-06: with
    * the stored secant of orbits and BVPs (whirl_point.dir) the 0.5 rad

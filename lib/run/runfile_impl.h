@@ -79,6 +79,10 @@ typedef struct whirl_run_settings {
   int udot_direction;           /* UDOT = direction: a BVP's integral
                                    conditions get the branch's direction as
                                    udot, AUTO's UDOT (0: u'(t)) */
+  int tangent_iterate;          /* TANGENT = iterate: a new point's tangent
+                                   is the corrector's last factorisation's
+                                   solve as it is, AUTO's direction vector
+                                   (0: refined once, whirl's) */
   int orbit_max_nodes;          /* ORBIT_MAX = nodes: an orbit's MAX U(i) is
                                    AUTO's, the largest node value (0: the
                                    maximum of the collocation polynomial) */

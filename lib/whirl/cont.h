@@ -158,7 +158,11 @@ typedef struct whirl_cont_options {
                             tangent refined once by a directional
                             derivative: a Jacobian and a factorisation
                             fewer a step, test functions off by at most
-                            newton_tol; located points analysed afresh */
+                            newton_tol; located points analysed afresh;
+                            2: as 1 without the refinement (AUTO-07p's
+                            own direction vector, FNLPBV: the tangent
+                            off by O(newton_tol) too; two evaluations of
+                            F and a solve fewer a step) */
   double natural_corrector; /* 0 (default): the corrector keeps to the
                             pseudo-arclength hyperplane; s in (0, 1]: where
                             the continuation parameter carries at least the

@@ -64,6 +64,9 @@ typedef enum whirl_run_key {
                            branch's direction, AUTO's UDOT (1) */
   WHIRL_RK_HB_PERIOD,   /* IPS 2 from an equilibrium label: a Hopf start with
                            the period this parameter holds (AUTO's TY = 'HBk') */
+  WHIRL_RK_TANGENT,     /* a new point's tangent from the corrector's last
+                           factorisation: refined once (0) or as it is,
+                           AUTO's direction vector (1) */
   WHIRL_RK_COUNT
 } whirl_run_key;
 

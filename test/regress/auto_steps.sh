@@ -231,8 +231,8 @@ check $? "DS past DSMAX: the first two steps at DS, then DSMAX, as AUTO's: PT 2,
 # the keys whirl auto writes, and the curve's maximum against the nodes'
 w="$tmp/bru.out/bru.2@HB1.whirl"
 grep -q '^MESH_RULE = jumps$' "$w" && grep -q '^ORBIT_MAX = nodes$' "$w" && grep -q '^EQ_STEP = sphere$' "$w" &&
-  grep -q '^DIFFERENCES = auto$' "$w" && grep -q '^UDOT = direction$' "$w"
-check $? "bru.2@HB1.whirl: MESH_RULE = jumps, ORBIT_MAX = nodes, EQ_STEP = sphere, DIFFERENCES = auto and UDOT = direction, AUTO's"
+  grep -q '^DIFFERENCES = auto$' "$w" && grep -q '^UDOT = direction$' "$w" && grep -q '^TANGENT = iterate$' "$w"
+check $? "bru.2@HB1.whirl: MESH_RULE = jumps, ORBIT_MAX = nodes, EQ_STEP = sphere, DIFFERENCES = auto, UDOT = direction and TANGENT = iterate, AUTO's"
 sed -e 's/^ORBIT_MAX = nodes$/ORBIT_MAX = curve/' -e 's|^OUT .*$|OUT = curve.out|' "$w" > "$tmp/bru.out/curve.whirl"
 (cd "$tmp/bru.out" && "$WHIRL" run curve.whirl --quiet --no-plot > /dev/null 2>&1)
 check $? "the same run with ORBIT_MAX = curve exits 0"
@@ -245,7 +245,8 @@ for kv in "ORBIT_MAX = sideways:ORBIT_MAX: 'sideways' is neither curve nor nodes
           "MESH_RULE = 2:MESH_RULE: '2' is neither derivative nor jumps" \
           "EQ_STEP = ball:EQ_STEP: 'ball' is neither tangent nor sphere" \
           "DIFFERENCES = forward:DIFFERENCES: 'forward' is neither central nor auto" \
-          "UDOT = sideways:UDOT: 'sideways' is neither derivative nor direction"; do
+          "UDOT = sideways:UDOT: 'sideways' is neither derivative nor direction" \
+          "TANGENT = exact:TANGENT: 'exact' is neither refined nor iterate"; do
   key=${kv%%:*} msg=${kv#*:}
   sed -e "s/^${key%% *} = .*\$/$key/" -e 's|^OUT .*$|OUT = bad.out|' "$w" > "$tmp/bru.out/bad.whirl"
   (cd "$tmp/bru.out" && "$WHIRL" run bad.whirl --quiet --no-plot > bad.log 2>&1)

@@ -882,14 +882,16 @@ static double bratu_tangent_error(const double *u, double p, const double *ref) 
 /* tangent_from_newton: the tangents of the regular points from the
  * corrector's last factorisation (at the iterate before the last
  * correction, a loose EPSL apart) against the exact tangent, the fold
- * (located afresh) as with fresh Jacobians, and a Jacobian fewer a step. */
+ * (located afresh) as with fresh Jacobians, and a Jacobian fewer a step;
+ * refined (1) to far below EPSL, as it is (2, AUTO's direction vector)
+ * within EPSL and with two evaluations of F fewer a step. */
 static void test_tangent_from_newton(void) {
   whirl_system s = {.name = "bratu", .n = BRATU_M, .npar = 1, .F = bratu_F,
                     .Fx = bratu_Fx, .Fp = bratu_Fp};
   whirl_cont_options o;
-  double lp[2] = {NAN, NAN}, worst = 0.0;
-  size_t jac[2] = {0, 0}, steps[2] = {0, 0};
-  for (int reuse = 0; reuse < 2; ++reuse) {
+  double lp[3] = {NAN, NAN, NAN}, worst[3] = {0.0, 0.0, 0.0};
+  size_t jac[3] = {0}, steps[3] = {0}, fev[3] = {0};
+  for (int reuse = 0; reuse < 3; ++reuse) {
     whirl_cont_options_default(&o);
     o.ds = 0.1;
     o.ds_max = 0.3;
@@ -906,20 +908,29 @@ static void test_tangent_from_newton(void) {
       const whirl_point *pt = whirl_cont_point(c);
       if (pt->type == WHIRL_PT_LP) lp[reuse] = pt->p[0];
       if (reuse && pt->type == WHIRL_PT_REGULAR && fabs(pt->t[BRATU_M]) > 0.05)
-        worst = fmax(worst, bratu_tangent_error(pt->x, pt->p[0], pt->t));
+        worst[reuse] = fmax(worst[reuse], bratu_tangent_error(pt->x, pt->p[0], pt->t));
     }
     if (c) {
       jac[reuse] = whirl_cont_get_stats(c)->jac_evals;
       steps[reuse] = whirl_cont_get_stats(c)->steps;
+      fev[reuse] = whirl_cont_get_stats(c)->f_evals;
     }
     whirl_cont_free(c);
   }
-  ok(worst > 0 && worst < 1e-9,
-     "tangent_from_newton: regular tangents = the exact tangent (max diff %.2e)", worst);
+  ok(worst[1] > 0 && worst[1] < 1e-9,
+     "tangent_from_newton: regular tangents = the exact tangent (max diff %.2e)", worst[1]);
   is_rel(lp[1], lp[0], 1e-12, "tangent_from_newton: the fold as with fresh Jacobians");
   ok(steps[1] > 10 && jac[1] + steps[1] / 2 < jac[0],
      "tangent_from_newton: %zu Jacobians against %zu (%zu and %zu steps)", jac[1],
      jac[0], steps[1], steps[0]);
+  /* unrefined: off by O(|X - X_k|) <= newton_tol, more than refined */
+  ok(worst[2] > 10 * worst[1] && worst[2] < 1e-5,
+     "tangent_from_newton = 2: tangents within EPSL of the exact one (%.2e, refined %.2e)",
+     worst[2], worst[1]);
+  is_rel(lp[2], lp[0], 1e-12, "tangent_from_newton = 2: the fold as with fresh Jacobians");
+  ok(steps[2] == steps[1] && jac[2] == jac[1] && fev[2] + 2 * steps[2] <= fev[1],
+     "tangent_from_newton = 2: %zu F evaluations against %zu, the same %zu Jacobians "
+     "(%zu and %zu steps)", fev[2], fev[1], jac[2], steps[2], steps[1]);
 }
 
 /* AUTO-07p demo enz's equations (two coupled enzyme compartments, p =
