@@ -435,10 +435,12 @@ static void border_row(const whirl_cont *c, const double *dir, double *row) {
 
 /* Evaluate the Jacobian at (x, p) and factor [F_x F_p; r^T] with r the
  * weighted direction dir: by the system's structured solver, or by the
- * general (dense or sparse) LU of the assembled matrix.  Returns 0, 2 for a
- * recoverable model failure, 3 for a singular matrix, < 0 fatal. */
-static int jac_factor(whirl_cont *c, const double *x, const double *p,
-                      const double *dir) {
+ * general (dense or sparse) LU of the assembled matrix; with f (a
+ * structured solver with factor_F only), F(x, p) into f from the same
+ * evaluations.  Returns 0, 2 for a recoverable model failure, 3 for a
+ * singular matrix, < 0 fatal. */
+static int jac_factor_F(whirl_cont *c, const double *x, const double *p,
+                        const double *dir, double *f) {
   border_row(c, dir, c->row);
   int rc;
   c->fact_ok = 0;
@@ -447,7 +449,8 @@ static int jac_factor(whirl_cont *c, const double *x, const double *p,
   if (c->bs) {
     ++c->stats.jac_evals;
     ++c->stats.factorizations;
-    rc = c->bs->factor(c->bws, x, p, c->opt.icp, c->row);
+    rc = f ? c->bs->factor_F(c->bws, x, p, c->opt.icp, c->row, f)
+           : c->bs->factor(c->bws, x, p, c->opt.icp, c->row);
     if (rc == WHIRL_OK) return c->fact_ok = 1, 0;
     if (rc == WHIRL_ESINGULAR) return 3;
     return classify(c, rc, "structured factorisation of the extended Jacobian");
@@ -460,6 +463,11 @@ static int jac_factor(whirl_cont *c, const double *x, const double *p,
   if (rc == WHIRL_ESINGULAR) return 3;
   return WHIRL_FAIL(c, rc, "factorisation of the extended Jacobian: %s",
                     whirl_bordered_errmsg(c->bd));
+}
+
+static int jac_factor(whirl_cont *c, const double *x, const double *p,
+                      const double *dir) {
+  return jac_factor_F(c, x, p, dir, NULL);
 }
 
 /* Chord Newton: the held F_x and F_p with the border row row2, when that
@@ -517,6 +525,33 @@ int cont_solve_ext(whirl_cont *c, double *b, int trans) {
  * chord_theta per iteration, and made anew at the current iterate when
  * they do not (AUTO-07p freezes the Jacobian after NWTN iterations in the
  * same spirit).  Its iterations are cheap: F and one solve. */
+/* F at the iterate (X, p) into c->f, a failure classified as the
+ * corrector's. */
+static int eval_F(whirl_cont *c, const double *X, const double *p) {
+  const int rc = whirl_system_eval(&c->sys, X, p, c->f);
+  ++c->stats.f_evals;
+  return classify(c, rc, "F");
+}
+
+/* After jac_factor_F made F with the Jacobian (status rc): the corrector's
+ * status as if F had been evaluated first, as eval_F and then jac_factor
+ * would return.  A failed factorisation evaluates F alone, whose failure
+ * is then the one reported; F made but not finite is eval_F's failure. */
+static int fused_F_status(whirl_cont *c, const double *X, const double *p, int rc) {
+  if (rc != 0) {
+    const int rf = eval_F(c, X, p);
+    return rf != 0 ? rf : rc;
+  }
+  ++c->stats.f_evals;
+  ++c->stats.f_fused;
+  for (size_t i = 0; i < c->n; ++i)
+    if (!isfinite(c->f[i])) {
+      c->fact_ok = 0;
+      return classify(c, WHIRL_EBADFUNC, "F");
+    }
+  return 0;
+}
+
 int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
                  double *X) {
   const size_t n = c->n, N = c->N;
@@ -539,22 +574,26 @@ int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
   }
   for (int it = 1; it <= c->opt.newton_maxit; ++it) {
     p[c->opt.icp] = X[n];
-    int rc = whirl_system_eval(&c->sys, X, p, c->f);
-    ++c->stats.f_evals;
-    if ((rc = classify(c, rc, "F")) != 0) return rc;
+    /* AUTO's NWTN: a new Jacobian at the first iterations only */
+    if (!chord && (c->opt.newton_full <= 0 || it <= c->opt.newton_full)) fresh = 1;
+    /* F from the new Jacobian's own evaluations where the structured
+     * solver makes it (factor_F), else evaluated first */
+    const int fused = fresh && c->bs && c->bs->factor_F;
+    int rc = 0;
+    if (!fused && (rc = eval_F(c, X, p)) != 0) return rc;
     if (sphere) {
       for (size_t i = 0; i < N; ++i) c->sph[i] = 2.0 * (X[i] - X0[i]) / s;
       dir = c->sph;
       border_row(c, dir, c->row2);
     }
-    /* AUTO's NWTN: a new Jacobian at the first iterations only */
-    if (!chord && (c->opt.newton_full <= 0 || it <= c->opt.newton_full)) fresh = 1;
     if (!fresh && (rc = reborder(c)) == 4) fresh = 1;
     else if (rc != 0) return rc;
     if (fresh) {
+      rc = jac_factor_F(c, X, p, dir, fused ? c->f : NULL);
+      if (fused) rc = fused_F_status(c, X, p, rc);
       /* singular at a later iterate: Newton has wandered off onto a
        * singular point, a failure to converge, not a singular start */
-      if ((rc = jac_factor(c, X, p, dir)) != 0) return rc == 3 && it > 1 ? 1 : rc;
+      if (rc != 0) return rc == 3 && it > 1 ? 1 : rc;
       fresh = 0;
       ++refreshed;
       prev = INFINITY;

@@ -161,14 +161,14 @@ static int user_status(whirl_bvp *b, int rc, const char *what) {
   return rc;
 }
 
-/* The integral rows' terms h w_g g at the Gauss points, b->icterm, added
- * up into I[nint] in interval and Gauss-point order: the same sum, to the
- * bit, as one loop making and adding them (the loops that make them run
- * on several threads). */
-static void sum_integral_terms(const whirl_bvp *b, double *I) {
+/* The integral rows' terms h w_g g at the Gauss points, terms (b->icterm
+ * or F's b->icF), added up into I[nint] in interval and Gauss-point
+ * order: the same sum, to the bit, as one loop making and adding them
+ * (the loops that make them run on several threads). */
+static void sum_integral_terms(const whirl_bvp *b, const double *terms, double *I) {
   const size_t nint = b->nint, npts = b->ntst * b->ncol;
   for (size_t q = 0; q < npts; ++q)
-    for (size_t s = 0; s < nint; ++s) I[s] += b->icterm[q * nint + s];
+    for (size_t s = 0; s < nint; ++s) I[s] += terms[q * nint + s];
 }
 
 /* The threads of the loops over the intervals: several only where there is
@@ -268,42 +268,63 @@ static int ic_dp_forward(const whirl_bvp *b, bvp_scratch *s, const double *pt, s
 
 /* ------------------------------------------------------------ system */
 
+/* F's collocation rows at Gauss point g of interval i (width h), u' − h f
+ * from f there, and its integral terms h w_g g from g there (b->icF):
+ * written so by the residual and by the Jacobian's fill alike, the same
+ * bytes from the same evaluations. */
+static void residual_rows(const whirl_bvp *b, const bvp_scratch *s, size_t i, size_t g,
+                          double h, const double *f, double *F) {
+  const size_t n = b->n;
+  double *row = F + n * (i * b->ncol + g);
+  for (size_t r = 0; r < n; ++r) row[r] = s->du[r] - h * f[r];
+}
+static void residual_terms(const whirl_bvp *b, size_t i, size_t g, double h,
+                           const double *gi) {
+  double *t = b->icF + b->nint * (i * b->ncol + g);
+  for (size_t c = 0; c < b->nint; ++c) t[c] = h * b->gw[g] * gi[c];
+}
+
 /* Interval i's collocation rows of F (u' - h f at its Gauss points) and
- * its integral terms (b->icterm). */
+ * its integral terms (b->icF). */
 static int residual_interval(const whirl_bvp *b, bvp_scratch *s, const double *X, size_t i,
                              size_t k, double *F, const char **what) {
   (void)k;
   const whirl_problem *pr = b->prob;
-  const size_t n = b->n, m = b->ncol;
+  const size_t m = b->ncol;
   const double h = b->mesh[i + 1] - b->mesh[i];
   int rc;
   for (size_t g = 0; g < m; ++g) {
     gauss_state(b, s, X, i, g);
     *what = "the model's rhs";
     if ((rc = pr->rhs(b->mesh[i] + h * b->gs[g], s->u, b->pt, s->f, pr->data)) != 0) return rc;
-    double *row = F + n * (i * m + g);
-    for (size_t r = 0; r < n; ++r) row[r] = s->du[r] - h * s->f[r];
+    residual_rows(b, s, i, g, h, s->f, F);
     if (!b->nint) continue;
     gauss_reference(b, s, i, g);
     *what = "integral conditions";
     if ((rc = b->ic(s->u, s->uo, s->ud, s->upo, b->pt, s->gi, b->data)) != 0) return rc;
-    double *t = b->icterm + b->nint * (i * m + g);
-    for (size_t c = 0; c < b->nint; ++c) t[c] = h * b->gw[g] * s->gi[c];
+    residual_terms(b, i, g, h, s->gi);
   }
   return 0;
 }
 
+int bvp_F_boundary(whirl_bvp *b, const double *X, double *F) {
+  double *c = F + b->ncoll;
+  const int rc = b->nbc ? b->bc(X, X + b->n * (b->nnodes - 1), b->pt, c, b->data) : 0;
+  return rc ? user_status(b, rc, "boundary conditions") : 0;
+}
+
+void bvp_F_integrals(whirl_bvp *b, double *F) {
+  double *c = F + b->ncoll + b->nbc;
+  memset(c, 0, b->nint * sizeof *c);
+  sum_integral_terms(b, b->icF, c);
+}
+
 static int bvp_F(const double *X, const double *p, double *F, void *data) {
   whirl_bvp *b = data;
-  const size_t n = b->n;
   whirl_bvp_params(b, X, p, b->pt);
   int rc = for_intervals(b, &b->gov_F, residual_interval, X, 0, F);
-  if (rc != 0) return rc;
-  double *c = F + b->ncoll;
-  if (b->nbc && (rc = b->bc(X, X + n * (b->nnodes - 1), b->pt, c, b->data)) != 0)
-    return user_status(b, rc, "boundary conditions");
-  memset(c + b->nbc, 0, b->nint * sizeof *c);
-  sum_integral_terms(b, c + b->nbc);
+  if (rc != 0 || (rc = bvp_F_boundary(b, X, F)) != 0) return rc;
+  bvp_F_integrals(b, F);
   return 0;
 }
 
@@ -334,6 +355,8 @@ typedef struct fill_target {
   int globals;  /* the free columns (0: F_x alone, the monodromy's) */
   double *fk;   /* dF/dp_k's entries (indexed as F's rows), or NULL */
   size_t k;
+  double *F;    /* F's collocation rows and integral terms (b->icF) from
+                   the same evaluations, or NULL */
 } fill_target;
 
 /* The first of the n collocation rows of Gauss point g of interval i in
@@ -412,10 +435,15 @@ static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X,
         v[q * st] += dv[k];
       }
     *what = "the model's parameter derivative";
-    /* AUTO's forward differences share f at the point (s->fm) */
+    /* AUTO's forward differences share f at the point (s->fm), and so
+     * does F's row (the residual's evaluation, AUTO's SETUBV) */
     const int fwd = b->auto_differences && nfree > 0;
-    if (fwd && !b->prob->jac_p && (rc = b->prob->rhs(t, s->u, b->pt, s->fm, b->prob->data)) != 0)
+    if (((fwd && !b->prob->jac_p) || T->F) &&
+        (rc = b->prob->rhs(t, s->u, b->pt, s->fm, b->prob->data)) != 0) {
+      if (T->F) *what = "the model's rhs";
       return rc;
+    }
+    if (T->F) residual_rows(b, s, i, g, h, s->fm, T->F);
     for (size_t j = 0; j < nfree; ++j) {
       rc = fwd ? model_fp_forward(b, s, t, b->pt, b->free[j], s->fm, tmp)
                : model_fp(b, s, t, b->pt, b->free[j], tmp);
@@ -440,8 +468,9 @@ static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X,
     /* the free parameters' terms: h w_g ∂g/∂p (AUTO's forward differences
      * from g at the point, in s->gim) */
     acc += (m + 1) * n * nint;
-    if (fwd && (rc = b->ic(s->u, s->uo, s->ud, s->upo, b->pt, s->gim, b->data)) != 0)
+    if ((fwd || T->F) && (rc = b->ic(s->u, s->uo, s->ud, s->upo, b->pt, s->gim, b->data)) != 0)
       return rc;
+    if (T->F) residual_terms(b, i, g, h, s->gim);
     for (size_t j = 0; j < nfree; ++j) {
       rc = fwd ? ic_dp_forward(b, s, b->pt, b->free[j], s->gim)
                : ic_dp_at(b, s, b->pt, b->free[j]);
@@ -490,7 +519,7 @@ static void sum_integral_entries(const whirl_bvp *b, double *Jx, double *ic,
  * first failure in interval order is the one reported. */
 static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
   const size_t N = b->ntst;
-  const fill_target T = {Jx, NULL, 0, 1, NULL, 0};
+  const fill_target T = {Jx, NULL, 0, 1, NULL, 0, NULL};
   const int nth = bvp_threads(b) > 1 ? whirl_gov_begin(&b->gov) : 1;
   size_t bad = N;
   int bad_rc = 0;
@@ -513,8 +542,9 @@ static int fill_collocation(whirl_bvp *b, const double *X, double *Jx) {
 /* ------------------------------------------------------------ blocks */
 
 int bvp_fill_block(whirl_bvp *b, int thread, const double *X, size_t i, double *B,
-                   size_t wc, int globals, double *fk, size_t k, const char **what) {
-  const fill_target T = {NULL, B, wc, globals, fk, k};
+                   size_t wc, int globals, double *fk, size_t k, double *F,
+                   const char **what) {
+  const fill_target T = {NULL, B, wc, globals, fk, k, F};
   *what = NULL;
   memset(B, 0, b->n * b->ncol * wc * sizeof *B);
   return fill_interval(b, &b->scr[thread], X, &T, i, what);
@@ -522,7 +552,7 @@ int bvp_fill_block(whirl_bvp *b, int thread, const double *X, size_t i, double *
 
 void bvp_block_sums(whirl_bvp *b, double *ic, size_t ldic, int globals, double *fk_ic) {
   sum_integral_entries(b, NULL, ic, ldic, globals);
-  if (fk_ic) sum_integral_terms(b, fk_ic);
+  if (fk_ic) sum_integral_terms(b, b->icterm, fk_ic);
 }
 
 int bvp_block_status(whirl_bvp *b, int rc, const char *what) {
@@ -655,7 +685,7 @@ static int bvp_Fp(const double *X, const double *p, size_t k, double *fk,
   whirl_bvp_params(b, X, p, b->pt);
   int rc = for_intervals(b, &b->gov_Fp, fp_interval, X, k, fk);
   if (rc != 0) return rc;
-  sum_integral_terms(b, fk + b->ncoll + b->nbc);
+  sum_integral_terms(b, b->icterm, fk + b->ncoll + b->nbc);
   return b->nbc ? bc_dp(b, X, k, fk + b->ncoll) : 0;
 }
 
@@ -779,10 +809,11 @@ static int alloc_arrays(whirl_bvp *b) {
                           icacc_size(b) * b->ntst * b->ncol,
                           b->ntst + 1, n * b->nnodes, b->ntst, b->ntst + 1,
                           n * b->ntst, b->nnodes * (b->ncol + 1),
-                          b->ntst * b->ncol * b->nint, n * b->nnodes};
+                          b->ntst * b->ncol * b->nint, b->ntst * b->ncol * b->nint,
+                          n * b->nnodes};
   double **ptrs[] = {&b->pt, &b->fb, &b->fbm, &b->cp, &b->cm, &b->ref, &b->icacc,
                      &b->old_mesh, &b->copy, &b->E, &b->Q, &b->Dm, &b->map_L,
-                     &b->icterm, &b->dref};
+                     &b->icterm, &b->icF, &b->dref};
   const size_t nptr = sizeof sizes / sizeof sizes[0];
   size_t tot = 0;
   for (size_t k = 0; k < nptr; ++k) tot += sizes[k] + 1;

@@ -14,7 +14,8 @@
  * interval's block and dF/dp_k's rows in the loop that condenses it
  * (cond_elim.c's fill_one, on the intervals' threads: one parallel loop
  * for the Jacobian and its condensation), the integral rows summed over
- * the intervals after it (fill_end).
+ * the intervals after it (fill_end).  cond_factor_F makes F as well,
+ * from the same evaluations (bvp.c's residual rows and sums).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdlib.h>
@@ -59,6 +60,7 @@ static int bvp_fill_begin(cond_ws *w, const double *X, const double *p, size_t k
   int rc = bvp_fill_bc_rows(b, X, R->bcr, R->nf, mode != COND_FILL_MONO,
                             R->fk_here ? fk + fb : NULL, k);
   if (rc != 0) return rc; /* with its message (bvp.c) */
+  if (cond_F(w) && (rc = bvp_F_boundary(b, X, cond_F(w))) != 0) return rc;
   if (mode == COND_FILL_MONO) return 0;
   for (size_t e = 0; e < b->nbc; ++e) R->bcr[e * R->nf + pk] = fk[fb + e];
   for (size_t t = 0; t < b->nint; ++t)
@@ -78,7 +80,8 @@ static int bvp_fill_one(cond_ws *w, const double *X, const double *p, size_t k,
                r0 = i * nm;
   double *B = cond_block(w, i);
   const int rc = bvp_fill_block(b, thread, X, i, B, wc, mode != COND_FILL_MONO,
-                                R->fk_here ? cond_fk(w) : NULL, R->k, &R->what[i]);
+                                R->fk_here ? cond_fk(w) : NULL, R->k, cond_F(w),
+                                &R->what[i]);
   if (rc != 0 || mode != COND_FILL_GIVEN) return rc;
   const double *fk = cond_fk(w) + r0;
   const size_t pk = ni + 2 * n + b->nfree;
@@ -93,6 +96,7 @@ static int bvp_fill_end(cond_ws *w, size_t bad, int status) {
   whirl_bvp *b = R->b;
   const size_t nx = b->nx, fi = b->ncoll + b->nbc;
   if (bad < b->ntst) return bvp_block_status(b, status, R->what[bad]);
+  if (cond_F(w)) bvp_F_integrals(b, cond_F(w));
   double *fk = cond_fk(w);
   bvp_block_sums(b, R->ic, nx + 1, R->mode != COND_FILL_MONO, R->fk_here ? fk + fi : NULL);
   if (!R->fk_here) return 0;
@@ -171,4 +175,4 @@ static void *bs_alloc(void *data) {
 
 const whirl_bsolver bvp_bsolver = {bs_alloc,   bs_free,     cond_factor,
                                    cond_solve, cond_logdet, cond_reborder,
-                                   cond_factor_col, cond_solve_t};
+                                   cond_factor_col, cond_solve_t, cond_factor_F};

@@ -60,7 +60,10 @@ struct whirl_bvp {
   whirl_gov gov;    /* how many of them a call runs on (threads_impl.h) */
   whirl_gov gov_F, gov_Fp; /* likewise for the residual's and F_p's loops */
   double *icterm;   /* N NCOL nint: each Gauss point's term of the integral
-                       rows, summed in order after a parallel loop */
+                       rows of dF/dp_k, summed in order after a parallel
+                       loop */
+  double *icF;      /* N NCOL nint: likewise, those of F (the residual's
+                       loop, or the Jacobian's fill with F) */
   bvp_scratch *scr; /* nthreads; scr[0] the sequential code's */
   /* mesh adaptation (AUTO's IAD): dm the NCOL-th derivative's weights,
    * the old mesh, a copy of a vector and the density's scratch */
@@ -91,17 +94,25 @@ int bvp_Fx_sparse(const double *X, const double *p, double *Jx, void *data);
  * thread's scratch; the free columns when globals; with fk, dF/dp_k's
  * rows too (central differences, as the system's Fp), into B's last
  * column and fk (indexed as F's rows); the integral rows' terms into
- * b->icacc (and p_k's into b->icterm).  0, or a status and in *what the
- * callback that failed (NULL: dF/dp_k not finite).
+ * b->icacc (and p_k's into b->icterm); with F, F's collocation rows
+ * (indexed as F's) and integral terms (b->icF) from the same evaluations.
+ * 0, or a status and in *what the callback that failed (NULL: dF/dp_k not
+ * finite).
  * bvp_block_sums: after every interval, their integral terms added up, in
  * interval order, into the dense rows ic (row c at ic + c ldic, F's
  * columns), and p_k's into fk_ic[nint] when not NULL.
  * bvp_block_status: a failed bvp_fill_block's status with its message.
  * bvp_fill_bc_rows: the boundary rows into bcr (row s at bcr + s nf:
  * [u(0) | u(1) | free]), the free columns when globals; with fk_bc,
- * d(boundary rows)/dp_k into fk_bc[nbc] (WHIRL_EBADFUNC if not finite). */
+ * d(boundary rows)/dp_k into fk_bc[nbc] (WHIRL_EBADFUNC if not finite).
+ * bvp_F_boundary, bvp_F_integrals: F's boundary rows at X (0 or the
+ * status, with its message), and its integral rows from the terms in
+ * b->icF: the residual's own code (bvp_F), for a fill that makes F. */
 int bvp_fill_block(whirl_bvp *b, int thread, const double *X, size_t i, double *B,
-                   size_t wc, int globals, double *fk, size_t k, const char **what);
+                   size_t wc, int globals, double *fk, size_t k, double *F,
+                   const char **what);
+int bvp_F_boundary(whirl_bvp *b, const double *X, double *F);
+void bvp_F_integrals(whirl_bvp *b, double *F);
 void bvp_block_sums(whirl_bvp *b, double *ic, size_t ldic, int globals, double *fk_ic);
 int bvp_block_status(whirl_bvp *b, int rc, const char *what);
 int bvp_fill_bc_rows(whirl_bvp *b, const double *X, double *bcr, size_t nf, int globals,

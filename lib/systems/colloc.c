@@ -150,19 +150,25 @@ int colloc_threads(const whirl_colloc *c) {
              ? c->nthreads : 1;
 }
 
+void colloc_residual_rows(const whirl_colloc *c, const colloc_scratch *s, size_t i,
+                          size_t g, double h, double T, const double *f, double *F) {
+  const size_t n = c->n;
+  double *Fr = F + n * (i * c->ncol + g);
+  for (size_t r = 0; r < n; ++r) Fr[r] = s->dx[r] - h * T * f[r];
+}
+
 /* The residual rows of interval i at (X, p), T, with scratch s. */
 static int interval_F(whirl_colloc *c, colloc_scratch *s, const double *X,
                       const double *p, double T, size_t i, double *F) {
   const whirl_problem *pr = c->prob;
-  const size_t n = c->n, m = c->ncol;
+  const size_t m = c->ncol;
   const double h = c->mesh[i + 1] - c->mesh[i];
   for (size_t g = 0; g < m; ++g) {
     at_gauss(c, s, X, i, g);
     const double tau = c->mesh[i] + h * c->gs[g];
     int rc = pr->rhs(c->t0 + T * tau, s->xc, p, s->f, pr->data);
     if (rc != 0) return rc;
-    double *Fr = F + n * (i * m + g);
-    for (size_t r = 0; r < n; ++r) Fr[r] = s->dx[r] - h * T * s->f[r];
+    colloc_residual_rows(c, s, i, g, h, T, s->f, F);
   }
   return 0;
 }
@@ -171,7 +177,7 @@ static int interval_F(whirl_colloc *c, colloc_scratch *s, const double *X,
 
 static int colloc_F(const double *X, const double *p, double *F, void *data) {
   whirl_colloc *c = data;
-  const size_t n = c->n, m = c->ncol, N = c->ntst;
+  const size_t N = c->ntst;
   /* its own copy: F is what differences of F_p call, from inside the
    * entry points that hold c->pq (colloc_cond.c's factorisation) */
   p = par_into(c, X, p, c->pF);
@@ -195,6 +201,12 @@ static int colloc_F(const double *X, const double *p, double *F, void *data) {
   }
   if (colloc_threads(c) > 1) whirl_gov_end(&c->gov_F);
   if (bad < N) return bad_rc;
+  colloc_end_rows(c, X, F);
+  return 0;
+}
+
+void colloc_end_rows(const whirl_colloc *c, const double *X, double *F) {
+  const size_t n = c->n, m = c->ncol, N = c->ntst;
   /* periodicity x(1) − x(0) = 0, or 2π k for a rotation */
   const double *x0 = X, *x1 = X + n * N * m;
   for (size_t r = 0; r < n; ++r) F[n * N * m + r] = x1[r] - x0[r] - c->rot[r];
@@ -210,7 +222,6 @@ static int colloc_F(const double *X, const double *p, double *F, void *data) {
     for (size_t r = 0; r < n; ++r) rotating |= c->rot[r] != 0.0;
     F[c->nx - 1] = s + (rotating ? 0.0 : c->phase0);
   }
-  return 0;
 }
 
 /* At a fixed period the last unknown is the parameter q = c->fq: its

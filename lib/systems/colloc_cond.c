@@ -16,9 +16,25 @@
 #include "colloc_impl.h"
 #include "cond_elim.h"
 
+/* F's collocation rows at Gauss point g of interval i into F, after
+ * colloc_gauss_jac there: from the f its dF/dT evaluated (s->f: an
+ * autonomous model at a free period), else from an evaluation of its own
+ * (the residual's, colloc.c). */
+static int fill_F_rows(whirl_colloc *c, colloc_scratch *s, const double *p, double T,
+                       size_t i, size_t g, int shared, double *F) {
+  const double h = c->mesh[i + 1] - c->mesh[i];
+  if (!shared) {
+    const double tau = c->mesh[i] + h * c->gs[g];
+    const int rc = c->prob->rhs(c->t0 + T * tau, s->xc, p, s->f2, c->prob->data);
+    if (rc != 0) return rc;
+  }
+  colloc_residual_rows(c, s, i, g, h, T, shared ? s->f : s->f2, F);
+  return 0;
+}
+
 /* One interval's collocation rows at (X, p): rows g n + rr of block Wi,
  * columns [interior | x_i | x_{i+1} | T? | p_k]; dF/dp_k from the model's
- * f_p into fk when fk_loop. */
+ * f_p into fk when fk_loop; F's rows into cond_F(w) when it is set. */
 static int fill_interval(whirl_colloc *c, colloc_scratch *s, cond_ws *w,
                          const double *X, const double *p, double T, size_t i,
                          int mode, int fk_loop, size_t k) {
@@ -27,10 +43,13 @@ static int fill_interval(whirl_colloc *c, colloc_scratch *s, cond_ws *w,
   const size_t ng = c->aut ? 2 : 1;
   double *Wi = cond_block(w, i), *fk = cond_fk(w);
   const double h = c->mesh[i + 1] - c->mesh[i], hT = h * T;
-  double *dT = s->dT;
+  double *dT = s->dT, *F = cond_F(w);
+  /* colloc_gauss_jac's dF/dT leaves f at the point in s->f */
+  const int shared = c->aut && !mono && c->fq < 0 && c->prob->autonomous;
   for (size_t g = 0; g < m; ++g) {
     int rc = colloc_gauss_jac(c, s, X, p, T, i, g, c->aut && !mono ? dT : NULL);
     if (rc != 0) return rc;
+    if (F && (rc = fill_F_rows(c, s, p, T, i, g, shared, F)) != 0) return rc;
     if (fk_loop) {
       const double t = c->t0 + T * (c->mesh[i] + h * c->gs[g]);
       if ((rc = colloc_fk_rows(c, s, X, p, k, t, h * T, fk + n * (i * m + g))) != 0) return rc;
@@ -67,6 +86,7 @@ static int colloc_fill_begin(cond_ws *w, const double *X, const double *p,
   const size_t n = c->n, N = c->ntst, m = c->ncol;
   double *fk = cond_fk(w);
   c->fill_T = colloc_period_of(c, X, p);
+  c->fill_X = X;
   if (!(c->fill_T > 0) || !isfinite(c->fill_T)) return 1; /* recoverable, as F */
   c->fill_fk_loop = full && !(!c->aut && (int)k == c->fpar) && (int)k != c->fq;
   if (full && !c->fill_fk_loop) {
@@ -83,6 +103,15 @@ static int colloc_fill_one(cond_ws *w, const double *X, const double *p,
   whirl_colloc *c = cond_sys(w);
   return fill_interval(c, &c->scr[t], w, X, p, c->fill_T, i, mode,
                        c->fill_fk_loop, k);
+}
+
+/* After the intervals: the first failure, or F's end rows when the fill
+ * makes F (cond_factor_F). */
+static int colloc_fill_end(cond_ws *w, size_t bad, int status) {
+  whirl_colloc *c = cond_sys(w);
+  if (bad < c->ntst) return status;
+  if (cond_F(w)) colloc_end_rows(c, c->fill_X, cond_F(w));
+  return 0;
 }
 
 /* The phase condition (autonomous, t = 0) with the current reference, or
@@ -119,7 +148,7 @@ static void colloc_end_row(cond_ws *w, size_t e, double *a) {
 }
 
 static const cond_ops colloc_ops = {NULL,           colloc_border,   colloc_end_row,
-                                    colloc_fill_begin, colloc_fill_one, NULL,
+                                    colloc_fill_begin, colloc_fill_one, colloc_fill_end,
                                     colloc_border_early};
 
 static void *bs_alloc(void *data) {
@@ -152,6 +181,16 @@ static int bs_factor(void *ws, const double *X, const double *p, size_t k,
   return rc;
 }
 
+/* As bs_factor, and F(X, p) from the same evaluations (cond_factor_F). */
+static int bs_factor_F(void *ws, const double *X, const double *p, size_t k,
+                       const double *r, double *f) {
+  whirl_colloc *c = cond_sys(ws);
+  p = colloc_par(c, X, p);
+  const int rc = cond_factor_F(ws, X, p, k, r, f);
+  if (cond_factored_at(ws, X, p)) c->last_ws = ws;
+  return rc;
+}
+
 static int bs_factor_col(void *ws, const double *X, const double *p,
                          const double *col, const double *r) {
   return cond_factor_col(ws, X, colloc_par(cond_sys(ws), X, p), col, r);
@@ -159,7 +198,7 @@ static int bs_factor_col(void *ws, const double *X, const double *p,
 
 const whirl_bsolver colloc_bsolver = {bs_alloc,   bs_free,     bs_factor,
                                       cond_solve, cond_logdet, cond_reborder,
-                                      bs_factor_col, cond_solve_t};
+                                      bs_factor_col, cond_solve_t, bs_factor_F};
 
 int colloc_cond_monodromy(whirl_colloc *c, const double *X, const double *p,
                           double *M) {

@@ -65,6 +65,7 @@ struct whirl_colloc {
   whirl_gov gov_F;          /* colloc_F's threads (threads_impl.h) */
   double fill_T;            /* colloc_cond.c: the period of the fill, */
   int fill_fk_loop;         /* and dF/dp_k from f_p in each interval */
+  const double *fill_X;     /* and its point, for F's end rows */
   colloc_scratch *scr;      /* nthreads */
   double *r1, *r2;          /* nx, nx */
   double *old_mesh, *old_X; /* ntst + 1, nnodes*n: mesh adaptation */
@@ -106,6 +107,14 @@ const double *colloc_par(whirl_colloc *c, const double *X, const double *p);
 int colloc_gauss_jac(whirl_colloc *c, colloc_scratch *s, const double *X,
                      const double *p, double T, size_t i, size_t g,
                      double *dT);
+
+/* colloc.c: F's collocation rows at Gauss point g of interval i (width h,
+ * period T) from f there, dx/dσ from s->dx; and F's rows after them, the
+ * periodicity and the phase condition: the residual's code, which the
+ * condensed fill also runs when it makes F (colloc_cond.c). */
+void colloc_residual_rows(const whirl_colloc *c, const colloc_scratch *s, size_t i,
+                          size_t g, double h, double T, const double *f, double *F);
+void colloc_end_rows(const whirl_colloc *c, const double *X, double *F);
 
 /* colloc.c: threads for the loops over the intervals (1: serial). */
 int colloc_threads(const whirl_colloc *c);

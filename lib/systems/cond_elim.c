@@ -88,6 +88,7 @@ struct cond_ws {
   int *prow, *pcol; /* nx + 1: M's rows and columns in elimination order */
   int *mark;     /* nx + 1: scratch for the permutation signs */
   double *fk;    /* nx: dF/dp_k */
+  double *Fout;  /* nx: F, during cond_factor_F (cond_F), else NULL */
   double *work;  /* nx + npar: the system's scratch in fill */
   double *loc;   /* NTST * wr: transformed right-hand sides of the intervals */
   double *ploc;  /* (NTST − 1) * pr: those of the mesh-point blocks */
@@ -211,6 +212,7 @@ double *cond_block(cond_ws *w, size_t i) { return w->W + i * w->wr * w->wc; }
 size_t cond_block_ld(const cond_ws *w) { return w->wc; }
 double *cond_fk(cond_ws *w) { return w->fk; }
 double *cond_work(cond_ws *w) { return w->work; }
+double *cond_F(const cond_ws *w) { return w->Fout; }
 
 /* ------------------------------------------------------------ kernels */
 
@@ -653,6 +655,15 @@ int cond_factor(void *ws, const double *X, const double *p, size_t k,
   for (size_t t = 0; t < w->nb; ++t) w->bsrc[t] = NULL;
   if (rc == 0) rc = factor_border(w, r);
   for (size_t t = 0; t < w->nb; ++t) w->bdone[t] = 0;
+  return rc;
+}
+
+int cond_factor_F(void *ws, const double *X, const double *p, size_t k,
+                  const double *r, double *f) {
+  cond_ws *w = ws;
+  w->Fout = f;
+  const int rc = cond_factor(ws, X, p, k, r);
+  w->Fout = NULL;
   return rc;
 }
 

@@ -98,6 +98,9 @@ double *cond_block(cond_ws *w, size_t i); /* interval i's block, rows of */
 size_t cond_block_ld(const cond_ws *w);   /* this many entries */
 double *cond_fk(cond_ws *w);              /* dF/dp_k, nx */
 double *cond_work(cond_ws *w);            /* nx + npar scratch for fill */
+/* Where the fill also puts F(X, p) (nx), during cond_factor_F; else NULL.
+ * A system whose fill honours it offers cond_factor_F in its bsolver. */
+double *cond_F(const cond_ws *w);
 
 /* The entry points take the workspace as void * so that a system's
  * whirl_bsolver table holds them as they are. */
@@ -106,6 +109,11 @@ double *cond_work(cond_ws *w);            /* nx + npar scratch for fill */
  * 0, the model's status, WHIRL_ESINGULAR, WHIRL_EBADFUNC. */
 int cond_factor(void *ws, const double *X, const double *p, size_t k,
                 const double *r);
+/* As cond_factor, and F(X, p) into f[nx] by the system's fill from the
+ * evaluations the Jacobian makes (AUTO's SETUBV: the residual with the
+ * Jacobian), the bytes its F gives.  f is complete when it returns 0. */
+int cond_factor_F(void *ws, const double *X, const double *p, size_t k,
+                  const double *r, double *f);
 /* M with the column col[nx] (M's rows) in place of dF/dp_k, factored:
  * [F_x col; r^T], e.g. the fold system's [F_x b; c^T 0].  As cond_factor. */
 int cond_factor_col(void *ws, const double *X, const double *p,

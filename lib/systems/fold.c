@@ -828,7 +828,7 @@ static int bem_logdet(void *ws, double *logabs, int *sign) {
 }
 
 static const whirl_bsolver fold_bem_solver = {bem_alloc, bem_free, bem_factor, bem_solve,
-                                              bem_logdet, bem_reborder, NULL, NULL};
+                                              bem_logdet, bem_reborder, NULL, NULL, NULL};
 
 /* The sparse path: a base with a sparse pattern, large enough that dense
  * LUs of order n dominate (collocation orbits), and no imposed condition

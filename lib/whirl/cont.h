@@ -266,6 +266,8 @@ typedef struct whirl_cont_stats {
   size_t eig_evals;   /* spectrum evaluations */
   size_t spectrum_failed; /* of which failed numerically (stability unknown) */
   size_t special;     /* special points localised */
+  size_t f_fused;     /* of f_evals: made by a Jacobian's own evaluations
+                         (the structured solver's factor_F) */
 } whirl_cont_stats;
 
 /* One point of a branch.  All arrays belong to the continuation object and

@@ -57,6 +57,13 @@ typedef struct whirl_bsolver {
   /* Optional: M^T y = c in place, c[(n+1)*nrhs], with the last
    * factorisation (the left null vector of a fold system). */
   int (*solve_t)(void *ws, double *b, size_t nrhs);
+  /* Optional: factor as factor does, and F(x, p) into f[n] from the
+   * model evaluations the Jacobian makes, the bytes the system's F gives
+   * (AUTO-07p's SETUBV makes the residual with the Jacobian): a Newton
+   * iteration with a new Jacobian then evaluates the model once.  Same
+   * returns as factor; f is complete when it returns 0. */
+  int (*factor_F)(void *ws, const double *x, const double *p, size_t k,
+                  const double *r, double *f);
 } whirl_bsolver;
 
 typedef struct whirl_system {

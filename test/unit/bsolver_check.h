@@ -6,8 +6,9 @@
  * for a new r by reborder; the transposed solve (solve_t) of that
  * matrix; then [F_x col; r^T] with a random column (factor_col: a fold
  * system's [F_x b; c^T 0]) and its transposed solve against UMFPACK's of
- * the same matrix.  Included by t_colloc.c
- * and t_bvp.c.
+ * the same matrix; where the solver makes F with the factorisation
+ * (factor_F), that F byte for byte the system's F and the factorisation
+ * the bytes of factor's.  Included by t_colloc.c and t_bvp.c.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_TEST_BSOLVER_CHECK_H
 #define WHIRL_TEST_BSOLVER_CHECK_H
@@ -15,6 +16,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <whirl/linsol.h>
 #include <whirl/system.h>
@@ -74,6 +76,25 @@ static void bsolver_check(const char *name, const whirl_system *s,
        "%s (%s): determinant sign %d = %d, log|det| %.10g = %.10g", name,
        pass == 0 ? "factor" : pass == 1 ? "border -r" : "reborder", s1, s2,
        la1, la2);
+  }
+  if (s->bsolver->factor_F) { /* F with the Jacobian's evaluations */
+    double *f1 = malloc(nx * sizeof *f1), *f2 = malloc(nx * sizeof *f2);
+    for (size_t q = 0; q < 2 * N1; ++q) b1[q] = b2[q] = tap_urand(-1.0, 1.0);
+    int r1 = f1 && f2 ? s->bsolver->factor_F(ws, X, p, k, r, f1) : WHIRL_ENOMEM;
+    double la1 = NAN, la2 = NAN;
+    int s1 = 9, s2 = 8;
+    if (r1 == 0) r1 = s->bsolver->solve(ws, b1, 2);
+    s->bsolver->logdet(ws, &la1, &s1);
+    int r2 = f1 && f2 ? s->F(X, p, f2, s->data) : WHIRL_ENOMEM;
+    if (r2 == 0) r2 = s->bsolver->factor(ws, X, p, k, r);
+    if (r2 == 0) r2 = s->bsolver->solve(ws, b2, 2);
+    s->bsolver->logdet(ws, &la2, &s2);
+    ok(r1 == 0 && r2 == 0 && memcmp(f1, f2, nx * sizeof *f1) == 0,
+       "%s (factor_F): F the bytes of the system's F", name);
+    ok(r1 == 0 && r2 == 0 && memcmp(b1, b2, 2 * N1 * sizeof *b1) == 0 && la1 == la2 &&
+           s1 == s2,
+       "%s (factor_F): solutions and determinant the bytes of factor's", name);
+    free(f1), free(f2);
   }
   /* a given column and the transposed solve */
   if (!given_col) goto done;

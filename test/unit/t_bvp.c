@@ -227,6 +227,74 @@ static void test_bratu(whirl_linsol_kind kind, int structured) {
   whirl_bvp_free(b);
 }
 
+/* The corrector with F made by the Jacobian's fill (the bsolver's
+ * factor_F) against the same continuation with F evaluated apart (a copy
+ * of the system whose bsolver lacks factor_F): the same points to the bit
+ * through the fold, one F evaluation fewer per Newton iteration with a
+ * new Jacobian (every iteration here). */
+static void test_factor_F_branch(void) {
+  char err[256];
+  whirl_bvp_options o;
+  whirl_bvp_options_default(&o);
+  o.ntst = 10;
+  o.ncol = 4;
+  o.nbc = 2;
+  o.bc = bratu_bc;
+  whirl_bvp *b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
+  ok(b && whirl_bvp_system(b)->bsolver && whirl_bvp_system(b)->bsolver->factor_F,
+     "Bratu NTST 10: the condensed solver makes F with the Jacobian (factor_F)");
+  if (!b) return;
+  const size_t nx = whirl_bvp_size(b);
+  whirl_system plain = *whirl_bvp_system(b);
+  whirl_bsolver bs = *plain.bsolver;
+  bs.factor_F = NULL;
+  plain.bsolver = &bs;
+  double *pts[2] = {malloc(60 * (nx + 1) * sizeof(double)), malloc(60 * (nx + 1) * sizeof(double))};
+  size_t np[2] = {0, 0}, fev[2] = {0, 0}, its[2] = {0, 0}, jac[2] = {0, 0}, fus[2] = {0, 0};
+  for (int fused = 0; fused < 2; ++fused) {
+    double *X = malloc(nx * sizeof *X), p[1] = {0.0};
+    whirl_bvp_from_function(b, bratu_start, NULL, X, p);
+    whirl_cont_options co;
+    whirl_cont_options_default(&co);
+    co.structured = 1;
+    co.ds = 0.1;
+    co.ds_max = 0.25;
+    co.nmx = 60;
+    co.p_min = -0.5;
+    co.tangent_from_newton = 2;
+    whirl_cont *ct = whirl_cont_alloc(fused ? whirl_bvp_system(b) : &plain, &co, err,
+                                      sizeof err);
+    int rc = ct && X ? whirl_cont_start(ct, X, p, +1) : -1;
+    while (rc == WHIRL_OK && np[fused] < 60 && (rc = whirl_cont_step(ct)) == WHIRL_OK) {
+      const whirl_point *pt = whirl_cont_point(ct);
+      memcpy(pts[fused] + np[fused] * (nx + 1), pt->x, nx * sizeof *pt->x);
+      pts[fused][np[fused]++ * (nx + 1) + nx] = pt->p[0];
+    }
+    if (ct) {
+      fev[fused] = whirl_cont_get_stats(ct)->f_evals;
+      its[fused] = whirl_cont_get_stats(ct)->newton_its;
+      jac[fused] = whirl_cont_get_stats(ct)->jac_evals;
+      fus[fused] = whirl_cont_get_stats(ct)->f_fused;
+    }
+    whirl_cont_free(ct);
+    free(X);
+  }
+  ok(np[0] > 20 && np[0] == np[1] &&
+         memcmp(pts[0], pts[1], np[0] * (nx + 1) * sizeof(double)) == 0,
+     "factor_F: the branch's %zu points the bytes of F evaluated apart (%zu)", np[1], np[0]);
+  ok(its[0] == its[1] && jac[0] == jac[1] && fev[0] == fev[1],
+     "factor_F: the same %zu Newton iterations, %zu Jacobians and %zu F (%zu, %zu, %zu)",
+     its[1], jac[1], fev[1], its[0], jac[0], fev[0]);
+  /* every corrector iteration takes a new Jacobian (NWTN unset): each F
+   * of the corrector from its Jacobian; the others (the localisation's
+   * differences) evaluated apart */
+  ok(fus[0] == 0 && fus[1] > 0 && fus[1] + 20 >= its[1] && fus[1] <= its[1],
+     "factor_F: %zu of the %zu Newton iterations' F made with their Jacobians (apart: %zu)",
+     fus[1], its[1], fus[0]);
+  free(pts[0]), free(pts[1]);
+  whirl_bvp_free(b);
+}
+
 /* The larger root of θ = sqrt(2λ) cosh(θ/4) (Bratu's upper branch), by
  * bisection on [θ_*, 40]. */
 static double bratu_theta_upper(double lam) {
@@ -900,6 +968,11 @@ static void test_bsolver(void) {
    * row summed after it) and p_k a free parameter (its column 0) */
   bsolver_case("expo by differences (NINT 1, a free), k = c", &expo_fd, &o, pe, 1);
   bsolver_case("expo by differences (NINT 1, a free), k = a (free)", &expo_fd, &o, pe, 0);
+  /* AUTO's differences: F's rows share f and g at the Gauss points with
+   * the forward differences (factor_F) */
+  o.auto_differences = 1;
+  bsolver_case("expo by AUTO's differences (NINT 1, a free), k = c", &expo_fd, &o, pe, 1);
+  o.auto_differences = 0;
 
   const size_t fq[1] = {1};
   whirl_bvp_options_default(&o);
@@ -1334,6 +1407,7 @@ int main(void) {
   test_bratu(WHIRL_LINSOL_SPARSE, 0);
   test_bratu(WHIRL_LINSOL_DENSE, 1);
   test_bsolver();
+  test_factor_F_branch();
   test_structured_failures();
   test_bratu_newton();
   test_bratu_adapt();
