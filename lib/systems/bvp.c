@@ -807,12 +807,13 @@ static int alloc_arrays(whirl_bvp *b) {
   b->map_idx = malloc(b->nnodes * sizeof *b->map_idx);
   const size_t sizes[] = {np, b->nbc, b->nbc, nc, nc, n * b->nnodes,
                           icacc_size(b) * b->ntst * b->ncol,
-                          b->ntst + 1, n * b->nnodes, b->ntst, b->ntst + 1,
+                          b->ntst + 1, n * b->nnodes * (size_t)b->nthreads, b->ntst,
+                          b->ntst + 1,
                           n * b->ntst, b->nnodes * (b->ncol + 1),
                           b->ntst * b->ncol * b->nint, b->ntst * b->ncol * b->nint,
                           n * b->nnodes};
   double **ptrs[] = {&b->pt, &b->fb, &b->fbm, &b->cp, &b->cm, &b->ref, &b->icacc,
-                     &b->old_mesh, &b->copy, &b->E, &b->Q, &b->Dm, &b->map_L,
+                     &b->old_mesh, &b->mapscr, &b->E, &b->Q, &b->Dm, &b->map_L,
                      &b->icterm, &b->icF, &b->dref};
   const size_t nptr = sizeof sizes / sizeof sizes[0];
   size_t tot = 0;
@@ -862,10 +863,9 @@ static int bvp_remap(double *const *v, size_t nv, const double *p, void *data) {
   if (rc == 0) return 0;
   /* one plan (intervals and basis at the new nodes) for every vector */
   colloc_basis_map_plan(b->ncol, N, b->old_mesh, b->mesh, b->map_idx, b->map_L);
-  for (size_t k = 0; k < nv; ++k)
-    colloc_basis_map_apply(b->n, b->ncol, N, b->map_idx, b->map_L, b->copy, v[k]);
-  colloc_basis_map_apply(b->n, b->ncol, N, b->map_idx, b->map_L, b->copy, b->ref);
-  colloc_basis_map_apply(b->n, b->ncol, N, b->map_idx, b->map_L, b->copy, b->dref);
+  double *const own[2] = {b->ref, b->dref};
+  colloc_basis_map_many(b->n, b->ncol, N, b->map_idx, b->map_L, b->mapscr, v, nv, own, 2,
+                        bvp_threads(b));
   ++b->adaptations;
   return 1;
 }

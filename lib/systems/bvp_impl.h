@@ -73,7 +73,8 @@ struct whirl_bvp {
   double *dref;         /* the core's direction, node values (n nnodes) */
   size_t adaptations;
   double dm[COLLOC_BASIS_MAXCOL + 1];
-  double *old_mesh, *copy, *E, *Q, *Dm;
+  double *old_mesh, *E, *Q, *Dm;
+  double *mapscr;   /* nthreads (n nnodes): the remap's copies */
   double *map_L;    /* the remap's plan: Lagrange values at the new nodes */
   size_t *map_idx;  /* and their intervals on the old mesh */
   char errmsg[WHIRL_ERRMSG_SIZE];

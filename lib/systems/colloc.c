@@ -560,7 +560,8 @@ static int alloc_arrays(whirl_colloc *c) {
   c->Jx = malloc(nnz * sizeof *c->Jx);
   c->ref = calloc(nnodes * n, sizeof *c->ref);
   c->phase = calloc(nnodes * n, sizeof *c->phase);
-  c->old_X = malloc(nnodes * n * sizeof *c->old_X);
+  /* one copy a thread: the remap's vectors on the threads */
+  c->old_X = malloc(nnodes * n * (size_t)c->nthreads * sizeof *c->old_X);
   c->map_idx = malloc(nnodes * sizeof *c->map_idx);
   c->map_L = malloc(nnodes * (c->ncol + 1) * sizeof *c->map_L);
   c->ref_new = malloc(nnodes * n * sizeof *c->ref_new);
@@ -923,12 +924,11 @@ static int colloc_remap(double *const *v, size_t nv, const double *p,
    * and vector (a fiftieth of demo pla's run) */
   const size_t N = c->ntst, m = c->ncol;
   colloc_basis_map_plan(m, N, c->old_mesh, c->mesh, c->map_idx, c->map_L);
-  for (size_t k = 0; k < nv; ++k)
-    colloc_basis_map_apply(c->n, m, N, c->map_idx, c->map_L, c->old_X, v[k]);
-  if (c->aut && c->have_ref) {
-    colloc_basis_map_apply(c->n, m, N, c->map_idx, c->map_L, c->old_X, c->ref);
-    set_reference(c, c->ref);
-  }
+  const int with_ref = c->aut && c->have_ref;
+  double *const own[1] = {c->ref};
+  colloc_basis_map_many(c->n, m, N, c->map_idx, c->map_L, c->old_X, v, nv, own,
+                        (size_t)with_ref, colloc_threads(c));
+  if (with_ref) set_reference(c, c->ref);
   ++c->adaptations;
   return 1;
 }

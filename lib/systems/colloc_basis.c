@@ -13,6 +13,7 @@
 #include <whirl/problem.h>
 
 #include "colloc_basis.h"
+#include "util/threads_impl.h"
 
 /* The Legendre polynomial P_m(z) (into *pm, by the three-term recurrence)
  * and its derivative P_m'(z). */
@@ -317,6 +318,17 @@ void colloc_basis_map_apply(size_t n, size_t m, size_t N, const size_t *idx,
       for (size_t r = 0; r < n; ++r) x[r] += l[k] * xk[r];
     }
   }
+}
+
+void colloc_basis_map_many(size_t n, size_t m, size_t N, const size_t *idx,
+                           const double *L, double *copies, double *const *v,
+                           size_t nv, double *const *w, size_t nw, int nth) {
+  const size_t len = (N * m + 1) * n, tot = nv + nw;
+  if ((size_t)nth > tot) nth = (int)tot;
+#pragma omp parallel for num_threads(nth) schedule(static, 1) if (nth > 1)
+  for (size_t k = 0; k < tot; ++k)
+    colloc_basis_map_apply(n, m, N, idx, L, copies + (size_t)whirl_thread_num() * len,
+                           k < nv ? v[k] : w[k - nv]);
 }
 
 void colloc_basis_lagrange_integrals(size_t m, double *W) {

@@ -113,5 +113,14 @@ void colloc_basis_map_plan(size_t m, size_t N, const double *old, const double *
                            size_t *idx, double *L);
 void colloc_basis_map_apply(size_t n, size_t m, size_t N, const size_t *idx,
                             const double *L, double *copy, double *v);
+/* colloc_basis_map_apply on each of the nv vectors v[k] and the nw
+ * vectors w[k], on up to nth threads (OpenMP), thread t's scratch copies
+ * + t (N m + 1) n: the same bytes as one after the other (a mesh
+ * adaptation carries the point, its tangent, earlier points and the
+ * references: seven vectors of fnc's 2 001 nodes, a serial 4 % of its
+ * run on one thread). */
+void colloc_basis_map_many(size_t n, size_t m, size_t N, const size_t *idx,
+                           const double *L, double *copies, double *const *v,
+                           size_t nv, double *const *w, size_t nw, int nth);
 
 #endif

@@ -68,7 +68,8 @@ struct whirl_colloc {
   const double *fill_X;     /* and its point, for F's end rows */
   colloc_scratch *scr;      /* nthreads */
   double *r1, *r2;          /* nx, nx */
-  double *old_mesh, *old_X; /* ntst + 1, nnodes*n: mesh adaptation */
+  double *old_mesh, *old_X; /* ntst + 1, nnodes*n (nthreads copies, the
+                               remap's): mesh adaptation */
   size_t *map_idx;  /* the remap's plan: each new node's old interval */
   double *map_L;    /* and its Lagrange values there, nnodes (ncol + 1) */
   double *ref_new;          /* nnodes*n */

@@ -78,6 +78,24 @@ static void test_map(size_t n, size_t m, size_t N) {
   for (int q = 0; q < 3; ++q) same &= !memcmp(v[q], w[q], nnodes * n * sizeof *v[q]);
   ok(same, "n %zu, NCOL %zu, NTST %zu: the plan applied to three vectors gives "
      "colloc_basis_map_nodes' bytes", n, m, N);
+  /* on three threads, three vectors and two more: the same bytes again */
+  double *u[5], *scr = malloc(3 * nnodes * n * sizeof *scr);
+  for (int q = 0; q < 5; ++q) {
+    u[q] = malloc(nnodes * n * sizeof *u[q]);
+    for (size_t j = 0; j < nnodes * n; ++j) u[q][j] = 2.0 * uniform() - 1.0;
+  }
+  for (int q = 0; q < 3; ++q) memcpy(w[q], u[q], nnodes * n * sizeof *u[q]);
+  colloc_basis_map_many(n, m, N, idx, L, scr, u, 3, u + 3, 2, 3);
+  same = 1;
+  for (int q = 0; q < 3; ++q) {
+    colloc_basis_map_apply(n, m, N, idx, L, copy, w[q]);
+    same &= !memcmp(u[q], w[q], nnodes * n * sizeof *u[q]);
+  }
+  for (size_t j = 0; j < nnodes * n; ++j) same &= u[3][j] != 0.0 || u[4][j] != 0.0;
+  ok(same, "n %zu, NCOL %zu, NTST %zu: map_many on three threads gives map_apply's bytes",
+     n, m, N);
+  for (int q = 0; q < 5; ++q) free(u[q]);
+  free(scr);
   for (int q = 0; q < 3; ++q) free(v[q]), free(w[q]);
   free(old), free(mesh), free(copy), free(L), free(c), free(idx);
 }
