@@ -190,8 +190,47 @@ int auto_model_current(const char *out, const char *source, const auto_model_inf
   return same;
 }
 
-int auto_model_build(const char *stage, const char *source, const auto_model_info *m) {
-  char adapter[4200], so[4200], log[4200], inc[4200];
+/* The compiler's failure for SOURCE (its exit status st) said, with its
+ * own lines from LOG: 2, or 1 when it could not be run at all. */
+static int compile_failed(const char *source, const char *fc, int st, const char *log) {
+  if (st == 127 || st < 0) {
+    cli_error("auto", "%s: cannot run the Fortran compiler '%s' (set FC)", source, fc);
+  } else {
+    cli_error("auto", "%s: the equations do not compile into a plug-in (%s exit %d):",
+              source, fc, st);
+  }
+  show_log(log);
+  return 2;
+}
+
+/* The equations' object, compiled once for every plug-in of SOURCE (one
+ * an NDIM: demo pcl's four differ in the adapter's data alone, and the
+ * Fortran compiler was two thirds of each build): STAGE/NAME.eq.o when an
+ * earlier plug-in of this invocation made it, else OUT/NAME.eq.o when an
+ * earlier invocation did and it is newer than SOURCE (a script's runs are
+ * one invocation each), else compiled into STAGE now.  0 with its path in
+ * obj, or compile_failed's status. */
+static int equations_object(const char *out, const char *stage, const char *source,
+                            const char *name, const char *fc, char *obj, size_t len) {
+  char log[4200], jdir[4200], cached[4200];
+  struct stat ss, so;
+  snprintf(obj, len, "%s/%s.eq.o", stage, name);
+  if (access(obj, R_OK) == 0) return 0;
+  snprintf(cached, sizeof cached, "%s/%s.eq.o", out, name);
+  if (stat(source, &ss) == 0 && stat(cached, &so) == 0 && newer(&so, &ss)) {
+    snprintf(obj, len, "%s", cached);
+    return 0;
+  }
+  snprintf(log, sizeof log, "%s/compile.log", stage);
+  snprintf(jdir, sizeof jdir, "-J%s", stage);
+  char *argv[] = {(char *)fc, "-O2", "-fPIC", jdir, "-c", "-o", obj, (char *)source, NULL};
+  const int st = run_logged(argv, log);
+  return st == 0 ? 0 : compile_failed(source, fc, st, log);
+}
+
+int auto_model_build(const char *out, const char *stage, const char *source,
+                     const auto_model_info *m) {
+  char adapter[4200], so[4200], log[4200], inc[4200], obj[4200];
   model_files(stage, m, adapter, so, sizeof adapter);
   snprintf(log, sizeof log, "%s/compile.log", stage);
   snprintf(inc, sizeof inc, "-I%s", include_dir());
@@ -206,23 +245,18 @@ int auto_model_build(const char *stage, const char *source, const auto_model_inf
     return 1;
   }
   const char *fc = getenv("FC"), *archive = adapter_archive();
+  if (!fc || !*fc) fc = "gfortran";
   if (access(archive, R_OK) != 0) {
     cli_error("auto", "%s: %s (whirl's adapter of AUTO's routines; set WHIRL_AUTO_ADAPTER)",
               archive, strerror(errno));
     return 1;
   }
-  char jdir[4200];
-  snprintf(jdir, sizeof jdir, "-J%s", stage);
-  char *argv[] = {(char *)(fc && *fc ? fc : "gfortran"), "-O2", "-fPIC", "-shared",
-                  "-Wl,-z,defs", inc, jdir, "-o", so, (char *)source, adapter,
-                  (char *)archive, "-lm", NULL};
+  int rc = equations_object(out, stage, source, m->name, fc, obj, sizeof obj);
+  if (rc) return rc;
+  /* the routines the adapter needs (FUNC, STPNT, ...) missing from the
+   * equations: an undefined symbol here (-z defs), the linker's line */
+  char *argv[] = {(char *)fc, "-O2", "-fPIC", "-shared", "-Wl,-z,defs", inc, "-o", so,
+                  obj, adapter, (char *)archive, "-lm", NULL};
   const int st = run_logged(argv, log);
-  if (st == 0) return 0;
-  if (st == 127 || st < 0)
-    cli_error("auto", "%s: cannot run the Fortran compiler '%s' (set FC)", source, argv[0]);
-  else
-    cli_error("auto", "%s: the equations do not compile into a plug-in (%s exit %d):",
-              source, argv[0], st);
-  show_log(log);
-  return 2;
+  return st == 0 ? 0 : compile_failed(source, fc, st, log);
 }

@@ -26,11 +26,14 @@ int auto_model_source(const char *dir, const char *name, char *path, size_t len)
 
 /* Write STAGE/auto_model.c (the model's data and whirl_model_def) and
  * compile it with SOURCE and the adapter archive into STAGE/NAME.so
- * (m->file: STAGE/FILE.c into STAGE/FILE.so).
+ * (m->file: STAGE/FILE.c into STAGE/FILE.so).  SOURCE is compiled once
+ * into NAME.eq.o for all of them: STAGE's of this invocation, or OUT's of
+ * an earlier one where newer than SOURCE.
  * 0, or 2 with a message and the compiler's own lines printed (the
  * equations do not compile, FUNC or STPNT missing), 1 for I/O errors or
  * no adapter archive. */
-int auto_model_build(const char *stage, const char *source, const auto_model_info *m);
+int auto_model_build(const char *out, const char *stage, const char *source,
+                     const auto_model_info *m);
 
 /* Is OUT/NAME.so, built by an earlier invocation, still the plug-in of
  * SOURCE and m: OUT/auto_model.c is the file m gives, and NAME.so is

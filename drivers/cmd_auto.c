@@ -586,7 +586,7 @@ static int build_model(auto_job *J) {
                                (const char *const *)r->x_names,
                                r->ndim == J->ndim ? NULL : file};
     if (auto_model_current(J->out, src, &m)) continue;
-    rc = auto_model_build(stage, src, &m);
+    rc = auto_model_build(J->out, stage, src, &m);
     built = 1;
   }
   if (rc) {

@@ -188,6 +188,53 @@ check $? "no adapter archive: exit $st, '$(head -1 "$tmp/b6.err")', nothing writ
   ! grep -q 'func_\|getp_' "$tmp/b6.out/auto_model.c" && grep -q 'wa_ndim = 1,' "$tmp/b6.out/auto_model.c"
 check $? "the plug-in's C file is the model's data (NDIM 1), the adapter linked from the archive"
 
+# c-files of two NDIMs (demo pcl's extended systems): a plug-in each, the
+# equations compiled once (FC a wrapper that counts its -c calls), and a
+# later invocation with a third NDIM links the object the first left in
+# the output directory
+mkdir "$tmp/nd"
+cat > "$tmp/nd/nd.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*), I
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      DO I = 1, NDIM
+        F(I) = PAR(1) - U(I)**2
+      END DO
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM, I
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 1
+      DO I = 1, NDIM
+        U(I) = 1
+      END DO
+      END SUBROUTINE STPNT
+F
+for k in 1 2 3; do
+  sed -e "s/^NDIM=   1,/NDIM=   $k,/" -e 's/^NMX=  200/NMX=  20/' -e 's/JAC= 1/JAC= 0/' "$tmp/fold/c.fold.1" > "$tmp/nd/c.nd.$k"
+done
+mv "$tmp/nd/c.nd.3" "$tmp/nd3"
+cat > "$tmp/fc" <<W
+#!/bin/sh
+case " \$* " in *" -c "*) echo "\$*" >> "$tmp/fc.log" ;; esac
+exec "${FC:-gfortran}" "\$@"
+W
+chmod +x "$tmp/fc"
+(cd "$tmp" && FC="$tmp/fc" "$WHIRL" auto nd --quiet > /dev/null 2>&1) &&
+  [ "$(grep -c 'nd.f90' "$tmp/fc.log")" = 1 ] && [ -s "$tmp/nd.out/nd.so" ] &&
+  [ -s "$tmp/nd.out/nd.ndim2.so" ] && [ -s "$tmp/nd.out/b.nd.2" ] && [ -s "$tmp/nd.out/nd.eq.o" ]
+check $? "c-files of NDIM 1 and 2: two plug-ins, the equations compiled once ($(grep -c 'nd.f90' "$tmp/fc.log" 2>/dev/null) -c call)"
+mv "$tmp/nd3" "$tmp/nd/c.nd.3"
+(cd "$tmp" && FC="$tmp/fc" "$WHIRL" auto nd --runs=nd.3 --quiet > /dev/null 2>&1) &&
+  [ "$(grep -c 'nd.f90' "$tmp/fc.log")" = 1 ] && grep -q 'wa_ndim = 3,' "$tmp/nd.out/auto_model.c" &&
+  [ -s "$tmp/nd.out/b.nd.3" ]
+check $? "a later invocation with NDIM 3: its plug-in from the object in nd.out, no compilation of the equations"
+(cd "$tmp" && sleep 1 && touch "$tmp/nd/nd.f90" && FC="$tmp/fc" "$WHIRL" auto nd --runs=nd.3 --quiet > /dev/null 2>&1) &&
+  [ "$(grep -c 'nd.f90' "$tmp/fc.log")" = 2 ]
+check $? "equations newer than the object: compiled again"
+
 # AUTO's parseB, parseS and parseD on b., s., d. of the stems $3... in
 # directory $1 (output in $2): the same labels in b. and s., each non-empty
 auto_parse() {
