@@ -24,8 +24,12 @@ typedef struct colloc_scratch {
 } colloc_scratch;
 
 /* The parallel loops over mesh intervals are worth their start (a few
- * microseconds) from about this many state values at Gauss points. */
-#define COLLOC_PAR_MIN 512
+ * microseconds) from about this many state values at Gauss points.  512
+ * until 2026-12-07: by their scripts on two threads against one, abcb
+ * (its fold loci of orbits on n NTST NCOL = 600) took 0.87 / 0.77 s, ab
+ * (560) 0.88 / 0.79, lcbp (800) 0.77 / 0.65, where r3b (1 200 and more)
+ * took 0.69 / 0.79 and pla (3 000) gains a third. */
+#define COLLOC_PAR_MIN 1024
 
 struct whirl_colloc {
   const whirl_problem *prob;

@@ -1355,13 +1355,13 @@ static void test_threads(void) {
   for (int v = 0; v < 3; ++v) {
     whirl_colloc_options o;
     whirl_colloc_options_default(&o);
-    o.ntst = 64; /* 64 · 4 · 3 = 768 values at Gauss points: parallel */
+    o.ntst = 96; /* 96 · 4 · 3 = 1152 values at Gauss points: parallel */
     o.ncol = 4;
     o.threads = v + 1;
     memset(seen_team, 0, sizeof seen_team);
     fail_from = 2.0;
     whirl_colloc *c = whirl_colloc_alloc(&lorenz_seen, &o, err, sizeof err);
-    ok(c != NULL, "threads %d: alloc Lorenz NTST 64: %s", v + 1, err);
+    ok(c != NULL, "threads %d: alloc Lorenz NTST 96: %s", v + 1, err);
     if (!c) return;
     nx = whirl_colloc_size(c);
     const whirl_system *s = whirl_colloc_system(c);
