@@ -519,12 +519,6 @@ int cont_solve_ext(whirl_cont *c, double *b, int trans) {
 
 /* ------------------------------------------------------------ corrector */
 
-/* Newton's method on the extended system; with chord Newton
- * (opt.newton_chord) the factorisation held from the last analysed point
- * or an earlier iterate is kept while the corrections contract by
- * chord_theta per iteration, and made anew at the current iterate when
- * they do not (AUTO-07p freezes the Jacobian after NWTN iterations in the
- * same spirit).  Its iterations are cheap: F and one solve. */
 /* F at the iterate (X, p) into c->f, a failure classified as the
  * corrector's. */
 static int eval_F(whirl_cont *c, const double *X, const double *p) {
@@ -552,6 +546,12 @@ static int fused_F_status(whirl_cont *c, const double *X, const double *p, int r
   return 0;
 }
 
+/* Newton's method on the extended system; with chord Newton
+ * (opt.newton_chord) the factorisation held from the last analysed point
+ * or an earlier iterate is kept while the corrections contract by
+ * chord_theta per iteration, and made anew at the current iterate when
+ * they do not (AUTO-07p freezes the Jacobian after NWTN iterations in the
+ * same spirit).  Its iterations are cheap: F and one solve. */
 int cont_correct(whirl_cont *c, const double *X0, const double *dir, double s,
                  double *X) {
   const size_t n = c->n, N = c->N;

@@ -140,6 +140,15 @@ static void bratu_errors(const whirl_bvp *b, const double *X, double lam,
 /* ------------------------------------------------------------------------
  * 1. Bratu by the continuation core */
 
+/* Bratu's BVP options: NTST, NCOL, its two boundary conditions. */
+static void bratu_options(whirl_bvp_options *o, size_t ntst, size_t ncol) {
+  whirl_bvp_options_default(o);
+  o->ntst = ntst;
+  o->ncol = ncol;
+  o->nbc = 2;
+  o->bc = bratu_bc;
+}
+
 /* kind: the core's LU of the bordered matrix (structured = 0), or with
  * structured = 1 the system's condensation of parameters (bvp_cond.c) */
 static void test_bratu(whirl_linsol_kind kind, int structured) {
@@ -148,11 +157,7 @@ static void test_bratu(whirl_linsol_kind kind, int structured) {
   const size_t ntst = 10, ncol = 4;
   char err[256];
   whirl_bvp_options o;
-  whirl_bvp_options_default(&o);
-  o.ntst = ntst;
-  o.ncol = ncol;
-  o.nbc = 2;
-  o.bc = bratu_bc;
+  bratu_options(&o, ntst, ncol);
   whirl_bvp *b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
   ok(b != NULL, "Bratu (%s): alloc NTST 10 NCOL 4: %s", kn, err);
   if (!b) return;
@@ -235,11 +240,7 @@ static void test_bratu(whirl_linsol_kind kind, int structured) {
 static void test_factor_F_branch(void) {
   char err[256];
   whirl_bvp_options o;
-  whirl_bvp_options_default(&o);
-  o.ntst = 10;
-  o.ncol = 4;
-  o.nbc = 2;
-  o.bc = bratu_bc;
+  bratu_options(&o, 10, 4);
   whirl_bvp *b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
   ok(b && whirl_bvp_system(b)->bsolver && whirl_bvp_system(b)->bsolver->factor_F,
      "Bratu NTST 10: the condensed solver makes F with the Jacobian (factor_F)");
@@ -317,11 +318,7 @@ static double bratu_theta_upper(double lam) {
 static double bratu_upper_error(int adapt_every, size_t *nadapt) {
   char err[256];
   whirl_bvp_options o;
-  whirl_bvp_options_default(&o);
-  o.ntst = 8;
-  o.ncol = 4;
-  o.nbc = 2;
-  o.bc = bratu_bc;
+  bratu_options(&o, 8, 4);
   o.adapt_every = adapt_every;
   whirl_bvp *b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
   if (!b) return NAN;
@@ -377,11 +374,7 @@ static void test_bratu_newton(void) {
   const size_t ntst = 8, ncol = 5;
   char err[256];
   whirl_bvp_options o;
-  whirl_bvp_options_default(&o);
-  o.ntst = ntst;
-  o.ncol = ncol;
-  o.nbc = 2;
-  o.bc = bratu_bc;
+  bratu_options(&o, ntst, ncol);
   whirl_bvp *b = whirl_bvp_alloc(&bratu, &o, err, sizeof err);
   ok(b != NULL, "Bratu NTST 8 NCOL 5: %s", err);
   if (!b) return;
@@ -937,11 +930,7 @@ static void fold_of_bvp_check(whirl_bvp_options *o, const double *p) {
 
 static void test_bsolver(void) {
   whirl_bvp_options o;
-  whirl_bvp_options_default(&o);
-  o.ntst = 9;
-  o.ncol = 4;
-  o.nbc = 2;
-  o.bc = bratu_bc;
+  bratu_options(&o, 9, 4);
   const double pb[1] = {2.0};
   bsolver_case("Bratu NTST 9 NCOL 4, k = lambda", &bratu, &o, pb, 0);
   bsolver_case("Bratu by differences NTST 9 NCOL 4, k = lambda", &bratu_fd, &o, pb, 0);
@@ -1353,11 +1342,7 @@ static const whirl_problem fail_model = {
 
 static void test_structured_failures(void) {
   whirl_bvp_options o;
-  whirl_bvp_options_default(&o);
-  o.ntst = 100;
-  o.ncol = 3;
-  o.nbc = 2;
-  o.bc = bratu_bc;
+  bratu_options(&o, 100, 3);
   o.threads = 3;
   const double p[2] = {1.0, 2.0};
   for (int pass = 0; pass < 2; ++pass) {
