@@ -234,6 +234,18 @@ check $? "a later invocation with NDIM 3: its plug-in from the object in nd.out,
 (cd "$tmp" && sleep 1 && touch "$tmp/nd/nd.f90" && FC="$tmp/fc" "$WHIRL" auto nd --runs=nd.3 --quiet > /dev/null 2>&1) &&
   [ "$(grep -c 'nd.f90' "$tmp/fc.log")" = 2 ]
 check $? "equations newer than the object: compiled again"
+# another demo of the same NAME, its equations older than the object, into
+# the same output directory: its own equations compiled, not the object
+# of the first (u = +-sqrt(p/2) here: its branch starts at u = 1, p = 2)
+mkdir "$tmp/other" "$tmp/other/nd"
+sed 's/F(I) = PAR(1) - U(I)\*\*2/F(I) = PAR(1) - 2*U(I)**2/; s/PAR(1) = 1$/PAR(1) = 2/' \
+  "$tmp/nd/nd.f90" > "$tmp/other/nd/nd.f90"
+cp "$tmp/nd/c.nd.3" "$tmp/other/nd/"
+touch -d '2001-01-01' "$tmp/other/nd/nd.f90"
+(cd "$tmp" && FC="$tmp/fc" "$WHIRL" auto other/nd --runs=nd.3 --out=nd.out --quiet > /dev/null 2>&1) &&
+  [ "$(grep -c 'nd.f90' "$tmp/fc.log")" = 3 ] && grep -q 'other/nd/nd.f90' "$tmp/nd.out/nd.eq.src" &&
+  awk '$1 == 1 && ($2 == 1 || $2 == -1) { found = ($5 + 0 > 1.99 && $5 + 0 < 2.01) } END { exit !found }' "$tmp/nd.out/b.nd.3"
+check $? "another demo's equations of the same NAME, older than the object: compiled, its own branch (p = 2 at u = 1)"
 
 # AUTO's parseB, parseS and parseD on b., s., d. of the stems $3... in
 # directory $1 (output in $2): the same labels in b. and s., each non-empty
