@@ -1959,6 +1959,20 @@ int whirl_cont_step(whirl_cont *c) {
 }
 
 const whirl_point *whirl_cont_point(const whirl_cont *c) { return &c->pt; }
+
+const whirl_point *whirl_cont_current(whirl_cont *c) {
+  if (!c->started) return NULL;
+  const size_t index = c->pt.index;
+  cont_state_copy(c, &c->out, &c->cur);
+  c->out.type = WHIRL_PT_REGULAR;
+  c->out.label = 0;
+  c->out.has_sec = 0;
+  const size_t next = c->index;
+  fill_point(c);
+  c->index = next;
+  c->pt.index = index;
+  return &c->pt;
+}
 int whirl_cont_stop_reason(const whirl_cont *c) { return c->stop_reason; }
 const whirl_cont_stats *whirl_cont_get_stats(const whirl_cont *c) { return &c->stats; }
 void whirl_cont_reset_stats(whirl_cont *c) { memset(&c->stats, 0, sizeof c->stats); }

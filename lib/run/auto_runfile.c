@@ -158,6 +158,8 @@ static int problem(ctx *c) {
   put(c->t, "UDOT = direction\n");
   /* a new point's tangent as AUTO's direction vector, unrefined */
   put(c->t, "TANGENT = iterate\n");
+  /* a Newton failure at DSMIN ends the branch in AUTO's MX label */
+  put(c->t, "MX = label\n");
   /* AUTO's default JAC is 0 (finite differences), whirl's 1: always said */
   whirl_auto_constants_int(c->ac, "JAC", &jac);
   put(c->t, "JAC    = %d%s\n", jac != 0, jac == -1 ? "  # AUTO: JAC = -1 (DFDU only)" : "");

@@ -506,6 +506,33 @@ static int write_label(run_ctx *R, const branch_spec *b, const whirl_point *pt,
   return 0;
 }
 
+/* AUTO's end of a branch whose Newton fails at DSMIN (MX = label): its
+ * last point again, one PT on, labelled MX (TY -9 in b. and s. files), as
+ * AUTO's STPLBV writes it, and a restart may name it (IRS = 'MX1').  0 or
+ * -1 (an output error). */
+static int mx_end(run_ctx *R, const branch_spec *b, whirl_cont *c, double *pfull,
+                  double *state) {
+  const whirl_point *cur = whirl_cont_current(c);
+  if (!cur) return -1;
+  whirl_point mx = *cur;
+  mx.index++;
+  mx.type = WHIRL_PT_REGULAR; /* (write_label logs special types itself) */
+  const void *obj = b->kind == WHIRL_SOL_COLLOC ? (const void *)b->colloc
+                    : b->kind == WHIRL_SOL_HBM  ? (const void *)b->hbm
+                    : b->kind == WHIRL_SOL_BVP  ? (const void *)b->bvp
+                                                : NULL;
+  base_of(b, mx.x, mx.p, pfull);
+  double l2 = 0.0, period = 0.0;
+  const int lab = ++R->label;
+  if (run_table_row(R, b->kind, obj, R->branch, mx.index, "MX", lab, mx.x, pfull,
+                    mx.stable, &l2, &period, state) ||
+      write_label(R, b, &mx, "MX", lab, pfull))
+    return -1;
+  fprintf(R->log, "  MX  LAB %d  PT %zu  %s = %.10g: %s\n", lab, mx.index,
+          R->pnames[b->icp], mx.p[b->icp], whirl_stop_reason_name(WHIRL_STOP_NOCONV));
+  return 0;
+}
+
 /* How the branch ended: a failure keeps the points but fails the run
  * (said, R->failed); a normal end is logged.  The branch's status. */
 static int branch_end(run_ctx *R, whirl_cont *c, int rc, int stop, size_t npts) {
@@ -521,6 +548,7 @@ static int branch_end(run_ctx *R, whirl_cont *c, int rc, int stop, size_t npts) 
     fprintf(R->log, "  ended: %s after %zu points\n",
             stop == 1   ? "L2-NORM left [A0, A1]"
             : stop == 3 ? "a STOP point"
+            : stop == 4 ? "no convergence with minimum step size (DSMIN), labelled MX"
             : stop      ? "maximum number of points (NMX)"
                    : whirl_stop_reason_name(whirl_cont_stop_reason(c)),
             npts);
@@ -749,6 +777,11 @@ int run_branch(run_ctx *R, branch_spec *b) {
   }
   if (b->trace && rc == WHIRL_DONE && whirl_cont_stop_reason(c) == WHIRL_STOP_LOOP)
     b->trace->closed = 1;
+  if (rc == WHIRL_DONE && !stop && npts > 0 && s->mx_label &&
+      whirl_cont_stop_reason(c) == WHIRL_STOP_NOCONV) {
+    if (mx_end(R, b, c, pfull, state)) rc = -1;
+    else stop = 4;
+  }
   rc = branch_end(R, c, rc, stop, npts);
   branch_summary(R, b, c, counts, npts, pmin, pmax);
   whirl_cont_free(c);

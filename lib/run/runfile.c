@@ -98,6 +98,7 @@ static const key_def keys[] = {
     {WHIRL_RK_DIFFERENCES, "DIFFERENCES", "differences", NULL, K_METHOD},
     {WHIRL_RK_UDOT, "UDOT", "udot", NULL, K_METHOD},
     {WHIRL_RK_TANGENT, "TANGENT", "tangent", NULL, K_METHOD},
+    {WHIRL_RK_MX, "MX", "no_convergence", NULL, K_METHOD},
     {WHIRL_RK_THREADS, "THREADS", "threads", NULL, K_INT},
     {WHIRL_RK_NWTN, "NWTN", "newton_full_iterations", NULL, K_INT},
     {WHIRL_RK_HB_PERIOD, "HB_PERIOD", "hopf_period", NULL, K_STRING},
@@ -632,6 +633,7 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_DIFFERENCES: return &s->auto_differences;
     case WHIRL_RK_UDOT: return &s->udot_direction;
     case WHIRL_RK_TANGENT: return &s->tangent_iterate;
+    case WHIRL_RK_MX: return &s->mx_label;
     case WHIRL_RK_THREADS: return &s->threads;
     case WHIRL_RK_NWTN: return &s->nwtn;
     case WHIRL_RK_DISCOVER_STARTS: return &s->discover_starts;
@@ -778,6 +780,13 @@ static int set_method(whirl_runfile *rf, const key_def *d, const char *where) {
       return fail(rf, where, "%s: '%s' is neither refined nor iterate", kn,
                   show(t, ITEMLEN, shown, sizeof shown));
     s->tangent_iterate = !strcasecmp(t, "iterate");
+    return WHIRL_OK;
+  }
+  if (d->key == WHIRL_RK_MX) { /* a branch whose Newton fails at DSMIN */
+    if (strcasecmp(t, "fail") && strcasecmp(t, "label"))
+      return fail(rf, where, "%s: '%s' is neither fail nor label", kn,
+                  show(t, ITEMLEN, shown, sizeof shown));
+    s->mx_label = !strcasecmp(t, "label");
     return WHIRL_OK;
   }
   if (d->key == WHIRL_RK_ORBIT_MAX) { /* what MAX U(i) of an orbit is */

@@ -79,6 +79,10 @@ typedef struct whirl_run_settings {
   int udot_direction;           /* UDOT = direction: a BVP's integral
                                    conditions get the branch's direction as
                                    udot, AUTO's UDOT (0: u'(t)) */
+  int mx_label;                 /* MX = label: a branch whose Newton fails
+                                   at DSMIN ends in an MX label at its last
+                                   point and the run goes on, AUTO's (0:
+                                   the run fails, whirl's) */
   int tangent_iterate;          /* TANGENT = iterate: a new point's tangent
                                    is the corrector's last factorisation's
                                    solve as it is, AUTO's direction vector

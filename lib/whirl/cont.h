@@ -341,6 +341,14 @@ WHIRL_API int whirl_cont_switch_direction(whirl_cont *c, const whirl_point *bp,
 WHIRL_API int whirl_cont_step(whirl_cont *c);
 
 WHIRL_API const whirl_point *whirl_cont_point(const whirl_cont *c);
+/* The point the next step would leave from, on the system's representation
+ * as it is now: the last point given, or after a mesh adaptation its values
+ * on the new mesh (whirl_cont_point keeps them as they were given, on the
+ * old one).  For a branch that ended at DSMIN (WHIRL_STOP_NOCONV), whose
+ * last steps may have adapted the mesh: AUTO's MX solution.  Its index is
+ * the last point's, its type regular.  The struct is whirl_cont_point's
+ * (overwritten), valid until the next call on c; NULL before a start. */
+WHIRL_API const whirl_point *whirl_cont_current(whirl_cont *c);
 WHIRL_API int whirl_cont_stop_reason(const whirl_cont *c);
 WHIRL_API const whirl_cont_stats *whirl_cont_get_stats(const whirl_cont *c);
 WHIRL_API void whirl_cont_reset_stats(whirl_cont *c);

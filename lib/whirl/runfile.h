@@ -67,6 +67,9 @@ typedef enum whirl_run_key {
   WHIRL_RK_TANGENT,     /* a new point's tangent from the corrector's last
                            factorisation: refined once (0) or as it is,
                            AUTO's direction vector (1) */
+  WHIRL_RK_MX,          /* a branch whose Newton fails at DSMIN: the run
+                           fails (0), or its last point is labelled MX and
+                           the run goes on, as AUTO's (1) */
   WHIRL_RK_COUNT
 } whirl_run_key;
 

@@ -10,7 +10,10 @@
 #     output against being replaced by run 2.
 #  2. Bad input: an unknown constant, no equations file, equations that do
 #     not compile, STPNT missing: exit 2, the file named, nothing written.
-#  3. AUTO-07p's demo ab (AUTO_07P_DIR, else ../shared/auto-07p beside the
+#  3. A branch with a corner, u = |p|: its steps shrink to DSMIN there and
+#     the run ends in AUTO's MX label (TY -9) at its last point, which a
+#     second run restarts from; MX = fail (whirl's default) fails the run.
+#  4. AUTO-07p's demo ab (AUTO_07P_DIR, else ../shared/auto-07p beside the
 #     source tree; skipped where absent): the HB of c.ab.2 from label 2
 #     against AUTO's own output (test/hyper.all: 1.65042E-01 1.47770E+00
 #     4.05955E-01 1.42084E+00), the s-file header of label 1 against the
@@ -247,6 +250,66 @@ touch -d '2001-01-01' "$tmp/other/nd/nd.f90"
   awk '$1 == 1 && ($2 == 1 || $2 == -1) { found = ($5 + 0 > 1.99 && $5 + 0 < 2.01) } END { exit !found }' "$tmp/nd.out/b.nd.3"
 check $? "another demo's equations of the same NAME, older than the object: compiled, its own branch (p = 2 at u = 1)"
 
+# A branch with a corner, u = |p| (kink.f90): from p = 1 down, every step
+# past the corner fails and the steps shrink to DSMIN.  AUTO ends such a
+# branch with an MX label at its last point (TY -9, a solution a restart
+# may name; AUTO-07p's own run of these files: PT 11, LAB 2, p =
+# 1.06717E-04) and the run goes on; whirl auto's run files ask for that
+# (MX = label), a run file without it fails as before.
+mkdir "$tmp/kink"
+cat > "$tmp/kink/kink.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      F(1) = U(1) - ABS(PAR(1))
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 1
+      U(1) = 1
+      END SUBROUTINE STPNT
+F
+cat > "$tmp/kink/c.kink.1" <<'C'
+NDIM = 1, IPS = 1, IRS = 0, ILP = 0, ICP = [1]
+NTST = 20, NCOL = 4, IAD = 3, ISP = 0, ISW = 1, IPLT = 0, NBC = 0, NINT = 0
+NMX = 100, NPR = 100, MXBF = 0, IID = 2, ITMX = 8, ITNW = 5, NWTN = 3, JAC = 0
+EPSL = 1e-8, EPSU = 1e-8, EPSS = 1e-6
+DS = -0.1, DSMIN = 1e-4, DSMAX = 0.2, IADS = 1
+NPAR = 1, THL = {}, THU = {}
+C
+sed -e 's/IRS = 0/IRS = 2/' -e 's/DS = -0.1/DS = 0.1/' -e 's/NMX = 100/NMX = 20/' \
+  "$tmp/kink/c.kink.1" > "$tmp/kink/c.kink.2"
+(cd "$tmp" && "$WHIRL" auto kink --quiet > kink.log 2> kink.err)
+st=$?
+check $st "whirl auto kink: the branch ending at DSMIN is no failure (exit $st) $(head -1 "$tmp/kink.err")"
+# the last two rows of run 1: the last point, then the MX one PT on, label
+# 2, the same values; the corner within a few DSMIN
+res=$(awk 'substr($0, 1, 4) + 0 != 0 { p2 = p1; p1 = $0 } END {
+    split(p2, a, " "); split(p1, b, " ");
+    if (b[3] != -9 || b[4] != 2 || b[2] != a[2] + 1) print "types", a[3], b[3], b[4];
+    for (i = 5; i <= 7; i++) if (a[i] != b[i]) print "column", i;
+    if (!(b[5] + 0 > 0 && b[5] + 0 < 1e-3) || b[7] != b[5]) print "p", b[5], "u", b[7] }' \
+  "$tmp/kink.out/b.kink.1" 2>&1)
+check "$([ -z "$res" ] && echo 0 || echo 1)" "b.kink.1: the MX row (TY -9, LAB 2) at the last point, PT + 1, by the corner u = p = $(tail -1 "$tmp/kink.out/b.kink.1" | awk '{print $5}') ${res}"
+awk 'NR == 1 || ($1 + 0 > 0 && NF == 16) { if ($3 == -9 && $4 == 2) f = 1 } END { exit !f }' "$tmp/kink.out/s.kink.1"
+check $? "s.kink.1: the MX solution, label 2 of type -9 (a header AUTO's restarts read)"
+grep -q '^MX *= *label' "$tmp/kink.out/kink.1.whirl" && grep -q 'MX  LAB 2' "$tmp/kink.out/kink.1.out/run.log"
+check $? "kink.1.whirl asks for MX = label; run.log names the MX label"
+last=$(awk 'substr($0, 1, 4) + 0 != 0 { p = $5 } END { print p }' "$tmp/kink.out/b.kink.2")
+awk -v p="$last" 'BEGIN { exit !(p + 0 > 1) }'
+check $? "c.kink.2 restarts from the MX (IRS = 2) and goes back up the branch (p = $last after NMX)"
+(cd "$tmp/kink.out" && "$WHIRL" run kink.1.whirl --MX=fail --OUT=fail.out --quiet --no-plot > ../kinkf.log 2>&1)
+st=$?
+[ "$st" = 1 ] && grep -q 'no convergence with minimum step size' "$tmp/kinkf.log"
+check $? "MX = fail (whirl's default): the same branch fails the run, exit $st: $(head -1 "$tmp/kinkf.log")"
+(cd "$tmp/kink.out" && "$WHIRL" run kink.1.whirl --MX=maybe --OUT=bad.out --quiet --no-plot > ../kinkb.log 2>&1)
+st=$?
+[ "$st" = 2 ] && grep -q "neither fail nor label" "$tmp/kinkb.log" && [ ! -e "$tmp/kink.out/bad.out" ]
+check $? "MX = maybe: exit $st, '$(head -1 "$tmp/kinkb.log")', nothing written"
+
 # AUTO's parseB, parseS and parseD on b., s., d. of the stems $3... in
 # directory $1 (output in $2): the same labels in b. and s., each non-empty
 auto_parse() {
@@ -294,6 +357,24 @@ if [ -d "$auto/demos/ab" ]; then
   fi
 else
   n=$((n + 1)); echo "ok $n - # SKIP no AUTO-07p demos at $auto (set AUTO_07P_DIR)"
+fi
+
+# AUTO-07p's demo kar (IPS = 4, NTST 40, IAD = 3): its branch ends at
+# DSMIN where PAR(1) = gamma crosses 0 the fourth time, after a mesh
+# adaptation in the failing steps; AUTO's own run ends there in MX 8.  The
+# MX solution is the last point on the mesh the run now has (the mesh its
+# s-file row holds): its L2-NORM is the last row's to the interpolation
+# error (the last point's values on the new mesh gave 5.6157 for 5.5588)
+if [ -d "$auto/demos/kar" ]; then
+  (cd "$tmp" && "$WHIRL" auto "$auto/demos/kar" --quiet > kar.log 2>&1)
+  st=$?
+  res=$(awk 'substr($0, 1, 4) + 0 != 0 { p2 = p1; p1 = $0 } END {
+      split(p2, a, " "); split(p1, b, " "); d = (b[6] - a[6]) / a[6];
+      if (d < 0) d = -d;
+      if (b[3] != -9 || b[4] != 8 || b[5] != a[5] || !(d < 1e-6)) print a[6], b[3], b[4], b[6] }' \
+    "$tmp/kar.out/b.kar.1" 2>&1)
+  [ "$st" = 0 ] && [ -z "$res" ]
+  check $? "whirl auto kar: exit $st, the branch ends in MX 8 as AUTO's, its L2-NORM the last point's on the new mesh $res"
 fi
 
 # AUTO-07p's demo exp: a boundary-value problem (IPS = 4, Bratu)
