@@ -637,10 +637,12 @@ static int append_file(FILE *dst, const char *src) {
   return rc;
 }
 
-/* AUTO's number of run i's first branch (AUTO-07p io.f90, NEWLAB): one
- * more than the largest of its group for a fresh start or a branch switch
- * (ISW < 0); the restart label itself for a locus (|ISW| = 2) or orbits
- * from a Hopf point; else the branch of the restart point. */
+/* AUTO's number of run i's first branch (AUTO-07p io.f90, NEWLAB): the
+ * constants' IBR when given; else one more than the largest of its group
+ * for a fresh start or a branch switch (ISW < 0); the restart label itself
+ * for a locus (|ISW| = 2) or orbits from a Hopf point; else the branch of
+ * the restart point.  (A script's runs get IBR and LAB from its runner,
+ * python/whirl_auto.py, which knows the solutions a run starts from.) */
 static int first_branch(const auto_job *J, size_t i) {
   const auto_run *r = &J->run[i];
   int ips = 1, isw = 1, mbr = 0;
@@ -650,6 +652,9 @@ static int first_branch(const auto_job *J, size_t i) {
     for (size_t m = 0; m < J->run[g].nlabs; m++)
       if (J->run[g].labs[m].br > mbr) mbr = J->run[g].labs[m].br;
   if (r->br_fixed > 0) return r->br_fixed;
+  int ibr = 0; /* AUTO's IBR: the branch number given */
+  whirl_auto_constants_int(r->ac, "IBR", &ibr);
+  if (ibr > 0) return ibr;
   const whirl_auto_label *L = NULL;
   const int want = r->src >= 0 ? atoi(r->irs[0] ? r->irs : r->label) : 0;
   for (size_t m = 0; r->src >= 0 && m < J->run[r->src].nlabs && !L; m++)
@@ -672,6 +677,9 @@ static int write_auto_files(auto_job *J, size_t i) {
   for (size_t g = group_start(J, i > 0 ? i - 1 : 0); !r->fresh && g < i; g++)
     for (size_t m = 0; m < J->run[g].nlabs; m++)
       if (J->run[g].labs[m].label > r->offset) r->offset = J->run[g].labs[m].label;
+  int lab = 0; /* AUTO's LAB: the first label given (NEWLAB) */
+  whirl_auto_constants_int(r->ac, "LAB", &lab);
+  if (lab > 0 && !r->sub) r->offset = lab - 1;
   r->br_auto = first_branch(J, i);
   whirl_auto_output o = {dir, r->ac, r->ndim, J->npar, (const char *const *)J->p_names,
                          (const char *const *)r->x_names, r->offset, !r->fresh, r->br_auto};

@@ -126,10 +126,33 @@ class Solution:
         self.row, self.block = row, list(block)
         self.c, self.e = list(consts), e
         self.columns = list(columns)  # the b. file's value columns (PAR(1), L2-NORM, ...)
+        # the largest label and branch of the solutions of the run it came
+        # from, which AUTO's restart file (fort.3) ends with (AUTO's
+        # parseS: _mlab, _mbr, and after relabel the number of solutions):
+        # a run from it numbers on from them (_numbering); None: not known
+        self.numbers = None
+        # a point of a locus (its run's |ISW| >= 2): AUTO's type code there
+        # is 10 k + its type, k the locus's (whirl's b. files write the
+        # type alone), which _numbering needs
+        isw = Runner.current(self.c, 'ISW')
+        try:
+            self.on_locus = bool(isw) and abs(int(float(isw))) >= 2
+        except ValueError:
+            self.on_locus = False
 
     def copy(self):
-        return Solution(self.run_id, self.wlab, self.row, self.block,
-                        self.c, self.e, self.columns, self.runs)
+        c = Solution(self.run_id, self.wlab, self.row, self.block,
+                     self.c, self.e, self.columns, self.runs)
+        c.numbers, c.on_locus = self.numbers, self.on_locus
+        return c
+
+    @property
+    def br(self):
+        return abs(int(self.row[0:4]))
+
+    @property
+    def itp(self):
+        return int(self.row[10:14])
 
     @property
     def ty(self):
@@ -227,6 +250,57 @@ class Solution:
 
     def __repr__(self):
         return 'Solution(%s %d, run %s)' % (self.ty, self.lab, self.run_id)
+
+
+# AUTO's type codes of the TY constant's names (a restart's type given)
+TY_CODES = {'BP': 1, 'LP': 2, 'HB': 3, 'UZ': -4, 'PD': 7, 'TR': 8, 'EP': 9, 'MX': -9}
+
+
+def _numbering(start, consts):
+    """AUTO's numbers of a run from solution START (AUTO-07p io.f90,
+    NEWLAB), as constants for the staged constants file: its labels from
+    LAB = the largest label of the solutions of the run START came from + 1
+    (Solution.numbers; unless the constants give LAB), its first branch IBR
+    (unless they give it): one more than their largest branch for a switch
+    (ISW < 0, and the run of starting data of a locus of orbits, whose ISW
+    AUTO makes -2: periodic.f90), the restart label itself for a locus
+    (|ISW| = 2, or ISW = 2 of a BVP) or orbits from a Hopf point (IPS = 2,
+    where ISW is then 1), else START's own branch.  None for a fresh start
+    (labels from 1, branch 1: whirl's own numbering)."""
+    if not isinstance(start, Solution) or start.numbers is None:
+        return []
+
+    def const(key, default):
+        v = Runner.current(consts, key)
+        try:
+            return int(float(v.replace('D', 'E').replace('d', 'e'))) if v else default
+        except ValueError:
+            return default
+    mlab, mbr = start.numbers
+    ips, isw, itp = const('IPS', 1), const('ISW', 1), start.itp
+    if start.on_locus and abs(itp) < 10:  # AUTO's 10 k + type (k >= 1)
+        itp = itp + 10 if itp >= 0 else itp - 10
+    ty = Runner.current(consts, 'TY')
+    if ty:
+        m = re.match(r"['\"]?([A-Za-z]+)", ty)
+        itp = TY_CODES.get(m.group(1).upper(), itp) if m else itp
+    if ips == 2 and (itp == 3 or abs(itp) // 10 == 3):
+        isw = 1  # periodic.f90: a Hopf start
+    elif ips == 2 and abs(isw) >= 2 and itp in (5, 6, 7, 8):
+        isw = -abs(isw)  # periodic.f90: a locus's run of starting data
+    out = []
+    if const('LAB', 0) == 0:
+        out.append('LAB = %d' % (mlab + 1))
+    if const('IBR', 0) == 0:
+        if isw < 0:
+            br = mbr + 1
+        elif (abs(itp) < 10 and abs(isw) == 2) or (ips == 2 and itp == 3) \
+                or (ips == 4 and isw == 2 and abs(itp) < 10):
+            br = start.lab
+        else:
+            br = start.br
+        out.append('IBR = %d' % br)
+    return ['# AUTO\'s numbering of a run from a solution (io.f90 NEWLAB)'] + out
 
 
 def _select(sols, what):
@@ -522,12 +596,18 @@ class Runner:
             raise ScriptError('run: a restart from %r, a run of another directory '
                               '(whirl restarts from the runs of the directory it is in)' % start)
         with open(os.path.join(self.stage, 'c.' + rid), 'w') as f:
-            f.write('\n'.join(consts) + '\n')
+            f.write('\n'.join(consts + _numbering(start, consts)) + '\n')
         spec = rid if start is None else '%s@%s:%d' % (rid, start.run_id, start.wlab)
         ids = self.whirl_auto(self.e, spec)
         bd = BifDiag()
         for run_id in ids:
             bd.extend(self.read_run(run_id, self.consts, self.e))
+        # the run's largest label and branch (its MXBF branches' too: one
+        # run of AUTO's), which a run from one of its solutions numbers on
+        sols = bd()
+        numbers = (max([s.lab for s in sols] or [0]), max([s.br for s in sols] or [0]))
+        for s in sols:
+            s.numbers = numbers
         self.last = bd
         if sv:
             self.save(bd, sv)
@@ -662,6 +742,10 @@ def relabel(bd, start=1):
                 lab += 1
             rows.append((row, sol))
         br.rows = rows
+    # AUTO's relabel: a run from a relabelled solution numbers on from
+    # their count (parseS.relabel: _mlab = len)
+    for sol in bd():
+        sol.numbers = (lab - 1, sol.numbers[1] if sol.numbers else sol.br)
     return bd
 
 

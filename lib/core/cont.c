@@ -1614,10 +1614,14 @@ static int crosses_pmax(const whirl_cont *c, size_t k, const cont_state *a,
   const size_t j = cont_lead(c);
   return b->X[j] > c->opt.p_max && a->X[j] <= c->opt.p_max;
 }
+/* A user value passed between a and b, or met exactly at b (a step of 0.1
+ * from 0.5 lands on 1 exactly: that point is the UZ; the step after it,
+ * from the zero, is no crossing). */
 static int crosses_uz(const whirl_cont *c, size_t k, const cont_state *a,
                       const cont_state *b) {
-  return sgn(cont_uz_value(c, k, a) - c->opt.uz[k]) *
-             sgn(cont_uz_value(c, k, b) - c->opt.uz[k]) < 0;
+  const int sa = sgn(cont_uz_value(c, k, a) - c->opt.uz[k]);
+  const int sb = sgn(cont_uz_value(c, k, b) - c->opt.uz[k]);
+  return sa * sb < 0 || (sb == 0 && sa != 0);
 }
 static int crosses_sys(const whirl_cont *c, size_t k, const cont_state *a,
                        const cont_state *b) {

@@ -173,6 +173,12 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
     fa = psi(c, ev, k, a, ref);
   }
   fb = psi(c, ev, k, b, ref);
+  if (ev == EV_UZ && fb == 0.0 && fa != 0.0) { /* the step's end is the point */
+    cont_state_copy(c, out, b);
+    out->s = a->s + sqrt(cont_dist2(c, out->X, a->X));
+    out->p[c->opt.icp] = out->X[c->n];
+    return 0;
+  }
   if (!(fa * fb < 0.0)) return 1;
   const double fend = fmax(fabs(fa), fabs(fb)); /* the test's size at the step's ends */
   const double fa0 = fa, fb0 = fb;

@@ -16,6 +16,8 @@
 #     the script (and its line), no traceback.
 #  3. fnc's commands: cd and auto() into a sub-directory's script, loadbd,
 #     a run of IPS = 4 from an array with PAR (below).
+#  4. AUTO's numbers of labels and branches across a script's runs (the
+#     last test, against AUTO-07p's own run).
 # TAP output.
 set -u
 : "${top_srcdir:=.}" "${top_builddir:=.}"
@@ -395,5 +397,54 @@ bad2 "run([[0, 1], [1]], e='ex', c='ex')" "all of one length" "an array whose co
 msg=$(cd "$tmp" && "$WHIRL" auto lg --script=nothere.auto --out=y.out 2>&1)
 [ $? = 2 ] && printf '%s' "$msg" | grep -q "nothere.auto"; check $? "a missing script: exit 2"
 [ ! -e "$tmp/y.out" ] && [ ! -e "$tmp/x.out" ]; check $? "nothing written on bad arguments"
+# AUTO's numbers of a script's runs (io.f90 NEWLAB): a run from a solution
+# numbers its labels on from the largest label of the diagram the solution
+# was selected from (AUTO's restart file), unless the constants give LAB;
+# its branch is that diagram's largest + 1 for a switch (ISW < 0), the
+# solution's own otherwise, or the constants' IBR.  The pitchfork
+# u' = p u - u^3 from p = -1 (BP at p = 0, UZ at p = 0.5, stop at 1), five
+# runs; AUTO-07p's own run of these files wrote in b.all (BR, TY, LAB):
+#   1 9 1; 1 1 2; 1 -4 3; 1 -4 4 | 2 -4 5; 2 -4 6 | 1 -4 1 | 9 -4 5 | 2 -4 7
+# (before 2026-12-07 whirl numbered each run from 1 on branch 1).  Runs 3
+# and 4 step from p = 0.5 by 0.1 onto p = 1 exactly (AUTO's steps, 1e-7
+# longer, pass it): its UZ is labelled (it was missed, an EP at NMX).
+mkdir "$tmp/pf"
+cat > "$tmp/pf/pf.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      F(1) = PAR(1) * U(1) - U(1)**3
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = -1
+      U(1) = 0
+      END SUBROUTINE STPNT
+F
+cat > "$tmp/pf/c.pf" <<'C'
+NDIM = 1, IPS = 1, IRS = 0, ILP = 1, ICP = [1]
+NMX = 100, NPR = 0, MXBF = 0, ISP = 1, ISW = 1, JAC = 0
+EPSL = 1e-10, EPSU = 1e-10, EPSS = 1e-8
+DS = 0.05, DSMIN = 1e-4, DSMAX = 0.1
+NPAR = 1, UZR = {1: 0.5}, UZSTOP = {1: 1.0}
+C
+cat > "$tmp/pf/pf.auto" <<'A'
+r1 = run(e='pf', c='pf')
+r2 = run(r1('BP1'), ISW=-1)
+r3 = run(r1('UZ1'), LAB=1)
+r4 = run(r1('UZ1'), IBR=9)
+r5 = run(r2('UZ1'), ISW=1)
+save(r1 + r2 + r3 + r4 + r5, 'all')
+A
+(cd "$tmp" && "$WHIRL" auto pf --script --quiet --out=pf.out > /dev/null 2> pf.err)
+st=$?
+nums=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 != 0 {
+    printf "%s%d %d %d", (k++ ? "; " : ""), substr($0, 1, 4), substr($0, 11, 4), substr($0, 15, 5) }' \
+  "$tmp/pf.out/b.all" 2>/dev/null)
+[ "$st" = 0 ] && [ "$nums" = "1 9 1; 1 1 2; 1 -4 3; 1 -4 4; 2 -4 5; 2 -4 6; 1 -4 1; 9 -4 5; 2 -4 7" ]
+check $? "AUTO's label and branch numbers across a script's runs (NEWLAB; exit $st): $nums"
 echo "1..$n"
 exit $fail

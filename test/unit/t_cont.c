@@ -769,6 +769,45 @@ static void test_uz(void) {
   whirl_branch_free(b);
 }
 
+/* A user value met exactly by a step: on the trivial branch x = 0 of
+ * F = x the steps of 0.25 from p = 0 land on p = 1 exactly (binary
+ * fractions), where the value minus 1 is 0.0, not a sign change; that
+ * point is the UZ, once (the step after it, from the zero, is no
+ * crossing).  Before 2026-12-07 it was missed (no UZ at all). */
+static int zero_F(const double *x, const double *p, double *f, void *d) {
+  (void)p, (void)d;
+  f[0] = x[0];
+  return 0;
+}
+static int zero_Fx(const double *x, const double *p, double *J, void *d) {
+  (void)x, (void)p, (void)d;
+  J[0] = 1.0;
+  return 0;
+}
+
+static void test_uz_exact(void) {
+  whirl_system s = {.name = "zero", .n = 1, .npar = 1, .F = zero_F, .Fx = zero_Fx};
+  whirl_cont_options o;
+  whirl_cont_options_default(&o);
+  const double uz[1] = {1.0};
+  o.uz = uz;
+  o.nuz = 1;
+  o.ds = o.ds_max = 0.25;
+  o.p_max = 2.1;
+  double x0 = 0.0, p0[1] = {0.0};
+  whirl_branch *b = run(&s, &o, &x0, p0, +1, NULL);
+  const whirl_branch_point *u = b ? nth_type(b, WHIRL_PT_UZ, 0) : NULL;
+  int exact_steps = 1;
+  for (size_t i = 0; b && i < b->len; ++i)
+    if (b->pts[i].type == WHIRL_PT_REGULAR && fmod(b->pts[i].p[0], 0.25) != 0.0)
+      exact_steps = 0;
+  ok(b && count_type(b, WHIRL_PT_UZ) == 1 && u && u->p[0] == 1.0 && exact_steps,
+     "UZ met exactly by a step (p = 1 after four steps of 0.25): labelled once, at p = %g "
+     "(%zu UZ; steps exact: %d)", u ? u->p[0] : NAN, b ? count_type(b, WHIRL_PT_UZ) : 0,
+     exact_steps);
+  whirl_branch_free(b);
+}
+
 /* User values of a quantity other than the continuation parameter (the
  * state x on the circle x^2 + p^2 = 1): localised like every special point,
  * and a stop value ends the branch (AUTO's UZR/UZSTOP on any quantity). */
@@ -1952,6 +1991,7 @@ int main(void) {
   test_kink_no_fold();
   test_pole_no_bp();
   test_uz();
+  test_uz_exact();
   test_uz_fun();
   test_bratu();
   test_tangent_from_newton();
