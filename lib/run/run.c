@@ -586,7 +586,8 @@ static int starting_data_rows(run_ctx *R, const branch_spec *b, const void *obj,
 
 /* The branch's statistics in the log and its summary line. */
 static void branch_summary(run_ctx *R, const branch_spec *b, whirl_cont *c,
-                           const int *counts, size_t npts, double pmin, double pmax) {
+                           const int *counts, size_t npts, double pmin, double pmax,
+                           int mx) {
   const whirl_cont_stats *st = whirl_cont_get_stats(c);
   fprintf(R->log, "  %zu steps, %zu rejected, %zu Newton iterations, %zu "
           "Jacobians, %zu special points\n", st->steps, st->rejected,
@@ -610,6 +611,8 @@ static void branch_summary(run_ctx *R, const branch_spec *b, whirl_cont *c,
       if (counts[order[i]] && len > 0 && (size_t)len < sizeof line)
         len += snprintf(line + len, sizeof line - (size_t)len, " %d %s", counts[order[i]],
                         whirl_point_type_name(order[i]));
+    if (mx && len > 0 && (size_t)len < sizeof line) /* AUTO's end at DSMIN */
+      len += snprintf(line + len, sizeof line - (size_t)len, ", ended in MX");
     run_summary(R, "%s", line);
   }
 }
@@ -783,7 +786,7 @@ int run_branch(run_ctx *R, branch_spec *b) {
     else stop = 4;
   }
   rc = branch_end(R, c, rc, stop, npts);
-  branch_summary(R, b, c, counts, npts, pmin, pmax);
+  branch_summary(R, b, c, counts, npts, pmin, pmax, stop == 4);
   whirl_cont_free(c);
   free(pfull);
   free(state);
