@@ -303,6 +303,27 @@ def _numbering(start, consts):
     return ['# AUTO\'s numbering of a run from a solution (io.f90 NEWLAB)'] + out
 
 
+def _no_switch(start, consts):
+    """ISW < 0 where START is no point to switch at (no BP, no PD; an HB
+    of orbits starts them as it is): AUTO continues the branch there, as
+    with ISW = 1 (a script's run(r2('UZ1')) after r2 = run(r1('BP1'),
+    ISW=-1) keeps r2's ISW = -1; whirl refused it), numbered as a switch
+    (_numbering, on the constants as they were)."""
+    if not isinstance(start, Solution):
+        return []
+    isw = Runner.current(consts, 'ISW')
+    try:
+        if not isw or int(float(isw)) >= 0:
+            return []
+    except ValueError:
+        return []
+    ips = Runner.current(consts, 'IPS')
+    if start.ty in ('BP', 'PD') or Runner.current(consts, 'TY') or \
+            (start.ty == 'HB' and ips and ips.strip() == '2'):
+        return []
+    return ["# AUTO: ISW < 0 at a %s continues the branch" % start.ty, 'ISW = 1']
+
+
 def _select(sols, what):
     """AUTO's selection: None all, a label number, 'HB' all of a type,
     'HB1' the first of a type."""
@@ -596,7 +617,8 @@ class Runner:
             raise ScriptError('run: a restart from %r, a run of another directory '
                               '(whirl restarts from the runs of the directory it is in)' % start)
         with open(os.path.join(self.stage, 'c.' + rid), 'w') as f:
-            f.write('\n'.join(consts + _numbering(start, consts)) + '\n')
+            f.write('\n'.join(consts + _numbering(start, consts) + _no_switch(start, consts))
+                    + '\n')
         spec = rid if start is None else '%s@%s:%d' % (rid, start.run_id, start.wlab)
         ids = self.whirl_auto(self.e, spec)
         bd = BifDiag()

@@ -402,9 +402,12 @@ msg=$(cd "$tmp" && "$WHIRL" auto lg --script=nothere.auto --out=y.out 2>&1)
 # was selected from (AUTO's restart file), unless the constants give LAB;
 # its branch is that diagram's largest + 1 for a switch (ISW < 0), the
 # solution's own otherwise, or the constants' IBR.  The pitchfork
-# u' = p u - u^3 from p = -1 (BP at p = 0, UZ at p = 0.5, stop at 1), five
+# u' = p u - u^3 from p = -1 (BP at p = 0, UZ at p = 0.5, stop at 1), six
 # runs; AUTO-07p's own run of these files wrote in b.all (BR, TY, LAB):
 #   1 9 1; 1 1 2; 1 -4 3; 1 -4 4 | 2 -4 5; 2 -4 6 | 1 -4 1 | 9 -4 5 | 2 -4 7
+#   | 3 -4 7
+# The sixth keeps run 2's ISW = -1 at a UZ, where AUTO continues the branch
+# (numbered as a switch): whirl refused it (exit 2) before 2026-12-07.
 # (before 2026-12-07 whirl numbered each run from 1 on branch 1).  Runs 3
 # and 4 step from p = 0.5 by 0.1 onto p = 1 exactly (AUTO's steps, 1e-7
 # longer, pass it): its UZ is labelled (it was missed, an EP at NMX).
@@ -437,14 +440,15 @@ r2 = run(r1('BP1'), ISW=-1)
 r3 = run(r1('UZ1'), LAB=1)
 r4 = run(r1('UZ1'), IBR=9)
 r5 = run(r2('UZ1'), ISW=1)
-save(r1 + r2 + r3 + r4 + r5, 'all')
+r6 = run(r2('UZ1'))
+save(r1 + r2 + r3 + r4 + r5 + r6, 'all')
 A
 (cd "$tmp" && "$WHIRL" auto pf --script --quiet --out=pf.out > /dev/null 2> pf.err)
 st=$?
 nums=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 != 0 {
     printf "%s%d %d %d", (k++ ? "; " : ""), substr($0, 1, 4), substr($0, 11, 4), substr($0, 15, 5) }' \
   "$tmp/pf.out/b.all" 2>/dev/null)
-[ "$st" = 0 ] && [ "$nums" = "1 9 1; 1 1 2; 1 -4 3; 1 -4 4; 2 -4 5; 2 -4 6; 1 -4 1; 9 -4 5; 2 -4 7" ]
+[ "$st" = 0 ] && [ "$nums" = "1 9 1; 1 1 2; 1 -4 3; 1 -4 4; 2 -4 5; 2 -4 6; 1 -4 1; 9 -4 5; 2 -4 7; 3 -4 7" ]
 check $? "AUTO's label and branch numbers across a script's runs (NEWLAB; exit $st): $nums"
 echo "1..$n"
 exit $fail
