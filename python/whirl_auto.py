@@ -303,6 +303,18 @@ def _numbering(start, consts):
     return ['# AUTO\'s numbering of a run from a solution (io.f90 NEWLAB)'] + out
 
 
+def _loaded(bd):
+    """A saved diagram as AUTO's loadbd or load(s=) reads it back: new
+    solutions, each with the largest label and branch of the whole file
+    (parseS: _mlab, _mbr), which a run from one of them numbers on."""
+    bd = BifDiag(b.copy() for b in _as_bd(bd))
+    sols = bd()
+    numbers = (max([x.lab for x in sols] or [0]), max([x.br for x in sols] or [0]))
+    for x in sols:
+        x.numbers = numbers
+    return bd
+
+
 def _no_switch(start, consts):
     """ISW < 0 where START is no point to switch at (no BP, no PD; an HB
     of orbits starts them as it is): AUTO continues the branch there, as
@@ -501,7 +513,7 @@ class Runner:
         if key not in self.saved:
             raise ScriptError('loadbd(%r): the script saved nothing under that name in %s'
                               % (name, self.srcdir))
-        return self.saved[key]
+        return _loaded(self.saved[key])
 
     # -- constants --
     def read_c(self, name):
@@ -544,7 +556,7 @@ class Runner:
             s = kw.pop('s')
             if (self.rel, s) not in self.saved:
                 raise ScriptError("s=%r: no solutions saved under that name by this script" % s)
-            data = self.saved[(self.rel, s)]
+            data = _loaded(self.saved[(self.rel, s)])
         if isinstance(data, str):
             e, c = e or data, c or data
             data = None

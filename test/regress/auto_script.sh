@@ -450,5 +450,22 @@ nums=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 != 0 {
   "$tmp/pf.out/b.all" 2>/dev/null)
 [ "$st" = 0 ] && [ "$nums" = "1 9 1; 1 1 2; 1 -4 3; 1 -4 4; 2 -4 5; 2 -4 6; 1 -4 1; 9 -4 5; 2 -4 7; 3 -4 7" ]
 check $? "AUTO's label and branch numbers across a script's runs (NEWLAB; exit $st): $nums"
+# a diagram read back (loadbd) numbers on from the largest label of the
+# whole file, as AUTO's parseS does (AUTO-07p's own run: UZ 7 on branch 1;
+# from the solution's own run's numbers it would be 5)
+cat > "$tmp/pf/ld.auto" <<'A'
+r1 = run(e='pf', c='pf')
+r2 = run(r1('BP1'), ISW=-1)
+save(r1 + r2, 'both')
+b = loadbd('both')
+r3 = run(b('UZ1'))
+save(r3, 'r3')
+A
+(cd "$tmp" && "$WHIRL" auto pf pf --script=pf/ld.auto --quiet --out=ld.out > /dev/null 2>&1)
+nums=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 != 0 {
+    printf "%s%d %d %d", (k++ ? "; " : ""), substr($0, 1, 4), substr($0, 11, 4), substr($0, 15, 5) }' \
+  "$tmp/ld.out/b.r3" 2>/dev/null)
+[ "$nums" = "1 -4 7" ]; check $? "a run from a diagram loadbd read numbers on from the whole file's largest label, as AUTO's: $nums"
+
 echo "1..$n"
 exit $fail
