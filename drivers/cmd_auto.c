@@ -637,6 +637,78 @@ static int append_file(FILE *dst, const char *src) {
   return rc;
 }
 
+/* The label of an earlier run that run i restarts from, or NULL. */
+static const whirl_auto_label *restart_label(const auto_job *J, size_t i) {
+  const auto_run *r = &J->run[i];
+  const int want = r->src >= 0 ? atoi(r->irs[0] ? r->irs : r->label) : 0;
+  for (size_t m = 0; r->src >= 0 && m < J->run[r->src].nlabs; m++)
+    if (J->run[r->src].labs[m].whirl == want) return &J->run[r->src].labs[m];
+  return NULL;
+}
+
+/* The row (from 0) of whirl label lab in OUT/ID.out/branches.tsv, or -1. */
+static long table_row_of(const auto_job *J, const char *id, int lab) {
+  char path[4400], *line = NULL;
+  size_t cap = 0;
+  snprintf(path, sizeof path, "%s/%s.out/branches.tsv", J->out, id);
+  FILE *f = fopen(path, "r");
+  long row = -1, found = -1;
+  int col = -1;
+  while (f && found < 0 && getline(&line, &cap, f) > 0) {
+    if (line[0] == '#') continue;
+    char *save = NULL, *t = strtok_r(line, "\t\n", &save);
+    for (int c = 0; t; c++, t = strtok_r(NULL, "\t\n", &save)) {
+      if (row < 0 && !strcmp(t, "label")) col = c;
+      if (row >= 0 && c == col && atoi(t) == lab) found = row;
+    }
+    if (col < 0) break; /* no label column: not whirl's table */
+    row++;
+  }
+  free(line);
+  if (f) fclose(f);
+  return found;
+}
+
+/* AUTO's type code of whirl label lab of the run ID of an earlier
+ * invocation (a script's earlier run): its row of OUT/b.ID, the one of
+ * branches.tsv's rows that lab is on (the same points in the same
+ * order).  0 when not found. */
+static int external_type(const auto_job *J, const char *id, int lab) {
+  const long k = table_row_of(J, id, lab);
+  char path[4400], *line = NULL;
+  size_t cap = 0;
+  snprintf(path, sizeof path, "%s/b.%s", J->out, id);
+  FILE *f = k < 0 ? NULL : fopen(path, "r");
+  long row = 0;
+  int type = 0;
+  for (ssize_t len; f && (len = getline(&line, &cap, f)) > 0;) {
+    char br[5] = {0}, ty[5] = {0};
+    if (len < 15 || atoi(memcpy(br, line, 4)) == 0) continue; /* a header line */
+    if (row++ == k) {
+      memcpy(ty, line + 10, 4);
+      type = atoi(ty);
+      break;
+    }
+  }
+  free(line);
+  if (f) fclose(f);
+  return type;
+}
+
+/* AUTO's ITPST of run i (AUTO-07p io.f90, READLB): with |ISW| >= 2 the
+ * type of the label it restarts from, its code or the code / 10 where
+ * that is a point of a locus itself; else 0. */
+static int start_type(const auto_job *J, size_t i) {
+  const auto_run *r = &J->run[i];
+  int isw = 1;
+  whirl_auto_constants_int(r->ac, "ISW", &isw);
+  if (abs(isw) < 2 || r->fresh) return 0;
+  const whirl_auto_label *L = restart_label(J, i);
+  const int t = L ? L->type
+                  : r->from[0] && r->src < 0 ? external_type(J, r->from, atoi(r->label)) : 0;
+  return abs(t) < 10 ? abs(t) : abs(t / 10);
+}
+
 /* AUTO's number of run i's first branch (AUTO-07p io.f90, NEWLAB): the
  * constants' IBR when given; else one more than the largest of its group
  * for a fresh start or a branch switch (ISW < 0); the restart label itself
@@ -655,10 +727,7 @@ static int first_branch(const auto_job *J, size_t i) {
   int ibr = 0; /* AUTO's IBR: the branch number given */
   whirl_auto_constants_int(r->ac, "IBR", &ibr);
   if (ibr > 0) return ibr;
-  const whirl_auto_label *L = NULL;
-  const int want = r->src >= 0 ? atoi(r->irs[0] ? r->irs : r->label) : 0;
-  for (size_t m = 0; r->src >= 0 && m < J->run[r->src].nlabs && !L; m++)
-    if (J->run[r->src].labs[m].whirl == want) L = &J->run[r->src].labs[m];
+  const whirl_auto_label *L = restart_label(J, i);
   if (isw < 0 || r->fresh || !L) return mbr + 1;
   if (((abs(isw) == 2 || isw == 3) && abs(L->type) < 10) || (ips == 2 && L->type == 3))
     return L->label;
@@ -682,7 +751,8 @@ static int write_auto_files(auto_job *J, size_t i) {
   if (lab > 0 && !r->sub) r->offset = lab - 1;
   r->br_auto = first_branch(J, i);
   whirl_auto_output o = {dir, r->ac, r->ndim, J->npar, (const char *const *)J->p_names,
-                         (const char *const *)r->x_names, r->offset, !r->fresh, r->br_auto};
+                         (const char *const *)r->x_names, r->offset, !r->fresh, r->br_auto,
+                         start_type(J, i)};
   size_t n = 0;
   if (whirl_auto_labels(&o, NULL, 0, &n, msg, sizeof msg) != WHIRL_OK ||
       !(r->labs = calloc(n ? n : 1, sizeof *r->labs)) ||

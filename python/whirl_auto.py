@@ -56,7 +56,23 @@ class _Picture:
 # AUTO's type codes in b. files (doc/auto-files.md), as names
 TYPE_NAMES = {1: 'BP', 2: 'LP', 3: 'HB', 4: 'RG', -4: 'UZ', 5: 'LP', 6: 'BP',
               7: 'PD', 8: 'TR', 9: 'EP', -9: 'MX', -1: 'BT', -2: 'CP',
-              -3: 'ZH', -32: 'GH'}
+              -3: 'ZH', -32: 'GH', 88: 'TTR'}
+
+
+def type_name(code):
+    """The name of AUTO's type code as AUTO's parseB.type_translation
+    gives it: on a locus the code is 10 k + type (54 a regular point of a
+    fold locus of orbits, -32 GH), the type its last digit, but for the
+    maps' LPD, LTR, PTR and TTR."""
+    if code in (28, 78):
+        return 'LPD'
+    if code in (23, 83):
+        return 'LTR'
+    if code in (77, 87):
+        return 'PTR'
+    if code not in (-32, 88):
+        code = code % 10 if code >= 0 else -((-code) % 10)
+    return TYPE_NAMES.get(code, str(code))
 
 
 def _relabel_row(row, lab):
@@ -131,19 +147,11 @@ class Solution:
         # parseS: _mlab, _mbr, and after relabel the number of solutions):
         # a run from it numbers on from them (_numbering); None: not known
         self.numbers = None
-        # a point of a locus (its run's |ISW| >= 2): AUTO's type code there
-        # is 10 k + its type, k the locus's (whirl's b. files write the
-        # type alone), which _numbering needs
-        isw = Runner.current(self.c, 'ISW')
-        try:
-            self.on_locus = bool(isw) and abs(int(float(isw))) >= 2
-        except ValueError:
-            self.on_locus = False
 
     def copy(self):
         c = Solution(self.run_id, self.wlab, self.row, self.block,
                      self.c, self.e, self.columns, self.runs)
-        c.numbers, c.on_locus = self.numbers, self.on_locus
+        c.numbers = self.numbers
         return c
 
     @property
@@ -156,7 +164,7 @@ class Solution:
 
     @property
     def ty(self):
-        return TYPE_NAMES.get(int(self.row[10:14]), str(int(self.row[10:14])))
+        return type_name(int(self.row[10:14]))
 
     @property
     def lab(self):
@@ -278,8 +286,6 @@ def _numbering(start, consts):
             return default
     mlab, mbr = start.numbers
     ips, isw, itp = const('IPS', 1), const('ISW', 1), start.itp
-    if start.on_locus and abs(itp) < 10:  # AUTO's 10 k + type (k >= 1)
-        itp = itp + 10 if itp >= 0 else itp - 10
     ty = Runner.current(consts, 'TY')
     if ty:
         m = re.match(r"['\"]?([A-Za-z]+)", ty)

@@ -215,7 +215,7 @@ static int branch_of(const run *R, const row *r) {
 /* ---- b. ---------------------------------------------------------------- */
 
 /* AUTO's type code of whirl's TY (parseB.type_translation's table). */
-static int type_code(const char *ty, int lab, int orbit) {
+static int type_base(const char *ty, int lab, int orbit) {
   static const struct {
     const char *ty;
     int eq, po;
@@ -226,6 +226,18 @@ static int type_code(const char *ty, int lab, int orbit) {
   for (size_t i = 0; i < sizeof map / sizeof *map; i++)
     if (!strcmp(map[i].ty, ty)) return orbit ? map[i].po : map[i].eq;
   return lab > 0 ? 4 : 0; /* RG; a labelled one every NPR steps */
+}
+
+/* The code as AUTO writes it on a locus started from a point of type
+ * itpst (o->itpst): 10 itpst + the type, with the type's sign (AUTO-07p
+ * ae.f90 and bvp.f90: ITP + SIGN(10, ITP) ITPST at a special point,
+ * 4 + 10 ITPST every NPR steps, +-9 + 10 ITPST at the ends); a row
+ * without a label keeps 0.  GH, AUTO's CP code -2 on a Hopf locus, is -32
+ * (whirl labels it on Hopf loci alone). */
+static int type_code(const char *ty, int lab, int orbit, int itpst) {
+  const int t = type_base(ty, lab, orbit);
+  if (itpst <= 0 || t == 0 || t == -32) return t;
+  return t > 0 ? t + 10 * itpst : t - 10 * itpst;
 }
 
 /* The b-file's columns: PAR(ICP(1)), L2-NORM, U(i) (MAX U(i) of orbits),
@@ -339,7 +351,12 @@ static void b_header(FILE *f, const run *R, const cols *c) {
   fputs("\n   0   Active continuation parameter", f);
   fputs(R->nicp > 1 ? "s:" : ": ", f);
   for (size_t j = 0; j < R->nicp; j++) fprintf(f, " %4d", R->icp[j]);
-  fputs("\n   0\n   0    PT  TY  LAB", f);
+  fputc('\n', f);
+  if (R->o->itpst > 0 && R->o->itpst <= 9) { /* a locus: AUTO's line (io.f90) */
+    static const char *const lb[] = {"", "BP", "LP", "HB", "RG", "LP", "BP", "PD", "TR", "EP"};
+    fprintf(f, "   0   Branch type: %2d    TY = '%-3s'\n", R->o->itpst, lb[R->o->itpst]);
+  }
+  fputs("   0\n   0    PT  TY  LAB", f);
   for (size_t j = 0; j < c->n; j++) fprintf(f, "    %-15.15s", c->name[j]);
   fputc('\n', f);
 }
@@ -348,7 +365,7 @@ static void b_row(FILE *f, const run *R, const cols *c, const row *r) {
   char b[40];
   const int br = R->orbit ? -branch_of(R, r) : branch_of(R, r),
             pt = r->stab == 1 ? -(r->pt + 1) : r->pt + 1;
-  fprintf(f, "%4d%6d%4d%5d", br, pt, type_code(r->ty, r->lab, R->mesh), r->alab);
+  fprintf(f, "%4d%6d%4d%5d", br, pt, type_code(r->ty, r->lab, R->mesh, R->o->itpst), r->alab);
   for (size_t j = 0; j < c->n; j++) fputs(es(r->v[c->at[j]], 19, 10, b, sizeof b), f);
   fputc('\n', f);
 }
@@ -406,7 +423,7 @@ static int write_s_block(FILE *f, const run *R, const whirl_solution *S, const r
   const size_t nrow = ntpl * lines_of(n + 1, 7) + lines_of(nfpr, 20) + lines_of(nfpr, 7) +
                       ntpl * lines_of(n, 7) + lines_of(nparw, 7);
   fprintf(f, "%6d%6d%6d%6d%6zu%6d%8zu%6zu%8zu%5d%5d%5zu%5d%5zu%5d%5d\n", branch_of(R, r),
-          r->pt + 1, type_code(r->ty, r->lab, mesh), r->alab, nfpr, R->isw, ntpl,
+          r->pt + 1, type_code(r->ty, r->lab, mesh, R->o->itpst), r->alab, nfpr, R->isw, ntpl,
           n + 1, nrow,
           mesh ? S->ntst : 1, mesh ? S->ncol : 0, nparw, 0, n, R->ips, 0);
   for (size_t j = 0; j < ntpl; j++) { /* t and the state at node j */
@@ -571,7 +588,7 @@ int whirl_auto_labels(const whirl_auto_output *o, whirl_auto_label *lab, size_t 
     if (!r->alab) continue;
     if (*n < max) {
       lab[*n].label = r->alab, lab[*n].whirl = r->lab, lab[*n].br = branch_of(&R, r);
-      lab[*n].type = type_code(r->ty, r->lab, R.mesh);
+      lab[*n].type = type_code(r->ty, r->lab, R.mesh, o->itpst);
       snprintf(lab[*n].ty, sizeof lab[*n].ty, "%s", r->ty);
     }
     ++*n;

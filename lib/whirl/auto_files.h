@@ -10,7 +10,9 @@
  *      (I4,I6,I4,I5,nES19.10E3): BR (negative for periodic orbits), PT
  *      (negative where stable), AUTO's type code (0 none, 1 BP, 2 LP, 3 HB,
  *      4 labelled regular point, -4 UZ, 5 LP and 6 BP of orbits, 7 PD, 8 TR,
- *      9 EP, -9 MX, -1 BT, -2 CP, -3 ZH, -32 GH), LAB;
+ *      9 EP, -9 MX, -1 BT, -2 CP, -3 ZH, -32 GH; on a locus 10 k + type,
+ *      k the type of the point it started from: whirl_auto_output.itpst),
+ *      LAB;
  *   s: per label a header of 16 integers (6I6,I8,I6,I8,7I5): IBR NTOT ITP
  *      LAB NFPR ISW NTPL NAR NROWPR NTST NCOL NPAR 0 NDIM IPS 0, then NTPL
  *      rows (t, u) — the collocation nodes of orbits, t in [0, 1] — the
@@ -46,6 +48,15 @@ typedef struct whirl_auto_output {
   int br;                        /* AUTO's number of the run's first branch
                                     (0: whirl's numbers); later branches
                                     number on */
+  int itpst;                     /* AUTO's ITPST: for a run with |ISW| >= 2
+                                    from a label, that label's type (its
+                                    code, or the code / 10 when >= 10: 2 LP
+                                    and 3 HB of equilibria, 5 LP, 6 BP, 7 PD
+                                    and 8 TR of orbits), else 0.  A run's
+                                    type codes are then 10 itpst + type
+                                    (sign of the type), as AUTO writes the
+                                    points of a locus: 54, 55, 59 on a fold
+                                    locus of orbits; GH on a Hopf locus -32 */
 } whirl_auto_output;
 /* One label of a run as AUTO numbers it (whirl_auto_labels). */
 typedef struct whirl_auto_label {

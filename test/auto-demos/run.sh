@@ -103,6 +103,7 @@ whirl_points_lab() {
     [ -f "$b" ] || continue
     awk 'substr($0, 1, 4) + 0 != 0 {
       t = substr($0, 11, 4) + 0
+      if (t != -32) t = t >= 0 ? t % 10 : -((-t) % 10) # a locus: 10 k + type (parseB)
       ty = t == 1 || t == 6 ? "BP" : t == 2 || t == 5 ? "LP" : t == 3 ? "HB" : t == 7 ? "PD" : \
            t == 8 ? "TR" : t == -1 ? "BT" : t == -2 ? "CP" : t == -3 ? "ZH" : t == -32 ? "GH" : ""
       if (ty == "") next

@@ -133,8 +133,18 @@ for isp in 1 2 3 4; do
 done
 "$WHIRL" auto cu --quiet --out=cu.out > cu.log 2>&1
 ok $? "the cusp's LP run and its two fold loci (exit $?$( [ -s cu.log ] && printf ': %s' "$(tail -1 cu.log)"))"
-cp0=$(pts cu.out/b.cu.2 " -2 ") cp2=$(pts cu.out/b.cu.3 " -2 ")
+# AUTO's CP on a fold locus of equilibria (ITPST 2): -22 (AUTO-07p's own
+# demo cusp writes -22 there, and 24, -24 for its other points)
+cp0=$(pts cu.out/b.cu.2 " -22 ") cp2=$(pts cu.out/b.cu.3 " -22 ")
 set -- $cp2
 [ $# = 1 ] && near "$1" 0 1e-8 && [ -z "$cp0" ]
 ok $? "the fold locus's CP at mu = 0 with ISP = 2 (${cp2:-none}), none with ISP = 0 (${cp0:-none})"
+# every labelled point of the fold loci as AUTO codes it there (24 every
+# NPR steps, 29 at an end, -24 a UZ, -22 the CP), the run before plain (2
+# its LP, 9 its ends, -4 its UZ), and AUTO's header line of a locus
+loc=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 != 0 { printf "%d ", substr($0, 11, 4) }' cu.out/b.cu.2 cu.out/b.cu.3 2> /dev/null)
+lp=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 != 0 { printf "%d ", substr($0, 11, 4) }' cu.out/b.cu.1 2> /dev/null)
+echo "$loc" | grep -Eq '^((2[49]|-2[249]) )+$' && echo "$lp" | grep -Eq '^(-?[0-9] )+$' &&
+  grep -q "^   0   Branch type:  2    TY = 'LP '" cu.out/b.cu.3
+ok $? "the fold loci's codes 10 x 2 + type as AUTO's ($loc), the LP run's plain ($lp), 'Branch type:  2'"
 tap_end

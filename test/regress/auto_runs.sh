@@ -396,17 +396,31 @@ last=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 != 0 { t = substr
 echo "$last" | awk '{ exit !($1 == -4 && $2 - 0.110114 < 1e-6 && 0.110114 - $2 < 1e-6 && $3 - 1.85878 < 1e-5 && 1.85878 - $3 < 1e-5 && $4 - 1000 < 1e-6 && 1000 - $4 < 1e-6) }'
 check $(( $? + rc )) "ab --script: the last run ends at AUTO's UZ, PERIOD = 1000 at PAR(1) = 0.110114, L2-NORM 1.85878 (exit $rc; type, PAR(1), L2-NORM, PERIOD: ${last:-none})"
 # abcb by its script: its fold locus of orbits (run 3 fw, ICP = [2, 1,
-# 11]) turns in PAR(2) at 1.26866, AUTO's LP 30 (type 5, AUTO-07p 0.9.2's
-# own run of abcb.auto: 1.2686579741), where whirl's cusp test labelled CP
+# 11]) turns in PAR(2) at 1.26866, AUTO's LP 30 (type 55: 10 x 5 + 5 on a
+# locus from an LP of orbits; AUTO-07p 0.9.2's own run of abcb.auto:
+# 1.2686579741), where whirl's cusp test labelled CP
 # (AUTO's loci of orbits have bvp.f90's test functions alone); run 4,
 # restarted at the bw run's LP where two families of orbits cross, labels
 # no BP at its start (AUTO's b.abcb.4.bw has none)
 (cd "$tmp" && "$WHIRL" auto "$auto/demos/abcb" --script --quiet --out=abcb.s > abcb.s.log 2>&1)
 rc=$?
-lp=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 5 { printf "%.10g", substr($0, 20, 19); exit }' "$tmp/abcb.s/b.abcb.3.fw" 2>/dev/null)
-cps=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == -2' "$tmp/abcb.s/b.abcb.3.fw" "$tmp/abcb.s/b.abcb.3.bw" 2>/dev/null | wc -l)
+lp=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 55 { printf "%.10g", substr($0, 20, 19); exit }' "$tmp/abcb.s/b.abcb.3.fw" 2>/dev/null)
+cps=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == -52' "$tmp/abcb.s/b.abcb.3.fw" "$tmp/abcb.s/b.abcb.3.bw" 2>/dev/null | wc -l)
 awk -v x="${lp:-0}" -v c="$cps" 'BEGIN { d = (x - 1.2686579741) / 1.2686579741; exit !(c == 0 && d < 1e-8 && d > -1e-8) }'
 check $(( $? + rc )) "abcb --script: the fold locus of orbits labels AUTO's LP at PAR(2) = 1.2686579741 (exit $rc): ${lp:-none}, $cps CP"
+# AUTO's type codes on the loci (io.f90's ITPST, bvp.f90): 10 k + type, k
+# the type the locus started from, as AUTO-07p 0.9.2's own run of
+# abcb.auto writes them: run 3 (fold locus from LP 5) 54 54 55 54 59, its
+# starting data 59; run 5 (branch-point locus from BP 6) 64 ... 69; run 4
+# (ISW = 1 from the fold locus's LP) plain 4 and 9; the b-files say
+# "Branch type:  5    TY = 'LP '" as AUTO's do
+codes() { awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 != 0 { printf "%d ", substr($0, 11, 4) }' "$tmp/abcb.s/b.abcb.$1" 2>/dev/null; }
+c3=$(codes 3.fw) c3s=$(codes 3.sw) c5=$(codes 5.fw) c4=$(codes 4.bw)
+echo "$c3" | grep -Eq '^(5[459] )+$' && echo "$c3" | grep -q ' 55 ' && [ "$c3s" = "59 " ] &&
+  echo "$c5" | grep -Eq '^(6[469] )+$' && echo "$c4" | grep -Eq '^([49] )+$' &&
+  grep -q "^   0   Branch type:  5    TY = 'LP '" "$tmp/abcb.s/b.abcb.3.fw" &&
+  ! grep -q "Branch type" "$tmp/abcb.s/b.abcb.4.bw"
+check $? "abcb --script: AUTO's type codes on the loci of orbits (3 fw: $c3; 3 sw: $c3s; 5 fw: $c5; 4 bw: $c4) and AUTO's 'Branch type' header line"
 bps=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 6' "$tmp/abcb.s/b.abcb.4.bw" 2>/dev/null | wc -l)
 [ -s "$tmp/abcb.s/b.abcb.4.bw" ] && [ "$bps" = 0 ]
 check $? "abcb --script: run 4 (bw) labels no BP at its start, restarted at the crossing of two families (AUTO none): $bps"
