@@ -44,6 +44,8 @@ typedef struct auto_run {
   size_t nlabs;
   int offset;     /* labels before its first: the largest of its group */
   int sub;        /* a branch MXBF switches to (no IRS of its own) */
+  int no_switch;  /* ISW < 0 at a label that is no BP or PD: AUTO goes on
+                   * along the branch (its run file says ISW = 1) */
   int br_fixed;   /* its AUTO branch number (0: NEWLAB's) */
   int br_auto;    /* the AUTO branch number its first branch got */
   int ndim;       /* its NDIM (a plug-in of its own when not the first run's) */
@@ -361,6 +363,11 @@ static int translate_run(auto_job *J, size_t i, long from) {
     cli_error("auto", "%s", whirl_auto_constants_errmsg(r->ac));
     return 2;
   }
+  /* ISW < 0 where AUTO goes on along the branch (continues_at): the run
+   * file's line (auto_runfile.c writes "ISW    = %d") as ISW = 1, the
+   * same length */
+  char *isw = r->no_switch ? strstr(r->text, "\nISW    = -") : NULL;
+  if (isw) memcpy(isw + 10, " 1", 2);
   return 0;
 }
 
@@ -387,10 +394,9 @@ static int translate(auto_job *J) {
 }
 
 /* Can run i (its IPS, ISW) start from solution S? */
-static int fits(const auto_run *r, const whirl_solution *S) {
-  int ips = 1, isw = 1;
+static int fits_isw(const auto_run *r, const whirl_solution *S, int isw) {
+  int ips = 1;
   whirl_auto_constants_int(r->ac, "IPS", &ips);
-  whirl_auto_constants_int(r->ac, "ISW", &isw);
   /* a point of a locus restarts that locus (ISW = 2) */
   const char *t = (abs(isw) == 2 || isw == 3) && S->icp2 >= 0 && S->locus[0] ? S->locus : S->ty;
   if (ips == 1)
@@ -407,6 +413,12 @@ static int fits(const auto_run *r, const whirl_solution *S) {
   if (isw == 2) return !strcmp(t, "LP") || !strcmp(t, "PD") || !strcmp(t, "TR") || !strcmp(t, "BP");
   if (isw == 3) return !strcmp(t, "BP");
   return 1;
+}
+
+static int fits(const auto_run *r, const whirl_solution *S) {
+  int isw = 1;
+  whirl_auto_constants_int(r->ac, "ISW", &isw);
+  return fits_isw(r, S, isw);
 }
 
 /* AUTO's label numbering across runs (AUTO-07p io.f90, FINDLB and NEWLAB):
@@ -450,6 +462,28 @@ static int fits_label(const auto_job *J, size_t i, size_t j, int lab) {
   return good;
 }
 
+/* ISW < 0 at label L (run j) that is no BP or PD, nor an HB that starts
+ * orbits, and no TY given: AUTO switches at those alone, and elsewhere
+ * continues the branch as with ISW = 1 (ae.f90, periodic.f90; numbered
+ * as a switch: first_branch).  1 when run i can go on from L so. */
+static int continues_at(const auto_job *J, size_t i, size_t j, const whirl_auto_label *L) {
+  const auto_run *r = &J->run[i];
+  int isw = 1, ips = 1;
+  whirl_auto_constants_int(r->ac, "ISW", &isw);
+  whirl_auto_constants_int(r->ac, "IPS", &ips);
+  if (isw >= 0 || whirl_auto_constants_text(r->ac, "TY") || !strcmp(L->ty, "BP") ||
+      !strcmp(L->ty, "PD") || (!strcmp(L->ty, "HB") && ips == 2))
+    return 0;
+  char dir[4400], msg[512];
+  whirl_solution S;
+  const whirl_solution_shape any = {NULL, 0, 0, -1, 0};
+  snprintf(dir, sizeof dir, "%s/%s.out", J->out, J->run[j].id);
+  if (whirl_solution_find(dir, &any, L->whirl, "", &S, msg, sizeof msg)) return 0;
+  const int good = fits_isw(r, &S, 1);
+  whirl_solution_free(&S);
+  return good;
+}
+
 /* Run i restarts by the default rule (IRS, no @RUN): the label AUTO's
  * numbering gives IRS in run i's group (above); where that is no label
  * run i can start from (whirl labels a point AUTO does not, or misses
@@ -487,6 +521,11 @@ static int pick_source(auto_job *J, size_t i) {
     const int good = fits(r, &S);
     whirl_solution_free(&S);
     if (good) return j == def ? 0 : translate_run(J, i, j);
+  }
+  if (L && continues_at(J, i, g, L)) {
+    r->no_switch = 1;
+    snprintf(r->irs, sizeof r->irs, "%d", L->whirl);
+    return translate_run(J, i, (long)g);
   }
   return 0;
 }

@@ -450,6 +450,27 @@ nums=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 != 0 {
   "$tmp/pf.out/b.all" 2>/dev/null)
 [ "$st" = 0 ] && [ "$nums" = "1 9 1; 1 1 2; 1 -4 3; 1 -4 4; 2 -4 5; 2 -4 6; 1 -4 1; 9 -4 5; 2 -4 7; 3 -4 7" ]
 check $? "AUTO's label and branch numbers across a script's runs (NEWLAB; exit $st): $nums"
+# the same from constants files in whirl auto's default order (no
+# script): c.pfd.3 restarts at run 2's UZ (AUTO label 5) with ISW = -1,
+# which AUTO continues along that branch (BR 3, its UZ 7 at p = 1, u = 1:
+# AUTO-07p's own run of these files, b.all: 1 9 1; 1 1 2; 1 -4 3; 1 -4 4;
+# 2 -4 5; 2 -4 6; 3 -4 7); whirl refused it before 2026-12-07 (exit 2:
+# "there is no label 5", the restart read as a switch wanting a BP)
+mkdir "$tmp/pfd"
+cp "$tmp/pf/pf.f90" "$tmp/pfd/pfd.f90"
+cp "$tmp/pf/c.pf" "$tmp/pfd/c.pfd.1"
+sed -e 's/IRS = 0/IRS = 2/' -e 's/ISW = 1/ISW = -1/' "$tmp/pf/c.pf" > "$tmp/pfd/c.pfd.2"
+sed -e 's/IRS = 0/IRS = 5/' -e 's/ISW = 1/ISW = -1/' -e 's/UZR = {1: 0.5}, //' "$tmp/pf/c.pf" > "$tmp/pfd/c.pfd.3"
+(cd "$tmp" && "$WHIRL" auto pfd --quiet --out=pfd.out > /dev/null 2> pfd.err)
+st=$?
+nums=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 != 0 {
+    printf "%s%d %d %d", (k++ ? "; " : ""), substr($0, 1, 4), substr($0, 11, 4), substr($0, 15, 5) }' \
+  "$tmp/pfd.out/b.pfd" 2>/dev/null)
+last=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 == 7 { printf "%.10g %.10g", substr($0, 20, 19), substr($0, 58, 19) }' "$tmp/pfd.out/b.pfd" 2>/dev/null)
+set -- $last
+[ "$st" = 0 ] && [ "$nums" = "1 9 1; 1 1 2; 1 -4 3; 1 -4 4; 2 -4 5; 2 -4 6; 3 -4 7" ] &&
+  near "${1:-0}" 1 1e-9 && near "${2:-0}" 1 1e-9
+check $? "the default order: ISW = -1 at a UZ continues the branch as AUTO's (exit $st$( [ -s "$tmp/pfd.err" ] && printf ': %s' "$(head -1 "$tmp/pfd.err")"); $nums; UZ 7 at p, u = ${last:-none})"
 # a diagram read back (loadbd) numbers on from the largest label of the
 # whole file, as AUTO's parseS does (AUTO-07p's own run: UZ 7 on branch 1;
 # from the solution's own run's numbers it would be 5)
