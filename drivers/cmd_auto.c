@@ -745,7 +745,8 @@ static int start_type(const auto_job *J, size_t i) {
   const whirl_auto_label *L = restart_label(J, i);
   const int t = L ? L->type
                   : r->from[0] && r->src < 0 ? external_type(J, r->from, atoi(r->label)) : 0;
-  return abs(t) < 10 ? abs(t) : abs(t / 10);
+  const int k = abs(t) < 10 ? abs(t) : abs(t / 10);
+  return k <= 9 ? k : 0; /* a code of 100 or more is none of AUTO's */
 }
 
 /* AUTO's number of run i's first branch (AUTO-07p io.f90, NEWLAB): the

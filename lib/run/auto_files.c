@@ -236,7 +236,7 @@ static int type_base(const char *ty, int lab, int orbit) {
  * (whirl labels it on Hopf loci alone). */
 static int type_code(const char *ty, int lab, int orbit, int itpst) {
   const int t = type_base(ty, lab, orbit);
-  if (itpst <= 0 || t == 0 || t == -32) return t;
+  if (itpst <= 0 || itpst > 9 || t == 0 || t == -32) return t;
   return t > 0 ? t + 10 * itpst : t - 10 * itpst;
 }
 
