@@ -82,6 +82,8 @@ void whirl_cont_options_default(whirl_cont_options *o) {
   o->stop_at_bp = 0;
   o->detect_loop = 1;
   o->loc_tol = 1e-12;
+  o->loc_epss = 0.0;
+  o->loc_itmx = 8;
   o->linsol = WHIRL_LINSOL_DENSE;
   o->structured = 1;
   o->uz = NULL;
@@ -304,6 +306,13 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
     goto nomem;
   for (size_t i = 0; i < c->qcap; ++i)
     if (state_alloc(c, &c->queue[i])) goto nomem;
+  if (opt->loc_epss > 0.0) {
+    c->autopts = calloc(maxev, sizeof *c->autopts);
+    if (!c->autopts) goto nomem;
+    c->nautopts = maxev;
+    for (size_t i = 0; i < maxev; ++i)
+      if (state_alloc(c, &c->autopts[i])) goto nomem;
+  }
   if (opt->nuz) {
     double *uz = malloc(opt->nuz * sizeof *uz);
     if (!uz) goto nomem;
@@ -351,6 +360,8 @@ void whirl_cont_free(whirl_cont *c) {
   state_free(&c->locbest);
   if (c->queue)
     for (size_t i = 0; i < c->qcap; ++i) state_free(&c->queue[i]);
+  for (size_t i = 0; i < c->nautopts; ++i) state_free(&c->autopts[i]);
+  free(c->autopts);
   free(c->queue);
   free(c->evs);
   if (c->opt.nuz) {
@@ -1652,6 +1663,7 @@ static void add_event(whirl_cont *c, size_t *nev, int ev, size_t k, cont_state *
   c->evs[*nev].k = k;
   c->evs[*nev].st = st;
   c->evs[*nev].its = c->its;
+  c->evs[*nev].next = NULL;
   ++*nev;
   if (c->nskip < sizeof c->skip_ev / sizeof *c->skip_ev) { /* before any is dropped */
     c->skip_ev[c->nskip] = ev;
@@ -1723,6 +1735,8 @@ static size_t find_events(whirl_cont *c) {
     for (size_t k = 0; k < m; ++k) {
       if (skipped(c, nskip0, K->ev, k) || !K->crosses(c, k, a, b)) continue;
       cont_state *q = &c->queue[c->qcap - 1 - nslot++];
+      c->loc_next = c->autopts && nslot <= c->nautopts ? &c->autopts[nslot - 1] : NULL;
+      c->loc_next_ok = 0;
       if (cont_locate(c, K->ev, k, b, q) != 0) {
         if (!K->bound) continue;
         cont_state_copy(c, q, b); /* not localised: end at the trial point */
@@ -1745,8 +1759,10 @@ static size_t find_events(whirl_cont *c) {
         drop_lp_at(c, &nev, q);
       }
       add_event(c, &nev, K->ev, k, q);
+      if (c->loc_next_ok) c->evs[nev - 1].next = c->loc_next;
     }
   }
+  c->loc_next = NULL;
   drop_sys_at_bp(c, &nev);
   /* the zeros found in this step, after the ones at a */
   memmove(c->skip_ev, c->skip_ev + nskip0, (c->nskip - nskip0) * sizeof *c->skip_ev);
@@ -1810,7 +1826,8 @@ static size_t end_at_first_event(whirl_cont *c, size_t nev, int *its) {
     }
   c->nskip = m;
   *its = c->evs[0].its;
-  cont_state_copy(c, &c->trial, c->evs[0].st);
+  /* the branch goes on from AUTO's point where there is one (opt.loc_epss) */
+  cont_state_copy(c, &c->trial, c->evs[0].next ? c->evs[0].next : c->evs[0].st);
   return keep;
 }
 
@@ -1915,6 +1932,11 @@ static int accept_step(whirl_cont *c, int its, double cosang) {
   return WHIRL_OK;
 }
 
+/* AUTO's step sequence of algebraic branches (EQ_STEP = sphere) */
+static int o_auto_algebraic(const whirl_cont *c) {
+  return c->opt.auto_steps && c->opt.arclength_sphere;
+}
+
 /* One step: WHIRL_OK with its points queued, STEP_HIDDEN when it queued
  * none (opt.hide_first_step), else a status. */
 enum { STEP_HIDDEN = 1000 }; /* not a whirl status */
@@ -1943,6 +1965,14 @@ static int step_once(whirl_cont *c) {
   const int ended = emit_events(c, nev) || closes_loop(c);
   ++c->stats.steps;
   if (!ended && !(at_event && nev)) emit_step_point(c);
+  /* AUTO's algebraic branches keep DS after a switch's first step off the
+   * branch point (CNRLAE takes it before its loop, without ADPTDS): the
+   * step grows or shrinks from the next one on (pp2's branch 2: the
+   * switch converged in two iterations, and x1.5 parted the steps) */
+  if (c->switch_step && o_auto_algebraic(c)) its = -1;
+  /* ... and after a special point other than a UZ (CNRLAE adapts DS at
+   * regular points and UZs alone): pp2's BP 4, one iteration, doubled it */
+  if (at_event && nev && o_auto_algebraic(c) && c->evs[0].ev != EV_UZ) its = -1;
   rc = accept_step(c, its, cosang);
   /* the next step leaves the special point along its tangent (AUTO's
    * secant of its last two location iterates) */

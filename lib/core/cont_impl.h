@@ -87,6 +87,11 @@ struct whirl_cont {
   size_t qlen, qhead, qcap;
   cont_state out;     /* storage behind the point returned to the caller */
   cont_state locbest; /* the localisation's best analysed trial (locate.c) */
+  cont_state *autopts; /* opt.loc_epss: each event's point by AUTO's
+                          localisation, the next step's start [maxev] */
+  size_t nautopts;
+  cont_state *loc_next; /* where cont_locate puts that point (NULL: none) */
+  int loc_next_ok;      /* ... and whether it did */
   whirl_point pt;
 
   double *w2;         /* N: weights of the squared components in the
@@ -160,6 +165,8 @@ typedef struct cont_event {
   int ev;
   size_t k;
   cont_state *st;
+  cont_state *next; /* opt.loc_epss: AUTO's point, where the branch goes
+                       on from (st is the converged point reported) */
   int its; /* Newton iterations of its localisation's last correction */
 } cont_event;
 

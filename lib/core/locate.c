@@ -146,33 +146,226 @@ static int trial_analyse(whirl_cont *c, cont_state *st, int tangent_only) {
   return tangent_only ? cont_tangent(c, st, c->dir) : cont_analyse(c, st, c->dir);
 }
 
-int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
-                cont_state *out) {
+/* A branch point located at the share u of the step a = c->cur -> b. */
+static void bp_point(whirl_cont *c, const cont_state *b, double u, int its_step,
+                     cont_state *out) {
+  const cont_state *a = &c->cur;
+  /* The next step's length: from the point's Newton count (AUTO's, of
+   * its last location step) but not from more than the step's own:
+   * beside the branch point Newton converges slowly (pen's doubled
+   * rotations: 7 iterations at psi 7e-12, and the next step a fraction
+   * of the last) */
+  if (c->its > its_step) c->its = its_step;
+  /* At the branch point [F_x F_p; r^T] is singular and the tangent solved
+   * from it is an arbitrary vector of the two-dimensional null space.  The
+   * branch's own tangent is smooth through the point: take it from the
+   * regular tangents at both ends of the step, interpolated, so that
+   * switching (whirl_cont_start_switch) finds the other branch. */
+  for (size_t i = 0; i < c->N; ++i) out->t[i] = (1.0 - u) * a->t[i] + u * b->t[i];
+  const double nt = sqrt(cont_dot(c, out->t, out->t));
+  if (nt > 0 && isfinite(nt))
+    for (size_t i = 0; i < c->N; ++i) out->t[i] /= nt;
+  out->psi_lp = out->t[cont_lead(c)];
+}
+
+/* Mueller's method with bracketing (Muller, MTAC 10 (1956) 208; AUTO-07p's
+ * MUELLER, support.f90): the step from s to the root nearest s of the
+ * parabola through (s0, q0), (s1, q1) and (s, q); then (s1, q1) becomes
+ * (s, q), and (s0, q0) the old (s1, q1) where q changed sign against it,
+ * so that (s0, q0) and (s1, q1) keep bracketing the zero. */
+static double mueller_step(double *q0, double *q1, double q, double *s0, double *s1,
+                           double s) {
+  const double h0 = *s0 - s, h1 = *s1 - s, d = h0 * h1 * (h1 - h0);
+  const double a = (h1 * h1 * (*q0 - q) - h0 * h0 * (*q1 - q)) / d;
+  const double b = (-h1 * (*q0 - q) + h0 * (*q1 - q)) / d;
+  double r = 0.0;
+  if (a * a > 4.0 * b * q) r = copysign(sqrt(a * a - 4.0 * b * q), a);
+  const double step = -2.0 * q / (a + r);
+  if (*q1 * q < 0.0) {
+    *q0 = *q1;
+    *s0 = *s1;
+  }
+  *q1 = q;
+  *s1 = s;
+  return step;
+}
+
+/* One trial of AUTO's localisation: the step rds from X (last trial, or the
+ * step's end) along dir, the unit secant of the last two trials, corrected
+ * on the step's own constraint (the sphere of algebraic branches, else the
+ * hyperplane), halved on a failure down to DSMIN as AUTO's STEPAE and
+ * STEPBV; then its tests.  0, else no point. */
+static int auto_trial(whirl_cont *c, const double *X, const double *dir, double *rds,
+                      int p_only, int tangent_only, cont_state *out) {
+  int rc;
+  for (;;) {
+    for (size_t i = 0; i < c->N; ++i) out->X[i] = X[i] + *rds * dir[i];
+    c->correcting = c->opt.arclength_sphere; /* the step's own corrector */
+    rc = cont_correct(c, X, dir, *rds, out->X);
+    c->correcting = 0;
+    if (rc <= 0) break;
+    *rds *= 0.5;
+    if (fabs(*rds) < c->opt.ds_min) break;
+  }
+  if (rc != 0) return rc;
+  /* a trial on the singular point itself (its matrix singular to
+   * rounding, AUTO's determinant there ~0): 2 */
+  if (!p_only && (rc = trial_analyse(c, out, tangent_only)) > 0) return 2;
+  return rc;
+}
+
+/* AUTO-07p's localisation of a zero of the UZ or LP test between the step's
+ * start a and end b (opt.loc_epss; LCSPAE, LCSPBV): a secant step from b,
+ * then Mueller's steps, each from the last trial along the secant of the
+ * last two (CONTBV's direction; STEPAE's), until the next step would be
+ * below EPSS (1 + sqrt|DS DSMAX|): the last trial is the point, within that
+ * step of the zero, as AUTO's own (kar's UZ at PAR(1) = 0 is AUTO's at
+ * -8.44948e-3, and the branch goes on from there as AUTO's).  After ITMX + 1
+ * trials without, no point: AUTO's "possible special point". */
+static int locate_auto(whirl_cont *c, int ev, size_t k, const cont_state *b,
+                       double ref, double q0, double q1, cont_state *out) {
   const cont_state *a = &c->cur;
   const size_t N = c->N;
-  const double ds = c->ds;
-  double ref = 0.0, fa, fb;
-  int rc;
+  const double hmach = 1e-7; /* AUTO's nudge past the secant's zero */
+  const double tol = c->opt.loc_epss * (1.0 + sqrt(fabs(c->opt.ds * c->opt.ds_max)));
+  const int its_step = c->its, p_only = ev == EV_UZ;
+  const int tangent_only = ev == EV_LP || ev == EV_BP;
+  /* AUTO's test values start at 0 (CNRLAE, CNRLBV), so its first step
+   * tests nothing: no sign change from 0 (nor the step before an
+   * algebraic branch's second point, opt.hide_first_step) */
+  if (c->stats.steps == 0) return 1;
+  int singular = 0; /* a point on the branch point itself (auto_trial) */
+  if (ev == EV_BP) { /* b's determinant with this step's border row too */
+    cont_state_copy(c, out, b);
+    const int rc = cont_tangent(c, out, c->dir);
+    if (rc < 0) return 1;
+    singular = rc > 0;
+    if (!singular) q1 = psi(c, ev, k, out, ref);
+  }
+  const double qend = fmax(fabs(q0), fabs(q1));
+  /* a step onto the zero exactly (a UZ of a parameter stepped by a
+   * fraction of 1 onto 1: AUTO's steps, 1e-7 longer, pass it): b */
+  if (q1 == 0.0 && q0 != 0.0) singular = 1;
+  else if (!(q0 * q1 < 0.0)) return 1;
+  double s0 = 0.0, s1 = c->ds, dsold = c->ds;
+  double rds = (1.0 + hmach) * q1 / (q0 - q1) * (s1 - s0), q = q1;
+  cont_state_copy(c, out, b);
+  int found = singular || fabs(rds) < tol, stepped = 0;
+  if (found) c->its = its_step; /* b itself: its step's Newton count */
+  double *prev = found ? NULL : malloc(3 * N * sizeof *prev);
+  if (!found && !prev) return 1;
+  double *dir = prev + N, *dir0 = dir + N;
+  if (!found) memcpy(dir0, c->dir, N * sizeof *dir0);
+  for (int it = 0; !found && it <= c->opt.loc_itmx; ++it) {
+    for (size_t i = 0; i < N; ++i) dir[i] = (out->X[i] - (it ? prev[i] : a->X[i])) / dsold;
+    const double nd = sqrt(cont_dot(c, dir, dir));
+    if (!(nd > 0.0) || !isfinite(nd)) break;
+    for (size_t i = 0; i < N; ++i) dir[i] /= nd;
+    memcpy(prev, out->X, N * sizeof *prev);
+    memcpy(c->dir, dir, N * sizeof *dir); /* the tangent's orientation */
+    const int rc = auto_trial(c, prev, dir, &rds, p_only, tangent_only, out);
+    if (rc == 2 && ev == EV_BP) { /* on the branch point itself */
+      found = stepped = singular = 1;
+      break;
+    }
+    if (rc != 0) break;
+    stepped = 1;
+    q = psi(c, ev, k, out, ref);
+    if (!isfinite(q)) break;
+    dsold = rds;
+    rds = (1.0 + hmach) * mueller_step(&q0, &q1, q, &s0, &s1, s1 + rds);
+    found = fabs(rds) < tol;
+  }
+  if (prev) {
+    memcpy(c->dir, dir0, N * sizeof *dir0);
+    free(prev);
+  }
+  if (!found) return 1;
+  /* a fold's test still as large as at the step's ends: a kink (cont_locate) */
+  if (stepped && ev == EV_LP && !(fabs(q) <= 0.1 * qend)) return 1;
+  if (stepped && p_only && cont_analyse(c, out, c->dir) != 0) return 1;
+  if (stepped && !singular && tangent_only && cont_tests(c, out) != 0) return 1;
+  if (ev == EV_BP) {
+    const double dab = sqrt(cont_dist2(c, b->X, a->X));
+    const double u = dab > 0.0 ? sqrt(cont_dist2(c, out->X, a->X)) / dab : 1.0;
+    bp_point(c, b, fmin(u, 1.0), its_step, out);
+  }
+  out->s = a->s + sqrt(cont_dist2(c, out->X, a->X));
+  out->p[c->opt.icp] = out->X[c->n];
+  return 0;
+}
 
+/* The test's values at the step's ends a = c->cur and b, *fa and *fb (a
+ * BP's determinant relative to its value at a with this step's border
+ * row, *ref its log; out is scratch); 1 where a's cannot be had. */
+static int test_at_ends(whirl_cont *c, int ev, size_t k, const cont_state *b,
+                        cont_state *out, double *ref, double *fa, double *fb) {
+  const cont_state *a = &c->cur;
+  *ref = 0.0;
   if (ev == EV_BP) {
     /* the determinant at the start of the step with this step's border row,
      * so both ends use the same row and the ratio is smooth in σ */
     cont_state_copy(c, out, a);
     if (cont_tangent(c, out, c->dir) != 0) return 1;
-    ref = out->logdet;
-    fa = out->sign_det;
+    *ref = out->logdet;
+    *fa = out->sign_det;
   } else {
     if (ev == EV_PD) /* the multiplier that passed -1 (crosses_pd) */
       c->pd_rank = a->n_rn > b->n_rn ? a->n_rn : b->n_rn;
     if (ev == EV_HB) { /* psi_hb when it changes sign, else the order
                           statistic of the count that changed */
       c->hb_rank = 0;
-      if (!(psi(c, ev, k, a, ref) * psi(c, ev, k, b, ref) < 0.0))
+      if (!(psi(c, ev, k, a, 0.0) * psi(c, ev, k, b, 0.0) < 0.0))
         c->hb_rank = a->n_cu > b->n_cu ? a->n_cu : b->n_cu;
     }
-    fa = psi(c, ev, k, a, ref);
+    *fa = psi(c, ev, k, a, 0.0);
   }
-  fb = psi(c, ev, k, b, ref);
+  *fb = psi(c, ev, k, b, *ref);
+  return 0;
+}
+
+static int locate_converged(whirl_cont *c, int ev, size_t k, const cont_state *b,
+                            cont_state *out);
+
+/* opt.loc_epss: AUTO's point (locate_auto) into c->loc_next, where the
+ * branch goes on from as AUTO's, and the zero to convergence into out, the
+ * point reported (AUTO's own where that fails); no point where AUTO's
+ * localisation finds none.  Else the zero to convergence alone. */
+int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
+                cont_state *out) {
+  if (!(c->opt.loc_epss > 0.0) || ev == EV_PMIN || ev == EV_PMAX || ev == EV_SYS)
+    return locate_converged(c, ev, k, b, out);
+  double ref, fa, fb;
+  cont_state *at = c->loc_next ? c->loc_next : out;
+  if (test_at_ends(c, ev, k, b, at, &ref, &fa, &fb) != 0) return 1;
+  const int rca = locate_auto(c, ev, k, b, ref, fa, fb, at);
+  if (at == out && rca == 0) return 0;
+  const int its = c->its; /* AUTO's, which the next step's length reads */
+  const int rc = locate_converged(c, ev, k, b, out);
+  /* where AUTO's iteration finds no point (its first step, or ITMX
+   * reached: whirl's tests are not all AUTO's functions, a BP's
+   * determinant is of the whole system where AUTO's is of the condensed
+   * one), whirl's own, the branch going on from it as before */
+  if (rca != 0) return rc;
+  /* a branch point the converged localisation rejects (a pole of the
+   * determinant, r3b's) is none; another test's zero is AUTO's point
+   * where that fails */
+  if (rc != 0 && ev == EV_BP) return 1;
+  if (rc != 0) cont_state_copy(c, out, at);
+  c->loc_next_ok = 1;
+  c->its = its;
+  return 0;
+}
+
+static int locate_converged(whirl_cont *c, int ev, size_t k, const cont_state *b,
+                            cont_state *out) {
+  const cont_state *a = &c->cur;
+  const size_t N = c->N;
+  const double ds = c->ds;
+  double ref, fa, fb;
+  int rc;
+
+  if (test_at_ends(c, ev, k, b, out, &ref, &fa, &fb) != 0) return 1;
   if (ev == EV_UZ && fb == 0.0 && fa != 0.0) { /* the step's end is the point */
     cont_state_copy(c, out, b);
     out->s = a->s + sqrt(cont_dist2(c, out->X, a->X));
@@ -193,6 +386,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   if (!Xa) return 1;
   double *Xb = Xa + N, *Xbest = Xb + N, *Xs = Xbest + N, *H = Xs + N; /* not before the check */
   double sbest = 0.0, fbest = INFINITY, sout = 0.0;
+  double fout = INFINITY; /* |psi| at the point returned */
   int its_best = 0;
   const int its_step = c->its; /* the step's own Newton count */
   memcpy(Xa, a->X, N * sizeof *Xa);
@@ -250,12 +444,14 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
         cont_state_copy(c, out, &c->locbest);
         c->its = its_best; /* its Newton iterations set the next step */
         sout = sbest;
+        fout = fbest;
         rc = 0;
       } else if (found && fabs(sb - sa) <= 1e-3 * fabs(ds)) {
         /* at the singular point itself the tangent solve may fail too
          * (enz's pitchfork by a fold): then a point a little off it */
         static const double off[] = {0.0, 1e-7, -1e-7, 1e-6, -1e-6, 1e-5, -1e-5};
         rc = 1;
+        fout = fbest;
         for (size_t j = 0; rc != 0 && j < sizeof off / sizeof *off; ++j) {
           memcpy(out->X, Xbest, N * sizeof *Xbest);
           sout = sbest + off[j] * fabs(ds);
@@ -277,6 +473,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
         cont_state_copy(c, out, &c->locbest);
         c->its = its_best;
         sout = sbest;
+        fout = fbest;
         rc = 0;
       }
       if (rc != 0) found = 0;
@@ -289,6 +486,7 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
     }
     found = 1;
     sout = sigma;
+    fout = fabs(f);
     if (fabs(f) < fbest) {
       fbest = fabs(f);
       sbest = sigma;
@@ -339,27 +537,14 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
    * Not a special point: AUTO's localisation finds no zero there and
    * labels nothing. */
   if (ev == EV_BP && !(fbest < fmin(fabs(fa0), fabs(fb0)))) return 1;
+  /* ... nor at the point returned, where the bracket closed on the pole:
+   * a smooth part beside the pole can bring a trial on the way below the
+   * ends' (r3b's run 1 by AUTO's steps: 0.0044 where b's was 0.0086, the
+   * bracket closing on the second primary at mu = 0) */
+  if (ev == EV_BP && !(fout < fmin(fabs(fa0), fabs(fb0)))) return 1;
   if (p_only && cont_analyse(c, out, c->dir) != 0) return 1;
   if (tangent_only && cont_tests(c, out) != 0) return 1;
-  if (ev == EV_BP) {
-    /* The next step's length: from the point's Newton count (AUTO's, of
-     * its last location step) but not from more than the step's own:
-     * beside the branch point Newton converges slowly (pen's doubled
-     * rotations: 7 iterations at psi 7e-12, and the next step a fraction
-     * of the last) */
-    if (c->its > its_step) c->its = its_step;
-    /* At the branch point [F_x F_p; r^T] is singular and the tangent solved
-     * from it is an arbitrary vector of the two-dimensional null space.  The
-     * branch's own tangent is smooth through the point: take it from the
-     * regular tangents at both ends of the step, interpolated, so that
-     * switching (whirl_cont_start_switch) finds the other branch. */
-    const double u = fmin(fmax(sout / ds, 0.0), 1.0);
-    for (size_t i = 0; i < N; ++i) out->t[i] = (1.0 - u) * a->t[i] + u * b->t[i];
-    const double nt = sqrt(cont_dot(c, out->t, out->t));
-    if (nt > 0 && isfinite(nt))
-      for (size_t i = 0; i < N; ++i) out->t[i] /= nt;
-    out->psi_lp = out->t[cont_lead(c)];
-  }
+  if (ev == EV_BP) bp_point(c, b, fmin(fmax(sout / ds, 0.0), 1.0), its_step, out);
   out->s = a->s + sqrt(cont_dist2(c, out->X, a->X));
   out->p[c->opt.icp] = out->X[c->n];
   return 0;

@@ -117,6 +117,28 @@ static const char *const same_int[] = {"NDIM", "ILP", "ISP", "NTST", "NCOL", "IA
 static const char *const same_real[] = {"DS", "DSMIN", "DSMAX", "RL0", "RL1", "A0", "A1",
                                         "EPSL", "EPSU", "EPSS"};
 
+/* AUTO-07p's defaults (its main.f90, INIT) for the keys a constants file
+ * leaves out where whirl's run files default otherwise: the Newton and
+ * localisation limits (ITNW 5, not 8: pp2's equilibria took three
+ * iterations a step, and the step grew x1.1 where AUTO's stays), DS's
+ * bounds, the tests and the switches */
+static void auto_defaults(ctx *c) {
+  static const struct { const char *key; int v; } di[] = {
+      {"ILP", 1}, {"ISP", 2}, {"NTST", 20}, {"NCOL", 4}, {"IAD", 3},
+      {"MXBF", 10}, {"ITMX", 9}, {"ITNW", 5}, {"NWTN", 3}};
+  static const struct { const char *key; double v; } dr[] = {
+      {"DS", 0.01}, {"DSMIN", 0.005}, {"DSMAX", 0.1}};
+  char nb[40];
+  int v;
+  double x;
+  for (size_t i = 0; i < sizeof di / sizeof *di; i++)
+    if (whirl_auto_constants_int(c->ac, di[i].key, &v) != WHIRL_OK)
+      put(c->t, "%-6s = %d  # AUTO's default\n", di[i].key, di[i].v);
+  for (size_t i = 0; i < sizeof dr / sizeof *dr; i++)
+    if (whirl_auto_constants_real(c->ac, dr[i].key, &x) != WHIRL_OK)
+      put(c->t, "%-6s = %s  # AUTO's default\n", dr[i].key, num(dr[i].v, nb, sizeof nb));
+}
+
 static void copy_same(ctx *c) {
   char nb[40];
   int v;
@@ -158,6 +180,11 @@ static int problem(ctx *c) {
   put(c->t, "UDOT = direction\n");
   /* a new point's tangent as AUTO's direction vector, unrefined */
   put(c->t, "TANGENT = iterate\n");
+  /* the branch goes on from the special point located to convergence, as
+   * AUTO's at EPSS -> 0 (LOCATE = auto, from where AUTO's own localisation
+   * to EPSS ends, follows AUTO's step sequence at the file's EPSS but
+   * agreed with fewer of AUTO's printed points: doc/auto-reference.md) */
+  put(c->t, "LOCATE = converged\n");
   /* a Newton failure at DSMIN ends the branch in AUTO's MX label */
   put(c->t, "MX = label\n");
   /* AUTO's default JAC is 0 (finite differences), whirl's 1: always said */
@@ -428,6 +455,7 @@ int whirl_auto_constants_runfile(whirl_auto_constants *ac, const whirl_auto_runf
   if (!rc) rc = icp(&c);
   if (!rc) rc = restart(&c);
   if (!rc) copy_same(&c);
+  if (!rc) auto_defaults(&c);
   if (!rc) rc = values(&c);
   if (!rc) rc = user_points(&c);
   if (!rc) rc = arclength_weights(&c);

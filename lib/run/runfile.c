@@ -102,6 +102,8 @@ static const key_def keys[] = {
     {WHIRL_RK_THREADS, "THREADS", "threads", NULL, K_INT},
     {WHIRL_RK_NWTN, "NWTN", "newton_full_iterations", NULL, K_INT},
     {WHIRL_RK_HB_PERIOD, "HB_PERIOD", "hopf_period", NULL, K_STRING},
+    {WHIRL_RK_LOCATE, "LOCATE", "locate", NULL, K_METHOD},
+    {WHIRL_RK_ITMX, "ITMX", "locate_iterations", NULL, K_INT},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -109,7 +111,7 @@ static const key_def keys[] = {
  * noted in the run's log): they control output, AUTO's own iteration
  * details. */
 static const char *const ignored_keys[] = {
-    "ITMX", "IID", "MXBF", "IADS",
+    "IID", "MXBF", "IADS",
     "NTHL", "NTHU", "NUZR", "NPAR", "SP", "UNAMES",
     "PARNAMES", "NUNSTAB", "NSTAB", "IIS", "IBR", "LAB", "TY", "EFILE",
     "SFILE", "NPRM", "DATFILE"};
@@ -173,6 +175,7 @@ static void set_defaults(whirl_run_settings *s) {
   s->epsu = 1e-7;
   s->epss = 1e-5;
   s->itnw = 8;
+  s->itmx = 8;
   s->jac = 1;
   s->grid[0] = s->grid[1] = 41;
   s->basin_periods = 500;
@@ -589,6 +592,7 @@ static const char *check_int(whirl_run_key k, int x) {
       return x < 0 || x > 256 ? "must be in [0, 256] (0: as many as OpenMP offers)" : NULL;
     case WHIRL_RK_NPR: return x < 0 ? "must be >= 0" : NULL;
     case WHIRL_RK_ITNW: return x < 1 || x > 1000 ? "must be in [1, 1000]" : NULL;
+    case WHIRL_RK_ITMX: return x < 0 || x > 1000 ? "must be in [0, 1000]" : NULL;
     case WHIRL_RK_NWTN: return x < 0 || x > 1000 ? "must be in [0, 1000] (0: a new Jacobian at every iteration)" : NULL;
     case WHIRL_RK_JAC:
       /* AUTO-07p documents 0 and 1 only */
@@ -636,6 +640,8 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_MX: return &s->mx_label;
     case WHIRL_RK_THREADS: return &s->threads;
     case WHIRL_RK_NWTN: return &s->nwtn;
+    case WHIRL_RK_ITMX: return &s->itmx;
+    case WHIRL_RK_LOCATE: return &s->locate_auto;
     case WHIRL_RK_DISCOVER_STARTS: return &s->discover_starts;
     case WHIRL_RK_DISCOVER_SEED: return &s->discover_seed;
     default: return NULL;
@@ -780,6 +786,13 @@ static int set_method(whirl_runfile *rf, const key_def *d, const char *where) {
       return fail(rf, where, "%s: '%s' is neither refined nor iterate", kn,
                   show(t, ITEMLEN, shown, sizeof shown));
     s->tangent_iterate = !strcasecmp(t, "iterate");
+    return WHIRL_OK;
+  }
+  if (d->key == WHIRL_RK_LOCATE) { /* how special points are located */
+    if (strcasecmp(t, "converged") && strcasecmp(t, "auto"))
+      return fail(rf, where, "%s: '%s' is neither converged nor auto", kn,
+                  show(t, ITEMLEN, shown, sizeof shown));
+    s->locate_auto = !strcasecmp(t, "auto");
     return WHIRL_OK;
   }
   if (d->key == WHIRL_RK_MX) { /* a branch whose Newton fails at DSMIN */

@@ -87,6 +87,11 @@ typedef struct whirl_run_settings {
                                    is the corrector's last factorisation's
                                    solve as it is, AUTO's direction vector
                                    (0: refined once, whirl's) */
+  int locate_auto;              /* LOCATE = auto: special points located by
+                                   AUTO's secant and Mueller iteration until
+                                   its step is below EPSS (LCSPAE, LCSPBV;
+                                   0: to convergence, whirl's) */
+  int itmx;                     /* ITMX: that iteration's steps (8) */
   int orbit_max_nodes;          /* ORBIT_MAX = nodes: an orbit's MAX U(i) is
                                    AUTO's, the largest node value (0: the
                                    maximum of the collocation polynomial) */

@@ -70,6 +70,10 @@ typedef enum whirl_run_key {
   WHIRL_RK_MX,          /* a branch whose Newton fails at DSMIN: the run
                            fails (0), or its last point is labelled MX and
                            the run goes on, as AUTO's (1) */
+  WHIRL_RK_LOCATE,      /* special points located to convergence (0) or
+                           by AUTO's secant and Mueller iteration to its
+                           step tolerance EPSS (1) */
+  WHIRL_RK_ITMX,        /* AUTO's ITMX: the iterations of that location */
   WHIRL_RK_COUNT
 } whirl_run_key;
 

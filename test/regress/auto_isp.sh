@@ -96,15 +96,18 @@ cat > cu/cu.f90 <<'F'
       U(1) = 0
       END SUBROUTINE STPNT
 F
+# (ITNW = 8: at EPSL = 1e-10 Newton takes three iterations a step, which
+# keep DS at AUTO's default ITNW = 5: AUTO-07p's own run of c.cu.1 then
+# ends at NMX with its LP at PT 49, as whirl's, short of the UZSTOP)
 cat > cu/c.cu.1 <<'C'
-NDIM = 1, IPS = 1, IRS = 0, ILP = 1, ICP = [2], ISP = 2, ISW = 1
+NDIM = 1, IPS = 1, IRS = 0, ILP = 1, ICP = [2], ISP = 2, ISW = 1, ITNW = 8
 NMX = 200, NPR = 0, EPSL = 1e-10, EPSU = 1e-10, EPSS = 1e-10
 DS = 0.01, DSMIN = 1e-5, DSMAX = 0.1, NPAR = 2
 UZSTOP = {2: [-2, 2]}
 C
 for isp in 0 2; do
   cat > cu/c.cu.$((isp / 2 + 2)) <<C
-NDIM = 1, IPS = 1, IRS = 2, ILP = 1, ICP = [2, 1], ISP = $isp, ISW = 2
+NDIM = 1, IPS = 1, IRS = 2, ILP = 1, ICP = [2, 1], ISP = $isp, ISW = 2, ITNW = 8
 NMX = 100, NPR = 0, EPSL = 1e-10, EPSU = 1e-10, EPSS = 1e-10
 DS = -0.01, DSMIN = 1e-5, DSMAX = 0.1, NPAR = 2
 C

@@ -76,6 +76,15 @@ hyper_labels() {
   awk -v d="$1" '$0 == "Demo " d " is started" { on = 1; next } $0 == "Demo " d " is done" { on = 0 }
     on && $1 ~ /^[0-9]+$/ && $2 ~ /^[0-9]+$/ && $3 ~ /^[A-Z][A-Z]$/ && $4 ~ /^[0-9]+$/ { print $1, $3, $4 }' "$2"
 }
+# the point numbers of labels $2..$3 in b-file $1, and in hyper.all ($2 demo)
+pts_of() {
+  awk -v lo="$2" -v hi="$3" 'substr($0, 1, 4) + 0 != 0 { l = substr($0, 15, 5) + 0; p = substr($0, 5, 6) + 0
+    if (p < 0) p = -p; if (l >= lo && l <= hi) printf "%d ", p }' "$1"
+}
+hyper_pts() {
+  awk -v d="$1" -v lo="$3" -v hi="$4" '$0 == "Demo " d " is started" { on = 1; next } $0 == "Demo " d " is done" { on = 0 }
+    on && $1 ~ /^[0-9]+$/ && $2 ~ /^[0-9]+$/ && $3 ~ /^[A-Z][A-Z]$/ && $4 >= lo && $4 <= hi { printf "%d ", $2 }' "$2"
+}
 
 # ---- 1. the fold: NMX, NPR, IPLT
 mkdir "$tmp/fold"
@@ -245,6 +254,42 @@ check $? "brc: BP 7's MAX U(3), MAX U(4) and MAX U(2), MAX U(5) equal to 1e-6: $
 tr11m=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 == 11 { print substr($0, 77, 19) + 0, substr($0, 134, 19) + 0 }' "$tmp/brc.out/b.brc")
 echo "$tr11m" | awk '{ exit !(NF == 2 && $1 > 2.32842 && $1 < 2.32844 && $2 > 2.82493 && $2 < 2.82495) }'
 check $? "brc: run 3 on AUTO's side: TR 11's MAX U(2), MAX U(5) = $tr11m, AUTO 2.32843 2.82494"
+
+# kar: its UZ at PAR(1) = 0 is where AUTO's localisation stops at EPSS
+# (-8.44948e-3; the test function is steep there, the problem singular at
+# PAR(1) = 0), and AUTO's branch goes on from there: its labels 2-5 at PT
+# 19 27 70 93.  whirl auto goes on from the zero located to convergence
+# (LOCATE = converged: 19 25 61 83); its run file with LOCATE = auto goes on
+# from where AUTO's secant and Mueller steps end, and the labels come at
+# AUTO's points (the points reported stay converged)
+demo kar
+(cd "$tmp/kar.out" && "$WHIRL" run kar.1.whirl --LOCATE=auto --OUT=kar.loc --quiet > /dev/null 2>&1)
+w=$(awk -F'\t' 'NR > 1 && $4 >= 2 && $4 <= 5 { printf "%d ", $2 + 1 }' "$tmp/kar.out/kar.loc/branches.tsv" 2> /dev/null)
+a=$(hyper_pts kar "$hyper" 2 5)
+[ -n "$a" ] && [ "$w" = "$a" ]
+check $? "kar: LOCATE = auto puts labels 2-5 at AUTO's point numbers ($a): $w"
+# pp2 (a constants file of AUTO's new style, ITNW and ISP left to AUTO's
+# defaults): branch 2, switched at BP 2 by MXBF, has BP 4, LP 5 and UZ 6 at
+# AUTO's PT 21, 25 and 79.  whirl's ITNW = 8 grew the step after three
+# Newton iterations where AUTO's ITNW = 5 keeps it, and whirl adapted the
+# step after the switch's first step and after BP 4, which AUTO's
+# algebraic branches do not (PT 11, 13, 31 before 2026-12-07)
+demo pp2
+w=$(pts_of "$tmp/pp2.out/b.pp2" 4 6)
+a=$(hyper_pts pp2 "$hyper" 4 6)
+[ -n "$a" ] && [ "$w" = "$a" ]
+check $? "pp2: labels 4-6 at AUTO's point numbers ($a): $w"
+# r3b's first run: BPs 2-4 and UZ 5 at AUTO's PT 25 83 141 181.  With
+# AUTO's step rules of algebraic branches the steps pass the pole of the
+# determinant at mu = 0, x = 1 (the second primary) differently, and a
+# trial on the way came below both ends' |det| (0.0044 against 0.0086):
+# labelled a BP, one point too many (PT 55), until the point returned had
+# to be below them as well
+demo r3b r3b
+w=$(pts_of "$tmp/r3b.out/b.r3b" 2 5 | awk '{ print $1, $2, $3, $4 }')
+a=$(hyper_pts r3b "$hyper" 2 5 | awk '{ print $1, $2, $3, $4 }') # run 1's
+[ -n "$a" ] && [ "$w" = "$a" ]
+check $? "r3b: labels 2-5 at AUTO's point numbers ($a): $w"
 
 # lrz: MXBF, and IRS = 4, 6 on the switched branch
 demo lrz

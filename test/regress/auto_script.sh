@@ -50,9 +50,12 @@ cat > "$tmp/lg/lg.f90" <<'F'
       U(1) = 0
       END SUBROUTINE STPNT
 F
+# (ITNW = 8: the map's Newton takes three iterations a step at EPSL = 1e-10,
+# which grow the step only where ITNW / 2 >= 3; AUTO's default ITNW = 5
+# keeps DS = 0.001, and 400 steps end short of mu = 3)
 cat > "$tmp/lg/c.lg" <<'C'
 unames = {1: 'x'}, parnames = {1: 'mu'}
-NDIM=   1, IPS =  -1, IRS =   0, ILP =   1
+NDIM=   1, IPS =  -1, IRS =   0, ILP =   1, ITNW = 8
 ICP =  ['mu']
 NMX=  400, NPR=    0, MXBF=  -1, ISP = 1, ISW = 1, JAC = 1
 EPSL= 1e-10, EPSU = 1e-10, EPSS = 1e-8

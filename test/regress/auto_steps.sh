@@ -228,6 +228,95 @@ R
 )
 check $? "DS past DSMAX: the first two steps at DS, then DSMAX, as AUTO's: PT 2, 3, 5 and the EP at PT 8 ${out:+($out)}"
 
+# AUTO's algebraic step rules and defaults: u' = p u - u^2 + u^3/3 from
+# p = -0.5, u = 0, switched by MXBF = -1 at the transcritical BP at p = 0 onto
+# u = 3/2 - sqrt(9/4 - 3p) ... whose fold is at p = 3/4, u = 3/2.  The
+# constants leave ITNW, ITMX, NWTN, ISP, ILP to AUTO's defaults.  AUTO-07p's
+# own run of these files labels the EP at PT 1, the BP at PT 5, the UZ
+# (p = 0.9) at PT 10 and the LP at PT 36 (its branch 2 keeps DS = 0.05: four
+# and then three Newton iterations a step, ITNW = 5; no ADPTDS after the
+# switch's first step nor after the BP).  whirl put the LP at PT 15 before
+# 2026-12-07 (its ITNW = 8 grew the step x1.1 after three iterations, and
+# it adapted the step after the switch and after special points)
+mkdir "$tmp/tc"
+cat > "$tmp/tc/tc.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      F(1) = PAR(1) * U(1) - U(1)**2 + U(1)**3 / 3
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = -0.5
+      U(1) = 0
+      END SUBROUTINE STPNT
+F
+cat > "$tmp/tc/c.tc" <<'C'
+NDIM = 1, IPS = 1, IRS = 0, ICP = [1], MXBF = -1
+NMX = 60, NPR = 0
+DS = 0.05, DSMIN = 1e-4, DSMAX = 0.2
+UZSTOP = {1: [-1, 0.9]}
+C
+(cd "$tmp" && "$WHIRL" auto tc --quiet > tc.log 2>&1)
+got=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 >= 1 && substr($0, 15, 5) + 0 <= 4 {
+  p = substr($0, 5, 6) + 0; printf "%s%d %d", (k++ ? "; " : ""), (p < 0 ? -p : p), substr($0, 11, 4) }' "$tmp/tc.out/b.tc" 2> /dev/null)
+[ "$got" = "1 9; 5 1; 10 -4; 36 2" ]
+check $? "MXBF's branch as AUTO's algebraic ones (AUTO-07p: 1 9; 5 1; 10 -4; 36 2): $got"
+grep -q "^ITNW   = 5  # AUTO's default$" "$tmp/tc.out/tc.whirl" && grep -q "^ITMX   = 9  # AUTO's default$" "$tmp/tc.out/tc.whirl" &&
+  grep -q "^NWTN   = 3  # AUTO's default$" "$tmp/tc.out/tc.whirl" && ! grep -q "^MXBF.*default" "$tmp/tc.out/tc.whirl"
+check $? "tc.whirl: the keys the constants leave out at AUTO's defaults (ITNW 5, ITMX 9, NWTN 3), the ones they set as set"
+
+# LOCATE = auto: the fold branch p = u^2 from u = -2 down in p, a user
+# point at p = 0.7 located to EPSS = 0.05, a step of 0.3 (AUTO's secant step
+# and Mueller's: its UZ at 0.698758, 1.2e-3 short) and the branch going on
+# from there: AUTO-07p's own run has PT 13 at p = 0.44884369 and the EP 14
+# at 0.22311746 (whirl auto, LOCATE = converged: 0.45000373, 0.22411330);
+# with LOCATE = auto whirl's are AUTO's, its UZ still reported at 0.7
+mkdir "$tmp/fl"
+cat > "$tmp/fl/fl.f90" <<'F'
+      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
+      IMPLICIT NONE
+      INTEGER NDIM, IJAC, ICP(*)
+      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
+      F(1) = PAR(1) - U(1)**2
+      END SUBROUTINE FUNC
+      SUBROUTINE STPNT(NDIM,U,PAR,T)
+      IMPLICIT NONE
+      INTEGER NDIM
+      DOUBLE PRECISION U(NDIM), PAR(*), T
+      PAR(1) = 4
+      U(1) = -2
+      END SUBROUTINE STPNT
+F
+cat > "$tmp/fl/c.fl" <<'C'
+NDIM = 1, IPS = 1, IRS = 0, ICP = [1], ILP = 0, ISP = 0
+NMX = 14, NPR = 0, EPSL = 1e-10, EPSU = 1e-10, EPSS = 0.05, ITNW = 8
+DS = -0.3, DSMIN = 1e-4, DSMAX = 0.3
+UZR = {1: 0.7}
+C
+(cd "$tmp" && "$WHIRL" auto fl --quiet > fl.log 2>&1)
+grep -q "^LOCATE = converged$" "$tmp/fl.out/fl.whirl"
+check $? "fl.whirl: whirl auto writes LOCATE = converged"
+(cd "$tmp/fl.out" && "$WHIRL" run fl.whirl --LOCATE=auto --OUT=loc.out --quiet --no-plot > loc.log 2>&1)
+rc=$?
+got=$(awk -F'\t' 'NR > 1 && $2 >= 11 { printf "%s%d %s %.10g", (k++ ? "; " : ""), $2 + 1, $3, $5 }' "$tmp/fl.out/loc.out/branches.tsv" 2> /dev/null)
+echo "$got" | awk -F'; ' '{ split($1, a, " "); split($2, b, " "); split($3, c, " ")
+  exit !(NF == 3 && a[1] == 12 && a[2] == "UZ" && a[3] == 0.7 && b[1] == 13 && c[1] == 14 &&
+         (b[3] - 0.44884369123) ^ 2 < 1e-14 && (c[3] - 0.22311745681) ^ 2 < 1e-14) }'
+check $(( $? + rc )) "LOCATE = auto: the branch goes on from AUTO's point (AUTO-07p: PT 13 at 0.44884369, 14 at 0.22311746), the UZ reported at 0.7 (exit $rc): $got"
+for kv in "LOCATE = nearby:LOCATE: 'nearby' is neither converged nor auto" \
+          "ITMX = -1:ITMX = -1: must be in \[0, 1000\]"; do
+  key=${kv%%:*} msg=${kv#*:}
+  sed -e "s/^LOCATE = .*\$/$key/" -e 's|^OUT .*$|OUT = bad.out|' "$tmp/fl.out/fl.whirl" > "$tmp/fl.out/bad.whirl"
+  (cd "$tmp/fl.out" && "$WHIRL" run bad.whirl --quiet --no-plot > bad.log 2>&1)
+  rc=$?
+  [ $rc = 2 ] && grep -q "bad.whirl:[0-9]*: $msg" "$tmp/fl.out/bad.log" && [ ! -e "$tmp/fl.out/bad.out" ]
+  check $? "$key: exit 2 ($rc), the file and line, nothing written: $(head -1 "$tmp/fl.out/bad.log")"
+done
+
 # the keys whirl auto writes, and the curve's maximum against the nodes'
 w="$tmp/bru.out/bru.2@HB1.whirl"
 grep -q '^MESH_RULE = jumps$' "$w" && grep -q '^ORBIT_MAX = nodes$' "$w" && grep -q '^EQ_STEP = sphere$' "$w" &&
