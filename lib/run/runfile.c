@@ -744,6 +744,29 @@ static int set_ips(whirl_runfile *rf, const key_def *d, const char *where) {
   return WHIRL_OK;
 }
 
+/* The keys that choose between two words (whirl's default first), each a
+ * flag of the settings (int_field): MESH_RULE the density of orbits' meshes,
+ * EQ_STEP the step of algebraic branches, DIFFERENCES BVPs' difference
+ * quotients, UDOT what the integral conditions' udot is, TANGENT a new
+ * point's tangent, LOCATE where a branch goes on after a special point,
+ * MX a branch whose Newton fails at DSMIN, ORBIT_MAX what MAX U(i) of an
+ * orbit is (doc/run-files.md) */
+typedef struct two_words {
+  whirl_run_key key;
+  const char *no, *yes;
+} two_words;
+static const two_words two_word_keys[] = {
+    {WHIRL_RK_MESH_RULE, "derivative", "jumps"},  {WHIRL_RK_EQ_STEP, "tangent", "sphere"},
+    {WHIRL_RK_DIFFERENCES, "central", "auto"},    {WHIRL_RK_UDOT, "derivative", "direction"},
+    {WHIRL_RK_TANGENT, "refined", "iterate"},     {WHIRL_RK_LOCATE, "converged", "auto"},
+    {WHIRL_RK_MX, "fail", "label"},               {WHIRL_RK_ORBIT_MAX, "curve", "nodes"}};
+
+static const two_words *two_words_of(whirl_run_key key) {
+  for (size_t i = 0; i < sizeof two_word_keys / sizeof *two_word_keys; i++)
+    if (two_word_keys[i].key == key) return &two_word_keys[i];
+  return NULL;
+}
+
 /* METHOD: colloc or hbm. */
 static int set_method(whirl_runfile *rf, const key_def *d, const char *where) {
   whirl_run_settings *s = &rf->s;
@@ -753,60 +776,12 @@ static int set_method(whirl_runfile *rf, const key_def *d, const char *where) {
   if (v->kind != V_SCALAR)
     return fail(rf, where, "%s: expected one word", kn);
   const char *t = v->it[0].text;
-  if (d->key == WHIRL_RK_MESH_RULE) { /* the density of orbits' meshes */
-    if (strcasecmp(t, "derivative") && strcasecmp(t, "jumps"))
-      return fail(rf, where, "%s: '%s' is neither derivative nor jumps", kn,
-                  show(t, ITEMLEN, shown, sizeof shown));
-    s->mesh_jumps = !strcasecmp(t, "jumps");
-    return WHIRL_OK;
-  }
-  if (d->key == WHIRL_RK_EQ_STEP) { /* the step of algebraic branches */
-    if (strcasecmp(t, "tangent") && strcasecmp(t, "sphere"))
-      return fail(rf, where, "%s: '%s' is neither tangent nor sphere", kn,
-                  show(t, ITEMLEN, shown, sizeof shown));
-    s->eq_sphere = !strcasecmp(t, "sphere");
-    return WHIRL_OK;
-  }
-  if (d->key == WHIRL_RK_DIFFERENCES) { /* BVPs' difference quotients */
-    if (strcasecmp(t, "central") && strcasecmp(t, "auto"))
-      return fail(rf, where, "%s: '%s' is neither central nor auto", kn,
-                  show(t, ITEMLEN, shown, sizeof shown));
-    s->auto_differences = !strcasecmp(t, "auto");
-    return WHIRL_OK;
-  }
-  if (d->key == WHIRL_RK_UDOT) { /* what the integral conditions' udot is */
-    if (strcasecmp(t, "derivative") && strcasecmp(t, "direction"))
-      return fail(rf, where, "%s: '%s' is neither derivative nor direction", kn,
-                  show(t, ITEMLEN, shown, sizeof shown));
-    s->udot_direction = !strcasecmp(t, "direction");
-    return WHIRL_OK;
-  }
-  if (d->key == WHIRL_RK_TANGENT) { /* a new point's tangent */
-    if (strcasecmp(t, "refined") && strcasecmp(t, "iterate"))
-      return fail(rf, where, "%s: '%s' is neither refined nor iterate", kn,
-                  show(t, ITEMLEN, shown, sizeof shown));
-    s->tangent_iterate = !strcasecmp(t, "iterate");
-    return WHIRL_OK;
-  }
-  if (d->key == WHIRL_RK_LOCATE) { /* how special points are located */
-    if (strcasecmp(t, "converged") && strcasecmp(t, "auto"))
-      return fail(rf, where, "%s: '%s' is neither converged nor auto", kn,
-                  show(t, ITEMLEN, shown, sizeof shown));
-    s->locate_auto = !strcasecmp(t, "auto");
-    return WHIRL_OK;
-  }
-  if (d->key == WHIRL_RK_MX) { /* a branch whose Newton fails at DSMIN */
-    if (strcasecmp(t, "fail") && strcasecmp(t, "label"))
-      return fail(rf, where, "%s: '%s' is neither fail nor label", kn,
-                  show(t, ITEMLEN, shown, sizeof shown));
-    s->mx_label = !strcasecmp(t, "label");
-    return WHIRL_OK;
-  }
-  if (d->key == WHIRL_RK_ORBIT_MAX) { /* what MAX U(i) of an orbit is */
-    if (strcasecmp(t, "curve") && strcasecmp(t, "nodes"))
-      return fail(rf, where, "%s: '%s' is neither curve nor nodes", kn,
-                  show(t, ITEMLEN, shown, sizeof shown));
-    s->orbit_max_nodes = !strcasecmp(t, "nodes");
+  const two_words *w = two_words_of(d->key);
+  if (w) { /* a choice of two: the second one sets the flag */
+    if (strcasecmp(t, w->no) && strcasecmp(t, w->yes))
+      return fail(rf, where, "%s: '%s' is neither %s nor %s", kn,
+                  show(t, ITEMLEN, shown, sizeof shown), w->no, w->yes);
+    *int_field(s, d->key) = !strcasecmp(t, w->yes);
     return WHIRL_OK;
   }
   if (d->key == WHIRL_RK_BASIN_METHOD) { /* the explicit integrators */
