@@ -7,6 +7,8 @@
  * eigenvalue nearest the imaginary axis; bounds, p - value; UZ, the user
  * quantity (the parameter by default) - value; the
  * system's own test functions (codimension-two points on fold curves).
+ * With opt.loc_epss also AUTO-07p's own localisation (LCSPAE, LCSPBV:
+ * secant, then Mueller's steps to EPSS), whose end the branch goes on from.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdlib.h>

@@ -219,7 +219,8 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
    * point two steps from the start as their second (CNRLAE), unless the
    * start is a switch at a branch point (ISW = -1 stores it) */
   o->auto_steps = 1;
-  /* LOCATE = auto (whirl auto writes it): AUTO's localisation to EPSS */
+  /* LOCATE = auto: on from where AUTO's localisation to EPSS ends (whirl
+   * auto writes converged: doc/auto-reference.md) */
   o->loc_epss = s->locate_auto ? s->epss : 0.0;
   o->loc_itmx = s->itmx;
   o->hide_first_step = b->kind == WHIRL_SOL_EQ && !b->bp && s->isw >= 0;

@@ -222,17 +222,20 @@ typedef struct whirl_cont_options {
   int stop_at_bp;      /* end the branch at the first BP */
   int detect_loop;     /* stop when the branch returns to its start */
   double loc_tol;      /* localisation tolerance in arclength */
-  double loc_epss;     /* > 0: AUTO-07p's localisation (LCSPAE, LCSPBV)
-                          of zeros of the UZ and LP tests instead: a
-                          secant step, then Mueller's method with
-                          bracketing, each trial a step from the last one
-                          along their secant, until the next step is below
-                          loc_epss (1 + sqrt|ds ds_max|) (AUTO's EPSS);
-                          not there after loc_itmx + 1 trials, no point
-                          (AUTO's "possible special point").  The point
-                          is then within that step of the zero, as AUTO's
-                          own, and the branch goes on from there as
-                          AUTO's.  0 (default): to convergence (loc_tol) */
+  double loc_epss;     /* > 0 (with auto_steps): the branch goes on after
+                          a special point from where AUTO-07p's own
+                          localisation ends (LCSPAE, LCSPBV): a secant
+                          step from the step's end, then Mueller's method
+                          with bracketing, each trial a step from the last
+                          one along their secant, until the next step is
+                          below loc_epss (1 + sqrt|ds ds_max|) (AUTO's
+                          EPSS), at most loc_itmx + 1 trials; the point
+                          reported is still the zero to loc_tol.  Where
+                          that iteration finds none (AUTO's first step,
+                          which tests nothing, or loc_itmx reached),
+                          whirl's own localisation alone.  Bounds and the
+                          system's own tests: always whirl's.  0
+                          (default): on from the zero to loc_tol */
   int loc_itmx;        /* AUTO's ITMX for loc_epss (default 8) */
   whirl_linsol_kind linsol; /* DENSE, or SPARSE when the system has a pattern */
   int structured;      /* 1: factor the bordered Newton matrix with the
