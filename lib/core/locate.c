@@ -256,8 +256,8 @@ static int locate_auto(whirl_cont *c, int ev, size_t k, const cont_state *b,
   if (found) c->its = its_step; /* b itself: its step's Newton count */
   double *prev = found ? NULL : malloc(3 * N * sizeof *prev);
   if (!found && !prev) return 1;
-  double *dir = prev + N, *dir0 = dir + N;
-  if (!found) memcpy(dir0, c->dir, N * sizeof *dir0);
+  double *dir = prev ? prev + N : NULL, *dir0 = prev ? prev + 2 * N : NULL;
+  if (prev) memcpy(dir0, c->dir, N * sizeof *dir0);
   for (int it = 0; !found && it <= c->opt.loc_itmx; ++it) {
     for (size_t i = 0; i < N; ++i) dir[i] = (out->X[i] - (it ? prev[i] : a->X[i])) / dsold;
     const double nd = sqrt(cont_dot(c, dir, dir));
