@@ -33,6 +33,7 @@ n=0 fail=0
 ok() { n=$((n + 1)); echo "ok $n - $*"; }
 nok() { n=$((n + 1)); echo "not ok $n - $*"; fail=1; }
 check() { if [ "$1" = 0 ]; then shift; ok "$@"; else shift; nok "$@"; fi; }
+. "$top_srcdir/test/regress/fmodel.sh" # fmodel: a one-line model's equations file
 
 mkdir "$tmp/bru"
 cat > "$tmp/bru/bru.f90" <<'F'
@@ -239,21 +240,7 @@ check $? "DS past DSMAX: the first two steps at DS, then DSMAX, as AUTO's: PT 2,
 # 2026-12-07 (its ITNW = 8 grew the step x1.1 after three iterations, and
 # it adapted the step after the switch and after special points)
 mkdir "$tmp/tc"
-cat > "$tmp/tc/tc.f90" <<'F'
-      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
-      IMPLICIT NONE
-      INTEGER NDIM, IJAC, ICP(*)
-      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
-      F(1) = PAR(1) * U(1) - U(1)**2 + U(1)**3 / 3
-      END SUBROUTINE FUNC
-      SUBROUTINE STPNT(NDIM,U,PAR,T)
-      IMPLICIT NONE
-      INTEGER NDIM
-      DOUBLE PRECISION U(NDIM), PAR(*), T
-      PAR(1) = -0.5
-      U(1) = 0
-      END SUBROUTINE STPNT
-F
+fmodel "$tmp/tc/tc.f90" 'F(1) = PAR(1) * U(1) - U(1)**2 + U(1)**3 / 3' -- 'PAR(1) = -0.5' 'U(1) = 0'
 cat > "$tmp/tc/c.tc" <<'C'
 NDIM = 1, IPS = 1, IRS = 0, ICP = [1], MXBF = -1
 NMX = 60, NPR = 0
@@ -276,21 +263,7 @@ check $? "tc.whirl: the keys the constants leave out at AUTO's defaults (ITNW 5,
 # at 0.22311746 (whirl auto, LOCATE = converged: 0.45000373, 0.22411330);
 # with LOCATE = auto whirl's are AUTO's, its UZ still reported at 0.7
 mkdir "$tmp/fl"
-cat > "$tmp/fl/fl.f90" <<'F'
-      SUBROUTINE FUNC(NDIM,U,ICP,PAR,IJAC,F,DFDU,DFDP)
-      IMPLICIT NONE
-      INTEGER NDIM, IJAC, ICP(*)
-      DOUBLE PRECISION U(NDIM), PAR(*), F(NDIM), DFDU(NDIM,NDIM), DFDP(*)
-      F(1) = PAR(1) - U(1)**2
-      END SUBROUTINE FUNC
-      SUBROUTINE STPNT(NDIM,U,PAR,T)
-      IMPLICIT NONE
-      INTEGER NDIM
-      DOUBLE PRECISION U(NDIM), PAR(*), T
-      PAR(1) = 4
-      U(1) = -2
-      END SUBROUTINE STPNT
-F
+fmodel "$tmp/fl/fl.f90" 'F(1) = PAR(1) - U(1)**2' -- 'PAR(1) = 4' 'U(1) = -2'
 cat > "$tmp/fl/c.fl" <<'C'
 NDIM = 1, IPS = 1, IRS = 0, ICP = [1], ILP = 0, ISP = 0
 NMX = 14, NPR = 0, EPSL = 1e-10, EPSU = 1e-10, EPSS = 0.05, ITNW = 8
@@ -307,15 +280,17 @@ echo "$got" | awk -F'; ' '{ split($1, a, " "); split($2, b, " "); split($3, c, "
   exit !(NF == 3 && a[1] == 12 && a[2] == "UZ" && a[3] == 0.7 && b[1] == 13 && c[1] == 14 &&
          (b[3] - 0.44884369123) ^ 2 < 1e-14 && (c[3] - 0.22311745681) ^ 2 < 1e-14) }'
 check $(( $? + rc )) "LOCATE = auto: the branch goes on from AUTO's point (AUTO-07p: PT 13 at 0.44884369, 14 at 0.22311746), the UZ reported at 0.7 (exit $rc): $got"
-for kv in "LOCATE = nearby:LOCATE: 'nearby' is neither converged nor auto" \
-          "ITMX = -1:ITMX = -1: must be in \[0, 1000\]"; do
-  key=${kv%%:*} msg=${kv#*:}
-  sed -e "s/^LOCATE = .*\$/$key/" -e 's|^OUT .*$|OUT = bad.out|' "$tmp/fl.out/fl.whirl" > "$tmp/fl.out/bad.whirl"
-  (cd "$tmp/fl.out" && "$WHIRL" run bad.whirl --quiet --no-plot > bad.log 2>&1)
+# a run file DIR/RUN with KEY's line made "KEY = VALUE" ($3): exit 2, the
+# message $4 at the file and line, nothing written
+bad_value() {
+  sed -e "s/^${3%% *} *= .*\$/$3/" -e 's|^OUT .*$|OUT = bad.out|' "$1/$2" > "$1/bad.whirl"
+  (cd "$1" && "$WHIRL" run bad.whirl --quiet --no-plot > bad.log 2>&1)
   rc=$?
-  [ $rc = 2 ] && grep -q "bad.whirl:[0-9]*: $msg" "$tmp/fl.out/bad.log" && [ ! -e "$tmp/fl.out/bad.out" ]
-  check $? "$key: exit 2 ($rc), the file and line, nothing written: $(head -1 "$tmp/fl.out/bad.log")"
-done
+  [ $rc = 2 ] && grep -q "bad.whirl:[0-9]*: $4" "$1/bad.log" && [ ! -e "$1/bad.out" ]
+  check $? "$3: exit 2 ($rc), the file and line, nothing written: $(head -1 "$1/bad.log")"
+}
+bad_value "$tmp/fl.out" fl.whirl "LOCATE = nearby" "LOCATE: 'nearby' is neither converged nor auto"
+bad_value "$tmp/fl.out" fl.whirl "ITMX = -1" "ITMX = -1: must be in \[0, 1000\]"
 
 # the keys whirl auto writes, and the curve's maximum against the nodes'
 w="$tmp/bru.out/bru.2@HB1.whirl"
@@ -336,12 +311,7 @@ for kv in "ORBIT_MAX = sideways:ORBIT_MAX: 'sideways' is neither curve nor nodes
           "DIFFERENCES = forward:DIFFERENCES: 'forward' is neither central nor auto" \
           "UDOT = sideways:UDOT: 'sideways' is neither derivative nor direction" \
           "TANGENT = exact:TANGENT: 'exact' is neither refined nor iterate"; do
-  key=${kv%%:*} msg=${kv#*:}
-  sed -e "s/^${key%% *} = .*\$/$key/" -e 's|^OUT .*$|OUT = bad.out|' "$w" > "$tmp/bru.out/bad.whirl"
-  (cd "$tmp/bru.out" && "$WHIRL" run bad.whirl --quiet --no-plot > bad.log 2>&1)
-  rc=$?
-  [ $rc = 2 ] && grep -q "bad.whirl:[0-9]*: $msg" "$tmp/bru.out/bad.log" && [ ! -e "$tmp/bru.out/bad.out" ]
-  check $? "$key: exit 2 ($rc), the file and line, nothing written: $(head -1 "$tmp/bru.out/bad.log")"
+  bad_value "$tmp/bru.out" bru.2@HB1.whirl "${kv%%:*}" "${kv#*:}"
 done
 echo "1..$n"
 exit $fail
