@@ -776,6 +776,9 @@ void whirl_colloc_pd_operator(const whirl_colloc *c, whirl_fold_operator *op,
   op->ev = ev;
   op->point_type = WHIRL_PT_PD;
   op->name = "period-doubling curve";
+  op->nstate = n;
+  op->ntst = c->ntst;
+  op->ncol = c->ncol;
 }
 
 const double *whirl_colloc_mesh(const whirl_colloc *c) {

@@ -2,45 +2,50 @@
  * periodic orbits by complex minimal augmentation (Doedel, Govaerts &
  * Kuznetsov, SIAM J. Numer. Anal. 41 (2003) 401, §5).  See whirl/trloc.h.
  *
- * The complex bordered matrix M = [A(θ) b; c^H 0] of order m = na + 1 is
- * factored as the real matrix R(M) = [[Re M, −Im M]; [Im M, Re M]] of
- * order 2m (R(M)^T = R(M^H): the adjoint solve is the transposed one), on
- * a pattern built once from the base's: per column the rows of A's block,
- * the operator's entries and the border rows.
+ * A(θ) is eliminated by the orbit's structure (twist_elim.h: each
+ * interval's interior, then the mesh nodes, row pivoting as AUTO-07p's
+ * condensation), all in real arithmetic but for its last n × n block
+ * S(θ), whose bordered matrix K = [S b; c^H 0] gives g, v(0) and the
+ * adjoint's w0; v and w on the whole mesh follow by back substitution
+ * and the transposed row operations.
  * SPDX-License-Identifier: BSD-3-Clause */
+#include <complex.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include <whirl/linsol.h>
 #include <whirl/trloc.h>
 
+#include "twist_elim.h"
 #include "util/errmsg_impl.h"
 
-/* What an entry of R(M) holds: a base Jacobian value (idx into Jx), the
- * real or imaginary part of an operator entry E_k, or a border's part. */
-enum { S_J, S_ER, S_EI, S_EIN, S_BR, S_BI, S_BIN, S_CR, S_CI, S_CIN };
+/* Where a base Jacobian entry goes: an interval's block, the boundary
+ * rows' block in v(0) or in v(1), or nowhere (outside A's block). */
+enum { TO_NONE, TO_BLOCK, TO_B0, TO_BN };
 
 struct whirl_trloc {
   whirl_system base, sys;
-  size_t par, n, N, na, m, ne, nnz;
+  size_t par, n, N, na, ne, nnz;
   long par2;               /* −1: θ is the last unknown; else that
                               parameter, θ fixed at theta */
   double theta;
-  size_t *ei, *ej, *eord;
+  size_t *ei, *ej;
   double *es;              /* ev/2: E(θ) = (1 − e^{iθ}) es at (ei, ej) */
-  int *Mp, *Mi;            /* R(M)'s pattern, order 2m */
-  unsigned char *skind;    /* per entry: S_* */
-  long *sidx;              /* per entry: the Jx entry, E entry or row */
-  long *eon;               /* per S_J entry: the E entry on it, or -1 */
-  size_t mnz;
-  double *Mx;
-  whirl_linsol *ls;
-  double *b, *c;           /* borders: 2 na (re, then im) */
-  double *v, *w;           /* null vectors: 2 na */
+  size_t ns, ntst, ncol;   /* the orbit's states, intervals, points */
+  size_t rows;             /* its collocation rows: the boundary rows follow */
+  twist_elim *te;
+  unsigned char *to;       /* per base entry: TO_* */
+  size_t *at;              /* and its place there */
+  double *b0, *b0r, *b0i;  /* the boundary rows in v(0): base, and + E(θ) */
+  double *sr, *si;         /* S(θ) */
+  double complex *K, *KH;  /* the reduced bordered matrix and its adjoint */
+  double complex *kx;      /* (ns + 1) x 2: [v0; g], [w0; h] */
+  size_t *kp;
+  double *b, *c;           /* borders on the boundary block: 2 ns (re, im) */
+  double *v, *w;           /* null vectors of A(θ), A(θ)^H: 2 na */
   double g[2];
   double *Jx, *Jp, *Jm;    /* base values at x, x + h d, x − h d */
-  double *xs, *pf, *ps, *rhs, *fp, *work;
+  double *xs, *pf, *ps, *fp, *work;
   double *Zc, *pc;         /* the point of the last factorisation */
   int cached;
   int *Sp, *Si;            /* the torus system's pattern, N columns */
@@ -60,141 +65,94 @@ static double angle(const whirl_trloc *t, const double *Z) {
   return t->par2 >= 0 ? t->theta : Z[t->n + 1];
 }
 
-/* ---------------------------------------------------------- R(M) pattern */
+/* ------------------------------------------------------------ structure */
 
-/* Rows of column j of the base pattern that lie in A's block, sorted. */
-static size_t a_rows(const whirl_trloc *t, size_t j, int *out) {
-  size_t k = 0;
-  for (int q = t->base.Jp[j]; q < t->base.Jp[j + 1]; ++q)
-    if ((size_t)t->base.Ji[q] < t->na) out[k++] = t->base.Ji[q];
-  return k;
-}
-
-static void put(whirl_trloc *t, size_t *q, int row, int kind, long idx) {
-  if (t->Mi) {
-    t->Mi[*q] = row;
-    t->skind[*q] = (unsigned char)kind;
-    t->sidx[*q] = idx;
-  }
-  ++*q;
-}
-
-/* The base entry (i, j) of A's block: its index in Jx, or -1. */
-static long base_entry(const whirl_trloc *t, size_t i, size_t j) {
-  for (int q = t->base.Jp[j]; q < t->base.Jp[j + 1]; ++q)
-    if ((size_t)t->base.Ji[q] == i) return q;
-  return -1;
-}
-
-/* A diagonal block's column j at row offset off: A's rows[k] and the E
- * entries of column j that are no base entry, merged in row order. */
-static void diagonal_block(whirl_trloc *t, size_t *q, size_t j, const int *rows, size_t k,
-                           size_t off) {
-  size_t ne = 0, a = 0, b = 0;
-  for (size_t e = 0; e < t->ne; ++e) /* t->eord: scratch of ne entries */
-    if (t->ej[e] == j && base_entry(t, t->ei[e], j) < 0) {
-      size_t r = ne++;
-      while (r > 0 && t->ei[t->eord[r - 1]] > t->ei[e]) t->eord[r] = t->eord[r - 1], --r;
-      t->eord[r] = e;
-    }
-  while (a < k || b < ne) {
-    if (b < ne && (a >= k || t->ei[t->eord[b]] < (size_t)rows[a])) {
-      put(t, q, (int)(off + t->ei[t->eord[b]]), S_ER, (long)t->eord[b]);
-      ++b;
-    } else {
-      put(t, q, (int)(off + (size_t)rows[a]), S_J, base_entry(t, (size_t)rows[a], j));
-      ++a;
-    }
-  }
-}
-
-/* One pass over R(M)'s columns: counts (Mi NULL) or fills.  Column j < na
- * (Re part of v_j): A's rows and the E rows with ej = j (merged), row na
- * (c^H), the E rows + m (Im E), row na + m; column na: rows < na (Re b),
- * rows m.. (Im b); column m + j: the E rows (−Im E), row na, A's rows + m,
- * row na + m; column m + na: rows < na (−Im b), rows m.. (Re b).  An E
- * entry on a base entry is not listed again: the base entry holds the sum
- * (eon, build_pattern). */
-static size_t pattern_pass(whirl_trloc *t, int *rows) {
-  const size_t na = t->na, m = t->m;
-  size_t q = 0;
-  for (size_t half = 0; half < 2; ++half)
-    for (size_t j = 0; j < m; ++j) {
-      const size_t col = half * m + j;
-      if (t->Mp) t->Mp[col] = (int)q;
-      if (j == na) { /* the border column b */
-        for (size_t i = 0; i < na; ++i) put(t, &q, (int)i, half ? S_BIN : S_BR, (long)i);
-        for (size_t i = 0; i < na; ++i) put(t, &q, (int)(m + i), half ? S_BR : S_BI, (long)i);
+/* Each base entry of A's block sorted into the interval blocks and the
+ * boundary rows' two blocks.  0, or -1 where the pattern is not a
+ * collocation orbit's (an entry outside its interval, a boundary row
+ * entry at another node than u(0) and u(1)). */
+static int sort_entries(whirl_trloc *t) {
+  const size_t n = t->ns, m = t->ncol, R = n * m, bs = R * n * (m + 1), last = t->ntst * m;
+  for (size_t j = 0; j < t->n; ++j)
+    for (int q = t->base.Jp[j]; q < t->base.Jp[j + 1]; ++q) {
+      const size_t i = (size_t)t->base.Ji[q], nd = j / n, s = j % n;
+      t->to[q] = TO_NONE;
+      if (i >= t->na || j >= t->na) continue;
+      if (i >= t->rows) {
+        const size_t rb = i - t->rows;
+        if (nd != 0 && nd != last) return -1;
+        t->to[q] = nd == 0 ? TO_B0 : TO_BN;
+        t->at[q] = rb + n * s;
         continue;
       }
-      const size_t k = a_rows(t, j, rows);
-      if (half) /* upper right: −Im E */
-        for (size_t e = 0; e < t->ne; ++e)
-          if (t->ej[e] == j) put(t, &q, (int)t->ei[e], S_EIN, (long)e);
-      if (!half) diagonal_block(t, &q, j, rows, k, 0); /* upper left */
-      put(t, &q, (int)na, half ? S_CI : S_CR, (long)j); /* c^H: Re c, +Im c */
-      if (!half) /* lower left: Im E */
-        for (size_t e = 0; e < t->ne; ++e)
-          if (t->ej[e] == j) put(t, &q, (int)(m + t->ei[e]), S_EI, (long)e);
-      if (half) diagonal_block(t, &q, j, rows, k, m); /* lower right */
-      put(t, &q, (int)(na + m), half ? S_CR : S_CIN, (long)j);
-    }
-  if (t->Mp) t->Mp[2 * m] = (int)q;
-  return q;
-}
-
-static int build_pattern(whirl_trloc *t) {
-  int *rows = malloc((t->na + 1) * sizeof *rows);
-  if (!rows) return -1;
-  t->mnz = pattern_pass(t, rows);
-  t->Mp = malloc((2 * t->m + 1) * sizeof *t->Mp);
-  t->Mi = malloc(t->mnz * sizeof *t->Mi);
-  t->skind = malloc(t->mnz);
-  t->sidx = malloc(t->mnz * sizeof *t->sidx);
-  t->Mx = malloc(t->mnz * sizeof *t->Mx);
-  t->eon = malloc(t->mnz * sizeof *t->eon);
-  if (!t->Mp || !t->Mi || !t->skind || !t->sidx || !t->Mx || !t->eon) {
-    free(rows);
-    return -1;
-  }
-  pattern_pass(t, rows);
-  free(rows);
-  /* an E entry on a base entry adds there: found once, not per factor */
-  for (size_t col = 0; col < 2 * t->m; ++col)
-    for (int q = t->Mp[col]; q < t->Mp[col + 1]; ++q) {
-      t->eon[q] = -1;
-      if (t->skind[q] != S_J) continue;
-      const size_t i = (size_t)t->Mi[q] % t->m, j = col % t->m;
-      for (size_t e = 0; e < t->ne; ++e)
-        if (t->ei[e] == i && t->ej[e] == j) t->eon[q] = (long)e;
+      const size_t it = i / R, lr = i % R;
+      if (nd < it * m || nd > it * m + m) return -1;
+      t->to[q] = TO_BLOCK;
+      t->at[q] = it * bs + lr + R * ((nd - it * m) * n + s);
     }
   return 0;
 }
 
-/* R(M)'s values at the base values Jx, angle θ and the borders.  An E
- * entry on a base entry adds its real part there. */
-static void fill_m(whirl_trloc *t, double theta) {
-  const double er = 1.0 - cos(theta), ei = -sin(theta); /* 1 − e^{iθ} */
-  const size_t na = t->na;
-  for (size_t q = 0; q < t->mnz; ++q) {
-    const long k = t->sidx[q];
-    double val = 0.0;
-    switch (t->skind[q]) {
-    case S_J:
-      val = t->Jx[k] + (t->eon[q] >= 0 ? er * t->es[t->eon[q]] : 0.0);
-      break;
-    case S_ER: val = er * t->es[k]; break;
-    case S_EI: val = ei * t->es[k]; break;
-    case S_EIN: val = -ei * t->es[k]; break;
-    case S_BR: val = t->b[k]; break;
-    case S_BI: val = t->b[na + k]; break;
-    case S_BIN: val = -t->b[na + k]; break;
-    case S_CR: val = t->c[k]; break;
-    case S_CI: val = t->c[na + k]; break;   /* row na, column m + j: +Im c */
-    case S_CIN: val = -t->c[na + k]; break; /* row na + m, column j */
+/* The operator's entries: E in the boundary rows at u(0), one per state. */
+static int operator_fits(const whirl_fold_operator *op) {
+  const size_t n = op->nstate;
+  if (!n || !op->ntst || !op->ncol || op->na != n * (op->ntst * op->ncol + 1)) return 0;
+  for (size_t e = 0; e < op->ne; ++e)
+    if (op->ei[e] < n * op->ntst * op->ncol || op->ej[e] >= n) return 0;
+  return 1;
+}
+
+/* ----------------------------------------------------- the reduced solve */
+
+/* x = K^{-1} e_last for the complex (m × m) K, column-major, by Gaussian
+ * elimination with partial pivoting in place. */
+static int small_solve(double complex *A, size_t m, size_t *piv, double complex *x) {
+  for (size_t k = 0; k < m; ++k) {
+    size_t pr = k;
+    for (size_t r = k + 1; r < m; ++r)
+      if (cabs(A[r + m * k]) > cabs(A[pr + m * k])) pr = r;
+    piv[k] = pr;
+    if (!(cabs(A[pr + m * k]) > 0.0)) return WHIRL_ESINGULAR;
+    if (pr != k)
+      for (size_t j = 0; j < m; ++j) {
+        const double complex s = A[k + m * j];
+        A[k + m * j] = A[pr + m * j], A[pr + m * j] = s;
+      }
+    for (size_t r = k + 1; r < m; ++r) {
+      const double complex l = A[r + m * k] / A[k + m * k];
+      A[r + m * k] = l;
+      for (size_t j = k + 1; j < m; ++j) A[r + m * j] -= l * A[k + m * j];
     }
-    t->Mx[q] = val;
   }
+  /* whole rows were swapped, multipliers too: P first, then L and U */
+  for (size_t i = 0; i < m; ++i) x[i] = i + 1 == m ? 1.0 : 0.0;
+  for (size_t k = 0; k < m; ++k) {
+    const double complex s = x[k];
+    x[k] = x[piv[k]], x[piv[k]] = s;
+  }
+  for (size_t k = 0; k < m; ++k)
+    for (size_t r = k + 1; r < m; ++r) x[r] -= A[r + m * k] * x[k];
+  for (size_t k = m; k-- > 0;) {
+    for (size_t j = k + 1; j < m; ++j) x[k] -= A[k + m * j] * x[j];
+    x[k] /= A[k + m * k];
+  }
+  for (size_t i = 0; i < m; ++i)
+    if (!isfinite(creal(x[i])) || !isfinite(cimag(x[i]))) return WHIRL_ESINGULAR;
+  return 0;
+}
+
+/* K = [S(θ) b; c^H 0] and KH = K^H. */
+static void reduced_matrix(whirl_trloc *t) {
+  const size_t n = t->ns, m = n + 1;
+  for (size_t j = 0; j < n; ++j)
+    for (size_t i = 0; i < n; ++i) t->K[i + m * j] = t->sr[i + n * j] + I * t->si[i + n * j];
+  for (size_t i = 0; i < n; ++i) {
+    t->K[i + m * n] = t->b[i] + I * t->b[n + i];
+    t->K[n + m * i] = t->c[i] - I * t->c[n + i]; /* conj(c) */
+  }
+  t->K[n + m * n] = 0.0;
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = 0; j < m; ++j) t->KH[j + m * i] = conj(t->K[i + m * j]);
 }
 
 /* -------------------------------------------------------------- solves */
@@ -206,10 +164,38 @@ static int base_jx(whirl_trloc *t, const double *x, const double *p, double *Jx)
   return rc;
 }
 
-/* At Z: the base Jacobian, R(M) factored, v and g from M [v; g] = [0; 1],
- * w from M^H [w; h] = [0; 1].  Cached for the same Z and p. */
+/* The base's values into the interval blocks and the boundary rows'
+ * blocks; b0r, b0i: the block in v(0) with E(θ). */
+static void fill_blocks(whirl_trloc *t, double theta) {
+  const size_t n = t->ns, m = t->ncol;
+  memset(twist_block(t->te, 0), 0, t->ntst * n * m * n * (m + 1) * sizeof(double));
+  double *bn = twist_bn(t->te), *blocks = twist_block(t->te, 0);
+  memset(bn, 0, n * n * sizeof *bn);
+  memset(t->b0, 0, n * n * sizeof *t->b0);
+  for (size_t q = 0; q < t->nnz; ++q) switch (t->to[q]) {
+    case TO_BLOCK: blocks[t->at[q]] = t->Jx[q]; break;
+    case TO_B0: t->b0[t->at[q]] = t->Jx[q]; break;
+    case TO_BN: bn[t->at[q]] = t->Jx[q]; break;
+    default: break;
+    }
+  const double zr = 1.0 - cos(theta), zi = -sin(theta); /* 1 − e^{iθ} */
+  memcpy(t->b0r, t->b0, n * n * sizeof *t->b0r);
+  memset(t->b0i, 0, n * n * sizeof *t->b0i);
+  for (size_t e = 0; e < t->ne; ++e) {
+    const size_t k = (t->ei[e] - t->rows) + n * t->ej[e];
+    t->b0r[k] += zr * t->es[e];
+    t->b0i[k] += zi * t->es[e];
+  }
+}
+
+/* At Z: the base Jacobian, A(θ) eliminated to S(θ), v0 and g from
+ * K [v0; g] = [0; 1], w0 from K^H [w0; h] = [0; 1], and the null vectors
+ * v, w of A(θ) and A(θ)^H on the whole mesh.  g vanishes exactly where
+ * A(θ) is singular, and g's derivative is −w^H A_z v with these v, w
+ * there (Q A(θ) = [U11 U12; 0 S(θ)], Q real: w = Q^T (0; w0)).  Cached
+ * for the same Z and p. */
 static int null_solve(whirl_trloc *t, const double *Z, const double *p) {
-  const size_t na = t->na, m = t->m;
+  const size_t n = t->ns, m = n + 1, na = t->na;
   if (t->cached && !memcmp(t->Zc, Z, t->N * sizeof *Z) &&
       !memcmp(t->pc, p, t->base.npar * sizeof *p))
     return 0;
@@ -217,27 +203,40 @@ static int null_solve(whirl_trloc *t, const double *Z, const double *p) {
   whirl_trloc_params(t, Z, p, t->pf);
   int rc = base_jx(t, Z, t->pf, t->Jx);
   if (rc) return rc;
-  fill_m(t, angle(t, Z));
-  rc = whirl_linsol_factor(t->ls, t->Mx);
-  if (rc && rc != WHIRL_ESINGULAR) return rc;
-  if (rc == WHIRL_ESINGULAR) return WHIRL_ESINGULAR;
-  for (int adj = 0; adj < 2; ++adj) {
-    memset(t->rhs, 0, 2 * m * sizeof *t->rhs);
-    t->rhs[na] = 1.0;
-    if ((rc = whirl_linsol_solve(t->ls, t->rhs, 1, adj))) return rc;
-    double *u = adj ? t->w : t->v;
-    for (size_t i = 0; i < na; ++i) {
-      u[i] = t->rhs[i];
-      u[na + i] = t->rhs[m + i];
-    }
-    if (!adj) {
-      t->g[0] = t->rhs[na];
-      t->g[1] = t->rhs[m + na];
-    }
-  }
+  fill_blocks(t, angle(t, Z));
+  if (twist_factor(t->te)) return WHIRL_ESINGULAR;
+  twist_reduce(t->te, t->b0r, t->b0i, t->sr, t->si);
+  reduced_matrix(t);
+  double complex *v0 = t->kx, *w0 = t->kx + m;
+  if ((rc = small_solve(t->K, m, t->kp, v0)) || (rc = small_solve(t->KH, m, t->kp, w0)))
+    return rc;
+  t->g[0] = creal(v0[n]);
+  t->g[1] = cimag(v0[n]);
+  double *re = t->work, *im = t->work + n;
+  for (size_t i = 0; i < n; ++i) re[i] = creal(v0[i]), im[i] = cimag(v0[i]);
+  twist_right(t->te, re, im, t->v, t->v + na);
+  for (size_t i = 0; i < n; ++i) re[i] = creal(w0[i]), im[i] = cimag(w0[i]);
+  twist_left(t->te, re, im, t->w, t->w + na);
   memcpy(t->Zc, Z, t->N * sizeof *Z);
   memcpy(t->pc, p, t->base.npar * sizeof *p);
   t->cached = 1;
+  return 0;
+}
+
+/* New borders c = v0, b = w0 (normalised), the reduced null vectors of
+ * the last null_solve. */
+static int new_borders(whirl_trloc *t) {
+  const size_t n = t->ns, m = n + 1;
+  const double complex *v0 = t->kx, *w0 = t->kx + m;
+  double nv = 0.0, nw = 0.0;
+  for (size_t i = 0; i < n; ++i) nv += creal(v0[i] * conj(v0[i])), nw += creal(w0[i] * conj(w0[i]));
+  nv = sqrt(nv), nw = sqrt(nw);
+  if (!(nv > 0) || !(nw > 0) || !isfinite(nv) || !isfinite(nw)) return WHIRL_ESINGULAR;
+  for (size_t i = 0; i < n; ++i) {
+    t->c[i] = creal(v0[i]) / nv, t->c[n + i] = cimag(v0[i]) / nv;
+    t->b[i] = creal(w0[i]) / nw, t->b[n + i] = cimag(w0[i]) / nw;
+  }
+  t->cached = 0;
   return 0;
 }
 
@@ -254,9 +253,14 @@ static int tr_F(const double *Z, const double *p, double *out, void *data) {
   return 0;
 }
 
-static double hstep(const double *x, size_t n, const double *d, size_t nd) {
+/* The difference step along d (nd node values): relative to the node
+ * values' own scale, not to the period's or a parameter's after them (an
+ * orbit of period 400 would shift its nodes by 4e-4 and its g_x by the
+ * third derivative's error, and Newton on the locus would converge
+ * linearly: AUTO's tor.6). */
+static double hstep(const double *x, const double *d, size_t nd) {
   double xm = 0.0, dm = 0.0;
-  for (size_t i = 0; i < n; ++i) xm = fmax(xm, fabs(x[i]));
+  for (size_t i = 0; i < nd; ++i) xm = fmax(xm, fabs(x[i]));
   for (size_t i = 0; i < nd; ++i) dm = fmax(dm, fabs(d[i]));
   return dm > 0 ? 1e-6 * (1.0 + xm) / dm : 1e-6;
 }
@@ -284,7 +288,7 @@ static int g_x(whirl_trloc *t, const double *Z, double *gr, double *gi) {
   memset(gi, 0, n * sizeof *gi);
   for (int part = 0; part < 2; ++part) {
     const double *d = t->v + part * na; /* Re v, Im v */
-    const double h = hstep(Z, n, d, na);
+    const double h = hstep(Z, d, na);
     for (int sgn = 0; sgn < 2; ++sgn) {
       memcpy(t->xs, Z, n * sizeof *t->xs);
       for (size_t i = 0; i < na; ++i) t->xs[i] += (sgn ? -h : h) * d[i];
@@ -397,23 +401,37 @@ static int tr_Fp(const double *Z, const double *p, size_t k, double *out, void *
   return g_param(t, k, out + t->n, out + t->n + 1);
 }
 
-/* New borders from the null vectors at every accepted point (b = w, c = v,
- * normalised), so M stays well conditioned along the locus; then the
- * base's own (collocation's phase reference). */
+/* New borders from the null vectors at every accepted point, so K stays
+ * well conditioned along the locus; then the base's own (collocation's
+ * phase reference). */
 static int tr_accept(const double *Z, const double *p, void *data) {
   whirl_trloc *t = data;
-  const size_t na = t->na;
   int rc = null_solve(t, Z, p);
   if (rc) return rc < 0 ? rc : WHIRL_ESINGULAR;
-  double nv = 0.0, nw = 0.0;
-  for (size_t i = 0; i < 2 * na; ++i) nv += t->v[i] * t->v[i], nw += t->w[i] * t->w[i];
-  nv = sqrt(nv), nw = sqrt(nw);
-  if (!(nv > 0) || !(nw > 0)) return WHIRL_ESINGULAR;
-  for (size_t i = 0; i < 2 * na; ++i) t->c[i] = t->v[i] / nv, t->b[i] = t->w[i] / nw;
-  t->cached = 0;
+  if ((rc = new_borders(t))) return rc;
   whirl_trloc_params(t, Z, p, t->pf);
   if (t->base.accept) return t->base.accept(Z, t->pf, t->base.data);
   return 0;
+}
+
+/* A new mesh of the base (AUTO's IAD on a locus of orbits): its node
+ * values mapped by the base, the locus's own unknowns (p[par], θ or
+ * p[par2]) as they are.  The borders live on the boundary block, v(0)
+ * and the periodicity rows, which a mesh does not move. */
+static int tr_remap(double *const *v, size_t nv, const double *p, void *data) {
+  whirl_trloc *t = data;
+  const int rc = t->base.remap(v, nv, p, t->base.data);
+  if (rc != 0) t->cached = 0;
+  return rc;
+}
+
+/* The base's norm weights on its unknowns (the quadrature of its node
+ * values: AUTO's integral norm), 1 on the locus's own. */
+static int tr_norm_weights(double *q, void *data) {
+  whirl_trloc *t = data;
+  const int rc = t->base.norm_weights(q, t->base.data);
+  q[t->n] = q[t->n + 1] = 1.0;
+  return rc;
 }
 
 /* ---------------------------------------------------------------- public */
@@ -454,12 +472,12 @@ whirl_trloc *whirl_trloc_alloc(const whirl_system *base, const whirl_fold_operat
                  "(a second one other than the first, or -1)");
     return NULL;
   }
-  for (size_t e = 0; e < op->ne; ++e)
-    if (op->ei[e] >= op->na || op->ej[e] >= op->na) {
-      WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "whirl_trloc_alloc: operator entry %zu "
-                   "outside its %zu x %zu block", e, op->na, op->na);
-      return NULL;
-    }
+  if (!operator_fits(op)) {
+    WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "whirl_trloc_alloc: the operator is no "
+                 "collocation orbit's (nstate, ntst, ncol and its entries in the boundary "
+                 "rows at u(0): whirl_colloc_pd_operator)");
+    return NULL;
+  }
   whirl_trloc *t = calloc(1, sizeof *t);
   if (!t) goto nomem;
   t->base = *base;
@@ -468,21 +486,39 @@ whirl_trloc *whirl_trloc_alloc(const whirl_system *base, const whirl_fold_operat
   t->n = base->n;
   t->N = base->n + 2;
   t->na = op->na;
-  t->m = op->na + 1;
   t->ne = op->ne;
   t->nnz = base->nnz;
-  const size_t n = t->n, na = t->na;
+  t->ns = op->nstate, t->ntst = op->ntst, t->ncol = op->ncol;
+  t->rows = op->nstate * op->ntst * op->ncol;
+  const size_t n = t->n, na = t->na, ns = t->ns, m = ns + 1;
   t->ei = malloc(t->ne * sizeof *t->ei);
   t->ej = malloc(t->ne * sizeof *t->ej);
   t->es = malloc(t->ne * sizeof *t->es);
-  t->eord = malloc(t->ne * sizeof *t->eord);
-  if (!t->ei || !t->ej || !t->es || !t->eord) goto nomem;
+  t->to = malloc(t->nnz ? t->nnz : 1);
+  t->at = malloc((t->nnz ? t->nnz : 1) * sizeof *t->at);
+  if (!t->ei || !t->ej || !t->es || !t->to || !t->at) goto nomem;
   for (size_t e = 0; e < t->ne; ++e)
     t->ei[e] = op->ei[e], t->ej[e] = op->ej[e], t->es[e] = 0.5 * op->ev[e];
-  if (build_pattern(t) || sys_pattern(t)) goto nomem;
-  t->ls = whirl_linsol_alloc_sparse(2 * t->m, t->Mp, t->Mi);
-  t->b = calloc(2 * na, sizeof *t->b);
-  t->c = calloc(2 * na, sizeof *t->c);
+  if (sort_entries(t)) {
+    WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "whirl_trloc_alloc: the base's Jacobian "
+                 "pattern is no collocation orbit's of %zu states on %zu intervals of %zu "
+                 "points", ns, t->ntst, t->ncol);
+    whirl_trloc_free(t);
+    return NULL;
+  }
+  if (sys_pattern(t)) goto nomem;
+  t->te = twist_alloc(ns, t->ntst, t->ncol);
+  t->b0 = malloc(ns * ns * sizeof *t->b0);
+  t->b0r = malloc(ns * ns * sizeof *t->b0r);
+  t->b0i = malloc(ns * ns * sizeof *t->b0i);
+  t->sr = malloc(ns * ns * sizeof *t->sr);
+  t->si = malloc(ns * ns * sizeof *t->si);
+  t->K = malloc(m * m * sizeof *t->K);
+  t->KH = malloc(m * m * sizeof *t->KH);
+  t->kx = malloc(2 * m * sizeof *t->kx);
+  t->kp = malloc(m * sizeof *t->kp);
+  t->b = calloc(2 * ns, sizeof *t->b);
+  t->c = calloc(2 * ns, sizeof *t->c);
   t->v = calloc(2 * na, sizeof *t->v);
   t->w = calloc(2 * na, sizeof *t->w);
   t->Jx = calloc(t->nnz ? t->nnz : 1, sizeof *t->Jx);
@@ -492,12 +528,12 @@ whirl_trloc *whirl_trloc_alloc(const whirl_system *base, const whirl_fold_operat
   t->pf = calloc(base->npar, sizeof *t->pf);
   t->ps = calloc(base->npar, sizeof *t->ps);
   t->pc = calloc(base->npar, sizeof *t->pc);
-  t->rhs = calloc(2 * t->m, sizeof *t->rhs);
   t->fp = calloc(n, sizeof *t->fp);
   t->work = calloc(2 * n + 2, sizeof *t->work);
   t->Zc = calloc(t->N, sizeof *t->Zc);
-  if (!t->ls || !t->b || !t->c || !t->v || !t->w || !t->Jx || !t->Jp || !t->Jm || !t->xs ||
-      !t->pf || !t->ps || !t->pc || !t->rhs || !t->fp || !t->work || !t->Zc)
+  if (!t->te || !t->b0 || !t->b0r || !t->b0i || !t->sr || !t->si || !t->K || !t->KH ||
+      !t->kx || !t->kp || !t->b || !t->c || !t->v || !t->w || !t->Jx || !t->Jp || !t->Jm ||
+      !t->xs || !t->pf || !t->ps || !t->pc || !t->fp || !t->work || !t->Zc)
     goto nomem;
   t->b[0] = t->c[0] = 1.0;
   whirl_system *s = &t->sys;
@@ -512,6 +548,8 @@ whirl_trloc *whirl_trloc_alloc(const whirl_system *base, const whirl_fold_operat
   s->Fx_sparse = tr_Fx_sparse;
   s->Fp = tr_Fp;
   s->accept = tr_accept;
+  s->remap = base->remap ? tr_remap : NULL;
+  s->norm_weights = base->norm_weights ? tr_norm_weights : NULL;
   s->p_names = base->p_names;
   s->data = t;
   return t;
@@ -523,10 +561,10 @@ nomem:
 
 void whirl_trloc_free(whirl_trloc *t) {
   if (!t) return;
-  whirl_linsol_free(t->ls);
-  void *p[] = {t->ei, t->ej, t->eord, t->es, t->Mp, t->Mi, t->skind, t->sidx, t->eon, t->Mx, t->b, t->c,
-               t->v, t->w, t->Jx, t->Jp, t->Jm, t->xs, t->pf, t->ps, t->rhs, t->fp,
-               t->work, t->Zc, t->pc, t->Sp, t->Si};
+  twist_free(t->te);
+  void *p[] = {t->ei, t->ej, t->es, t->to, t->at, t->b0, t->b0r, t->b0i, t->sr, t->si,
+               t->K, t->KH, t->kx, t->kp, t->b, t->c, t->v, t->w, t->Jx, t->Jp, t->Jm,
+               t->xs, t->pf, t->ps, t->fp, t->work, t->Zc, t->pc, t->Sp, t->Si};
   for (size_t i = 0; i < sizeof p / sizeof *p; ++i) free(p[i]);
   free(t);
 }
@@ -543,20 +581,20 @@ int whirl_trloc_g(whirl_trloc *t, const double *Z, const double *p, double *g) {
   return WHIRL_OK;
 }
 
-/* Inverse iteration for the borders: with b = c fixed, M [v; g] = [0; 1]
- * gives v ∝ A^{-1} b, which three rounds turn into the null vector of a
- * nearly singular A(θ) (and the adjoint solve into w). */
+/* Inverse iteration for the borders: with b = c fixed, K [v0; g] = [0; 1]
+ * gives v0 ∝ S^{-1} b, which three rounds turn into the null vector of a
+ * nearly singular S(θ) (and the adjoint solve into w0). */
 int whirl_trloc_init(whirl_trloc *t, const double *x, const double *p, double theta,
                      double *Z) {
   if (!x || !p || !Z || !(theta > 0.0 && theta < 3.14159265358979323846 + 1e-12))
     return WHIRL_FAIL(t, WHIRL_EINVAL, "trloc_init: need x, p and an angle in (0, pi], "
                       "not %g", theta);
-  const size_t n = t->n, na = t->na;
+  const size_t n = t->n, nb = t->ns;
   memcpy(Z, x, n * sizeof *Z);
   Z[n] = p[t->par];
   t->theta = theta;
   Z[n + 1] = t->par2 >= 0 ? p[t->par2] : theta;
-  for (size_t i = 0; i < 2 * na; ++i) /* generic, no symmetry with v */
+  for (size_t i = 0; i < 2 * nb; ++i) /* generic, no symmetry with v */
     t->b[i] = t->c[i] = 1.0 + 0.5 * sin(1.0 + 2.7 * (double)i);
   for (int round = 0; round < 3; ++round) {
     t->cached = 0;
@@ -564,13 +602,9 @@ int whirl_trloc_init(whirl_trloc *t, const double *x, const double *p, double th
     if (rc)
       return WHIRL_FAIL(t, rc < 0 ? rc : WHIRL_ESINGULAR, "trloc_init: the bordered "
                         "operator at theta = %g is singular (%d)", theta, rc);
-    double nv = 0.0, nw = 0.0;
-    for (size_t i = 0; i < 2 * na; ++i) nv += t->v[i] * t->v[i], nw += t->w[i] * t->w[i];
-    nv = sqrt(nv), nw = sqrt(nw);
-    if (!(nv > 0) || !(nw > 0) || !isfinite(nv) || !isfinite(nw))
+    if (new_borders(t))
       return WHIRL_FAIL(t, WHIRL_ESINGULAR, "trloc_init: no null vector at theta = %g",
                         theta);
-    for (size_t i = 0; i < 2 * na; ++i) t->c[i] = t->v[i] / nv, t->b[i] = t->w[i] / nw;
   }
   t->cached = 0;
   return WHIRL_OK;

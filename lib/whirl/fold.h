@@ -93,6 +93,11 @@ typedef struct whirl_fold_operator {
   const double *ev;
   int point_type;            /* what the curve's points are (WHIRL_PT_PD) */
   const char *name;          /* the curve's name ("period-doubling curve") */
+  /* Optional (0: none): A's block is a collocation orbit's, nstate states
+   * at the NTST NCOL + 1 node-major nodes, the n NCOL collocation rows of
+   * each interval in turn, then the boundary rows (E's) in u(0) and u(1):
+   * the torus locus eliminates it interval by interval (whirl/trloc.h). */
+  size_t nstate, ntst, ncol;
 } whirl_fold_operator;
 
 typedef struct whirl_fold_options {

@@ -9,19 +9,24 @@
  * v(0) in place of periodicity: the leading na × na block of F_x (the node
  * values' rows and columns) whose entries (ei[k], ej[k]) — the −1 of v(0)
  * in the boundary rows — become −e^{iθ}.  A(θ) is singular exactly when
- * e^{iθ} is a Floquet multiplier of the orbit.  With complex borders b, c
- * the bordered matrix M = [A(θ) b; c^H 0] is regular at a simple pair, and
- *     M [v; g] = [0; 1],   M^H [w; h] = [0; 1]
- * define g ∈ ℂ, zero exactly there, and the null vectors v, w of A(θ) and
- * A(θ)^H.  The torus system is
+ * e^{iθ} is a Floquet multiplier of the orbit.  A(θ) is eliminated by the
+ * orbit's structure, interval by interval and mesh node by mesh node with
+ * row pivoting in real arithmetic (AUTO-07p's condensation of
+ * parameters), to an n × n complex block S(θ) on u(0), singular exactly
+ * where A(θ) is.  With complex n-vectors b, c the bordered matrix
+ * K = [S(θ) b; c^H 0] is regular at a simple pair, and
+ *     K [v0; g] = [0; 1],   K^H [w0; h] = [0; 1]
+ * define g ∈ ℂ, zero exactly there; v and w, the null vectors of A(θ) and
+ * A(θ)^H on the whole mesh, follow from v0 and w0 by back substitution and
+ * the transposed row operations.  The torus system is
  *     F(x, p) = 0,  Re g = 0,  Im g = 0
  * in the unknowns (x, p[par], θ), continued by the core in a further
  * parameter; its Jacobian rows are g_z = −w^H A_z v (four base Jacobians
- * at x ± h Re v, x ± h Im v) and g_θ = −w^H A_θ v.  M is factored in real
- * arithmetic, [[Re M, −Im M]; [Im M, Re M]], by UMFPACK on the base's
- * sparse pattern; the borders follow the null vectors at every accepted
- * point.  θ = π is a period doubling: the same operator as the
- * period-doubling locus (whirl_colloc_pd_operator) at e^{iπ} = −1.
+ * at x ± h Re v, x ± h Im v) and g_θ = −w^H A_θ v.  The borders follow
+ * the null vectors at every accepted point.  The locus adapts the base's
+ * mesh and measures steps by the base's norm weights.
+ * θ = π is a period doubling: the same operator as the period-doubling
+ * locus (whirl_colloc_pd_operator) at e^{iπ} = −1.
  * SPDX-License-Identifier: BSD-3-Clause */
 #ifndef WHIRL_TRLOC_H
 #define WHIRL_TRLOC_H
@@ -38,8 +43,9 @@ typedef struct whirl_trloc whirl_trloc;
 
 /* base (copied; its data stays borrowed) must have a sparse Jacobian
  * (pattern and Fx_sparse).  op: the period-doubling operator of the base
- * (whirl_colloc_pd_operator): na, and the entries whose constant ev[k]
- * turns −1 into +1 at θ = π; here they carry (1 − e^{iθ}) ev[k]/2.
+ * (whirl_colloc_pd_operator): na, its collocation structure (nstate,
+ * ntst, ncol), and the entries whose constant ev[k] turns −1 into +1 at
+ * θ = π; here they carry (1 − e^{iθ}) ev[k]/2.
  * par: the parameter freed as an unknown (the label's own).  par2 = −1:
  * the angle θ is the last unknown; else θ stays at its start value and
  * the parameter par2 is the last unknown (AUTO's TR locus "fixing the

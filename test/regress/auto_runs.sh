@@ -489,5 +489,19 @@ if [ -f "$bd/r7@6.whirl" ]; then
 else
   check 1 "abcb run 4 fw on the second family: no run file r7@6.whirl from the script"
 fi
+# tor by its script: run 6, the torus locus at a fixed angle (ICP = [1, 2,
+# 3, 11]), follows the orbits towards the homoclinic end, where AUTO's UZ
+# at PERIOD = 3000 is its PT 60.  The locus measures the period by THL (0)
+# and its node values by the integral, as AUTO's, and differences F_x on
+# the node values' scale: before, the period counted 1 in every step and
+# each step moved it by about 1 (NMX at PERIOD 102), and the differences'
+# step scaled with the period (at PERIOD 400 Newton converged linearly).
+# whirl's steps still shrink before 3000 (AUTO's norm has the eigenfunction
+# too, which moves where the orbit hardly does)
+(cd "$tmp" && "$WHIRL" auto "$auto/demos/tor" --script --quiet --out=tor.s > tor.s.log 2>&1)
+rc=$?
+T=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "period") c = i; next } c && $c > m { m = $c } END { printf "%.6g", m }' "$tmp/tor.s/runs/r6@1.out/branches.tsv" 2>/dev/null)
+awk -v t="${T:-0}" 'BEGIN { exit !(t > 1000) }'
+check $(( $? + rc )) "tor --script: run 6's torus locus follows the orbits past PERIOD 1000 towards AUTO's UZ at 3000 (exit $rc): largest PERIOD ${T:-none}"
 echo "1..$n"
 exit $fail
