@@ -1825,6 +1825,17 @@ static size_t end_at_first_event(whirl_cont *c, size_t nev, int *its) {
       c->skip_k[m++] = c->skip_k[i];
     }
   c->nskip = m;
+  /* a cusp or a merge is a turning point of the lead parameter too
+   * (drop_lp_at): its rate is zero there to rounding, whose sign tests
+   * nothing on the next step (the cusp's fold locus mu = -2 x^3 stops
+   * without turning: an LP at the CP otherwise, by rounding's sign) */
+  const cont_event *e0 = &c->evs[0];
+  const int ty0 = e0->ev == EV_SYS ? e0->st->ttype[e0->k] : 0;
+  if ((ty0 == WHIRL_PT_CP || ty0 == WHIRL_PT_MG) &&
+      c->nskip < sizeof c->skip_ev / sizeof *c->skip_ev) {
+    c->skip_ev[c->nskip] = EV_LP;
+    c->skip_k[c->nskip++] = 0;
+  }
   *its = c->evs[0].its;
   /* the branch goes on from AUTO's point where there is one (opt.loc_epss) */
   cont_state_copy(c, &c->trial, c->evs[0].next ? c->evs[0].next : c->evs[0].st);

@@ -341,20 +341,37 @@ static double thl_of(const whirl_run_settings *s, run_ctx *R, int k) {
  * with DS scaled by its square root: a step that mostly changes parameters
  * moved them sqrt(NTST NCOL + 1) times as far as AUTO's, 13 times on kar,
  * whose Newton then failed where its parameter crosses 0.)  Equilibria are
- * measured as AUTO's, and the torus locus of orbits as its orbits
- * (torus_weights); the unknowns of fold and Hopf loci (ds_scale) and of
- * harmonic balance keep weight 1.  0, -1 (memory), -2 (bad input, said);
+ * measured as AUTO's, and the loci of orbits and BVPs as their base, their
+ * own unknowns by THL (locus_weights); the unknowns of loci of equilibria
+ * and of harmonic balance keep weight 1.  0, -1 (memory), -2 (bad input, said);
  * *xw is NULL or malloc'd (the caller frees it after whirl_cont_alloc). */
-static int torus_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *o,
-                         double **xw);
+/* A locus's own unknowns after its base's (xw[b->nb] ..): the label's
+ * parameter by its THL (default 1), then the angle of a torus locus (1,
+ * AUTO's PAR(12)) or a further freed parameter by the THL of the third
+ * ICP. */
+static void locus_weights(run_ctx *R, const branch_spec *b, double *xw) {
+  const whirl_run_settings *s = R->s;
+  const size_t N = b->sys->n;
+  const double wq = thl_of(s, R, b->q);
+  xw[b->nb] = sqrt(wq >= 0 ? wq : 1.0);
+  for (size_t i = 0; i < R->nicp && b->nb + 1 < N; i++)
+    if (R->icp[i] != b->q && R->icp[i] != b->icp) {
+      const double w3 = thl_of(s, R, R->icp[i]);
+      xw[b->nb + 1] = sqrt(w3 >= 0 ? w3 : 1.0);
+    }
+}
 
 static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *o,
                           double **xw) {
   const whirl_run_settings *s = R->s;
   *xw = NULL;
-  if (b->trloc) return torus_weights(R, b, o, xw);
-  const int orbit_base = b->kind == WHIRL_SOL_COLLOC && b->sys == whirl_colloc_system(b->colloc);
-  const int bvp_base = b->kind == WHIRL_SOL_BVP && b->sys == whirl_bvp_system(b->bvp);
+  /* a locus of orbits or of a BVP whose system weighs the base's node
+   * values (fold, branch-point, period-doubling and torus loci): its
+   * base's unknowns as the base's own, then the locus's */
+  const int locus = (b->fold || b->trloc) && b->sys->norm_weights;
+  const int orbit_base = b->kind == WHIRL_SOL_COLLOC &&
+                         (b->sys == whirl_colloc_system(b->colloc) || locus);
+  const int bvp_base = b->kind == WHIRL_SOL_BVP && (b->sys == whirl_bvp_system(b->bvp) || locus);
   if (!s->nthl && !s->nthu && !orbit_base && !bvp_base) return 0;
   const int base = (b->kind == WHIRL_SOL_EQ && b->sys->n == R->n) || orbit_base || bvp_base;
   const int orbit = b->kind == WHIRL_SOL_COLLOC, aut = orbit && R->model->forcing_param < 0;
@@ -388,12 +405,13 @@ static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *
    * weighted */
   const double wp = thl_of(s, R, b->icp);
   o->p_weight = sqrt(wp >= 0 ? wp : 1.0);
-  int weighted = wT != 1.0 || s->nthu; /* any unknown's weight other than 1 */
+  int weighted = wT != 1.0 || s->nthu || locus; /* any weight other than 1 */
   for (size_t j = 0; j < nfree; j++) weighted |= thl_of(s, R, R->icp[j + 1]) >= 0;
   if (!base || !weighted) return 0;
-  *xw = malloc(b->nb * sizeof **xw);
+  const size_t N = b->sys->n; /* b->nb, and a locus's own unknowns after */
+  *xw = malloc(N * sizeof **xw);
   if (!*xw) return -1;
-  for (size_t i = 0; i < b->nb; i++) (*xw)[i] = 1.0;
+  for (size_t i = 0; i < N; i++) (*xw)[i] = 1.0;
   const size_t nodes = b->nb - (size_t)aut - nfree; /* the state's unknowns */
   for (size_t i = 0; i < s->nthu; i++) {
     const int xi = run_state_index(R, &s->thu[i].ref);
@@ -412,50 +430,13 @@ static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *
     const double w = thl_of(s, R, R->icp[j + 1]);
     (*xw)[nodes + j] = sqrt(w >= 0 ? w : 1.0);
   }
+  if (locus) locus_weights(R, b, *xw);
   o->x_weight = *xw;
-  for (size_t i = 0; i < b->nb; i++) if ((*xw)[i] > 0) return 0;
+  for (size_t i = 0; i < N; i++) if ((*xw)[i] > 0) return 0;
   run_fail(R, s->nthu ? WHIRL_RK_THU : WHIRL_RK_THL, "THL, THU: every weight of the "
            "unknowns is 0 (the step length would measure the parameter alone)");
   free(*xw), *xw = NULL;
   return -2;
-}
-
-/* The torus locus of orbits measured as its base: the node values by
- * the quadrature (the system's norm weights) and THU, the period by THL
- * (AUTO's default 0 for autonomous orbits), the freed parameter and the
- * continuation parameter by THL (default 1), the angle by 1 (AUTO's
- * PAR(12)) or a fixed angle's third parameter by its THL.  0, -1, -2. */
-static int torus_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *o,
-                         double **xw) {
-  const whirl_run_settings *s = R->s;
-  const size_t N = b->sys->n, nx = N - 2, nodes = nx - 1;
-  double wT = whirl_runfile_given(R->rf, WHIRL_RK_THL) ? 1.0 : 0.0;
-  for (size_t i = 0; i < s->nthl; i++)
-    if (s->thl[i].ref.index == 11 || !strcasecmp(s->thl[i].ref.name, "PERIOD"))
-      wT = s->thl[i].value;
-  const double wq = thl_of(s, R, b->q), wp = thl_of(s, R, b->icp);
-  o->p_weight = sqrt(wp >= 0 ? wp : 1.0);
-  if (!(*xw = malloc(N * sizeof **xw))) return -1;
-  for (size_t i = 0; i < N; i++) (*xw)[i] = 1.0;
-  for (size_t i = 0; i < s->nthu; i++) {
-    const int xi = run_state_index(R, &s->thu[i].ref);
-    if (xi < 0) {
-      free(*xw), *xw = NULL;
-      run_fail(R, WHIRL_RK_THU, "THU: '%s' is not a state component of model '%s'",
-               s->thu[i].ref.name, R->prob.name);
-      return -2;
-    }
-    for (size_t j = (size_t)xi; j < nodes; j += R->n) (*xw)[j] = sqrt(s->thu[i].value);
-  }
-  (*xw)[nx - 1] = sqrt(wT >= 0 ? wT : 0.0);
-  (*xw)[nx] = sqrt(wq >= 0 ? wq : 1.0);
-  for (size_t i = 0; i < R->nicp; i++) /* a third parameter, the angle fixed */
-    if (R->icp[i] != b->q && R->icp[i] != b->icp) {
-      const double w3 = thl_of(s, R, R->icp[i]);
-      (*xw)[nx + 1] = sqrt(w3 >= 0 ? w3 : 1.0);
-    }
-  o->x_weight = *xw;
-  return 0;
 }
 
 /* A labelled point: its block in the solutions file, and (special points)
@@ -1633,8 +1614,9 @@ static int switch_or_locus(run_ctx *R, run_objects *O, branch_spec *b) {
               "an EP; restart at it to continue the locus\n");
     }
     b->ds_scale = 1.0;
-    /* (the torus locus weights its node values as AUTO's integral) */
-    if ((b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP) && !b->trloc)
+    /* (a locus whose system weighs the base's node values: AUTO's
+     * integral norm, branch_weights) */
+    if ((b->kind == WHIRL_SOL_COLLOC || b->kind == WHIRL_SOL_BVP) && !b->sys->norm_weights)
       b->ds_scale = sqrt((double)(s->ntst * s->ncol + 1));
   }
   return 0;

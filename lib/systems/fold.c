@@ -89,13 +89,21 @@ static double amax(const double *a, size_t n) {
 
 /* Difference step for directional derivatives of the Jacobian: about
  * cbrt(eps) relative, which balances truncation (h^2) and rounding (eps/h)
- * for a central difference of an analytic Jacobian. */
+ * for a central difference of an analytic Jacobian, each unknown on its
+ * own scale (the largest relative change h |dir_i| / (1 + |x_i|) is
+ * 6e-6): a long period or a large parameter beside node values of 1e-3
+ * would otherwise move them by far more, and g's derivative lose its
+ * digits (AUTO's tor.6 at PERIOD 400, trloc.c). */
 static double hstep(const double *x, size_t n, const double *dir) {
-  const double d = amax(dir, n);
+  double r = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const double q = fabs(dir[i]) / (1.0 + fabs(x[i]));
+    if (q > r) r = q;
+  }
   /* a direction of denormal size (a branch point's phi where F_q vanishes
-   * on an invariant subspace, tfc's) moves nothing: not 1/d, which
+   * on an invariant subspace, tfc's) moves nothing: not 1/r, which
    * overflows and makes the row NaN */
-  return 6e-6 * (1.0 + amax(x, n)) / (d > 1e-200 ? d : 1.0);
+  return r > 1e-200 ? 6e-6 / r : 6e-6;
 }
 
 static int jac(whirl_fold *f, const double *x, const double *p, double *J) {
@@ -633,6 +641,34 @@ static int fold_accept(const double *Z, const double *p, void *data) {
   return 0;
 }
 
+/* A new mesh of the base (AUTO's IAD on a locus of orbits or of a BVP):
+ * the core's vectors and the right border c (a vector of the base's
+ * unknowns) mapped by the base, the locus's own unknowns as they are.  The
+ * left border b is a vector of the equations, which a new mesh orders as
+ * the old one: kept, since any b with w^T b != 0 serves and the next
+ * accepted point sets b = w. */
+enum { FOLD_REMAP_MAX = 15 };
+static int fold_remap(double *const *v, size_t nv, const double *p, void *data) {
+  whirl_fold *f = data;
+  double *vv[FOLD_REMAP_MAX + 1];
+  if (nv > FOLD_REMAP_MAX) return WHIRL_EINVAL;
+  for (size_t i = 0; i < nv; ++i) vv[i] = v[i];
+  vv[nv] = f->c;
+  const int rc = f->base.remap(vv, nv + 1, p, f->base.data);
+  if (rc != 0) f->cached = 0;
+  return rc;
+}
+
+/* The base's norm weights on its unknowns (a collocation's or a BVP's
+ * node values by the quadrature: AUTO's integral norm), 1 on the
+ * locus's own. */
+static int fold_norm_weights(double *q, void *data) {
+  whirl_fold *f = data;
+  const int rc = f->base.norm_weights(q, f->base.data);
+  for (size_t i = f->n; i < f->N; ++i) q[i] = 1.0;
+  return rc;
+}
+
 /* ------------------------------------------------------------------------
  * The fold system's structured solver (whirl_system bsolver), on the
  * sparse path.  The core's Newton matrix of the fold system is
@@ -973,6 +1009,8 @@ whirl_fold *whirl_fold_alloc(const whirl_system *base,
   }
   s->Fp = o->cond == WHIRL_FOLD_COND_NONE || o->cond == WHIRL_FOLD_COND_BP ? fold_Fp : NULL;
   s->accept = fold_accept;
+  s->remap = base->remap ? fold_remap : NULL;
+  s->norm_weights = base->norm_weights ? fold_norm_weights : NULL;
   s->ntest = o->cond || o->op ? 0 : WHIRL_FOLD_NTEST;
   s->test = o->cond || o->op ? NULL : fold_test;
   s->p_names = base->p_names;

@@ -253,16 +253,19 @@ static int tr_F(const double *Z, const double *p, double *out, void *data) {
   return 0;
 }
 
-/* The difference step along d (nd node values): relative to the node
- * values' own scale, not to the period's or a parameter's after them (an
- * orbit of period 400 would shift its nodes by 4e-4 and its g_x by the
- * third derivative's error, and Newton on the locus would converge
- * linearly: AUTO's tor.6). */
+/* The difference step along d (nd node values): the largest relative
+ * change h |d_i| / (1 + |x_i|) of a node value 1e-6, each on its own
+ * scale, not the period's or a parameter's after them (an orbit of period
+ * 400 would shift node values of 1e-3 by 4e-4 and g_x by the third
+ * derivative's error, and Newton on the locus converge linearly: AUTO's
+ * tor.6). */
 static double hstep(const double *x, const double *d, size_t nd) {
-  double xm = 0.0, dm = 0.0;
-  for (size_t i = 0; i < nd; ++i) xm = fmax(xm, fabs(x[i]));
-  for (size_t i = 0; i < nd; ++i) dm = fmax(dm, fabs(d[i]));
-  return dm > 0 ? 1e-6 * (1.0 + xm) / dm : 1e-6;
+  double r = 0.0;
+  for (size_t i = 0; i < nd; ++i) {
+    const double q = fabs(d[i]) / (1.0 + fabs(x[i]));
+    if (q > r) r = q;
+  }
+  return r > 1e-200 ? 1e-6 / r : 1e-6;
 }
 
 /* out[k] += s Σ_{i<na} u_i (Jp − Jm)_ik / (2h) for every base column k. */

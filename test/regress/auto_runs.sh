@@ -466,6 +466,13 @@ echo "$c3" | grep -Eq '^(5[459] )+$' && echo "$c3" | grep -q ' 55 ' && [ "$c3s" 
   grep -q "^   0   Branch type:  5    TY = 'LP '" "$tmp/abcb.s/b.abcb.3.fw" &&
   ! grep -q "Branch type" "$tmp/abcb.s/b.abcb.4.bw"
 check $? "abcb --script: AUTO's type codes on the loci of orbits (3 fw: $c3; 3 sw: $c3s; 5 fw: $c5; 4 bw: $c4) and AUTO's 'Branch type' header line"
+# ... and its fold locus of orbits adapts the orbits' mesh as it goes (IAD
+# = 3, as AUTO's on its loci) and measures its steps by their integral:
+# the labels' meshes differ (the locus kept its first mesh before)
+meshes=$(grep '^MESH' "$tmp/abcb.s/runs/r4@1.out/solutions" 2>/dev/null | sort -u | wc -l)
+labs=$(grep -c '^LAB' "$tmp/abcb.s/runs/r4@1.out/solutions" 2>/dev/null)
+[ "${labs:-0}" -ge 3 ] && [ "$meshes" -ge 3 ]
+check $? "abcb --script: run 3 fw's fold locus of orbits on adapted meshes ($meshes meshes in its $labs labels)"
 bps=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 6' "$tmp/abcb.s/b.abcb.4.bw" 2>/dev/null | wc -l)
 [ -s "$tmp/abcb.s/b.abcb.4.bw" ] && [ "$bps" = 0 ]
 check $? "abcb --script: run 4 (bw) labels no BP at its start, restarted at the crossing of two families (AUTO none): $bps"
