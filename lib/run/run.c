@@ -327,6 +327,22 @@ static double thl_of(const whirl_run_settings *s, run_ctx *R, int k) {
   return -1;
 }
 
+/* A locus's own unknowns after its base's (xw[b->nb] ..): the label's
+ * parameter by its THL (default 1), then the angle of a torus locus (1,
+ * AUTO's PAR(12)) or a further freed parameter by the THL of the third
+ * ICP. */
+static void locus_weights(run_ctx *R, const branch_spec *b, double *xw) {
+  const whirl_run_settings *s = R->s;
+  const size_t N = b->sys->n;
+  const double wq = thl_of(s, R, b->q);
+  xw[b->nb] = sqrt(wq >= 0 ? wq : 1.0);
+  for (size_t i = 0; i < R->nicp && b->nb + 1 < N; i++)
+    if (R->icp[i] != b->q && R->icp[i] != b->icp) {
+      const double w3 = thl_of(s, R, R->icp[i]);
+      xw[b->nb + 1] = sqrt(w3 >= 0 ? w3 : 1.0);
+    }
+}
+
 /* AUTO's arclength norm (AUTO-07p manual, THL, THU; bvp.f90, RNRMSQP):
  *   |(u, p)|^2 = sum_i THU_i int_0^1 u_i(t)^2 dt + sum_k THL_k p_k^2
  * over the state and every free parameter (the period of an autonomous
@@ -345,22 +361,6 @@ static double thl_of(const whirl_run_settings *s, run_ctx *R, int k) {
  * own unknowns by THL (locus_weights); the unknowns of loci of equilibria
  * and of harmonic balance keep weight 1.  0, -1 (memory), -2 (bad input, said);
  * *xw is NULL or malloc'd (the caller frees it after whirl_cont_alloc). */
-/* A locus's own unknowns after its base's (xw[b->nb] ..): the label's
- * parameter by its THL (default 1), then the angle of a torus locus (1,
- * AUTO's PAR(12)) or a further freed parameter by the THL of the third
- * ICP. */
-static void locus_weights(run_ctx *R, const branch_spec *b, double *xw) {
-  const whirl_run_settings *s = R->s;
-  const size_t N = b->sys->n;
-  const double wq = thl_of(s, R, b->q);
-  xw[b->nb] = sqrt(wq >= 0 ? wq : 1.0);
-  for (size_t i = 0; i < R->nicp && b->nb + 1 < N; i++)
-    if (R->icp[i] != b->q && R->icp[i] != b->icp) {
-      const double w3 = thl_of(s, R, R->icp[i]);
-      xw[b->nb + 1] = sqrt(w3 >= 0 ? w3 : 1.0);
-    }
-}
-
 static int branch_weights(run_ctx *R, const branch_spec *b, whirl_cont_options *o,
                           double **xw) {
   const whirl_run_settings *s = R->s;
