@@ -216,6 +216,11 @@ int main(void) {
   ok(whirl_trloc_alloc(whirl_colloc_system(c), &bad, 1, -1, err, sizeof err) == NULL &&
          strstr(err, "trloc"),
      "an operator larger than the system: NULL, %s", err);
+  whirl_fold_operator flat = op; /* no collocation structure to eliminate by */
+  flat.nstate = 0;
+  ok(whirl_trloc_alloc(whirl_colloc_system(c), &flat, 1, -1, err, sizeof err) == NULL &&
+         strstr(err, "collocation"),
+     "an operator without the orbit's collocation structure: NULL, %s", err);
   ok(whirl_trloc_alloc(whirl_colloc_system(c), &op, 1, 1, err, sizeof err) == NULL &&
          whirl_trloc_alloc(whirl_colloc_system(c), &op, 1, 4, err, sizeof err) == NULL,
      "the second parameter the first, or beyond npar: NULL");
