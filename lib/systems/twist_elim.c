@@ -21,14 +21,14 @@ struct twist_elim {
   int *hpiv;       /* (N − 1) × n */
   double *acc;     /* n × 2n: the rows left in [v(0) | v_k] */
   double *F;       /* 2n × n: [acc's v(N) part; BN], factored */
-  int fpiv[64];
+  int *fpiv;       /* n */
   double *Y;       /* 2n × 2n: [acc's v(0) part, 0; B0r, B0i], transformed */
   double *bn;      /* n × n */
   double *t;       /* scratch: 8n */
 };
 
 twist_elim *twist_alloc(size_t n, size_t ntst, size_t ncol) {
-  if (n < 1 || n > 64 || ntst < 1 || ncol < 1) return NULL;
+  if (n < 1 || ntst < 1 || ncol < 1) return NULL;
   twist_elim *e = calloc(1, sizeof *e);
   if (!e) return NULL;
   e->n = n, e->N = ntst, e->m = ncol;
@@ -42,8 +42,9 @@ twist_elim *twist_alloc(size_t n, size_t ntst, size_t ncol) {
   e->F = malloc(2 * n * n * sizeof *e->F);
   e->Y = malloc(4 * n * n * sizeof *e->Y);
   e->bn = calloc(n * n, sizeof *e->bn);
+  e->fpiv = malloc(n * sizeof *e->fpiv);
   e->t = malloc(8 * n * sizeof *e->t);
-  if (!e->G || !e->gpiv || !e->H || !e->hpiv || !e->acc || !e->F || !e->Y || !e->bn || !e->t) {
+  if (!e->G || !e->gpiv || !e->H || !e->hpiv || !e->acc || !e->F || !e->Y || !e->bn || !e->t || !e->fpiv) {
     twist_free(e);
     return NULL;
   }
@@ -53,7 +54,7 @@ twist_elim *twist_alloc(size_t n, size_t ntst, size_t ncol) {
 void twist_free(twist_elim *e) {
   if (!e) return;
   free(e->G), free(e->gpiv), free(e->H), free(e->hpiv), free(e->acc), free(e->F);
-  free(e->Y), free(e->bn), free(e->t), free(e);
+  free(e->Y), free(e->bn), free(e->t), free(e->fpiv), free(e);
 }
 
 double *twist_block(twist_elim *e, size_t i) { return e->G + i * e->R * e->n * (e->m + 1); }

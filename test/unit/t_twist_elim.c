@@ -146,7 +146,7 @@ static void check(size_t n, size_t N, size_t m, unsigned seed) {
   unsigned s = seed;
   fill(e, n, N, m, &s);
   const size_t gsz = N * n * m * n * (m + 1);
-  double *G = malloc(gsz * sizeof *G), bn[64 * 64];
+  double *G = malloc(gsz * sizeof *G), *bn = malloc(n * n * sizeof *bn);
   memcpy(G, twist_block(e, 0), gsz * sizeof *G);
   memcpy(bn, twist_bn(e), n * n * sizeof *bn);
   const int frc = twist_factor(e);
@@ -177,7 +177,7 @@ static void check(size_t n, size_t N, size_t m, unsigned seed) {
   assemble(G, bn, n, N, m, b0, A);
   reduce(e, n, b0, S);
   double *vr = calloc(na, sizeof *vr), *vi = calloc(na, sizeof *vi);
-  double v0r[64] = {1.0}, v0i[64] = {0.0};
+  double v0r[128] = {1.0}, v0i[128] = {0.0};
   twist_right(e, v0r, v0i, vr, vi);
   double res = 0.0, scale = 0.0, vmax = 0.0;
   for (size_t j = 0; j < na; ++j) vmax = fmax(vmax, cabs(vr[j] + I * vi[j]));
@@ -194,7 +194,7 @@ static void check(size_t n, size_t N, size_t m, unsigned seed) {
   ok(res <= 1e-12 * scale, "%s: S(theta) singular, A(theta) v = 0 on every row "
      "(|Av| %.1e, |A||v| %.1e, |v| %.1e)", what, res, scale, vmax);
   /* w = Q^T (0; w0): A^H w zero but on v(0)'s columns, S^H w0 there */
-  double w0r[64], w0i[64];
+  double w0r[128], w0i[128];
   for (size_t k = 0; k < n; ++k) w0r[k] = rnd(&s), w0i[k] = rnd(&s);
   double *wr = calloc(na, sizeof *wr), *wi = calloc(na, sizeof *wi);
   twist_left(e, w0r, w0i, wr, wi);
@@ -218,7 +218,7 @@ static void check(size_t n, size_t N, size_t m, unsigned seed) {
   ok(off <= 1e-12 * wsc && at0 <= 1e-12 * wsc,
      "%s: A(theta)^H Q^T (0; w0) is 0 off v(0) (%.1e) and S^H w0 on it (%.1e), |A||w| %.1e",
      what, off, at0, wsc);
-  free(vr), free(vi), free(wr), free(wi), free(A), free(b0), free(S), free(G);
+  free(vr), free(vi), free(wr), free(wi), free(A), free(b0), free(S), free(G), free(bn);
   twist_free(e);
 }
 
@@ -270,6 +270,7 @@ int main(void) {
   check(3, 5, 4, 7u);
   check(2, 1, 3, 11u);
   check(4, 3, 2, 13u);
+  check(70, 2, 2, 19u); /* more states than any fixed buffer: an FE rotor's */
   check_growth();
   ok(twist_alloc(0, 5, 4) == NULL && twist_alloc(3, 0, 4) == NULL, "no states or intervals: NULL");
   return done_testing();
