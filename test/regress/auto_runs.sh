@@ -510,5 +510,14 @@ rc=$?
 T=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "period") c = i; next } c && $c > m { m = $c } END { printf "%.6g", m }' "$tmp/tor.s/runs/r6@1.out/branches.tsv" 2>/dev/null)
 awk -v t="${T:-0}" 'BEGIN { exit !(t > 1000) }'
 check $(( $? + rc )) "tor --script: run 6's torus locus follows the orbits past PERIOD 1000 towards AUTO's UZ at 3000 (exit $rc): largest PERIOD ${T:-none}"
+# tfc by its script: run 4's BP locus of orbits bw runs towards AUTO's
+# homoclinic end (AUTO: 300 points to EP 27 at PAR(6) 9.50030E-03, PERIOD
+# 5588) on adapted meshes, measured as its orbits; on its first mesh with
+# every node weighed 1 it labelled an LP at PT 68, PAR(6) 0.00968
+(cd "$tmp" && "$WHIRL" auto "$auto/demos/tfc" --script --quiet --out=tfc.s > tfc.s.log 2>&1)
+bw=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "PAR(6)") c = i; next }
+  c { n = $2; if (m == "" || $c < m) m = $c } END { printf "%d %.6g", n, m }' "$tmp/tfc.s/runs/r6@1.out/branches.tsv" 2>/dev/null)
+echo "$bw" | awk '{ exit !(NF == 2 && $1 >= 200 && $2 < 0.0096 && $2 > 0.0095) }'
+check $? "tfc --script: run 4's BP locus bw runs towards AUTO's end at PAR(6) 9.50030E-03 (last PT, least PAR(6): ${bw:-none})"
 echo "1..$n"
 exit $fail
