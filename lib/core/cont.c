@@ -279,12 +279,14 @@ whirl_cont *whirl_cont_alloc(const whirl_system *sys,
   c->w2 = calloc(c->N, sizeof *c->w2);
   c->xw2 = calloc(c->n ? c->n : 1, sizeof *c->xw2);
   c->Xprev = calloc(c->N, sizeof *c->Xprev);
+  c->Xref = calloc(c->N, sizeof *c->Xref);
+  c->ref_p = calloc(c->npar ? c->npar : 1, sizeof *c->ref_p);
   c->tprev = calloc(c->N, sizeof *c->tprev);
   c->Xstart = calloc(c->N, sizeof *c->Xstart);
   c->Xfact = calloc(c->N, sizeof *c->Xfact);
   c->pfact = calloc(c->npar ? c->npar : 1, sizeof *c->pfact);
   if (!c->fp || !c->f || !c->rhs || !c->row || !c->row2 || !c->sph || !c->work || !c->dir || !c->w2 ||
-      !c->xw2 || !c->Xprev || !c->tprev || !c->Xstart || !c->Xfact || !c->pfact)
+      !c->xw2 || !c->Xprev || !c->Xref || !c->ref_p || !c->tprev || !c->Xstart || !c->Xfact || !c->pfact)
     goto nomem;
   if (set_weights(c, opt)) {
     WHIRL_ERRMSG(errbuf, errlen, WHIRL_EINVAL, "whirl_cont_alloc: %s", c->errmsg);
@@ -352,6 +354,8 @@ void whirl_cont_free(whirl_cont *c) {
   free(c->w2);
   free(c->xw2);
   free(c->Xprev);
+  free(c->Xref);
+  free(c->ref_p);
   free(c->tprev);
   free(c->Xstart);
   state_free(&c->cur);

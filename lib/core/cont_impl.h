@@ -100,6 +100,8 @@ struct whirl_cont {
   double *xw2;        /* n: opt.x_weight², kept for a new representation */
   double *dir;        /* N: predictor direction of the current step */
   double *Xprev;      /* N: previous accepted point (secant predictor) */
+  double *Xref;       /* N: a localisation's last trial (its reference) */
+  double *ref_p;      /* npar: the parameters given with it */
   int have_prev;
   double *tprev;      /* N: its tangent (curved predictor) ... */
   double hprev;       /* ... and the arclength from it to cur */

@@ -143,6 +143,22 @@ static void on_the_branch(const whirl_cont *c, const double *Xa, const double *X
     memcpy(X, Xs, c->N * sizeof *X);
 }
 
+/* The references the equations take from the last point (the phase
+ * condition of orbits, the integral conditions' UOLD of BVPs) set to X: each
+ * trial of a localisation steps from the last trial, as AUTO-07p's LCSPBV
+ * (CONTBV, then STEPBV from the current point), so its phase is the last
+ * trial's, not the step start's.  At a located orbit the phase decides its
+ * values at the mesh nodes (MAX U(i) over them) and, for rotations, its
+ * L2-NORM (pen's doubled rotations: BP 4 shifted by 1e-5 of the period
+ * against AUTO's, L2-NORM 10.64230 against 10.64248). */
+static int set_reference(whirl_cont *c, const double *X) {
+  if (!c->sys.accept) return 0;
+  double *p = c->ref_p;
+  memcpy(p, c->cur.p, c->npar * sizeof *p);
+  p[c->opt.icp] = X[c->n];
+  return c->sys.accept(X, p, c->sys.data);
+}
+
 /* A trial point's tangent, and its tests unless only the tangent's. */
 static int trial_analyse(whirl_cont *c, cont_state *st, int tangent_only) {
   return tangent_only ? cont_tangent(c, st, c->dir) : cont_analyse(c, st, c->dir);
@@ -265,7 +281,8 @@ static int locate_auto(whirl_cont *c, int ev, size_t k, const cont_state *b,
     for (size_t i = 0; i < N; ++i) dir[i] /= nd;
     memcpy(prev, out->X, N * sizeof *prev);
     memcpy(c->dir, dir, N * sizeof *dir); /* the tangent's orientation */
-    const int rc = auto_trial(c, prev, dir, &rds, p_only, tangent_only, out);
+    int rc = set_reference(c, prev); /* CONTBV's UOLDPS: the last trial */
+    if (rc >= 0) rc = auto_trial(c, prev, dir, &rds, p_only, tangent_only, out);
     if (rc == 2 && ev == EV_BP) { /* on the branch point itself */
       found = stepped = singular = 1;
       break;
@@ -281,6 +298,7 @@ static int locate_auto(whirl_cont *c, int ev, size_t k, const cont_state *b,
   if (prev) {
     memcpy(c->dir, dir0, N * sizeof *dir0);
     free(prev);
+    if (set_reference(c, a->X) < 0) return 1;
   }
   if (!found) return 1;
   /* a fold's test still as large as at the step's ends: a kink (cont_locate) */
@@ -359,8 +377,21 @@ int cont_locate(whirl_cont *c, int ev, size_t k, const cont_state *b,
   return 0;
 }
 
+static int locate_trials(whirl_cont *c, int ev, size_t k, const cont_state *b,
+                         cont_state *out);
+
+/* The zero to convergence (locate_trials), each trial referred to the last
+ * (set_reference), and the references given back to the step's start. */
 static int locate_converged(whirl_cont *c, int ev, size_t k, const cont_state *b,
                             cont_state *out) {
+  memcpy(c->Xref, b->X, c->N * sizeof *c->Xref); /* the first trial's: b */
+  const int rc = locate_trials(c, ev, k, b, out);
+  const int rr = set_reference(c, c->cur.X);
+  return rr < 0 ? rr : rc;
+}
+
+static int locate_trials(whirl_cont *c, int ev, size_t k, const cont_state *b,
+                         cont_state *out) {
   const cont_state *a = &c->cur;
   const size_t N = c->N;
   const double ds = c->ds;
@@ -403,10 +434,27 @@ static int locate_converged(whirl_cont *c, int ev, size_t k, const cont_state *b
    * eigensolver) is computed at the final point alone */
   const int tangent_only = ev == EV_LP || ev == EV_BP;
 
+  /* AUTO's stop (opt.loc_count_epss): the trial after which the next step
+   * is below its tolerance, whose Newton count sets the next step.  A
+   * branch point's alone: beside it the bordered Jacobian is singular and
+   * the trials past AUTO's stop need more iterations; elsewhere the last
+   * trial's count is AUTO's (int's steps after its UZs) */
+  const double count_tol =
+      ev == EV_BP
+          ? c->opt.loc_count_epss * (1.0 + sqrt(fabs(c->opt.ds * c->opt.ds_max)))
+          : 0.0;
+  int its_auto = 0, its_last = 0;
+  double s_last = 0.0;
+
   for (int it = 0; it < 100; ++it) {
     double sigma = (sa * fb - sb * fa) / (fb - fa);
     const double lo = fmin(sa, sb), hi = fmax(sa, sb);
     if (!(sigma > lo && sigma < hi)) sigma = 0.5 * (sa + sb);
+    if (it > 0 && !its_auto && fabs(sigma - s_last) < count_tol) its_auto = its_last;
+    if ((rc = set_reference(c, c->Xref)) < 0) { /* the last trial's */
+      found = 0;
+      break;
+    }
     /* A trial that lands exactly on a singular point (the secant can hit a
      * branch point to the last bit on linear problems) is moved by a tiny
      * fraction of the bracket and tried again; one that lands merely close
@@ -489,6 +537,9 @@ static int locate_converged(whirl_cont *c, int ev, size_t k, const cont_state *b
     found = 1;
     sout = sigma;
     fout = fabs(f);
+    s_last = sigma;
+    its_last = c->its;
+    memcpy(c->Xref, out->X, N * sizeof *c->Xref); /* the next trial's reference */
     if (fabs(f) < fbest) {
       fbest = fabs(f);
       sbest = sigma;
@@ -546,6 +597,7 @@ static int locate_converged(whirl_cont *c, int ev, size_t k, const cont_state *b
   if (ev == EV_BP && !(fout < fmin(fabs(fa0), fabs(fb0)))) return 1;
   if (p_only && cont_analyse(c, out, c->dir) != 0) return 1;
   if (tangent_only && cont_tests(c, out) != 0) return 1;
+  if (its_auto) c->its = its_auto;
   if (ev == EV_BP) bp_point(c, b, fmin(fmax(sout / ds, 0.0), 1.0), its_step, out);
   out->s = a->s + sqrt(cont_dist2(c, out->X, a->X));
   out->p[c->opt.icp] = out->X[c->n];

@@ -223,6 +223,7 @@ static int branch_options(run_ctx *R, const branch_spec *b, whirl_cont_options *
    * auto writes converged: doc/auto-reference.md) */
   o->loc_epss = s->locate_auto ? s->epss : 0.0;
   o->loc_itmx = s->itmx;
+  o->loc_count_epss = s->epss; /* the step after a located point: AUTO's */
   o->hide_first_step = b->kind == WHIRL_SOL_EQ && !b->bp && s->isw >= 0;
   /* ... and, with EQ_STEP = sphere (whirl auto writes it), algebraic
    * branches predict along the secant of the last two points, as orbits

@@ -237,6 +237,16 @@ typedef struct whirl_cont_options {
                           system's own tests: always whirl's.  0
                           (default): on from the zero to loc_tol */
   int loc_itmx;        /* AUTO's ITMX for loc_epss (default 8) */
+  double loc_count_epss; /* > 0 (with auto_steps, AUTO's EPSS): the Newton
+                          count that sets the step after a located branch
+                          point is the trial's where AUTO's localisation would
+                          stop, its next secant step below loc_count_epss
+                          (1 + sqrt|ds ds_max|); whirl's converged trials
+                          go on nearer the point, where beside a branch
+                          point Newton needs more iterations (pen's BP 4:
+                          4-5 against AUTO's 2, and the next step 0.44
+                          where AUTO's is DSMAX 0.5).  0: the last
+                          trial's */
   whirl_linsol_kind linsol; /* DENSE, or SPARSE when the system has a pattern */
   int structured;      /* 1: factor the bordered Newton matrix with the
                           system's own structured solver (whirl_system

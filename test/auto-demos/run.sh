@@ -48,7 +48,8 @@ hyper="$demos/../test/hyper.all"
 [ -f "$hyper" ] || { echo "# SKIP: no reference log $hyper"; exit 0; }
 command -v "${FC:-gfortran}" >/dev/null 2>&1 || { echo "# SKIP: no Fortran compiler"; exit 0; }
 tmp=$(mktemp -d) || exit 1
-trap 'rm -rf "$tmp"' EXIT
+# KEEP=1: the scratch directory (each demo's points, matches, logs) is kept and named
+trap '[ -n "${KEEP:-}" ] && echo "# kept $tmp" >&2 || rm -rf "$tmp"' EXIT
 
 py=${AUTO_07P_PYTHON:-/usr/lib/auto-07p/python}
 # AUTO's interpreter: Debian's, whose numpy AUTO's loadbd needs (a python3

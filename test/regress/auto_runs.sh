@@ -396,6 +396,17 @@ w=$(labels "$tmp/pen.out/b.pen" | awk '$3 >= 4 && $3 <= 6' | tr '\n' ';')
 a=$(hyper_labels pen "$hyper" | awk '$3 >= 4 && $3 <= 6' | tr '\n' ';')
 [ -n "$a" ] && [ "$w" = "$a" ]
 check $? "pen: c.pen.2 (the doubled rotations) labels 4-6 as AUTO's ($a): $w"
+# ... its BP 4 is AUTO's orbit in phase too: each trial of a localisation
+# refers its phase condition to the last trial, as AUTO's LCSPBV, where
+# whirl's all referred to the step's start (the orbit came out 1e-5 of the
+# period apart, and the rotations' L2-NORM 10.642297); AUTO at EPSS =
+# 1e-10 gives 10.642480232.  And the next step is AUTO's DSMAX, from the
+# Newton count of the trial where AUTO's localisation stops (whirl's last
+# trial, beside the branch point, took 4-5 iterations to AUTO's 2, and the
+# next point was at PAR(3) = 0.29238 for AUTO's 0.28717407)
+bp4=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 == 4 { printf "%.10g\n", substr($0, 39, 19); getline; printf "%.10g\n", substr($0, 20, 19); exit }' "$tmp/pen.out/b.pen" | tr '\n' ' ')
+echo "$bp4" | awk '{ d = $1 - 10.642480232; e = $2 - 0.28717407; exit !(NF == 2 && d < 1e-5 && d > -1e-5 && e < 1e-4 && e > -1e-4) }'
+check $? "pen: BP 4's L2-NORM (AUTO 10.642480232 at EPSS 1e-10) and the next point's PAR(3) (AUTO 0.28717407): $bp4"
 demo tor --runs=tor.1,tor.2
 lp9=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 11, 4) + 0 == 5 && substr($0, 20, 19) + 0 < -0.8 { printf "%.10g", substr($0, 20, 19); exit }' "$tmp/tor.out/b.tor")
 awk -v x="${lp9:-0}" 'BEGIN { d = (x + 0.832514) / 0.832514; exit !(d < 1e-6 && d > -1e-6) }'
