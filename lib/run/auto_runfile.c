@@ -174,6 +174,9 @@ static int problem(ctx *c) {
   /* AUTO's meshes of orbits (EQDF), and its MAX U(i) of an orbit, the
    * largest value at the mesh nodes */
   put(c->t, "MESH_RULE = jumps\nORBIT_MAX = nodes\nEQ_STEP = sphere\n");
+  /* AUTO's phase condition of orbits (ICPS at the nodes, UPOLD the
+   * model's f there) */
+  put(c->t, "PHASE = nodes\n");
   /* AUTO's difference quotients of BVPs (FUNI, ICNI with JAC = 0) */
   put(c->t, "DIFFERENCES = auto\n");
   /* AUTO's ICND gets its direction vector as UDOT */

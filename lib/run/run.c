@@ -1316,6 +1316,7 @@ static int start_colloc(run_ctx *R, run_objects *O, branch_spec *b) {
   co.forcing_param = R->model->forcing_param;
   co.adapt_every = s->iad; /* IAD: a new mesh every IAD steps, as AUTO */
   co.mesh_jumps = s->mesh_jumps; /* MESH_RULE = jumps: AUTO's meshes */
+  co.phase_nodes = s->phase_nodes; /* PHASE = nodes: AUTO's phase condition */
   co.threads = s->threads;       /* THREADS: 0, OpenMP's default */
   int pd = restart && s->isw == -1 && !strcmp(so->ty, "PD");
   /* AUTO's fixed-period orbits: IPS 2 with two parameters in ICP and not

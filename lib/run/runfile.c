@@ -104,6 +104,7 @@ static const key_def keys[] = {
     {WHIRL_RK_HB_PERIOD, "HB_PERIOD", "hopf_period", NULL, K_STRING},
     {WHIRL_RK_LOCATE, "LOCATE", "locate", NULL, K_METHOD},
     {WHIRL_RK_ITMX, "ITMX", "locate_iterations", NULL, K_INT},
+    {WHIRL_RK_PHASE, "PHASE", "phase_condition", NULL, K_METHOD},
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 
@@ -642,6 +643,7 @@ static int *int_field(whirl_run_settings *s, whirl_run_key k) {
     case WHIRL_RK_NWTN: return &s->nwtn;
     case WHIRL_RK_ITMX: return &s->itmx;
     case WHIRL_RK_LOCATE: return &s->locate_auto;
+    case WHIRL_RK_PHASE: return &s->phase_nodes;
     case WHIRL_RK_DISCOVER_STARTS: return &s->discover_starts;
     case WHIRL_RK_DISCOVER_SEED: return &s->discover_seed;
     default: return NULL;
@@ -750,7 +752,7 @@ static int set_ips(whirl_runfile *rf, const key_def *d, const char *where) {
  * quotients, UDOT what the integral conditions' udot is, TANGENT a new
  * point's tangent, LOCATE where a branch goes on after a special point,
  * MX a branch whose Newton fails at DSMIN, ORBIT_MAX what MAX U(i) of an
- * orbit is (doc/run-files.md) */
+ * orbit is, PHASE the phase condition of orbits (doc/run-files.md) */
 typedef struct two_words {
   whirl_run_key key;
   const char *no, *yes;
@@ -759,7 +761,8 @@ static const two_words two_word_keys[] = {
     {WHIRL_RK_MESH_RULE, "derivative", "jumps"},  {WHIRL_RK_EQ_STEP, "tangent", "sphere"},
     {WHIRL_RK_DIFFERENCES, "central", "auto"},    {WHIRL_RK_UDOT, "derivative", "direction"},
     {WHIRL_RK_TANGENT, "refined", "iterate"},     {WHIRL_RK_LOCATE, "converged", "auto"},
-    {WHIRL_RK_MX, "fail", "label"},               {WHIRL_RK_ORBIT_MAX, "curve", "nodes"}};
+    {WHIRL_RK_MX, "fail", "label"},               {WHIRL_RK_ORBIT_MAX, "curve", "nodes"},
+    {WHIRL_RK_PHASE, "gauss", "nodes"}};
 
 static const two_words *two_words_of(whirl_run_key key) {
   for (size_t i = 0; i < sizeof two_word_keys / sizeof *two_word_keys; i++)

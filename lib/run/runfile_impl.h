@@ -92,6 +92,9 @@ typedef struct whirl_run_settings {
                                    its step is below EPSS (LCSPAE, LCSPBV;
                                    0: to convergence, whirl's) */
   int itmx;                     /* ITMX: that iteration's steps (8) */
+  int phase_nodes;              /* PHASE = nodes: orbits' phase condition
+                                   as AUTO's, at the nodes with the model's
+                                   f (0: gauss, whirl's) */
   int orbit_max_nodes;          /* ORBIT_MAX = nodes: an orbit's MAX U(i) is
                                    AUTO's, the largest node value (0: the
                                    maximum of the collocation polynomial) */

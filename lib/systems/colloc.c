@@ -110,10 +110,18 @@ static void at_gauss(const whirl_colloc *c, colloc_scratch *s, const double *X,
  * the phase row phase[j] = sum over the intervals holding node j of
  * h_i sum_c w_c l_k(σ_c) x_ref'(τ_{i,c}), so that the quadrature of
  * ∫ <x, x_ref'> dτ is <phase, X>. */
+static int phase_at_nodes(whirl_colloc *c);
+
 static void set_reference(whirl_colloc *c, const double *Xn) {
   const size_t n = c->n, m = c->ncol;
   double *dx = c->scr[0].dx;
   if (Xn != c->ref) memcpy(c->ref, Xn, c->nnodes * n * sizeof *c->ref);
+  memset(c->phase, 0, c->nnodes * n * sizeof *c->phase);
+  if (c->phase_nodes && c->have_ref_par && c->fq < 0 && phase_at_nodes(c) == 0) {
+    c->phase0 = 0.0; /* AUTO's ∫ <x − x_ref, x_ref'> */
+    c->have_ref = 1;
+    return;
+  }
   memset(c->phase, 0, c->nnodes * n * sizeof *c->phase);
   for (size_t i = 0; i < c->ntst; ++i) {
     for (size_t g = 0; g < m; ++g) {
@@ -134,6 +142,47 @@ static void set_reference(whirl_colloc *c, const double *Xn) {
   for (size_t q = 0; q < c->nnodes * n; ++q) s += c->phase[q] * c->ref[q];
   c->phase0 = s;
   c->have_ref = 1;
+}
+
+/* AUTO-07p's phase condition (periodic.f90 ICPS with bvp.f90 STUPBV and
+ * the integral rule of solvebv.f90): ∫ <x − x_ref, x_ref'> by the weights
+ * of the Lagrange integrals at the NCOL + 1 nodes of each interval, with
+ * x_ref' = T f(x_ref) at those nodes (the model's vector field, where
+ * whirl's own rule takes the reference polynomial's derivative at the
+ * Gauss points).  The two agree to the collocation error; AUTO's orbits
+ * take their phase along a branch from AUTO's.  0, else the model failed
+ * at a node (whirl's rule then). */
+/* The weights of the Lagrange integrals on [0, 1] at the NCOL + 1 equally
+ * spaced nodes (AUTO's WI; Gauss's rule is exact for them). */
+static void node_int_weights(const whirl_colloc *c, double *wi) {
+  const size_t m = c->ncol;
+  for (size_t k = 0; k <= m; ++k) {
+    double w = 0.0;
+    for (size_t g = 0; g < m; ++g) w += c->gw[g] * c->L[g * (m + 1) + k];
+    wi[k] = w;
+  }
+}
+
+static int phase_at_nodes(whirl_colloc *c) {
+  const size_t n = c->n, m = c->ncol, N = c->ntst;
+  double wi[COLLOC_MAXCOL + 1];
+  node_int_weights(c, wi);
+  double *f = c->scr[0].f;
+  const double T = c->ref_T;
+  for (size_t i = 0; i < N; ++i) {
+    const double h = c->mesh[i + 1] - c->mesh[i];
+    for (size_t k = 0; k <= m; ++k) {
+      const size_t q = i * m + k;
+      const double tau = c->mesh[i] + h * (double)k / (double)m;
+      if (c->prob->rhs(c->t0 + T * tau, c->ref + n * q, c->ref_par, f, c->prob->data) != 0)
+        return 1;
+      for (size_t r = 0; r < n; ++r) {
+        if (!isfinite(f[r])) return 1;
+        c->phase[n * q + r] += h * wi[k] * T * f[r];
+      }
+    }
+  }
+  return 0;
 }
 
 /* The model's f_x at (t, s->xc) into s->J: analytic or central
@@ -468,6 +517,11 @@ static int colloc_accept(const double *X, const double *p, void *data) {
     size = fmax(size, fabs(X[q]));
   }
   if (c->aut && c->have_ref && spread <= 1e-12 * (1.0 + size)) return 0;
+  if (c->phase_nodes && p) {
+    memcpy(c->ref_par, p, c->prob->npar * sizeof *c->ref_par);
+    c->ref_T = period_of(c, X, p);
+    c->have_ref_par = isfinite(c->ref_T) && c->ref_T > 0.0;
+  }
   set_reference(c, X);
   return 0;
 }
@@ -560,6 +614,7 @@ static int alloc_arrays(whirl_colloc *c) {
   c->Jx = malloc(nnz * sizeof *c->Jx);
   c->ref = calloc(nnodes * n, sizeof *c->ref);
   c->phase = calloc(nnodes * n, sizeof *c->phase);
+  c->ref_par = calloc(prob->npar ? prob->npar : 1, sizeof *c->ref_par);
   /* one copy a thread: the remap's vectors on the threads */
   c->old_X = malloc(nnodes * n * (size_t)c->nthreads * sizeof *c->old_X);
   c->map_idx = malloc(nnodes * sizeof *c->map_idx);
@@ -587,7 +642,7 @@ static int alloc_arrays(whirl_colloc *c) {
   c->r1 = malloc(nx * sizeof *c->r1);
   c->r2 = malloc(nx * sizeof *c->r2);
   if (!c->mesh || !c->old_mesh || !c->Jp || !c->Ji || !c->Jx || !c->ref ||
-      !c->phase || !c->old_X || !c->ref_new || !c->pq || !c->pF || !c->r1 ||
+      !c->phase || !c->ref_par || !c->old_X || !c->ref_new || !c->pq || !c->pF || !c->r1 ||
       !c->r2 || !c->map_idx || !c->map_L) {
     return -1;
   }
@@ -712,6 +767,7 @@ whirl_colloc *whirl_colloc_alloc(const whirl_problem *prob,
   c->floquet = o->floquet;
   c->adapt_every = o->adapt_every;
   c->mesh_jumps = o->mesh_jumps;
+  c->phase_nodes = o->phase_nodes;
   c->fq = o->free_param >= 0 ? o->free_param : -1;
   c->Tfix = o->period;
   c->nthreads = whirl_threads_resolve(o->threads);
@@ -737,6 +793,7 @@ void whirl_colloc_free(whirl_colloc *c) {
   free(c->Jx);
   free(c->ref);
   free(c->phase);
+  free(c->ref_par);
   free(c->old_X);
   free(c->map_idx);
   free(c->map_L);
@@ -1275,7 +1332,28 @@ int whirl_colloc_hopf_start_at(whirl_colloc *c, const double *x0,
   D[c->nx - 1] = 0.0;
   D[c->nx] = 0.0;
   for (size_t q = 0; q < nd; ++q) c->ref_new[q] = X[q] + D[q];
-  set_reference(c, c->ref_new);
+  if (c->phase_nodes) {
+    /* AUTO's first phase condition (STHOPF): ∫ <x − x0, u'> at the nodes,
+     * u' = −(a sin + b cos) the eigenfunction's derivative, exact */
+    double wi[COLLOC_MAXCOL + 1];
+    node_int_weights(c, wi);
+    memcpy(c->ref, X, nd * sizeof *c->ref);
+    memset(c->phase, 0, nd * sizeof *c->phase);
+    const size_t m = c->ncol;
+    for (size_t i = 0; i < c->ntst; ++i) {
+      const double h = c->mesh[i + 1] - c->mesh[i];
+      for (size_t k = 0; k <= m; ++k) {
+        const double tau = c->mesh[i] + h * (double)k / (double)m;
+        const double cs = cos(2.0 * WHIRL_PI * tau), sn = sin(2.0 * WHIRL_PI * tau);
+        for (size_t r = 0; r < n; ++r)
+          c->phase[n * (i * m + k) + r] -= h * wi[k] * (a[r] * sn + b[r] * cs);
+      }
+    }
+    c->phase0 = 0.0;
+    c->have_ref = 1;
+  } else {
+    set_reference(c, c->ref_new);
+  }
   if (omega) *omega = w;
 done:
   if (rc != WHIRL_OK && rc != WHIRL_EINVAL)

@@ -79,6 +79,10 @@ struct whirl_colloc {
   double *ref_new;          /* nnodes*n */
   int adapt_every;          /* options.adapt_every (AUTO's IAD) */
   int mesh_jumps;           /* options.mesh_jumps (AUTO's EQDF) */
+  int phase_nodes;          /* options.phase_nodes (AUTO's ICPS) */
+  double *ref_par;          /* npar: the parameters of the reference ... */
+  double ref_T;             /* ... its period */
+  int have_ref_par;         /* set by the accept hook */
   int since_adapt;          /* remap calls since the last adaptation */
   size_t adaptations;       /* meshes adapted along branches */
 

@@ -65,6 +65,15 @@ typedef struct whirl_colloc_options {
                         from the jumps of x^(NCOL) between neighbouring
                         intervals, the last to the first (its EQDF), so a
                         run follows AUTO's meshes */
+  int phase_nodes;   /* the phase condition of autonomous orbits: 0
+                        (default) ∫ <x, x_ref'> by Gauss's rule on each
+                        interval, x_ref' the reference polynomial's
+                        derivative; 1: AUTO-07p's ∫ <x − x_ref, T f(x_ref)>
+                        by the Lagrange integrals' weights at the NCOL + 1
+                        nodes (ICPS, STUPBV), the model's f at the
+                        reference's nodes (and the eigenfunction's exact
+                        derivative at a Hopf start, STHOPF), so a run
+                        takes AUTO's phases along a branch */
   int free_param;    /* autonomous orbits at a fixed period (AUTO: IPS 2 with
                         11 not in ICP): >= 0, the period is `period` and the
                         unknown in its place (X's last entry) is this

@@ -74,6 +74,9 @@ typedef enum whirl_run_key {
                            by AUTO's secant and Mueller iteration to its
                            step tolerance EPSS (1) */
   WHIRL_RK_ITMX,        /* AUTO's ITMX: the iterations of that location */
+  WHIRL_RK_PHASE,       /* orbits' phase condition: whirl's at the Gauss
+                           points (0) or AUTO's at the nodes with the
+                           model's f (1) */
   WHIRL_RK_COUNT
 } whirl_run_key;
 

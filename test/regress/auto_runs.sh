@@ -255,6 +255,17 @@ tr11m=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 == 11 { print su
 echo "$tr11m" | awk '{ exit !(NF == 2 && $1 > 2.32842 && $1 < 2.32844 && $2 > 2.82493 && $2 < 2.82495) }'
 check $? "brc: run 3 on AUTO's side: TR 11's MAX U(2), MAX U(5) = $tr11m, AUTO 2.32843 2.82494"
 
+# lor: c.lor.3's PD of the doubled orbits (PT 14, rho = 215.966) has
+# AUTO's values at the nodes: orbits take their phase along the branch by
+# AUTO's phase condition (PHASE = nodes: at the nodes, with the model's f),
+# so the meshes the branch adapts are AUTO's too; by whirl's Gauss rule
+# the phases drifted apart by 1e-5 of the period, and with them the meshes:
+# MAX U(1) 35.9092 and U(3) 297.7295 where AUTO has 35.8658, 297.684
+(cd "$tmp" && "$WHIRL" auto "$auto/demos/lor" --quiet --out=lor3.out > lor3.log 2>&1)
+pd6=$(awk 'substr($0, 1, 4) + 0 != 0 && substr($0, 15, 5) + 0 == 6 && substr($0, 11, 4) + 0 == 7 { printf "%.8g %.8g", substr($0, 58, 19), substr($0, 96, 19); exit }' "$tmp/lor3.out/b.lor")
+echo "$pd6" | awk '{ d = $1 - 35.8658; e = $2 - 297.684; exit !(NF == 2 && d < 5e-4 && d > -5e-4 && e < 2e-3 && e > -2e-3) }'
+check $? "lor: c.lor.3's PD 6 at AUTO's MAX U(1), MAX U(3) (35.8658, 297.684): $pd6"
+
 # kar: its UZ at PAR(1) = 0 is where AUTO's localisation stops at EPSS
 # (-8.44948e-3; the test function is steep there, the problem singular at
 # PAR(1) = 0), and AUTO's branch goes on from there: its labels 2-5 at PT

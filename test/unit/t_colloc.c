@@ -602,6 +602,55 @@ static void test_lambda_omega(void) {
 /* ------------------------------------------------------------------------
  * 3. forced linear oscillator */
 
+/* AUTO's phase condition (phase_nodes): ∫ <x − x_ref, T f(x_ref)> at the
+ * nodes.  On the λ-ω cycle (r² = a, T = 2π, f = (−y, x) there) with the
+ * reference at phase 0 and x the same circle at phase φ, the integrand at
+ * every node is 2π a sin φ exactly (sin(θ + φ) cos θ − cos(θ + φ) sin θ),
+ * so any rule whose weights sum to 1 gives 2π a sin φ to rounding; whirl's
+ * Gauss rule with the reference polynomial's derivative is off by its
+ * interpolation error (the row is ∫ <x, x_ref'>, the same value for the
+ * exact circle). */
+static void test_phase_nodes(void) {
+  const double a = 0.25, r = sqrt(a), phi = 0.3, T = 2.0 * WHIRL_PI;
+  const size_t ntst = 8, ncol = 4;
+  char err[256];
+  double dev[2] = {0.0, 0.0};
+  for (int nodes = 0; nodes <= 1; ++nodes) {
+    whirl_colloc_options o;
+    whirl_colloc_options_default(&o);
+    o.ntst = ntst;
+    o.ncol = ncol;
+    o.phase_nodes = nodes;
+    whirl_colloc *c = whirl_colloc_alloc(&lamom, &o, err, sizeof err);
+    ok(c != NULL, "alloc λ-ω (phase_nodes %d): %s", nodes, err);
+    if (!c) return;
+    const whirl_system *s = whirl_colloc_system(c);
+    const size_t nx = whirl_colloc_size(c), nn = ntst * ncol + 1;
+    double *X = malloc(nx * sizeof *X), *R = malloc(nx * sizeof *R),
+           *F = malloc(nx * sizeof *F);
+    const double p[1] = {a};
+    for (size_t j = 0; j < nn; ++j) { /* the initial mesh is uniform */
+      const double th = 2.0 * WHIRL_PI * (double)j / (double)(nn - 1);
+      R[2 * j] = r * cos(th);
+      R[2 * j + 1] = r * sin(th);
+      X[2 * j] = r * cos(th + phi);
+      X[2 * j + 1] = r * sin(th + phi);
+    }
+    R[nx - 1] = X[nx - 1] = T;
+    int rc = s->accept(R, p, s->data);
+    if (rc == 0) rc = s->F(X, p, F, s->data);
+    dev[nodes] = rc == 0 ? fabs(F[nx - 1] - T * a * sin(phi)) : INFINITY;
+    free(X);
+    free(R);
+    free(F);
+    whirl_colloc_free(c);
+  }
+  ok(dev[1] < 1e-13, "AUTO's phase condition at the nodes on the λ-ω cycle "
+     "shifted by 0.3: 2π a sin 0.3 to %.1e", dev[1]);
+  ok(dev[0] > 1e3 * dev[1] && dev[0] < 1e-3,
+     "whirl's Gauss rule: the same integral to its interpolation error %.1e", dev[0]);
+}
+
 static void test_forced(void) {
   const double w = 1.3, z = 0.1;
   const size_t ntst = 20, ncol = 4;
@@ -1422,6 +1471,7 @@ int main(int argc, char **argv) {
   test_threads();
   test_fixed_period();
   test_lambda_omega();
+  test_phase_nodes();
   test_forced();
   test_forced_nu2();
   test_continuation(quick);
