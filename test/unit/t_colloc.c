@@ -602,6 +602,19 @@ static void test_lambda_omega(void) {
 /* ------------------------------------------------------------------------
  * 3. forced linear oscillator */
 
+/* The λ-ω system on ntst x ncol, adapted every adapt_every steps, with
+ * AUTO's phase condition when phase_nodes. */
+static whirl_colloc *lw_alloc(size_t ntst, size_t ncol, int adapt_every,
+                              int phase_nodes, char *err, size_t errlen) {
+  whirl_colloc_options o;
+  whirl_colloc_options_default(&o);
+  o.ntst = ntst;
+  o.ncol = ncol;
+  o.adapt_every = adapt_every;
+  o.phase_nodes = phase_nodes;
+  return whirl_colloc_alloc(&lamom, &o, err, errlen);
+}
+
 /* AUTO's phase condition (phase_nodes): ∫ <x − x_ref, T f(x_ref)> at the
  * nodes.  On the λ-ω cycle (r² = a, T = 2π, f = (−y, x) there) with the
  * reference at phase 0 and x the same circle at phase φ, the integrand at
@@ -616,12 +629,7 @@ static void test_phase_nodes(void) {
   char err[256];
   double dev[2] = {0.0, 0.0};
   for (int nodes = 0; nodes <= 1; ++nodes) {
-    whirl_colloc_options o;
-    whirl_colloc_options_default(&o);
-    o.ntst = ntst;
-    o.ncol = ncol;
-    o.phase_nodes = nodes;
-    whirl_colloc *c = whirl_colloc_alloc(&lamom, &o, err, sizeof err);
+    whirl_colloc *c = lw_alloc(ntst, ncol, 0, nodes, err, sizeof err);
     ok(c != NULL, "alloc λ-ω (phase_nodes %d): %s", nodes, err);
     if (!c) return;
     const whirl_system *s = whirl_colloc_system(c);
@@ -895,12 +903,7 @@ static int run_lw_mesh(int adapt_every, int clustered, double *rmax,
                        double *Tmax, double *hmin, size_t *nad) {
   const size_t ntst = 8, ncol = 3, m = 64;
   char err[256];
-  whirl_colloc_options o;
-  whirl_colloc_options_default(&o);
-  o.ntst = ntst;
-  o.ncol = ncol;
-  o.adapt_every = adapt_every;
-  whirl_colloc *c = whirl_colloc_alloc(&lamom, &o, err, sizeof err);
+  whirl_colloc *c = lw_alloc(ntst, ncol, adapt_every, 0, err, sizeof err);
   if (!c) return -1;
   double tau[9];
   for (size_t k = 0; k <= ntst; ++k)
