@@ -106,23 +106,22 @@ static void at_gauss(const whirl_colloc *c, colloc_scratch *s, const double *X,
   }
 }
 
+static int phase_at_nodes(whirl_colloc *c);
+
 /* Phase reference from the node values Xn: x_ref' at the Gauss points and
  * the phase row phase[j] = sum over the intervals holding node j of
  * h_i sum_c w_c l_k(σ_c) x_ref'(τ_{i,c}), so that the quadrature of
  * ∫ <x, x_ref'> dτ is <phase, X>. */
-static int phase_at_nodes(whirl_colloc *c);
-
 static void set_reference(whirl_colloc *c, const double *Xn) {
   const size_t n = c->n, m = c->ncol;
   double *dx = c->scr[0].dx;
   if (Xn != c->ref) memcpy(c->ref, Xn, c->nnodes * n * sizeof *c->ref);
-  memset(c->phase, 0, c->nnodes * n * sizeof *c->phase);
   if (c->phase_nodes && c->have_ref_par && c->fq < 0 && phase_at_nodes(c) == 0) {
     c->phase0 = 0.0; /* AUTO's ∫ <x − x_ref, x_ref'> */
     c->have_ref = 1;
     return;
   }
-  memset(c->phase, 0, c->nnodes * n * sizeof *c->phase);
+  memset(c->phase, 0, c->nnodes * n * sizeof *c->phase); /* whirl's rule */
   for (size_t i = 0; i < c->ntst; ++i) {
     for (size_t g = 0; g < m; ++g) {
       const double *dl = c->D + g * (m + 1), *l = c->L + g * (m + 1);
@@ -144,14 +143,6 @@ static void set_reference(whirl_colloc *c, const double *Xn) {
   c->have_ref = 1;
 }
 
-/* AUTO-07p's phase condition (periodic.f90 ICPS with bvp.f90 STUPBV and
- * the integral rule of solvebv.f90): ∫ <x − x_ref, x_ref'> by the weights
- * of the Lagrange integrals at the NCOL + 1 nodes of each interval, with
- * x_ref' = T f(x_ref) at those nodes (the model's vector field, where
- * whirl's own rule takes the reference polynomial's derivative at the
- * Gauss points).  The two agree to the collocation error; AUTO's orbits
- * take their phase along a branch from AUTO's.  0, else the model failed
- * at a node (whirl's rule then). */
 /* The weights of the Lagrange integrals on [0, 1] at the NCOL + 1 equally
  * spaced nodes (AUTO's WI; Gauss's rule is exact for them). */
 static void node_int_weights(const whirl_colloc *c, double *wi) {
@@ -163,10 +154,19 @@ static void node_int_weights(const whirl_colloc *c, double *wi) {
   }
 }
 
+/* AUTO-07p's phase condition (periodic.f90 ICPS with bvp.f90 STUPBV and
+ * the integral rule of solvebv.f90): ∫ <x − x_ref, x_ref'> by the weights
+ * of the Lagrange integrals at the NCOL + 1 nodes of each interval, with
+ * x_ref' = T f(x_ref) at those nodes (the model's vector field, where
+ * whirl's own rule takes the reference polynomial's derivative at the
+ * Gauss points).  The two agree to the collocation error; AUTO's orbits
+ * take their phase along a branch from AUTO's.  0, else the model failed
+ * at a node (whirl's rule then). */
 static int phase_at_nodes(whirl_colloc *c) {
   const size_t n = c->n, m = c->ncol, N = c->ntst;
   double wi[COLLOC_MAXCOL + 1];
   node_int_weights(c, wi);
+  memset(c->phase, 0, c->nnodes * n * sizeof *c->phase);
   double *f = c->scr[0].f;
   const double T = c->ref_T;
   for (size_t i = 0; i < N; ++i) {
@@ -1228,6 +1228,33 @@ int whirl_colloc_set_reference(whirl_colloc *c, const double *X) {
 
 /* ------------------------------------------------------------ Hopf start */
 
+/* AUTO's first phase condition from a Hopf point (STHOPF, PHASE = nodes):
+ * ∫ <x − x0, u'> by the nodes' weights, u' = −(a sin 2πτ + b cos 2πτ) the
+ * eigenfunction's derivative, exact.  The reference stays x0 + D (set by
+ * whirl's rule before), so phase0 = <phase, D> makes <phase, X − ref> +
+ * phase0 = <phase, X − x0>; and until the first accepted orbit sets the
+ * reference's parameters, a new mesh takes whirl's rule on x0 + D. */
+static void hopf_phase_at_nodes(whirl_colloc *c, const double *D, const double *a,
+                                const double *b) {
+  const size_t n = c->n, m = c->ncol;
+  double wi[COLLOC_MAXCOL + 1];
+  node_int_weights(c, wi);
+  memset(c->phase, 0, c->nnodes * n * sizeof *c->phase);
+  for (size_t i = 0; i < c->ntst; ++i) {
+    const double h = c->mesh[i + 1] - c->mesh[i];
+    for (size_t k = 0; k <= m; ++k) {
+      const double tau = c->mesh[i] + h * (double)k / (double)m;
+      const double cs = cos(2.0 * WHIRL_PI * tau), sn = sin(2.0 * WHIRL_PI * tau);
+      for (size_t r = 0; r < n; ++r)
+        c->phase[n * (i * m + k) + r] -= h * wi[k] * (a[r] * sn + b[r] * cs);
+    }
+  }
+  double s = 0.0;
+  for (size_t q = 0; q < c->nnodes * n; ++q) s += c->phase[q] * D[q];
+  c->phase0 = s;
+  c->have_ref_par = 0;
+}
+
 /* At a Hopf point x0 of the model (J = f_x(x0) has eigenvalues ±iω), the
  * periodic orbits are x0 + s Re(φ e^{2πiτ}) + O(s²) with period 2π/ω + O(s)
  * (Hopf's theorem; AUTO-07p starts IPS = 2 from an HB label the same way).
@@ -1332,28 +1359,8 @@ int whirl_colloc_hopf_start_at(whirl_colloc *c, const double *x0,
   D[c->nx - 1] = 0.0;
   D[c->nx] = 0.0;
   for (size_t q = 0; q < nd; ++q) c->ref_new[q] = X[q] + D[q];
-  if (c->phase_nodes) {
-    /* AUTO's first phase condition (STHOPF): ∫ <x − x0, u'> at the nodes,
-     * u' = −(a sin + b cos) the eigenfunction's derivative, exact */
-    double wi[COLLOC_MAXCOL + 1];
-    node_int_weights(c, wi);
-    memcpy(c->ref, X, nd * sizeof *c->ref);
-    memset(c->phase, 0, nd * sizeof *c->phase);
-    const size_t m = c->ncol;
-    for (size_t i = 0; i < c->ntst; ++i) {
-      const double h = c->mesh[i + 1] - c->mesh[i];
-      for (size_t k = 0; k <= m; ++k) {
-        const double tau = c->mesh[i] + h * (double)k / (double)m;
-        const double cs = cos(2.0 * WHIRL_PI * tau), sn = sin(2.0 * WHIRL_PI * tau);
-        for (size_t r = 0; r < n; ++r)
-          c->phase[n * (i * m + k) + r] -= h * wi[k] * (a[r] * sn + b[r] * cs);
-      }
-    }
-    c->phase0 = 0.0;
-    c->have_ref = 1;
-  } else {
-    set_reference(c, c->ref_new);
-  }
+  set_reference(c, c->ref_new); /* whirl's rule on x0 + D */
+  if (c->phase_nodes) hopf_phase_at_nodes(c, D, a, b);
   if (omega) *omega = w;
 done:
   if (rc != WHIRL_OK && rc != WHIRL_EINVAL)
