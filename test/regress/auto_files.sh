@@ -309,6 +309,10 @@ check $? "MX = fail (whirl's default): the same branch fails the run, exit $st: 
 st=$?
 [ "$st" = 2 ] && grep -q "neither fail nor label" "$tmp/kinkb.log" && [ ! -e "$tmp/kink.out/bad.out" ]
 check $? "MX = maybe: exit $st, '$(head -1 "$tmp/kinkb.log")', nothing written"
+(cd "$tmp/kink.out" && "$WHIRL" run kink.1.whirl --PHASE=sometimes --OUT=badp.out --quiet --no-plot > ../kinkp.log 2>&1)
+st=$?
+[ "$st" = 2 ] && grep -q "PHASE: 'sometimes' is neither gauss nor nodes" "$tmp/kinkp.log" && [ ! -e "$tmp/kink.out/badp.out" ]
+check $? "PHASE = sometimes: exit $st, '$(head -1 "$tmp/kinkp.log")', nothing written"
 
 # AUTO's parseB, parseS and parseD on b., s., d. of the stems $3... in
 # directory $1 (output in $2): the same labels in b. and s., each non-empty
