@@ -865,7 +865,7 @@ static int bvp_remap(double *const *v, size_t nv, const double *p, void *data) {
   colloc_basis_map_plan(b->ncol, N, b->old_mesh, b->mesh, b->map_idx, b->map_L);
   double *const own[2] = {b->ref, b->dref};
   colloc_basis_map_many(b->n, b->ncol, N, b->map_idx, b->map_L, b->mapscr, v, nv, own, 2,
-                        bvp_threads(b));
+                        bvp_threads(b) > 1 ? whirl_gov_current(&b->gov) : 1);
   ++b->adaptations;
   return 1;
 }

@@ -987,7 +987,8 @@ static int colloc_remap(double *const *v, size_t nv, const double *p,
   const int with_ref = c->aut && c->have_ref;
   double *const own[1] = {c->ref};
   colloc_basis_map_many(c->n, m, N, c->map_idx, c->map_L, c->old_X, v, nv, own,
-                        (size_t)with_ref, colloc_threads(c));
+                        (size_t)with_ref,
+                        colloc_threads(c) > 1 ? whirl_gov_current(&c->gov_F) : 1);
   if (with_ref) set_reference(c, c->ref);
   ++c->adaptations;
   return 1;

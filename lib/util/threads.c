@@ -37,7 +37,7 @@ int whirl_threads_resolve(int threads) {
  * threads where one is faster (demo ab's orbits, NTST 70 of two states:
  * 0.17 s against 0.12 s) a first span of 0.2 s ran all of it on two */
 enum { GOV_PROBE = 4 };
-static const double gov_span0 = 0.03, gov_span_max = 2.0;
+static const double gov_span0 = 0.03, gov_span_max = 2.0, gov_stall = 1e-3;
 
 static double gov_now(void) {
   struct timespec ts;
@@ -54,12 +54,41 @@ void whirl_gov_init(whirl_gov *g, int nmax) {
   g->start = 0.0;
   g->until = -1.0; /* the first call sets it */
   g->t1 = g->tn = 0.0;
+  g->stalls = 0;
   g->clock = gov_now;
+}
+
+/* A core busy elsewhere, as any governor of the process last saw it: a
+ * call on nmax threads stalled by a scheduler slice during a probe.  Until
+ * busy_until (the governors' clock, in nanoseconds; 0: never seen) every
+ * governor runs one thread and holds its probes back: each probe's calls
+ * on nmax threads cost a slice, and their threads then spin (OpenMP's
+ * wait policy) on the core the others need; a process of four governed
+ * loops probed four times as often as one. */
+static long long busy_until_ns;
+
+static double busy_until(void) {
+  return 1e-9 * (double)__atomic_load_n(&busy_until_ns, __ATOMIC_RELAXED);
+}
+
+static void note_busy(double until) {
+  __atomic_store_n(&busy_until_ns, (long long)(1e9 * until), __ATOMIC_RELAXED);
+}
+
+/* A call on nmax threads of dt seconds stalled: over a scheduler slice's
+ * scale (1 ms) beyond twice a call on one thread (the last probe's mean;
+ * an idle core wakes in tens of microseconds) */
+static int gov_stalled(const whirl_gov *g, double dt) {
+  return g->t1 > 0.0 && dt > 2.0 * g->t1 / GOV_PROBE + gov_stall;
 }
 
 int whirl_gov_begin(whirl_gov *g) {
   if (g->nmax <= 1) return 1;
   g->start = g->clock();
+  if (g->phase == 0 && g->use > 1 && g->start < busy_until()) {
+    g->use = 1;
+    if (g->until < busy_until()) g->until = busy_until();
+  }
   return g->phase == 1 ? 1 : g->phase == 2 ? g->nmax : g->use;
 }
 
@@ -74,12 +103,31 @@ static void gov_decide(whirl_gov *g, double now) {
   g->until = now + g->span;
 }
 
+int whirl_gov_current(const whirl_gov *g) {
+  if (g->nmax <= 1 || g->clock() < busy_until()) return 1;
+  return g->use;
+}
+
+/* a stall on nmax threads during a probe: one thread for the longest
+ * span, and every governor of the process told */
+static void gov_busy(whirl_gov *g, double now) {
+  g->use = 1;
+  g->phase = 0;
+  g->span = gov_span_max;
+  g->until = now + gov_span_max;
+  note_busy(g->until);
+}
+
 void whirl_gov_end(whirl_gov *g) {
   if (g->nmax <= 1) return;
   const double now = g->clock(), dt = now - g->start;
   if (g->phase == 0) {
     if (g->until < 0.0) g->until = now + g->span;
-    else if (now >= g->until) g->phase = 1, g->left = GOV_PROBE, g->t1 = g->tn = 0.0;
+    else if (now < busy_until()) g->until = busy_until() > g->until ? busy_until() : g->until;
+    /* the probe now: its time, or a call on nmax threads stalled (a core
+     * busy since the last probe: the probe says whether it stays busy) */
+    if (now >= g->until || (g->use > 1 && gov_stalled(g, dt)))
+      g->phase = 1, g->left = GOV_PROBE, g->t1 = g->tn = 0.0;
     return;
   }
   if (g->phase == 1) {
@@ -87,15 +135,24 @@ void whirl_gov_end(whirl_gov *g) {
     if (--g->left == 0) g->phase = 2, g->left = GOV_PROBE + 1;
     return;
   }
+  /* a stall: one thread; the process told when the last probe stalled
+   * too (the machine's own noise stalls a call now and then: 1-3 ms in
+   * a few of a run's probes on an idle 2-vCPU machine; a busy core
+   * stalls 4-11 ms in every probe) */
+  if (gov_stalled(g, dt)) {
+    if (g->stalls++ > 0) gov_busy(g, now);
+    else g->tn = g->t1 + dt, gov_decide(g, now);
+    return;
+  }
   /* the first call on nmax threads wakes them: not timed, unless it took
    * ten times the whole one-thread probe (a core busy elsewhere: a
    * scheduler slice, 10 ms, where the probe took 0.2 ms), which decides */
   if (g->left == GOV_PROBE + 1) {
     --g->left;
-    if (dt > 10.0 * g->t1) g->tn = dt, gov_decide(g, now);
+    if (dt > 10.0 * g->t1) g->stalls = 0, g->tn = dt, gov_decide(g, now);
     return;
   }
   g->tn += dt;
   /* nmax threads already slower than the whole one-thread probe: done */
-  if (--g->left == 0 || g->tn > g->t1) gov_decide(g, now);
+  if (--g->left == 0 || g->tn > g->t1) g->stalls = 0, gov_decide(g, now);
 }

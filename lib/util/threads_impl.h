@@ -26,7 +26,11 @@ int whirl_threads_resolve(int threads);
  * So the governor times the calls: after a first span on nmax (0.03 s), a
  * few on one thread and a few on nmax (cut short once slower), and the
  * faster count runs until the next probe, the probes rarer (0.03 s to 2 s
- * apart) while the choice stands.  The loops' results do not depend on
+ * apart) while the choice stands.  A call on nmax threads stalled by a
+ * scheduler slice (over 1 ms beyond twice a one-thread call) probes at
+ * once; stalls in two probes in a row tell every governor of the process
+ * to run one thread for 2 s (demo man beside a busy core: 16.5 s, 9.4 s
+ * with the note, 8.2 s on one thread).  The loops' results do not depend on
  * their threads (they are written so), so neither do the governor's
  * choices change any value.
  * Usage: n = whirl_gov_begin(&g); the loop on n threads; whirl_gov_end(&g). */
@@ -39,6 +43,7 @@ typedef struct whirl_gov {
   double start;       /* this call's start (monotonic seconds) */
   double until;       /* the next probe's time */
   double t1, tn;      /* the probes' times */
+  unsigned stalls;    /* the last probes in a row with a stalled call */
   double (*clock)(void); /* monotonic seconds; init sets the system's (a
                           * test sets its own, for times it controls) */
 } whirl_gov;
@@ -46,5 +51,10 @@ typedef struct whirl_gov {
 void whirl_gov_init(whirl_gov *g, int nmax);
 int whirl_gov_begin(whirl_gov *g);
 void whirl_gov_end(whirl_gov *g);
+
+/* The threads g's calls run on now (1 while a core is busy elsewhere),
+ * untimed: for a loop too rare to probe (a mesh adaptation's maps), on
+ * the count its system's governed loops run. */
+int whirl_gov_current(const whirl_gov *g);
 
 #endif

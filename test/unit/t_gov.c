@@ -7,6 +7,9 @@
  * clock member), not the machine's: on a loaded machine nanosleep's
  * 100 us took 300 us now and then, a probe misjudged, and the test failed
  * in CI (2026-12-04) on what the machine did, not what the governor does.
+ * A stall on nmax threads (a core busy elsewhere) is noted for every
+ * governor of the process for 2 s of that clock: a scenario that follows
+ * one lets the clock run on idle first (idle()).
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <stdio.h>
 
@@ -19,6 +22,9 @@ static double fake_seconds;
 static double now(void) { return fake_seconds; }
 
 static void sleep_us(double us) { fake_seconds += 1e-6 * us; }
+
+/* the machine idle for `seconds`: no call (a busy note runs out) */
+static void idle(double seconds) { fake_seconds += seconds; }
 
 static void gov_init(whirl_gov *g, int nmax) {
   whirl_gov_init(g, nmax);
@@ -64,6 +70,7 @@ int main(void) {
   ok(many * 10 < calls, "slower on two threads: %ld of %ld calls on two (< 10 %%)", many, calls);
 
   /* two threads 10x faster: two run, the probes on one thread a few */
+  idle(3.0);
   gov_init(&g, 2);
   run(&g, 0.5, 1000, 100, &many, &calls);
   ok(g.use == 2, "faster on two threads: the governor runs two (use %d)", g.use);
@@ -72,6 +79,7 @@ int main(void) {
 
   /* the faster count changes: the next probe (within the span, 0.03 s at
    * first, doubled while the choice stands) changes the choice */
+  idle(3.0);
   gov_init(&g, 4);
   run(&g, 0.5, 1000, 100, &many, &calls);
   ok(g.use == 4, "faster on four threads at first: use %d", g.use);
@@ -79,6 +87,59 @@ int main(void) {
   ok(g.use == 1, "then slower on four: the governor went back to one (use %d)", g.use);
   run(&g, 1.5, 1000, 100, &many, &calls);
   ok(g.use == 4, "then faster again: four (use %d)", g.use);
+
+  /* a stall on two threads (5 ms where one thread takes 0.1 ms: a core
+   * busy elsewhere) in one loop's probe: every governor of the process
+   * runs one thread until the note runs out (2 s), then probes again;
+   * before 2026-12-08 each loop probed on its own (four governors in a
+   * run of demo fnc: 2.19 s beside a busy core, 1.22 s on one thread) */
+  whirl_gov h;
+  idle(3.0);
+  gov_init(&g, 2);
+  gov_init(&h, 2);
+  run(&g, 0.5, 1000, 100, &many, &calls);
+  ok(g.use == 2 && whirl_gov_begin(&h) == 2 && whirl_gov_current(&h) == 2,
+     "before a stall: two threads on both loops (use %d)", g.use);
+  whirl_gov_end(&h);
+  run(&g, 2.5, 100, 5000, &many, &calls);
+  ok(g.use == 1 && many <= 4, "a stalled loop: one thread (use %d), %ld of %ld calls on two",
+     g.use, many, calls);
+  int on_two = 0;
+  for (int i = 0; i < 100; ++i) {
+    on_two += whirl_gov_begin(&h) > 1;
+    sleep_us(1000);
+    whirl_gov_end(&h);
+  }
+  ok(on_two == 0 && whirl_gov_current(&h) == 1,
+     "the other loop while the stall is noted: %d of 100 calls on two, current %d", on_two,
+     whirl_gov_current(&h));
+  idle(3.0);
+  ok(whirl_gov_current(&h) == 1 && whirl_gov_current(&g) == 1,
+     "the note run out: the loops keep their last choice until their probes");
+  run(&h, 0.5, 1000, 100, &many, &calls);
+  ok(h.use == 2 && whirl_gov_current(&h) == 2, "the machine idle again: two threads (use %d)",
+     h.use);
+
+  /* a stall in the middle of a span (the machine loaded since the last
+   * probe) probes at once, not at the span's end (2 s) */
+  idle(3.0);
+  gov_init(&g, 2);
+  run(&g, 3.0, 1000, 100, &many, &calls);
+  run(&g, 0.05, 100, 5000, &many, &calls);
+  ok(g.use == 1 && many <= 3, "loaded mid-span: one thread after %ld calls on two", many);
+
+  /* one slow call on two threads (page faults, not a busy core): the
+   * probe it starts finds two faster, and two run on */
+  idle(3.0);
+  gov_init(&g, 2);
+  run(&g, 3.0, 1000, 100, &many, &calls);
+  whirl_gov_begin(&g);
+  sleep_us(5000);
+  whirl_gov_end(&g);
+  run(&g, 0.5, 1000, 100, &many, &calls);
+  ok(g.use == 2 && whirl_gov_current(&g) == 2 && (calls - many) * 10 < calls,
+     "one slow call on two threads: two run on (use %d, %ld of %ld on one)", g.use,
+     calls - many, calls);
 
   /* one thread asked for: never more, no probing */
   gov_init(&g, 1);
