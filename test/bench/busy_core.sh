@@ -15,10 +15,13 @@ set -u
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "${top_srcdir:-$here/../..}" && pwd)
 demos=${AUTO_DEMOS:-$top/../shared/auto-07p/demos}
+[ -d "$demos" ] && demos=$(cd "$demos" && pwd)
 demo=${1:-man}
 repeat=${2:-3}
 WHIRL=${WHIRL:-${top_builddir:-$top}/drivers/whirl}
+case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
 BASE=${BASE:-}
+case $BASE in /* | "") ;; *) BASE="$(pwd)/$BASE" ;; esac
 [ -d "$demos/$demo" ] || { echo "# no AUTO-07p demo $demo in $demos"; exit 0; }
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-busy.XXXXXX") || exit 1
 busy=
@@ -31,8 +34,10 @@ median() { sort -g | awk '{ v[NR] = $1 } END { printf "%.2f", NR % 2 ? v[(NR + 1
 one() {
   name=$1; shift
   rm -rf "$tmp/o"
-  /usr/bin/time -f '%e %U' -o "$tmp/t" "$@" auto "$demos/$demo" --quiet --out="$tmp/o" \
-    > /dev/null 2>&1
+  # in the scratch directory: an equations file may write there (man's
+  # FUNC writes fort.10)
+  (cd "$tmp" && /usr/bin/time -f '%e %U' -o "$tmp/t" "$@" auto "$demos/$demo" --quiet \
+    --out="$tmp/o" > /dev/null 2>&1)
   cut -d' ' -f1 "$tmp/t" >> "$tmp/$name.wall"
   cut -d' ' -f2 "$tmp/t" >> "$tmp/$name.user"
 }
