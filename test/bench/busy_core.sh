@@ -8,6 +8,8 @@
 # each REPEAT times (default 3) in turn, first with the machine as it is,
 # then beside a busy loop (a shell's `while :`, one core); medians, and
 # the user (CPU) seconds, which the threads' spinning shows in.
+# SCRIPT=1 runs the demo's own script (`whirl auto DEMO --script`, which
+# needs WHIRL_PYTHON: fnc runs only so).
 # Each run on a fresh output directory; the demo from
 # ../shared/auto-07p/demos unless AUTO_DEMOS is set.  Not a test.
 # SPDX-License-Identifier: BSD-3-Clause
@@ -21,6 +23,7 @@ repeat=${2:-3}
 WHIRL=${WHIRL:-${top_builddir:-$top}/drivers/whirl}
 case $WHIRL in /*) ;; *) WHIRL="$(pwd)/$WHIRL" ;; esac
 BASE=${BASE:-}
+wargs=; [ -n "${SCRIPT:-}" ] && wargs=--script
 case $BASE in /* | "") ;; *) BASE="$(pwd)/$BASE" ;; esac
 [ -d "$demos/$demo" ] || { echo "# no AUTO-07p demo $demo in $demos"; exit 0; }
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/whirl-busy.XXXXXX") || exit 1
@@ -36,7 +39,7 @@ one() {
   rm -rf "$tmp/o"
   # in the scratch directory: an equations file may write there (man's
   # FUNC writes fort.10)
-  (cd "$tmp" && /usr/bin/time -f '%e %U' -o "$tmp/t" "$@" auto "$demos/$demo" --quiet \
+  (cd "$tmp" && /usr/bin/time -f '%e %U' -o "$tmp/t" "$@" auto "$demos/$demo" $wargs --quiet \
     --out="$tmp/o" > /dev/null 2>&1)
   cut -d' ' -f1 "$tmp/t" >> "$tmp/$name.wall"
   cut -d' ' -f2 "$tmp/t" >> "$tmp/$name.user"
@@ -57,7 +60,7 @@ measure() {
   done
 }
 
-echo "# $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); load $(cut -d' ' -f1-3 /proc/loadavg); demo $demo, medians of $repeat"
+echo "# $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); load $(cut -d' ' -f1-3 /proc/loadavg); demo $demo${wargs:+ $wargs}, medians of $repeat"
 printf 'machine\tbuild\twall_s\tuser_s\n'
 measure idle
 # the busy core: an hour at most, should this script be killed unawares
