@@ -85,9 +85,10 @@ static int gov_stalled(const whirl_gov *g, double dt) {
 int whirl_gov_begin(whirl_gov *g) {
   if (g->nmax <= 1) return 1;
   g->start = g->clock();
-  if (g->phase == 0 && g->use > 1 && g->start < busy_until()) {
+  const double busy = busy_until();
+  if (g->phase == 0 && g->use > 1 && g->start < busy) {
     g->use = 1;
-    if (g->until < busy_until()) g->until = busy_until();
+    if (g->until < busy) g->until = busy;
   }
   return g->phase == 1 ? 1 : g->phase == 2 ? g->nmax : g->use;
 }
@@ -122,8 +123,9 @@ void whirl_gov_end(whirl_gov *g) {
   if (g->nmax <= 1) return;
   const double now = g->clock(), dt = now - g->start;
   if (g->phase == 0) {
+    const double busy = busy_until();
     if (g->until < 0.0) g->until = now + g->span;
-    else if (now < busy_until()) g->until = busy_until() > g->until ? busy_until() : g->until;
+    else if (busy > g->until) g->until = busy; /* no probe while the note lasts */
     /* the probe now: its time, or a call on nmax threads stalled (a core
      * busy since the last probe: the probe says whether it stays busy) */
     if (now >= g->until || (g->use > 1 && gov_stalled(g, dt)))
