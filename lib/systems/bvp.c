@@ -388,6 +388,23 @@ static double *target_global_rows(const whirl_bvp *b, const fill_target *T, size
   return T->B + g * n * T->wc + (m + 1) * n + j;
 }
 
+/* A Gauss point's n collocation rows of the node columns in a dense block
+ * (rows R of wc entries, target_node_rows's columns: nodes 1..NCOL-1,
+ * then node 0, then node NCOL): entry (r, node k, q) is −h l_k J[r][q]
+ * plus l_k' where q = r, J column-major.  Row by row, so the writes are
+ * contiguous; the same products as the sparse fill's. */
+static void node_rows_dense(const whirl_bvp *b, const double *J, const double *lv,
+                            const double *dv, double h, double *R, size_t wc) {
+  const size_t n = b->n, m = b->ncol;
+  for (size_t r = 0; r < n; ++r, R += wc)
+    for (size_t k = 0; k <= m; ++k) {
+      double *v = R + (k == 0 ? (m - 1) * n : k == m ? m * n : (k - 1) * n);
+      const double a = -h * lv[k];
+      for (size_t q = 0; q < n; ++q) v[q] = a * J[n * q + r];
+      v[r] += dv[k];
+    }
+}
+
 /* −h df/dp_k at the current Gauss point into T's p_k column and T->fk
  * (central differences, or the model's jac_p: bvp_Fp's numbers). */
 static int fill_fk(const whirl_bvp *b, bvp_scratch *s, const fill_target *T, size_t i,
@@ -427,13 +444,16 @@ static int fill_interval(const whirl_bvp *b, bvp_scratch *s, const double *X,
     *what = "the model's Jacobian";
     if ((rc = model_fx(b, s, t, b->pt)) != 0) return rc;
     const double *lv = b->L + g * (m + 1), *dv = b->D + g * (m + 1);
-    for (size_t k = 0; k <= m; ++k)
-      for (size_t q = 0; q < n; ++q) {
-        double *v = target_node_rows(b, T, i, g, k, q, &st);
-        const double *Jq = s->J + n * q;
-        for (size_t r = 0; r < n; ++r) v[r * st] = -h * lv[k] * Jq[r];
-        v[q * st] += dv[k];
-      }
+    if (T->B)
+      node_rows_dense(b, s->J, lv, dv, h, T->B + g * n * T->wc, T->wc);
+    else
+      for (size_t k = 0; k <= m; ++k)
+        for (size_t q = 0; q < n; ++q) {
+          double *v = target_node_rows(b, T, i, g, k, q, &st);
+          const double *Jq = s->J + n * q;
+          for (size_t r = 0; r < n; ++r) v[r * st] = -h * lv[k] * Jq[r];
+          v[q * st] += dv[k];
+        }
     *what = "the model's parameter derivative";
     /* AUTO's forward differences share f at the point (s->fm), and so
      * does F's row (the residual's evaluation, AUTO's SETUBV) */
@@ -787,7 +807,10 @@ static int alloc_scratch(const whirl_bvp *b, bvp_scratch *s) {
   const size_t nptr = sizeof sizes / sizeof sizes[0];
   size_t tot = 0;
   for (size_t k = 0; k < nptr; ++k) tot += sizes[k] + 1;
-  if (!(s->block = calloc(tot, sizeof *s->block))) return -1;
+  /* lines of its own: the threads write their scratch at every Gauss point */
+  if (!(s->block = whirl_thread_alloc(1, whirl_thread_stride(tot, sizeof *s->block),
+                                      sizeof *s->block)))
+    return -1;
   double *q = s->block;
   for (size_t k = 0; k < nptr; ++k) {
     *ptrs[k] = q;

@@ -624,18 +624,20 @@ static int alloc_arrays(whirl_colloc *c) {
   if (!c->scr) return -1;
   for (int t = 0; t < c->nthreads; ++t) {
     colloc_scratch *s = &c->scr[t];
-    s->xc = malloc(n * sizeof *s->xc);
-    s->dx = malloc(n * sizeof *s->dx);
-    s->f = malloc(n * sizeof *s->f);
-    s->f2 = malloc(n * sizeof *s->f2);
-    s->J = malloc(n * n * sizeof *s->J);
-    s->Jpar = malloc(n * np * sizeof *s->Jpar);
-    s->work = malloc(2 * n * sizeof *s->work);
-    s->pw = malloc(np * sizeof *s->pw);
-    s->dT = malloc(n * sizeof *s->dT);
-    if (!s->xc || !s->dx || !s->f || !s->f2 || !s->J || !s->Jpar ||
-        !s->work || !s->pw || !s->dT)
-      return -1;
+    double **ptrs[] = {&s->xc, &s->dx, &s->f, &s->f2, &s->J, &s->Jpar, &s->work, &s->pw, &s->dT};
+    const size_t sizes[] = {n, n, n, n, n * n, n * np, 2 * n, np, n};
+    size_t tot = 0;
+    for (size_t q = 0; q < sizeof sizes / sizeof *sizes; ++q) tot += sizes[q];
+    /* one block a thread, on lines of its own (the threads write it at
+     * every Gauss point) */
+    s->block = whirl_thread_alloc(1, whirl_thread_stride(tot, sizeof *s->block),
+                                  sizeof *s->block);
+    if (!s->block) return -1;
+    double *q = s->block;
+    for (size_t k = 0; k < sizeof sizes / sizeof *sizes; ++k) {
+      *ptrs[k] = q;
+      q += sizes[k];
+    }
   }
   c->pq = malloc(np * sizeof *c->pq);
   c->pF = malloc(np * sizeof *c->pF);
@@ -798,11 +800,7 @@ void whirl_colloc_free(whirl_colloc *c) {
   free(c->map_idx);
   free(c->map_L);
   free(c->ref_new);
-  for (int t = 0; c->scr && t < c->nthreads; ++t) {
-    colloc_scratch *s = &c->scr[t];
-    double *a[] = {s->xc, s->dx, s->f, s->f2, s->J, s->Jpar, s->work, s->pw, s->dT};
-    for (size_t q = 0; q < sizeof a / sizeof *a; ++q) free(a[q]);
-  }
+  for (int t = 0; c->scr && t < c->nthreads; ++t) free(c->scr[t].block);
   free(c->scr);
   free(c->pq);
   free(c->pF);

@@ -21,6 +21,7 @@
  * the differences' work, a parameter copy and dF/dT of the n rows. */
 typedef struct colloc_scratch {
   double *xc, *dx, *f, *f2, *J, *Jpar, *work, *pw, *dT;
+  double *block; /* all of the above, on cache lines of the thread's own */
 } colloc_scratch;
 
 /* The parallel loops over mesh intervals are worth their start (a few

@@ -79,9 +79,12 @@ struct cond_ws {
                   * loops take with the same static partition: each thread
                   * then reads the interval blocks it wrote, from its own
                   * cache */
-  double *ysc;   /* nth (2n + ng): each thread's back values in the solve */
-  size_t nlab;   /* max(nm, 2n, nf) */
-  int *lab;      /* scratch labels, nlab per thread (thread 0's first) */
+  double *ysc;   /* each thread's back values in the solve (2n + ng), a
+                    slice of ystride a thread (whirl_thread_alloc) */
+  size_t ystride;
+  size_t nlab;   /* max(nm, 2n, nf), rounded up to whole cache lines */
+  int *lab;      /* scratch labels, nlab per thread (thread 0's first;
+                    whirl_thread_alloc: no line shared between threads) */
   det_acc *idet; /* NTST: the product of each interval's pivots */
   int *irc;      /* NTST: each interval's gepp status */
   int *frc;      /* NTST: each interval's fill status (fill_one) */
@@ -153,7 +156,8 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
   w->bc = n * (N + 1) + w->ng;
   size_t nlab = w->nm > w->nf ? w->nm : w->nf;
   if (2 * n > nlab) nlab = 2 * n;
-  w->nlab = nlab;
+  w->nlab = whirl_thread_stride(nlab, sizeof *w->lab);
+  w->ystride = whirl_thread_stride(w->nf, sizeof *w->ysc);
   w->nth = s->nthreads > 1 ? s->nthreads : 1;
   whirl_gov_init(&w->gov, w->nth);
   const size_t nth = (size_t)w->nth;
@@ -169,7 +173,7 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
   w->B = malloc(w->nb * w->bc * sizeof *w->B);
   w->F = malloc(w->nf * w->nf * sizeof *w->F);
   w->fpiv = malloc(w->nf * sizeof *w->fpiv);
-  w->lab = malloc(nth * nlab * sizeof *w->lab);
+  w->lab = whirl_thread_alloc(nth, w->nlab, sizeof *w->lab);
   w->idet = malloc(N * sizeof *w->idet);
   w->irc = malloc(N * sizeof *w->irc);
   w->frc = malloc(N * sizeof *w->frc);
@@ -189,7 +193,7 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
   w->mblk = malloc((2 * n * n + 2 * n) * sizeof *w->mblk);
   w->mpiv = malloc(n * sizeof *w->mpiv);
   w->mlab = malloc(n * sizeof *w->mlab);
-  w->ysc = malloc(nth * w->nf * sizeof *w->ysc);
+  w->ysc = whirl_thread_alloc(nth, w->ystride, sizeof *w->ysc);
   w->bsrc = calloc(w->nb, sizeof *w->bsrc);
   w->bdone = calloc(w->nb, sizeof *w->bdone);
   w->nth_last = 1;
@@ -739,7 +743,7 @@ static void solve1(cond_ws *w, double *b) {
   }
 #pragma omp parallel for num_threads(nth) schedule(static) if (nth > 1)
   for (size_t i = 0; i < N; ++i) {
-    double *y = w->ysc + (size_t)whirl_thread_num() * nf;
+    double *y = w->ysc + (size_t)whirl_thread_num() * w->ystride;
     whirl_copy_short(y, xs + n * i, 2 * n);
     whirl_copy_short(y + 2 * n, g, ng);
     gepp_back(w->W + i * wr * wc, wc, ni, 2 * n + ng, w->loc + i * wr, y,

@@ -2,6 +2,8 @@
  * SPDX-License-Identifier: BSD-3-Clause */
 #include "util/threads_impl.h"
 
+#include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #ifdef _OPENMP
@@ -25,6 +27,19 @@ int whirl_threads_resolve(int threads) {
   (void)threads;
   return 1;
 #endif
+}
+
+size_t whirl_thread_stride(size_t len, size_t size) {
+  const size_t per = WHIRL_CACHE_LINE / size;
+  return (len + per - 1) / per * per + (len ? 0 : per);
+}
+
+void *whirl_thread_alloc(size_t nth, size_t stride, size_t size) {
+  /* a whole number of lines, as C11's aligned_alloc asks */
+  const size_t bytes = (nth ? nth : 1) * (stride ? stride * size : WHIRL_CACHE_LINE);
+  void *p = aligned_alloc(WHIRL_CACHE_LINE, bytes);
+  if (p) memset(p, 0, bytes);
+  return p;
 }
 
 /* ------------------------------------------------------------ governor */

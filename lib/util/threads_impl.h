@@ -4,6 +4,8 @@
 #ifndef WHIRL_THREADS_IMPL_H
 #define WHIRL_THREADS_IMPL_H
 
+#include <stddef.h>
+
 /* The most threads a loop of the library uses (options beyond are cut). */
 #define WHIRL_MAX_THREADS 256
 
@@ -15,6 +17,18 @@ int whirl_thread_num(void);
  * WHIRL_MAX_THREADS), 0 as many as OpenMP offers (OMP_NUM_THREADS, else
  * the processors), < 0 or no OpenMP: 1. */
 int whirl_threads_resolve(int threads);
+
+/* Per-thread slices of one array, each starting on a cache line of its
+ * own: two threads writing neighbouring slices would otherwise share the
+ * line between them and pass it back and forth at every write (false
+ * sharing; Intel's optimisation manual, 64-byte lines on x86-64).
+ * whirl_thread_stride: len elements of size bytes rounded up to whole
+ * lines, in elements (size must divide 64).  whirl_thread_alloc: nth
+ * slices of stride elements, zeroed, 64-byte aligned, released by free();
+ * NULL when out of memory. */
+#define WHIRL_CACHE_LINE 64
+size_t whirl_thread_stride(size_t len, size_t size);
+void *whirl_thread_alloc(size_t nth, size_t stride, size_t size);
 
 /* A parallel loop's governor: how many of its nmax threads the next call
  * of the loop runs on.  The loops of the library are short (a residual or

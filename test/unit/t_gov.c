@@ -11,7 +11,9 @@
  * governor of the process for 2 s of that clock: a scenario that follows
  * one lets the clock run on idle first (idle()).
  * SPDX-License-Identifier: BSD-3-Clause */
+#include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "util/threads_impl.h"
 #include "tap.h"
@@ -150,5 +152,20 @@ int main(void) {
     whirl_gov_end(&g);
   }
   ok(most == 1 && g.nmax == 1, "one thread asked: every call on one (most %d)", most);
+
+  /* per-thread slices on cache lines of their own (no false sharing) */
+  const size_t sd = whirl_thread_stride(11, sizeof(double)), si = whirl_thread_stride(12, sizeof(int));
+  const size_t s0 = whirl_thread_stride(0, sizeof(double)), s8 = whirl_thread_stride(8, sizeof(double));
+  ok(sd == 16 && si == 16 && s8 == 8 && s0 == 8,
+     "slice strides in whole lines: 11 doubles %zu, 12 ints %zu, 8 doubles %zu, none %zu", sd, si,
+     s8, s0);
+  double *slices = whirl_thread_alloc(3, sd, sizeof *slices);
+  int zero = slices != NULL;
+  for (size_t e = 0; zero && e < 3 * sd; ++e) zero = slices[e] == 0.0;
+  const uintptr_t a0 = (uintptr_t)slices, a1 = (uintptr_t)(slices + sd);
+  ok(slices && a0 % 64 == 0 && a1 % 64 == 0 && zero,
+     "per-thread slices: every slice starts a 64-byte line, zeroed (%#lx, %#lx)",
+     (unsigned long)a0, (unsigned long)a1);
+  free(slices);
   return done_testing();
 }
