@@ -36,6 +36,15 @@
  * multipliers (Fairgrieve & Jepson, SIAM J. Numer. Anal. 28 (1991) 1446,
  * discuss its accuracy; fine for moderate multipliers).
  *
+ * Threads: the intervals of step 1 (and of a solve's forward and back
+ * substitutions) are taken in order, a few at a time, by the threads of
+ * a governed loop; the main thread runs the chain of step 2 behind them,
+ * link j once interval j is done, between intervals of its own (AUTO-07p
+ * runs each thread's part of the mesh, then a coarse system: other
+ * arithmetic on other thread counts).  Each link and each interval does
+ * the same operations in the same order on any number of threads, so the
+ * results are the same bytes.
+ *
  * Blocks are row-major: the eliminations work on rows.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
@@ -76,9 +85,7 @@ struct cond_ws {
   int nth;       /* threads of the loops over the intervals */
   whirl_gov gov; /* condense_intervals' threads of those (threads_impl.h) */
   int nth_last;  /* the threads of the last condensation, which the solves'
-                  * loops take with the same static partition: each thread
-                  * then reads the interval blocks it wrote, from its own
-                  * cache */
+                  * loops take too */
   double *ysc;   /* each thread's back values in the solve (2n + ng), a
                     slice of ystride a thread (whirl_thread_alloc) */
   size_t ystride;
@@ -86,6 +93,16 @@ struct cond_ws {
   int *lab;      /* scratch labels, nlab per thread (thread 0's first;
                     whirl_thread_alloc: no line shared between threads) */
   det_acc *idet; /* NTST: the product of each interval's pivots */
+  unsigned char *done; /* NTST: interval i condensed (step 1's loop on
+                        * several threads, read by the chain of step 2
+                        * that follows it on the main thread) */
+  size_t next;   /* the next interval a thread of that loop takes (and of
+                  * the solve's loops) */
+  size_t low;    /* the solve's back substitution: the lowest mesh point
+                  * known so far (NTST: none) */
+  double *cpv;   /* (NTST − 1) n: the pivots of step 2, multiplied into
+                  * det_c after the intervals' (the serial order) */
+  int *clab;     /* 2n: the labels step 2 carries from block to block */
   int *irc;      /* NTST: each interval's gepp status */
   int *frc;      /* NTST: each interval's fill status (fill_one) */
   int *prow, *pcol; /* nx + 1: M's rows and columns in elimination order */
@@ -127,7 +144,8 @@ void cond_free(cond_ws *w) {
                w->B,    w->F,    w->fpiv, w->lab,  w->prow, w->pcol, w->mark,
                w->fk,   w->work, w->loc,  w->ploc, w->xs,   w->bb,   w->tmp,
                w->Xf,   w->pf,   w->slab, w->mblk, w->mpiv, w->mlab,
-               w->idet, w->irc,  w->frc,  w->ysc,  w->bsrc, w->bdone};
+               w->idet, w->irc,  w->frc,  w->ysc,  w->bsrc, w->bdone,
+               w->done, w->cpv,  w->clab};
   for (size_t i = 0; i < sizeof p / sizeof *p; ++i) free(p[i]);
   free(w);
 }
@@ -196,13 +214,17 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
   w->ysc = whirl_thread_alloc(nth, w->ystride, sizeof *w->ysc);
   w->bsrc = calloc(w->nb, sizeof *w->bsrc);
   w->bdone = calloc(w->nb, sizeof *w->bdone);
+  w->done = malloc(N * sizeof *w->done);
+  w->cpv = malloc((N * n + 1) * sizeof *w->cpv);
+  w->clab = malloc(2 * n * sizeof *w->clab);
   w->nth_last = 1;
   if (!w->gcol || !w->blab || !w->W || !w->wpiv || !w->wlab || !w->P ||
       !w->ppiv || !w->B || !w->F || !w->fpiv || !w->lab || !w->prow ||
       !w->pcol || !w->mark || !w->fk || !w->work || !w->loc || !w->ploc ||
       !w->xs || !w->bb || !w->tmp || !w->Xf || !w->pf || !w->slab ||
       !w->mblk || !w->mpiv || !w->mlab || !w->idet || !w->irc ||
-      !w->frc || !w->ysc || !w->bsrc || !w->bdone) {
+      !w->frc || !w->ysc || !w->bsrc || !w->bdone || !w->done || !w->cpv ||
+      !w->clab) {
     cond_free(w);
     return NULL;
   }
@@ -252,10 +274,12 @@ static void det_times(det_acc *d, const det_acc *a) {
  * Whole rows are swapped (LAPACK's convention: P A = L U, apply all the
  * swaps first when solving); lab[np] follows the swaps.  The diagonal of U
  * is stored as its reciprocal (the solves multiply).  Multiplies the
- * pivots into *det; *nswaps (may be NULL) the number of row swaps.  Returns 0, or 1 at a zero pivot column (exactly
+ * pivots into *det, or with pv stores them in pv[ne] (the caller
+ * multiplies them in later, in its order); *nswaps (may be NULL) the
+ * number of row swaps.  Returns 0, or 1 at a zero pivot column (exactly
  * singular), or 2 at a non-finite pivot. */
 static int gepp(double *A, size_t ld, size_t np, size_t nextra, size_t ne,
-                int *piv, int *lab, det_acc *det, int *nswaps) {
+                int *piv, int *lab, det_acc *det, double *pv, int *nswaps) {
   int swaps = 0;
   for (size_t c = 0; c < ne; ++c) {
     size_t pr = c;
@@ -281,7 +305,10 @@ static int gepp(double *A, size_t ld, size_t np, size_t nextra, size_t ne,
     }
     double *u = A + c * ld;
     const double d = u[c], dinv = 1.0 / d;
-    det_mul(det, d);
+    if (pv)
+      pv[c] = d;
+    else
+      det_mul(det, d);
     u[c] = dinv; /* U is kept with reciprocal diagonal */
     for (size_t r = c + 1; r < np + nextra; ++r) {
       double *a = A + r * ld;
@@ -431,7 +458,7 @@ static int condense_interval(cond_ws *w, size_t i, int *lab) {
   for (size_t q = 0; q < nm; ++q) lab[q] = (int)(n * i * m + q);
   w->idet[i].mant = 1.0;
   w->idet[i].expo = 0;
-  int rc = gepp(Wi, w->wc, nm, 0, ni, w->wpiv + i * ni, lab, &w->idet[i], NULL);
+  int rc = gepp(Wi, w->wc, nm, 0, ni, w->wpiv + i * ni, lab, &w->idet[i], NULL, NULL);
   if (rc != 0) return rc;
   for (size_t q = 0; q < ni; ++q) {
     w->prow[i * ni + q] = lab[q];
@@ -441,26 +468,128 @@ static int condense_interval(cond_ws *w, size_t i, int *lab) {
   return 0;
 }
 
-/* Step 1: each interval's block filled (fill_one, when the system has it)
- * and condensed, the intervals in parallel.  The statuses are taken in
- * interval order, the model's first, and the determinant's factors are
- * multiplied in interval order, so nothing depends on the threads. */
-static int condense_intervals(cond_ws *w, const double *X, const double *p,
-                              size_t k, int mode) {
-  const size_t N = w->N;
-  const int nth = whirl_gov_begin(&w->gov);
+/* Step 1 on interval i, on thread t's scratch: its block filled
+ * (fill_one, when the system has it) and condensed, the border rows of
+ * bsrc eliminated by it; then done[i] set, after all of that (release:
+ * step 2, on the main thread, reads the block once it sees the flag). */
+static void condense_one(cond_ws *w, const double *X, const double *p, size_t k,
+                         int mode, size_t i, int t) {
   const cond_ops *ops = w->ops;
-  w->nth_last = nth;
-#pragma omp parallel for num_threads(nth) schedule(static) if (nth > 1)
-  for (size_t i = 0; i < N; ++i) {
-    const int t = whirl_thread_num();
-    w->frc[i] = ops->fill_one ? ops->fill_one(w, X, p, k, mode, i, t) : 0;
-    w->irc[i] = w->frc[i] ? 0 : condense_interval(w, i, w->lab + w->nlab * (size_t)t);
-    if (!w->frc[i] && !w->irc[i])
-      for (size_t b = 0; b < w->nb; ++b)
-        if (w->bsrc[b]) border_interval(w, b, w->bsrc[b], i);
+  w->frc[i] = ops->fill_one ? ops->fill_one(w, X, p, k, mode, i, t) : 0;
+  w->irc[i] = w->frc[i] ? 0 : condense_interval(w, i, w->lab + w->nlab * (size_t)t);
+  if (!w->frc[i] && !w->irc[i])
+    for (size_t b = 0; b < w->nb; ++b)
+      if (w->bsrc[b]) border_interval(w, b, w->bsrc[b], i);
+  __atomic_store_n(&w->done[i], 1, __ATOMIC_RELEASE);
+}
+
+/* Step 2's link j (1 <= j < NTST): the mesh point x_j eliminated from
+ * the n rows left over from the links before (interval 0's at j = 1) and
+ * interval j's; block columns [x_j | x_0 | x_{j+1} | g].  Its pivots into
+ * cpv (multiplied into det_c after the intervals', in link order), its
+ * rows and columns at their place in the elimination order.  0, or
+ * WHIRL_EBADFUNC, or WHIRL_ESINGULAR. */
+static int chain_link(cond_ws *w, size_t j) {
+  const size_t n = w->n, m = w->m, ng = w->ng, wc = w->wc, pc = w->pc;
+  double *Pj = w->P + (j - 1) * w->pr * pc;
+  for (size_t q = 0; q < n; ++q) {
+    double *a = Pj + q * pc;
+    if (j == 1) {
+      const double *s = cond_rows(w, 0) + q * wc; /* [x_0 | x_1 | g] */
+      whirl_copy_short(a, s + n, n);
+      whirl_copy_short(a + n, s, n);
+      whirl_copy_short(a + 3 * n, s + 2 * n, ng);
+    } else {
+      const double *s = w->P + (j - 2) * w->pr * pc + (n + q) * pc;
+      whirl_copy_short(a, s + 2 * n, n); /* x_j */
+      whirl_copy_short(a + n, s + n, n); /* x_0 */
+      whirl_copy_short(a + 3 * n, s + 3 * n, ng);
+    }
+    whirl_zero_short(a + 2 * n, n);
+    const double *s = cond_rows(w, j) + q * wc; /* [x_j | x_{j+1} | g] */
+    double *b = Pj + (n + q) * pc;
+    whirl_copy_short(b, s, n);
+    whirl_zero_short(b + n, n);
+    whirl_copy_short(b + 2 * n, s + n, n);
+    whirl_copy_short(b + 3 * n, s + 2 * n, ng);
+    w->clab[n + q] = w->wlab[j * n + q];
   }
+  const int rc = gepp(Pj, pc, 2 * n, 0, n, w->ppiv + (j - 1) * n, w->clab, NULL,
+                      w->cpv + (j - 1) * n, NULL);
+  if (rc == 2) return WHIRL_EBADFUNC;
+  if (rc == 1) return WHIRL_ESINGULAR;
+  const size_t at = w->N * w->ni + (j - 1) * n;
+  for (size_t q = 0; q < n; ++q) {
+    w->prow[at + q] = w->clab[q];
+    w->pcol[at + q] = (int)(n * (j * m) + q);
+    w->clab[q] = w->clab[n + q]; /* the rows left over go on */
+  }
+  return 0;
+}
+
+/* Step 2 as far as the condensed intervals allow, on the main thread:
+ * link j once interval j is done (the links before it done).  It stops
+ * for good at an interval that failed (its status is reported in
+ * interval order after step 1) or at a link that failed (chain_rc). */
+static void chain_advance(cond_ws *w, size_t *next, int *stop, int *chain_rc) {
+  const size_t n = w->n;
+  while (!*stop && *next < w->N) {
+    const size_t j = *next;
+    if (!__atomic_load_n(&w->done[j], __ATOMIC_ACQUIRE)) return;
+    if (w->frc[j] || w->irc[j]) {
+      *stop = 1;
+      return;
+    }
+    if (j == 0) {
+      for (size_t q = 0; q < n; ++q) w->clab[q] = w->wlab[q];
+    } else if ((*chain_rc = chain_link(w, j)) != 0) {
+      *stop = 1;
+      return;
+    }
+    ++*next;
+  }
+}
+
+/* A pause in a wait for another thread's progress */
+#if defined(__x86_64__) || defined(__i386__)
+#define WHIRL_SPIN_PAUSE() __builtin_ia32_pause()
+#else
+#define WHIRL_SPIN_PAUSE() ((void)0)
+#endif
+
+/* Intervals a thread of step 1 takes at a time, in order */
+enum { COND_CHUNK = 4 };
+
+/* Steps 1 and 2: the intervals condensed on the governed threads, which
+ * take them in order, a few at a time; the main thread eliminates the
+ * mesh points (step 2, a chain from interval to interval) behind them
+ * between its own intervals, and what is left after the loop.  The
+ * statuses are taken in interval order, the model's first, and the
+ * determinant's factors are multiplied in the serial order (the
+ * intervals', then the links'), so nothing depends on the threads. */
+static int condense_and_chain(cond_ws *w, const double *X, const double *p, size_t k,
+                              int mode) {
+  const size_t N = w->N, n = w->n;
+  const int nth = whirl_gov_begin(&w->gov);
+  size_t next = 0;
+  int stop = 0, chain_rc = 0;
+  w->nth_last = nth;
+  memset(w->done, 0, N * sizeof *w->done);
+  w->next = 0;
+#pragma omp parallel num_threads(nth) if (nth > 1)
+  {
+    const int t = whirl_thread_num();
+    for (;;) {
+      const size_t i0 = __atomic_fetch_add(&w->next, COND_CHUNK, __ATOMIC_RELAXED);
+      if (i0 >= N) break;
+      for (size_t i = i0; i < i0 + COND_CHUNK && i < N; ++i)
+        condense_one(w, X, p, k, mode, i, t);
+      if (t == 0) chain_advance(w, &next, &stop, &chain_rc);
+    }
+  }
+  chain_advance(w, &next, &stop, &chain_rc);
   whirl_gov_end(&w->gov);
+  const cond_ops *ops = w->ops;
   size_t bad = 0;
   while (bad < N && !w->frc[bad]) ++bad;
   if (ops->fill_end) {
@@ -475,49 +604,11 @@ static int condense_intervals(cond_ws *w, const double *X, const double *p,
     det_times(&w->det_c, &w->idet[i]);
   }
   for (size_t b = 0; b < w->nb; ++b) w->bdone[b] = w->bsrc[b] != NULL;
-  w->npiv_c = N * w->ni;
-  return 0;
-}
-
-/* Step 2: the mesh points x_1 .. x_{N−1}; block columns
- * [x_j | x_0 | x_{j+1} | g]. */
-static int eliminate_mesh_points(cond_ws *w) {
-  const size_t n = w->n, m = w->m, N = w->N, ng = w->ng, wc = w->wc, pc = w->pc;
-  for (size_t q = 0; q < n; ++q) w->lab[q] = w->wlab[q];
-  for (size_t j = 1; j < N; ++j) {
-    double *Pj = w->P + (j - 1) * w->pr * pc;
-    for (size_t q = 0; q < n; ++q) {
-      double *a = Pj + q * pc;
-      if (j == 1) {
-        const double *s = cond_rows(w, 0) + q * wc; /* [x_0 | x_1 | g] */
-        whirl_copy_short(a, s + n, n);
-        whirl_copy_short(a + n, s, n);
-        whirl_copy_short(a + 3 * n, s + 2 * n, ng);
-      } else {
-        const double *s = w->P + (j - 2) * w->pr * pc + (n + q) * pc;
-        whirl_copy_short(a, s + 2 * n, n); /* x_j */
-        whirl_copy_short(a + n, s + n, n); /* x_0 */
-        whirl_copy_short(a + 3 * n, s + 3 * n, ng);
-      }
-      whirl_zero_short(a + 2 * n, n);
-      const double *s = cond_rows(w, j) + q * wc; /* [x_j | x_{j+1} | g] */
-      double *b = Pj + (n + q) * pc;
-      whirl_copy_short(b, s, n);
-      whirl_zero_short(b + n, n);
-      whirl_copy_short(b + 2 * n, s + n, n);
-      whirl_copy_short(b + 3 * n, s + 2 * n, ng);
-      w->lab[n + q] = w->wlab[j * n + q];
-    }
-    int rc = gepp(Pj, pc, 2 * n, 0, n, w->ppiv + (j - 1) * n, w->lab, &w->det_c, NULL);
-    if (rc == 2) return WHIRL_EBADFUNC;
-    if (rc == 1) return singular(w);
-    for (size_t q = 0; q < n; ++q) {
-      w->prow[w->npiv_c] = w->lab[q];
-      w->pcol[w->npiv_c++] = (int)(n * (j * m) + q);
-      w->lab[q] = w->lab[n + q]; /* the rows left over go on */
-    }
-  }
-  for (size_t q = 0; q < n; ++q) w->slab[q] = w->lab[q];
+  if (chain_rc == WHIRL_ESINGULAR) return singular(w);
+  if (chain_rc != 0) return chain_rc;
+  for (size_t e = 0; e + n < N * n; ++e) det_mul(&w->det_c, w->cpv[e]);
+  for (size_t q = 0; q < n; ++q) w->slab[q] = w->clab[q];
+  w->npiv_c = N * w->ni + (N - 1) * n;
   return 0;
 }
 
@@ -557,9 +648,7 @@ static int factor_rows(cond_ws *w, const double *X, const double *p, size_t k,
   int rc = w->ops->fill_one ? w->ops->fill_begin(w, X, p, k, mode)
                             : w->ops->fill(w, X, p, k, mode);
   if (rc != 0) return rc;
-  if ((rc = condense_intervals(w, X, p, k, mode)) != 0 ||
-      (rc = eliminate_mesh_points(w)) != 0)
-    return rc;
+  if ((rc = condense_and_chain(w, X, p, k, mode)) != 0) return rc;
   w->sign_c = 0; /* order_signs, when cond_logdet asks */
   memcpy(w->Xf, X, w->nx * sizeof *w->Xf);
   memcpy(w->pf, p, w->npar * sizeof *w->pf);
@@ -638,7 +727,7 @@ static int factor_border(cond_ws *w, const double *r) {
     w->lab[n + w->ne + t] = w->blab[t];
   }
   int swaps = 0;
-  rc = gepp(F, nf, nf, 0, nf, w->fpiv, w->lab, &w->det, &swaps);
+  rc = gepp(F, nf, nf, 0, nf, w->fpiv, w->lab, &w->det, NULL, &swaps);
   if (rc == 2) return WHIRL_EBADFUNC;
   if (rc == 1) return singular(w);
   w->logabs = log(fabs(w->det.mant)) + (double)w->det.expo * log(2.0);
@@ -695,36 +784,98 @@ int cond_factor_rows(cond_ws *w, const double *X, const double *p) {
 
 /* ------------------------------------------------------------ solve */
 
+/* Solve step 1 on interval i: its rows of b transformed by its block's
+ * L (into loc, with its border rows' parts); then done[i] set. */
+static void forward_interval(cond_ws *w, const double *b, size_t i) {
+  const size_t n = w->n, m = w->m, ni = w->ni, nm = w->nm, wr = w->wr;
+  double *v = w->loc + i * wr;
+  whirl_copy_short(v, b + n * i * m, nm);
+  whirl_zero_short(v + nm, w->nb);
+  gepp_forward(w->W + i * wr * w->wc, w->wc, nm, w->nb, ni, w->wpiv + i * ni, v);
+  __atomic_store_n(&w->done[i], 1, __ATOMIC_RELEASE);
+}
+
+/* Solve step 2's link j (1 <= j < NTST): the rows left over and interval
+ * j's, transformed by mesh-point block j (into ploc). */
+static void forward_link(cond_ws *w, size_t j) {
+  const size_t n = w->n, ni = w->ni, nb = w->nb, pr = w->pr;
+  double *v = w->ploc + (j - 1) * pr;
+  const double *s = j == 1 ? w->loc + ni : w->ploc + (j - 2) * pr + n;
+  whirl_copy_short(v, s, n);
+  whirl_copy_short(v + n, w->loc + j * w->wr + ni, n);
+  for (size_t t = 0; t < nb; ++t) v[2 * n + t] = 0.0;
+  gepp_forward(w->P + (j - 1) * pr * w->pc, w->pc, 2 * n, nb, n, w->ppiv + (j - 1) * n, v);
+}
+
+/* Solve step 2 as far as the transformed intervals allow (main thread) */
+static void forward_advance(cond_ws *w, size_t *next) {
+  while (*next < w->N && __atomic_load_n(&w->done[*next], __ATOMIC_ACQUIRE)) {
+    if (*next > 0) forward_link(w, *next);
+    ++*next;
+  }
+}
+
+/* The back substitution of interval i's interior from x_i, x_{i+1}, g
+ * (thread t's scratch), and x_i into b. */
+static void back_interval(cond_ws *w, double *b, size_t i, int t) {
+  const size_t n = w->n, m = w->m, ng = w->ng, wr = w->wr;
+  const double *xs = w->xs, *g = xs + n * (w->N + 1);
+  double *y = w->ysc + (size_t)t * w->ystride;
+  whirl_copy_short(y, xs + n * i, 2 * n);
+  whirl_copy_short(y + 2 * n, g, ng);
+  gepp_back(w->W + i * wr * w->wc, w->wc, w->ni, 2 * n + ng, w->loc + i * wr, y,
+            b + n * (i * m + 1));
+  whirl_copy_short(b + n * i * m, xs + n * i, n);
+}
+
+/* The back substitution of the mesh points x_{N−1} .. x_1 (main thread),
+ * each published in w->low once known (release). */
+static void back_chain(cond_ws *w) {
+  const size_t n = w->n, N = w->N, ng = w->ng, pr = w->pr, pc = w->pc;
+  double *xs = w->xs, *g = xs + n * (N + 1), *yp = w->tmp + 2 * w->nf;
+  for (size_t j = N - 1; j >= 1; --j) {
+    whirl_copy_short(yp, xs, n);
+    whirl_copy_short(yp + n, xs + n * (j + 1), n);
+    whirl_copy_short(yp + 2 * n, g, ng);
+    gepp_back(w->P + (j - 1) * pr * pc, pc, n, 2 * n + ng, w->ploc + (j - 1) * pr, yp,
+              xs + n * j);
+    __atomic_store_n(&w->low, j, __ATOMIC_RELEASE);
+  }
+}
+
+/* One right-hand side b (M's rows) into the solution (M's columns).  Steps
+ * 1 and 2 as the factorisation's: the intervals on the threads, a few at
+ * a time in order, the main thread's chain over the mesh points behind
+ * them; the border rows' sums afterwards in the serial order.  The back
+ * substitution likewise: the main thread's chain from x_{N−1} down, the
+ * intervals' interiors on the threads from the top down behind it.  The
+ * same operations in the same order on any number of threads. */
 static void solve1(cond_ws *w, double *b) {
-  const size_t n = w->n, m = w->m, N = w->N, ni = w->ni, nm = w->nm,
-               ng = w->ng, nb = w->nb, wr = w->wr, wc = w->wc, pr = w->pr,
-               pc = w->pc, nf = w->nf;
+  const size_t n = w->n, m = w->m, N = w->N, nm = w->nm, ng = w->ng, nb = w->nb,
+               wr = w->wr, pr = w->pr, nf = w->nf;
   double *bb = w->bb, *xs = w->xs, *g = xs + n * (N + 1);
   const int nth = w->nth_last;
-  for (size_t t = 0; t < nb; ++t) bb[t] = b[w->blab[t]];
-  /* 1. on the threads and intervals of the condensation (its blocks in
-   * their caches); the border rows' sums then in interval order */
-#pragma omp parallel for num_threads(nth) schedule(static) if (nth > 1)
-  for (size_t i = 0; i < N; ++i) {
-    double *v = w->loc + i * wr;
-    whirl_copy_short(v, b + n * i * m, nm);
-    whirl_zero_short(v + nm, nb);
-    gepp_forward(w->W + i * wr * wc, wc, nm, nb, ni, w->wpiv + i * ni, v);
+  size_t fnext = 0;
+  memset(w->done, 0, N * sizeof *w->done);
+  w->next = 0;
+#pragma omp parallel num_threads(nth) if (nth > 1)
+  {
+    const int t = whirl_thread_num();
+    for (;;) {
+      const size_t i0 = __atomic_fetch_add(&w->next, COND_CHUNK, __ATOMIC_RELAXED);
+      if (i0 >= N) break;
+      for (size_t i = i0; i < i0 + COND_CHUNK && i < N; ++i) forward_interval(w, b, i);
+      if (t == 0) forward_advance(w, &fnext);
+    }
   }
+  forward_advance(w, &fnext);
+  for (size_t t = 0; t < nb; ++t) bb[t] = b[w->blab[t]];
   for (size_t i = 0; i < N; ++i)
     for (size_t t = 0; t < nb; ++t) bb[t] += w->loc[i * wr + nm + t];
-  /* 2. */
-  for (size_t j = 1; j < N; ++j) {
-    double *v = w->ploc + (j - 1) * pr;
-    const double *s = j == 1 ? w->loc + ni : w->ploc + (j - 2) * pr + n;
-    whirl_copy_short(v, s, n);
-    whirl_copy_short(v + n, w->loc + j * wr + ni, n);
-    for (size_t t = 0; t < nb; ++t) v[2 * n + t] = 0.0;
-    gepp_forward(w->P + (j - 1) * pr * pc, pc, 2 * n, nb, n, w->ppiv + (j - 1) * n, v);
-    for (size_t t = 0; t < nb; ++t) bb[t] += v[2 * n + t];
-  }
+  for (size_t j = 1; j < N; ++j)
+    for (size_t t = 0; t < nb; ++t) bb[t] += w->ploc[(j - 1) * pr + 2 * n + t];
   /* 3. */
-  double *frp = w->tmp, *zp = frp + nf, *yp = zp + nf;
+  double *frp = w->tmp, *zp = frp + nf;
   whirl_copy_short(frp, w->ploc + (N - 2) * pr + n, n);
   whirl_copy_short(frp + n, b + n * N * m, w->ne);
   whirl_copy_short(frp + n + w->ne, bb, nb);
@@ -733,22 +884,22 @@ static void solve1(cond_ws *w, double *b) {
   whirl_copy_short(xs, zp, n);
   whirl_copy_short(xs + n * N, zp + n, n);
   whirl_copy_short(g, zp + 2 * n, ng);
-  /* back substitution: the mesh points, then the interiors */
-  for (size_t j = N - 1; j >= 1; --j) {
-    whirl_copy_short(yp, xs, n);
-    whirl_copy_short(yp + n, xs + n * (j + 1), n);
-    whirl_copy_short(yp + 2 * n, g, ng);
-    gepp_back(w->P + (j - 1) * pr * pc, pc, n, 2 * n + ng,
-              w->ploc + (j - 1) * pr, yp, xs + n * j);
-  }
-#pragma omp parallel for num_threads(nth) schedule(static) if (nth > 1)
-  for (size_t i = 0; i < N; ++i) {
-    double *y = w->ysc + (size_t)whirl_thread_num() * w->ystride;
-    whirl_copy_short(y, xs + n * i, 2 * n);
-    whirl_copy_short(y + 2 * n, g, ng);
-    gepp_back(w->W + i * wr * wc, wc, ni, 2 * n + ng, w->loc + i * wr, y,
-              b + n * (i * m + 1));
-    whirl_copy_short(b + n * i * m, xs + n * i, n);
+  /* back substitution: the mesh points, and the interiors behind them */
+  w->low = N;
+  w->next = 0;
+#pragma omp parallel num_threads(nth) if (nth > 1)
+  {
+    const int t = whirl_thread_num();
+    if (t == 0) back_chain(w);
+    for (;;) {
+      const size_t c0 = __atomic_fetch_add(&w->next, COND_CHUNK, __ATOMIC_RELAXED);
+      if (c0 >= N) break;
+      for (size_t c = c0; c < c0 + COND_CHUNK && c < N; ++c) {
+        const size_t i = N - 1 - c, need = i > 0 ? i : 1;
+        while (__atomic_load_n(&w->low, __ATOMIC_ACQUIRE) > need) WHIRL_SPIN_PAUSE();
+        back_interval(w, b, i, t);
+      }
+    }
   }
   whirl_copy_short(b + n * N * m, xs + n * N, n);
   for (size_t e = 0; e < ng; ++e) b[w->gcol[e]] = g[e];
@@ -871,7 +1022,7 @@ int cond_monodromy(cond_ws *w, double *M) {
     whirl_copy_short(A + q * 2 * n + n, S + q * pc + n, n);
     w->mlab[q] = (int)q;
   }
-  int rc = gepp(A, 2 * n, n, 0, n, w->mpiv, w->mlab, &dt, NULL);
+  int rc = gepp(A, 2 * n, n, 0, n, w->mpiv, w->mlab, &dt, NULL, NULL);
   if (rc != 0) return rc == 2 ? WHIRL_EBADFUNC : WHIRL_ESINGULAR;
   for (size_t j = 0; j < n; ++j) {
     for (size_t q = 0; q < n; ++q) col[q] = A[q * 2 * n + n + j];
