@@ -37,19 +37,26 @@
  * discuss its accuracy; fine for moderate multipliers).
  *
  * Threads: the intervals of step 1 (and of a solve's forward and back
- * substitutions) are taken in order, a few at a time, by the threads of
- * a governed loop; the main thread runs the chain of step 2 behind them,
- * link j once interval j is done, between intervals of its own (AUTO-07p
- * runs each thread's part of the mesh, then a coarse system: other
- * arithmetic on other thread counts).  Each link and each interval does
- * the same operations in the same order on any number of threads, so the
- * results are the same bytes.
+ * substitutions) are shared by the threads of a governed loop, each
+ * taking its part in order: the main thread the first intervals, which
+ * it follows with the chain of step 2, link j once interval j is done,
+ * and then the chain behind the other threads' intervals; its share moves
+ * after each factorisation towards the balance (cond_balance: the chain
+ * is its extra work), and the solves take the same shares, so each thread
+ * reads the blocks it wrote from its own cache (taking intervals as they
+ * come, a few at a time, balanced the work but moved the blocks between
+ * the caches: demo fnc's run 20 was slower than with static halves).
+ * AUTO-07p instead runs each thread's part of the mesh, then a coarse
+ * system: other arithmetic on other thread counts.  Here each link and
+ * each interval does the same operations in the same order on any
+ * number of threads, so the results are the same bytes.
  *
  * Blocks are row-major: the eliminations work on rows.
  * SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include <whirl/status.h>
 
@@ -96,8 +103,10 @@ struct cond_ws {
   unsigned char *done; /* NTST: interval i condensed (step 1's loop on
                         * several threads, read by the chain of step 2
                         * that follows it on the main thread) */
-  size_t next;   /* the next interval a thread of that loop takes (and of
-                  * the solve's loops) */
+  size_t split;  /* intervals [0, split) are the main thread's in those
+                  * loops, the rest the other threads' in equal parts (the
+                  * same for the solves: each thread reads the blocks it
+                  * wrote); moved by cond_balance */
   size_t low;    /* the solve's back substitution: the lowest mesh point
                   * known so far (NTST: none) */
   double *cpv;   /* (NTST − 1) n: the pivots of step 2, multiplied into
@@ -215,6 +224,7 @@ cond_ws *cond_alloc(const cond_shape *s, const cond_ops *ops, void *sys) {
   w->bsrc = calloc(w->nb, sizeof *w->bsrc);
   w->bdone = calloc(w->nb, sizeof *w->bdone);
   w->done = malloc(N * sizeof *w->done);
+  w->split = N / 2;
   w->cpv = malloc((N * n + 1) * sizeof *w->cpv);
   w->clab = malloc(2 * n * sizeof *w->clab);
   w->nth_last = 1;
@@ -557,8 +567,43 @@ static void chain_advance(cond_ws *w, size_t *next, int *stop, int *chain_rc) {
 #define WHIRL_SPIN_PAUSE() ((void)0)
 #endif
 
-/* Intervals a thread of step 1 takes at a time, in order */
-enum { COND_CHUNK = 4 };
+/* Thread t's intervals [*lo, *hi) of nth in the loops over intervals:
+ * the main thread's first, [0, split), then the other threads' equal
+ * parts of the rest, each taken in order. */
+static void thread_range(const cond_ws *w, int t, int nth, size_t *lo, size_t *hi) {
+  const size_t N = w->N, s = nth > 1 ? w->split : N, nw = (size_t)(nth > 1 ? nth - 1 : 1);
+  if (t == 0) {
+    *lo = 0;
+    *hi = s;
+    return;
+  }
+  const size_t k = (size_t)t - 1;
+  *lo = s + (N - s) * k / nw;
+  *hi = s + (N - s) * (k + 1) / nw;
+}
+
+static double cond_now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The main thread's share moved towards the balance of the last loop
+ * (monotonic seconds): main_free, when the main thread first waited for
+ * another thread's interval (its own and the chain behind them done),
+ * main_end when it finished the chain, other_end when the last other
+ * thread finished: more intervals for the main thread when it waited,
+ * fewer when it finished last by more than a link or two.  By 1/64 of
+ * the mesh (at least one interval): the shares then stay put within a
+ * few intervals, and with them the blocks in each thread's cache. */
+static void cond_balance(cond_ws *w, double main_free, double main_end, double other_end) {
+  const size_t N = w->N, step = N / 64 ? N / 64 : 1;
+  const double slack = 2e-6;
+  if (main_free + slack < other_end && w->split + step < N)
+    w->split += step;
+  else if (main_end > other_end + slack && w->split > step)
+    w->split -= step;
+}
 
 /* Steps 1 and 2: the intervals condensed on the governed threads, which
  * take them in order, a few at a time; the main thread eliminates the
@@ -575,19 +620,39 @@ static int condense_and_chain(cond_ws *w, const double *X, const double *p, size
   int stop = 0, chain_rc = 0;
   w->nth_last = nth;
   memset(w->done, 0, N * sizeof *w->done);
-  w->next = 0;
+  double main_end = 0.0, main_free = 0.0, other_end = 0.0;
 #pragma omp parallel num_threads(nth) if (nth > 1)
   {
     const int t = whirl_thread_num();
-    for (;;) {
-      const size_t i0 = __atomic_fetch_add(&w->next, COND_CHUNK, __ATOMIC_RELAXED);
-      if (i0 >= N) break;
-      for (size_t i = i0; i < i0 + COND_CHUNK && i < N; ++i)
-        condense_one(w, X, p, k, mode, i, t);
+    size_t lo, hi;
+    thread_range(w, t, nth, &lo, &hi);
+    for (size_t i = lo; i < hi; ++i) {
+      condense_one(w, X, p, k, mode, i, t);
       if (t == 0) chain_advance(w, &next, &stop, &chain_rc);
     }
+    if (t == 0) {
+      /* the chain behind the other threads' intervals; free_at: the
+       * first wait for one of theirs */
+      double free_at = 0.0;
+      while (!stop && next < N) {
+        const size_t before = next;
+        chain_advance(w, &next, &stop, &chain_rc);
+        if (next == before) {
+          if (nth > 1 && free_at == 0.0) free_at = cond_now();
+          WHIRL_SPIN_PAUSE();
+        }
+      }
+      if (nth > 1) {
+        main_end = cond_now();
+        main_free = free_at > 0.0 ? free_at : main_end;
+      }
+    } else {
+      const double e = cond_now();
+#pragma omp critical(whirl_cond_end)
+      if (e > other_end) other_end = e;
+    }
   }
-  chain_advance(w, &next, &stop, &chain_rc);
+  if (nth > 1) cond_balance(w, main_free, main_end, other_end);
   whirl_gov_end(&w->gov);
   const cond_ops *ops = w->ops;
   size_t bad = 0;
@@ -857,18 +922,22 @@ static void solve1(cond_ws *w, double *b) {
   const int nth = w->nth_last;
   size_t fnext = 0;
   memset(w->done, 0, N * sizeof *w->done);
-  w->next = 0;
 #pragma omp parallel num_threads(nth) if (nth > 1)
   {
     const int t = whirl_thread_num();
-    for (;;) {
-      const size_t i0 = __atomic_fetch_add(&w->next, COND_CHUNK, __ATOMIC_RELAXED);
-      if (i0 >= N) break;
-      for (size_t i = i0; i < i0 + COND_CHUNK && i < N; ++i) forward_interval(w, b, i);
+    size_t lo, hi;
+    thread_range(w, t, nth, &lo, &hi);
+    for (size_t i = lo; i < hi; ++i) {
+      forward_interval(w, b, i);
       if (t == 0) forward_advance(w, &fnext);
     }
+    if (t == 0)
+      while (fnext < N) {
+        const size_t before = fnext;
+        forward_advance(w, &fnext);
+        if (fnext == before) WHIRL_SPIN_PAUSE();
+      }
   }
-  forward_advance(w, &fnext);
   for (size_t t = 0; t < nb; ++t) bb[t] = b[w->blab[t]];
   for (size_t i = 0; i < N; ++i)
     for (size_t t = 0; t < nb; ++t) bb[t] += w->loc[i * wr + nm + t];
@@ -886,19 +955,16 @@ static void solve1(cond_ws *w, double *b) {
   whirl_copy_short(g, zp + 2 * n, ng);
   /* back substitution: the mesh points, and the interiors behind them */
   w->low = N;
-  w->next = 0;
 #pragma omp parallel num_threads(nth) if (nth > 1)
   {
     const int t = whirl_thread_num();
+    size_t lo, hi;
+    thread_range(w, t, nth, &lo, &hi);
     if (t == 0) back_chain(w);
-    for (;;) {
-      const size_t c0 = __atomic_fetch_add(&w->next, COND_CHUNK, __ATOMIC_RELAXED);
-      if (c0 >= N) break;
-      for (size_t c = c0; c < c0 + COND_CHUNK && c < N; ++c) {
-        const size_t i = N - 1 - c, need = i > 0 ? i : 1;
-        while (__atomic_load_n(&w->low, __ATOMIC_ACQUIRE) > need) WHIRL_SPIN_PAUSE();
-        back_interval(w, b, i, t);
-      }
+    for (size_t i = hi; i-- > lo;) {
+      const size_t need = i > 0 ? i : 1;
+      while (__atomic_load_n(&w->low, __ATOMIC_ACQUIRE) > need) WHIRL_SPIN_PAUSE();
+      back_interval(w, b, i, t);
     }
   }
   whirl_copy_short(b + n * N * m, xs + n * N, n);
