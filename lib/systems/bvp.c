@@ -834,10 +834,10 @@ static int alloc_arrays(whirl_bvp *b) {
                           b->ntst + 1,
                           n * b->ntst, b->nnodes * (b->ncol + 1),
                           b->ntst * b->ncol * b->nint, b->ntst * b->ncol * b->nint,
-                          n * b->nnodes};
+                          n * b->nnodes, n * b->nnodes, b->ntst + 1};
   double **ptrs[] = {&b->pt, &b->fb, &b->fbm, &b->cp, &b->cm, &b->ref, &b->icacc,
                      &b->old_mesh, &b->mapscr, &b->E, &b->Q, &b->Dm, &b->map_L,
-                     &b->icterm, &b->icF, &b->dref};
+                     &b->icterm, &b->icF, &b->dref, &b->nwq, &b->nwmesh};
   const size_t nptr = sizeof sizes / sizeof sizes[0];
   size_t tot = 0;
   for (size_t k = 0; k < nptr; ++k) tot += sizes[k] + 1;
@@ -860,9 +860,16 @@ static int alloc_arrays(whirl_bvp *b) {
  * on the current mesh (the state's part of a step's norm is its integral,
  * as AUTO-07p's), 1 for the unknowns after them (the free parameters). */
 static int bvp_norm_weights(double *q, void *data) {
-  const whirl_bvp *b = data;
-  colloc_basis_node_weights_from(b->n, b->ncol, b->ntst, b->mesh, b->wint, q);
-  for (size_t i = b->nnodes * b->n; i < b->nx; ++i) q[i] = 1.0;
+  whirl_bvp *b = data;
+  const size_t nw = b->nnodes * b->n, nm = (b->ntst + 1) * sizeof *b->mesh;
+  /* the weights depend on the mesh alone: kept until it changes */
+  if (!b->nw_ok || memcmp(b->nwmesh, b->mesh, nm) != 0) {
+    colloc_basis_node_weights_from(b->n, b->ncol, b->ntst, b->mesh, b->wint, b->nwq);
+    memcpy(b->nwmesh, b->mesh, nm);
+    b->nw_ok = 1;
+  }
+  memcpy(q, b->nwq, nw * sizeof *q);
+  for (size_t i = nw; i < b->nx; ++i) q[i] = 1.0;
   return 0;
 }
 

@@ -72,6 +72,9 @@ struct whirl_bvp {
   int udot_direction;   /* options.udot_direction: ic's udot from dref */
   double *dref;         /* the core's direction, node values (n nnodes) */
   size_t adaptations;
+  double *nwq, *nwmesh; /* the norm weights (n nnodes) of the mesh nwmesh
+                         * (N + 1), kept: a run's PVLS asks at every point */
+  int nw_ok;            /* nwq holds nwmesh's weights */
   double dm[COLLOC_BASIS_MAXCOL + 1];
   double *old_mesh, *E, *Q, *Dm;
   double *mapscr;   /* nthreads (n nnodes): the remap's copies */

@@ -436,6 +436,26 @@ static void test_bratu_newton(void) {
   is_abs(sq, 1.0 + 2.0 + 10.0 / 3.0 + 3.0 + 9.0 / 5.0 + 1.0 / 3.0, 1e-13,
          "norm weights on a non-uniform mesh integrate (1 + 2t + 3t²)² + (1 - t)² "
          "exactly (%.15g)", sq);
+  /* asked again: the same; then on another mesh (the weights are kept
+   * while the mesh stays): that mesh's */
+  double *qa = malloc(nx * sizeof *qa), *tu = malloc((ntst + 1) * sizeof *tu);
+  int same = qa && sys->norm_weights(qa, sys->data) == 0 && memcmp(qa, qw, nx * sizeof *qa) == 0;
+  ok(same, "norm weights asked twice on one mesh: the same");
+  for (size_t i = 0; i <= ntst; ++i) tu[i] = (double)i / (double)ntst;
+  qrc = whirl_bvp_set_mesh(b, tu) == 0 ? sys->norm_weights(qw, sys->data) : -1;
+  sq = 0.0;
+  for (size_t i = 0; qrc == 0 && i < ntst; ++i)
+    for (size_t k = 0; k <= ncol; ++k) {
+      const size_t j = i * ncol + k;
+      if (k == ncol && i + 1 < ntst) continue;
+      const double t = tu[i] + (tu[i + 1] - tu[i]) * (double)k / (double)ncol;
+      const double f = 1 + 2 * t + 3 * t * t, g = 1 - t;
+      sq += qw[2 * j] * f * f + qw[2 * j + 1] * g * g;
+    }
+  is_abs(sq, 1.0 + 2.0 + 10.0 / 3.0 + 3.0 + 9.0 / 5.0 + 1.0 / 3.0, 1e-13,
+         "norm weights after a new mesh are the new mesh's (%.15g)", sq);
+  free(qa);
+  free(tu);
   free(qw);
   free(X);
   whirl_bvp_free(b);
