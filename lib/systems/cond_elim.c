@@ -621,11 +621,12 @@ static int condense_and_chain(cond_ws *w, const double *X, const double *p, size
   w->nth_last = nth;
   memset(w->done, 0, N * sizeof *w->done);
   double main_end = 0.0, main_free = 0.0, other_end = 0.0;
+  int team = 1; /* the threads the region got (it may get fewer) */
 #pragma omp parallel num_threads(nth) if (nth > 1)
   {
     const int t = whirl_thread_num();
     size_t lo, hi;
-    thread_range(w, t, nth, &lo, &hi);
+    thread_range(w, t, whirl_team_size(), &lo, &hi);
     for (size_t i = lo; i < hi; ++i) {
       condense_one(w, X, p, k, mode, i, t);
       if (t == 0) chain_advance(w, &next, &stop, &chain_rc);
@@ -634,15 +635,16 @@ static int condense_and_chain(cond_ws *w, const double *X, const double *p, size
       /* the chain behind the other threads' intervals; free_at: the
        * first wait for one of theirs */
       double free_at = 0.0;
+      team = whirl_team_size();
       while (!stop && next < N) {
         const size_t before = next;
         chain_advance(w, &next, &stop, &chain_rc);
         if (next == before) {
-          if (nth > 1 && free_at == 0.0) free_at = cond_now();
+          if (team > 1 && free_at == 0.0) free_at = cond_now();
           WHIRL_SPIN_PAUSE();
         }
       }
-      if (nth > 1) {
+      if (team > 1) {
         main_end = cond_now();
         main_free = free_at > 0.0 ? free_at : main_end;
       }
@@ -652,7 +654,7 @@ static int condense_and_chain(cond_ws *w, const double *X, const double *p, size
       if (e > other_end) other_end = e;
     }
   }
-  if (nth > 1) cond_balance(w, main_free, main_end, other_end);
+  if (team > 1) cond_balance(w, main_free, main_end, other_end);
   whirl_gov_end(&w->gov);
   const cond_ops *ops = w->ops;
   size_t bad = 0;
@@ -926,7 +928,7 @@ static void solve1(cond_ws *w, double *b) {
   {
     const int t = whirl_thread_num();
     size_t lo, hi;
-    thread_range(w, t, nth, &lo, &hi);
+    thread_range(w, t, whirl_team_size(), &lo, &hi);
     for (size_t i = lo; i < hi; ++i) {
       forward_interval(w, b, i);
       if (t == 0) forward_advance(w, &fnext);
@@ -959,7 +961,7 @@ static void solve1(cond_ws *w, double *b) {
   {
     const int t = whirl_thread_num();
     size_t lo, hi;
-    thread_range(w, t, nth, &lo, &hi);
+    thread_range(w, t, whirl_team_size(), &lo, &hi);
     if (t == 0) back_chain(w);
     for (size_t i = hi; i-- > lo;) {
       const size_t need = i > 0 ? i : 1;

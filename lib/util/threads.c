@@ -18,6 +18,14 @@ int whirl_thread_num(void) {
 #endif
 }
 
+int whirl_team_size(void) {
+#ifdef _OPENMP
+  return omp_get_num_threads();
+#else
+  return 1;
+#endif
+}
+
 int whirl_threads_resolve(int threads) {
 #ifdef _OPENMP
   int t = threads > 0 ? threads : threads == 0 ? omp_get_max_threads() : 1;

@@ -13,6 +13,11 @@
  * one, or without OpenMP). */
 int whirl_thread_num(void);
 
+/* The number of threads of the innermost parallel region (1 outside one,
+ * or without OpenMP): a region may get fewer than it asked for (nested in
+ * another, OMP_THREAD_LIMIT, OMP_DYNAMIC). */
+int whirl_team_size(void);
+
 /* threads as an option means it: > 0 that many (at most
  * WHIRL_MAX_THREADS), 0 as many as OpenMP offers (OMP_NUM_THREADS, else
  * the processors), < 0 or no OpenMP: 1. */
