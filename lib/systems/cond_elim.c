@@ -90,7 +90,7 @@ struct cond_ws {
   double *F;     /* nf x nf */
   int *fpiv;     /* nf */
   int nth;       /* threads of the loops over the intervals */
-  whirl_gov gov; /* condense_intervals' threads of those (threads_impl.h) */
+  whirl_gov gov; /* condense_and_chain's threads of those (threads_impl.h) */
   int nth_last;  /* the threads of the last condensation, which the solves'
                   * loops take too */
   double *ysc;   /* each thread's back values in the solve (2n + ng), a
@@ -605,10 +605,10 @@ static void cond_balance(cond_ws *w, double main_free, double main_end, double o
     w->split -= step;
 }
 
-/* Steps 1 and 2: the intervals condensed on the governed threads, which
- * take them in order, a few at a time; the main thread eliminates the
- * mesh points (step 2, a chain from interval to interval) behind them
- * between its own intervals, and what is left after the loop.  The
+/* Steps 1 and 2: the intervals condensed on the governed threads, each
+ * its share in order (thread_range); the main thread eliminates the mesh
+ * points (step 2, a chain from interval to interval) behind its own
+ * intervals, then behind the other threads'.  The
  * statuses are taken in interval order, the model's first, and the
  * determinant's factors are multiplied in the serial order (the
  * intervals', then the links'), so nothing depends on the threads. */
